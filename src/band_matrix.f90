@@ -1,0 +1,430 @@
+!> Symmetric positive definite band matrix in LAPACK's upper band storage.
+!>
+!> Storage scheme (the only place it is documented)
+!> ------------------------------------------------
+!> A symmetric matrix A of order n with half-bandwidth kd (A(i,j) = 0 when
+!> |i - j| > kd) keeps only its upper triangle inside the band, column by
+!> column, in the array ab(kd+1, n):
+!>
+!>     ab(kd+1+i-j, j) = A(i,j)    for  max(1, j-kd) <= i <= j
+!>
+!> so the diagonal is the last row of ab and the k-th superdiagonal is row
+!> kd+1-k. Example, n = 5, kd = 2:
+!>
+!>          A (upper triangle)               ab (kd+1 = 3 rows, n = 5 columns)
+!>     | a11 a12 a13  .   .  |         row 1:   *    *   a13  a24  a35
+!>     |     a22 a23 a24  .  |         row 2:   *   a12  a23  a34  a45
+!>     |         a33 a34 a35 |         row 3:  a11  a22  a33  a44  a55  <- diagonal
+!>     |             a44 a45 |
+!>     | sym             a55 |         (* = unused, kept zero)
+!>
+!> A(i,j) and A(j,i) are one stored number: band_add(a, i, j, v) with i > j
+!> adds v to the same entry as band_add(a, j, i, v). An assembly loop over
+!> a full symmetric element matrix must therefore add each global pair once
+!> (for instance only the pairs with row <= column).
+!>
+!> This layout is what LAPACK dpbtrf/dpbtrs and BLAS dsbmv read with
+!> uplo = 'U' and ldab = kd+1. band_factor overwrites ab in place with the
+!> Cholesky factor U (A = U^T U, same layout); afterwards the matrix can
+!> only be solved with, not added into or multiplied with, until band_zero.
+!>
+!> Pivot rule (shared with skyline_matrix, so both storages reject the same
+!> matrices): equation j fails when its pivot d_j = U(j,j)**2, the diagonal
+!> of D in A = L D L^T, is not greater than pivot_rel_tol * |A(j,j)|, with
+!> A(j,j) the diagonal before factorisation. This catches negative and zero
+!> pivots (dpbtrf's own test) and also pivots that are zero up to rounding,
+!> such as an unrestrained rigid-body mode.
+module band_matrix
+   use kinds, only: dp, msg_len
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use, intrinsic :: iso_fortran_env, only: int64
+   implicit none
+   private
+   public :: band_matrix_t, pivot_rel_tol
+   public :: band_init, band_zero, band_in_band, band_add, band_get, &
+             band_matvec, band_factor, band_solve, band_copy, band_axpy
+
+   !> Relative pivot tolerance: pivot d_j <= pivot_rel_tol*|A(j,j)| fails
+   !> (64 machine epsilons, about 1.4e-14: all digits of d_j lost).
+   real(dp), parameter :: pivot_rel_tol = 64 * epsilon(1.0_dp)
+
+   !> Symmetric band matrix, upper band storage (see module header).
+   type :: band_matrix_t
+      !> Order of the matrix (number of equations).
+      integer :: n = 0
+      !> Half-bandwidth: A(i,j) = 0 for |i-j| > kd.
+      integer :: kd = 0
+      !> Band of the upper triangle, ab(kd+1+i-j, j) = A(i,j).
+      real(dp), allocatable :: ab(:,:)
+      !> True once ab holds the Cholesky factor instead of A.
+      logical :: factored = .false.
+   end type band_matrix_t
+
+   !> Solve with the factored matrix: one right-hand side b(n) or several
+   !> b(n, nrhs); b is overwritten with the solution.
+   interface band_solve
+      module procedure band_solve_vec, band_solve_mat
+   end interface band_solve
+
+   ! LAPACK and BLAS routines, double precision, called with uplo = 'U'.
+   interface
+      !> Cholesky factorisation of a symmetric positive definite band matrix.
+      subroutine dpbtrf(uplo, n, kd, ab, ldab, info)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, kd, ldab
+         real(dp), intent(inout) :: ab(ldab, *)
+         integer, intent(out) :: info
+      end subroutine dpbtrf
+      !> Solve with the factor from dpbtrf.
+      subroutine dpbtrs(uplo, n, kd, nrhs, ab, ldab, b, ldb, info)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, kd, nrhs, ldab, ldb
+         real(dp), intent(in) :: ab(ldab, *)
+         real(dp), intent(inout) :: b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dpbtrs
+      !> y := alpha*A*x + beta*y for a symmetric band matrix A.
+      subroutine dsbmv(uplo, n, k, alpha, a, lda, x, incx, beta, y, incy)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, k, lda, incx, incy
+         real(dp), intent(in) :: alpha, beta
+         real(dp), intent(in) :: a(lda, *), x(*)
+         real(dp), intent(inout) :: y(*)
+      end subroutine dsbmv
+   end interface
+
+contains
+
+   !> Allocate an n x n band matrix of half-bandwidth kd, all zero.
+   subroutine band_init(a, n, kd, stat, errmsg)
+      !> The matrix, (re)defined here.
+      type(band_matrix_t), intent(out) :: a
+      !> Order of the matrix, n >= 1.
+      integer, intent(in) :: n
+      !> Half-bandwidth, 0 <= kd <= n-1.
+      integer, intent(in) :: kd
+      !> 0 on success, 1 on invalid sizes or failed allocation.
+      integer, intent(out) :: stat
+      !> Reason for the failure (set only on failure).
+      character(len=*), intent(inout) :: errmsg
+      character(len=msg_len) :: msg
+
+      stat = 0
+      if (n < 1 .or. kd < 0 .or. kd > n - 1) then
+         write (msg, '(a,i0,a,i0,a)') 'band_init: invalid order n = ', n, &
+            ' or half-bandwidth kd = ', kd, ' (need n >= 1, 0 <= kd <= n-1)'
+         call fail(msg)
+         return
+      end if
+      if (int(kd + 1, int64) * int(n, int64) > int(huge(n), int64)) then
+         write (msg, '(a,i0,a,i0,a)') 'band_init: band of ', kd + 1, ' x ', n, &
+            ' entries exceeds the default integer range'
+         call fail(msg)
+         return
+      end if
+      allocate (a%ab(kd + 1, n), stat=stat, errmsg=msg)
+      if (stat /= 0) then
+         call fail('band_init: allocation of the band failed: ' // trim(msg))
+         return
+      end if
+      a%n = n
+      a%kd = kd
+      a%ab = 0.0_dp
+      a%factored = .false.
+   contains
+      !> Set stat and errmsg for a failure.
+      subroutine fail(text)
+         !> The error message.
+         character(len=*), intent(in) :: text
+         stat = 1
+         errmsg = text
+      end subroutine fail
+   end subroutine band_init
+
+   !> Set every entry to zero and forget any factorisation.
+   subroutine band_zero(a)
+      !> The matrix (its structure is kept).
+      type(band_matrix_t), intent(inout) :: a
+
+      if (allocated(a%ab)) a%ab = 0.0_dp
+      a%factored = .false.
+   end subroutine band_zero
+
+   !> True when A(i,j) is a valid index pair inside the stored band.
+   pure logical function band_in_band(a, i, j)
+      !> The matrix.
+      type(band_matrix_t), intent(in) :: a
+      !> Row index.
+      integer, intent(in) :: i
+      !> Column index.
+      integer, intent(in) :: j
+
+      band_in_band = i >= 1 .and. i <= a%n .and. j >= 1 .and. j <= a%n &
+                     .and. abs(i - j) <= a%kd
+   end function band_in_band
+
+   !> Add value to A(i,j) (= A(j,i), one stored entry).
+   !>
+   !> Caller's duty: band_in_band(a, i, j) is true and a is not factored.
+   !> global_matrix checks this for every element before it adds; a pair
+   !> outside the band is not stored (never written outside ab).
+   subroutine band_add(a, i, j, value)
+      !> The matrix, added into.
+      type(band_matrix_t), intent(inout) :: a
+      !> Row index.
+      integer, intent(in) :: i
+      !> Column index.
+      integer, intent(in) :: j
+      !> Value added to A(i,j).
+      real(dp), intent(in) :: value
+      integer :: r, c
+
+      if (.not. band_in_band(a, i, j)) return
+      r = min(i, j)
+      c = max(i, j)
+      a%ab(a%kd + 1 + r - c, c) = a%ab(a%kd + 1 + r - c, c) + value
+   end subroutine band_add
+
+   !> Entry A(i,j) of the (unfactored) matrix; zero outside the band.
+   pure real(dp) function band_get(a, i, j)
+      !> The matrix.
+      type(band_matrix_t), intent(in) :: a
+      !> Row index.
+      integer, intent(in) :: i
+      !> Column index.
+      integer, intent(in) :: j
+
+      if (band_in_band(a, i, j)) then
+         band_get = a%ab(a%kd + 1 + min(i, j) - max(i, j), max(i, j))
+      else
+         band_get = 0.0_dp
+      end if
+   end function band_get
+
+   !> y = A x (BLAS dsbmv).
+   !>
+   !> Fails when a is factored or the sizes do not match; without stat the
+   !> failure leaves y = NaN so that it cannot pass unnoticed.
+   subroutine band_matvec(a, x, y, stat, errmsg)
+      !> The matrix, not factored.
+      type(band_matrix_t), intent(in) :: a
+      !> Vector of length n.
+      real(dp), intent(in) :: x(:)
+      !> Result A x, length n.
+      real(dp), intent(out) :: y(:)
+      !> 0 on success, 1 on failure (optional).
+      integer, intent(out), optional :: stat
+      !> Reason for the failure (optional, set only on failure).
+      character(len=*), intent(inout), optional :: errmsg
+      character(len=msg_len) :: msg
+
+      if (present(stat)) stat = 0
+      msg = ''
+      if (a%factored) then
+         msg = 'band_matvec: the matrix holds its factor, not A'
+      else if (size(x) /= a%n .or. size(y) /= a%n) then
+         write (msg, '(a,i0,a,i0,a,i0)') 'band_matvec: size(x) = ', size(x), &
+            ', size(y) = ', size(y), ' but n = ', a%n
+      end if
+      if (len_trim(msg) > 0) then
+         y = ieee_value(1.0_dp, ieee_quiet_nan)
+         if (present(stat)) stat = 1
+         if (present(errmsg)) errmsg = msg
+         return
+      end if
+      call dsbmv('U', a%n, a%kd, 1.0_dp, a%ab, a%kd + 1, x, 1, 0.0_dp, y, 1)
+   end subroutine band_matvec
+
+   !> Cholesky factorisation in place (LAPACK dpbtrf), A = U^T U.
+   !>
+   !> On a failed pivot (see module header) stat = 1, bad_eq is the
+   !> equation and errmsg says "matrix not positive definite at equation N";
+   !> the matrix is then left unusable (not flagged factored).
+   subroutine band_factor(a, stat, errmsg, bad_eq)
+      !> The matrix, overwritten by its Cholesky factor.
+      type(band_matrix_t), intent(inout) :: a
+      !> 0 on success, 1 on failure.
+      integer, intent(out) :: stat
+      !> Reason for the failure (set only on failure).
+      character(len=*), intent(inout) :: errmsg
+      !> Equation whose pivot failed, 0 if none did.
+      integer, intent(out) :: bad_eq
+      character(len=msg_len) :: msg
+      real(dp), allocatable :: diag(:)
+      real(dp) :: pivot
+      integer :: info, j, last
+
+      stat = 0
+      bad_eq = 0
+      if (.not. allocated(a%ab)) then
+         stat = 1
+         errmsg = 'band_factor: the matrix was never initialised'
+         return
+      end if
+      if (a%factored) then
+         stat = 1
+         errmsg = 'band_factor: the matrix is already factored'
+         return
+      end if
+      allocate (diag(a%n))
+      diag = a%ab(a%kd + 1, :)
+      call dpbtrf('U', a%n, a%kd, a%ab, a%kd + 1, info)
+      if (info < 0) then
+         stat = 1
+         write (msg, '(a,i0)') 'band_factor: dpbtrf rejected argument ', -info
+         errmsg = msg
+         return
+      end if
+      ! dpbtrf stops only at a pivot <= 0 (equation info > 0); a tiny
+      ! positive pivot before it (rounding) passes and spoils the rest. So
+      ! apply the relative rule to the equations before info first: the
+      ! first equation that fails either test is the one reported.
+      last = a%n
+      if (info > 0) last = info - 1
+      do j = 1, last
+         pivot = a%ab(a%kd + 1, j)**2
+         if (.not. (pivot > pivot_rel_tol * abs(diag(j)))) then
+            stat = 1
+            bad_eq = j
+            write (msg, '(a,i0,a,es10.3,a,es9.2,a,es10.3,a)') &
+               'matrix not positive definite at equation ', j, ' (pivot ', pivot, &
+               ' <= ', pivot_rel_tol, ' x diagonal ', diag(j), ')'
+            errmsg = msg
+            return
+         end if
+      end do
+      if (info > 0) then
+         stat = 1
+         bad_eq = info
+         write (msg, '(a,i0,a,es10.3,a)') 'matrix not positive definite at equation ', &
+            info, ' (pivot <= 0, diagonal ', diag(info), ')'
+         errmsg = msg
+         return
+      end if
+      a%factored = .true.
+   end subroutine band_factor
+
+   !> Solve A x = b for one right-hand side with the factor (dpbtrs).
+   subroutine band_solve_vec(a, b, stat, errmsg)
+      !> The factored matrix.
+      type(band_matrix_t), intent(in) :: a
+      !> Right-hand side on entry, solution on return, length n.
+      real(dp), intent(inout) :: b(:)
+      !> 0 on success, 1 on failure.
+      integer, intent(out) :: stat
+      !> Reason for the failure (set only on failure).
+      character(len=*), intent(inout) :: errmsg
+      integer :: info
+
+      call check_solve(a, size(b), stat, errmsg)
+      if (stat /= 0) return
+      ! b(n) is passed to dpbtrs's b(ldb,*) by sequence association.
+      call dpbtrs('U', a%n, a%kd, 1, a%ab, a%kd + 1, b, a%n, info)
+      call check_info(info, stat, errmsg)
+   end subroutine band_solve_vec
+
+   !> Solve A X = B for nrhs right-hand sides with the factor (dpbtrs).
+   subroutine band_solve_mat(a, b, stat, errmsg)
+      !> The factored matrix.
+      type(band_matrix_t), intent(in) :: a
+      !> Right-hand sides b(n, nrhs) on entry, solutions on return.
+      real(dp), intent(inout) :: b(:,:)
+      !> 0 on success, 1 on failure.
+      integer, intent(out) :: stat
+      !> Reason for the failure (set only on failure).
+      character(len=*), intent(inout) :: errmsg
+      integer :: info
+
+      call check_solve(a, size(b, 1), stat, errmsg)
+      if (stat /= 0 .or. size(b, 2) == 0) return
+      call dpbtrs('U', a%n, a%kd, size(b, 2), a%ab, a%kd + 1, b, a%n, info)
+      call check_info(info, stat, errmsg)
+   end subroutine band_solve_mat
+
+   !> The checks before a solve: factored, right-hand side of length n.
+   subroutine check_solve(a, nb, stat, errmsg)
+      !> The matrix to solve with.
+      type(band_matrix_t), intent(in) :: a
+      !> Length of the right-hand side(s).
+      integer, intent(in) :: nb
+      !> 0 when the solve may proceed, 1 otherwise.
+      integer, intent(out) :: stat
+      !> Reason for the failure (set only on failure).
+      character(len=*), intent(inout) :: errmsg
+      character(len=msg_len) :: msg
+
+      stat = 0
+      if (.not. a%factored) then
+         stat = 1
+         errmsg = 'band_solve: the matrix is not factored (call band_factor first)'
+      else if (nb /= a%n) then
+         stat = 1
+         write (msg, '(a,i0,a,i0)') 'band_solve: right-hand side has length ', &
+            nb, ' but n = ', a%n
+         errmsg = msg
+      end if
+   end subroutine check_solve
+
+   !> Turn dpbtrs's info into stat and errmsg.
+   subroutine check_info(info, stat, errmsg)
+      !> info returned by dpbtrs.
+      integer, intent(in) :: info
+      !> 0 when info = 0, 1 otherwise.
+      integer, intent(out) :: stat
+      !> Reason for the failure (set only on failure).
+      character(len=*), intent(inout) :: errmsg
+      character(len=msg_len) :: msg
+
+      stat = 0
+      if (info /= 0) then
+         stat = 1
+         write (msg, '(a,i0)') 'band_solve: dpbtrs rejected argument ', -info
+         errmsg = msg
+      end if
+   end subroutine check_info
+
+   !> dst = src (structure, values and factored flag).
+   subroutine band_copy(dst, src)
+      !> The copy.
+      type(band_matrix_t), intent(out) :: dst
+      !> The matrix copied.
+      type(band_matrix_t), intent(in) :: src
+
+      dst = src
+   end subroutine band_copy
+
+   !> a = a + alpha*b for two unfactored matrices of the same n and kd.
+   subroutine band_axpy(a, alpha, b, stat, errmsg)
+      !> The matrix added into.
+      type(band_matrix_t), intent(inout) :: a
+      !> Scalar multiplying b.
+      real(dp), intent(in) :: alpha
+      !> The matrix added, same n and kd as a.
+      type(band_matrix_t), intent(in) :: b
+      !> 0 on success, 1 on failure (a unchanged).
+      integer, intent(out) :: stat
+      !> Reason for the failure (set only on failure).
+      character(len=*), intent(inout) :: errmsg
+      character(len=msg_len) :: msg
+
+      stat = 0
+      if (a%factored .or. b%factored) then
+         stat = 1
+         errmsg = 'band_axpy: a factored matrix cannot be added to or from'
+         return
+      end if
+      if (a%n /= b%n .or. a%kd /= b%kd .or. .not. allocated(a%ab) &
+          .or. .not. allocated(b%ab)) then
+         stat = 1
+         write (msg, '(a,i0,a,i0,a,i0,a,i0,a)') 'band_axpy: structures differ (n = ', &
+            a%n, ', kd = ', a%kd, ' against n = ', b%n, ', kd = ', b%kd, ')'
+         errmsg = msg
+         return
+      end if
+      a%ab = a%ab + alpha * b%ab
+   end subroutine band_axpy
+
+end module band_matrix

@@ -1,0 +1,307 @@
+!> Element matrices of the 9-node Mindlin / von Karman plate element
+!> (paper eq. 2, 10, 14, 15 and Appendix B).
+!>
+!> Freedoms of an element: 45, node by node (u, v, w, psi_x, psi_y of local
+!> node 1, then node 2, ...). At a point, with phi_i the shape functions:
+!>
+!>   membrane   eps0  = Bm d + eps_nl,  eps_nl = (w,x^2/2, w,y^2/2, w,x w,y)  eq. (2)
+!>   bending    kappa = Bb d = (psi_x,x, psi_y,y, psi_x,y + psi_y,x)
+!>   shear      gamma = Bs d = (psi_y + w,y, psi_x + w,x)  = (eps4, eps5)
+!>   resultants N = A eps0 + B kappa,  M = B eps0 + D kappa,  Q = Abar gamma   eq. (4)
+!>
+!> Selective reduced integration (section 2.3): 3x3 Gauss points for the
+!> membrane, bending and inertia terms, 2x2 for the transverse shear terms.
+!>
+!> Matrices (eq. 15, Appendix B):
+!>   [M]   = int N^T diag(P, P, P, I, I) N  (+ R coupling u-psi_x, v-psi_y)
+!>   [K_L] = int [Bm; Bb]^T [A B; B D] [Bm; Bb] + int Bs^T Abar Bs
+!>   [K_N(d)] d = f_int(d) - K_L d, where f_int = dU/dd is the internal force
+!>          of the von Karman strains. With Bnl d' = d eps_nl / dd . d'
+!>          (rows: w,x phi_i,x ; w,y phi_i,y ; w,x phi_i,y + w,y phi_i,x on
+!>          the w freedoms):
+!>   K_N(d) d = int Bm^T (A eps_nl) + Bb^T (B eps_nl) + Bnl^T N
+!>   which is Appendix B's [K_N] blocks times d, evaluated without forming them.
+module element_matrices
+   use kinds, only: dp
+   use materials, only: laminate_t
+   use shape_functions, only: nen, shape9, shape9_derivs
+   use gauss_rules, only: gauss_2d
+   implicit none
+   private
+   public :: element_geometry_t, element_geometry, element_mass, &
+             element_stiffness, element_nonlinear_force, element_internal_force, &
+             element_strain_energy, element_inplane_strain, element_gauss_point, &
+             ngp_full, ngp_shear, nfe_elem
+
+   !> Gauss points of the full (3x3) and reduced (2x2) rules.
+   integer, parameter :: ngp_full = 9, ngp_shear = 4
+   !> Freedoms per element.
+   integer, parameter :: nfe_elem = 5*nen
+
+   !> Shape functions and their x, y derivatives at the Gauss points of one
+   !> element, with the weights times det J: computed once per element.
+   type :: element_geometry_t
+      real(dp) :: phi3(nen, ngp_full)      !< phi_i at the 3x3 points
+      real(dp) :: dx3(2, nen, ngp_full)    !< (d/dx, d/dy) phi_i at the 3x3 points
+      real(dp) :: wj3(ngp_full)            !< weight * det J (m^2) at the 3x3 points
+      real(dp) :: xy3(2, ngp_full)         !< (x, y) of the 3x3 points (m)
+      real(dp) :: phi2(nen, ngp_shear)     !< phi_i at the 2x2 points
+      real(dp) :: dx2(2, nen, ngp_shear)   !< derivatives at the 2x2 points
+      real(dp) :: wj2(ngp_shear)           !< weight * det J at the 2x2 points
+   end type element_geometry_t
+
+contains
+
+   !> Shape function derivatives and integration weights of the element with
+   !> node coordinates xe (isoparametric map, eq. 14). ok is false when the
+   !> Jacobian is not positive somewhere (a distorted or inverted element).
+   pure subroutine element_geometry(xe, geo, ok)
+      real(dp), intent(in) :: xe(2, nen)             !< node coordinates (m)
+      type(element_geometry_t), intent(out) :: geo   !< the element's geometry
+      logical, intent(out) :: ok                     !< det J > 0 at every point
+      real(dp) :: pts3(2, ngp_full), w3(ngp_full), pts2(2, ngp_shear), w2(ngp_shear)
+      real(dp) :: det3(ngp_full), det2(ngp_shear)
+      integer :: g
+
+      call gauss_2d(3, pts3, w3)
+      call gauss_2d(2, pts2, w2)
+      ok = .true.
+      full_rule: do g = 1, ngp_full
+         call point_derivs(pts3(:, g), w3(g), geo%phi3(:, g), geo%dx3(:, :, g), geo%wj3(g), det3(g))
+         geo%xy3(:, g) = matmul(xe, geo%phi3(:, g))
+      end do full_rule
+      shear_rule: do g = 1, ngp_shear
+         call point_derivs(pts2(:, g), w2(g), geo%phi2(:, g), geo%dx2(:, :, g), geo%wj2(g), det2(g))
+      end do shear_rule
+      ok = all(det3 > 0.0_dp) .and. all(det2 > 0.0_dp)
+
+   contains
+
+      pure subroutine point_derivs(pt, w, phi, dxy, wj, det)
+         real(dp), intent(in) :: pt(2), w
+         real(dp), intent(out) :: phi(nen), dxy(2, nen), wj, det
+         real(dp) :: dref(2, nen), jac(2,2), jinv(2,2)
+         phi = shape9(pt(1), pt(2))
+         dref = shape9_derivs(pt(1), pt(2))
+         ! J(i,j) = d x_j / d xi_i
+         jac = matmul(dref, transpose(xe))
+         det = jac(1,1)*jac(2,2) - jac(1,2)*jac(2,1)
+         if (det <= 0.0_dp) then
+            dxy = 0.0_dp;  wj = 0.0_dp
+            return
+         end if
+         jinv = reshape([jac(2,2), -jac(2,1), -jac(1,2), jac(1,1)], [2,2])/det
+         dxy = matmul(jinv, dref)
+         wj = w*det
+      end subroutine point_derivs
+   end subroutine element_geometry
+
+   !> Consistent mass matrix, 3x3 Gauss (Appendix B: P[S], R[S], I[S] blocks
+   !> with S_ij = int phi_i phi_j).
+   pure subroutine element_mass(lmt, geo, me)
+      type(laminate_t), intent(in) :: lmt           !< inertias P, R, I (eq. 9)
+      type(element_geometry_t), intent(in) :: geo   !< element geometry
+      real(dp), intent(out) :: me(nfe_elem, nfe_elem)  !< element mass matrix
+      real(dp) :: s(nen, nen)
+      integer :: g, i, j, k
+
+      s = 0.0_dp
+      gauss_points: do g = 1, ngp_full
+         do j = 1, nen
+            s(:, j) = s(:, j) + geo%wj3(g)*geo%phi3(:, g)*geo%phi3(j, g)
+         end do
+      end do gauss_points
+      me = 0.0_dp
+      do j = 1, nen
+         do i = 1, nen
+            do k = 1, 3
+               me(5*(i-1)+k, 5*(j-1)+k) = lmt%p*s(i, j)
+            end do
+            do k = 4, 5
+               me(5*(i-1)+k, 5*(j-1)+k) = lmt%i*s(i, j)
+            end do
+            me(5*(i-1)+1, 5*(j-1)+4) = lmt%r*s(i, j)
+            me(5*(i-1)+4, 5*(j-1)+1) = lmt%r*s(i, j)
+            me(5*(i-1)+2, 5*(j-1)+5) = lmt%r*s(i, j)
+            me(5*(i-1)+5, 5*(j-1)+2) = lmt%r*s(i, j)
+         end do
+      end do
+   end subroutine element_mass
+
+   !> Linear stiffness [K_L] (Appendix B): membrane and bending with 3x3,
+   !> transverse shear with 2x2 Gauss points.
+   pure subroutine element_stiffness(lmt, geo, ke, stabilization)
+      type(laminate_t), intent(in) :: lmt           !< A, B, D, Abar (eq. 6)
+      type(element_geometry_t), intent(in) :: geo   !< element geometry
+      real(dp), intent(out) :: ke(nfe_elem, nfe_elem)  !< element stiffness
+      !> fraction eps of the shear stiffness integrated with 3x3 points:
+      !> K_s = (1 - eps) K_s(2x2) + eps K_s(3x3); absent: 0 (the paper's rule)
+      real(dp), intent(in), optional :: stabilization
+      real(dp) :: bmb(6, nfe_elem), bs(2, nfe_elem), c(6,6), eps
+      integer :: g
+
+      c(1:3, 1:3) = lmt%a;  c(1:3, 4:6) = lmt%b
+      c(4:6, 1:3) = lmt%b;  c(4:6, 4:6) = lmt%d
+      ke = 0.0_dp
+      membrane_bending: do g = 1, ngp_full
+         bmb = b_membrane_bending(geo%dx3(:, :, g))
+         ke = ke + geo%wj3(g)*matmul(transpose(bmb), matmul(c, bmb))
+      end do membrane_bending
+      eps = 0.0_dp
+      if (present(stabilization)) eps = stabilization
+      transverse_shear: do g = 1, ngp_shear
+         bs = b_shear(geo%phi2(:, g), geo%dx2(:, :, g))
+         ke = ke + (1.0_dp - eps)*geo%wj2(g)*matmul(transpose(bs), matmul(lmt%as, bs))
+      end do transverse_shear
+      if (eps > 0.0_dp) then
+         shear_full_rule: do g = 1, ngp_full
+            bs = b_shear(geo%phi3(:, g), geo%dx3(:, :, g))
+            ke = ke + eps*geo%wj3(g)*matmul(transpose(bs), matmul(lmt%as, bs))
+         end do shear_full_rule
+      end if
+   end subroutine element_stiffness
+
+   !> The nonlinear term K_N(d) d of eq. (15) and (19) for the element
+   !> displacements de (see the module header).
+   pure subroutine element_nonlinear_force(lmt, geo, de, fn)
+      type(laminate_t), intent(in) :: lmt           !< A, B, D
+      type(element_geometry_t), intent(in) :: geo   !< element geometry
+      real(dp), intent(in) :: de(nfe_elem)          !< element displacements
+      real(dp), intent(out) :: fn(nfe_elem)         !< K_N(d) d
+      real(dp) :: eps0(3), kap(3), enl(3), n(3), wx, wy, an(3), bn(3)
+      integer :: g, i
+
+      fn = 0.0_dp
+      gauss_points: do g = 1, ngp_full
+         call point_strains(geo%dx3(:, :, g), de, eps0, kap, wx, wy)
+         enl = [0.5_dp*wx*wx, 0.5_dp*wy*wy, wx*wy]
+         eps0 = eps0 + enl
+         n  = matmul(lmt%a, eps0) + matmul(lmt%b, kap)
+         an = geo%wj3(g)*matmul(lmt%a, enl)      ! membrane force of eps_nl
+         bn = geo%wj3(g)*matmul(lmt%b, enl)      ! moment of eps_nl
+         n  = geo%wj3(g)*n
+         nodes: do i = 1, nen
+            associate (px => geo%dx3(1, i, g), py => geo%dx3(2, i, g))
+               ! Bm^T (A eps_nl):  u, v rows
+               fn(5*i-4) = fn(5*i-4) + px*an(1) + py*an(3)
+               fn(5*i-3) = fn(5*i-3) + py*an(2) + px*an(3)
+               ! Bnl^T N:  w row
+               fn(5*i-2) = fn(5*i-2) + (wx*px)*n(1) + (wy*py)*n(2) + (wx*py + wy*px)*n(3)
+               ! Bb^T (B eps_nl):  psi_x, psi_y rows
+               fn(5*i-1) = fn(5*i-1) + px*bn(1) + py*bn(3)
+               fn(5*i)   = fn(5*i)   + py*bn(2) + px*bn(3)
+            end associate
+         end do nodes
+      end do gauss_points
+   end subroutine element_nonlinear_force
+
+   !> The whole internal force f_int(d) = dU/dd = K_L d + K_N(d) d; with
+   !> nonlinear false only K_L d.
+   pure subroutine element_internal_force(lmt, geo, de, nonlinear, f)
+      type(laminate_t), intent(in) :: lmt           !< laminate
+      type(element_geometry_t), intent(in) :: geo   !< element geometry
+      real(dp), intent(in) :: de(nfe_elem)          !< element displacements
+      logical, intent(in) :: nonlinear              !< von Karman terms included
+      real(dp), intent(out) :: f(nfe_elem)          !< internal force
+      real(dp) :: ke(nfe_elem, nfe_elem), fn(nfe_elem)
+      call element_stiffness(lmt, geo, ke)
+      f = matmul(ke, de)
+      if (nonlinear) then
+         call element_nonlinear_force(lmt, geo, de, fn)
+         f = f + fn
+      end if
+   end subroutine element_internal_force
+
+   !> Strain energy of the element, U = 1/2 int (eps0 N + kappa M + gamma Q),
+   !> von Karman strains when nonlinear is true.
+   pure function element_strain_energy(lmt, geo, de, nonlinear) result(u)
+      type(laminate_t), intent(in) :: lmt           !< laminate
+      type(element_geometry_t), intent(in) :: geo   !< element geometry
+      real(dp), intent(in) :: de(nfe_elem)          !< element displacements
+      logical, intent(in) :: nonlinear              !< von Karman strains
+      real(dp) :: u
+      real(dp) :: eps0(3), kap(3), gam(2), wx, wy
+      integer :: g
+
+      u = 0.0_dp
+      membrane_bending: do g = 1, ngp_full
+         call point_strains(geo%dx3(:, :, g), de, eps0, kap, wx, wy)
+         if (nonlinear) eps0 = eps0 + [0.5_dp*wx*wx, 0.5_dp*wy*wy, wx*wy]
+         u = u + 0.5_dp*geo%wj3(g)*( dot_product(eps0, matmul(lmt%a, eps0)) &
+               + 2.0_dp*dot_product(eps0, matmul(lmt%b, kap)) + dot_product(kap, matmul(lmt%d, kap)) )
+      end do membrane_bending
+      transverse_shear: do g = 1, ngp_shear
+         gam = matmul(b_shear(geo%phi2(:, g), geo%dx2(:, :, g)), de)
+         u = u + 0.5_dp*geo%wj2(g)*dot_product(gam, matmul(lmt%as, gam))
+      end do transverse_shear
+   end function element_strain_energy
+
+   !> In-plane strains (eps_x, eps_y, gamma_xy) at depth z and 3x3 Gauss
+   !> point g, eq. (2): eps = eps0 + z kappa.
+   pure function element_inplane_strain(geo, de, g, z, nonlinear) result(eps)
+      type(element_geometry_t), intent(in) :: geo   !< element geometry
+      real(dp), intent(in) :: de(nfe_elem)          !< element displacements
+      integer, intent(in) :: g                      !< 3x3 Gauss point
+      real(dp), intent(in) :: z                     !< depth from the mid-plane (m)
+      logical, intent(in) :: nonlinear              !< von Karman strains
+      real(dp) :: eps(3)
+      real(dp) :: eps0(3), kap(3), wx, wy
+      call point_strains(geo%dx3(:, :, g), de, eps0, kap, wx, wy)
+      if (nonlinear) eps0 = eps0 + [0.5_dp*wx*wx, 0.5_dp*wy*wy, wx*wy]
+      eps = eps0 + z*kap
+   end function element_inplane_strain
+
+   !> The 3x3 Gauss point of the element nearest to the point p.
+   pure function element_gauss_point(geo, p) result(g)
+      type(element_geometry_t), intent(in) :: geo   !< element geometry
+      real(dp), intent(in) :: p(2)                  !< point (m)
+      integer :: g
+      g = minloc(sum((geo%xy3 - spread(p, 2, ngp_full))**2, dim=1), dim=1)
+   end function element_gauss_point
+
+   ! ---------------------------------------------------------------- kernels
+
+   !> Linear membrane strains Bm d, curvatures Bb d and the slopes of w at a
+   !> point with shape-function derivatives dxy.
+   pure subroutine point_strains(dxy, de, eps0, kap, wx, wy)
+      real(dp), intent(in) :: dxy(2, nen), de(nfe_elem)
+      real(dp), intent(out) :: eps0(3), kap(3), wx, wy
+      real(dp) :: d(5, nen)
+      d = reshape(de, [5, nen])
+      eps0 = [dot_product(dxy(1,:), d(1,:)), dot_product(dxy(2,:), d(2,:)), &
+              dot_product(dxy(2,:), d(1,:)) + dot_product(dxy(1,:), d(2,:))]
+      kap  = [dot_product(dxy(1,:), d(4,:)), dot_product(dxy(2,:), d(5,:)), &
+              dot_product(dxy(2,:), d(4,:)) + dot_product(dxy(1,:), d(5,:))]
+      wx = dot_product(dxy(1,:), d(3,:))
+      wy = dot_product(dxy(2,:), d(3,:))
+   end subroutine point_strains
+
+   !> [Bm; Bb] (6 x 45) at a point.
+   pure function b_membrane_bending(dxy) result(bmat)
+      real(dp), intent(in) :: dxy(2, nen)
+      real(dp) :: bmat(6, nfe_elem)
+      integer :: i
+      bmat = 0.0_dp
+      do i = 1, nen
+         bmat(1, 5*i-4) = dxy(1, i)
+         bmat(2, 5*i-3) = dxy(2, i)
+         bmat(3, 5*i-4) = dxy(2, i);  bmat(3, 5*i-3) = dxy(1, i)
+         bmat(4, 5*i-1) = dxy(1, i)
+         bmat(5, 5*i)   = dxy(2, i)
+         bmat(6, 5*i-1) = dxy(2, i);  bmat(6, 5*i) = dxy(1, i)
+      end do
+   end function b_membrane_bending
+
+   !> Bs (2 x 45): eps4 = psi_y + w,y, eps5 = psi_x + w,x.
+   pure function b_shear(phi, dxy) result(bmat)
+      real(dp), intent(in) :: phi(nen), dxy(2, nen)
+      real(dp) :: bmat(2, nfe_elem)
+      integer :: i
+      bmat = 0.0_dp
+      do i = 1, nen
+         bmat(1, 5*i-2) = dxy(2, i);  bmat(1, 5*i) = phi(i)
+         bmat(2, 5*i-2) = dxy(1, i);  bmat(2, 5*i-1) = phi(i)
+      end do
+   end function b_shear
+
+end module element_matrices

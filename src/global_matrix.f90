@@ -1,0 +1,500 @@
+!> The global (structure) matrices of the model, in a storage chosen at run
+!> time: 'band' (module band_matrix, LAPACK band Cholesky) or 'skyline'
+!> (module skyline_matrix, COLSOL's active-column L D L^T). Each storage
+!> scheme is documented in the header of its own module.
+!>
+!> The structure is found from the element freedom table elem_eq(nfe,nelem)
+!> (global equation number of each element freedom, 0 = constrained): for
+!> band storage the half-bandwidth kd = max over elements of (largest -
+!> smallest equation), for skyline storage the first row of each column
+!> m_j = min over the elements that hold j of their smallest equation.
+!>
+!> Typical use (Newmark, constant effective stiffness):
+!>     global_init(K, ...); global_init(M, ...)       same storage, same elem_eq
+!>     global_assemble(K, ke, elem_eq(:,e)) for every element, M likewise
+!>     global_copy(Keff, K); global_axpy_matrix(Keff, 4/dt**2, M)
+!>     global_factor(Keff, ...)                        once
+!>     global_solve(Keff, r, ...)                      every step
+!>
+!> Errors: every failure returns stat /= 0 with errmsg. global_assemble,
+!> global_axpy_matrix and global_matvec take stat and errmsg as optional
+!> arguments; without them a failed assembly or addition changes nothing
+!> and is recorded in the matrix (deferred_error), to be reported by the
+!> next global_factor or global_solve, and a failed product returns NaN.
+!> global_factor returns only the equation number of a failed pivot
+!> (bad_eq); the caller maps it to a node and a freedom.
+module global_matrix
+   use kinds, only: dp, msg_len
+   use band_matrix, only: band_matrix_t, band_init, band_zero, band_in_band, &
+                          band_add, band_get, band_matvec, band_factor, band_solve, &
+                          band_axpy
+   use skyline_matrix, only: skyline_matrix_t, skyline_init, skyline_zero, &
+                             skyline_in_profile, skyline_add, skyline_get, &
+                             skyline_half_bandwidth, skyline_matvec, &
+                             skyline_factor, skyline_solve, skyline_axpy
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   implicit none
+   private
+   public :: global_matrix_t, storage_len
+   public :: global_init, global_zero, global_assemble, global_axpy_matrix, &
+             global_copy, global_matvec, global_factor, global_solve, &
+             global_bandwidth, global_stored_entries, global_entry
+
+   !> Length of the storage name ('band', 'skyline').
+   integer, parameter :: storage_len = 8
+
+   !> A global matrix in the storage named by `storage`; only that one of
+   !> `band` and `sky` is allocated.
+   type :: global_matrix_t
+      !> 'band' or 'skyline' ('' before global_init).
+      character(len=storage_len) :: storage = ''
+      !> Number of equations.
+      integer :: neq = 0
+      !> The matrix when storage = 'band'.
+      type(band_matrix_t) :: band
+      !> The matrix when storage = 'skyline'.
+      type(skyline_matrix_t) :: sky
+      !> First error of an assembly or addition called without stat
+      !> ('' = none); reported by global_factor and global_solve.
+      character(len=msg_len) :: deferred_error = ''
+   end type global_matrix_t
+
+contains
+
+   !> Find the structure from the element freedom table and allocate a
+   !> zero matrix in the chosen storage.
+   subroutine global_init(g, storage, neq, elem_eq, stat, errmsg)
+      !> The matrix, (re)defined here.
+      type(global_matrix_t), intent(out) :: g
+      !> 'band' or 'skyline' (case and surrounding blanks ignored).
+      character(len=*), intent(in) :: storage
+      !> Number of equations, >= 1.
+      integer, intent(in) :: neq
+      !> elem_eq(k, e): equation of freedom k of element e, 0 = constrained.
+      integer, intent(in) :: elem_eq(:,:)
+      !> 0 on success, 1 on failure.
+      integer, intent(out) :: stat
+      !> Reason for the failure (set only on failure).
+      character(len=*), intent(inout) :: errmsg
+      character(len=msg_len) :: msg
+      character(len=len(storage)) :: name
+      integer, allocatable :: first_row(:)
+      integer :: e, k, eq, lo, hi, kd
+
+      stat = 0
+      if (neq < 1) then
+         write (msg, '(a,i0)') 'global_init: number of equations must be >= 1, got ', neq
+         call fail(msg)
+         return
+      end if
+      ! Every equation number must be 0 (constrained) or 1..neq.
+      do e = 1, size(elem_eq, 2)
+         do k = 1, size(elem_eq, 1)
+            if (elem_eq(k, e) < 0 .or. elem_eq(k, e) > neq) then
+               write (msg, '(a,i0,a,i0,a,i0,a,i0)') 'global_init: element ', e, &
+                  ' freedom ', k, ' has equation ', elem_eq(k, e), &
+                  ' outside 0..', neq
+               call fail(msg)
+               return
+            end if
+         end do
+      end do
+
+      name = lower(adjustl(storage))
+      select case (trim(name))
+      case ('band')
+         ! kd = max over elements of (largest - smallest equation).
+         kd = 0
+         do e = 1, size(elem_eq, 2)
+            if (all(elem_eq(:, e) == 0)) cycle
+            lo = minval(elem_eq(:, e), mask=elem_eq(:, e) > 0)
+            hi = maxval(elem_eq(:, e))
+            kd = max(kd, hi - lo)
+         end do
+         call band_init(g%band, neq, kd, stat, errmsg)
+         if (stat /= 0) return
+      case ('skyline')
+         ! m_j = min over elements holding j of their smallest equation.
+         allocate (first_row(neq))
+         do eq = 1, neq
+            first_row(eq) = eq
+         end do
+         do e = 1, size(elem_eq, 2)
+            if (all(elem_eq(:, e) == 0)) cycle
+            lo = minval(elem_eq(:, e), mask=elem_eq(:, e) > 0)
+            do k = 1, size(elem_eq, 1)
+               eq = elem_eq(k, e)
+               if (eq > 0) first_row(eq) = min(first_row(eq), lo)
+            end do
+         end do
+         call skyline_init(g%sky, neq, first_row, stat, errmsg)
+         if (stat /= 0) return
+      case default
+         call fail("global_init: unknown storage '" // trim(storage) // &
+                   "' (expected 'band' or 'skyline')")
+         return
+      end select
+      g%storage = trim(name)
+      g%neq = neq
+   contains
+      !> Set stat and errmsg for a failure.
+      subroutine fail(text)
+         !> The error message.
+         character(len=*), intent(in) :: text
+         stat = 1
+         errmsg = text
+      end subroutine fail
+   end subroutine global_init
+
+   !> Set every entry to zero, forget any factorisation and any deferred
+   !> error; the structure is kept.
+   subroutine global_zero(g)
+      !> The matrix.
+      type(global_matrix_t), intent(inout) :: g
+
+      select case (trim(g%storage))
+      case ('band')
+         call band_zero(g%band)
+      case ('skyline')
+         call skyline_zero(g%sky)
+      end select
+      g%deferred_error = ''
+   end subroutine global_zero
+
+   !> Add a symmetric element matrix: A(eqs(p), eqs(q)) += ke(p,q), skipping
+   !> constrained freedoms (eqs = 0). Each global pair is added once, from
+   !> the element pairs with eqs(p) <= eqs(q).
+   !>
+   !> Fails, adding nothing, when g is not initialised or is factored, the
+   !> sizes differ, or an equation is out of range or outside the structure
+   !> (eqs not a column of the elem_eq given to global_init).
+   subroutine global_assemble(g, ke, eqs, stat, errmsg)
+      !> The global matrix, added into.
+      type(global_matrix_t), intent(inout) :: g
+      !> Symmetric element matrix ke(nfe, nfe).
+      real(dp), intent(in) :: ke(:,:)
+      !> Global equations of the element freedoms, eqs(nfe), 0 = skip.
+      integer, intent(in) :: eqs(:)
+      !> 0 on success, 1 on failure (optional; see module header).
+      integer, intent(out), optional :: stat
+      !> Reason for the failure (optional, set only on failure).
+      character(len=*), intent(inout), optional :: errmsg
+      character(len=msg_len) :: msg
+      integer :: p, q, ip, iq
+
+      if (present(stat)) stat = 0
+      msg = ''
+      if (len_trim(g%storage) == 0) then
+         msg = 'global_assemble: the matrix was never initialised'
+      else if (is_factored(g)) then
+         msg = 'global_assemble: the matrix is factored'
+      else if (size(ke, 1) /= size(eqs) .or. size(ke, 2) /= size(eqs)) then
+         write (msg, '(a,i0,a,i0,a,i0)') 'global_assemble: ke is ', size(ke, 1), &
+            ' x ', size(ke, 2), ' but size(eqs) = ', size(eqs)
+      else if (any(eqs < 0 .or. eqs > g%neq)) then
+         write (msg, '(a,i0)') 'global_assemble: an equation is outside 0..', g%neq
+      else
+         check: do q = 1, size(eqs)
+            do p = 1, size(eqs)
+               ip = eqs(p)
+               iq = eqs(q)
+               if (ip == 0 .or. iq == 0 .or. ip > iq) cycle
+               if (.not. in_structure(g, ip, iq)) then
+                  write (msg, '(a,i0,a,i0,a)') 'global_assemble: entry (', ip, ',', &
+                     iq, ') is outside the structure found by global_init'
+                  exit check
+               end if
+            end do
+         end do check
+      end if
+      if (len_trim(msg) > 0) then
+         call report(g, msg, stat, errmsg)
+         return
+      end if
+
+      select case (trim(g%storage))
+      case ('band')
+         do q = 1, size(eqs)
+            iq = eqs(q)
+            if (iq == 0) cycle
+            do p = 1, size(eqs)
+               ip = eqs(p)
+               if (ip == 0 .or. ip > iq) cycle
+               call band_add(g%band, ip, iq, ke(p, q))
+            end do
+         end do
+      case ('skyline')
+         do q = 1, size(eqs)
+            iq = eqs(q)
+            if (iq == 0) cycle
+            do p = 1, size(eqs)
+               ip = eqs(p)
+               if (ip == 0 .or. ip > iq) cycle
+               call skyline_add(g%sky, ip, iq, ke(p, q))
+            end do
+         end do
+      end select
+   end subroutine global_assemble
+
+   !> g = g + alpha*other, for two unfactored matrices built by global_init
+   !> with the same storage, neq and elem_eq (e.g. K + 4/dt**2 M).
+   subroutine global_axpy_matrix(g, alpha, other, stat, errmsg)
+      !> The matrix added into.
+      type(global_matrix_t), intent(inout) :: g
+      !> Scalar multiplying other.
+      real(dp), intent(in) :: alpha
+      !> The matrix added; same structure as g.
+      type(global_matrix_t), intent(in) :: other
+      !> 0 on success, 1 on failure (optional; see module header).
+      integer, intent(out), optional :: stat
+      !> Reason for the failure (optional, set only on failure).
+      character(len=*), intent(inout), optional :: errmsg
+      character(len=msg_len) :: msg
+      integer :: ierr
+
+      if (present(stat)) stat = 0
+      msg = ''
+      ierr = 0
+      if (g%storage /= other%storage .or. len_trim(g%storage) == 0) then
+         msg = "global_axpy_matrix: storages differ or are not initialised ('" // &
+               trim(g%storage) // "', '" // trim(other%storage) // "')"
+      else
+         select case (trim(g%storage))
+         case ('band')
+            call band_axpy(g%band, alpha, other%band, ierr, msg)
+         case ('skyline')
+            call skyline_axpy(g%sky, alpha, other%sky, ierr, msg)
+         end select
+      end if
+      if (len_trim(msg) > 0) then
+         call report(g, 'global_axpy_matrix: ' // trim(msg), stat, errmsg)
+         return
+      end if
+      ! A matrix added from a failed assembly carries its error along.
+      if (len_trim(g%deferred_error) == 0) g%deferred_error = other%deferred_error
+   end subroutine global_axpy_matrix
+
+   !> dst = src (storage, structure, values, factorisation).
+   subroutine global_copy(dst, src)
+      !> The copy.
+      type(global_matrix_t), intent(out) :: dst
+      !> The matrix copied.
+      type(global_matrix_t), intent(in) :: src
+
+      dst = src
+   end subroutine global_copy
+
+   !> y = A x with the unfactored matrix.
+   !>
+   !> Fails when g is not initialised, factored or carries a deferred error,
+   !> or the sizes differ; y is then NaN.
+   subroutine global_matvec(g, x, y, stat, errmsg)
+      !> The matrix, not factored.
+      type(global_matrix_t), intent(in) :: g
+      !> Vector of length neq.
+      real(dp), intent(in) :: x(:)
+      !> Result A x, length neq.
+      real(dp), intent(out) :: y(:)
+      !> 0 on success, 1 on failure (optional).
+      integer, intent(out), optional :: stat
+      !> Reason for the failure (optional, set only on failure).
+      character(len=*), intent(inout), optional :: errmsg
+      character(len=msg_len) :: msg
+      integer :: ierr
+
+      if (present(stat)) stat = 0
+      msg = ''
+      ierr = 0
+      if (len_trim(g%deferred_error) > 0) then
+         msg = g%deferred_error
+      else
+         select case (trim(g%storage))
+         case ('band')
+            call band_matvec(g%band, x, y, ierr, msg)
+         case ('skyline')
+            call skyline_matvec(g%sky, x, y, ierr, msg)
+         case default
+            msg = 'global_matvec: the matrix was never initialised'
+         end select
+      end if
+      if (len_trim(msg) > 0) then
+         y = ieee_value(1.0_dp, ieee_quiet_nan)
+         if (present(stat)) stat = 1
+         if (present(errmsg)) errmsg = msg
+      end if
+   end subroutine global_matvec
+
+   !> Factor in place (band: Cholesky, skyline: L D L^T).
+   !>
+   !> A failed pivot gives stat = 1, bad_eq = its equation and errmsg
+   !> "matrix not positive definite at equation N (...)"; the caller names
+   !> the node and freedom. Both storages use the same pivot rule.
+   subroutine global_factor(g, stat, errmsg, bad_eq)
+      !> The matrix, overwritten by its factors.
+      type(global_matrix_t), intent(inout) :: g
+      !> 0 on success, 1 on failure.
+      integer, intent(out) :: stat
+      !> Reason for the failure (set only on failure).
+      character(len=*), intent(inout) :: errmsg
+      !> Equation whose pivot failed, 0 if none did.
+      integer, intent(out) :: bad_eq
+
+      stat = 0
+      bad_eq = 0
+      if (len_trim(g%deferred_error) > 0) then
+         stat = 1
+         errmsg = g%deferred_error
+         return
+      end if
+      select case (trim(g%storage))
+      case ('band')
+         call band_factor(g%band, stat, errmsg, bad_eq)
+      case ('skyline')
+         call skyline_factor(g%sky, stat, errmsg, bad_eq)
+      case default
+         stat = 1
+         errmsg = 'global_factor: the matrix was never initialised'
+      end select
+   end subroutine global_factor
+
+   !> Solve A x = b with the factored matrix; b is overwritten by x.
+   subroutine global_solve(g, b, stat, errmsg)
+      !> The factored matrix.
+      type(global_matrix_t), intent(in) :: g
+      !> Right-hand side on entry, solution on return, length neq.
+      real(dp), intent(inout) :: b(:)
+      !> 0 on success, 1 on failure.
+      integer, intent(out) :: stat
+      !> Reason for the failure (set only on failure).
+      character(len=*), intent(inout) :: errmsg
+
+      stat = 0
+      if (len_trim(g%deferred_error) > 0) then
+         stat = 1
+         errmsg = g%deferred_error
+         return
+      end if
+      select case (trim(g%storage))
+      case ('band')
+         call band_solve(g%band, b, stat, errmsg)
+      case ('skyline')
+         call skyline_solve(g%sky, b, stat, errmsg)
+      case default
+         stat = 1
+         errmsg = 'global_solve: the matrix was never initialised'
+      end select
+   end subroutine global_solve
+
+   !> Half-bandwidth: kd for band storage, the largest column height
+   !> max_j (j - m_j) for skyline storage; 0 before global_init.
+   pure integer function global_bandwidth(g)
+      !> The matrix.
+      type(global_matrix_t), intent(in) :: g
+
+      select case (trim(g%storage))
+      case ('band')
+         global_bandwidth = g%band%kd
+      case ('skyline')
+         global_bandwidth = skyline_half_bandwidth(g%sky)
+      case default
+         global_bandwidth = 0
+      end select
+   end function global_bandwidth
+
+   !> Number of stored reals: (kd+1)*neq for band, nwk for skyline.
+   pure integer function global_stored_entries(g)
+      !> The matrix.
+      type(global_matrix_t), intent(in) :: g
+
+      select case (trim(g%storage))
+      case ('band')
+         global_stored_entries = size(g%band%ab)
+      case ('skyline')
+         global_stored_entries = size(g%sky%a)
+      case default
+         global_stored_entries = 0
+      end select
+   end function global_stored_entries
+
+   !> Entry A(i,j) of the unfactored matrix (zero outside the structure).
+   pure real(dp) function global_entry(g, i, j)
+      !> The matrix, not factored.
+      type(global_matrix_t), intent(in) :: g
+      !> Row index.
+      integer, intent(in) :: i
+      !> Column index.
+      integer, intent(in) :: j
+
+      select case (trim(g%storage))
+      case ('band')
+         global_entry = band_get(g%band, i, j)
+      case ('skyline')
+         global_entry = skyline_get(g%sky, i, j)
+      case default
+         global_entry = 0.0_dp
+      end select
+   end function global_entry
+
+   ! ---- private helpers ----------------------------------------------------
+
+   !> True when the stored structure holds A(i,j).
+   pure logical function in_structure(g, i, j)
+      !> The matrix.
+      type(global_matrix_t), intent(in) :: g
+      !> Row index.
+      integer, intent(in) :: i
+      !> Column index.
+      integer, intent(in) :: j
+
+      select case (trim(g%storage))
+      case ('band')
+         in_structure = band_in_band(g%band, i, j)
+      case ('skyline')
+         in_structure = skyline_in_profile(g%sky, i, j)
+      case default
+         in_structure = .false.
+      end select
+   end function in_structure
+
+   !> True when the selected storage holds a factorisation.
+   pure logical function is_factored(g)
+      !> The matrix.
+      type(global_matrix_t), intent(in) :: g
+
+      is_factored = g%band%factored .or. g%sky%factored
+   end function is_factored
+
+   !> Hand a failure to the caller's stat/errmsg, or record it in g.
+   subroutine report(g, msg, stat, errmsg)
+      !> The matrix, which records the failure when stat is absent.
+      type(global_matrix_t), intent(inout) :: g
+      !> What failed.
+      character(len=*), intent(in) :: msg
+      !> The caller's stat, set to 1 when present.
+      integer, intent(out), optional :: stat
+      !> The caller's errmsg, set to msg when present.
+      character(len=*), intent(inout), optional :: errmsg
+
+      if (present(stat)) then
+         stat = 1
+         if (present(errmsg)) errmsg = msg
+      else if (len_trim(g%deferred_error) == 0) then
+         g%deferred_error = msg
+      end if
+   end subroutine report
+
+   !> Lower-case copy of an ASCII string.
+   pure function lower(s) result(t)
+      !> The string.
+      character(len=*), intent(in) :: s
+      character(len=len(s)) :: t
+      integer :: k
+
+      t = s
+      do k = 1, len(s)
+         if (s(k:k) >= 'A' .and. s(k:k) <= 'Z') &
+            t(k:k) = achar(iachar(s(k:k)) + iachar('a') - iachar('A'))
+      end do
+   end function lower
+
+end module global_matrix

@@ -1,0 +1,243 @@
+!> impact: nonlinear analysis of a composite laminate struck by a rigid
+!> impactor at low velocity, after I. H. Choi, C. S. Hong and I. Lee,
+!> "Nonlinear Analysis of Composite Laminates Subjected to Low-Velocity
+!> Impact", KSME Transactions (1991). Equation numbers are the paper's.
+!>
+!> Usage:  ./impact < deck.nml      or      ./impact deck.nml
+!>
+!> The program follows the flowchart of the paper's Fig. 3: read the data,
+!> form the laminate, the mesh and the matrices, factor the left-hand matrix
+!> once (Akay), then in every time step assume a contact force, solve the
+!> plate nonlinearly under it (eq. 19, 18), move the impactor (eq. 21),
+!> compute the indentation and the law's force (eq. 13, 11, 12), and repeat
+!> until the assumed and computed forces agree (eq. 17).
+program impact
+   use, intrinsic :: iso_fortran_env, only: input_unit, output_unit, error_unit
+   use kinds, only: dp, msg_len
+   use input_deck, only: deck_t, read_deck, read_deck_file, echo_deck
+   use contact_law, only: contact_history_t, contact_force, contact_branch, contact_commit
+   use newmark, only: newmark_t, newmark_init, newmark_predictor, newmark_update, impactor_advance
+   use global_matrix, only: global_matvec, global_bandwidth, global_stored_entries
+   use impact_driver, only: model_t, plate_state_t, impactor_state_t, force_bracket_t, &
+      build_model, factor_effective_matrix, plate_solve, bracket_start, bracket_update, &
+      contact_converged, first_force_guess, plate_kinetic_energy, plate_strain_energy, &
+      back_face_strain, impact_deflection
+   use output_files, only: history_row_t, run_summary_t, open_history, write_history_row, &
+      summary_record, write_summary
+   implicit none
+
+   type(deck_t) :: deck
+   type(model_t) :: model
+   type(newmark_t) :: nm
+   type(plate_state_t) :: plate
+   type(impactor_state_t) :: imp, imp_new
+   type(contact_history_t) :: hist
+   type(force_bracket_t) :: br
+   type(history_row_t) :: row
+   type(run_summary_t) :: summary
+   real(dp), allocatable :: mb(:), d_new(:)
+   real(dp) :: t, f_assum, f_cont, f_next, alpha, alpha_old, w_plate, w_plate_old, e0, t_cpu0, t_cpu1
+   real(dp) :: contact_work, indentation_energy
+   integer :: stat, step, nstep, hist_unit, ic, nl_iter, step_solves
+   logical :: nl_ok, contact_ok, warned
+   character(len=msg_len) :: errmsg, path, arg
+
+   ! =====================================================================
+   ! Input data: the namelist deck, from a file named on the command line
+   ! or from standard input; validated and echoed.
+   ! =====================================================================
+   errmsg = ''
+   if (command_argument_count() >= 1) then
+      call get_command_argument(1, arg)
+      call read_deck_file(trim(arg), deck, stat, errmsg)
+   else
+      call read_deck(input_unit, '<stdin>', deck, stat, errmsg)
+   end if
+   if (stat /= 0) call fail('input: '//errmsg)
+   call cpu_time(t_cpu0)
+
+   ! =====================================================================
+   ! Laminate stiffness (eq. 6) and inertia (eq. 9); mesh and boundary
+   ! conditions (Fig. 4); [M] and [K_L] assembled (eq. 15, Appendix B).
+   ! =====================================================================
+   call build_model(deck, model, stat, errmsg)
+   if (stat /= 0) call fail(errmsg)
+   call echo_run(output_unit)
+
+   ! =====================================================================
+   ! Newmark constants and the left-hand matrix of eq. (19),
+   ! K_L + 4/dt^2 M, factored once (Akay's constant-coefficient scheme).
+   ! =====================================================================
+   nm = newmark_init(deck%dt)
+   call factor_effective_matrix(model, nm, stat, errmsg)
+   if (stat /= 0) call fail(errmsg)
+
+   ! =====================================================================
+   ! Initial conditions: the plate at rest, the impactor just touching it
+   ! at its impact velocity.
+   ! =====================================================================
+   allocate (plate%d(model%msh%neq), plate%v(model%msh%neq), plate%a(model%msh%neq))
+   allocate (mb(model%msh%neq), d_new(model%msh%neq))
+   plate%d = 0.0_dp;  plate%v = 0.0_dp;  plate%a = 0.0_dp
+   imp = impactor_state_t(w=0.0_dp, v=deck%velocity, f=0.0_dp)
+   e0 = 0.5_dp*deck%mass*deck%velocity**2
+   summary%initial_energy = e0
+   contact_work = 0.0_dp;  indentation_energy = 0.0_dp
+   alpha_old = 0.0_dp;  w_plate_old = 0.0_dp
+   warned = .false.
+   nstep = nint(deck%t_end/deck%dt)
+
+   call open_history(deck, hist_unit, path, stat, errmsg)
+   if (stat /= 0) call fail(errmsg)
+   row = history_row_t(v_impactor=imp%v, ke_impactor=e0)
+   call write_history_row(hist_unit, row)
+
+   ! =====================================================================
+   ! Time integration
+   ! =====================================================================
+   time_steps: do step = 1, nstep
+      t = real(step, dp)*deck%dt
+
+      ! -- {b} of eq. (20) and M{b}, fixed for the whole step
+      call global_matvec(model%mass, newmark_predictor(nm, plate%d, plate%v, plate%a), mb)
+
+      ! -- assume the contact force: the plate does not react (section 2.3)
+      f_assum = first_force_guess(model, imp, impact_deflection(model, plate%d), deck%dt, hist)
+      br = bracket_start()
+      d_new = plate%d
+      contact_ok = .false.
+      step_solves = model%solves
+
+      contact_iterations: do ic = 1, deck%max_contact_iter
+         ! -- the plate under the assumed force: eq. (19) iterated to eq. (18)
+         call plate_solve(model, mb, f_assum, plate%d, d_new, nl_iter, nl_ok, stat, errmsg)
+         if (stat /= 0) call fail_in_run('plate solution: '//errmsg)
+         if (.not. nl_ok) summary%unconverged_steps = summary%unconverged_steps + 1
+
+         ! -- the impactor under the same force, eq. (21)
+         call impactor_advance(deck%mass, deck%dt, imp%w, imp%v, imp%f, f_assum, imp_new%w, imp_new%v)
+
+         ! -- indentation, eq. (13), and the law's force, eq. (11)-(12)
+         w_plate = impact_deflection(model, d_new)
+         alpha = imp_new%w - w_plate
+         f_cont = contact_force(model%law, hist, alpha)
+
+         ! -- assumed and computed forces agree? eq. (17)
+         if (contact_converged(f_assum, f_cont, deck%cr1)) then
+            contact_ok = .true.
+            exit contact_iterations
+         end if
+         call bracket_update(br, f_assum, f_cont, f_next)
+         f_assum = f_next
+      end do contact_iterations
+      ic = min(ic, deck%max_contact_iter)
+      if (.not. contact_ok) then
+         summary%unconverged_steps = summary%unconverged_steps + 1
+         if (.not. warned) then
+            write (error_unit, '(a,i0,a,es12.5,a,2es12.4)') 'warning: contact iteration did not converge at step ', &
+               step, ', t = ', t, ' s; F_assum, F_cont = ', f_assum, f_cont
+            warned = .true.
+         end if
+      end if
+
+      ! -- accept the step: Newmark update, impactor, contact history
+      call newmark_update(nm, plate%d, d_new, plate%v, plate%a)
+      plate%d = d_new
+      imp_new%f = f_assum
+      contact_work = contact_work + 0.5_dp*(imp%f + imp_new%f)*(w_plate - w_plate_old)
+      indentation_energy = indentation_energy + 0.5_dp*(imp%f + imp_new%f)*(alpha - alpha_old)
+      imp = imp_new
+      call contact_commit(model%law, hist, alpha)
+      w_plate_old = w_plate;  alpha_old = alpha
+
+      call summary_record(summary, t, imp%f, w_plate, back_face_strain(model, plate%d))
+      summary%contact_iterations = summary%contact_iterations + ic
+      summary%max_contact_iter = max(summary%max_contact_iter, ic)
+      summary%max_nonlinear_iter = max(summary%max_nonlinear_iter, model%solves - step_solves)
+      summary%steps = step
+
+      ! -- output
+      if (mod(step, deck%every) == 0 .or. step == nstep) then
+         row%time = t;  row%force = imp%f;  row%alpha = alpha
+         row%w_plate = w_plate;  row%w_impactor = imp%w;  row%v_impactor = imp%v
+         row%strain_y = back_face_strain(model, plate%d)
+         row%ke_impactor = 0.5_dp*deck%mass*imp%v**2
+         row%ke_plate = plate_kinetic_energy(model, plate%v)
+         row%strain_energy = plate_strain_energy(model, plate%d)
+         row%contact_work = contact_work
+         row%indentation_energy = indentation_energy
+         row%energy_error = e0 - (row%ke_impactor + row%ke_plate + row%strain_energy + indentation_energy)
+         row%branch = contact_branch(hist, alpha)
+         if (imp%f <= 0.0_dp) row%branch = 0
+         row%contact_iter = ic
+         row%nonlinear_iter = model%solves - step_solves
+         summary%max_energy_error = max(summary%max_energy_error, abs(row%energy_error))
+         call write_history_row(hist_unit, row)
+      end if
+   end do time_steps
+
+   ! =====================================================================
+   ! Summary
+   ! =====================================================================
+   close (hist_unit)
+   call finish_summary('completed')
+   write (output_unit, '(a)') 'history: '//trim(path)
+   write (output_unit, '(a)') 'summary: '//trim(deck%prefix)//'_summary.dat'
+   write (output_unit, '(a,es12.5,a,f9.2,a,i0,a,es12.5,a,f8.3,a)') 'peak force ', summary%peak_force, &
+      ' N at ', summary%time_of_peak*1.0e6_dp, ' us; contacts ', summary%contacts, &
+      '; max deflection ', summary%max_deflection*1.0e3_dp, ' mm; cpu ', summary%cpu_s, ' s'
+   if (summary%unconverged_steps > 0) write (error_unit, '(a,i0,a)') 'warning: ', &
+      summary%unconverged_steps, ' iterations did not converge; see the summary'
+
+contains
+
+   !> Stops before any result exists.
+   subroutine fail(message)
+      character(len=*), intent(in) :: message
+      write (error_unit, '(a)') 'impact: error: '//trim(message)
+      error stop 1
+   end subroutine fail
+
+   !> Stops during the run, keeping what was computed: the history is
+   !> already on disk; the summary says how far the run got.
+   subroutine fail_in_run(message)
+      character(len=*), intent(in) :: message
+      character(len=64) :: where
+      write (where, '(a,i0,a,es11.4,a)') 'failed at step ', step, ' (t = ', t, ' s)'
+      write (error_unit, '(a)') 'impact: error: '//trim(message)
+      write (error_unit, '(a)') 'impact: '//trim(where)//'; results up to the last step are in '// &
+         trim(deck%prefix)//'_history.dat'
+      close (hist_unit)
+      call finish_summary(where)
+      error stop 1
+   end subroutine fail_in_run
+
+   subroutine finish_summary(status)
+      character(len=*), intent(in) :: status
+      call cpu_time(t_cpu1)
+      summary%status = status
+      summary%permanent_indentation = hist%alpha_0
+      summary%final_velocity = imp%v
+      summary%plate_solves = model%solves
+      summary%factorizations = model%factorizations
+      summary%cpu_s = t_cpu1 - t_cpu0
+      call write_summary(deck, summary, stat, errmsg)
+      if (stat /= 0) write (error_unit, '(a)') 'impact: error: '//trim(errmsg)
+   end subroutine finish_summary
+
+   !> Echo of the effective input and the derived sizes (after STAP).
+   subroutine echo_run(u)
+      integer, intent(in) :: u
+      write (u, '(a)') 'impact: low-velocity impact of a composite laminate (Choi, Hong & Lee 1991)'
+      call echo_deck(deck, u, '')
+      write (u, '(a,i0,a,i0,a,i0,a,i0,a,i0)') 'model: nodes ', model%msh%nnode, ', elements ', &
+         model%msh%nelem, ', equations ', model%msh%neq, ', half-bandwidth ', &
+         global_bandwidth(model%mass), ', stored entries ', global_stored_entries(model%mass)
+      write (u, '(a,3es12.4)') 'laminate: A11 A22 A66 (N/m)  ', model%lmt%a(1,1), model%lmt%a(2,2), model%lmt%a(3,3)
+      write (u, '(a,4es12.4)') 'laminate: D11 D22 D66 D16 (N m) ', model%lmt%d(1,1), model%lmt%d(2,2), &
+         model%lmt%d(3,3), model%lmt%d(1,3)
+      write (u, '(a,2es12.4)') 'laminate: Abar44 Abar55 (N/m) ', model%lmt%as(1,1), model%lmt%as(2,2)
+      write (u, '(a,3es12.4)') 'laminate: P (kg/m^2), R (kg/m), I (kg) ', model%lmt%p, model%lmt%r, model%lmt%i
+   end subroutine echo_run
+
+end program impact

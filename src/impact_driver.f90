@@ -1,0 +1,374 @@
+!> The impact analysis of Fig. 3: the model set-up, the plate solution of a
+!> time step with Akay's constant-coefficient iteration (eq. 18, 19), the
+!> contact-force iteration (eq. 13, 17, 21) and the quantities written out.
+!>
+!> The main program (src/impact.f90) reads like the flowchart and calls the
+!> procedures below, one per box.
+!>
+!> Units: SI throughout; the plate model may be a quarter of the plate, in
+!> which case it carries a quarter of the contact force and its energies are
+!> multiplied by 4 to stand for the whole plate (mesh%sym_factor).
+module impact_driver
+   use kinds, only: dp, msg_len
+   use materials, only: lamina_t, laminate_t, laminate_from_layup, laminate_drop_bend_twist
+   use mesh, only: mesh_t, build_mesh, apply_boundary, describe_equation, nfe
+   use element_matrices, only: element_geometry_t, element_geometry, element_mass, &
+      element_stiffness, element_nonlinear_force, element_strain_energy, &
+      element_inplane_strain, element_gauss_point
+   use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, &
+      global_axpy_matrix, global_copy, global_matvec, global_factor, global_solve
+   use contact_law, only: contact_law_t, contact_history_t, contact_force
+   use newmark, only: newmark_t, impactor_advance
+   use input_deck, only: deck_t
+   implicit none
+   private
+   public :: model_t, plate_state_t, impactor_state_t, force_bracket_t, &
+             build_model, factor_effective_matrix, plate_solve, &
+             nonlinear_force, bracket_start, bracket_update, contact_converged, &
+             first_force_guess, plate_kinetic_energy, plate_strain_energy, &
+             back_face_strain, impact_deflection
+
+   !> Everything about the plate that does not change during a run.
+   type :: model_t
+      type(mesh_t) :: msh                      !< mesh and freedoms
+      type(laminate_t) :: lmt                  !< laminate used (D16 = D26 = 0 on a quarter)
+      type(element_geometry_t), allocatable :: geo(:)  !< per-element geometry
+      type(global_matrix_t) :: mass            !< [M]
+      type(global_matrix_t) :: stiff           !< [K_L]
+      type(global_matrix_t) :: keff            !< K_L + 4/dt^2 M, factored (eq. 19)
+      type(contact_law_t) :: law               !< eq. (11)-(12) constants
+      logical :: nonlinear = .true.            !< von Karman terms on
+      real(dp) :: impactor_mass = 0.0_dp       !< m (kg)
+      integer :: eq_impact = 0                 !< equation of w at the impact point
+      real(dp) :: force_share = 1.0_dp         !< share of the contact force carried by the model
+      integer :: gauge_gp = 0                  !< 3x3 Gauss point of the strain gauge in msh%impact_elem
+      real(dp) :: z_back = 0.0_dp              !< z of the back face, +h/2 (m)
+      integer :: max_nonlinear_iter = 200      !< limit of the eq. (18) iteration
+      real(dp) :: cr2 = 1.0e-7_dp              !< tolerance of eq. (18)
+      integer :: solves = 0                    !< back substitutions so far
+      integer :: factorizations = 0            !< factorizations so far
+   end type model_t
+
+   !> Plate displacements, velocities and accelerations {D}, {V}, {A}.
+   type :: plate_state_t
+      real(dp), allocatable :: d(:), v(:), a(:)
+   end type plate_state_t
+
+   !> The rigid impactor: position, velocity (positive towards the plate)
+   !> and the contact force at the same time.
+   type :: impactor_state_t
+      real(dp) :: w = 0.0_dp, v = 0.0_dp, f = 0.0_dp
+   end type impactor_state_t
+
+   !> The contact-force iteration's knowledge of the root of
+   !> r(F) = F - F_cont(F), which increases with F: a harder push stops the
+   !> impactor sooner and deflects the plate more, so the indentation and
+   !> the law's force fall.
+   type :: force_bracket_t
+      real(dp) :: lo = 0.0_dp, hi = huge(1.0_dp)  !< bracket (N)
+      real(dp) :: r_lo = 0.0_dp, r_hi = 0.0_dp    !< residuals at the ends
+      logical :: has_lo = .false., has_hi = .false.  !< residual known at that end
+      integer :: last_side = 0                    !< end moved last (-1 lo, +1 hi), for Illinois
+   end type force_bracket_t
+
+contains
+
+   ! ================================================================ set-up
+
+   !> Material (eq. 6, 9), mesh and boundary conditions (Fig. 4), element
+   !> matrices and their assembly into [M] and [K_L] (eq. 15, Appendix B).
+   subroutine build_model(deck, model, stat, errmsg)
+      type(deck_t), intent(in) :: deck          !< the input deck
+      type(model_t), intent(out) :: model       !< the model
+      integer, intent(out) :: stat              !< 0 on success
+      character(len=*), intent(inout) :: errmsg !< reason on failure
+      type(lamina_t) :: lam
+      real(dp) :: ke(nfe, nfe), me(nfe, nfe)
+      integer :: e
+      logical :: ok
+
+      ! -- material: lamina (Table 3) and laminate (eq. 6, 9)
+      lam = lamina_t(deck%e1, deck%e2, deck%g12, deck%g13, deck%g23, deck%nu12, deck%rho)
+      model%lmt = laminate_from_layup(lam, deck%angles, deck%h, deck%k4, deck%k5)
+      if (deck%domain == 'quarter') model%lmt = laminate_drop_bend_twist(model%lmt)
+      model%law = contact_law_t(deck%k, deck%q, deck%alpha_p, deck%beta)
+      model%nonlinear = deck%theory == 'nonlinear'
+      model%impactor_mass = deck%mass
+      model%z_back = 0.5_dp*deck%h
+      model%cr2 = deck%cr2
+      model%max_nonlinear_iter = deck%max_nonlinear_iter
+
+      ! -- mesh, boundary conditions, equation numbers (Fig. 4)
+      call build_mesh(deck%a, deck%b, deck%nx, deck%ny, deck%domain, model%msh, stat, errmsg)
+      if (stat /= 0) return
+      call apply_boundary(model%msh, deck%edges, deck%inplane, stat, errmsg)
+      if (stat /= 0) return
+      model%eq_impact = model%msh%eq(3, model%msh%impact_node)
+      model%force_share = 1.0_dp/model%msh%sym_factor
+
+      ! -- element geometry, once per element
+      allocate (model%geo(model%msh%nelem))
+      geometry: do e = 1, model%msh%nelem
+         call element_geometry(model%msh%coords(:, model%msh%conn(:, e)), model%geo(e), ok)
+         if (.not. ok) then
+            stat = 1
+            write (errmsg, '(a,i0,a)') 'mesh: element ', e, ' has a non-positive Jacobian'
+            return
+         end if
+      end do geometry
+      model%gauge_gp = element_gauss_point(model%geo(model%msh%impact_elem), &
+                                           model%msh%coords(:, model%msh%impact_node))
+
+      ! -- [M] and [K_L], assembled once (eq. 15)
+      call global_init(model%mass, deck%storage, model%msh%neq, model%msh%elem_eq, stat, errmsg)
+      if (stat /= 0) return
+      call global_init(model%stiff, deck%storage, model%msh%neq, model%msh%elem_eq, stat, errmsg)
+      if (stat /= 0) return
+      call global_zero(model%mass)
+      call global_zero(model%stiff)
+      elements: do e = 1, model%msh%nelem
+         call element_mass(model%lmt, model%geo(e), me)
+         call element_stiffness(model%lmt, model%geo(e), ke, stab_env())
+         call global_assemble(model%mass, me, model%msh%elem_eq(:, e))
+         call global_assemble(model%stiff, ke, model%msh%elem_eq(:, e))
+      end do elements
+   end subroutine build_model
+
+   !> The left-hand matrix of eq. (19), K_L + 4/dt^2 M, formed and factored
+   !> once: Akay's constant-coefficient scheme never changes it.
+   subroutine factor_effective_matrix(model, nm, stat, errmsg)
+      type(model_t), intent(inout) :: model     !< model; keff is set
+      type(newmark_t), intent(in) :: nm         !< Newmark constants
+      integer, intent(out) :: stat              !< 0 on success
+      character(len=*), intent(inout) :: errmsg !< names equation, node and freedom on failure
+      integer :: bad_eq
+      call global_copy(model%keff, model%stiff)
+      call global_axpy_matrix(model%keff, nm%a0, model%mass)
+      bad_eq = 0
+      call global_factor(model%keff, stat, errmsg, bad_eq)
+      model%factorizations = model%factorizations + 1
+      if (stat /= 0 .and. bad_eq > 0) &
+         errmsg = 'K_L + 4/dt^2 M is not positive definite: pivot of ' // &
+                  trim(describe_equation(model%msh, bad_eq))
+   end subroutine factor_effective_matrix
+
+   ! ================================================================ plate
+
+   !> The nonlinear term K_N(D) D of eq. (19), assembled element by element
+   !> (zero for the linear theory).
+   subroutine nonlinear_force(model, d, fn)
+      type(model_t), intent(in) :: model        !< model
+      real(dp), intent(in) :: d(:)              !< global displacements
+      real(dp), intent(out) :: fn(:)            !< K_N(D) D
+      real(dp) :: de(nfe), fe(nfe)
+      integer :: e
+      fn = 0.0_dp
+      if (.not. model%nonlinear) return
+      elements: do e = 1, model%msh%nelem
+         call gather(model%msh%elem_eq(:, e), d, de)
+         call element_nonlinear_force(model%lmt, model%geo(e), de, fe)
+         call scatter_add(model%msh%elem_eq(:, e), fe, fn)
+      end do elements
+   end subroutine nonlinear_force
+
+   !> The plate at t+dt under the contact force f (the share the model
+   !> carries is applied at the impact point): Akay's iteration of eq. (19),
+   !>   (K_L + 4/dt^2 M) D^{n+1} = F + M b - K_N(D^n) D^n,
+   !> until eq. (18): sum (D^{n+1} - D^n)^2 / sum (D^{n+1} - D_t)^2 < C_r2.
+   !> d holds the first iterate on entry and the solution on exit.
+   subroutine plate_solve(model, mb, f, d_t, d, iterations, converged, stat, errmsg)
+      type(model_t), intent(inout) :: model     !< model (counts solves)
+      real(dp), intent(in) :: mb(:)             !< M {b} of eq. (19)-(20)
+      real(dp), intent(in) :: f                 !< contact force on the whole plate (N)
+      real(dp), intent(in) :: d_t(:)            !< converged displacements at t
+      real(dp), intent(inout) :: d(:)           !< iterate in, solution out
+      integer, intent(out) :: iterations        !< iterations used
+      logical, intent(out) :: converged         !< eq. (18) met
+      integer, intent(out) :: stat              !< 0 unless the solver failed
+      character(len=*), intent(inout) :: errmsg !< reason on failure
+      real(dp) :: rhs(size(d)), fn(size(d)), num, den
+
+      converged = .false.
+      iterations = 0
+      nonlinear_iterations: do while (iterations < model%max_nonlinear_iter)
+         iterations = iterations + 1
+         call nonlinear_force(model, d, fn)
+         rhs = mb - fn
+         rhs(model%eq_impact) = rhs(model%eq_impact) + model%force_share*f
+         call global_solve(model%keff, rhs, stat, errmsg)
+         model%solves = model%solves + 1
+         if (stat /= 0) return
+         if (.not. model%nonlinear) then
+            d = rhs                 ! linear theory: one solve is exact
+            converged = .true.
+            exit nonlinear_iterations
+         end if
+         num = sum((rhs - d)**2)
+         den = sum((rhs - d_t)**2)
+         d = rhs
+         if (num <= model%cr2*den .or. num == 0.0_dp) then   ! eq. (18)
+            converged = .true.
+            exit nonlinear_iterations
+         end if
+      end do nonlinear_iterations
+   end subroutine plate_solve
+
+   ! ======================================================= contact force
+
+   !> First assumed force of a step (section 2.3): the impactor indents as
+   !> if the plate did not react, so w_plate stays at its value at t and the
+   !> impactor moves on under the force of t alone.
+   function first_force_guess(model, imp, w_plate, dt, hist) result(f)
+      type(model_t), intent(in) :: model           !< model
+      type(impactor_state_t), intent(in) :: imp    !< impactor at t
+      real(dp), intent(in) :: w_plate              !< plate deflection at t (m)
+      real(dp), intent(in) :: dt                   !< time step (s)
+      type(contact_history_t), intent(in) :: hist  !< committed contact history
+      real(dp) :: f
+      real(dp) :: w_new, v_new
+      call impactor_advance(model%impactor_mass, dt, imp%w, imp%v, imp%f, 0.0_dp, w_new, v_new)
+      f = contact_force(model%law, hist, w_new - w_plate)
+   end function first_force_guess
+
+   !> A fresh bracket: F = 0 is a lower bound of the root.
+   pure function bracket_start() result(br)
+      type(force_bracket_t) :: br
+      br = force_bracket_t()
+   end function bracket_start
+
+   !> Records the residual r = f_assumed - f_contact and returns the next
+   !> assumed force: the law's force while only one side of the root is
+   !> known, regula falsi with the Illinois modification once it is
+   !> bracketed. This is the update the paper leaves open (NOTES.md §4);
+   !> it always converges because r increases with the force.
+   pure subroutine bracket_update(br, f_assumed, f_contact, f_next)
+      type(force_bracket_t), intent(inout) :: br  !< bracket, updated
+      real(dp), intent(in) :: f_assumed           !< force the plate was solved with (N)
+      real(dp), intent(in) :: f_contact           !< force of the law at the resulting indentation (N)
+      real(dp), intent(out) :: f_next             !< next assumed force (N)
+      real(dp) :: r
+      logical :: inside
+
+      r = f_assumed - f_contact
+      if (r > 0.0_dp) then
+         if (br%last_side == 1 .and. br%has_lo) br%r_lo = 0.5_dp*br%r_lo   ! Illinois
+         br%hi = f_assumed;  br%r_hi = r;  br%has_hi = .true.;  br%last_side = 1
+      else
+         if (br%last_side == -1 .and. br%has_hi) br%r_hi = 0.5_dp*br%r_hi
+         br%lo = f_assumed;  br%r_lo = r;  br%has_lo = .true.;  br%last_side = -1
+      end if
+
+      if (br%has_lo .and. br%has_hi) then
+         f_next = br%lo - br%r_lo*(br%hi - br%lo)/(br%r_hi - br%r_lo)
+      else
+         f_next = f_contact
+      end if
+      ! stay inside the bracket; F = 0 may be tried while its residual is unknown
+      inside = f_next < br%hi .and. (f_next > br%lo .or. (.not. br%has_lo .and. f_next >= br%lo))
+      if (.not. inside) then
+         if (br%has_hi) then
+            f_next = 0.5_dp*(br%lo + br%hi)
+         else
+            f_next = max(f_contact, br%lo)
+         end if
+      end if
+   end subroutine bracket_update
+
+   !> Convergence of the contact iteration, eq. (17):
+   !> |F_assum - F_cont| / F_assum < C_r1 (both zero: no contact, converged).
+   pure function contact_converged(f_assumed, f_contact, cr1) result(done)
+      real(dp), intent(in) :: f_assumed, f_contact  !< forces (N)
+      real(dp), intent(in) :: cr1                   !< tolerance C_r1
+      logical :: done
+      if (f_assumed <= 0.0_dp) then
+         done = f_contact <= 0.0_dp
+      else
+         done = abs(f_assumed - f_contact) < cr1*f_assumed
+      end if
+   end function contact_converged
+
+   ! ============================================================ outputs
+
+   !> Plate deflection at the impact point (m).
+   pure function impact_deflection(model, d) result(w)
+      type(model_t), intent(in) :: model   !< model
+      real(dp), intent(in) :: d(:)         !< global displacements
+      real(dp) :: w
+      w = d(model%eq_impact)
+   end function impact_deflection
+
+   !> Kinetic energy of the whole plate, 1/2 V^T M V (J).
+   function plate_kinetic_energy(model, v) result(ek)
+      type(model_t), intent(in) :: model   !< model
+      real(dp), intent(in) :: v(:)         !< global velocities
+      real(dp) :: ek
+      real(dp) :: mv(size(v))
+      call global_matvec(model%mass, v, mv)
+      ek = 0.5_dp*dot_product(v, mv)*model%msh%sym_factor
+   end function plate_kinetic_energy
+
+   !> Strain energy of the whole plate (J), von Karman strains for the
+   !> nonlinear theory.
+   function plate_strain_energy(model, d) result(u)
+      type(model_t), intent(in) :: model   !< model
+      real(dp), intent(in) :: d(:)         !< global displacements
+      real(dp) :: u
+      real(dp) :: de(nfe)
+      integer :: e
+      u = 0.0_dp
+      elements: do e = 1, model%msh%nelem
+         call gather(model%msh%elem_eq(:, e), d, de)
+         u = u + element_strain_energy(model%lmt, model%geo(e), de, model%nonlinear)
+      end do elements
+      u = u*model%msh%sym_factor
+   end function plate_strain_energy
+
+   !> The paper's strain gauge (Fig. 9b): in-plane y strain on the face
+   !> opposite the impact, at the Gauss point nearest the impact point, in
+   !> the element nearest it.
+   function back_face_strain(model, d) result(eps_y)
+      type(model_t), intent(in) :: model   !< model
+      real(dp), intent(in) :: d(:)         !< global displacements
+      real(dp) :: eps_y
+      real(dp) :: de(nfe), eps(3)
+      integer :: e
+      e = model%msh%impact_elem
+      call gather(model%msh%elem_eq(:, e), d, de)
+      eps = element_inplane_strain(model%geo(e), de, model%gauge_gp, model%z_back, model%nonlinear)
+      eps_y = eps(2)
+   end function back_face_strain
+
+   ! ============================================================ helpers
+   function stab_env() result(x)
+      real(dp) :: x
+      character(len=32) :: v
+      integer :: st
+      call get_environment_variable('STAB', v, status=st)
+      x = 0
+      if (st == 0) read (v, *) x
+   end function stab_env
+
+   !> Element displacements from the global vector (0 for held freedoms).
+   pure subroutine gather(eqs, d, de)
+      integer, intent(in) :: eqs(:)
+      real(dp), intent(in) :: d(:)
+      real(dp), intent(out) :: de(:)
+      where (eqs > 0)
+         de = d(max(eqs, 1))
+      elsewhere
+         de = 0.0_dp
+      end where
+   end subroutine gather
+
+   !> Adds element forces into the global vector.
+   pure subroutine scatter_add(eqs, fe, f)
+      integer, intent(in) :: eqs(:)
+      real(dp), intent(in) :: fe(:)
+      real(dp), intent(inout) :: f(:)
+      integer :: k
+      do k = 1, size(eqs)
+         if (eqs(k) > 0) f(eqs(k)) = f(eqs(k)) + fe(k)
+      end do
+   end subroutine scatter_add
+
+end module impact_driver

@@ -1,0 +1,67 @@
+!> The 9-node Lagrange quadrilateral: shape functions of eq. (14).
+!>
+!> Local node numbering (corners counter-clockwise, then mid-sides, then
+!> the centre), on the reference square (xi, eta) in [-1, 1]^2:
+!>
+!>       4 ---- 7 ---- 3        eta
+!>       |             |         ^
+!>       8      9      6         |
+!>       |             |         +--> xi
+!>       1 ---- 5 ---- 2
+!>
+!> phi_i(xi, eta) = L_a(xi) L_b(eta), with the quadratic Lagrange polynomials
+!> L_1 = s(s-1)/2, L_2 = 1 - s^2, L_3 = s(s+1)/2 at s = -1, 0, +1.
+module shape_functions
+   use kinds, only: dp
+   implicit none
+   private
+   public :: nen, shape9, shape9_derivs, node_xi
+
+   !> Nodes per element.
+   integer, parameter :: nen = 9
+   !> Position index (1: -1, 2: 0, 3: +1) of each node along xi and eta.
+   integer, parameter :: ia(nen) = [1, 3, 3, 1, 2, 3, 2, 1, 2]
+   integer, parameter :: ib(nen) = [1, 1, 3, 3, 1, 2, 3, 2, 2]
+
+contains
+
+   !> Reference coordinates (xi, eta) of local node i.
+   pure function node_xi(i) result(x)
+      integer, intent(in) :: i   !< local node, 1..9
+      real(dp) :: x(2)
+      real(dp), parameter :: s(3) = [-1.0_dp, 0.0_dp, 1.0_dp]
+      x = [s(ia(i)), s(ib(i))]
+   end function node_xi
+
+   !> Values of the nine shape functions at (xi, eta).
+   pure function shape9(xi, eta) result(phi)
+      real(dp), intent(in) :: xi, eta   !< reference coordinates
+      real(dp) :: phi(nen)
+      real(dp) :: lx(3), ly(3), dl(3)
+      call lagrange3(xi, lx, dl)
+      call lagrange3(eta, ly, dl)
+      phi = lx(ia)*ly(ib)
+   end function shape9
+
+   !> Derivatives of the nine shape functions with respect to xi and eta:
+   !> dphi(1,i) = d phi_i / d xi, dphi(2,i) = d phi_i / d eta.
+   pure function shape9_derivs(xi, eta) result(dphi)
+      real(dp), intent(in) :: xi, eta   !< reference coordinates
+      real(dp) :: dphi(2, nen)
+      real(dp) :: lx(3), ly(3), dlx(3), dly(3)
+      call lagrange3(xi, lx, dlx)
+      call lagrange3(eta, ly, dly)
+      dphi(1,:) = dlx(ia)*ly(ib)
+      dphi(2,:) = lx(ia)*dly(ib)
+   end function shape9_derivs
+
+   !> Quadratic Lagrange polynomials through s = -1, 0, 1 and their slopes.
+   pure subroutine lagrange3(s, l, dl)
+      real(dp), intent(in) :: s        !< coordinate
+      real(dp), intent(out) :: l(3)    !< values
+      real(dp), intent(out) :: dl(3)   !< derivatives
+      l  = [0.5_dp*s*(s - 1.0_dp), 1.0_dp - s*s, 0.5_dp*s*(s + 1.0_dp)]
+      dl = [s - 0.5_dp, -2.0_dp*s, s + 0.5_dp]
+   end subroutine lagrange3
+
+end module shape_functions

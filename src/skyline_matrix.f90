@@ -1,0 +1,430 @@
+!> Symmetric matrix in active-column (skyline, profile) storage, with the
+!> in-place L D L^T factorisation and solution of Bathe's COLSOL, written
+!> out from the mathematics for teaching.
+!>
+!> Storage scheme (the only place it is documented)
+!> ------------------------------------------------
+!> Only the upper triangle is kept. Column j is stored from its diagonal
+!> UP to its first nonzero row m_j = first_row(j), consecutively, in one
+!> packed array a(1:nwk); maxa(j) is the address of the diagonal A(j,j), and
+!> maxa(n+1) = nwk + 1 closes the last column (Bathe's convention):
+!>
+!>     a(maxa(j) + j - i) = A(i,j)      for  m_j <= i <= j
+!>     column height  j - m_j = maxa(j+1) - maxa(j) - 1   (off-diagonals)
+!>     nwk = maxa(n+1) - 1                                (stored reals)
+!>
+!> Worked example, n = 5 (. = zero outside the profile, not stored;
+!> 0 = zero inside the profile, stored, may fill in during factorisation):
+!>
+!>          col:  1    2    3    4    5        first_row m_j = 1 1 2 1 4
+!>     row 1  | a11  a12   .   a14   .  |
+!>     row 2  |      a22  a23   0    .  |
+!>     row 3  |           a33  a34   .  |
+!>     row 4  |                a44  a45 |
+!>     row 5  | sym                 a55 |
+!>
+!>     address  1  |  2   3  |  4   5  |  6   7   8   9  | 10  11
+!>     a      = a11| a22 a12 | a33 a23 | a44 a34  0  a14 | a55 a45
+!>     maxa   = 1, 2, 4, 6, 10, 12          nwk = 11
+!>
+!> e.g. A(1,4) is at maxa(4) + 4 - 1 = 9, A(4,5) at maxa(5) + 5 - 4 = 11.
+!> A(i,j) and A(j,i) are one stored number (skyline_add mirrors i > j).
+!>
+!> After skyline_factor the same addresses hold A = L D L^T (L unit lower
+!> triangular, D diagonal): a(maxa(j)) = d_j and a(maxa(j) + j - i) = l_ij,
+!> meaning L(j,i), for m_j <= i < j. L has the profile of A (no fill-in
+!> outside it), which is why the profile is the storage.
+!>
+!> Pivot rule (the same as band_matrix, so both storages reject the same
+!> matrices): equation j fails when d_j <= pivot_rel_tol * |A(j,j)|, A(j,j)
+!> the diagonal before factorisation; this includes d_j <= 0.
+module skyline_matrix
+   use kinds, only: dp, msg_len
+   use band_matrix, only: pivot_rel_tol
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use, intrinsic :: iso_fortran_env, only: int64
+   implicit none
+   private
+   public :: skyline_matrix_t
+   public :: skyline_init, skyline_zero, skyline_in_profile, skyline_add, &
+             skyline_get, skyline_first_row, skyline_half_bandwidth, &
+             skyline_matvec, skyline_factor, skyline_solve, skyline_copy, &
+             skyline_axpy
+
+   !> Symmetric matrix in skyline storage (see module header).
+   type :: skyline_matrix_t
+      !> Order of the matrix (number of equations).
+      integer :: n = 0
+      !> Address of the diagonal of column j in a; maxa(n+1) = nwk + 1.
+      integer, allocatable :: maxa(:)
+      !> Packed columns, a(maxa(j) + j - i) = A(i,j).
+      real(dp), allocatable :: a(:)
+      !> True once a holds L and D instead of A.
+      logical :: factored = .false.
+   end type skyline_matrix_t
+
+contains
+
+   !> Build the addresses from the profile and allocate a zero matrix.
+   subroutine skyline_init(sky, n, first_row, stat, errmsg)
+      !> The matrix, (re)defined here.
+      type(skyline_matrix_t), intent(out) :: sky
+      !> Order of the matrix, n >= 1.
+      integer, intent(in) :: n
+      !> first_row(j): smallest row with a nonzero in column j, 1..j.
+      integer, intent(in) :: first_row(:)
+      !> 0 on success, 1 on invalid input or failed allocation.
+      integer, intent(out) :: stat
+      !> Reason for the failure (set only on failure).
+      character(len=*), intent(inout) :: errmsg
+      character(len=msg_len) :: msg
+      integer(int64) :: nwk
+      integer :: j
+
+      stat = 0
+      if (n < 1 .or. size(first_row) /= n) then
+         write (msg, '(a,i0,a,i0)') 'skyline_init: order n = ', n, &
+            ' with size(first_row) = ', size(first_row)
+         call fail(msg)
+         return
+      end if
+      nwk = 0
+      do j = 1, n
+         if (first_row(j) < 1 .or. first_row(j) > j) then
+            write (msg, '(a,i0,a,i0,a)') 'skyline_init: first_row(', j, ') = ', &
+               first_row(j), ' is outside 1..j'
+            call fail(msg)
+            return
+         end if
+         nwk = nwk + (j - first_row(j) + 1)
+      end do
+      if (nwk >= int(huge(n), int64)) then
+         write (msg, '(a,i0,a)') 'skyline_init: profile of ', nwk, &
+            ' entries exceeds the default integer range'
+         call fail(msg)
+         return
+      end if
+      allocate (sky%maxa(n + 1), sky%a(nwk), stat=stat, errmsg=msg)
+      if (stat /= 0) then
+         call fail('skyline_init: allocation failed: ' // trim(msg))
+         return
+      end if
+      ! maxa(j+1) = maxa(j) + (column height j - m_j) + 1 (the diagonal).
+      sky%maxa(1) = 1
+      do j = 1, n
+         sky%maxa(j + 1) = sky%maxa(j) + j - first_row(j) + 1
+      end do
+      sky%n = n
+      sky%a = 0.0_dp
+      sky%factored = .false.
+   contains
+      !> Set stat and errmsg for a failure.
+      subroutine fail(text)
+         !> The error message.
+         character(len=*), intent(in) :: text
+         stat = 1
+         errmsg = text
+      end subroutine fail
+   end subroutine skyline_init
+
+   !> Set every entry to zero and forget any factorisation.
+   subroutine skyline_zero(sky)
+      !> The matrix (its profile is kept).
+      type(skyline_matrix_t), intent(inout) :: sky
+
+      if (allocated(sky%a)) sky%a = 0.0_dp
+      sky%factored = .false.
+   end subroutine skyline_zero
+
+   !> First stored row m_j of column j.
+   pure integer function skyline_first_row(sky, j)
+      !> The matrix.
+      type(skyline_matrix_t), intent(in) :: sky
+      !> Column, 1..n.
+      integer, intent(in) :: j
+
+      skyline_first_row = j - (sky%maxa(j + 1) - sky%maxa(j) - 1)
+   end function skyline_first_row
+
+   !> Largest column height max_j (j - m_j): the half-bandwidth a band
+   !> storage of the same matrix would need.
+   pure integer function skyline_half_bandwidth(sky)
+      !> The matrix.
+      type(skyline_matrix_t), intent(in) :: sky
+      integer :: j
+
+      skyline_half_bandwidth = 0
+      do j = 1, sky%n
+         skyline_half_bandwidth = max(skyline_half_bandwidth, &
+                                      sky%maxa(j + 1) - sky%maxa(j) - 1)
+      end do
+   end function skyline_half_bandwidth
+
+   !> True when A(i,j) is a valid index pair inside the stored profile.
+   pure logical function skyline_in_profile(sky, i, j)
+      !> The matrix.
+      type(skyline_matrix_t), intent(in) :: sky
+      !> Row index.
+      integer, intent(in) :: i
+      !> Column index.
+      integer, intent(in) :: j
+
+      skyline_in_profile = .false.
+      if (min(i, j) < 1 .or. max(i, j) > sky%n) return
+      skyline_in_profile = min(i, j) >= skyline_first_row(sky, max(i, j))
+   end function skyline_in_profile
+
+   !> Add value to A(i,j) (= A(j,i), one stored entry).
+   !>
+   !> Caller's duty: skyline_in_profile(sky, i, j) is true and sky is not
+   !> factored. global_matrix checks this for every element before it adds;
+   !> a pair outside the profile is not stored (never written outside a).
+   subroutine skyline_add(sky, i, j, value)
+      !> The matrix, added into.
+      type(skyline_matrix_t), intent(inout) :: sky
+      !> Row index.
+      integer, intent(in) :: i
+      !> Column index.
+      integer, intent(in) :: j
+      !> Value added to A(i,j).
+      real(dp), intent(in) :: value
+      integer :: k
+
+      if (.not. skyline_in_profile(sky, i, j)) return
+      k = sky%maxa(max(i, j)) + max(i, j) - min(i, j)
+      sky%a(k) = sky%a(k) + value
+   end subroutine skyline_add
+
+   !> Entry A(i,j) of the (unfactored) matrix; zero outside the profile.
+   pure real(dp) function skyline_get(sky, i, j)
+      !> The matrix.
+      type(skyline_matrix_t), intent(in) :: sky
+      !> Row index.
+      integer, intent(in) :: i
+      !> Column index.
+      integer, intent(in) :: j
+
+      if (skyline_in_profile(sky, i, j)) then
+         skyline_get = sky%a(sky%maxa(max(i, j)) + max(i, j) - min(i, j))
+      else
+         skyline_get = 0.0_dp
+      end if
+   end function skyline_get
+
+   !> y = A x, column by column over the stored upper triangle.
+   !>
+   !> Fails when sky is factored or the sizes do not match; without stat
+   !> the failure leaves y = NaN so that it cannot pass unnoticed.
+   subroutine skyline_matvec(sky, x, y, stat, errmsg)
+      !> The matrix, not factored.
+      type(skyline_matrix_t), intent(in) :: sky
+      !> Vector of length n.
+      real(dp), intent(in) :: x(:)
+      !> Result A x, length n.
+      real(dp), intent(out) :: y(:)
+      !> 0 on success, 1 on failure (optional).
+      integer, intent(out), optional :: stat
+      !> Reason for the failure (optional, set only on failure).
+      character(len=*), intent(inout), optional :: errmsg
+      character(len=msg_len) :: msg
+      real(dp) :: aij
+      integer :: i, j
+
+      if (present(stat)) stat = 0
+      msg = ''
+      if (sky%factored) then
+         msg = 'skyline_matvec: the matrix holds its factors, not A'
+      else if (size(x) /= sky%n .or. size(y) /= sky%n) then
+         write (msg, '(a,i0,a,i0,a,i0)') 'skyline_matvec: size(x) = ', size(x), &
+            ', size(y) = ', size(y), ' but n = ', sky%n
+      end if
+      if (len_trim(msg) > 0) then
+         y = ieee_value(1.0_dp, ieee_quiet_nan)
+         if (present(stat)) stat = 1
+         if (present(errmsg)) errmsg = msg
+         return
+      end if
+      ! Each stored A(i,j), i < j, acts twice: y_i += A(i,j) x_j and
+      ! y_j += A(j,i) x_i; the diagonal once.
+      y = 0.0_dp
+      do j = 1, sky%n
+         y(j) = y(j) + sky%a(sky%maxa(j)) * x(j)
+         do i = skyline_first_row(sky, j), j - 1
+            aij = sky%a(sky%maxa(j) + j - i)
+            y(i) = y(i) + aij * x(j)
+            y(j) = y(j) + aij * x(i)
+         end do
+      end do
+   end subroutine skyline_matvec
+
+   !> In-place L D L^T factorisation, column by column (COLSOL's algorithm).
+   !>
+   !> On a failed pivot (see module header) stat = 1, bad_eq is the
+   !> equation and errmsg says "matrix not positive definite at equation N";
+   !> the matrix is then left unusable (not flagged factored).
+   subroutine skyline_factor(sky, stat, errmsg, bad_eq)
+      !> The matrix, overwritten by L (off-diagonals) and D (diagonal).
+      type(skyline_matrix_t), intent(inout) :: sky
+      !> 0 on success, 1 on failure.
+      integer, intent(out) :: stat
+      !> Reason for the failure (set only on failure).
+      character(len=*), intent(inout) :: errmsg
+      !> Equation whose pivot failed, 0 if none did.
+      integer, intent(out) :: bad_eq
+      character(len=msg_len) :: msg
+      real(dp) :: ajj, g, l, s
+      integer :: i, j, r, mi, mj
+
+      stat = 0
+      bad_eq = 0
+      if (.not. allocated(sky%a)) then
+         stat = 1
+         errmsg = 'skyline_factor: the matrix was never initialised'
+         return
+      end if
+      if (sky%factored) then
+         stat = 1
+         errmsg = 'skyline_factor: the matrix is already factored'
+         return
+      end if
+
+      ! Address of A(i,j) (and later of l_ij): maxa(j) + j - i.
+      columns: do j = 1, sky%n
+         mj = skyline_first_row(sky, j)
+         ajj = sky%a(sky%maxa(j))
+
+         ! Phase 1 - reduce the column with the finished columns i < j:
+         !    g_ij = a_ij - sum_{r = max(m_i, m_j)}^{i-1} l_ri g_rj,
+         !    i = m_j+1, ..., j-1   (g_{m_j j} = a_{m_j j}),
+         ! top down, so every g_rj on the right is already reduced.
+         reduce: do i = mj + 1, j - 1
+            mi = skyline_first_row(sky, i)
+            s = 0.0_dp
+            do r = max(mi, mj), i - 1
+               s = s + sky%a(sky%maxa(i) + i - r) * sky%a(sky%maxa(j) + j - r)
+            end do
+            sky%a(sky%maxa(j) + j - i) = sky%a(sky%maxa(j) + j - i) - s
+         end do reduce
+
+         ! Phase 2 - scale by the pivots and form the new pivot:
+         !    l_ij = g_ij / d_i,                 i = m_j, ..., j-1
+         !    d_j  = a_jj - sum_{i=m_j}^{j-1} l_ij g_ij
+         s = 0.0_dp
+         scale: do i = mj, j - 1
+            g = sky%a(sky%maxa(j) + j - i)
+            l = g / sky%a(sky%maxa(i))
+            s = s + l * g
+            sky%a(sky%maxa(j) + j - i) = l
+         end do scale
+         sky%a(sky%maxa(j)) = ajj - s
+
+         ! Phase 3 - pivot rule: d_j > pivot_rel_tol * |a_jj| (NaN fails too).
+         if (.not. (sky%a(sky%maxa(j)) > pivot_rel_tol * abs(ajj))) then
+            stat = 1
+            bad_eq = j
+            write (msg, '(a,i0,a,es10.3,a,es9.2,a,es10.3,a)') &
+               'matrix not positive definite at equation ', j, ' (pivot ', &
+               sky%a(sky%maxa(j)), ' <= ', pivot_rel_tol, ' x diagonal ', ajj, ')'
+            errmsg = msg
+            return
+         end if
+      end do columns
+      sky%factored = .true.
+   end subroutine skyline_factor
+
+   !> Solve A x = b with the factors L and D (b overwritten by x).
+   subroutine skyline_solve(sky, b, stat, errmsg)
+      !> The factored matrix.
+      type(skyline_matrix_t), intent(in) :: sky
+      !> Right-hand side on entry, solution on return, length n.
+      real(dp), intent(inout) :: b(:)
+      !> 0 on success, 1 on failure.
+      integer, intent(out) :: stat
+      !> Reason for the failure (set only on failure).
+      character(len=*), intent(inout) :: errmsg
+      character(len=msg_len) :: msg
+      integer :: i, j
+
+      stat = 0
+      if (.not. sky%factored) then
+         stat = 1
+         errmsg = 'skyline_solve: the matrix is not factored (call skyline_factor first)'
+         return
+      end if
+      if (size(b) /= sky%n) then
+         stat = 1
+         write (msg, '(a,i0,a,i0)') 'skyline_solve: right-hand side has length ', &
+            size(b), ' but n = ', sky%n
+         errmsg = msg
+         return
+      end if
+
+      ! Forward reduction, L y = b:
+      !    y_j = b_j - sum_{i=m_j}^{j-1} l_ij y_i      (a dot product with column j)
+      forward: do j = 2, sky%n
+         do i = skyline_first_row(sky, j), j - 1
+            b(j) = b(j) - sky%a(sky%maxa(j) + j - i) * b(i)
+         end do
+      end do forward
+
+      ! Diagonal scaling, D z = y:   z_j = y_j / d_j
+      b = b / sky%a(sky%maxa(1:sky%n))
+
+      ! Back substitution, L^T x = z, last column first: x_j = z_j is final
+      ! once columns j+1..n are done; then remove it from the rows above,
+      !    z_i = z_i - l_ij x_j,       i = m_j, ..., j-1
+      back: do j = sky%n, 2, -1
+         do i = skyline_first_row(sky, j), j - 1
+            b(i) = b(i) - sky%a(sky%maxa(j) + j - i) * b(j)
+         end do
+      end do back
+   end subroutine skyline_solve
+
+   !> dst = src (profile, values and factored flag).
+   subroutine skyline_copy(dst, src)
+      !> The copy.
+      type(skyline_matrix_t), intent(out) :: dst
+      !> The matrix copied.
+      type(skyline_matrix_t), intent(in) :: src
+
+      dst = src
+   end subroutine skyline_copy
+
+   !> sky = sky + alpha*other for two unfactored matrices of one profile.
+   subroutine skyline_axpy(sky, alpha, other, stat, errmsg)
+      !> The matrix added into.
+      type(skyline_matrix_t), intent(inout) :: sky
+      !> Scalar multiplying other.
+      real(dp), intent(in) :: alpha
+      !> The matrix added, same profile as sky.
+      type(skyline_matrix_t), intent(in) :: other
+      !> 0 on success, 1 on failure (sky unchanged).
+      integer, intent(out) :: stat
+      !> Reason for the failure (set only on failure).
+      character(len=*), intent(inout) :: errmsg
+
+      stat = 0
+      if (sky%factored .or. other%factored) then
+         stat = 1
+         errmsg = 'skyline_axpy: a factored matrix cannot be added to or from'
+         return
+      end if
+      if (.not. (allocated(sky%maxa) .and. allocated(other%maxa))) then
+         stat = 1
+         errmsg = 'skyline_axpy: a matrix was never initialised'
+         return
+      end if
+      if (sky%n /= other%n) then
+         stat = 1
+         errmsg = 'skyline_axpy: the matrices differ in order'
+         return
+      end if
+      if (any(sky%maxa /= other%maxa)) then
+         stat = 1
+         errmsg = 'skyline_axpy: the matrices differ in profile'
+         return
+      end if
+      sky%a = sky%a + alpha * other%a
+   end subroutine skyline_axpy
+
+end module skyline_matrix

@@ -1,0 +1,42 @@
+# Builds tests/test_*.pf against real pFUnit 4, as its documentation says:
+# include PFUNIT.mk, add $(PFUNIT_EXTRA_FFLAGS) to FFLAGS, describe the suite
+# with <name>_TESTS and <name>_OTHER_LIBRARIES, then
+# $(eval $(call make_pfunit_test,<name>)).
+#
+# Run by tests/tests.mk (make test PFUNIT_DIR=...) inside build/pfunit, where
+# pFUnit's rules leave their files (the generated .F90, the .inc suite list,
+# objects and modules); it passes
+#   PFUNIT_DIR      the pFUnit install: the directory holding include/PFUNIT.mk,
+#                   or the prefix holding PFUNIT-<version>/include/PFUNIT.mk
+#   FC, FFLAGS      the compiler and the project's flags
+#   IMPACT_TESTS    the .pf files (absolute paths)
+#   IMPACT_LIB      build/libimpact.a, IMPACT_MODULES its .mod directory
+#   LAPACK          the LAPACK and BLAS link flags
+
+PFUNIT_MK := $(firstword $(wildcard $(PFUNIT_DIR)/include/PFUNIT.mk \
+                                    $(PFUNIT_DIR)/PFUNIT-*/include/PFUNIT.mk))
+ifeq ($(PFUNIT_MK),)
+$(error no PFUNIT.mk in $(PFUNIT_DIR)/include or $(PFUNIT_DIR)/PFUNIT-*/include: \
+  set PFUNIT_DIR to a pFUnit 4 installation)
+endif
+include $(PFUNIT_MK)
+
+# The suite list pFUnit writes (impact_tests.inc) names each suite after its
+# file (test_x.pf -> test_x_suite) and its preprocessor names it after the
+# module, hence pf2f90.py's rule: module test_x lives in test_x.pf.
+vpath %.pf $(sort $(dir $(IMPACT_TESTS)))
+
+override FFLAGS += $(PFUNIT_EXTRA_FFLAGS) -I$(IMPACT_MODULES)
+ifneq ($(findstring gfortran,$(FC)),)
+override FFLAGS += -ffree-line-length-none
+endif
+
+%.o: %.F90
+	$(FC) -c $(FFLAGS) $< -o $@
+
+impact_tests_TESTS := $(notdir $(IMPACT_TESTS))
+impact_tests_OTHER_LIBRARIES := $(IMPACT_LIB) $(LAPACK)
+$(eval $(call make_pfunit_test,impact_tests))
+
+# Rebuild when the library (and so its modules) changes.
+$(patsubst %.pf,%.o,$(impact_tests_TESTS)) impact_tests: $(IMPACT_LIB)
