@@ -18,33 +18,32 @@ FSTD    := -std=f2008 -Wall -fimplicit-none
 LAPACK  ?= -llapack -lblas
 FC_ALL   = $(FC) $(FSTD) $(FFLAGS) -J$(BUILD) -I$(BUILD)
 
-# Modules in dependency order, one module per file, named after the module.
-MODULES := kinds materials gauss_rules shape_functions mesh element_matrices \
-           band_matrix skyline_matrix global_matrix contact_law newmark \
-           input_deck output_files impact_driver
-OBJS    := $(patsubst %,$(BUILD)/%.o,$(MODULES))
+# Every src/*.f90 but the main program is a module, named after its file;
+# tools/fortran-deps writes the dependencies between them from their `use`
+# statements into $(BUILD)/deps.mk.
+MAIN    := src/impact.f90
+SOURCES := $(filter-out $(MAIN),$(sort $(wildcard src/*.f90)))
+OBJS    := $(patsubst src/%.f90,$(BUILD)/%.o,$(SOURCES))
 LIB     := $(BUILD)/libimpact.a
 
-.PHONY: all run test setup clean plot
+.PHONY: all run test setup clean reference
 all: impact
 
 $(BUILD):
 	@mkdir -p $(BUILD)
 
-# Each module depends on every module before it (simple and always right).
 $(BUILD)/%.o: src/%.f90 | $(BUILD)
 	$(FC_ALL) -c $< -o $@
 
-define chain
-$(BUILD)/$(word 2,$(1)).o: $(BUILD)/$(word 1,$(1)).o
-endef
-$(foreach i,$(shell seq 2 $(words $(MODULES))),$(eval $(call chain,$(word $(shell expr $(i) - 1),$(MODULES)) $(word $(i),$(MODULES)))))
+$(BUILD)/deps.mk: $(SOURCES) tools/fortran-deps | $(BUILD)
+	@python3 tools/fortran-deps $(BUILD) $(SOURCES) > $@.tmp && mv $@.tmp $@
+-include $(BUILD)/deps.mk
 
 $(LIB): $(OBJS)
 	ar rcs $@ $^
 
-impact: src/impact.f90 $(LIB)
-	$(FC_ALL) src/impact.f90 $(LIB) $(LAPACK) -o $@
+impact: $(MAIN) $(LIB)
+	$(FC_ALL) $(MAIN) $(LIB) $(LAPACK) -o $@
 
 setup:
 	@sh tools/setup-debian
@@ -55,7 +54,15 @@ run: setup impact
 	gnuplot -e "prefix='out/clamped'" postproc/history.gp
 	@echo "plot written: out/clamped_history.png"
 
+# After an intended change of results: rewrite the stored reference of the
+# regression test (tests/test_regression.pf) and say why in the commit.
+reference: impact
+	./impact tests/data/regression/clamped.nml > /dev/null
+	cp build/tests/regression/clamped_history.dat tests/data/regression/clamped_history.dat
+
 clean:
 	rm -rf $(BUILD) impact
 
--include tests/tests.mk
+include tests/tests.mk
+# Further targets (figures, validation, benchmarks, ...) live in mk/*.mk.
+-include $(sort $(wildcard mk/*.mk))

@@ -233,6 +233,8 @@ contains
       write (u, '(a,i0,a,i0,a,i0,a,i0,a,i0)') 'model: nodes ', model%msh%nnode, ', elements ', &
          model%msh%nelem, ', equations ', model%msh%neq, ', half-bandwidth ', &
          global_bandwidth(model%mass), ', stored entries ', global_stored_entries(model%mass)
+      write (u, '(a,a,a,es10.3,a)') 'shear integration: ', trim(model%shear_rule), &
+         ' (fraction of 3x3 shear ', model%shear_eps, ')'
       write (u, '(a,3es12.4)') 'laminate: A11 A22 A66 (N/m)  ', model%lmt%a(1,1), model%lmt%a(2,2), model%lmt%a(3,3)
       write (u, '(a,4es12.4)') 'laminate: D11 D22 D66 D16 (N m) ', model%lmt%d(1,1), model%lmt%d(2,2), &
          model%lmt%d(3,3), model%lmt%d(1,3)

@@ -45,6 +45,8 @@ module impact_driver
       real(dp) :: z_back = 0.0_dp              !< z of the back face, +h/2 (m)
       integer :: max_nonlinear_iter = 200      !< limit of the eq. (18) iteration
       real(dp) :: cr2 = 1.0e-7_dp              !< tolerance of eq. (18)
+      character(len=32) :: shear_rule = ''     !< transverse shear rule used: 'selective' or 'stabilized'
+      real(dp) :: shear_eps = 0.0_dp           !< fraction of 3x3 shear (0: the paper's 2x2 rule)
       integer :: solves = 0                    !< back substitutions so far
       integer :: factorizations = 0            !< factorizations so far
    end type model_t
@@ -98,6 +100,15 @@ contains
       model%cr2 = deck%cr2
       model%max_nonlinear_iter = deck%max_nonlinear_iter
 
+      ! -- transverse shear rule: the paper's 2x2 rule leaves one zero-energy
+      !    mode per element, which free edges do not suppress (README)
+      model%shear_rule = deck%shear_rule
+      if (deck%shear_rule == 'auto') then
+         model%shear_rule = merge('stabilized', 'selective ', deck%edges == 'free')
+      end if
+      model%shear_eps = 0.0_dp
+      if (model%shear_rule == 'stabilized') model%shear_eps = deck%stabilization
+
       ! -- mesh, boundary conditions, equation numbers (Fig. 4)
       call build_mesh(deck%a, deck%b, deck%nx, deck%ny, deck%domain, model%msh, stat, errmsg)
       if (stat /= 0) return
@@ -128,7 +139,7 @@ contains
       call global_zero(model%stiff)
       elements: do e = 1, model%msh%nelem
          call element_mass(model%lmt, model%geo(e), me)
-         call element_stiffness(model%lmt, model%geo(e), ke, stab_env())
+         call element_stiffness(model%lmt, model%geo(e), ke, model%shear_eps)
          call global_assemble(model%mass, me, model%msh%elem_eq(:, e))
          call global_assemble(model%stiff, ke, model%msh%elem_eq(:, e))
       end do elements
@@ -339,14 +350,6 @@ contains
    end function back_face_strain
 
    ! ============================================================ helpers
-   function stab_env() result(x)
-      real(dp) :: x
-      character(len=32) :: v
-      integer :: st
-      call get_environment_variable('STAB', v, status=st)
-      x = 0
-      if (st == 0) read (v, *) x
-   end function stab_env
 
    !> Element displacements from the global vector (0 for held freedoms).
    pure subroutine gather(eqs, d, de)

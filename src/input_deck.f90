@@ -28,6 +28,10 @@
 !>                beta                -          0.094            alpha0 = beta (alpha_m - alpha_p)
 !>     &mesh      nx, ny              -          9, 6             9-node elements along x, y of the domain
 !>                domain              -          'quarter'        'quarter' (symmetric layup) | 'full'
+!>                shear_rule          -          'auto'           transverse shear integration: 'selective'
+!>                                                                (2x2, the paper's) | 'stabilized' | 'auto'
+!>                                                                (selective unless the edges are free)
+!>                stabilization       -          0.01             fraction eps of 3x3 shear when stabilized
 !>     &boundary  edges               -          'clamped'        'free' | 'simply_supported' | 'clamped'
 !>                inplane             -          'immovable'      in-plane condition of simply supported
 !>                                                                edges: 'immovable' | 'movable'
@@ -113,6 +117,8 @@ module input_deck
       ! &mesh nx, ny, domain /  elements along x and y of the modelled domain; 'quarter' or 'full'
       integer :: nx = 9, ny = 6
       character(len=name_len) :: domain = 'quarter'
+      character(len=name_len) :: shear_rule = 'auto'     ! 'auto' | 'selective' | 'stabilized'
+      real(dp) :: stabilization = 0.01_dp                ! fraction of 3x3 shear when stabilized
       ! &boundary edges, inplane /  'free' | 'simply_supported' | 'clamped';
       !    in-plane condition of simply supported edges: 'immovable' | 'movable'
       character(len=name_len) :: edges = 'clamped', inplane = 'immovable'
@@ -354,6 +360,10 @@ contains
       call need(deck%nx >= 1, 'mesh', 'nx', int_str(deck%nx), 'must be at least 1')
       call need(deck%ny >= 1, 'mesh', 'ny', int_str(deck%ny), 'must be at least 1')
       call keyword('mesh', 'domain', deck%domain, [character(len=name_len) :: 'quarter', 'full'])
+      call keyword('mesh', 'shear_rule', deck%shear_rule, &
+         [character(len=name_len) :: 'auto', 'selective', 'stabilized'])
+      call need(deck%stabilization > 0.0_dp .and. deck%stabilization <= 1.0_dp, 'mesh', 'stabilization', &
+         real_str(deck%stabilization), 'must be in (0, 1]')
       if (stat == 0 .and. deck%domain == 'quarter') then
          n = size(deck%angles)
          symmetry_1: do i = 1, n / 2
@@ -488,7 +498,8 @@ contains
       call put('&contact', 'k = ' // real_str(deck%k) // ' N/m^1.5, q = ' // real_str(deck%q) &
          // ', alpha_p = ' // real_str(deck%alpha_p) // ' m, beta = ' // real_str(deck%beta))
       call put('&mesh', 'nx = ' // int_str(deck%nx) // ', ny = ' // int_str(deck%ny) // ", domain = '" &
-         // trim(deck%domain) // "'")
+         // trim(deck%domain) // "', shear_rule = '" // trim(deck%shear_rule) // "', stabilization = " &
+         // real_str(deck%stabilization))
       call put('&boundary', "edges = '" // trim(deck%edges) // "', inplane = '" // trim(deck%inplane) // "'")
       call put('&analysis', "theory = '" // trim(deck%theory) // "', dt = " // real_str(deck%dt) &
          // ' s, t_end = ' // real_str(deck%t_end) // ' s, cr1 = ' // real_str(deck%cr1) &
@@ -734,8 +745,9 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer :: nx, ny
-      character(len=name_len) :: domain
-      namelist /mesh/ nx, ny, domain
+      character(len=name_len) :: domain, shear_rule
+      real(dp) :: stabilization
+      namelist /mesh/ nx, ny, domain, shear_rule, stabilization
       integer :: ios, trial, bad
       character(len=msg_len) :: msg
       type(text_t), allocatable :: pieces(:)
@@ -743,6 +755,8 @@ contains
       nx = deck%nx
       ny = deck%ny
       domain = deck%domain
+      shear_rule = deck%shear_rule
+      stabilization = deck%stabilization
       msg = ''
       rewind (scratch, iostat=ios, iomsg=msg)
       if (ios == 0) read (scratch, nml=mesh, iostat=ios, iomsg=msg)
@@ -752,12 +766,14 @@ contains
             read (pieces(bad)%s, nml=mesh, iostat=trial)
             if (trial /= 0) exit
          end do
-         call read_failure(deck%source, 'mesh', 'nx, ny, domain', ios, msg, pieces, bad, stat, errmsg)
+         call read_failure(deck%source, 'mesh', 'nx, ny, domain, shear_rule, stabilization', ios, msg, pieces, bad, stat, errmsg)
          return
       end if
       deck%nx = nx
       deck%ny = ny
       deck%domain = domain
+      deck%shear_rule = shear_rule
+      deck%stabilization = stabilization
       stat = 0
    end subroutine read_mesh
 
