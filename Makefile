@@ -42,8 +42,12 @@ $(BUILD)/deps.mk: $(SOURCES) tools/fortran-deps | $(BUILD)
 $(LIB): $(OBJS)
 	ar rcs $@ $^
 
+# The main program is built without gfortran's run-time backtrace, so that a
+# bad deck ends with its one-line message (error stop 1) and not a stack dump;
+# rebuild with MAIN_FLAGS= to get backtraces back when debugging a crash.
+MAIN_FLAGS ?= -fno-backtrace
 impact: $(MAIN) $(LIB)
-	$(FC_ALL) $(MAIN) $(LIB) $(LAPACK) -o $@
+	$(FC_ALL) $(MAIN_FLAGS) $(MAIN) $(LIB) $(LAPACK) -o $@
 
 setup:
 	@sh tools/setup-debian

@@ -4,6 +4,8 @@
 !> Impact", KSME Transactions (1991). Equation numbers are the paper's.
 !>
 !> Usage:  ./impact < deck.nml      or      ./impact deck.nml
+!>         ./impact --check deck.nml   (or --check < deck.nml): read, echo,
+!>         build and factor, then stop before the time loop (a data check).
 !>
 !> The program follows the flowchart of the paper's Fig. 3: read the data,
 !> form the laminate, the mesh and the matrices, factor the left-hand matrix
@@ -39,16 +41,28 @@ program impact
    real(dp) :: t, f_assum, f_cont, f_next, alpha, alpha_old, w_plate, w_plate_old, e0, t_cpu0, t_cpu1
    real(dp) :: contact_work, indentation_energy
    integer :: stat, step, nstep, hist_unit, ic, nl_iter, step_solves
-   logical :: nl_ok, contact_ok, warned
+   logical :: nl_ok, contact_ok, warned, check_only
    character(len=msg_len) :: errmsg, path, arg
+   integer :: iarg
 
    ! =====================================================================
    ! Input data: the namelist deck, from a file named on the command line
    ! or from standard input; validated and echoed.
    ! =====================================================================
    errmsg = ''
+   check_only = .false.
+   iarg = 1
    if (command_argument_count() >= 1) then
       call get_command_argument(1, arg)
+      if (arg == '--check') then
+         check_only = .true.
+         iarg = 2
+      else if (arg(1:1) == '-') then
+         call fail('unknown option '//trim(arg)//' (usage: impact [--check] [deck.nml], or the deck on standard input)')
+      end if
+   end if
+   if (command_argument_count() >= iarg) then
+      call get_command_argument(iarg, arg)
       call read_deck_file(trim(arg), deck, stat, errmsg)
    else
       call read_deck(input_unit, '<stdin>', deck, stat, errmsg)
@@ -71,6 +85,10 @@ program impact
    nm = newmark_init(deck%dt)
    call factor_effective_matrix(model, nm, stat, errmsg)
    if (stat /= 0) call fail(errmsg)
+   if (check_only) then
+      write (output_unit, '(a)') 'data check: the deck is valid and K_L + 4/dt^2 M is positive definite; no time steps run'
+      stop
+   end if
 
    ! =====================================================================
    ! Initial conditions: the plate at rest, the impactor just touching it
