@@ -30,6 +30,7 @@ module contact_law
    private
    public :: contact_law_t, contact_history_t, contact_force, contact_branch, &
              contact_commit, permanent_indentation, loading_indentation, &
+             solve_contact_equation, &
              branch_none, branch_loading, branch_unloading, branch_reloading
 
    !> Branches of the law (also written to the history file).
@@ -128,5 +129,55 @@ contains
          hist%separated = .true.
       end if
    end subroutine contact_commit
+
+   !> The contact equation of a time step when the indentation depends
+   !> linearly on the force, alpha(F) = alpha_free - compliance F:
+   !>     F = F_law(alpha_free - compliance F)                  eq. (11)-(13)
+   !> (used by scheme = 'fast': within one nonlinear iteration the plate's
+   !> deflection at the impact point and the impactor's position, eq. 21, are
+   !> both linear in F). F - F_law(alpha(F)) increases with F, is <= 0 at
+   !> F = 0 and >= 0 at F = F_law(alpha_free), so the root is bracketed and
+   !> regula falsi with the Illinois modification finds it to rounding.
+   pure subroutine solve_contact_equation(law, hist, alpha_free, compliance, f, alpha)
+      type(contact_law_t), intent(in) :: law       !< law constants
+      type(contact_history_t), intent(in) :: hist  !< committed history
+      real(dp), intent(in) :: alpha_free           !< indentation at F = 0 (m)
+      real(dp), intent(in) :: compliance           !< d alpha / d F, negated (m/N), > 0
+      real(dp), intent(out) :: f                   !< contact force (N)
+      real(dp), intent(out) :: alpha               !< indentation at that force (m)
+      integer, parameter :: max_iter = 200
+      real(dp), parameter :: rel_tol = 1.0e-13_dp
+      real(dp) :: lo, hi, r_lo, r_hi, r
+      integer :: it, side
+
+      f = 0.0_dp
+      alpha = alpha_free
+      hi = contact_force(law, hist, alpha_free)
+      if (hi <= 0.0_dp) return                       ! no contact even if the plate gave way
+      lo = 0.0_dp;  r_lo = -hi
+      r_hi = hi - contact_force(law, hist, alpha_free - compliance*hi)
+      if (r_hi <= 0.0_dp) then                       ! the law's force cannot be reduced: a rigid plate
+         f = hi;  alpha = alpha_free - compliance*hi
+         return
+      end if
+      side = 0
+      illinois: do it = 1, max_iter
+         f = lo - r_lo*(hi - lo)/(r_hi - r_lo)
+         r = f - contact_force(law, hist, alpha_free - compliance*f)
+         if (r > 0.0_dp) then
+            hi = f;  r_hi = r
+            if (side == 1) r_lo = 0.5_dp*r_lo
+            side = 1
+         else if (r < 0.0_dp) then
+            lo = f;  r_lo = r
+            if (side == -1) r_hi = 0.5_dp*r_hi
+            side = -1
+         else
+            exit illinois
+         end if
+         if (hi - lo <= rel_tol*hi) exit illinois
+      end do illinois
+      alpha = alpha_free - compliance*f
+   end subroutine solve_contact_equation
 
 end module contact_law

@@ -22,6 +22,7 @@ program impact
    use global_matrix, only: global_matvec, global_bandwidth, global_stored_entries
    use impact_driver, only: model_t, plate_state_t, impactor_state_t, force_bracket_t, &
       build_model, factor_effective_matrix, plate_solve, bracket_start, bracket_update, &
+      unit_force_response, fast_step, &
       contact_converged, first_force_guess, plate_kinetic_energy, plate_strain_energy, &
       back_face_strain, impact_deflection
    use output_files, only: history_row_t, run_summary_t, open_history, write_history_row, &
@@ -85,6 +86,10 @@ program impact
    nm = newmark_init(deck%dt)
    call factor_effective_matrix(model, nm, stat, errmsg)
    if (stat /= 0) call fail(errmsg)
+   if (deck%scheme == 'fast') then
+      call unit_force_response(model, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+   end if
    if (check_only) then
       write (output_unit, '(a)') 'data check: the deck is valid and K_L + 4/dt^2 M is positive definite; no time steps run'
       stop
@@ -119,12 +124,27 @@ program impact
       ! -- {b} of eq. (20) and M{b}, fixed for the whole step
       call global_matvec(model%mass, newmark_predictor(nm, plate%d, plate%v, plate%a), mb)
 
-      ! -- assume the contact force: the plate does not react (section 2.3)
-      f_assum = first_force_guess(model, imp, impact_deflection(model, plate%d), deck%dt, hist)
-      br = bracket_start()
       d_new = plate%d
       contact_ok = .false.
       step_solves = model%solves
+
+      if (deck%scheme == 'fast') then
+         ! -- scheme 'fast': the contact force solved inside each iteration of
+         !    eq. (19), from the scalar equation F = F_law(alpha(F)) (eq. 11-13, 21)
+         call fast_step(model, mb, plate%d, imp, deck%dt, hist, d_new, f_assum, alpha, &
+                        nl_iter, nl_ok, stat, errmsg)
+         if (stat /= 0) call fail_in_run('plate solution: '//errmsg)
+         if (.not. nl_ok) summary%unconverged_steps = summary%unconverged_steps + 1
+         call impactor_advance(deck%mass, deck%dt, imp%w, imp%v, imp%f, f_assum, imp_new%w, imp_new%v)
+         w_plate = impact_deflection(model, d_new)
+         f_cont = f_assum
+         ic = 1
+         contact_ok = .true.
+      else
+      ! -- scheme 'paper' (Fig. 3): assume the contact force, the plate not
+      !    reacting at first (section 2.3), then iterate on it
+      f_assum = first_force_guess(model, imp, impact_deflection(model, plate%d), deck%dt, hist)
+      br = bracket_start()
 
       contact_iterations: do ic = 1, deck%max_contact_iter
          ! -- the plate under the assumed force: eq. (19) iterated to eq. (18)
@@ -149,6 +169,7 @@ program impact
          f_assum = f_next
       end do contact_iterations
       ic = min(ic, deck%max_contact_iter)
+      end if
       if (.not. contact_ok) then
          summary%unconverged_steps = summary%unconverged_steps + 1
          if (.not. warned) then

@@ -17,13 +17,13 @@ module impact_driver
       element_inplane_strain, element_gauss_point
    use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, &
       global_axpy_matrix, global_copy, global_matvec, global_factor, global_solve
-   use contact_law, only: contact_law_t, contact_history_t, contact_force
+   use contact_law, only: contact_law_t, contact_history_t, contact_force, solve_contact_equation
    use newmark, only: newmark_t, impactor_advance
    use input_deck, only: deck_t
    implicit none
    private
    public :: model_t, plate_state_t, impactor_state_t, force_bracket_t, &
-             build_model, factor_effective_matrix, plate_solve, &
+             build_model, factor_effective_matrix, plate_solve, unit_force_response, fast_step, &
              nonlinear_force, bracket_start, bracket_update, contact_converged, &
              first_force_guess, plate_kinetic_energy, plate_strain_energy, &
              back_face_strain, impact_deflection
@@ -47,6 +47,7 @@ module impact_driver
       real(dp) :: cr2 = 1.0e-7_dp              !< tolerance of eq. (18)
       character(len=32) :: shear_rule = ''     !< transverse shear rule used: 'selective' or 'stabilized'
       real(dp) :: shear_eps = 0.0_dp           !< fraction of 3x3 shear (0: the paper's 2x2 rule)
+      real(dp), allocatable :: g_unit(:)       !< (K_L + 4/dt^2 M)^-1 applied to a unit contact force (m/N)
       integer :: solves = 0                    !< back substitutions so far
       integer :: factorizations = 0            !< factorizations so far
    end type model_t
@@ -163,6 +164,22 @@ contains
                   trim(describe_equation(model%msh, bad_eq))
    end subroutine factor_effective_matrix
 
+   !> The plate's response to a unit contact force, g = (K_L + 4/dt^2 M)^-1 e,
+   !> one back substitution per run (scheme = 'fast'): with the left-hand
+   !> matrix of eq. (19) constant, the solution of a step is linear in the
+   !> contact force F: D = D_0 + F g.
+   subroutine unit_force_response(model, stat, errmsg)
+      type(model_t), intent(inout) :: model     !< model; g_unit is set
+      integer, intent(out) :: stat              !< 0 on success
+      character(len=*), intent(inout) :: errmsg !< reason on failure
+      if (allocated(model%g_unit)) deallocate (model%g_unit)
+      allocate (model%g_unit(model%msh%neq))
+      model%g_unit = 0.0_dp
+      model%g_unit(model%eq_impact) = model%force_share
+      call global_solve(model%keff, model%g_unit, stat, errmsg)
+      model%solves = model%solves + 1
+   end subroutine unit_force_response
+
    ! ================================================================ plate
 
    !> The nonlinear term K_N(D) D of eq. (19), assembled element by element
@@ -223,6 +240,62 @@ contains
          end if
       end do nonlinear_iterations
    end subroutine plate_solve
+
+   !> One time step of scheme = 'fast': the contact force is solved inside
+   !> each iteration of eq. (19) instead of around the whole nonlinear
+   !> solution. In iteration n,
+   !>   D_0 = (K_L + 4/dt^2 M)^-1 (M b - K_N(D^n) D^n)         eq. (19), F = 0
+   !>   D(F) = D_0 + F g,  w_r(F) = w_r + v dt - (F_t + F) dt^2/(4m)   eq. (21)
+   !>   alpha(F) = w_r(F) - w_p(F), linear in F                 eq. (13)
+   !> and F = F_law(alpha(F)) (eq. 11-12) is a scalar equation solved to
+   !> rounding (solve_contact_equation). The iteration stops by eq. (18);
+   !> at that point eq. (17) holds exactly. One back substitution per
+   !> iteration, one iteration in all for the linear theory.
+   subroutine fast_step(model, mb, d_t, imp, dt, hist, d, f, alpha, iterations, converged, stat, errmsg)
+      type(model_t), intent(inout) :: model        !< model (counts solves)
+      real(dp), intent(in) :: mb(:)                !< M {b} of eq. (19)-(20)
+      real(dp), intent(in) :: d_t(:)               !< converged displacements at t
+      type(impactor_state_t), intent(in) :: imp    !< impactor at t
+      real(dp), intent(in) :: dt                   !< time step (s)
+      type(contact_history_t), intent(in) :: hist  !< committed contact history
+      real(dp), intent(inout) :: d(:)              !< first iterate in, solution out
+      real(dp), intent(out) :: f                   !< contact force at t+dt (N)
+      real(dp), intent(out) :: alpha               !< indentation at t+dt (m)
+      integer, intent(out) :: iterations           !< iterations (= back substitutions)
+      logical, intent(out) :: converged            !< eq. (18) met
+      integer, intent(out) :: stat                 !< 0 unless the solver failed
+      character(len=*), intent(inout) :: errmsg   !< reason on failure
+      real(dp) :: rhs(size(d)), fn(size(d)), num, den, w_r0, compliance
+
+      ! impactor position at t+dt if the new force were zero, and how it moves with F
+      w_r0 = imp%w + imp%v*dt - imp%f*dt**2/(4.0_dp*model%impactor_mass)
+      compliance = dt**2/(4.0_dp*model%impactor_mass) + model%g_unit(model%eq_impact)
+      converged = .false.
+      iterations = 0
+      f = 0.0_dp;  alpha = 0.0_dp
+      nonlinear_iterations: do while (iterations < model%max_nonlinear_iter)
+         iterations = iterations + 1
+         call nonlinear_force(model, d, fn)
+         rhs = mb - fn
+         call global_solve(model%keff, rhs, stat, errmsg)
+         model%solves = model%solves + 1
+         if (stat /= 0) return
+         call solve_contact_equation(model%law, hist, w_r0 - rhs(model%eq_impact), compliance, f, alpha)
+         rhs = rhs + f*model%g_unit
+         if (.not. model%nonlinear) then
+            d = rhs
+            converged = .true.
+            exit nonlinear_iterations
+         end if
+         num = sum((rhs - d)**2)
+         den = sum((rhs - d_t)**2)
+         d = rhs
+         if (num <= model%cr2*den .or. num == 0.0_dp) then   ! eq. (18)
+            converged = .true.
+            exit nonlinear_iterations
+         end if
+      end do nonlinear_iterations
+   end subroutine fast_step
 
    ! ======================================================= contact force
 
