@@ -31,6 +31,8 @@ module element_matrices
    public :: element_geometry_t, element_geometry, element_mass, &
              element_stiffness, element_nonlinear_force, element_internal_force, &
              element_strain_energy, element_inplane_strain, element_gauss_point, &
+             element_tangent_stiffness, element_pressure_load, &
+             element_mass_integrals, element_mass_product, &
              ngp_full, ngp_shear, nfe_elem
 
    !> Gauss points of the full (3x3) and reduced (2x2) rules.
@@ -103,14 +105,9 @@ contains
       type(element_geometry_t), intent(in) :: geo   !< element geometry
       real(dp), intent(out) :: me(nfe_elem, nfe_elem)  !< element mass matrix
       real(dp) :: s(nen, nen)
-      integer :: g, i, j, k
+      integer :: i, j, k
 
-      s = 0.0_dp
-      gauss_points: do g = 1, ngp_full
-         do j = 1, nen
-            s(:, j) = s(:, j) + geo%wj3(g)*geo%phi3(:, g)*geo%phi3(j, g)
-         end do
-      end do gauss_points
+      s = element_mass_integrals(geo)
       me = 0.0_dp
       do j = 1, nen
          do i = 1, nen
@@ -127,6 +124,50 @@ contains
          end do
       end do
    end subroutine element_mass
+
+   !> The one block of the consistent mass matrix, S_ij = int phi_i phi_j dA
+   !> (m^2), 3x3 Gauss: element_mass places P S, R S and I S on the
+   !> freedoms (Appendix B). Kept per element, it gives M x element by
+   !> element (element_mass_product) without the zeros inside the band of
+   !> the assembled matrix.
+   pure function element_mass_integrals(geo) result(s)
+      type(element_geometry_t), intent(in) :: geo   !< element geometry
+      real(dp) :: s(nen, nen)                       !< S_ij (m^2)
+      integer :: g, j
+      s = 0.0_dp
+      gauss_points: do g = 1, ngp_full
+         do j = 1, nen
+            s(:, j) = s(:, j) + geo%wj3(g)*geo%phi3(:, g)*geo%phi3(j, g)
+         end do
+      end do gauss_points
+   end function element_mass_integrals
+
+   !> The element mass matrix times an element vector, me xe, from
+   !> S = element_mass_integrals(geo): the same numbers as matmul(me, xe)
+   !> with me from element_mass, in five products with the 9 x 9 S instead
+   !> of one with the 45 x 45 me.
+   pure subroutine element_mass_product(lmt, s, xe, ye)
+      type(laminate_t), intent(in) :: lmt           !< inertias P (kg/m^2), R (kg/m), I (kg) (eq. 9)
+      real(dp), intent(in) :: s(nen, nen)           !< S_ij = int phi_i phi_j dA (m^2)
+      real(dp), intent(in) :: xe(nfe_elem)          !< element vector (u, v, w, psi_x, psi_y by node)
+      real(dp), intent(out) :: ye(nfe_elem)         !< me xe
+      real(dp) :: sx(5, nen)
+      integer :: i, j
+      ! sx(k, i) = sum_j S_ij x_k(j) for the fields k = u, v, w, psi_x, psi_y
+      sx = 0.0_dp
+      do j = 1, nen
+         do i = 1, nen
+            sx(:, i) = sx(:, i) + s(i, j)*xe(5*j-4:5*j)
+         end do
+      end do
+      do i = 1, nen
+         ye(5*i-4) = lmt%p*sx(1, i) + lmt%r*sx(4, i)
+         ye(5*i-3) = lmt%p*sx(2, i) + lmt%r*sx(5, i)
+         ye(5*i-2) = lmt%p*sx(3, i)
+         ye(5*i-1) = lmt%i*sx(4, i) + lmt%r*sx(1, i)
+         ye(5*i)   = lmt%i*sx(5, i) + lmt%r*sx(2, i)
+      end do
+   end subroutine element_mass_product
 
    !> Linear stiffness [K_L] (Appendix B): membrane and bending with 3x3,
    !> transverse shear with 2x2 Gauss points.
@@ -221,7 +262,7 @@ contains
       logical, intent(in) :: nonlinear              !< von Karman strains
       real(dp) :: u
       real(dp) :: eps0(3), kap(3), gam(2), wx, wy
-      integer :: g
+      integer :: g, i
 
       u = 0.0_dp
       membrane_bending: do g = 1, ngp_full
@@ -231,7 +272,12 @@ contains
                + 2.0_dp*dot_product(eps0, matmul(lmt%b, kap)) + dot_product(kap, matmul(lmt%d, kap)) )
       end do membrane_bending
       transverse_shear: do g = 1, ngp_shear
-         gam = matmul(b_shear(geo%phi2(:, g), geo%dx2(:, :, g)), de)
+         ! gamma = Bs d = (psi_y + w,y, psi_x + w,x), without forming Bs
+         gam = 0.0_dp
+         do i = 1, nen
+            gam(1) = gam(1) + geo%dx2(2, i, g)*de(5*i-2) + geo%phi2(i, g)*de(5*i)
+            gam(2) = gam(2) + geo%dx2(1, i, g)*de(5*i-2) + geo%phi2(i, g)*de(5*i-1)
+         end do
          u = u + 0.5_dp*geo%wj2(g)*dot_product(gam, matmul(lmt%as, gam))
       end do transverse_shear
    end function element_strain_energy
@@ -259,6 +305,69 @@ contains
       g = minloc(sum((geo%xy3 - spread(p, 2, ngp_full))**2, dim=1), dim=1)
    end function element_gauss_point
 
+   !> Tangent stiffness K_T(d) = d f_int/d d of the von Karman element, for
+   !> Newton's method in the static analysis (src/static_analysis.f90):
+   !>   K_T = K_L + int [ Bnl^T A Bm + Bm^T A Bnl + Bnl^T A Bnl + Bnl^T B Bb
+   !>                     + Bb^T B Bnl + G^T [Nx Nxy; Nxy Ny] G ]        (3x3 points)
+   !> with Bnl(d) the rows of d eps_nl/d d (module header), G = (phi_i,x;
+   !> phi_i,y) on the w freedoms and N = A (eps0 + eps_nl) + B kappa the
+   !> membrane forces at d: the derivative of K_L d + K_N(d) d (eq. 15, 19).
+   pure subroutine element_tangent_stiffness(lmt, geo, de, kt, stabilization)
+      type(laminate_t), intent(in) :: lmt           !< A, B, D, Abar (eq. 6)
+      type(element_geometry_t), intent(in) :: geo   !< element geometry
+      real(dp), intent(in) :: de(nfe_elem)          !< element displacements
+      real(dp), intent(out) :: kt(nfe_elem, nfe_elem)  !< tangent stiffness
+      !> fraction of 3x3 shear, as in element_stiffness (absent: 0)
+      real(dp), intent(in), optional :: stabilization
+      real(dp) :: bmb(6, nfe_elem), bnl(6, nfe_elem), gw(2, nfe_elem), c(6,6), &
+                  cb(6, nfe_elem), eps0(3), kap(3), n(3), nhat(2,2), wx, wy
+      integer :: g, i
+
+      if (present(stabilization)) then
+         call element_stiffness(lmt, geo, kt, stabilization)
+      else
+         call element_stiffness(lmt, geo, kt)
+      end if
+      c(1:3, 1:3) = lmt%a;  c(1:3, 4:6) = lmt%b
+      c(4:6, 1:3) = lmt%b;  c(4:6, 4:6) = lmt%d
+      gauss_points: do g = 1, ngp_full
+         call point_strains(geo%dx3(:, :, g), de, eps0, kap, wx, wy)
+         n = matmul(lmt%a, eps0 + [0.5_dp*wx*wx, 0.5_dp*wy*wy, wx*wy]) + matmul(lmt%b, kap)
+         nhat = reshape([n(1), n(3), n(3), n(2)], [2, 2])
+         bmb = b_membrane_bending(geo%dx3(:, :, g))
+         bnl = 0.0_dp
+         gw = 0.0_dp
+         nodes: do i = 1, nen
+            associate (px => geo%dx3(1, i, g), py => geo%dx3(2, i, g))
+               bnl(1, 5*i-2) = wx*px
+               bnl(2, 5*i-2) = wy*py
+               bnl(3, 5*i-2) = wx*py + wy*px
+               gw(1, 5*i-2) = px
+               gw(2, 5*i-2) = py
+            end associate
+         end do nodes
+         cb = matmul(c, bnl)
+         kt = kt + geo%wj3(g)*( matmul(transpose(bmb), cb) + matmul(transpose(cb), bmb) &
+                 + matmul(transpose(bnl), cb) + matmul(transpose(gw), matmul(nhat, gw)) )
+      end do gauss_points
+   end subroutine element_tangent_stiffness
+
+   !> Consistent load vector of a transverse pressure, f_i = int phi_i q dA
+   !> on the w freedoms (3x3 Gauss points, the rule of the mass matrix: exact
+   !> for a uniform pressure on a straight-sided element).
+   pure subroutine element_pressure_load(geo, q, fe)
+      type(element_geometry_t), intent(in) :: geo   !< element geometry
+      real(dp), intent(in) :: q(ngp_full)           !< pressure at the 3x3 points (Pa), + along w
+      real(dp), intent(out) :: fe(nfe_elem)         !< element load vector (N)
+      integer :: g, i
+      fe = 0.0_dp
+      gauss_points: do g = 1, ngp_full
+         do i = 1, nen
+            fe(5*i-2) = fe(5*i-2) + geo%wj3(g)*geo%phi3(i, g)*q(g)
+         end do
+      end do gauss_points
+   end subroutine element_pressure_load
+
    ! ---------------------------------------------------------------- kernels
 
    !> Linear membrane strains Bm d, curvatures Bb d and the slopes of w at a
@@ -266,14 +375,23 @@ contains
    pure subroutine point_strains(dxy, de, eps0, kap, wx, wy)
       real(dp), intent(in) :: dxy(2, nen), de(nfe_elem)
       real(dp), intent(out) :: eps0(3), kap(3), wx, wy
-      real(dp) :: d(5, nen)
-      d = reshape(de, [5, nen])
-      eps0 = [dot_product(dxy(1,:), d(1,:)), dot_product(dxy(2,:), d(2,:)), &
-              dot_product(dxy(2,:), d(1,:)) + dot_product(dxy(1,:), d(2,:))]
-      kap  = [dot_product(dxy(1,:), d(4,:)), dot_product(dxy(2,:), d(5,:)), &
-              dot_product(dxy(2,:), d(4,:)) + dot_product(dxy(1,:), d(5,:))]
-      wx = dot_product(dxy(1,:), d(3,:))
-      wy = dot_product(dxy(2,:), d(3,:))
+      real(dp) :: px, py
+      integer :: i
+      ! one pass over the nodes, no reshaped copy of de (profiled: the
+      ! reshape was a library call per Gauss point)
+      eps0 = 0.0_dp;  kap = 0.0_dp;  wx = 0.0_dp;  wy = 0.0_dp
+      nodes: do i = 1, nen
+         px = dxy(1, i);  py = dxy(2, i)
+         ! freedoms of node i: u, v, w, psi_x, psi_y = de(5i-4 .. 5i)
+         eps0(1) = eps0(1) + px*de(5*i-4)
+         eps0(2) = eps0(2) + py*de(5*i-3)
+         eps0(3) = eps0(3) + py*de(5*i-4) + px*de(5*i-3)
+         wx = wx + px*de(5*i-2)
+         wy = wy + py*de(5*i-2)
+         kap(1) = kap(1) + px*de(5*i-1)
+         kap(2) = kap(2) + py*de(5*i)
+         kap(3) = kap(3) + py*de(5*i-1) + px*de(5*i)
+      end do nodes
    end subroutine point_strains
 
    !> [Bm; Bb] (6 x 45) at a point.

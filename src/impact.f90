@@ -19,14 +19,19 @@ program impact
    use input_deck, only: deck_t, read_deck, read_deck_file, echo_deck
    use contact_law, only: contact_history_t, contact_force, contact_branch, contact_commit
    use newmark, only: newmark_t, newmark_init, newmark_predictor, newmark_update, impactor_advance
-   use global_matrix, only: global_matvec, global_bandwidth, global_stored_entries
+   use global_matrix, only: global_bandwidth, global_stored_entries
    use impact_driver, only: model_t, plate_state_t, impactor_state_t, force_bracket_t, &
       build_model, factor_effective_matrix, plate_solve, bracket_start, bracket_update, &
-      unit_force_response, fast_step, &
+      unit_force_response, fast_step, predicted_displacements, mass_times, &
       contact_converged, first_force_guess, plate_kinetic_energy, plate_strain_energy, &
       back_face_strain, impact_deflection
    use output_files, only: history_row_t, run_summary_t, open_history, write_history_row, &
       summary_record, write_summary
+   use static_analysis, only: run_static
+   use modal_analysis, only: run_modes
+   use pressure_analysis, only: run_pressure
+   use results_hdf5, only: results_file_t, results_open, results_append_history, results_snapshot, &
+      results_peak, results_finish
    implicit none
 
    type(deck_t) :: deck
@@ -38,12 +43,14 @@ program impact
    type(force_bracket_t) :: br
    type(history_row_t) :: row
    type(run_summary_t) :: summary
+   type(results_file_t) :: results
    real(dp), allocatable :: mb(:), d_new(:)
    real(dp) :: t, f_assum, f_cont, f_next, alpha, alpha_old, w_plate, w_plate_old, e0, t_cpu0, t_cpu1
    real(dp) :: contact_work, indentation_energy
    integer :: stat, step, nstep, hist_unit, ic, nl_iter, step_solves
    logical :: nl_ok, contact_ok, warned, check_only
    character(len=msg_len) :: errmsg, path, arg
+   character(len=4*msg_len) :: report
    integer :: iarg
 
    ! =====================================================================
@@ -80,6 +87,25 @@ program impact
    call echo_run(output_unit)
 
    ! =====================================================================
+   ! The other analyses of the same model (&analysis kind): static load,
+   ! natural modes, transient pressure. Each writes its own result files;
+   ! the run then ends here (--check: only the data check below).
+   ! =====================================================================
+   if (deck%analysis_kind /= 'impact' .and. .not. check_only) then
+      select case (deck%analysis_kind)
+      case ('static')
+         call run_static(deck, model, report, stat, errmsg)
+      case ('modes')
+         call run_modes(deck, model, report, stat, errmsg)
+      case ('pressure')
+         call run_pressure(deck, model, report, stat, errmsg)
+      end select
+      if (len_trim(report) > 0) write (output_unit, '(a)') trim(report)
+      if (stat /= 0) call fail(errmsg)
+      stop
+   end if
+
+   ! =====================================================================
    ! Newmark constants and the left-hand matrix of eq. (19),
    ! K_L + 4/dt^2 M, factored once (Akay's constant-coefficient scheme).
    ! =====================================================================
@@ -90,6 +116,8 @@ program impact
       call unit_force_response(model, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
    end if
+   call cpu_time(t_cpu1)
+   write (output_unit, '(a,f10.3,a)') 'set-up (model, matrices, factorization): cpu ', t_cpu1 - t_cpu0, ' s'
    if (check_only) then
       write (output_unit, '(a)') 'data check: the deck is valid and K_L + 4/dt^2 M is positive definite; no time steps run'
       stop
@@ -114,6 +142,11 @@ program impact
    if (stat /= 0) call fail(errmsg)
    row = history_row_t(v_impactor=imp%v, ke_impactor=e0)
    call write_history_row(hist_unit, row)
+   ! -- <prefix>.h5 (&output hdf5): deck, mesh, and the history as it grows
+   call results_open(deck, model%msh, results, stat, errmsg)
+   if (stat /= 0) call fail(errmsg)
+   call results_append_history(results, row, stat, errmsg)
+   if (stat /= 0) call fail(errmsg)
 
    ! =====================================================================
    ! Time integration
@@ -122,7 +155,7 @@ program impact
       t = real(step, dp)*deck%dt
 
       ! -- {b} of eq. (20) and M{b}, fixed for the whole step
-      call global_matvec(model%mass, newmark_predictor(nm, plate%d, plate%v, plate%a), mb)
+      call mass_times(model, newmark_predictor(nm, plate%d, plate%v, plate%a), mb)
 
       d_new = plate%d
       contact_ok = .false.
@@ -130,7 +163,9 @@ program impact
 
       if (deck%scheme == 'fast') then
          ! -- scheme 'fast': the contact force solved inside each iteration of
-         !    eq. (19), from the scalar equation F = F_law(alpha(F)) (eq. 11-13, 21)
+         !    eq. (19), from the scalar equation F = F_law(alpha(F)) (eq. 11-13, 21),
+         !    the iteration starting where a constant acceleration would take the plate
+         d_new = predicted_displacements(deck%dt, plate%d, plate%v, plate%a)
          call fast_step(model, mb, plate%d, imp, deck%dt, hist, d_new, f_assum, alpha, &
                         nl_iter, nl_ok, stat, errmsg)
          if (stat /= 0) call fail_in_run('plate solution: '//errmsg)
@@ -212,6 +247,15 @@ program impact
          row%nonlinear_iter = model%solves - step_solves
          summary%max_energy_error = max(summary%max_energy_error, abs(row%energy_error))
          call write_history_row(hist_unit, row)
+         call results_append_history(results, row, stat, errmsg)
+         if (stat /= 0) call fail_in_run(errmsg)
+      end if
+      ! -- field snapshots in <prefix>.h5: the largest force so far, every fields_every steps, the last
+      call results_peak(results, step, t, imp%f, plate%d, stat, errmsg)
+      if (stat /= 0) call fail_in_run(errmsg)
+      if (mod(step, deck%fields_every) == 0 .or. step == nstep) then
+         call results_snapshot(results, step, t, imp%f, plate%d, stat, errmsg)
+         if (stat /= 0) call fail_in_run(errmsg)
       end if
    end do time_steps
 
@@ -222,6 +266,7 @@ program impact
    call finish_summary('completed')
    write (output_unit, '(a)') 'history: '//trim(path)
    write (output_unit, '(a)') 'summary: '//trim(deck%prefix)//'_summary.dat'
+   if (deck%hdf5) write (output_unit, '(a)') 'results: '//trim(deck%prefix)//'.h5'
    write (output_unit, '(a,es12.5,a,f9.2,a,i0,a,es12.5,a,f8.3,a)') 'peak force ', summary%peak_force, &
       ' N at ', summary%time_of_peak*1.0e6_dp, ' us; contacts ', summary%contacts, &
       '; max deflection ', summary%max_deflection*1.0e3_dp, ' mm; cpu ', summary%cpu_s, ' s'
@@ -261,6 +306,8 @@ contains
       summary%factorizations = model%factorizations
       summary%cpu_s = t_cpu1 - t_cpu0
       call write_summary(deck, summary, stat, errmsg)
+      if (stat /= 0) write (error_unit, '(a)') 'impact: error: '//trim(errmsg)
+      call results_finish(results, summary, stat, errmsg)
       if (stat /= 0) write (error_unit, '(a)') 'impact: error: '//trim(errmsg)
    end subroutine finish_summary
 

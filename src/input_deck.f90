@@ -19,6 +19,9 @@
 !>     &laminate  angles(:)           deg        [0/45/0/-45/0]2s ply angles from x, bottom (z = -h/2)
 !>                                                                to top; all plies equally thick, h/n
 !>                k4, k5              -          0.864, 0.879     shear correction factors (Table 1)
+!>                bend_twist          -          'auto'           D16, D26: 'auto' (dropped on a quarter or
+!>                                                                strip, section 3.1; kept on the full plate)
+!>                                                                | 'drop' | 'keep' (full plate only)
 !>     &impactor  mass                kg         0.243            impactor mass
 !>                velocity            m/s        3.0              initial velocity, towards the plate
 !>                diameter            m          0.0127           diameter of the hemispherical nose
@@ -27,7 +30,9 @@
 !>                alpha_p             m          1.667e-5         indentation beyond which it is permanent
 !>                beta                -          0.094            alpha0 = beta (alpha_m - alpha_p)
 !>     &mesh      nx, ny              -          9, 6             9-node elements along x, y of the domain
-!>                domain              -          'quarter'        'quarter' (symmetric layup) | 'full'
+!>                domain              -          'quarter'        'quarter' (symmetric layup) | 'full' |
+!>                                                                'strip' (quarter of a plate infinitely
+!>                                                                long in y: y = b/2 a symmetry line too)
 !>                shear_rule          -          'auto'           transverse shear integration: 'selective'
 !>                                                                (2x2, the paper's) | 'stabilized' | 'auto'
 !>                                                                (selective unless the edges are free)
@@ -35,7 +40,9 @@
 !>     &boundary  edges               -          'clamped'        'free' | 'simply_supported' | 'clamped'
 !>                inplane             -          'immovable'      in-plane condition of simply supported
 !>                                                                edges: 'immovable' | 'movable'
-!>     &analysis  theory              -          'nonlinear'      'linear' | 'nonlinear' (von Karman)
+!>     &analysis  kind                -          'impact'         'impact' | 'static' | 'modes' | 'pressure'
+!>                                                                (transient, suddenly applied &load)
+!>                theory              -          'nonlinear'      'linear' | 'nonlinear' (von Karman)
 !>                dt                  s          2.5e-6           time step
 !>                t_end               s          3.0e-3           end time
 !>                cr1                 -          2.0e-3           contact force tolerance, eq. (17)
@@ -44,8 +51,18 @@
 !>                storage             -          'band'           'band' (LAPACK band Cholesky) | 'skyline'
 !>                max_contact_iter    -          50               contact iterations per step, at most
 !>                max_nonlinear_iter  -          200              nonlinear iterations per contact iteration
+!>     &load      kind                -          'uniform'        load of kind = 'static' | 'pressure':
+!>                                                                'uniform' | 'sinusoidal' (q0 cos(pi x/a)
+!>                                                                cos(pi y/b), x, y from the centre) |
+!>                                                                'central_force' (at the plate centre)
+!>                magnitude           Pa or N    1000             pressure q0 (Pa) or central force (N), > 0
+!>                increments          -          10               equal load increments of a nonlinear
+!>                                                                static analysis (Newton in each)
+!>     &modes     count               -          6                natural modes computed (kind = 'modes')
 !>     &output    prefix              -          'out/impact'     output file prefix (path without suffix)
-!>                every               -          1                write every N-th time step
+!>                every               -          1                write every N-th time step to the history
+!>                hdf5                -          .true.           also write <prefix>.h5 (src/results_hdf5.f90)
+!>                fields_every        -          40               field snapshots in <prefix>.h5 every N-th step
 !>
 !> The ply angles are given as a list, `angles = 0, 45, 0, -45, 0, ...`, at most
 !> `max_plies` of them, without gaps. With domain = 'quarter' the layup must be
@@ -55,8 +72,10 @@
 !> a, b, h, the moduli, rho, mass, velocity, diameter, k, q, dt, t_end > 0 and
 !> finite; h < min(a, b); nu12 > 0 and nu12**2 < e1/e2; k4, k5 in (0, 1.2];
 !> alpha_p >= 0; beta in [0, 1); cr1, cr2 in (0, 1); dt < t_end; nx, ny,
-!> max_contact_iter, max_nonlinear_iter, every >= 1; at least one ply, every
-!> angle finite; the keywords in their sets; prefix not empty.
+!> max_contact_iter, max_nonlinear_iter, every, fields_every >= 1; at least one ply, every
+!> angle finite; the keywords in their sets; prefix not empty; magnitude > 0
+!> and finite; increments, count >= 1; kind = 'modes' needs storage = 'band'
+!> (LAPACK's banded eigensolver).
 !>
 !> A sample deck (the clamped plate of Fig. 10, nonlinear; it is
 !> tests/data/decks/sample.nml):
@@ -110,6 +129,7 @@ module input_deck
       ! &laminate angles, k4, k5 /  ply angles in degrees from x, bottom (z=-h/2) to top; shear correction (Table 1)
       real(dp), allocatable :: angles(:)          ! default: [0/45/0/-45/0]_2s, 20 plies
       real(dp) :: k4 = 0.864_dp, k5 = 0.879_dp
+      character(len=name_len) :: bend_twist = 'auto'     ! D16, D26: 'auto' | 'drop' | 'keep'
       ! &impactor mass, velocity, diameter /  (kg, m/s, m)
       real(dp) :: mass = 0.243_dp, velocity = 3.0_dp, diameter = 0.0127_dp
       ! &contact k, q, alpha_p, beta /  (N/m^1.5, -, m, -)  paper Table 2 in SI
@@ -122,22 +142,34 @@ module input_deck
       ! &boundary edges, inplane /  'free' | 'simply_supported' | 'clamped';
       !    in-plane condition of simply supported edges: 'immovable' | 'movable'
       character(len=name_len) :: edges = 'clamped', inplane = 'immovable'
-      ! &analysis theory, dt, t_end, cr1, cr2, scheme, storage, max_contact_iter, max_nonlinear_iter /
+      ! &analysis kind, theory, dt, t_end, cr1, cr2, scheme, storage, max_contact_iter, max_nonlinear_iter /
+      character(len=name_len) :: analysis_kind = 'impact'  ! 'impact' | 'static' | 'modes' | 'pressure'
       character(len=name_len) :: theory = 'nonlinear'   ! 'linear' | 'nonlinear'
       real(dp) :: dt = 2.5e-6_dp, t_end = 3.0e-3_dp     ! s
       real(dp) :: cr1 = 2.0e-3_dp, cr2 = 1.0e-7_dp      ! eq. (17), (18) tolerances (0.2 %, 1e-7)
       character(len=name_len) :: scheme = 'paper'        ! contact/nonlinear iteration scheme: 'paper' | 'fast'
       character(len=name_len) :: storage = 'band'        ! 'band' (LAPACK band Cholesky) | 'skyline' (own LDL^T)
       integer :: max_contact_iter = 50, max_nonlinear_iter = 200
+      ! &load kind, magnitude, increments /  load of the static and pressure analyses:
+      !    'uniform' | 'sinusoidal' | 'central_force'; q0 (Pa) or force (N); Newton load increments
+      character(len=name_len) :: load_kind = 'uniform'
+      real(dp) :: load_magnitude = 1000.0_dp
+      integer :: load_increments = 10
+      ! &modes count /  natural modes computed by the modal analysis
+      integer :: mode_count = 6
       ! &output prefix, every /  output file prefix (path without suffix); write every N-th step
       character(len=path_len) :: prefix = 'out/impact'
       integer :: every = 1
+      ! &output hdf5, fields_every /  write <prefix>.h5; nodal field snapshots in it every N-th step
+      logical :: hdf5 = .true.
+      integer :: fields_every = 40
    end type deck_t
 
    !> The namelist groups a deck may hold, in the order of the echo.
    integer, parameter :: group_name_len = 8
-   character(len=group_name_len), parameter :: known_groups(9) = [character(len=group_name_len) :: &
-      'plate', 'lamina', 'laminate', 'impactor', 'contact', 'mesh', 'boundary', 'analysis', 'output']
+   character(len=group_name_len), parameter :: known_groups(11) = [character(len=group_name_len) :: &
+      'plate', 'lamina', 'laminate', 'impactor', 'contact', 'mesh', 'boundary', 'analysis', 'load', &
+      'modes', 'output']
 
    !> Marks the entries of the angles buffer that the deck did not set.
    real(dp), parameter :: no_ply = -huge(1.0_dp)
@@ -261,6 +293,10 @@ contains
             call read_boundary(scratch, groups(ig)%body, deck, stat, errmsg)
          case ('analysis')
             call read_analysis(scratch, groups(ig)%body, deck, stat, errmsg)
+         case ('load')
+            call read_load(scratch, groups(ig)%body, deck, stat, errmsg)
+         case ('modes')
+            call read_modes(scratch, groups(ig)%body, deck, stat, errmsg)
          case ('output')
             call read_output(scratch, groups(ig)%body, deck, stat, errmsg)
          end select
@@ -345,6 +381,7 @@ contains
       end if
       call in_range('laminate', 'k4', deck%k4, 0.0_dp, max_shear_correction, '(0, 1.2]')
       call in_range('laminate', 'k5', deck%k5, 0.0_dp, max_shear_correction, '(0, 1.2]')
+      call keyword('laminate', 'bend_twist', deck%bend_twist, [character(len=name_len) :: 'auto', 'drop', 'keep'])
 
       call positive('impactor', 'mass', deck%mass, 'kg')
       call positive('impactor', 'velocity', deck%velocity, 'm/s')
@@ -359,19 +396,22 @@ contains
 
       call need(deck%nx >= 1, 'mesh', 'nx', int_str(deck%nx), 'must be at least 1')
       call need(deck%ny >= 1, 'mesh', 'ny', int_str(deck%ny), 'must be at least 1')
-      call keyword('mesh', 'domain', deck%domain, [character(len=name_len) :: 'quarter', 'full'])
+      call keyword('mesh', 'domain', deck%domain, [character(len=name_len) :: 'quarter', 'full', 'strip'])
+      if (stat == 0 .and. deck%domain /= 'full') call need(deck%bend_twist /= 'keep', 'laminate', 'bend_twist', &
+         "'keep'", "the symmetry lines of &mesh domain = '" // trim(deck%domain) // "' need D16 = D26 = 0 " &
+         // "(section 3.1): use domain = 'full'")
       call keyword('mesh', 'shear_rule', deck%shear_rule, &
          [character(len=name_len) :: 'auto', 'selective', 'stabilized'])
       call need(deck%stabilization > 0.0_dp .and. deck%stabilization <= 1.0_dp, 'mesh', 'stabilization', &
          real_str(deck%stabilization), 'must be in (0, 1]')
-      if (stat == 0 .and. deck%domain == 'quarter') then
+      if (stat == 0 .and. (deck%domain == 'quarter' .or. deck%domain == 'strip')) then
          n = size(deck%angles)
          symmetry_1: do i = 1, n / 2
             if (deck%angles(i) == deck%angles(n + 1 - i)) cycle symmetry_1
             call need(.false., 'laminate', 'angles', list_str(deck%angles), &
                'not symmetric about the mid-plane (ply ' // int_str(i) // ' at ' // real_str(deck%angles(i)) &
                // ' deg, ply ' // int_str(n + 1 - i) // ' at ' // real_str(deck%angles(n + 1 - i)) &
-               // " deg), but &mesh domain = 'quarter' assumes B = 0: use domain = 'full'")
+               // " deg), but &mesh domain = '" // trim(deck%domain) // "' assumes B = 0: use domain = 'full'")
             exit symmetry_1
          end do symmetry_1
       end if
@@ -380,6 +420,8 @@ contains
          [character(len=name_len) :: 'free', 'simply_supported', 'clamped'])
       call keyword('boundary', 'inplane', deck%inplane, [character(len=name_len) :: 'immovable', 'movable'])
 
+      call keyword('analysis', 'kind', deck%analysis_kind, &
+         [character(len=name_len) :: 'impact', 'static', 'modes', 'pressure'])
       call keyword('analysis', 'theory', deck%theory, [character(len=name_len) :: 'linear', 'nonlinear'])
       call positive('analysis', 'dt', deck%dt, 's')
       call positive('analysis', 't_end', deck%t_end, 's')
@@ -395,9 +437,21 @@ contains
          'must be at least 1')
       call need(deck%max_nonlinear_iter >= 1, 'analysis', 'max_nonlinear_iter', &
          int_str(deck%max_nonlinear_iter), 'must be at least 1')
+      if (stat == 0 .and. deck%analysis_kind == 'modes') call need(deck%storage == 'band', 'analysis', &
+         'storage', "'" // trim(deck%storage) // "'", "kind = 'modes' needs storage = 'band' " &
+         // "(LAPACK's banded eigensolver dsbgvx)")
+
+      call keyword('load', 'kind', deck%load_kind, [character(len=name_len) :: 'uniform', 'sinusoidal', &
+         'central_force'])
+      call positive('load', 'magnitude', deck%load_magnitude, 'Pa, or N for a central force')
+      call need(deck%load_increments >= 1, 'load', 'increments', int_str(deck%load_increments), &
+         'must be at least 1')
+      call need(deck%mode_count >= 1, 'modes', 'count', int_str(deck%mode_count), 'must be at least 1')
 
       call need(len_trim(deck%prefix) > 0, 'output', 'prefix', "''", 'must not be empty')
       call need(deck%every >= 1, 'output', 'every', int_str(deck%every), 'must be at least 1')
+      call need(deck%fields_every >= 1, 'output', 'fields_every', int_str(deck%fields_every), &
+         'must be at least 1 (time steps between field snapshots in <prefix>.h5)')
 
    contains
 
@@ -476,11 +530,12 @@ contains
       n = 0
       if (allocated(deck%angles)) n = size(deck%angles)
       if (n > 0) then
-         call put('&laminate', 'k4 = ' // real_str(deck%k4) // ', k5 = ' // real_str(deck%k5) // ', ' &
-            // int_str(n) // ' plies of ' // real_str(deck%h / n) // ' m, angles (deg, bottom to top) =')
+         call put('&laminate', 'k4 = ' // real_str(deck%k4) // ', k5 = ' // real_str(deck%k5) // ", bend_twist = '" &
+            // trim(deck%bend_twist) // "', " // int_str(n) // ' plies of ' // real_str(deck%h / n) &
+            // ' m, angles (deg, bottom to top) =')
       else
          call put('&laminate', 'k4 = ' // real_str(deck%k4) // ', k5 = ' // real_str(deck%k5) &
-            // ', no plies')
+            // ", bend_twist = '" // trim(deck%bend_twist) // "', no plies")
       end if
       angles_1: do i = 1, n
          if (mod(i - 1, angles_per_line) == 0) then
@@ -501,13 +556,19 @@ contains
          // trim(deck%domain) // "', shear_rule = '" // trim(deck%shear_rule) // "', stabilization = " &
          // real_str(deck%stabilization))
       call put('&boundary', "edges = '" // trim(deck%edges) // "', inplane = '" // trim(deck%inplane) // "'")
-      call put('&analysis', "theory = '" // trim(deck%theory) // "', dt = " // real_str(deck%dt) &
-         // ' s, t_end = ' // real_str(deck%t_end) // ' s, cr1 = ' // real_str(deck%cr1) &
-         // ', cr2 = ' // real_str(deck%cr2))
+      call put('&analysis', "kind = '" // trim(deck%analysis_kind) // "', theory = '" // trim(deck%theory) &
+         // "', dt = " // real_str(deck%dt) // ' s, t_end = ' // real_str(deck%t_end) // ' s, cr1 = ' &
+         // real_str(deck%cr1) // ', cr2 = ' // real_str(deck%cr2))
       call put(blank, "scheme = '" // trim(deck%scheme) // "', storage = '" // trim(deck%storage) &
          // "', max_contact_iter = " // int_str(deck%max_contact_iter) // ', max_nonlinear_iter = ' &
          // int_str(deck%max_nonlinear_iter))
-      call put('&output', "prefix = '" // trim(deck%prefix) // "', every = " // int_str(deck%every))
+      call put('&load', "kind = '" // trim(deck%load_kind) // "', magnitude = " // real_str(deck%load_magnitude) &
+         // ' ' // trim(merge('N ', 'Pa', deck%load_kind == 'central_force')) // ', increments = ' &
+         // int_str(deck%load_increments))
+      call put('&modes', 'count = ' // int_str(deck%mode_count))
+      call put('&output', "prefix = '" // trim(deck%prefix) // "', every = " // int_str(deck%every) &
+         // ', hdf5 = ' // trim(merge('.true. ', '.false.', deck%hdf5)) // ', fields_every = ' &
+         // int_str(deck%fields_every))
 
    contains
 
@@ -627,7 +688,8 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       real(dp) :: angles(max_plies), k4, k5
-      namelist /laminate/ angles, k4, k5
+      character(len=name_len) :: bend_twist
+      namelist /laminate/ angles, k4, k5, bend_twist
       integer :: ios, n, next, trial, bad
       character(len=msg_len) :: msg
       type(text_t), allocatable :: pieces(:)
@@ -635,6 +697,7 @@ contains
       angles = no_ply
       k4 = deck%k4
       k5 = deck%k5
+      bend_twist = deck%bend_twist
       msg = ''
       rewind (scratch, iostat=ios, iomsg=msg)
       if (ios == 0) read (scratch, nml=laminate, iostat=ios, iomsg=msg)
@@ -644,7 +707,8 @@ contains
             read (pieces(bad)%s, nml=laminate, iostat=trial)
             if (trial /= 0) exit
          end do
-         call read_failure(deck%source, 'laminate', 'angles, k4, k5', ios, msg, pieces, bad, stat, errmsg)
+         call read_failure(deck%source, 'laminate', 'angles, k4, k5, bend_twist', ios, msg, pieces, bad, stat, &
+            errmsg)
          return
       end if
       n = 0
@@ -663,6 +727,7 @@ contains
       if (n > 0) deck%angles = angles(:n)
       deck%k4 = k4
       deck%k5 = k5
+      deck%bend_twist = bend_twist
       stat = 0
    end subroutine read_laminate
 
@@ -809,21 +874,23 @@ contains
       stat = 0
    end subroutine read_boundary
 
-   !> &analysis theory, dt, t_end, cr1, cr2, scheme, storage, max_contact_iter, max_nonlinear_iter /
+   !> &analysis kind, theory, dt, t_end, cr1, cr2, scheme, storage, max_contact_iter, max_nonlinear_iter /
    subroutine read_analysis(scratch, body, deck, stat, errmsg)
       integer, intent(in) :: scratch
       character(len=*), intent(in) :: body
       type(deck_t), intent(inout) :: deck
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      character(len=name_len) :: theory, scheme, storage
+      character(len=name_len) :: kind, theory, scheme, storage
       real(dp) :: dt, t_end, cr1, cr2
       integer :: max_contact_iter, max_nonlinear_iter
-      namelist /analysis/ theory, dt, t_end, cr1, cr2, scheme, storage, max_contact_iter, max_nonlinear_iter
+      namelist /analysis/ kind, theory, dt, t_end, cr1, cr2, scheme, storage, max_contact_iter, &
+         max_nonlinear_iter
       integer :: ios, trial, bad
       character(len=msg_len) :: msg
       type(text_t), allocatable :: pieces(:)
 
+      kind = deck%analysis_kind
       theory = deck%theory
       dt = deck%dt
       t_end = deck%t_end
@@ -843,10 +910,11 @@ contains
             if (trial /= 0) exit
          end do
          call read_failure(deck%source, 'analysis', &
-            'theory, dt, t_end, cr1, cr2, scheme, storage, max_contact_iter, max_nonlinear_iter', &
+            'kind, theory, dt, t_end, cr1, cr2, scheme, storage, max_contact_iter, max_nonlinear_iter', &
             ios, msg, pieces, bad, stat, errmsg)
          return
       end if
+      deck%analysis_kind = kind
       deck%theory = theory
       deck%dt = dt
       deck%t_end = t_end
@@ -859,7 +927,74 @@ contains
       stat = 0
    end subroutine read_analysis
 
-   !> &output prefix, every /
+   !> &load kind, magnitude, increments /
+   subroutine read_load(scratch, body, deck, stat, errmsg)
+      integer, intent(in) :: scratch
+      character(len=*), intent(in) :: body
+      type(deck_t), intent(inout) :: deck
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      character(len=name_len) :: kind
+      real(dp) :: magnitude
+      integer :: increments
+      namelist /load/ kind, magnitude, increments
+      integer :: ios, trial, bad
+      character(len=msg_len) :: msg
+      type(text_t), allocatable :: pieces(:)
+
+      kind = deck%load_kind
+      magnitude = deck%load_magnitude
+      increments = deck%load_increments
+      msg = ''
+      rewind (scratch, iostat=ios, iomsg=msg)
+      if (ios == 0) read (scratch, nml=load, iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         call split_assignments('load', body, pieces)
+         do bad = 1, size(pieces)
+            read (pieces(bad)%s, nml=load, iostat=trial)
+            if (trial /= 0) exit
+         end do
+         call read_failure(deck%source, 'load', 'kind, magnitude, increments', ios, msg, pieces, bad, &
+            stat, errmsg)
+         return
+      end if
+      deck%load_kind = kind
+      deck%load_magnitude = magnitude
+      deck%load_increments = increments
+      stat = 0
+   end subroutine read_load
+
+   !> &modes count /
+   subroutine read_modes(scratch, body, deck, stat, errmsg)
+      integer, intent(in) :: scratch
+      character(len=*), intent(in) :: body
+      type(deck_t), intent(inout) :: deck
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer :: count
+      namelist /modes/ count
+      integer :: ios, trial, bad
+      character(len=msg_len) :: msg
+      type(text_t), allocatable :: pieces(:)
+
+      count = deck%mode_count
+      msg = ''
+      rewind (scratch, iostat=ios, iomsg=msg)
+      if (ios == 0) read (scratch, nml=modes, iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         call split_assignments('modes', body, pieces)
+         do bad = 1, size(pieces)
+            read (pieces(bad)%s, nml=modes, iostat=trial)
+            if (trial /= 0) exit
+         end do
+         call read_failure(deck%source, 'modes', 'count', ios, msg, pieces, bad, stat, errmsg)
+         return
+      end if
+      deck%mode_count = count
+      stat = 0
+   end subroutine read_modes
+
+   !> &output prefix, every, hdf5, fields_every /
    subroutine read_output(scratch, body, deck, stat, errmsg)
       integer, intent(in) :: scratch
       character(len=*), intent(in) :: body
@@ -867,14 +1002,17 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       character(len=path_len) :: prefix
-      integer :: every
-      namelist /output/ prefix, every
+      integer :: every, fields_every
+      logical :: hdf5
+      namelist /output/ prefix, every, hdf5, fields_every
       integer :: ios, trial, bad
       character(len=msg_len) :: msg
       type(text_t), allocatable :: pieces(:)
 
       prefix = deck%prefix
       every = deck%every
+      hdf5 = deck%hdf5
+      fields_every = deck%fields_every
       msg = ''
       rewind (scratch, iostat=ios, iomsg=msg)
       if (ios == 0) read (scratch, nml=output, iostat=ios, iomsg=msg)
@@ -884,11 +1022,14 @@ contains
             read (pieces(bad)%s, nml=output, iostat=trial)
             if (trial /= 0) exit
          end do
-         call read_failure(deck%source, 'output', 'prefix, every', ios, msg, pieces, bad, stat, errmsg)
+         call read_failure(deck%source, 'output', 'prefix, every, hdf5, fields_every', ios, msg, pieces, bad, &
+            stat, errmsg)
          return
       end if
       deck%prefix = prefix
       deck%every = every
+      deck%hdf5 = hdf5
+      deck%fields_every = fields_every
       stat = 0
    end subroutine read_output
 

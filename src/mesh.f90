@@ -5,7 +5,11 @@
 !>    plate centre) at the corner (0, 0); the lines x = 0 and y = 0 are
 !>    symmetry lines (section 2.4, 3.1);
 !>  - domain 'full': -a/2 <= x <= a/2, -b/2 <= y <= b/2, the impact point at
-!>    the origin, which is always a node of the (2nx+1) x (2ny+1) node grid.
+!>    the origin, which is always a node of the (2nx+1) x (2ny+1) node grid;
+!>  - domain 'strip': the quarter's rectangle, but y = b/2 is a symmetry line
+!>    too, so the model is a plate infinitely long along y in cylindrical
+!>    bending, of span a between its x edges (TWK Arts. 2-3; the
+!>    validation's strip). y = 0 and y = b/2 hold v and psi_y.
 !>
 !> Freedoms per node, in this order everywhere in the code (eq. 1):
 !>    1 u,  2 v,  3 w,  4 psi_x,  5 psi_y.
@@ -46,7 +50,7 @@ module mesh
       integer :: nx = 0, ny = 0               !< elements along x and y
       integer :: nnode = 0, nelem = 0         !< nodes, elements
       integer :: neq = 0                      !< free freedoms (equations)
-      character(len=16) :: domain = ''        !< 'quarter' or 'full'
+      character(len=16) :: domain = ''        !< 'quarter', 'full' or 'strip'
       real(dp) :: x0 = 0, x1 = 0, y0 = 0, y1 = 0   !< domain extent (m)
       real(dp), allocatable :: coords(:,:)    !< (2, nnode) node coordinates (m)
       integer, allocatable :: conn(:,:)       !< (nen, nelem) element nodes
@@ -64,7 +68,7 @@ contains
    subroutine build_mesh(a, b, nx, ny, domain, m, stat, errmsg)
       real(dp), intent(in) :: a, b            !< plate size along x and y (m)
       integer, intent(in) :: nx, ny           !< elements along x and y of the domain
-      character(len=*), intent(in) :: domain  !< 'quarter' or 'full'
+      character(len=*), intent(in) :: domain  !< 'quarter', 'full' or 'strip'
       type(mesh_t), intent(out) :: m          !< the mesh
       integer, intent(out) :: stat            !< 0 on success
       character(len=*), intent(inout) :: errmsg  !< reason on failure
@@ -79,7 +83,7 @@ contains
       end if
       m%nx = nx;  m%ny = ny;  m%domain = domain
       select case (domain)
-      case ('quarter')
+      case ('quarter', 'strip')
          m%x0 = 0.0_dp;  m%x1 = 0.5_dp*a;  m%y0 = 0.0_dp;  m%y1 = 0.5_dp*b
          m%sym_factor = 4.0_dp
       case ('full')
@@ -87,7 +91,7 @@ contains
          m%sym_factor = 1.0_dp
       case default
          stat = 1
-         errmsg = 'mesh: unknown domain "'//trim(domain)//'" (quarter or full)'
+         errmsg = 'mesh: unknown domain "'//trim(domain)//'" (quarter, full or strip)'
          return
       end select
 
@@ -121,7 +125,7 @@ contains
       end do elements
 
       ! the impact point: the plate centre
-      if (domain == 'quarter') then
+      if (domain /= 'full') then
          m%impact_node = m%grid(0, 0)
          m%impact_elem = 1
       else
@@ -158,7 +162,7 @@ contains
             n = m%grid(i, j)
             ! outer edges: x = x1 always; x = x0 only on the full plate
             on_x_edge = i == ngx - 1 .or. (i == 0 .and. m%domain == 'full')
-            on_y_edge = j == ngy - 1 .or. (j == 0 .and. m%domain == 'full')
+            on_y_edge = (j == ngy - 1 .and. m%domain /= 'strip') .or. (j == 0 .and. m%domain == 'full')
             if (on_x_edge .or. on_y_edge) then
                select case (edges)
                case ('clamped')
@@ -170,10 +174,11 @@ contains
                   if (inplane == 'immovable') held(1:2, n) = .true.
                end select
             end if
-            if (m%domain == 'quarter') then
+            if (m%domain /= 'full') then
                if (i == 0) held([1, 4], n) = .true.   ! symmetry about x = 0
                if (j == 0) held([2, 5], n) = .true.   ! symmetry about y = 0
             end if
+            if (m%domain == 'strip' .and. j == ngy - 1) held([2, 5], n) = .true.   ! and about y = b/2
          end do
       end do grid_nodes
 

@@ -155,6 +155,7 @@ contains
       character(len=*), intent(inout) :: errmsg   !< reason on failure
       character(len=msg_len) :: iomsg, path
       real(dp) :: duration
+      logical :: ended
       integer :: u
 
       path = trim(deck%prefix)//'_summary.dat'
@@ -163,14 +164,24 @@ contains
          errmsg = '&output: cannot write '//trim(path)//': '//trim(iomsg)
          return
       end if
-      duration = -1.0_dp
-      if (s%first_contact_end >= 0.0_dp) duration = s%first_contact_end - s%first_contact_start
+      ! first contact: its duration, or the time in contact so far if it has
+      ! not ended by the last step (then first_contact_ended = false)
+      duration = 0.0_dp
+      ended = s%contacts == 0 .or. s%first_contact_end >= 0.0_dp
+      if (s%contacts >= 1) then
+         if (ended) then
+            duration = s%first_contact_end - s%first_contact_start
+         else
+            duration = real(s%steps, dp)*deck%dt - s%first_contact_start
+         end if
+      end if
       write (u, '(a)') '# impact: summary (key = value; units in the key names)'
       call echo_deck(deck, u, '# ')
       write (u, '(a,a)')      'status = ', trim(s%status)
       write (u, '(a,es15.7)') 'peak_force_N = ', s%peak_force
       write (u, '(a,f12.4)')  'time_of_peak_us = ', s%time_of_peak*1.0e6_dp
       write (u, '(a,f12.4)')  'contact_duration_us = ', duration*1.0e6_dp
+      write (u, '(a,a)')      'first_contact_ended = ', merge('true ', 'false', ended)
       write (u, '(a,i0)')     'contacts = ', s%contacts
       write (u, '(a,es15.7)') 'max_deflection_mm = ', s%max_deflection*1.0e3_dp
       write (u, '(a,es15.7)') 'max_strain_y_back = ', s%max_strain_y

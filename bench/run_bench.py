@@ -1,0 +1,682 @@
+#!/usr/bin/env python3
+"""make bench: the speed-accuracy trade of ./impact, measured (issue 5).
+
+Runs a grid of scenes of the paper's plate (Choi, Hong & Lee 1991: 150 x 100 x
+2.7 mm [0/45/0/-45/0]2s, 243 g at 3 m/s, quarter model) over meshes, time
+steps, tolerances (cr1, cr2), iteration schemes ('paper', 'fast') and storage
+('band', 'skyline'), and writes
+
+  bench/results.dat              one row per run and sweep (columns: header)
+  docs/performance/pareto.png    error against CPU time, the paper's scene,
+                                 one curve per knob (postproc/bench_pareto.gp)
+  docs/performance/scenes.png    the same for the four scenes, largest error
+  docs/performance/cost.png      CPU time per step against freedoms, log-log,
+                                 with the fitted slope (postproc/bench_cost.gp)
+  docs/PERFORMANCE.md            the block between the bench:begin/bench:end
+                                 markers: measured figures, scheme agreement,
+                                 recommended settings per accuracy
+
+Scenes: CN clamped nonlinear (the paper's scene), CL clamped linear, SN simply
+supported nonlinear, SL simply supported linear. The error measures need the
+first contact, so the runs stop at t_end = 2.1 ms (clamped: first contact
+ends near 1.9 ms) or 1.6 ms (simply supported: the first contact ends near
+0.35 ms, the force peak and the largest deflection come in the second contact
+near 1.1-1.3 ms); the paper's own 3 ms scene is run as well.
+
+Measures (from the history, every step written):
+  peak force     largest force, refined by the parabola through the largest
+                 sample and its neighbours (removes the O(dt^2) sampling error)
+  duration       of the first contact: from t = 0 to the time the indentation
+                 falls to the permanent indentation alpha0 = beta (alpha_m -
+                 alpha_p) (eq. 12), interpolated linearly between the last
+                 step in contact and the first out of it
+  max deflection largest plate deflection at the impact point, refined like
+                 the peak force
+Reference (per scene): the additive error model q(h, dt) = q* + e_h + e_dt with
+the iteration error made negligible (scheme 'fast', cr2 = 1e-10 for the
+nonlinear scenes; the linear fast scheme has no iteration): q* = R_h + R_dt - q0,
+where q0 is the 6x9, 2.5 us run, R_h the Richardson extrapolation of the meshes
+4x6, 8x12, 16x24 at 2.5 us and R_dt that of the steps 1, 0.5, 0.25 us on 6x9,
+each with its observed order p = log2((q1 - q2)/(q2 - q3)) when the sequence
+converges monotonically with 0.5 <= p <= 4; else the finest run stands for the
+limit (noted in PERFORMANCE.md). Errors are relative, |q - q*| / |q*|.
+
+CPU time: each run is repeated (--repeat, default 3) and the median of the
+CPU times ./impact reports is kept (cpu_s of the summary: set-up and time loop;
+the set-up alone is printed on standard output). Runs are one at a time.
+
+Usage: python3 bench/run_bench.py [--repeat N] [--quick] [--reuse]
+  --quick   a small grid (minutes): checks the machinery, not for the record
+  --reuse   keep the runs of an earlier bench in build/bench/runs whose deck
+            is unchanged (development); the default reruns everything
+Environment: BENCH_OPENBLAS=<dir holding libblas.so.3 and liblapack.so.3 of
+  OpenBLAS> adds the paper's scene and the kernel timings with that BLAS
+  (found automatically in /usr/lib/x86_64-linux-gnu/openblas-*).
+"""
+
+import argparse
+import json
+import math
+import os
+import re
+import statistics
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+EXE = os.path.join(ROOT, 'impact')
+KERNELS = os.path.join(ROOT, 'build', 'bench', 'bench_kernels')
+RUN_DIR = os.path.join(ROOT, 'build', 'bench', 'runs')
+RESULTS = os.path.join(ROOT, 'bench', 'results.dat')
+FIG_DIR = os.path.join(ROOT, 'docs', 'performance')
+DOC = os.path.join(ROOT, 'docs', 'PERFORMANCE.md')
+BEGIN, END = '<!-- bench:begin -->', '<!-- bench:end -->'
+
+# The paper's contact law constants (Table 2), for alpha0 of eq. (12).
+ALPHA_P = 1.667e-5     # m
+BETA = 0.094
+
+# Deck defaults of the knobs (input/clamped.nml, the paper's values).
+DEFAULT = dict(ny=6, nx=9, dt=2.5e-6, cr1=2.0e-3, cr2=1.0e-7, scheme='fast', storage='band')
+# Tight tolerance of the reference runs (nonlinear scenes).
+CR2_REF = 1.0e-10
+
+SCENES = {
+    'CN': dict(edges='clamped', theory='nonlinear', t_end=2.1e-3, title='clamped, nonlinear (the paper scene)'),
+    'CL': dict(edges='clamped', theory='linear', t_end=2.1e-3, title='clamped, linear'),
+    'SN': dict(edges='simply_supported', theory='nonlinear', t_end=1.6e-3, title='simply supported, nonlinear'),
+    'SL': dict(edges='simply_supported', theory='linear', t_end=1.6e-3, title='simply supported, linear'),
+}
+# Quarter meshes, (ny, nx): elements along the 100 mm and the 150 mm side.
+MESHES = [(2, 3), (4, 6), (6, 9), (8, 12), (12, 18), (16, 24), (24, 36), (32, 48), (48, 72)]
+
+
+def grid(quick):
+    """The sweeps: name -> list of (scene, settings) with settings overriding DEFAULT."""
+    full = not quick
+    meshes_err = MESHES[:6] if full else MESHES[:4]            # up to 16x24 (8x12 quick)
+    meshes_paper = MESHES[:4] if full else MESHES[:3]          # up to 8x12
+    meshes_sky = MESHES[:5] if full else MESHES[:3]            # up to 12x18
+    dts = [10e-6, 5e-6, 2.5e-6, 1e-6, 0.5e-6, 0.25e-6] if full else [10e-6, 5e-6, 2.5e-6, 1e-6]
+    dts_paper = [10e-6, 5e-6, 2.5e-6, 1e-6] if full else [10e-6, 2.5e-6]
+    cr2s = [1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10] if full else [1e-6, 1e-7, 1e-9]
+    cr2s_paper = [1e-5, 1e-6, 1e-7, 1e-8, 1e-9] if full else [1e-7, 1e-9]
+    cr1s = [2e-2, 2e-3, 2e-4, 2e-5] if full else [2e-2, 2e-3]
+    scenes = list(SCENES) if full else ['CN', 'SL']
+    g = {}
+
+    def add(sweep, scene, **kw):
+        g.setdefault(sweep, []).append((scene, kw))
+
+    for sc in scenes:
+        nonlinear = SCENES[sc]['theory'] == 'nonlinear'
+        for ny, nx in meshes_err:
+            add('mesh', sc, ny=ny, nx=nx)
+        for ny, nx in meshes_paper:
+            add('mesh_paper', sc, ny=ny, nx=nx, scheme='paper')
+        for dt in dts:
+            add('dt', sc, dt=dt)
+        for dt in dts_paper:
+            add('dt_paper', sc, dt=dt, scheme='paper')
+        for cr1 in cr1s:
+            add('cr1_paper', sc, cr1=cr1, scheme='paper')
+        if nonlinear:
+            for cr2 in cr2s:
+                add('cr2', sc, cr2=cr2)
+            for cr2 in cr2s_paper:
+                add('cr2_paper', sc, cr2=cr2, scheme='paper')
+        # reference runs: iteration error negligible
+        cr2 = CR2_REF if nonlinear else DEFAULT['cr2']
+        ref_meshes = [(4, 6), (8, 12), (16, 24)] if full else [(2, 3), (4, 6), (8, 12)]
+        ref_dts = [1e-6, 0.5e-6, 0.25e-6] if full else [5e-6, 2.5e-6, 1.25e-6]
+        for ny, nx in ref_meshes:
+            add('ref_mesh', sc, ny=ny, nx=nx, cr2=cr2)
+        for dt in ref_dts:
+            add('ref_dt', sc, dt=dt, cr2=cr2)
+        add('ref_base', sc, cr2=cr2)
+    for ny, nx in meshes_sky:
+        add('mesh_sky', 'CN', ny=ny, nx=nx, storage='skyline')
+    # the paper's own run: 3 ms, both schemes
+    for scheme in ('paper', 'fast'):
+        add('paper_scene', 'CN', scheme=scheme, t_end=3.0e-3)
+    # cost per step against freedoms: short runs (the first 0.2 ms, 80 steps;
+    # 0.05 ms on the largest meshes), band to 48x72, skyline to 24x36
+    cost_meshes = MESHES if full else MESHES[:5]
+    for ny, nx in cost_meshes:
+        t_end = 2.0e-4 if ny <= 16 else 5.0e-5
+        add('cost', 'CN', ny=ny, nx=nx, t_end=t_end)
+        if ny <= 24:
+            add('cost_sky', 'CN', ny=ny, nx=nx, t_end=t_end, storage='skyline')
+    return g
+
+
+# ------------------------------------------------------------------ runs
+
+def run_id(scene, s):
+    return '{}_{}x{}_dt{:g}_c1{:g}_c2{:g}_{}_{}_t{:g}{}'.format(
+        scene, s['ny'], s['nx'], s['dt'] * 1e6, s['cr1'], s['cr2'], s['scheme'], s['storage'],
+        s['t_end'] * 1e6, '_' + s['blas'] if s.get('blas') else '')
+
+
+def deck_text(scene, s, prefix, hdf5_off):
+    sc = SCENES[scene]
+    out = "&output prefix = '{}', every = 1{} /".format(prefix, ', hdf5 = .false.' if hdf5_off else '')
+    return '\n'.join([
+        '! make bench (bench/run_bench.py): the paper plate, quarter model; every other value the default',
+        "&mesh nx = {}, ny = {}, domain = 'quarter' /".format(s['nx'], s['ny']),
+        "&boundary edges = '{}' /".format(sc['edges']),
+        "&analysis theory = '{}', dt = {!r}, t_end = {!r}, cr1 = {!r}, cr2 = {!r}, scheme = '{}', storage = '{}' /".format(
+            sc['theory'], s['dt'], s['t_end'], s['cr1'], s['cr2'], s['scheme'], s['storage']),
+        out, ''])
+
+
+def hdf5_switch_exists():
+    """True when the deck knows &output hdf5 (then the bench turns it off)."""
+    os.makedirs(RUN_DIR, exist_ok=True)
+    probe = os.path.join(RUN_DIR, 'probe.nml')
+    with open(probe, 'w') as f:
+        f.write("&output prefix = '{}', hdf5 = .false. /\n".format(os.path.join(RUN_DIR, 'probe')))
+    r = subprocess.run([EXE, '--check', probe], capture_output=True, text=True)
+    return r.returncode == 0
+
+
+def read_summary(path):
+    d = {}
+    with open(path) as f:
+        for line in f:
+            if line.startswith('#') or '=' not in line:
+                continue
+            k, v = line.split('=', 1)
+            d[k.strip()] = v.strip()
+    return d
+
+
+def read_history(path):
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith('#') or not line.strip():
+                continue
+            rows.append([float(x) for x in line.split()])
+    return rows
+
+
+def parabola_peak(t, y):
+    """Largest sample, refined by the parabola through it and its neighbours."""
+    k = max(range(len(y)), key=lambda i: y[i])
+    if 0 < k < len(y) - 1:
+        c = y[k + 1] - 2.0 * y[k] + y[k - 1]
+        if c < 0.0:
+            return y[k] - (y[k + 1] - y[k - 1]) ** 2 / (8.0 * c), k
+    return y[k], k
+
+
+def measures(rows):
+    """Peak force (N), first-contact duration (us), largest deflection (mm)."""
+    t = [r[0] for r in rows]
+    force = [r[1] for r in rows]
+    alpha = [r[2] * 1e-3 for r in rows]       # m
+    w = [r[3] for r in rows]                  # mm
+    peak, kp = parabola_peak(t, force)
+    wmax, kw = parabola_peak(t, w)
+    # first contact: from the first step with F > 0 to the first step after it with F <= 0
+    start = next((i for i, f in enumerate(force) if f > 0.0), None)
+    duration = float('nan')
+    if start is not None:
+        end = next((i for i in range(start, len(force)) if force[i] <= 0.0), None)
+        if end is not None:
+            am = max(alpha[start:end])
+            a0 = BETA * (am - ALPHA_P) if am > ALPHA_P else 0.0
+            a1, a2 = alpha[end - 1] - a0, alpha[end] - a0
+            frac = a1 / (a1 - a2) if a1 > 0.0 and a2 <= 0.0 and a1 != a2 else 1.0
+            t_end = t[end - 1] + frac * (t[end] - t[end - 1])
+            duration = t_end - 0.0        # contact begins at t = 0
+    inside = kp < len(t) - 1 and kw < len(t) - 1
+    return peak, duration, wmax, inside
+
+
+def run_one(scene, s, repeat, reuse, hdf5_off, env):
+    rid = run_id(scene, s)
+    prefix = os.path.join(RUN_DIR, rid)
+    deck = prefix + '.nml'
+    cache = prefix + '.json'
+    text = deck_text(scene, s, prefix, hdf5_off)
+    if reuse and os.path.exists(cache) and os.path.exists(deck) and open(deck).read() == text:
+        with open(cache) as f:
+            rec = json.load(f)
+        if len(rec['cpu']) >= repeat:
+            return rec
+    with open(deck, 'w') as f:
+        f.write(text)
+    cpu, setup = [], []
+    out = ''
+    for _ in range(repeat):
+        r = subprocess.run([EXE, deck], capture_output=True, text=True, env=env)
+        if r.returncode != 0:
+            sys.exit('bench: ./impact {} failed:\n{}'.format(deck, r.stderr[-2000:]))
+        out = r.stdout
+        summ = read_summary(prefix + '_summary.dat')
+        cpu.append(float(summ['cpu_s']))
+        m = re.search(r'set-up \(model, matrices, factorization\): cpu\s+([0-9.Ee+-]+)', out)
+        setup.append(float(m.group(1)) if m else float('nan'))
+    m = re.search(r'equations (\d+), half-bandwidth (\d+), stored entries (\d+)', out)
+    neq, kd, stored = (int(m.group(1)), int(m.group(2)), int(m.group(3))) if m else (0, 0, 0)
+    peak, duration, wmax, inside = measures(read_history(prefix + '_history.dat'))
+    rec = dict(id=rid, scene=scene, settings=s, cpu=cpu, setup=setup, neq=neq, kd=kd, stored=stored,
+               steps=int(summ['steps']), solves=int(summ['plate_solves']),
+               factorizations=int(summ['factorizations']), unconverged=int(summ['unconverged_steps']),
+               peak=peak, duration=duration, wmax=wmax, inside=inside)
+    with open(cache, 'w') as f:
+        json.dump(rec, f)
+    return rec
+
+
+# ------------------------------------------------------------- analysis
+
+def richardson(q, ratio=2.0):
+    """Limit of q1, q2, q3 (each step refined by `ratio`), the observed order, and whether it applied."""
+    q1, q2, q3 = q
+    d1, d2 = q2 - q1, q3 - q2
+    if d2 == 0.0:
+        return q3, float('inf'), True
+    if d1 * d2 > 0.0 and abs(d2) < abs(d1):
+        p = math.log(d1 / d2) / math.log(ratio)
+        if 0.5 <= p <= 4.0:
+            return q3 + d2 / (ratio ** p - 1.0), p, True
+        return q3, p, False
+    return q3, float('nan'), False
+
+
+def references(recs_by_sweep, scene):
+    """q* per measure (peak, duration, wmax) and how it was found."""
+    def get(sweep):
+        return [r for sc, r in recs_by_sweep.get(sweep, []) if sc == scene]
+    rm, rd, rb = get('ref_mesh'), get('ref_dt'), get('ref_base')
+    ref, how = {}, {}
+    for key in ('peak', 'duration', 'wmax'):
+        qb = rb[0][key]
+        qm = [r[key] for r in sorted(rm, key=lambda r: r['settings']['ny'])]
+        qd = [r[key] for r in sorted(rd, key=lambda r: -r['settings']['dt'])]
+        lm, pm, okm = richardson(qm)
+        ld, pd, okd = richardson(qd)
+        ref[key] = lm + ld - qb
+        how[key] = (pm, okm, pd, okd)
+    return ref, how
+
+
+def median(v):
+    return statistics.median(v) if v else float('nan')
+
+
+def fit_slope(points):
+    """Least-squares slope and intercept of log y against log x."""
+    xs = [math.log(x) for x, _ in points]
+    ys = [math.log(y) for _, y in points]
+    n = len(xs)
+    mx, my = sum(xs) / n, sum(ys) / n
+    sxx = sum((x - mx) ** 2 for x in xs)
+    sxy = sum((x - mx) * (y - my) for x, y in zip(xs, ys))
+    b = sxy / sxx
+    return b, math.exp(my - b * mx)
+
+
+def kernels(deck, env):
+    if not os.path.exists(KERNELS):
+        return None
+    r = subprocess.run([KERNELS, deck], capture_output=True, text=True, env=env)
+    if r.returncode != 0:
+        sys.exit('bench: {} {} failed:\n{}'.format(KERNELS, deck, r.stderr[-2000:]))
+    d = {}
+    for line in r.stdout.splitlines():
+        if '=' in line:
+            k, v = line.split('=', 1)
+            d[k.strip()] = v.strip()
+    return d
+
+
+def openblas_dir():
+    d = os.environ.get('BENCH_OPENBLAS', '')
+    if d:
+        return d if os.path.exists(os.path.join(d, 'libblas.so.3')) else ''
+    for cand in ('/usr/lib/x86_64-linux-gnu/openblas-serial', '/usr/lib/x86_64-linux-gnu/openblas-pthread'):
+        if os.path.exists(os.path.join(cand, 'libblas.so.3')):
+            return cand
+    return ''
+
+
+def system_blas():
+    """The BLAS library ./impact loads by default (its real path)."""
+    r = subprocess.run(['ldd', EXE], capture_output=True, text=True)
+    m = re.search(r'libblas\.so\.3 => (\S+)', r.stdout)
+    return os.path.realpath(m.group(1)) if m else 'unknown'
+
+
+# --------------------------------------------------------------- output
+
+COLUMNS = [
+    ('scene', '-', 'CN clamped nonlinear (the paper scene), CL clamped linear, SN / SL simply supported'),
+    ('sweep', '-', 'the knob varied: mesh, dt, cr1, cr2 (suffix _paper: scheme paper; mesh_sky: skyline), '
+                   'ref_*: reference runs, paper_scene: 3 ms, cost: short runs for the cost per step'),
+    ('scheme', '-', "'paper' or 'fast'"),
+    ('storage', '-', "'band' or 'skyline'"),
+    ('blas', '-', "'system' (the default libblas) or 'openblas'"),
+    ('ny', '-', 'elements along y (100 mm side) of the quarter'),
+    ('nx', '-', 'elements along x (150 mm side)'),
+    ('equations', '-', 'freedoms N'),
+    ('half_bandwidth', '-', 'kd'),
+    ('dt_us', 'us', 'time step'),
+    ('t_end_us', 'us', 'end time'),
+    ('cr1', '-', 'contact-force tolerance, eq. (17) (scheme paper only)'),
+    ('cr2', '-', 'nonlinear-iteration tolerance, eq. (18)'),
+    ('repeats', '-', 'runs timed'),
+    ('cpu_s', 's', 'CPU time, median of the repeats'),
+    ('cpu_min_s', 's', 'fastest repeat'),
+    ('setup_s', 's', 'of which set-up: model, matrices, factorization (median)'),
+    ('step_ms', 'ms', 'CPU per time step, (cpu - setup)/steps'),
+    ('steps', '-', 'time steps'),
+    ('plate_solves', '-', 'back substitutions'),
+    ('factorizations', '-', 'factorizations of K_L + 4/dt^2 M'),
+    ('unconverged', '-', 'iterations stopped at their limit'),
+    ('peak_force_N', 'N', 'largest contact force (parabola through the largest samples)'),
+    ('duration_us', 'us', 'first contact duration (interpolated end; nan: not ended)'),
+    ('max_deflection_mm', 'mm', 'largest plate deflection at the impact point'),
+    ('err_peak', '-', '|peak - reference| / reference (nan: no reference for this window)'),
+    ('err_duration', '-', 'same for the first contact duration'),
+    ('err_deflection', '-', 'same for the largest deflection'),
+    ('err_max', '-', 'largest of the three'),
+]
+
+
+def fmt(v):
+    if isinstance(v, str):
+        return v
+    if isinstance(v, int):
+        return str(v)
+    if v != v:
+        return 'nan'
+    return '{:.6e}'.format(v)
+
+
+def write_results(rows, header_lines):
+    with open(RESULTS, 'w') as f:
+        f.write('# bench/results.dat: written by make bench (bench/run_bench.py); one row per run and sweep\n')
+        for line in header_lines:
+            f.write('# ' + line + '\n')
+        f.write('# columns:\n')
+        for i, (name, unit, text) in enumerate(COLUMNS, 1):
+            f.write('#  {:2d} {:<18s} ({}) {}\n'.format(i, name, unit, text))
+        f.write('# ' + ' '.join('{}[{}]'.format(n, u) for n, u, _ in COLUMNS) + '\n')
+        for r in rows:
+            f.write(' '.join(fmt(v) for v in r) + '\n')
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    ap.add_argument('--repeat', type=int, default=int(os.environ.get('BENCH_REPEAT', '3')))
+    ap.add_argument('--quick', action='store_true')
+    ap.add_argument('--reuse', action='store_true')
+    args = ap.parse_args()
+    t_wall0 = time.time()
+    os.makedirs(RUN_DIR, exist_ok=True)
+    os.makedirs(FIG_DIR, exist_ok=True)
+    if not os.path.exists(EXE):
+        sys.exit('bench: ./impact not built (make impact)')
+    hdf5_off = hdf5_switch_exists()
+    env_sys = dict(os.environ)
+    ob = openblas_dir()
+    g = grid(args.quick)
+
+    # run every distinct run once (a run may belong to several sweeps)
+    todo = {}
+    for sweep, items in g.items():
+        for scene, kw in items:
+            s = dict(DEFAULT, t_end=SCENES[scene]['t_end'])
+            s.update(kw)
+            todo.setdefault(run_id(scene, s), (scene, s))
+    print('bench: {} runs x {} repeats{}'.format(len(todo), args.repeat, ' (quick grid)' if args.quick else ''))
+    recs = {}
+    for n, (rid, (scene, s)) in enumerate(sorted(todo.items(), key=lambda kv: kv[1][1]['ny'] * kv[1][1]['nx'] / kv[1][1]['dt']), 1):
+        t0 = time.time()
+        recs[rid] = run_one(scene, s, args.repeat, args.reuse, hdf5_off, env_sys)
+        r = recs[rid]
+        print('  [{:3d}/{}] {:<60s} cpu {:8.3f} s  solves {:7d}  ({:.0f} s)'.format(
+            n, len(todo), rid, median(r['cpu']), r['solves'], time.time() - t0), flush=True)
+    by_sweep = {}
+    for sweep, items in g.items():
+        for scene, kw in items:
+            s = dict(DEFAULT, t_end=SCENES[scene]['t_end'])
+            s.update(kw)
+            by_sweep.setdefault(sweep, []).append((scene, recs[run_id(scene, s)]))
+
+    # OpenBLAS: the paper's scene again, the other BLAS loaded instead
+    ob_recs = []
+    env_ob = None
+    if ob:
+        env_ob = dict(os.environ, LD_LIBRARY_PATH=ob + (':' + os.environ['LD_LIBRARY_PATH'] if os.environ.get('LD_LIBRARY_PATH') else ''))
+        for scheme in ('paper', 'fast'):
+            s = dict(DEFAULT, t_end=3.0e-3, scheme=scheme, blas='openblas')
+            r = run_one('CN', s, args.repeat, args.reuse, hdf5_off, env_ob)
+            ob_recs.append(('paper_scene', 'CN', r))
+            print('  [openblas] {:<60s} cpu {:8.3f} s'.format(r['id'], median(r['cpu'])), flush=True)
+
+    # references and errors
+    refs, hows = {}, {}
+    for scene in SCENES:
+        if any(sc == scene for sc, _ in by_sweep.get('ref_base', [])):
+            refs[scene], hows[scene] = references(by_sweep, scene)
+
+    def errors(scene, r):
+        if scene not in refs or r['settings']['t_end'] != SCENES[scene]['t_end']:
+            return [float('nan')] * 4
+        e = [abs(r[k] - refs[scene][k]) / abs(refs[scene][k]) for k in ('peak', 'duration', 'wmax')]
+        return e + [max(e)]
+
+    rows = []
+    all_items = [(sw, sc, r) for sw, items in by_sweep.items() for sc, r in items] + ob_recs
+    for sweep, scene, r in all_items:
+        s = r['settings']
+        cpu = median(r['cpu'])
+        setup = median(r['setup'])
+        rows.append([scene, sweep, s['scheme'], s['storage'], s.get('blas') or 'system', s['ny'], s['nx'],
+                     r['neq'], r['kd'], s['dt'] * 1e6, s['t_end'] * 1e6, s['cr1'], s['cr2'], len(r['cpu']),
+                     cpu, min(r['cpu']), setup, (cpu - setup) / r['steps'] * 1e3, r['steps'], r['solves'],
+                     r['factorizations'], r['unconverged'], r['peak'], r['duration'], r['wmax']] + errors(scene, r))
+
+    # scheme agreement: every pair of runs that differ only in the scheme
+    tol = 2.0 * DEFAULT['cr1']
+    pairs = []
+    for rid, r in recs.items():
+        s = r['settings']
+        if s['scheme'] != 'paper' or s.get('blas'):
+            continue
+        sf = dict(s, scheme='fast')
+        rf = recs.get(run_id(r['scene'], sf))
+        if rf is None:
+            continue
+        d = [abs(rf[k] - r[k]) / abs(r[k]) for k in ('peak', 'duration', 'wmax')]
+        pairs.append((r, rf, d))
+
+    # cost per step against freedoms
+    cost = {}
+    for sweep in ('cost', 'cost_sky'):
+        pts = sorted((r['neq'], (median(r['cpu']) - median(r['setup'])) / r['steps'])
+                     for _, r in by_sweep.get(sweep, []))
+        big = [p for p in pts if p[0] >= 1000]
+        cost[sweep] = (pts, fit_slope(big) if len(big) >= 2 else (float('nan'), float('nan')))
+
+    # kernels: the paper's mesh and the largest band mesh of the cost sweep
+    kern = []
+    deck69 = os.path.join(RUN_DIR, run_id('CN', dict(DEFAULT, t_end=3.0e-3, scheme='fast')) + '.nml')
+    big = max((r for _, r in by_sweep.get('cost', [])), key=lambda r: r['neq'], default=None)
+    for label, deck in (('6x9', deck69), ('{}x{}'.format(big['settings']['ny'], big['settings']['nx']) if big else '', os.path.join(RUN_DIR, big['id'] + '.nml') if big else '')):
+        if not deck:
+            continue
+        k = kernels(deck, env_sys)
+        if k:
+            kern.append((label, 'system', k))
+        if ob:
+            k = kernels(deck, env_ob)
+            if k:
+                kern.append((label, 'openblas', k))
+
+    header = ['machine: {} cores, {}; BLAS: {}{}'.format(
+        os.cpu_count(), platform_cpu(), system_blas(), '; OpenBLAS from ' + ob if ob else ''),
+        'repeats: {}; wall time of the bench: see PERFORMANCE.md'.format(args.repeat)]
+    write_results(rows, header)
+    plots()
+    wall = time.time() - t_wall0
+    write_doc(rows, refs, hows, pairs, tol, cost, kern, by_sweep, ob_recs, wall, args)
+    print('bench: {} rows in {}; figures in {}; {} updated; {:.0f} s'.format(
+        len(rows), os.path.relpath(RESULTS, ROOT), os.path.relpath(FIG_DIR, ROOT), os.path.relpath(DOC, ROOT), wall))
+    bad = [p for p in pairs if max(p[2]) > tol]
+    if bad:
+        print('bench: WARNING: {} scheme pairs differ by more than {:.1%}'.format(len(bad), tol))
+
+
+def platform_cpu():
+    try:
+        with open('/proc/cpuinfo') as f:
+            for line in f:
+                if line.startswith('model name'):
+                    return line.split(':', 1)[1].strip()
+    except OSError:
+        pass
+    return 'unknown CPU'
+
+
+def plots():
+    for gp in ('bench_pareto.gp', 'bench_cost.gp'):
+        r = subprocess.run(['gnuplot', '-e', "results='{}'; outdir='{}'".format(RESULTS, FIG_DIR),
+                            os.path.join(ROOT, 'postproc', gp)], capture_output=True, text=True)
+        if r.returncode != 0:
+            print('bench: gnuplot {} failed: {}'.format(gp, r.stderr[-1000:]))
+
+
+def write_doc(rows, refs, hows, pairs, tol, cost, kern, by_sweep, ob_recs, wall, args):
+    L = []
+    L.append('*Generated by `make bench` on {} ({:.0f} s of wall time, {} repeats{}); '
+             'do not edit between the markers.*'.format(time.strftime('%Y-%m-%d %H:%M'), wall, args.repeat,
+                                                         ', quick grid' if args.quick else ''))
+    L.append('')
+    # the paper's scene, both schemes
+    L.append('### The paper scene: 6x9 quarter mesh, 2.5 us, clamped, nonlinear, 3 ms')
+    L.append('')
+    L.append('| scheme | BLAS | CPU (s), median | set-up (s) | steps | plate solves | solves per step | peak force (N) | max deflection (mm) |')
+    L.append('|---|---|---|---|---|---|---|---|---|')
+    scene_runs = [('system', r) for sc, r in by_sweep.get('paper_scene', [])] + [('openblas', r) for _, _, r in ob_recs]
+    for blas, r in scene_runs:
+        L.append('| {} | {} | {:.3f} | {:.3f} | {} | {} | {:.2f} | {:.1f} | {:.4f} |'.format(
+            r['settings']['scheme'], blas, median(r['cpu']), median(r['setup']), r['steps'], r['solves'],
+            r['solves'] / r['steps'], r['peak'], r['wmax']))
+    sp = {(b, r['settings']['scheme']): r for b, r in scene_runs}
+    if ('system', 'paper') in sp and ('system', 'fast') in sp:
+        a, b = sp[('system', 'paper')], sp[('system', 'fast')]
+        L.append('')
+        L.append('The fast scheme needs {:.1f}x fewer plate solves and {:.1f}x less CPU time than the paper scheme.'.format(
+            a['solves'] / b['solves'], median(a['cpu']) / median(b['cpu'])))
+    L.append('')
+    # solve bound
+    L.append('### A plate solve against its bound')
+    L.append('')
+    L.append('A band solve is two triangular sweeps, 4 N kd flops, reading the factor (8 (kd+1) N bytes) twice. '
+             'Its bound is the larger of two times measured on this machine by bench/kernels.f90: the flops at the '
+             'peak multiply-add rate (independent vector FMAs), and two reads of the factor at the rate one pass '
+             'over it runs. At 0.25 flop per byte the reads always bound it.')
+    L.append('')
+    L.append('| mesh | BLAS | N | kd | solve (ms) | GFLOP/s | peak GFLOP/s | dgemm GFLOP/s | read GB/s | bound (ms) | fraction of bound | M x (ms) | K_N(D)D (ms) |')
+    L.append('|---|---|---|---|---|---|---|---|---|---|---|---|---|')
+    frac69 = {}
+    for label, blas, k in kern:
+        ts = float(k['solve_s'])
+        bound = max(float(k['solve_flop_bound_s']), float(k['solve_read_bound_s']))
+        frac69[(label, blas)] = (ts, bound)
+        L.append('| {} | {} | {} | {} | {:.3f} | {:.2f} | {:.1f} | {:.1f} | {:.1f} | {:.3f} | {:.0%} | {:.3f} | {:.3f} |'.format(
+            label, blas, k['equations'], k['half_bandwidth'], ts * 1e3, float(k['solve_gflop_s']),
+            float(k['peak_gflop_s']), float(k['gemm_gflop_s']), float(k['stream_gbyte_s']), bound * 1e3, bound / ts,
+            float(k['mass_s']) * 1e3, float(k['knl_s']) * 1e3))
+    L.append('')
+    for blas, r in scene_runs:
+        key = ('6x9', blas)
+        if key in frac69:
+            loop = median(r['cpu']) - median(r['setup'])
+            ins = r['solves'] * frac69[key][0]
+            L.append('- paper scene, scheme {}, {} BLAS: solves {:.0%} of the time loop, {:.0%} outside solves '
+                     '(solves x solve time / (CPU - set-up)).'.format(
+                         r['settings']['scheme'], blas, ins / loop, 1 - ins / loop))
+    L.append('')
+    # cost slope
+    L.append('### Cost per time step against freedoms')
+    L.append('')
+    for sweep, name in (('cost', 'band'), ('cost_sky', 'skyline')):
+        pts, (b, a) = cost.get(sweep, ([], (float('nan'), 0)))
+        if pts:
+            L.append('- {}: slope {:.2f} (least squares on log-log, N >= 1000); N = {} ... {}, {:.3f} ... {:.1f} ms per step.'.format(
+                name, b, pts[0][0], pts[-1][0], pts[0][1] * 1e3, pts[-1][1] * 1e3))
+    L.append('')
+    # references
+    L.append('### References (converged answers) per scene')
+    L.append('')
+    L.append('| scene | peak force (N) | first contact (us) | max deflection (mm) | Richardson: mesh order p / dt order p |')
+    L.append('|---|---|---|---|---|')
+    for scene, ref in refs.items():
+        how = hows[scene]
+        txt = '; '.join('{}: {} / {}'.format(k, ('{:.2f}'.format(h[0]) if h[1] else 'finest') ,
+                                              ('{:.2f}'.format(h[2]) if h[3] else 'finest'))
+                        for k, h in zip(('F', 'T', 'w'), (how['peak'], how['duration'], how['wmax'])))
+        L.append('| {} | {:.2f} | {:.2f} | {:.5f} | {} |'.format(scene, ref['peak'], ref['duration'], ref['wmax'], txt))
+    L.append('')
+    # scheme agreement
+    L.append('### The two schemes on the grid')
+    L.append('')
+    if pairs:
+        worst = [max(p[2][i] for p in pairs) for i in range(3)]
+        nbad = sum(1 for p in pairs if max(p[2]) > tol)
+        L.append('{} pairs of runs that differ only in the scheme (meshes, steps, tolerances, all scenes). '
+                 'Largest relative difference: peak force {:.3%}, first contact {:.3%}, max deflection {:.3%}; '
+                 'tolerance {:.1%} (2 cr1): {}.'.format(len(pairs), worst[0], worst[1], worst[2], tol,
+                                                        'all within' if nbad == 0 else '{} outside'.format(nbad)))
+        ratios = [p[0]['solves'] / p[1]['solves'] for p in pairs]
+        L.append('Plate solves, paper / fast: {:.1f}x to {:.1f}x (median {:.1f}x).'.format(
+            min(ratios), max(ratios), statistics.median(ratios)))
+        L.append('')
+        L.append('| scene | mesh | dt (us) | t_end (us) | cr1 | cr2 | solves paper | solves fast | dF | dT | dw |')
+        L.append('|---|---|---|---|---|---|---|---|---|---|---|')
+        for rp, rf, d in sorted(pairs, key=lambda p: (p[0]['scene'], p[0]['settings']['ny'], -p[0]['settings']['dt'], p[0]['settings']['cr1'], p[0]['settings']['cr2'])):
+            s = rp['settings']
+            L.append('| {} | {}x{} | {:g} | {:g} | {:g} | {:g} | {} | {} | {:.3%} | {:.3%} | {:.3%} |'.format(
+                rp['scene'], s['ny'], s['nx'], s['dt'] * 1e6, s['t_end'] * 1e6, s['cr1'], s['cr2'],
+                rp['solves'], rf['solves'], *d))
+    L.append('')
+    # recommendations
+    L.append('### Cheapest measured settings for a given accuracy')
+    L.append('')
+    L.append('Largest of the three relative errors (peak force, first contact, max deflection) against the '
+             'reference; the cheapest run of the grid (median CPU) that reaches it.')
+    L.append('')
+    L.append('| scene | error <= | mesh | dt (us) | scheme | cr1 | cr2 | storage | CPU (s) | errors F / T / w |')
+    L.append('|---|---|---|---|---|---|---|---|---|---|')
+    for scene in SCENES:
+        cand = [r for r in rows if r[0] == scene and r[4] == 'system' and r[-1] == r[-1]]
+        for target in (0.05, 0.02, 0.01, 0.005, 0.002, 0.001):
+            ok = [r for r in cand if r[-1] <= target]
+            if not ok:
+                L.append('| {} | {:.1%} | not reached on the grid | | | | | | | |'.format(scene, target))
+                continue
+            b = min(ok, key=lambda r: r[14])
+            L.append('| {} | {:.1%} | {}x{} | {:g} | {} | {:g} | {:g} | {} | {:.3f} | {:.2%} / {:.2%} / {:.2%} |'.format(
+                scene, target, b[5], b[6], b[9], b[2], b[11], b[12], b[3], b[14], b[25], b[26], b[27]))
+    L.append('')
+    text = '\n'.join(L)
+    doc = open(DOC).read() if os.path.exists(DOC) else '# Performance\n\n{}\n{}\n'.format(BEGIN, END)
+    if BEGIN not in doc or END not in doc:
+        doc = doc.rstrip('\n') + '\n\n{}\n{}\n'.format(BEGIN, END)
+    a = doc.index(BEGIN) + len(BEGIN)
+    b = doc.index(END)
+    doc = doc[:a] + '\n' + text + '\n' + doc[b:]
+    with open(DOC, 'w') as f:
+        f.write(doc)
+
+
+if __name__ == '__main__':
+    main()

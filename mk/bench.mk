@@ -1,0 +1,25 @@
+# make bench: the speed-accuracy trade, measured (issue 5; docs/PERFORMANCE.md).
+#
+#   make bench                   the full grid (about 10-15 minutes on 2 cores);
+#                                writes bench/results.dat, docs/performance/*.png
+#                                and the generated block of docs/PERFORMANCE.md
+#   make bench BENCH_ARGS=--quick   a small grid, to check the machinery
+#   make bench-kernels           build only the kernel timer
+#
+# Runs one job at a time (timings); BENCH_REPEAT=N sets the repeats (3).
+# BENCH_OPENBLAS=<dir> adds runs with OpenBLAS (LD_LIBRARY_PATH).
+BENCH_BUILD := $(BUILD)/bench
+BENCH_ARGS ?=
+
+.PHONY: bench bench-kernels
+bench: impact $(BENCH_BUILD)/bench_kernels
+	$(PYTHON) bench/run_bench.py $(BENCH_ARGS)
+
+bench-kernels: $(BENCH_BUILD)/bench_kernels
+
+# The kernel timer links the library; its own loops (read rate, peak
+# multiply-add rate) are compiled with -O3 -march=native to measure what this
+# machine can do (the library keeps $(FFLAGS)).
+$(BENCH_BUILD)/bench_kernels: bench/kernels.f90 $(LIB) mk/bench.mk
+	@mkdir -p $(BENCH_BUILD)
+	$(FC_ALL) -O3 -march=native $< $(LIB) $(LAPACK) -o $@

@@ -1,0 +1,1257 @@
+!> validate: runs every check of docs/VALIDATION.md and writes its tables.
+!>
+!> Usage (from the repository root, after `make impact`):  make validate
+!>
+!> The checks (issue 3):
+!>   1 Navier (FSDT) deflections and frequencies, cross-ply and orthotropic,
+!>     a/h = 4..100, and the error against the mesh
+!>   2 NAFEMS FV52 frequencies
+!>   3 shear locking: a/h = 1000 against the classical plate
+!>   4 nonlinear cylindrical bending of a strip (TWK Arts. 2-3)
+!>   5 transient step pressure against the modal (Navier) solution, dt convergence
+!>   6 the impactor on a rigid target against Hertz, with the paper's law
+!>   7 the paper's Fig. 5: quarter against full plate
+!>   8 energy balance, dissipation = loop area
+!> plus the program path: ./impact on the static, modes and pressure decks
+!> gives the numbers the library gives.
+!>
+!> The program run is ./impact, or the one the environment variable
+!> IMPACT_EXE names.
+!>
+!> Checks 1-5 call the analyses through the library (static_solve,
+!> modal_solve, pressure_solve) on decks read from validation/decks and
+!> varied here (mesh, thickness, load, time step); checks 6-8 run ./impact
+!> on decks of validation/decks and read its result files.
+!>
+!> Output: build/validation/<table>.md (markdown tables), build/validation/*.dat
+!> (data of the plots, column text with '#' headers), and docs/VALIDATION.md,
+!> assembled from validation/VALIDATION.md.in: a line '@include NAME@' is
+!> replaced by build/validation/NAME.md. The plots are drawn afterwards by
+!> validation/plots.gp (make validate). Exit status 1 when a check fails.
+program validate
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+   use kinds, only: dp, pi, msg_len
+   use input_deck, only: deck_t, read_deck_file, validate_deck
+   use materials, only: lamina_t, laminate_t, laminate_from_layup
+   use impact_driver, only: model_t, build_model, bracket_start, bracket_update, contact_converged, &
+      force_bracket_t
+   use analysis_support, only: assemble_load
+   use static_analysis, only: static_result_t, static_solve
+   use modal_analysis, only: modal_result_t, modal_solve
+   use pressure_analysis, only: pressure_result_t, pressure_solve
+   use contact_law, only: contact_law_t, contact_history_t, contact_force, contact_commit
+   use newmark, only: impactor_advance
+   use reference_solutions, only: navier_series_t, navier_fsdt, navier_fsdt_static, navier_step_centre, &
+      navier_frequencies, navier_clpt_centre, strip_deflection, hertz_impact_t, hertz_impact, &
+      load_uniform, load_sinusoidal, edge_simply_supported, edge_clamped
+   implicit none
+
+   character(len=*), parameter :: out_dir = 'build/validation'
+   character(len=*), parameter :: deck_dir = 'validation/decks'
+   character(len=*), parameter :: template = 'validation/VALIDATION.md.in'
+   character(len=*), parameter :: report = 'docs/VALIDATION.md'
+   !> Half-wave numbers kept in the Navier series of a uniform load (odd m, n <= this).
+   integer, parameter :: mmax_series = 401
+   !> Table cell width.
+   integer, parameter :: cw = 72
+
+   integer :: npass = 0, nfail = 0, su = 0, tu = 0
+   real(dp) :: t0, t1, cpu_last
+   integer(int64) :: wall0, clock_rate
+
+   call cpu_time(t0)
+   cpu_last = t0
+   call system_clock(wall0, clock_rate)
+   call execute_command_line('mkdir -p ' // out_dir // ' docs/validation')
+   open (newunit=su, file=out_dir // '/summary.md', status='replace', action='write')
+   write (su, '(a)') '| check | quantity | worst error | tolerance | result |'
+   write (su, '(a)') '|---|---|---|---|---|'
+
+   call check_navier()
+   call lap('check 1')
+   call check_fv52()
+   call lap('check 2')
+   call check_locking()
+   call lap('check 3')
+   call check_strip()
+   call lap('check 4')
+   call check_transient()
+   call lap('check 5')
+   call check_hertz()
+   call lap('check 6')
+   call check_fig5()
+   call lap('check 7')
+   call check_energy()
+   call lap('check 8')
+
+   close (su)
+   call assemble_report()
+   call cpu_time(t1)
+   write (output_unit, '(a,i0,a,i0,a,f8.1,a)') 'validate: ', npass, ' passed, ', nfail, ' failed (cpu ', &
+      t1 - t0, ' s); report: ' // report
+   if (nfail > 0) error stop 1
+
+contains
+
+   ! ================================================================ check 1
+
+   !> Navier (FSDT): centre deflection under uniform and sinusoidal load and
+   !> the (1,1) frequency, a/h = 4..100, two plates; the error against the mesh.
+   subroutine check_navier()
+      character(len=20), parameter :: plates(2) = [character(len=20) :: 'navier_crossply', 'navier_orthotropic']
+      character(len=40), parameter :: names(2) = [character(len=40) :: '[0/90/90/0], a = b', &
+         '[0] (orthotropic), b = 2a']
+      real(dp), parameter :: ratios(5) = [4.0_dp, 10.0_dp, 20.0_dp, 50.0_dp, 100.0_dp]
+      integer, parameter :: meshes(5) = [1, 2, 4, 8, 16]
+      !> FE against Navier at the deck's mesh (quarter 8 x 8; 8 x 16 for b = 2a)
+      real(dp), parameter :: tol_w = 1.0e-4_dp, tol_f = 1.0e-4_dp
+      !> the Navier series itself: halving the terms must change it by far less than tol_w
+      real(dp), parameter :: tol_trunc = 1.0e-6_dp
+      type(deck_t) :: deck0, deck
+      type(laminate_t) :: lmt
+      real(dp) :: wn(2), wf(2), err(3), worst_w, worst_f, scale_w, scale_f, omega_n, omega_f, trunc, e_prev(3)
+      real(dp) :: worst_trunc
+      real(dp) :: errs(3, size(meshes))
+      integer :: ip, ia, il, k, du
+      character(len=cw) :: cells(11)
+
+      worst_w = 0.0_dp;  worst_f = 0.0_dp;  worst_trunc = 0.0_dp
+      call table_open('navier', [character(len=cw) :: 'plate', 'a/h', 'w̄ uniform, Navier', 'FE', 'error', &
+         'w̄ sinusoidal, Navier', 'FE', 'error', 'ω̄ (1,1), Navier', 'FE', 'error'])
+      plates_loop: do ip = 1, size(plates)
+         call load_deck(plates(ip), deck0)
+         thickness: do ia = 1, size(ratios)
+            deck = deck0
+            deck%h = deck%a/ratios(ia)
+            lmt = deck_laminate(deck)
+            scale_w = 100.0_dp*deck%e2*deck%h**3/(deck%load_magnitude*deck%a**4)
+            loads: do il = 1, 2
+               deck%load_kind = merge('uniform   ', 'sinusoidal', il == 1)
+               wn(il) = navier_centre(lmt, deck, mmax_series, trunc)
+               worst_trunc = max(worst_trunc, trunc)
+               wf(il) = fe_static_centre(deck)
+               err(il) = wf(il)/wn(il) - 1.0_dp
+            end do loads
+            omega_n = navier_omega11(lmt, deck)
+            omega_f = fe_frequency(deck, 1)*2.0_dp*pi
+            err(3) = omega_f/omega_n - 1.0_dp
+            scale_f = deck%a**2/deck%h*sqrt(deck%rho/deck%e2)
+            worst_w = max(worst_w, maxval(abs(err(1:2))))
+            worst_f = max(worst_f, abs(err(3)))
+            cells = [character(len=cw) :: names(ip), num(ratios(ia), '(f6.0)'), &
+               num(wn(1)*scale_w, '(f9.5)'), num(wf(1)*scale_w, '(f9.5)'), sci(err(1)), &
+               num(wn(2)*scale_w, '(f9.5)'), num(wf(2)*scale_w, '(f9.5)'), sci(err(2)), &
+               num(omega_n*scale_f, '(f9.5)'), num(omega_f*scale_f, '(f9.5)'), sci(err(3))]
+            call table_row(cells)
+         end do thickness
+      end do plates_loop
+      call table_close()
+      call record('1 Navier, FSDT', 'centre deflection, FE (quarter 8 x 8) / Navier - 1', worst_w, tol_w)
+      call record('1 Navier, FSDT', '(1,1) frequency, FE (quarter 8 x 8) / Navier - 1', worst_f, tol_f)
+      call record('1 Navier, FSDT', 'reference: series with m, n <= 201 / with m, n <= 401 - 1', worst_trunc, &
+         tol_trunc)
+
+      ! -- the error against the mesh: cross-ply, a/h = 10
+      call load_deck('navier_crossply', deck0)
+      deck0%h = deck0%a/10.0_dp
+      lmt = deck_laminate(deck0)
+      call table_open('navier_mesh', [character(len=cw) :: 'quarter mesh', 'elements per half side', &
+         'w uniform: error', 'rate', 'w sinusoidal: error', 'rate', 'ω (1,1): error', 'rate'])
+      open (newunit=du, file=out_dir // '/navier_mesh.dat', status='replace', action='write')
+      write (du, '(a)') '# check 1: FE error against Navier, cross-ply [0/90/90/0], a/h = 10, quarter n x n mesh'
+      write (du, '(a)') '# columns: 1 n (elements per half side), 2 |error| w uniform (-), ' // &
+         '3 |error| w sinusoidal (-), 4 |error| omega11 (-)'
+      e_prev = 0.0_dp
+      meshes_loop: do k = 1, size(meshes)
+         deck = deck0
+         deck%nx = meshes(k);  deck%ny = meshes(k)
+         deck%load_kind = 'uniform'
+         errs(1, k) = fe_static_centre(deck)/navier_centre(lmt, deck, mmax_series, trunc) - 1.0_dp
+         deck%load_kind = 'sinusoidal'
+         errs(2, k) = fe_static_centre(deck)/navier_centre(lmt, deck, mmax_series, trunc) - 1.0_dp
+         if (meshes(k) <= 8) then
+            errs(3, k) = fe_frequency(deck, 1)*2.0_dp*pi/navier_omega11(lmt, deck) - 1.0_dp
+         else
+            errs(3, k) = 0.0_dp
+         end if
+         cells(1:8) = [character(len=cw) :: inum(meshes(k)) // ' x ' // inum(meshes(k)), inum(meshes(k)), &
+            sci(errs(1, k)), rate(e_prev(1), errs(1, k), k), sci(errs(2, k)), rate(e_prev(2), errs(2, k), k), &
+            sci(errs(3, k)), rate(e_prev(3), errs(3, k), k)]
+         if (meshes(k) > 8) cells(7:8) = '-'
+         call table_row(cells(1:8))
+         write (du, '(i4, 3es14.5)') meshes(k), abs(errs(:, k))
+         e_prev = errs(:, k)
+      end do meshes_loop
+      close (du)
+      call table_close()
+   end subroutine check_navier
+
+   !> The Navier centre deflection of the deck's load (m); trunc is the
+   !> change from the series with half the terms (relative).
+   function navier_centre(lmt, deck, mmax, trunc) result(w)
+      type(laminate_t), intent(in) :: lmt
+      type(deck_t), intent(in) :: deck
+      integer, intent(in) :: mmax
+      real(dp), intent(out) :: trunc
+      real(dp) :: w, w_half
+      integer :: load, stat
+      character(len=msg_len) :: errmsg
+      load = merge(load_uniform, load_sinusoidal, deck%load_kind == 'uniform')
+      call navier_fsdt_static(lmt, deck%a, deck%b, load, deck%load_magnitude, mmax, w, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+      call navier_fsdt_static(lmt, deck%a, deck%b, load, deck%load_magnitude, mmax/2, w_half, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+      trunc = abs(w_half/w - 1.0_dp)
+   end function navier_centre
+
+   !> Flexural (1,1) circular frequency of the Navier solution (rad/s).
+   function navier_omega11(lmt, deck) result(omega)
+      type(laminate_t), intent(in) :: lmt
+      type(deck_t), intent(in) :: deck
+      real(dp) :: omega, om(3)
+      integer :: stat
+      character(len=msg_len) :: errmsg
+      call navier_frequencies(lmt, deck%a, deck%b, 1, 1, om, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+      omega = om(1)
+   end function navier_omega11
+
+   ! ================================================================ check 2
+
+   !> NAFEMS FV52: the four lowest frequencies of the thick plate.
+   subroutine check_fv52()
+      real(dp), parameter :: nafems(4) = [45.897_dp, 109.44_dp, 109.44_dp, 167.89_dp]
+      integer, parameter :: meshes(4) = [2, 4, 6, 8]
+      !> largest relative difference from the published values on the 8 x 8 mesh
+      real(dp), parameter :: tol = 1.0e-3_dp
+      integer, parameter :: mn(2, 4) = reshape([1, 1, 1, 2, 2, 1, 2, 2], [2, 4])
+      type(deck_t) :: deck0, deck
+      type(modal_result_t) :: res
+      type(laminate_t) :: lmt
+      real(dp) :: f(4), om(3), worst, fprog(8)
+      integer :: k, j, stat
+      character(len=msg_len) :: errmsg
+      character(len=cw) :: cells(7)
+
+      call load_deck('fv52', deck0)
+      call table_open('fv52', [character(len=cw) :: 'source', 'f1 (Hz)', 'f2', 'f3', 'f4', &
+         'largest difference from NAFEMS', 'w share of the kinetic energy, lowest'])
+      call table_row([character(len=cw) :: 'NAFEMS FV52 (published)', num(nafems(1), '(f9.3)'), &
+         num(nafems(2), '(f9.2)'), num(nafems(3), '(f9.2)'), num(nafems(4), '(f9.2)'), '-', '-'])
+      ! Navier with the deck's k^2 = pi^2/12, and with 5/6 for comparison
+      lmt = deck_laminate(deck0)
+      do j = 1, 4
+         call navier_frequencies(lmt, deck0%a, deck0%b, mn(1, j), mn(2, j), om, stat, errmsg)
+         f(j) = om(1)/(2.0_dp*pi)
+      end do
+      call table_row([character(len=cw) :: 'Navier, Mindlin, k² = π²/12', num(f(1), '(f9.3)'), &
+         num(f(2), '(f9.3)'), num(f(3), '(f9.3)'), num(f(4), '(f9.3)'), sci(maxval(abs(f/nafems - 1.0_dp))), '-'])
+      deck = deck0
+      deck%k4 = sqrt(5.0_dp/6.0_dp);  deck%k5 = deck%k4
+      lmt = deck_laminate(deck)
+      do j = 1, 4
+         call navier_frequencies(lmt, deck%a, deck%b, mn(1, j), mn(2, j), om, stat, errmsg)
+         f(j) = om(1)/(2.0_dp*pi)
+      end do
+      call table_row([character(len=cw) :: 'Navier, Mindlin, k² = 5/6', num(f(1), '(f9.3)'), &
+         num(f(2), '(f9.3)'), num(f(3), '(f9.3)'), num(f(4), '(f9.3)'), sci(maxval(abs(f/nafems - 1.0_dp))), '-'])
+      worst = 0.0_dp
+      meshes_loop: do k = 1, size(meshes)
+         deck = deck0
+         deck%nx = meshes(k);  deck%ny = meshes(k)
+         call fe_modes(deck, 4, res)
+         f = res%freq(1:4)
+         worst = maxval(abs(f/nafems - 1.0_dp))
+         cells = [character(len=cw) :: 'FE, full ' // inum(meshes(k)) // ' x ' // inum(meshes(k)), &
+            num(f(1), '(f9.3)'), num(f(2), '(f9.3)'), num(f(3), '(f9.3)'), num(f(4), '(f9.3)'), sci(worst), &
+            num(minval(res%fraction(1, 1:4)), '(f6.3)')]
+         call table_row(cells)
+      end do meshes_loop
+      call table_close()
+      call record('2 NAFEMS FV52', 'four lowest frequencies, FE (full 8 x 8) / NAFEMS - 1', worst, tol)
+
+      ! -- the program path: ./impact on the deck writes the same frequencies
+      call run_program('fv52', 'build/validation/fv52_modes.dat', stat)
+      if (stat == 0) then
+         call read_rows('build/validation/fv52_modes.dat', 6, fprog, 2, stat)
+      end if
+      call fe_modes(deck0, deck0%mode_count, res)
+      worst = 1.0_dp
+      if (stat == 0) worst = maxval(abs(fprog(1:min(8, deck0%mode_count))/res%freq(1:min(8, deck0%mode_count)) &
+                                        - 1.0_dp))
+      call record('program path', './impact validation/decks/fv52.nml against the library', worst, 1.0e-6_dp)
+   end subroutine check_fv52
+
+   ! ================================================================ check 3
+
+   !> Shear locking: a/h = 1000 against the classical plate, the paper's
+   !> selective rule against full 3 x 3 shear integration.
+   subroutine check_locking()
+      integer, parameter :: meshes(4) = [1, 2, 4, 8]
+      real(dp), parameter :: ratios(4) = [10.0_dp, 100.0_dp, 1000.0_dp, 10000.0_dp]
+      !> FE (selective, quarter 4 x 4) / classical plate - 1 at a/h = 1000
+      real(dp), parameter :: tol = 1.0e-3_dp
+      type(deck_t) :: deck0, deck
+      type(laminate_t) :: lmt
+      real(dp) :: w_clpt, w_sel, w_full, w_fsdt, trunc, worst
+      integer :: k, du
+      character(len=cw) :: cells(5)
+
+      call load_deck('locking', deck0)
+      lmt = deck_laminate(deck0)
+      w_clpt = navier_clpt_centre(lmt, deck0%a, deck0%b, load_uniform, deck0%load_magnitude, mmax_series)
+      call table_open('locking_mesh', [character(len=cw) :: 'quarter mesh', &
+         'w / w classical, selective 2 x 2 shear (the paper)', 'error', &
+         'w / w classical, full 3 x 3 shear', 'error'])
+      worst = 0.0_dp
+      meshes_loop: do k = 1, size(meshes)
+         deck = deck0
+         deck%nx = meshes(k);  deck%ny = meshes(k)
+         deck%shear_rule = 'selective'
+         w_sel = fe_static_centre(deck)
+         deck%shear_rule = 'stabilized';  deck%stabilization = 1.0_dp   ! all shear at 3 x 3 points
+         w_full = fe_static_centre(deck)
+         cells = [character(len=cw) :: inum(meshes(k)) // ' x ' // inum(meshes(k)), num(w_sel/w_clpt, '(f10.6)'), &
+            sci(w_sel/w_clpt - 1.0_dp), num(w_full/w_clpt, '(es10.3)'), sci(w_full/w_clpt - 1.0_dp)]
+         call table_row(cells)
+         if (meshes(k) == 4) worst = abs(w_sel/w_clpt - 1.0_dp)
+      end do meshes_loop
+      call table_close()
+      call record('3 shear locking', 'a/h = 1000: w, FE (quarter 4 x 4) / classical - 1', worst, tol)
+
+      call table_open('locking_thickness', [character(len=cw) :: 'a/h', 'w FE / w Navier FSDT', &
+         'w FE / w classical', 'w Navier FSDT / w classical', 'w FE, full 3 x 3 shear / w classical'])
+      open (newunit=du, file=out_dir // '/locking.dat', status='replace', action='write')
+      write (du, '(a)') '# check 3: isotropic simply supported square plate, uniform load, quarter 4 x 4'
+      write (du, '(a)') '# columns: 1 a/h (-), 2 w FE selective / w classical (-), ' // &
+         '3 w FE full 3x3 shear / w classical (-), 4 w Navier FSDT / w classical (-)'
+      thickness: do k = 1, size(ratios)
+         deck = deck0
+         deck%h = deck%a/ratios(k)
+         lmt = deck_laminate(deck)
+         w_clpt = navier_clpt_centre(lmt, deck%a, deck%b, load_uniform, deck%load_magnitude, mmax_series)
+         w_fsdt = navier_centre(lmt, deck, mmax_series, trunc)
+         deck%shear_rule = 'selective'
+         w_sel = fe_static_centre(deck)
+         deck%shear_rule = 'stabilized';  deck%stabilization = 1.0_dp
+         w_full = fe_static_centre(deck)
+         cells = [character(len=cw) :: num(ratios(k), '(f8.0)'), num(w_sel/w_fsdt, '(f10.6)'), &
+            num(w_sel/w_clpt, '(f10.6)'), num(w_fsdt/w_clpt, '(f10.6)'), num(w_full/w_clpt, '(es10.3)')]
+         call table_row(cells)
+         write (du, '(f10.1, 3es14.6)') ratios(k), w_sel/w_clpt, w_full/w_clpt, w_fsdt/w_clpt
+      end do thickness
+      close (du)
+      call table_close()
+   end subroutine check_locking
+
+   ! ================================================================ check 4
+
+   !> Nonlinear cylindrical bending of a strip with immovable edges against
+   !> Timoshenko & Woinowsky-Krieger Arts. 2-3.
+   subroutine check_strip()
+      character(len=24), parameter :: decks(2) = [character(len=24) :: 'strip_simply_supported', 'strip_clamped']
+      integer, parameter :: edges(2) = [edge_simply_supported, edge_clamped]
+      real(dp), parameter :: q_table(9) = [1.0_dp, 2.0_dp, 5.0_dp, 10.0_dp, 20.0_dp, 50.0_dp, 100.0_dp, &
+                                           200.0_dp, 400.0_dp]
+      integer, parameter :: meshes(4) = [2, 4, 8, 16]
+      !> FE (8 elements along the half span) / TWK - 1 over Q = 1..400
+      real(dp), parameter :: tol = 1.0e-3_dp
+      type(deck_t) :: deck(2), dk
+      type(static_result_t) :: res(2), rm
+      real(dp) :: qscale(2), w_ref, u, worst, q, err, e_prev(2), wprog(7)
+      real(dp), allocatable :: wtwk(:,:)
+      integer :: ie, i, k, stat, du, n
+      character(len=msg_len) :: errmsg
+      character(len=cw) :: cells(7)
+
+      worst = 0.0_dp
+      edges_loop: do ie = 1, 2
+         call load_deck(decks(ie), deck(ie))
+         call fe_static(deck(ie), res(ie))
+         qscale(ie) = deck(ie)%a**4/(deck(ie)%e1*deck(ie)%h**4)     ! Q per Pa
+      end do edges_loop
+      n = res(1)%increments
+      allocate (wtwk(2, 0:n))
+      wtwk = 0.0_dp
+      open (newunit=du, file=out_dir // '/strip.dat', status='replace', action='write')
+      write (du, '(a)') '# check 4: strip with immovable edges, w0/h against Q = q l^4/(E h^4), nu = 0.3'
+      write (du, '(a)') '# columns: 1 Q (-), 2 w0/h TWK simply supported, 3 FE, 4 w0/h TWK built in, 5 FE, ' // &
+         '6 linear simply supported 5 Q 12 (1 - nu^2)/384, 7 linear built in Q 12 (1 - nu^2)/384'
+      path: do i = 1, n
+         do ie = 1, 2
+            q = res(ie)%load_factor(i)*deck(ie)%load_magnitude*qscale(ie)
+            call strip_deflection(edges(ie), deck(ie)%nu12, q, wtwk(ie, i), u, stat, errmsg)
+            if (stat /= 0) call fail(errmsg)
+            err = res(ie)%w_centre(i)/deck(ie)%h/wtwk(ie, i) - 1.0_dp
+            worst = max(worst, abs(err))
+         end do
+         write (du, '(f10.4, 6es14.6)') q, wtwk(1, i), res(1)%w_centre(i)/deck(1)%h, wtwk(2, i), &
+            res(2)%w_centre(i)/deck(2)%h, 5.0_dp*q*12.0_dp*(1.0_dp - deck(1)%nu12**2)/384.0_dp, &
+            q*12.0_dp*(1.0_dp - deck(1)%nu12**2)/384.0_dp
+      end do path
+      close (du)
+
+      call table_open('strip', [character(len=cw) :: 'Q = q l⁴/(E h⁴)', 'w0/h simply supported, TWK', 'FE', &
+         'error', 'w0/h built in, TWK', 'FE', 'error'])
+      rows: do k = 1, size(q_table)
+         i = nint(q_table(k)/(deck(1)%load_magnitude*qscale(1))*real(n, dp))
+         cells = [character(len=cw) :: num(q_table(k), '(f6.0)'), num(wtwk(1, i), '(f9.5)'), &
+            num(res(1)%w_centre(i)/deck(1)%h, '(f9.5)'), sci(res(1)%w_centre(i)/deck(1)%h/wtwk(1, i) - 1.0_dp), &
+            num(wtwk(2, i), '(f9.5)'), num(res(2)%w_centre(i)/deck(2)%h, '(f9.5)'), &
+            sci(res(2)%w_centre(i)/deck(2)%h/wtwk(2, i) - 1.0_dp)]
+         call table_row(cells)
+      end do rows
+      call table_close()
+      call record('4 nonlinear strip', 'w0/h, FE (8 elements per half span) / TWK - 1, Q = 1..400', worst, tol)
+
+      ! -- the error against the mesh at Q = 400
+      e_prev = 0.0_dp
+      call table_open('strip_mesh', [character(len=cw) :: 'elements per half span', &
+         'simply supported: error at Q = 400', 'rate', 'built in: error at Q = 400', 'rate'])
+      do k = 1, size(meshes)
+         do ie = 1, 2
+            dk = deck(ie)
+            dk%nx = meshes(k)
+            dk%load_increments = 40
+            call fe_static(dk, rm)
+            q = dk%load_magnitude*qscale(ie)
+            call strip_deflection(edges(ie), dk%nu12, q, w_ref, u, stat, errmsg)
+            err = rm%w_centre(rm%increments)/dk%h/w_ref - 1.0_dp
+            cells(2*ie) = sci(err)
+            cells(2*ie + 1) = rate(e_prev(ie), err, k)
+            e_prev(ie) = err
+         end do
+         cells(1) = inum(meshes(k))
+         call table_row(cells(1:5))
+      end do
+      call table_close()
+
+      ! -- the program path: ./impact on the simply supported deck
+      call run_program('strip_simply_supported', 'build/validation/strip_simply_supported_static.dat', stat)
+      if (stat == 0) call read_last_row('build/validation/strip_simply_supported_static.dat', 7, wprog, stat)
+      worst = 1.0_dp
+      if (stat == 0) worst = abs(wprog(4)*1.0e-3_dp/res(1)%w_centre(n) - 1.0_dp)
+      call record('program path', './impact validation/decks/strip_simply_supported.nml against the library', &
+         worst, 1.0e-6_dp)
+   end subroutine check_strip
+
+   ! ================================================================ check 5
+
+   !> Step pressure on the simply supported cross-ply plate against the
+   !> modal (Navier) solution; time-step convergence.
+   subroutine check_transient()
+      integer, parameter :: steps_per_period(6) = [10, 20, 40, 80, 160, 320]
+      !> the sinusoidal load at T/dt = 320 (error of the rule (omega dt)^2/12 x omega t = 4e-4 at t = 2T)
+      real(dp), parameter :: tol_sin = 1.0e-3_dp
+      !> the uniform load, quarter 16 x 16, T/dt = 800: 0.1 % of the peak
+      real(dp), parameter :: tol_uni = 1.0e-3_dp
+      type(deck_t) :: deck0, deck
+      type(laminate_t) :: lmt
+      type(navier_series_t) :: s
+      type(pressure_result_t) :: res
+      real(dp) :: period, e_prev, err, wmax, worst, energy_err, eprog(7), worst_energy
+      !> the linear theory: the average acceleration rule keeps W = KE + U exactly; rounding only
+      real(dp), parameter :: tol_energy = 1.0e-7_dp
+      real(dp), allocatable :: wref(:)
+      integer :: k, i, du, stat, nstep
+      character(len=msg_len) :: errmsg
+      character(len=cw) :: cells(5)
+
+      call load_deck('transient', deck0)
+      lmt = deck_laminate(deck0)
+      period = 2.0_dp*pi/navier_omega11(lmt, deck0)
+
+      ! -- sinusoidal pressure: only the (1,1) terms; dt ladder
+      call navier_fsdt(lmt, deck0%a, deck0%b, load_sinusoidal, deck0%load_magnitude, 1, s, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+      call table_open('transient_dt', [character(len=cw) :: 'T11/dt', 'dt (μs)', &
+         'max |w FE - w Navier| / max |w Navier|, 0 < t < 2 T11', 'rate', 'energy balance |W - KE - U| / W'])
+      open (newunit=du, file=out_dir // '/transient_dt.dat', status='replace', action='write')
+      write (du, '(a)') '# check 5: sinusoidal step pressure, error of the centre deflection over 0 < t < 2 T11'
+      write (du, '(a)') '# columns: 1 T11/dt (-), 2 dt (us), 3 max error / max |w| (-)'
+      e_prev = 0.0_dp
+      worst = 0.0_dp
+      worst_energy = 0.0_dp
+      dt_ladder: do k = 1, size(steps_per_period)
+         deck = deck0
+         deck%dt = period/steps_per_period(k)
+         nstep = 2*steps_per_period(k)
+         call fe_pressure(deck, nstep, res)
+         allocate (wref(0:nstep))
+         do i = 0, nstep
+            wref(i) = navier_step_centre(s, res%t(i))
+         end do
+         wmax = maxval(abs(wref))
+         err = maxval(abs(res%w_centre - wref))/wmax
+         energy_err = abs(res%work(nstep) - res%kinetic(nstep) - res%strain(nstep))/abs(res%work(nstep))
+         worst_energy = max(worst_energy, energy_err)
+         cells = [character(len=cw) :: inum(steps_per_period(k)), num(deck%dt*1.0e6_dp, '(f9.3)'), sci(err), &
+            rate(e_prev, err, k, 0.5_dp), sci(energy_err)]
+         call table_row(cells)
+         write (du, '(i6, f12.4, es14.5)') steps_per_period(k), deck%dt*1.0e6_dp, err
+         if (k == size(steps_per_period)) worst = err
+         if (k == 1 .or. k == size(steps_per_period)) call write_transient_curve(k, res, wref)
+         e_prev = err
+         deallocate (wref)
+      end do dt_ladder
+      close (du)
+      call table_close()
+      call record('5 transient', 'sinusoidal step: max |w FE - w Navier| / max w, T11/dt = 320', worst, tol_sin)
+      call record('5 transient', 'linear: energy balance |W - KE - U| / W, every T11/dt', worst_energy, tol_energy)
+
+      ! -- uniform pressure: the Navier series; two meshes, T/dt = 400 and 800
+      call navier_fsdt(lmt, deck0%a, deck0%b, load_uniform, deck0%load_magnitude, 199, s, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+      call table_open('transient_uniform', [character(len=cw) :: 'load', 'quarter mesh', 'T11/dt', &
+         'max |w FE - w Navier| / max |w Navier|, 0 < t < 2 T11', 'peak w FE / peak w Navier - 1'])
+      uniform_runs: do k = 1, 3
+         deck = deck0
+         deck%load_kind = 'uniform'
+         deck%nx = merge(8, 16, k == 1);  deck%ny = deck%nx
+         nstep = merge(800, 1600, k < 3)
+         deck%dt = 2.0_dp*period/nstep
+         call fe_pressure(deck, nstep, res)
+         allocate (wref(0:nstep))
+         do i = 0, nstep
+            wref(i) = navier_step_centre(s, res%t(i))
+         end do
+         err = maxval(abs(res%w_centre - wref))/maxval(abs(wref))
+         call table_row([character(len=cw) :: 'uniform', inum(deck%nx) // ' x ' // inum(deck%nx), inum(nstep/2), &
+            sci(err), sci(maxval(res%w_centre)/maxval(wref) - 1.0_dp)])
+         if (k == 3) call write_transient_curve(0, res, wref)
+         deallocate (wref)
+      end do uniform_runs
+      call table_close()
+      call record('5 transient', 'uniform step: max |w FE - w Navier| / max w, quarter 16 x 16, T11/dt = 800', &
+         err, tol_uni)
+
+      ! -- the program path: ./impact on the deck (T11/dt as the deck gives it)
+      deck = deck0
+      nstep = nint(deck%t_end/deck%dt)
+      call fe_pressure(deck, nstep, res)
+      call run_program('transient', 'build/validation/transient_pressure_history.dat', stat)
+      if (stat == 0) call read_last_row('build/validation/transient_pressure_history.dat', 7, eprog, stat)
+      err = 1.0_dp
+      if (stat == 0) err = abs(eprog(2)*1.0e-3_dp/res%w_centre(nstep) - 1.0_dp)
+      call record('program path', './impact validation/decks/transient.nml against the library', err, 1.0e-6_dp)
+   end subroutine check_transient
+
+   !> Writes w(t) of FE and Navier for the plot (k = 0: the uniform load).
+   subroutine write_transient_curve(k, res, wref)
+      integer, intent(in) :: k
+      type(pressure_result_t), intent(in) :: res
+      real(dp), intent(in) :: wref(0:)
+      integer :: du, i
+      character(len=8) :: tag
+      tag = 'uniform'
+      if (k > 0) write (tag, '(a,i0)') 'sin_', k
+      open (newunit=du, file=out_dir // '/transient_' // trim(tag) // '.dat', status='replace', action='write')
+      write (du, '(a)') '# check 5: centre deflection after a step pressure (' // trim(tag) // ')'
+      write (du, '(a)') '# columns: 1 time (ms), 2 w FE (mm), 3 w Navier (mm)'
+      do i = 0, res%nstep
+         write (du, '(f12.6, 2es16.7)') res%t(i)*1.0e3_dp, res%w_centre(i)*1.0e3_dp, wref(i)*1.0e3_dp
+      end do
+      close (du)
+   end subroutine write_transient_curve
+
+   ! ================================================================ check 6
+
+   !> The impactor on a rigid target: the code's contact kernels alone (law,
+   !> eq. 21, eq. 17 with the bracket) against Hertz, and ./impact with a
+   !> near-rigid plate.
+   subroutine check_hertz()
+      integer, parameter :: steps(5) = [25, 50, 100, 200, 400]
+      !> relative tolerance of the kernel-level run at t_c/dt = 400
+      real(dp), parameter :: tol_kernel = 1.0e-4_dp
+      !> ./impact at dt = 0.25 us (t_c/dt ~ 1280; durations to +-dt)
+      real(dp), parameter :: tol_program = 2.0e-3_dp
+      real(dp), parameter :: mass = 0.243_dp, v0 = 3.0_dp
+      character(len=8), parameter :: laws(2) = [character(len=8) :: 'elastic', 'paper']
+      type(contact_law_t) :: law
+      type(hertz_impact_t) :: ref
+      real(dp) :: got(5), want(5), err(5), e_prev(5), worst, sval(4), amax
+      real(dp), allocatable :: hist(:,:)
+      integer :: il, k, stat
+      character(len=cw) :: cells(7)
+
+      worst = 0.0_dp
+      call table_open('hertz_kernel', [character(len=cw) :: 'law', 't_c/dt', 'α_m', 'F_m', &
+         'contact duration', 'restitution e', 'permanent α_0'])
+      laws_loop: do il = 1, 2
+         if (il == 1) then
+            law = contact_law_t(k=1.413e9_dp, q=1.5_dp, alpha_p=1.667e-5_dp, beta=0.0_dp)
+         else
+            law = contact_law_t(k=1.413e9_dp, q=2.5_dp, alpha_p=1.667e-5_dp, beta=0.094_dp)
+         end if
+         ref = hertz_impact(mass, v0, law%k, law%q, law%alpha_p, law%beta)
+         want = [ref%alpha_m, ref%f_m, ref%duration, ref%restitution, ref%alpha_0]
+         call table_row([character(len=cw) :: trim(laws(il)) // ': closed form', '-', &
+            num(want(1)*1.0e3_dp, '(f10.6)') // ' mm', num(want(2), '(f10.3)') // ' N', &
+            num(want(3)*1.0e6_dp, '(f10.4)') // ' μs', num(want(4), '(f9.6)'), &
+            num(want(5)*1.0e3_dp, '(f10.6)') // ' mm'])
+         e_prev = 0.0_dp
+         dt_ladder: do k = 1, size(steps)
+            call rigid_target(mass, v0, law, ref%duration/steps(k), got)
+            err = got/max(abs(want), tiny(1.0_dp)) - 1.0_dp
+            if (want(5) == 0.0_dp) err(5) = got(5)/want(1)
+            cells = [character(len=cw) :: trim(laws(il)) // ': kernels', inum(steps(k)), sci(err(1)), sci(err(2)), &
+               sci(err(3)), sci(err(4)), sci(err(5))]
+            call table_row(cells)
+            if (k == size(steps)) worst = max(worst, maxval(abs(err)))
+            e_prev = err
+         end do dt_ladder
+      end do laws_loop
+      call table_close()
+      call record('6 rigid target', 'kernels: α_m, F_m, duration, e, α_0 / closed form - 1, t_c/dt = 400', &
+         worst, tol_kernel)
+
+      ! -- ./impact with a near-rigid plate
+      worst = 0.0_dp
+      call table_open('hertz_program', [character(len=cw) :: 'law', 'α_m (mm)', 'F_m (N)', &
+         'contact duration (μs)', 'rebound velocity (m/s)', 'permanent α_0 (mm)', 'largest error'])
+      program_runs: do il = 1, 2
+         if (il == 1) then
+            law = contact_law_t(k=1.413e9_dp, q=1.5_dp, alpha_p=1.667e-5_dp, beta=0.0_dp)
+         else
+            law = contact_law_t(k=1.413e9_dp, q=2.5_dp, alpha_p=1.667e-5_dp, beta=0.094_dp)
+         end if
+         ref = hertz_impact(mass, v0, law%k, law%q, law%alpha_p, law%beta)
+         call run_program('rigid_target_' // trim(laws(il)), &
+            'build/validation/rigid_target_' // trim(laws(il)) // '_summary.dat', stat)
+         if (stat /= 0) then
+            call record('6 rigid target', './impact ' // trim(laws(il)) // ' did not run', 1.0_dp, tol_program)
+            cycle program_runs
+         end if
+         call summary_values('build/validation/rigid_target_' // trim(laws(il)) // '_summary.dat', &
+            [character(len=32) :: 'peak_force_N', 'contact_duration_us', 'rebound_velocity_m_s', &
+             'permanent_indentation_mm'], sval, stat)
+         call read_table('build/validation/rigid_target_' // trim(laws(il)) // '_history.dat', 16, hist, stat)
+         amax = maxval(hist(3, :))*1.0e-3_dp
+         got = [amax, sval(1), sval(2)*1.0e-6_dp, sval(3)/v0, sval(4)*1.0e-3_dp]
+         want = [ref%alpha_m, ref%f_m, ref%duration, ref%restitution, ref%alpha_0]
+         err = got/max(abs(want), tiny(1.0_dp)) - 1.0_dp
+         if (want(5) == 0.0_dp) err(5) = got(5)/want(1)
+         call table_row([character(len=cw) :: trim(laws(il)) // ': closed form', num(want(1)*1.0e3_dp, '(f10.6)'), &
+            num(want(2), '(f10.3)'), num(want(3)*1.0e6_dp, '(f10.3)'), num(want(4)*v0, '(f9.6)'), &
+            num(want(5)*1.0e3_dp, '(f10.6)'), '-'])
+         call table_row([character(len=cw) :: trim(laws(il)) // ': ./impact', num(got(1)*1.0e3_dp, '(f10.6)'), &
+            num(got(2), '(f10.3)'), num(got(3)*1.0e6_dp, '(f10.3)'), num(got(4)*v0, '(f9.6)'), &
+            num(got(5)*1.0e3_dp, '(f10.6)'), sci(maxval(abs(err)))])
+         worst = max(worst, maxval(abs(err)))
+      end do program_runs
+      call table_close()
+      call record('6 rigid target', './impact, near-rigid plate: α_m, F_m, duration, e, α_0 / closed form - 1', &
+         worst, tol_program)
+   end subroutine check_hertz
+
+   !> A rigid mass on a rigid target, integrated with the code's kernels:
+   !> each step assumes a force, advances the impactor (eq. 21), takes the
+   !> law's force at the indentation (eq. 11-12) and iterates to eq. (17)
+   !> with the impact analysis's bracket. r = alpha_m, F_m, contact
+   !> duration (separation by linear interpolation), restitution, alpha_0.
+   subroutine rigid_target(mass, v0, law, dt, r)
+      real(dp), intent(in) :: mass, v0, dt
+      type(contact_law_t), intent(in) :: law
+      real(dp), intent(out) :: r(5)
+      real(dp), parameter :: cr1 = 1.0e-12_dp
+      integer, parameter :: max_iter = 200
+      type(contact_history_t) :: hist
+      type(force_bracket_t) :: br
+      real(dp) :: w, v, f, w_new, v_new, fa, fc, fnext, alpha_max, f_max, t
+      integer :: step, it
+      w = 0.0_dp;  v = v0;  f = 0.0_dp;  t = 0.0_dp
+      alpha_max = 0.0_dp;  f_max = 0.0_dp
+      r = 0.0_dp
+      steps_loop: do step = 1, 100000
+         call impactor_advance(mass, dt, w, v, f, 0.0_dp, w_new, v_new)
+         fa = contact_force(law, hist, w_new)
+         br = bracket_start()
+         iterations: do it = 1, max_iter
+            call impactor_advance(mass, dt, w, v, f, fa, w_new, v_new)
+            fc = contact_force(law, hist, w_new)
+            if (contact_converged(fa, fc, cr1)) exit iterations
+            call bracket_update(br, fa, fc, fnext)
+            if (fnext == fa) exit iterations
+            fa = fnext
+         end do iterations
+         t = t + dt
+         if (fa > f_max) f_max = fa
+         alpha_max = max(alpha_max, w_new)
+         call contact_commit(law, hist, w_new)
+         if (w_new <= hist%alpha_0 .and. step > 1) then
+            ! separation between t - dt and t: interpolate alpha = alpha_0
+            r(3) = t - dt*(hist%alpha_0 - w_new)/(w - w_new)
+            r(4) = -v_new/v0
+            exit steps_loop
+         end if
+         w = w_new;  v = v_new;  f = fa
+      end do steps_loop
+      r(1) = alpha_max
+      r(2) = f_max
+      r(5) = hist%alpha_0
+   end subroutine rigid_target
+
+   ! ================================================================ check 7
+
+   !> The paper's Fig. 5: the quarter plate with D16 = D26 = 0 against the
+   !> full plate, linear, 243 g at 3 m/s, each boundary condition. Two
+   !> comparisons: the quarter against the full plate with D16 = D26 = 0
+   !> (the same model on the mirrored mesh: the code's symmetry lines), and
+   !> against the full plate as laid up (the approximation of section 3.1).
+   subroutine check_fig5()
+      character(len=16), parameter :: edges(3) = [character(len=16) :: 'clamped', 'simply_supported', 'free']
+      character(len=16), parameter :: models(3) = [character(len=16) :: 'quarter', 'full_drop', 'full']
+      character(len=40), parameter :: labels(3) = [character(len=40) :: 'quarter, D16 = D26 = 0', &
+         'full, D16 = D26 = 0', 'full, as laid up']
+      !> quarter / full with D16 = D26 = 0 - 1: one discrete model, mirrored
+      real(dp), parameter :: tol_mirror = 1.0e-6_dp
+      !> quarter / full as laid up - 1, first contact (section 3.1; see the report)
+      real(dp), parameter :: tol_approx = 2.0e-2_dp
+      real(dp) :: v(5, 3), err(5), worst_mirror, worst_approx
+      integer :: ie, im, stat, du, i
+      real(dp), allocatable :: hist(:,:)
+      character(len=cw) :: cells(7)
+      logical :: ok
+
+      worst_mirror = 0.0_dp;  worst_approx = 0.0_dp
+      call table_open('fig5', [character(len=cw) :: 'edges', 'model', 'first contact: peak force (N)', &
+         'its time (μs)', 'duration (μs)', 'largest deflection (mm)', 'peak force, all contacts (N)'])
+      edges_loop: do ie = 1, 3
+         ok = .true.
+         models_loop: do im = 1, 3
+            call run_program('fig5_' // trim(models(im)) // '_' // trim(edges(ie)), 'build/validation/fig5_' // &
+               trim(models(im)) // '_' // trim(edges(ie)) // '_history.dat', stat)
+            if (stat == 0) call first_contact('build/validation/fig5_' // trim(models(im)) // '_' // &
+               trim(edges(ie)), v(:, im), hist, stat)
+            if (stat /= 0) then
+               ok = .false.
+               exit models_loop
+            end if
+            ! the force histories for the plot: time (us), force (N), w_plate (mm)
+            open (newunit=du, file=out_dir // '/fig5_' // trim(models(im)) // '_' // trim(edges(ie)) // '.dat', &
+               status='replace', action='write')
+            write (du, '(a)') '# check 7: ' // trim(labels(im)) // ', ' // trim(edges(ie)) // ' edges, linear'
+            write (du, '(a)') '# columns: 1 time (us), 2 contact force (N), 3 plate deflection at the centre (mm)'
+            do i = 1, size(hist, 2)
+               write (du, '(f10.2, es14.6, es14.6)') hist(1, i), hist(2, i), hist(4, i)
+            end do
+            close (du)
+            cells = [character(len=cw) :: edges(ie), labels(im), num(v(1, im), '(f10.2)'), num(v(2, im), '(f9.1)'), &
+               num(v(3, im), '(f9.1)'), num(v(4, im), '(f9.4)'), num(v(5, im), '(f10.2)')]
+            call table_row(cells)
+         end do models_loop
+         if (.not. ok) then
+            call record('7 Fig. 5', trim(edges(ie)) // ': a run failed', 1.0_dp, tol_mirror)
+            cycle edges_loop
+         end if
+         err = v(:, 1)/v(:, 2) - 1.0_dp
+         worst_mirror = max(worst_mirror, maxval(abs(err)))
+         cells = [character(len=cw) :: edges(ie), 'quarter / full with D16 = D26 = 0 - 1', sci(err(1)), &
+            sci(err(2)), sci(err(3)), sci(err(4)), sci(err(5))]
+         call table_row(cells)
+         err = v(:, 1)/v(:, 3) - 1.0_dp
+         worst_approx = max(worst_approx, maxval(abs(err(1:4))))
+         cells = [character(len=cw) :: edges(ie), 'quarter / full as laid up - 1', sci(err(1)), sci(err(2)), &
+            sci(err(3)), sci(err(4)), sci(err(5))]
+         call table_row(cells)
+      end do edges_loop
+      call table_close()
+      call record('7 Fig. 5', 'quarter / full plate with D16 = D26 = 0 - 1 (all five quantities)', worst_mirror, &
+         tol_mirror)
+      call record('7 Fig. 5', 'quarter / full plate as laid up - 1, first contact', worst_approx, tol_approx)
+   end subroutine check_fig5
+
+   !> From <prefix>_history.dat and _summary.dat: the first contact's peak
+   !> force (N), its time (us), its duration (us), the largest plate
+   !> deflection during it (mm), and the largest force of the run (N).
+   subroutine first_contact(prefix, v, hist, stat)
+      character(len=*), intent(in) :: prefix
+      real(dp), intent(out) :: v(5)
+      real(dp), allocatable, intent(out) :: hist(:,:)
+      integer, intent(out) :: stat
+      real(dp) :: s(1), t_end
+      integer :: i
+      v = 0.0_dp
+      call read_table(prefix // '_history.dat', 16, hist, stat)
+      if (stat /= 0) return
+      call summary_values(prefix // '_summary.dat', [character(len=32) :: 'contact_duration_us'], s, stat)
+      if (stat /= 0) return
+      v(3) = s(1)
+      t_end = hist(1, 1) + s(1) + 2.0_dp*(hist(1, 2) - hist(1, 1))
+      if (s(1) < 0.0_dp) t_end = huge(1.0_dp)     ! still in contact at the end
+      do i = 1, size(hist, 2)
+         if (hist(1, i) > t_end) exit
+         if (hist(2, i) > v(1)) then
+            v(1) = hist(2, i)
+            v(2) = hist(1, i)
+         end if
+         v(4) = max(v(4), hist(4, i))
+      end do
+      v(5) = maxval(hist(2, :))
+   end subroutine first_contact
+
+   ! ================================================================ check 8
+
+   !> Energy: the balance of an elastic scene closes; with the paper's law
+   !> the energy dissipated equals the area of the force-indentation loop.
+   subroutine check_energy()
+      character(len=40), parameter :: runs(4) = [character(len=40) :: 'energy_elastic_linear', &
+         'energy_elastic_nonlinear_dt25', 'energy_elastic_nonlinear_dt125', 'energy_elastic_nonlinear_paper_cr2']
+      character(len=64), parameter :: labels(4) = [character(len=64) :: 'linear, dt = 2.5 μs', &
+         'von Kármán, dt = 2.5 μs, C_r2 = 1e-14', 'von Kármán, dt = 1.25 μs, C_r2 = 1e-14', &
+         'von Kármán, dt = 2.5 μs, C_r2 = 1e-7 (the paper)']
+      !> elastic linear: the rule keeps the energy exactly; rounding only
+      real(dp), parameter :: tol_linear = 1.0e-10_dp
+      !> elastic von Karman, dt = 2.5 us: O(dt^2) quadrature of the nonlinear force
+      real(dp), parameter :: tol_nonlinear = 1.0e-5_dp
+      !> dissipated energy against the loop area, trapezoidal in the written rows
+      real(dp), parameter :: tol_loop = 1.0e-3_dp
+      real(dp), allocatable :: h(:,:)
+      real(dp) :: e0, emax(4), left, loop, closed, diss, alpha_m, alpha_0, f_m, sval(1)
+      real(dp), parameter :: k = 1.413e9_dp, q = 2.5_dp, alpha_p = 1.667e-5_dp, beta = 0.094_dp
+      integer :: ir, stat, n, i, du
+      character(len=cw) :: cells(4)
+
+      e0 = 0.5_dp*0.243_dp*3.0_dp**2
+      call table_open('energy_elastic', [character(len=cw) :: 'elastic scene (clamped, 243 g at 3 m/s)', &
+         'max |energy error| / E0', 'contact energy left after separation / E0', 'ratio to the run above'])
+      emax = -1.0_dp
+      runs_loop: do ir = 1, size(runs)
+         call run_program(trim(runs(ir)), 'build/validation/' // trim(runs(ir)) // '_history.dat', stat)
+         if (stat /= 0) then
+            call record('8 energy', trim(runs(ir)) // ' did not run', 1.0_dp, tol_linear)
+            cycle runs_loop
+         end if
+         call read_table('build/validation/' // trim(runs(ir)) // '_history.dat', 16, h, stat)
+         n = size(h, 2)
+         emax(ir) = maxval(abs(h(13, :)))/e0
+         left = h(12, n)/e0
+         cells = [character(len=cw) :: labels(ir), sci(emax(ir)), sci(left), '-']
+         if (ir == 3 .and. emax(2) > 0.0_dp) cells(4) = num(emax(2)/emax(3), '(f6.2)') // ' (dt halved)'
+         call table_row(cells)
+      end do runs_loop
+      call table_close()
+      call record('8 energy', 'elastic, linear: max |energy error| / E0', emax(1), tol_linear)
+      call record('8 energy', 'elastic, von Kármán, dt = 2.5 μs: max |energy error| / E0', emax(2), tol_nonlinear)
+
+      ! -- the paper's law: dissipated energy = loop area
+      call run_program('energy_paper', 'build/validation/energy_paper_history.dat', stat)
+      if (stat /= 0) then
+         call record('8 energy', 'energy_paper did not run', 1.0_dp, tol_loop)
+         return
+      end if
+      call read_table('build/validation/energy_paper_history.dat', 16, h, stat)
+      n = size(h, 2)
+      ! dissipated: E0 less what the impactor and the plate hold at the end
+      diss = e0 - (h(8, n) + h(9, n) + h(10, n))
+      ! the loop: trapezoidal rule over the written (F, alpha) pairs
+      loop = 0.0_dp
+      do i = 2, n
+         loop = loop + 0.5_dp*(h(2, i) + h(2, i - 1))*(h(3, i) - h(3, i - 1))*1.0e-3_dp
+      end do
+      ! the law's loop in closed form, from alpha_m and alpha_0 of the run
+      call summary_values('build/validation/energy_paper_summary.dat', [character(len=32) :: &
+         'permanent_indentation_mm'], sval, stat)
+      alpha_m = maxval(h(3, :))*1.0e-3_dp
+      alpha_0 = sval(1)*1.0e-3_dp
+      f_m = k*alpha_m**1.5_dp
+      closed = 0.4_dp*k*alpha_m**2.5_dp - f_m*(alpha_m - alpha_0)/(q + 1.0_dp)
+      call table_open('energy_loop', [character(len=cw) :: 'quantity (paper law, clamped, von Kármán)', &
+         'value (mJ)', 'relative to the loop area'])
+      call table_row([character(len=cw) :: 'E0 - (KE impactor + KE plate + U plate) at 3 ms', &
+         num(diss*1.0e3_dp, '(f10.5)'), sci(diss/loop - 1.0_dp)])
+      call table_row([character(len=cw) :: '∮ F dα, trapezoidal over the history rows', &
+         num(loop*1.0e3_dp, '(f10.5)'), '0'])
+      call table_row([character(len=cw) :: 'closed form 2/5 k α_m^2.5 - F_m (α_m - α_0)/(q + 1)', &
+         num(closed*1.0e3_dp, '(f10.5)'), sci(closed/loop - 1.0_dp)])
+      call table_row([character(len=cw) :: 'α_m, α_0 of the run (mm)', num(alpha_m*1.0e3_dp, '(f10.6)') // ', ' // &
+         num(alpha_0*1.0e3_dp, '(f10.6)'), '-'])
+      call table_close()
+      call record('8 energy', 'paper law: dissipated energy / loop area - 1', abs(diss/loop - 1.0_dp), tol_loop)
+      call record('8 energy', 'paper law: closed-form loop / loop area - 1', abs(closed/loop - 1.0_dp), tol_loop)
+      open (newunit=du, file=out_dir // '/energy_loop.dat', status='replace', action='write')
+      write (du, '(a)') '# check 8: force against indentation, paper law, clamped, von Karman'
+      write (du, '(a)') '# columns: 1 indentation (mm), 2 force (N), 3 time (us)'
+      do i = 1, n
+         write (du, '(es14.6, es14.6, f12.3)') h(3, i), h(2, i), h(1, i)
+      end do
+      close (du)
+   end subroutine check_energy
+
+   ! ============================================================ FE runs
+
+   !> Reads validation/decks/<name>.nml.
+   subroutine load_deck(name, deck)
+      character(len=*), intent(in) :: name
+      type(deck_t), intent(out) :: deck
+      integer :: stat
+      character(len=msg_len) :: errmsg
+      call read_deck_file(deck_dir // '/' // trim(name) // '.nml', deck, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+   end subroutine load_deck
+
+   !> The laminate of the deck (eq. 6, 9).
+   function deck_laminate(deck) result(lmt)
+      type(deck_t), intent(in) :: deck
+      type(laminate_t) :: lmt
+      lmt = laminate_from_layup(lamina_t(deck%e1, deck%e2, deck%g12, deck%g13, deck%g23, deck%nu12, deck%rho), &
+                                deck%angles, deck%h, deck%k4, deck%k5)
+   end function deck_laminate
+
+   !> The model of the deck (checked first).
+   subroutine model_of(deck, model)
+      type(deck_t), intent(inout) :: deck
+      type(model_t), intent(out) :: model
+      integer :: stat
+      character(len=msg_len) :: errmsg
+      call validate_deck(deck, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+      call build_model(deck, model, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+   end subroutine model_of
+
+   !> Static analysis of the deck.
+   subroutine fe_static(deck_in, res)
+      type(deck_t), intent(in) :: deck_in
+      type(static_result_t), intent(out) :: res
+      type(deck_t) :: deck
+      type(model_t) :: model
+      real(dp), allocatable :: f(:)
+      integer :: stat
+      character(len=msg_len) :: errmsg
+      deck = deck_in
+      deck%analysis_kind = 'static'
+      call model_of(deck, model)
+      allocate (f(model%msh%neq))
+      call assemble_load(deck, model, f, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+      call static_solve(model, f, merge(deck%load_increments, 1, model%nonlinear), res, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+   end subroutine fe_static
+
+   !> Centre deflection of the static analysis of the deck at the full load (m).
+   function fe_static_centre(deck) result(w)
+      type(deck_t), intent(in) :: deck
+      real(dp) :: w
+      type(static_result_t) :: res
+      call fe_static(deck, res)
+      w = res%w_centre(res%increments)
+   end function fe_static_centre
+
+   !> The lowest `count` modes of the deck.
+   subroutine fe_modes(deck_in, count, res)
+      type(deck_t), intent(in) :: deck_in
+      integer, intent(in) :: count
+      type(modal_result_t), intent(out) :: res
+      type(deck_t) :: deck
+      type(model_t) :: model
+      integer :: stat
+      character(len=msg_len) :: errmsg
+      deck = deck_in
+      deck%analysis_kind = 'modes'
+      call model_of(deck, model)
+      call modal_solve(model, count, res, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+   end subroutine fe_modes
+
+   !> Frequency of mode j of the deck (Hz).
+   function fe_frequency(deck, j) result(f)
+      type(deck_t), intent(in) :: deck
+      integer, intent(in) :: j
+      real(dp) :: f
+      type(modal_result_t) :: res
+      call fe_modes(deck, j, res)
+      f = res%freq(j)
+   end function fe_frequency
+
+   !> Transient response of the deck to its load, nstep steps of deck%dt.
+   subroutine fe_pressure(deck_in, nstep, res)
+      type(deck_t), intent(in) :: deck_in
+      integer, intent(in) :: nstep
+      type(pressure_result_t), intent(out) :: res
+      type(deck_t) :: deck
+      type(model_t) :: model
+      real(dp), allocatable :: f(:)
+      integer :: stat
+      character(len=msg_len) :: errmsg
+      deck = deck_in
+      deck%analysis_kind = 'pressure'
+      deck%t_end = deck%dt*real(nstep, dp)*(1.0_dp + 1.0e-9_dp)
+      call model_of(deck, model)
+      allocate (f(model%msh%neq))
+      call assemble_load(deck, model, f, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+      call pressure_solve(model, f, deck%dt, nstep, nstep, res, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+   end subroutine fe_pressure
+
+   ! ============================================================ the program
+
+   !> Runs ./impact on validation/decks/<name>.nml (output in build/validation,
+   !> terminal in <name>.log); stat = 0 when it exits 0 and `result` exists.
+   subroutine run_program(name, result, stat)
+      character(len=*), intent(in) :: name, result
+      integer, intent(out) :: stat
+      integer :: ex, cs, length, st
+      logical :: there
+      character(len=msg_len) :: exe
+      ! the program: ./impact, or $IMPACT_EXE when it is set
+      call get_environment_variable('IMPACT_EXE', exe, length, st)
+      if (st /= 0 .or. length == 0) exe = './impact'
+      call execute_command_line(trim(exe) // ' ' // deck_dir // '/' // trim(name) // '.nml > ' // out_dir // '/' // &
+         trim(name) // '.log 2>&1', exitstat=ex, cmdstat=cs)
+      inquire (file=result, exist=there)
+      stat = 0
+      if (ex /= 0 .or. cs /= 0 .or. .not. there) then
+         stat = 1
+         write (error_unit, '(a)') 'validate: ./impact ' // deck_dir // '/' // trim(name) // '.nml failed; see ' // &
+            out_dir // '/' // trim(name) // '.log'
+      end if
+   end subroutine run_program
+
+   !> Every numeric row of a column file (lines not starting with '#'), the
+   !> first ncol columns: table(ncol, rows).
+   subroutine read_table(path, ncol, table, stat)
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: ncol
+      real(dp), allocatable, intent(out) :: table(:,:)
+      integer, intent(out) :: stat
+      character(len=2048) :: line
+      integer :: u, ios, nrow, r
+      stat = 1
+      allocate (table(ncol, 0))
+      open (newunit=u, file=path, status='old', action='read', iostat=ios)
+      if (ios /= 0) return
+      nrow = 0
+      do
+         read (u, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         if (line(1:1) /= '#' .and. len_trim(line) > 0) nrow = nrow + 1
+      end do
+      deallocate (table)
+      allocate (table(ncol, nrow))
+      rewind (u)
+      r = 0
+      do
+         read (u, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         if (line(1:1) == '#' .or. len_trim(line) == 0) cycle
+         r = r + 1
+         read (line, *, iostat=ios) table(:, r)
+         if (ios /= 0) then
+            close (u)
+            return
+         end if
+      end do
+      close (u)
+      stat = 0
+   end subroutine read_table
+
+   !> Column `col` of every numeric row, at most size(values) of them.
+   subroutine read_rows(path, ncol, values, col, stat)
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: ncol, col
+      real(dp), intent(out) :: values(:)
+      integer, intent(out) :: stat
+      real(dp), allocatable :: t(:,:)
+      integer :: n
+      values = 0.0_dp
+      call read_table(path, ncol, t, stat)
+      if (stat /= 0) return
+      n = min(size(values), size(t, 2))
+      values(:n) = t(col, :n)
+   end subroutine read_rows
+
+   !> The last numeric row of a column file.
+   subroutine read_last_row(path, ncol, values, stat)
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: ncol
+      real(dp), intent(out) :: values(ncol)
+      integer, intent(out) :: stat
+      real(dp), allocatable :: t(:,:)
+      call read_table(path, ncol, t, stat)
+      values = 0.0_dp
+      if (stat == 0 .and. size(t, 2) > 0) values = t(:, size(t, 2))
+      if (size(t, 2) == 0) stat = 1
+   end subroutine read_last_row
+
+   !> The values of `key = value` lines of a summary file.
+   subroutine summary_values(path, keys, values, stat)
+      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: keys(:)
+      real(dp), intent(out) :: values(:)
+      integer, intent(out) :: stat
+      character(len=512) :: line
+      integer :: u, ios, k, eq
+      values = huge(1.0_dp)
+      stat = 1
+      open (newunit=u, file=path, status='old', action='read', iostat=ios)
+      if (ios /= 0) return
+      do
+         read (u, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         if (line(1:1) == '#') cycle
+         eq = index(line, '=')
+         if (eq == 0) cycle
+         do k = 1, size(keys)
+            if (trim(adjustl(line(:eq - 1))) == trim(keys(k))) read (line(eq + 1:), *, iostat=ios) values(k)
+         end do
+      end do
+      close (u)
+      stat = merge(0, 1, all(values /= huge(1.0_dp)))
+   end subroutine summary_values
+
+   ! ============================================================ report
+
+   !> Opens build/validation/<name>.md with its header row.
+   subroutine table_open(name, head)
+      character(len=*), intent(in) :: name
+      character(len=*), intent(in) :: head(:)
+      integer :: c
+      open (newunit=tu, file=out_dir // '/' // name // '.md', status='replace', action='write')
+      call table_row(head)
+      write (tu, '(a)', advance='no') '|'
+      do c = 1, size(head)
+         write (tu, '(a)', advance='no') '---|'
+      end do
+      write (tu, '(a)') ''
+   end subroutine table_open
+
+   subroutine table_row(cells)
+      character(len=*), intent(in) :: cells(:)
+      integer :: c
+      write (tu, '(a)', advance='no') '|'
+      do c = 1, size(cells)
+         write (tu, '(a)', advance='no') ' ' // trim(cells(c)) // ' |'
+      end do
+      write (tu, '(a)') ''
+   end subroutine table_row
+
+   subroutine table_close()
+      close (tu)
+   end subroutine table_close
+
+   !> A row of the summary table: pass when worst <= tol.
+   subroutine record(check, quantity, worst, tol)
+      character(len=*), intent(in) :: check, quantity
+      real(dp), intent(in) :: worst, tol
+      character(len=12) :: verdict
+      if (abs(worst) <= tol) then
+         npass = npass + 1
+         verdict = 'pass'
+      else
+         nfail = nfail + 1
+         verdict = '**FAIL**'
+      end if
+      write (su, '(a)') '| ' // check // ' | ' // quantity // ' | ' // sci(abs(worst)) // ' | ' // sci(tol) // &
+         ' | ' // trim(verdict) // ' |'
+      write (output_unit, '(a)') trim(verdict) // ': ' // check // ': ' // quantity // ': ' // sci(abs(worst)) // &
+         ' (tolerance ' // sci(tol) // ')'
+      flush (output_unit)
+   end subroutine record
+
+   !> docs/VALIDATION.md from the template: '@include NAME@' lines replaced by
+   !> build/validation/NAME.md.
+   subroutine assemble_report()
+      character(len=4096) :: line, inc
+      integer :: ui, uo, uinc, ios, ios2, b
+      open (newunit=ui, file=template, status='old', action='read', iostat=ios)
+      if (ios /= 0) call fail('cannot read ' // template)
+      open (newunit=uo, file=report, status='replace', action='write')
+      lines: do
+         read (ui, '(a)', iostat=ios) line
+         if (ios /= 0) exit lines
+         if (index(line, '@include ') == 1) then
+            b = index(line(10:), '@')
+            open (newunit=uinc, file=out_dir // '/' // line(10:8 + b) // '.md', status='old', action='read', &
+               iostat=ios2)
+            if (ios2 /= 0) then
+               write (uo, '(a)') '(table ' // line(10:8 + b) // ' missing: the check did not run)'
+               cycle lines
+            end if
+            copy: do
+               read (uinc, '(a)', iostat=ios2) inc
+               if (ios2 /= 0) exit copy
+               write (uo, '(a)') trim(inc)
+            end do copy
+            close (uinc)
+         else
+            write (uo, '(a)') trim(line)
+         end if
+      end do lines
+      close (ui)
+      close (uo)
+   end subroutine assemble_report
+
+   ! ============================================================ text
+
+   !> x written with format f, without blanks.
+   function num(x, f) result(s)
+      real(dp), intent(in) :: x
+      character(len=*), intent(in) :: f
+      character(len=:), allocatable :: s
+      character(len=64) :: buf
+      write (buf, f) x
+      s = trim(adjustl(buf))
+   end function num
+
+   !> A relative error, signed, two digits: '-1.2e-05'.
+   function sci(x) result(s)
+      real(dp), intent(in) :: x
+      character(len=:), allocatable :: s
+      character(len=32) :: buf
+      if (x == 0.0_dp) then
+         s = '0'
+         return
+      end if
+      write (buf, '(es9.2e2)') x
+      s = trim(adjustl(buf))
+   end function sci
+
+   !> An integer without blanks.
+   function inum(i) result(s)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: s
+      character(len=16) :: buf
+      write (buf, '(i0)') i
+      s = trim(buf)
+   end function inum
+
+   !> Observed order log(e_prev/e)/log(refinement) ('-' for the first row).
+   function rate(e_prev, e, k, refine) result(s)
+      real(dp), intent(in) :: e_prev, e
+      integer, intent(in) :: k
+      real(dp), intent(in), optional :: refine
+      character(len=:), allocatable :: s
+      real(dp) :: r
+      r = 2.0_dp
+      if (present(refine)) r = 1.0_dp/refine
+      if (k == 1 .or. e == 0.0_dp .or. e_prev == 0.0_dp) then
+         s = '-'
+      else
+         s = num(log(abs(e_prev/e))/log(r), '(f6.2)')
+      end if
+   end function rate
+
+   !> Prints the cpu time of this program since the last call (the ./impact
+   !> runs are other processes) and the wall time.
+   subroutine lap(what)
+      character(len=*), intent(in) :: what
+      real(dp) :: now
+      integer(int64) :: count
+      call cpu_time(now)
+      call system_clock(count)
+      write (output_unit, '(a,f8.1,a,f8.1,a)') 'validate: ' // what // ' done: cpu ', now - cpu_last, &
+         ' s, wall since start ', real(count - wall0, dp)/real(clock_rate, dp), ' s'
+      flush (output_unit)
+      cpu_last = now
+   end subroutine lap
+
+   !> Stops the validation on a set-up error (not a failed check).
+   subroutine fail(message)
+      character(len=*), intent(in) :: message
+      write (error_unit, '(a)') 'validate: error: ' // trim(message)
+      error stop 2
+   end subroutine fail
+
+end program validate
