@@ -161,7 +161,7 @@ def run_id(scene, s):
 
 def deck_text(scene, s, prefix, hdf5_off):
     sc = SCENES[scene]
-    out = "&output prefix = '{}', every = 1{} /".format(prefix, ', hdf5 = .false.' if hdf5_off else '')
+    out = "&output prefix = '{}', every = 1, overwrite = .true.{} /".format(prefix, ', hdf5 = .false.' if hdf5_off else '')
     return '\n'.join([
         '! make bench (bench/run_bench.py): the paper plate, quarter model; every other value the default',
         "&mesh nx = {}, ny = {}, domain = 'quarter' /".format(s['nx'], s['ny']),

@@ -14,7 +14,10 @@
 !> P / sym_factor, as the contact force does.
 !>
 !> Result files are column text: a title line, the deck echo, one line per
-!> column with its unit, then the column names on one '#' line.
+!> column with its unit, then the column names on one '#' line. As for the
+!> impact analysis (output_files, check_output), a run refuses to replace
+!> the result files of an earlier run unless &output overwrite = .true.
+!> (or impact --overwrite): check_result_files, before any work.
 module analysis_support
    use kinds, only: dp, pi, msg_len
    use input_deck, only: deck_t, echo_deck
@@ -23,7 +26,7 @@ module analysis_support
    use mesh, only: nfe
    implicit none
    private
-   public :: assemble_load, open_result_file, gather_element, scatter_add_element, &
+   public :: assemble_load, check_result_files, open_result_file, gather_element, scatter_add_element, &
              centre_deflection
 
 contains
@@ -59,6 +62,30 @@ contains
          errmsg = '&load: kind = '''//trim(deck%load_kind)//''': unknown load'
       end select
    end subroutine assemble_load
+
+   !> Before any work: refuses when <prefix><suffix> exists for one of the
+   !> suffixes, the results of an earlier run, unless deck%overwrite.
+   subroutine check_result_files(deck, suffixes, stat, errmsg)
+      type(deck_t), intent(in) :: deck            !< effective deck (prefix, overwrite)
+      character(len=*), intent(in) :: suffixes(:) !< file names after the prefix
+      integer, intent(out) :: stat                !< 0 when the run may write its results
+      character(len=*), intent(inout) :: errmsg   !< reason on failure
+      logical :: exists
+      integer :: i
+      stat = 0
+      if (deck%overwrite) return
+      files: do i = 1, size(suffixes)
+         inquire (file=trim(deck%prefix)//trim(suffixes(i)), exist=exists)
+         if (exists) then
+            stat = 1
+            errmsg = trim(deck%source)//": &output: prefix = '"//trim(deck%prefix)//"': "// &
+               trim(deck%prefix)//trim(suffixes(i))//' exists, the results of another run: '// &
+               'choose another prefix, or set overwrite = .true. in &output (or run impact --overwrite) '// &
+               'to replace them'
+            return
+         end if
+      end do files
+   end subroutine check_result_files
 
    !> Creates the directory of the path if needed, opens it and writes the
    !> header: title, deck echo, the columns with their units, the names.

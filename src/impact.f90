@@ -6,6 +6,13 @@
 !> Usage:  ./impact < deck.nml      or      ./impact deck.nml
 !>         ./impact --check deck.nml   (or --check < deck.nml): read, echo,
 !>         build and factor, then stop before the time loop (a data check).
+!>         ./impact --overwrite deck.nml: replace the results of an earlier
+!>         run with the same prefix (as &output overwrite = .true.).
+!>
+!> A time step whose iterations do not converge, even after their
+!> fall-backs (fixed_point, bracket_cut, force_update), stops the run with
+!> the step, the time and the residuals named; the history keeps every
+!> step before it (docs/STABILITY.md).
 !>
 !> The program follows the flowchart of the paper's Fig. 3: read the data,
 !> form the laminate, the mesh and the matrices, factor the left-hand matrix
@@ -15,6 +22,7 @@
 !> until the assumed and computed forces agree (eq. 17).
 program impact
    use, intrinsic :: iso_fortran_env, only: input_unit, output_unit, error_unit
+   use, intrinsic :: ieee_exceptions, only: ieee_set_flag, ieee_all
    use kinds, only: dp, msg_len
    use input_deck, only: deck_t, read_deck, read_deck_file, echo_deck
    use contact_law, only: contact_history_t, contact_force, contact_branch, contact_commit
@@ -24,9 +32,12 @@ program impact
       build_model, factor_effective_matrix, plate_solve, bracket_start, bracket_update, &
       unit_force_response, fast_step, predicted_displacements, mass_times, &
       contact_converged, first_force_guess, plate_kinetic_energy, plate_strain_energy, &
-      back_face_strain, impact_deflection
+      back_face_strain, impact_deflection, &
+      bracket_cut, fixed_point_force, contact_report, max_deflection, von_karman_limit
+   use scene_model, only: write_scene_report, theory_warning, bending_deflection
    use output_files, only: history_row_t, run_summary_t, open_history, write_history_row, &
-      summary_record, write_summary
+      summary_record, write_summary, check_output
+   use fixed_point, only: fp_report
    use static_analysis, only: run_static
    use modal_analysis, only: run_modes
    use pressure_analysis, only: run_pressure
@@ -46,12 +57,14 @@ program impact
    type(results_file_t) :: results
    real(dp), allocatable :: mb(:), d_new(:)
    real(dp) :: t, f_assum, f_cont, f_next, alpha, alpha_old, w_plate, w_plate_old, e0, t_cpu0, t_cpu1
-   real(dp) :: contact_work, indentation_energy
+   real(dp) :: contact_work, indentation_energy, w_bend, w_bend_max
    integer :: stat, step, nstep, hist_unit, ic, nl_iter, step_solves
-   logical :: nl_ok, contact_ok, warned, check_only
+   logical :: nl_ok, contact_ok, check_only, theory_short
    character(len=msg_len) :: errmsg, path, arg
    character(len=4*msg_len) :: report
    integer :: iarg
+   logical :: overwrite, step_mixing, step_cut, warned_mixing, warned_contact, warned_w
+   character(len=:), allocatable :: mixing_note
 
    ! =====================================================================
    ! Input data: the namelist deck, from a file named on the command line
@@ -59,16 +72,22 @@ program impact
    ! =====================================================================
    errmsg = ''
    check_only = .false.
+   overwrite = .false.
    iarg = 1
-   if (command_argument_count() >= 1) then
-      call get_command_argument(1, arg)
+   options: do while (iarg <= command_argument_count())
+      call get_command_argument(iarg, arg)
       if (arg == '--check') then
          check_only = .true.
-         iarg = 2
+      else if (arg == '--overwrite') then
+         overwrite = .true.
       else if (arg(1:1) == '-') then
-         call fail('unknown option '//trim(arg)//' (usage: impact [--check] [deck.nml], or the deck on standard input)')
+         call fail('unknown option '//trim(arg)// &
+            ' (usage: impact [--check] [--overwrite] [deck.nml], or the deck on standard input)')
+      else
+         exit options
       end if
-   end if
+      iarg = iarg + 1
+   end do options
    if (command_argument_count() >= iarg) then
       call get_command_argument(iarg, arg)
       call read_deck_file(trim(arg), deck, stat, errmsg)
@@ -76,6 +95,12 @@ program impact
       call read_deck(input_unit, '<stdin>', deck, stat, errmsg)
    end if
    if (stat /= 0) call fail('input: '//errmsg)
+   if (overwrite) deck%overwrite = .true.
+   ! -- the results can be written, and no other run's results are replaced
+   if (deck%analysis_kind == 'impact') then
+      call check_output(deck, stat, errmsg)
+      if (stat /= 0) call fail('input: '//errmsg)
+   end if
    call cpu_time(t_cpu0)
 
    ! =====================================================================
@@ -135,7 +160,8 @@ program impact
    summary%initial_energy = e0
    contact_work = 0.0_dp;  indentation_energy = 0.0_dp
    alpha_old = 0.0_dp;  w_plate_old = 0.0_dp
-   warned = .false.
+   warned_mixing = .false.;  warned_contact = .false.;  warned_w = .false.
+   w_bend_max = 0.0_dp
    nstep = nint(deck%t_end/deck%dt)
 
    call open_history(deck, hist_unit, path, stat, errmsg)
@@ -160,16 +186,19 @@ program impact
       d_new = plate%d
       contact_ok = .false.
       step_solves = model%solves
+      step_mixing = .false.;  step_cut = .false.
 
       if (deck%scheme == 'fast') then
          ! -- scheme 'fast': the contact force solved inside each iteration of
          !    eq. (19), from the scalar equation F = F_law(alpha(F)) (eq. 11-13, 21),
-         !    the iteration starting where a constant acceleration would take the plate
-         d_new = predicted_displacements(deck%dt, plate%d, plate%v, plate%a)
+         !    the iteration starting where the plate's velocity would take it
+         d_new = predicted_displacements(deck%dt, plate%d, plate%v)
          call fast_step(model, mb, plate%d, imp, deck%dt, hist, d_new, f_assum, alpha, &
                         nl_iter, nl_ok, stat, errmsg)
          if (stat /= 0) call fail_in_run('plate solution: '//errmsg)
-         if (.not. nl_ok) summary%unconverged_steps = summary%unconverged_steps + 1
+         if (model%nl_guard%mixing) call note_mixing()
+         if (.not. nl_ok) call fail_to_converge('the nonlinear iteration (eq. 19) with the contact equation: ' &
+            //fp_report(model%nl_guard))
          call impactor_advance(deck%mass, deck%dt, imp%w, imp%v, imp%f, f_assum, imp_new%w, imp_new%v)
          w_plate = impact_deflection(model, d_new)
          f_cont = f_assum
@@ -185,7 +214,18 @@ program impact
          ! -- the plate under the assumed force: eq. (19) iterated to eq. (18)
          call plate_solve(model, mb, f_assum, plate%d, d_new, nl_iter, nl_ok, stat, errmsg)
          if (stat /= 0) call fail_in_run('plate solution: '//errmsg)
-         if (.not. nl_ok) summary%unconverged_steps = summary%unconverged_steps + 1
+         if (model%nl_guard%mixing) call note_mixing()
+         if (.not. nl_ok) then
+            ! -- eq. (19) failed under this force even with its fall-back:
+            !    the force is taken as too high, and the bracket cut below it
+            if (ic == deck%max_contact_iter) call fail_to_converge('the nonlinear iteration (eq. 19) under ' &
+               //'the assumed force '//real_text(f_assum)//' N: '//fp_report(model%nl_guard))
+            call bracket_cut(br, f_assum, f_next)
+            step_cut = .true.
+            d_new = plate%d
+            f_assum = f_next
+            cycle contact_iterations
+         end if
 
          ! -- the impactor under the same force, eq. (21)
          call impactor_advance(deck%mass, deck%dt, imp%w, imp%v, imp%f, f_assum, imp_new%w, imp_new%v)
@@ -200,19 +240,15 @@ program impact
             contact_ok = .true.
             exit contact_iterations
          end if
+         if (ic == deck%max_contact_iter) exit contact_iterations   ! the last pair, for the diagnostic
          call bracket_update(br, f_assum, f_cont, f_next)
+         if (deck%force_update == 'fixed_point') call fixed_point_force(br, f_assum, f_cont, f_next)
          f_assum = f_next
       end do contact_iterations
       ic = min(ic, deck%max_contact_iter)
       end if
-      if (.not. contact_ok) then
-         summary%unconverged_steps = summary%unconverged_steps + 1
-         if (.not. warned) then
-            write (error_unit, '(a,i0,a,es12.5,a,2es12.4)') 'warning: contact iteration did not converge at step ', &
-               step, ', t = ', t, ' s; F_assum, F_cont = ', f_assum, f_cont
-            warned = .true.
-         end if
-      end if
+      if (.not. contact_ok) call fail_to_converge('the contact iteration (eq. 17): ' &
+         //contact_report(br, f_assum, f_cont, deck%cr1, deck%max_contact_iter))
 
       ! -- accept the step: Newmark update, impactor, contact history
       call newmark_update(nm, plate%d, d_new, plate%v, plate%a)
@@ -229,6 +265,9 @@ program impact
       summary%max_contact_iter = max(summary%max_contact_iter, ic)
       summary%max_nonlinear_iter = max(summary%max_nonlinear_iter, model%solves - step_solves)
       summary%steps = step
+      call bending_deflection(model%msh, deck%edges, plate%d, w_bend, stat, errmsg)
+      if (stat /= 0) call fail_in_run(errmsg)
+      w_bend_max = max(w_bend_max, abs(w_bend))
 
       ! -- output
       if (mod(step, deck%every) == 0 .or. step == nstep) then
@@ -257,6 +296,26 @@ program impact
          call results_snapshot(results, step, t, imp%f, plate%d, stat, errmsg)
          if (stat /= 0) call fail_in_run(errmsg)
       end if
+      ! -- warnings: the fall-backs the step needed, deflections beyond von
+      !    Karman's theory (w/h > 5); &analysis stop_on_warning stops the run
+      if (step_mixing) then
+         summary%nonlinear_fallback_steps = summary%nonlinear_fallback_steps + 1
+         if (.not. warned_mixing) call warn(warned_mixing, 'the nonlinear iteration (eq. 19) fell back to ' &
+            //'Anderson mixing and converged (later such steps are counted in the summary, ' &
+            //'nonlinear_fallback_steps): '//mixing_note)
+      end if
+      if (step_cut .or. br%fell_back) then
+         summary%contact_fallback_steps = summary%contact_fallback_steps + 1
+         if (.not. warned_contact) call warn(warned_contact, trim(merge( &
+            'the fixed-point force update stopped contracting; the step went on with the bracketed update', &
+            'a plate solution failed under an assumed force; the force was cut and the step converged    ', &
+            br%fell_back))//' (later such steps are counted in the summary, contact_fallback_steps)')
+      end if
+      summary%max_w_over_h = max(summary%max_w_over_h, max_deflection(model, plate%d)/deck%h)
+      if (summary%max_w_over_h > von_karman_limit .and. .not. warned_w) call warn(warned_w, &
+         'the plate deflection is '//real_text(summary%max_w_over_h)//' times the thickness, beyond the ' &
+         //'moderately large deflections of von Karman''s theory (w/h > '//real_text(von_karman_limit) &
+         //'): the results are outside the model''s validity')
    end do time_steps
 
    ! =====================================================================
@@ -270,8 +329,12 @@ program impact
    write (output_unit, '(a,es12.5,a,f9.2,a,i0,a,es12.5,a,f8.3,a)') 'peak force ', summary%peak_force, &
       ' N at ', summary%time_of_peak*1.0e6_dp, ' us; contacts ', summary%contacts, &
       '; max deflection ', summary%max_deflection*1.0e3_dp, ' mm; cpu ', summary%cpu_s, ' s'
-   if (summary%unconverged_steps > 0) write (error_unit, '(a,i0,a)') 'warning: ', &
-      summary%unconverged_steps, ' iterations did not converge; see the summary'
+   if (summary%warnings > 0) write (error_unit, '(a,i0,a,i0,a,i0,a,f0.2)') 'impact: ', summary%warnings, &
+      ' warning(s) above; steps with a fall-back: nonlinear ', summary%nonlinear_fallback_steps, &
+      ', contact ', summary%contact_fallback_steps, '; largest w/h ', summary%max_w_over_h
+   ! -- did a linear run need the nonlinear theory? (src/scene_model.f90)
+   call theory_warning(model%scene, w_bend_max, theory_short, errmsg)
+   if (theory_short) write (error_unit, '(a)') 'warning: '//trim(errmsg)
 
 contains
 
@@ -279,6 +342,7 @@ contains
    subroutine fail(message)
       character(len=*), intent(in) :: message
       write (error_unit, '(a)') 'impact: error: '//trim(message)
+      flush (error_unit)
       error stop 1
    end subroutine fail
 
@@ -293,8 +357,48 @@ contains
          trim(deck%prefix)//'_history.dat'
       close (hist_unit)
       call finish_summary(where)
+      flush (error_unit)
+      ! the diagnostic above says what went wrong: no run-time note on the IEEE flags
+      call ieee_set_flag(ieee_all, .false.)
       error stop 1
    end subroutine fail_in_run
+
+   !> A step whose iterations did not converge: the run stops here with the
+   !> diagnostic (the step and time follow from fail_in_run).
+   subroutine fail_to_converge(diagnostic)
+      character(len=*), intent(in) :: diagnostic
+      summary%unconverged_steps = summary%unconverged_steps + 1
+      call fail_in_run('time step did not converge: '//diagnostic)
+   end subroutine fail_to_converge
+
+   !> The eq. (19) iteration of this step needed its fall-back: remembered
+   !> for the step's warning.
+   subroutine note_mixing()
+      if (.not. step_mixing) mixing_note = fp_report(model%nl_guard)
+      step_mixing = .true.
+   end subroutine note_mixing
+
+   !> A warning on standard error naming the step and time, given once per
+   !> kind (seen); counted in the summary. With &analysis stop_on_warning
+   !> the run stops here, keeping what it computed.
+   subroutine warn(seen, message)
+      logical, intent(inout) :: seen
+      character(len=*), intent(in) :: message
+      write (error_unit, '(a,i0,a,es11.4,a)') 'impact: warning: step ', step, ' (t = ', t, ' s): '//message
+      flush (error_unit)
+      seen = .true.
+      summary%warnings = summary%warnings + 1
+      if (deck%stop_on_warning) call fail_in_run('stopped at the warning above (&analysis stop_on_warning = .true.)')
+   end subroutine warn
+
+   !> A real in a short form for messages.
+   pure function real_text(x) result(text)
+      real(dp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=24) :: buf
+      write (buf, '(g0.4)') x
+      text = trim(adjustl(buf))
+   end function real_text
 
    subroutine finish_summary(status)
       character(len=*), intent(in) :: status
@@ -326,6 +430,7 @@ contains
          model%lmt%d(3,3), model%lmt%d(1,3)
       write (u, '(a,2es12.4)') 'laminate: Abar44 Abar55 (N/m) ', model%lmt%as(1,1), model%lmt%as(2,2)
       write (u, '(a,3es12.4)') 'laminate: P (kg/m^2), R (kg/m), I (kg) ', model%lmt%p, model%lmt%r, model%lmt%i
+      call write_scene_report(model%scene, u)
    end subroutine echo_run
 
 end program impact

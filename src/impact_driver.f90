@@ -5,12 +5,15 @@
 !> The main program (src/impact.f90) reads like the flowchart and calls the
 !> procedures below, one per box.
 !>
-!> Units: SI throughout; the plate model may be a quarter of the plate, in
-!> which case it carries a quarter of the contact force and its energies are
-!> multiplied by 4 to stand for the whole plate (mesh%sym_factor).
+!> Units: SI throughout; the plate model may be a quarter or a half of the
+!> plate (src/scene_model.f90 chooses), in which case it carries that share of
+!> the contact force and its energies are multiplied by 4 or 2 to stand for
+!> the whole plate (mesh%sym_factor).
 module impact_driver
    use kinds, only: dp, msg_len
-   use materials, only: lamina_t, laminate_t, laminate_from_layup, laminate_drop_bend_twist
+   use materials, only: laminate_t, laminate_drop_bend_twist
+   use scene_model, only: scene_t, model_laminate, choose_domain, point_stiffness, energy_balance, &
+      choose_theory, impact_element_size
    use mesh, only: mesh_t, build_mesh, apply_boundary, describe_equation, nfe, ndof_node
    use element_matrices, only: element_geometry_t, element_geometry, element_mass, &
       element_stiffness, element_nonlinear_force, element_strain_energy, &
@@ -20,6 +23,7 @@ module impact_driver
    use contact_law, only: contact_law_t, contact_history_t, contact_force, solve_contact_equation
    use newmark, only: newmark_t, impactor_advance
    use input_deck, only: deck_t
+   use fixed_point, only: fp_guard_t, fp_start, fp_check, fp_next, fp_converged, fp_iterating
    implicit none
    private
    public :: model_t, plate_state_t, impactor_state_t, force_bracket_t, &
@@ -27,12 +31,14 @@ module impact_driver
              predicted_displacements, &
              nonlinear_force, mass_times, bracket_start, bracket_update, contact_converged, &
              first_force_guess, plate_kinetic_energy, plate_strain_energy, &
-             back_face_strain, impact_deflection
+             back_face_strain, impact_deflection, &
+             bracket_cut, fixed_point_force, contact_report, max_deflection, von_karman_limit
 
    !> Everything about the plate that does not change during a run.
    type :: model_t
       type(mesh_t) :: msh                      !< mesh and freedoms
-      type(laminate_t) :: lmt                  !< laminate used (D16 = D26 = 0 on a quarter)
+      type(laminate_t) :: lmt                  !< laminate used (D16 = D26 = 0 when averaged, scene%averaged)
+      type(scene_t) :: scene                   !< the scene's choices and report (src/scene_model.f90)
       type(element_geometry_t), allocatable :: geo(:)  !< per-element geometry
       !> S_ij = int phi_i phi_j dA of each element (m^2), (nen, nen, nelem):
       !> M x element by element (mass_times)
@@ -53,6 +59,7 @@ module impact_driver
       real(dp) :: shear_eps = 0.0_dp           !< fraction of 3x3 shear (0: the paper's 2x2 rule)
       real(dp), allocatable :: g_unit(:)       !< (K_L + 4/dt^2 M)^-1 applied to a unit contact force (m/N)
       integer :: solves = 0                    !< back substitutions so far
+      type(fp_guard_t) :: nl_guard             !< guard of the last eq. (19) iteration (module fixed_point)
       integer :: factorizations = 0            !< factorizations so far
    end type model_t
 
@@ -76,7 +83,18 @@ module impact_driver
       real(dp) :: r_lo = 0.0_dp, r_hi = 0.0_dp    !< residuals at the ends
       logical :: has_lo = .false., has_hi = .false.  !< residual known at that end
       integer :: last_side = 0                    !< end moved last (-1 lo, +1 hi), for Illinois
+      logical :: blind_hi = .false.      !< hi is a force whose plate solution failed: no residual there
+      real(dp) :: r_prev = huge(1.0_dp)  !< |r| of the previous iteration (N), force_update = 'fixed_point'
+      logical :: fell_back = .false.     !< 'fixed_point' stopped contracting: bracketed from then on
    end type force_bracket_t
+
+   !> Deflection over thickness beyond which von Karman's theory of moderately
+   !> large deflections is no longer trusted (a warning, not an error).
+   real(dp), parameter :: von_karman_limit = 5.0_dp
+   !> Largest factor by which force_update = 'fixed_point' may shrink the
+   !> contact residual per iteration before it falls back (0.5: C_r1 = 0.2 %
+   !> from a residual of the order of the force within about 9 iterations).
+   real(dp), parameter :: max_contraction = 0.5_dp
 
 contains
 
@@ -89,19 +107,19 @@ contains
       type(model_t), intent(out) :: model       !< the model
       integer, intent(out) :: stat              !< 0 on success
       character(len=*), intent(inout) :: errmsg !< reason on failure
-      type(lamina_t) :: lam
       real(dp) :: ke(nfe, nfe), me(nfe, nfe)
       integer :: e
       logical :: ok
 
-      ! -- material: lamina (Table 3) and laminate (eq. 6, 9)
-      lam = lamina_t(deck%e1, deck%e2, deck%g12, deck%g13, deck%g23, deck%nu12, deck%rho)
-      model%lmt = laminate_from_layup(lam, deck%angles, deck%h, deck%k4, deck%k5)
-      ! -- D16 = D26 = 0 on a quarter or strip (section 3.1), or when the deck asks
-      if (deck%bend_twist == 'drop' .or. (deck%bend_twist == 'auto' .and. deck%domain /= 'full')) &
-         model%lmt = laminate_drop_bend_twist(model%lmt)
+      ! -- material: lamina (Table 3), laminate (eq. 6, 9) with the deck's or
+      !    Whitney's shear correction; the domain the scene allows; D16 = D26
+      !    = 0 on a reduced domain (the paper's averaging, section 3.1) or when
+      !    the deck drops them (&laminate bend_twist = 'drop')
+      call model_laminate(deck, model%lmt, model%scene)
+      call choose_domain(deck, model%scene, stat, errmsg)
+      if (stat /= 0) return
+      if (model%scene%averaged) model%lmt = laminate_drop_bend_twist(model%lmt)
       model%law = contact_law_t(deck%k, deck%q, deck%alpha_p, deck%beta)
-      model%nonlinear = deck%theory == 'nonlinear'
       model%impactor_mass = deck%mass
       model%z_back = 0.5_dp*deck%h
       model%cr2 = deck%cr2
@@ -117,7 +135,8 @@ contains
       if (model%shear_rule == 'stabilized') model%shear_eps = deck%stabilization
 
       ! -- mesh, boundary conditions, equation numbers (Fig. 4)
-      call build_mesh(deck%a, deck%b, deck%nx, deck%ny, deck%domain, model%msh, stat, errmsg)
+      call build_mesh(deck%a, deck%b, deck%nx, deck%ny, model%scene%domain, model%msh, stat, errmsg, &
+                      x0=deck%x0, y0=deck%y0, grading=deck%grading, quarter_counts=deck%domain == 'auto')
       if (stat /= 0) return
       call apply_boundary(model%msh, deck%edges, deck%inplane, stat, errmsg)
       if (stat /= 0) return
@@ -152,6 +171,19 @@ contains
          call global_assemble(model%mass, me, model%msh%elem_eq(:, e))
          call global_assemble(model%stiff, ke, model%msh%elem_eq(:, e))
       end do elements
+
+      ! -- the scene's static estimate, and the theory it calls for
+      !    (src/scene_model.f90)
+      call point_stiffness(model%msh, model%lmt, model%geo, model%shear_eps, model%force_share, deck%edges, &
+                           deck%storage, model%scene, stat, errmsg)
+      if (stat /= 0) return
+      call energy_balance(model%scene%energy, model%scene%stiffness, deck%k, model%scene%force, &
+                          model%scene%deflection, model%scene%indentation)
+      model%scene%contact_radius = sqrt(0.5_dp*deck%diameter*model%scene%indentation)   ! Hertz
+      model%scene%element_size = impact_element_size(model%msh)
+      call choose_theory(deck%theory, model%scene%deflection/deck%h, model%scene%theory, &
+                         model%scene%theory_reason)
+      model%nonlinear = model%scene%theory == 'nonlinear'
    end subroutine build_model
 
    !> The left-hand matrix of eq. (19), K_L + 4/dt^2 M, formed and factored
@@ -229,7 +261,9 @@ contains
    !> carries is applied at the impact point): Akay's iteration of eq. (19),
    !>   (K_L + 4/dt^2 M) D^{n+1} = F + M b - K_N(D^n) D^n,
    !> until eq. (18): sum (D^{n+1} - D^n)^2 / sum (D^{n+1} - D_t)^2 < C_r2.
-   !> d holds the first iterate on entry and the solution on exit.
+   !> d holds the first iterate on entry and the solution on exit. The
+   !> iteration is guarded (module fixed_point): divergence or stagnation
+   !> switches to Anderson mixing; model%nl_guard tells how it ended.
    subroutine plate_solve(model, mb, f, d_t, d, iterations, converged, stat, errmsg)
       type(model_t), intent(inout) :: model     !< model (counts solves)
       real(dp), intent(in) :: mb(:)             !< M {b} of eq. (19)-(20)
@@ -240,11 +274,12 @@ contains
       logical, intent(out) :: converged         !< eq. (18) met
       integer, intent(out) :: stat              !< 0 unless the solver failed
       character(len=*), intent(inout) :: errmsg !< reason on failure
-      real(dp) :: rhs(size(d)), fn(size(d)), num, den
+      real(dp) :: rhs(size(d)), fn(size(d))
 
       converged = .false.
       iterations = 0
-      nonlinear_iterations: do while (iterations < model%max_nonlinear_iter)
+      call fp_start(model%nl_guard, size(d), model%max_nonlinear_iter, model%cr2)
+      nonlinear_iterations: do
          iterations = iterations + 1
          call nonlinear_force(model, d, fn)
          rhs = mb - fn
@@ -257,30 +292,35 @@ contains
             converged = .true.
             exit nonlinear_iterations
          end if
-         num = sum((rhs - d)**2)
-         den = sum((rhs - d_t)**2)
-         d = rhs
-         if (num <= model%cr2*den .or. num == 0.0_dp) then   ! eq. (18)
-            converged = .true.
+         ! -- eq. (18), and the guard against divergence and stagnation
+         call fp_check(model%nl_guard, d, rhs, d_t)
+         converged = model%nl_guard%state == fp_converged
+         if (converged) d = rhs
+         if (model%nl_guard%state /= fp_iterating) then
+            if (.not. converged) d = model%nl_guard%d_best   ! the least wrong iterate, finite
             exit nonlinear_iterations
          end if
+         call fp_next(model%nl_guard, d, rhs, stat, errmsg)
+         if (stat /= 0) return
       end do nonlinear_iterations
    end subroutine plate_solve
 
    !> First iterate of a step of scheme = 'fast': the displacements at t+dt
-   !> if the acceleration stayed A_t, D_t + dt V_t + dt^2/2 A_t (Newmark's
-   !> rule, eq. 20, with A_{t+dt} = A_t). Starting nearer the solution than
-   !> D_t, the iteration's stopping test (eq. 18) leaves a smaller error for
-   !> the same number of solves (docs/PERFORMANCE.md: peak force of the 6x9
-   !> clamped scene within 0.01 % of the cr2 -> 0 answer, against 0.13 %
-   !> from D_t).
-   pure function predicted_displacements(dt, d, v, a) result(d_pred)
+   !> if the plate kept its velocity, D_t + dt V_t. Starting nearer the
+   !> solution than D_t, the iteration's stopping test (eq. 18) leaves a
+   !> smaller error, with fewer solves (docs/PERFORMANCE.md: 6x9 clamped
+   !> scene, first 1 ms: peak force within 0.005 % of the cr2 -> 0 answer
+   !> with 816 solves, against 0.14 % and 1043 solves from D_t). The
+   !> acceleration term of Newmark's predictor, dt^2/2 A_t, is left out: it
+   !> extrapolates the accelerations of the modes the step does not resolve
+   !> (omega dt >> 1 on fine meshes) and needs more iterations (12x18: 2171
+   !> solves against 813).
+   pure function predicted_displacements(dt, d, v) result(d_pred)
       real(dp), intent(in) :: dt       !< time step (s)
-      real(dp), intent(in) :: d(:)     !< displacements at t
-      real(dp), intent(in) :: v(:)     !< velocities at t
-      real(dp), intent(in) :: a(:)     !< accelerations at t
+      real(dp), intent(in) :: d(:)     !< displacements at t (m, rad)
+      real(dp), intent(in) :: v(:)     !< velocities at t (m/s, rad/s)
       real(dp) :: d_pred(size(d))
-      d_pred = d + dt*v + (0.5_dp*dt**2)*a
+      d_pred = d + dt*v
    end function predicted_displacements
 
    !> One time step of scheme = 'fast': the contact force is solved inside
@@ -307,7 +347,7 @@ contains
       logical, intent(out) :: converged            !< eq. (18) met
       integer, intent(out) :: stat                 !< 0 unless the solver failed
       character(len=*), intent(inout) :: errmsg   !< reason on failure
-      real(dp) :: rhs(size(d)), fn(size(d)), num, den, w_r0, compliance
+      real(dp) :: rhs(size(d)), fn(size(d)), w_r0, compliance
 
       ! impactor position at t+dt if the new force were zero, and how it moves with F
       w_r0 = imp%w + imp%v*dt - imp%f*dt**2/(4.0_dp*model%impactor_mass)
@@ -315,7 +355,8 @@ contains
       converged = .false.
       iterations = 0
       f = 0.0_dp;  alpha = 0.0_dp
-      nonlinear_iterations: do while (iterations < model%max_nonlinear_iter)
+      call fp_start(model%nl_guard, size(d), model%max_nonlinear_iter, model%cr2)
+      nonlinear_iterations: do
          iterations = iterations + 1
          call nonlinear_force(model, d, fn)
          rhs = mb - fn
@@ -329,13 +370,16 @@ contains
             converged = .true.
             exit nonlinear_iterations
          end if
-         num = sum((rhs - d)**2)
-         den = sum((rhs - d_t)**2)
-         d = rhs
-         if (num <= model%cr2*den .or. num == 0.0_dp) then   ! eq. (18)
-            converged = .true.
+         ! -- eq. (18), and the guard against divergence and stagnation
+         call fp_check(model%nl_guard, d, rhs, d_t)
+         converged = model%nl_guard%state == fp_converged
+         if (converged) d = rhs
+         if (model%nl_guard%state /= fp_iterating) then
+            if (.not. converged) d = model%nl_guard%d_best   ! the least wrong iterate, finite
             exit nonlinear_iterations
          end if
+         call fp_next(model%nl_guard, d, rhs, stat, errmsg)
+         if (stat /= 0) return
       end do nonlinear_iterations
    end subroutine fast_step
 
@@ -384,7 +428,8 @@ contains
          br%lo = f_assumed;  br%r_lo = r;  br%has_lo = .true.;  br%last_side = -1
       end if
 
-      if (br%has_lo .and. br%has_hi) then
+      if (r > 0.0_dp) br%blind_hi = .false.
+      if (br%has_lo .and. br%has_hi .and. .not. br%blind_hi) then
          f_next = br%lo - br%r_lo*(br%hi - br%lo)/(br%r_hi - br%r_lo)
       else
          f_next = f_contact
@@ -399,6 +444,66 @@ contains
          end if
       end if
    end subroutine bracket_update
+
+   !> The plate solution under f_assumed failed (eq. 19 did not converge,
+   !> even with its fall-back): the force is taken as too high (a harder
+   !> push deflects the plate more, and large deflections are what break
+   !> eq. 19); it becomes the upper end of the bracket, without a residual,
+   !> and the next assumed force is the middle of the bracket.
+   pure subroutine bracket_cut(br, f_assumed, f_next)
+      type(force_bracket_t), intent(inout) :: br  !< bracket, updated
+      real(dp), intent(in) :: f_assumed           !< force whose plate solution failed (N)
+      real(dp), intent(out) :: f_next             !< next assumed force (N)
+      br%hi = f_assumed;  br%has_hi = .true.;  br%blind_hi = .true.;  br%last_side = 1
+      f_next = 0.5_dp*(br%lo + br%hi)
+   end subroutine bracket_cut
+
+   !> force_update = 'fixed_point': the plain update F_next = F_cont, which
+   !> the paper may have used (it does not say). Its residual
+   !> r = F_assum - F_cont is multiplied in each iteration by about
+   !> -dF_cont/dF = k_c (dt^2/4m + g), k_c the law's tangent stiffness and g
+   !> the plate's compliance over a step at the impact point: it diverges
+   !> when that exceeds 1 (long steps, stiff contact, heavy impactor) and
+   !> crawls near 1. The first time |r| falls by less than max_contraction,
+   !> the step falls back to the bracketed update (bracket_update runs
+   !> before this in every iteration, so its bracket is ready) and
+   !> br%fell_back says so.
+   pure subroutine fixed_point_force(br, f_assumed, f_contact, f_next)
+      type(force_bracket_t), intent(inout) :: br  !< bracket; fell_back set when the update stops contracting
+      real(dp), intent(in) :: f_assumed           !< force the plate was solved with (N)
+      real(dp), intent(in) :: f_contact           !< force of the law at the resulting indentation (N)
+      real(dp), intent(inout) :: f_next           !< the bracketed update in, the plain one out (N)
+      real(dp) :: r
+      r = abs(f_assumed - f_contact)
+      if (.not. br%fell_back) then
+         if (r > max_contraction*br%r_prev) then
+            br%fell_back = .true.
+         else
+            f_next = f_contact
+         end if
+      end if
+      br%r_prev = r
+   end subroutine fixed_point_force
+
+   !> The diagnostic of a contact iteration that did not converge: the last
+   !> forces, their eq. (17) residual against C_r1, and the bracket.
+   function contact_report(br, f_assumed, f_contact, cr1, iterations) result(text)
+      type(force_bracket_t), intent(in) :: br     !< bracket at the end
+      real(dp), intent(in) :: f_assumed           !< last assumed force (N)
+      real(dp), intent(in) :: f_contact           !< the law's force at its indentation (N)
+      real(dp), intent(in) :: cr1                 !< tolerance C_r1 of eq. (17)
+      integer, intent(in) :: iterations           !< iterations made
+      character(len=:), allocatable :: text
+      character(len=320) :: buf
+      real(dp), parameter :: collapsed = 8.0_dp*epsilon(1.0_dp)   ! relative width of a bracket at rounding
+      write (buf, '(a,i0,a,es12.5,a,es12.5,a,es10.3,a,es10.3,a,es12.5,a,es12.5,a)') 'no convergence in ', &
+         iterations, ' iterations (max_contact_iter); F_assum = ', f_assumed, ' N, F_cont = ', f_contact, &
+         ' N, |F_assum - F_cont| / F_assum = ', abs(f_assumed - f_contact)/max(abs(f_assumed), tiny(1.0_dp)), &
+         ' against C_r1 = ', cr1, '; the root lies in [', br%lo, ', ', min(br%hi, huge(1.0_dp)), '] N'
+      text = trim(buf)
+      if (br%has_lo .and. br%has_hi .and. br%hi - br%lo <= collapsed*br%hi) text = text // &
+         ': the bracket has shrunk to a point where F_cont jumps (the plate response is discontinuous there)'
+   end function contact_report
 
    !> Convergence of the contact iteration, eq. (17):
    !> |F_assum - F_cont| / F_assum < C_r1 (both zero: no contact, converged).
@@ -422,6 +527,18 @@ contains
       real(dp) :: w
       w = d(model%eq_impact)
    end function impact_deflection
+
+   !> Largest plate deflection |w| over the nodes (m).
+   pure function max_deflection(model, d) result(w_max)
+      type(model_t), intent(in) :: model   !< model
+      real(dp), intent(in) :: d(:)         !< global displacements
+      real(dp) :: w_max
+      integer :: n
+      w_max = 0.0_dp
+      nodes: do n = 1, model%msh%nnode
+         if (model%msh%eq(3, n) > 0) w_max = max(w_max, abs(d(model%msh%eq(3, n))))
+      end do nodes
+   end function max_deflection
 
    !> Kinetic energy of the whole plate, 1/2 V^T M V (J).
    function plate_kinetic_energy(model, v) result(ek)

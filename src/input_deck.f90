@@ -18,31 +18,46 @@
 !>                rho                 kg/m^3     1580             density
 !>     &laminate  angles(:)           deg        [0/45/0/-45/0]2s ply angles from x, bottom (z = -h/2)
 !>                                                                to top; all plies equally thick, h/n
-!>                k4, k5              -          0.864, 0.879     shear correction factors (Table 1)
-!>                bend_twist          -          'auto'           D16, D26: 'auto' (dropped on a quarter or
-!>                                                                strip, section 3.1; kept on the full plate)
-!>                                                                | 'drop' | 'keep' (full plate only)
+!>                k4, k5              -          (Whitney)        shear correction factors (Table 1); not
+!>                                                                given: computed from the layup by
+!>                                                                Whitney's method (src/shear_correction.f90)
+!>                bend_twist          -          'auto'           D16, D26: 'auto' (dropped on a quarter, half
+!>                                                                or strip, section 3.1; kept on the full
+!>                                                                plate) | 'drop' (everywhere; lets domain
+!>                                                                'auto' pick a quarter) | 'keep' (full plate
+!>                                                                or domain 'auto' only)
 !>     &impactor  mass                kg         0.243            impactor mass
 !>                velocity            m/s        3.0              initial velocity, towards the plate
 !>                diameter            m          0.0127           diameter of the hemispherical nose
+!>                x0, y0              m          0, 0             impact point from the plate centre
 !>     &contact   k                   N/m^1.5    1.413e9          contact stiffness, F = k alpha^1.5
 !>                q                   -          2.5              unloading exponent
 !>                alpha_p             m          1.667e-5         indentation beyond which it is permanent
 !>                beta                -          0.094            alpha0 = beta (alpha_m - alpha_p)
-!>     &mesh      nx, ny              -          9, 6             9-node elements along x, y of the domain
-!>                domain              -          'quarter'        'quarter' (symmetric layup) | 'full' |
+!>     &mesh      nx, ny              -          9, 6             9-node elements from the impact point to
+!>                                                                an edge along x, y for a centred impact
+!>                                                                (the quarter's counts; src/mesh.f90)
+!>                domain              -          'auto'           'auto' (the smallest the scene allows,
+!>                                                                src/scene_model.f90) | 'quarter' | 'half'
+!>                                                                | 'full' |
 !>                                                                'strip' (quarter of a plate infinitely
 !>                                                                long in y: y = b/2 a symmetry line too)
 !>                shear_rule          -          'auto'           transverse shear integration: 'selective'
 !>                                                                (2x2, the paper's) | 'stabilized' | 'auto'
 !>                                                                (selective unless the edges are free)
 !>                stabilization       -          0.01             fraction eps of 3x3 shear when stabilized
+!>                average_bend_twist  -          .false.          .true.: the paper's averaging (section 3.1)
+!>                                                                is accepted, D16 = D26 = 0 on a quarter or
+!>                                                                half domain chosen by 'auto'
+!>                grading             -          1                ratio of successive element sizes away
+!>                                                                from the impact point (1 = uniform, <= 3)
 !>     &boundary  edges               -          'clamped'        'free' | 'simply_supported' | 'clamped'
 !>                inplane             -          'immovable'      in-plane condition of simply supported
 !>                                                                edges: 'immovable' | 'movable'
 !>     &analysis  kind                -          'impact'         'impact' | 'static' | 'modes' | 'pressure'
 !>                                                                (transient, suddenly applied &load)
-!>                theory              -          'nonlinear'      'linear' | 'nonlinear' (von Karman)
+!>                theory              -          'nonlinear'      'linear' | 'nonlinear' (von Karman) | 'auto'
+!>                                                                (from the scene's deflection estimate)
 !>                dt                  s          2.5e-6           time step
 !>                t_end               s          3.0e-3           end time
 !>                cr1                 -          2.0e-3           contact force tolerance, eq. (17)
@@ -51,6 +66,12 @@
 !>                storage             -          'band'           'band' (LAPACK band Cholesky) | 'skyline'
 !>                max_contact_iter    -          50               contact iterations per step, at most
 !>                max_nonlinear_iter  -          200              nonlinear iterations per contact iteration
+!>                force_update        -          'bracketed'      update of the assumed contact force (scheme
+!>                                                                'paper'): 'bracketed' (regula falsi) |
+!>                                                                'fixed_point' (F = F_cont; falls back to
+!>                                                                'bracketed' when it stops contracting)
+!>                stop_on_warning     -          .false.          stop the run at the first warning (w/h > 5,
+!>                                                                a fall-back of an iteration)
 !>     &load      kind                -          'uniform'        load of kind = 'static' | 'pressure':
 !>                                                                'uniform' | 'sinusoidal' (q0 cos(pi x/a)
 !>                                                                cos(pi y/b), x, y from the centre) |
@@ -59,8 +80,12 @@
 !>                increments          -          10               equal load increments of a nonlinear
 !>                                                                static analysis (Newton in each)
 !>     &modes     count               -          6                natural modes computed (kind = 'modes')
+!>                shapes              -          .true.           also the mode shapes (memory 8 n^2 bytes
+!>                                                                for n equations); .false.: frequencies only
 !>     &output    prefix              -          'out/impact'     output file prefix (path without suffix)
 !>                every               -          1                write every N-th time step to the history
+!>                overwrite           -          .false.          replace the results of an earlier run with
+!>                                                                the same prefix (else the run is refused)
 !>                hdf5                -          .true.           also write <prefix>.h5 (src/results_hdf5.f90)
 !>                fields_every        -          40               field snapshots in <prefix>.h5 every N-th step
 !>
@@ -70,8 +95,12 @@
 !>
 !> Checked after reading (validate_deck), the first failure ends the read:
 !> a, b, h, the moduli, rho, mass, velocity, diameter, k, q, dt, t_end > 0 and
-!> finite; h < min(a, b); nu12 > 0 and nu12**2 < e1/e2; k4, k5 in (0, 1.2];
-!> alpha_p >= 0; beta in [0, 1); cr1, cr2 in (0, 1); dt < t_end; nx, ny,
+!> finite; h < min(a, b); nu12 > 0 and nu12**2 < e1/e2; k4, k5 in (0, 1.2]
+!> or not given; the nose on the plate, |x0| <= a/2 - diameter/2 and
+!> |y0| <= b/2 - diameter/2; a 'quarter' or 'strip' domain needs
+!> x0 = y0 = 0 and a 'half' x0 = 0 or y0 = 0; grading in [1, 3];
+!> alpha_p >= 0; beta in [0, 1); cr1, cr2 in (0, 1), cr1 >= 100 eps; dt < t_end,
+!> t_end/dt steps at most huge(1); nx, ny,
 !> max_contact_iter, max_nonlinear_iter, every, fields_every >= 1; at least one ply, every
 !> angle finite; the keywords in their sets; prefix not empty; magnitude > 0
 !> and finite; increments, count >= 1; kind = 'modes' needs storage = 'band'
@@ -90,6 +119,9 @@
 !>     &analysis theory = 'nonlinear', dt = 2.5e-6, t_end = 3.0e-3 /
 !>     &output   prefix = 'out/clamped' /
 !>
+!> A variable given without a value (`mass = ,` or `angles = /`), which the
+!> namelist read would pass over silently, keeping the default, is an error.
+!>
 !> How it is read: the deck is copied line by line to a scratch file (standard
 !> input cannot be rewound), its text is scanned for the group starts `&name`
 !> (unknown, repeated or unclosed groups are rejected), then each group present
@@ -103,13 +135,17 @@ module input_deck
    use kinds, only: dp, msg_len
    implicit none
    private
-   public :: deck_t, max_plies, name_len, path_len, paper_angles
+   public :: deck_t, max_plies, name_len, path_len, paper_angles, k_not_given
    public :: read_deck, read_deck_file, validate_deck, echo_deck, to_lower
 
    !> Size of the namelist buffer for the ply angles: the most plies a deck can give.
    integer, parameter :: max_plies = 1000
    !> Length of keyword values (domain, edges, ...) and of paths (source, prefix).
    integer, parameter :: name_len = 32, path_len = 256
+
+   !> Value of &laminate k4, k5 that means "not given": the factors are then
+   !> computed from the layup by Whitney's method (never 0, never a valid factor).
+   real(dp), parameter :: k_not_given = -huge(1.0_dp)
 
    !> The layup of the paper, [0/45/0/-45/0]2s, bottom to top (deg): the default angles.
    real(dp), parameter :: paper_angles(20) = [ &
@@ -128,15 +164,20 @@ module input_deck
       real(dp) :: nu12 = 0.30_dp, rho = 1580.0_dp
       ! &laminate angles, k4, k5 /  ply angles in degrees from x, bottom (z=-h/2) to top; shear correction (Table 1)
       real(dp), allocatable :: angles(:)          ! default: [0/45/0/-45/0]_2s, 20 plies
-      real(dp) :: k4 = 0.864_dp, k5 = 0.879_dp
+      real(dp) :: k4 = k_not_given, k5 = k_not_given   ! not given: Whitney's method (src/shear_correction.f90)
       character(len=name_len) :: bend_twist = 'auto'     ! D16, D26: 'auto' | 'drop' | 'keep'
       ! &impactor mass, velocity, diameter /  (kg, m/s, m)
       real(dp) :: mass = 0.243_dp, velocity = 3.0_dp, diameter = 0.0127_dp
+      real(dp) :: x0 = 0.0_dp, y0 = 0.0_dp               ! impact point from the plate centre (m)
       ! &contact k, q, alpha_p, beta /  (N/m^1.5, -, m, -)  paper Table 2 in SI
       real(dp) :: k = 1.413e9_dp, q = 2.5_dp, alpha_p = 1.667e-5_dp, beta = 0.094_dp
-      ! &mesh nx, ny, domain /  elements along x and y of the modelled domain; 'quarter' or 'full'
+      ! &mesh nx, ny, domain, shear_rule, stabilization, average_bend_twist, grading /
+      !    elements along x and y of the domain (the quarter's with 'auto'); domain and how the code
+      !    chooses it; D16 = D26 = 0 accepted; ratio of successive element sizes
       integer :: nx = 9, ny = 6
-      character(len=name_len) :: domain = 'quarter'
+      character(len=name_len) :: domain = 'auto'         ! 'auto' | 'quarter' | 'half' | 'full' | 'strip'
+      logical :: average_bend_twist = .false.            ! accept D16 = D26 = 0 (section 3.1) for 'auto'
+      real(dp) :: grading = 1.0_dp                       ! ratio of successive element sizes (1: uniform)
       character(len=name_len) :: shear_rule = 'auto'     ! 'auto' | 'selective' | 'stabilized'
       real(dp) :: stabilization = 0.01_dp                ! fraction of 3x3 shear when stabilized
       ! &boundary edges, inplane /  'free' | 'simply_supported' | 'clamped';
@@ -144,22 +185,29 @@ module input_deck
       character(len=name_len) :: edges = 'clamped', inplane = 'immovable'
       ! &analysis kind, theory, dt, t_end, cr1, cr2, scheme, storage, max_contact_iter, max_nonlinear_iter /
       character(len=name_len) :: analysis_kind = 'impact'  ! 'impact' | 'static' | 'modes' | 'pressure'
-      character(len=name_len) :: theory = 'nonlinear'   ! 'linear' | 'nonlinear'
+      character(len=name_len) :: theory = 'nonlinear'   ! 'linear' | 'nonlinear' | 'auto'
       real(dp) :: dt = 2.5e-6_dp, t_end = 3.0e-3_dp     ! s
       real(dp) :: cr1 = 2.0e-3_dp, cr2 = 1.0e-7_dp      ! eq. (17), (18) tolerances (0.2 %, 1e-7)
       character(len=name_len) :: scheme = 'paper'        ! contact/nonlinear iteration scheme: 'paper' | 'fast'
       character(len=name_len) :: storage = 'band'        ! 'band' (LAPACK band Cholesky) | 'skyline' (own LDL^T)
       integer :: max_contact_iter = 50, max_nonlinear_iter = 200
+      ! &analysis force_update, stop_on_warning /  'bracketed' | 'fixed_point' (the paper's plain
+      !    update, guarded); stop at the first warning (w/h > 5, a fall-back) instead of going on
+      character(len=name_len) :: force_update = 'bracketed'
+      logical :: stop_on_warning = .false.
       ! &load kind, magnitude, increments /  load of the static and pressure analyses:
       !    'uniform' | 'sinusoidal' | 'central_force'; q0 (Pa) or force (N); Newton load increments
       character(len=name_len) :: load_kind = 'uniform'
       real(dp) :: load_magnitude = 1000.0_dp
       integer :: load_increments = 10
-      ! &modes count /  natural modes computed by the modal analysis
+      ! &modes count, shapes /  natural modes computed by the modal analysis; with their shapes
       integer :: mode_count = 6
+      logical :: mode_shapes = .true.
       ! &output prefix, every /  output file prefix (path without suffix); write every N-th step
       character(len=path_len) :: prefix = 'out/impact'
       integer :: every = 1
+      ! &output overwrite /  replace an earlier run's <prefix>_history.dat, _summary.dat (else refused)
+      logical :: overwrite = .false.
       ! &output hdf5, fields_every /  write <prefix>.h5; nodal field snapshots in it every N-th step
       logical :: hdf5 = .true.
       integer :: fields_every = 40
@@ -173,6 +221,8 @@ module input_deck
 
    !> Marks the entries of the angles buffer that the deck did not set.
    real(dp), parameter :: no_ply = -huge(1.0_dp)
+   !> Upper bound of the ratio of successive element sizes, &mesh grading.
+   real(dp), parameter :: max_grading = 3.0_dp
    !> Upper bound of the shear correction factors k4, k5.
    real(dp), parameter :: max_shear_correction = 1.2_dp
    !> Characters read per chunk when a deck line is copied.
@@ -183,6 +233,8 @@ module input_deck
    integer, parameter :: angles_per_line = 10
    !> Width of the group column of the echo ('&laminate  ').
    integer, parameter :: group_column = 11
+   !> Smallest contact-force tolerance C_r1: 100 eps, the rounding of the force.
+   real(dp), parameter :: min_cr1 = 100.0_dp * epsilon(1.0_dp)
    !> Status returned on any failure.
    integer, parameter :: failed = 1
 
@@ -244,6 +296,7 @@ contains
             errmsg = trim(deck%source) // ': namelist &' // groups(ig)%name &
                // ": no closing '/' (the group runs into the next group or the end of the file)"
          else
+            call missing_value(deck%source, groups(ig)%name, groups(ig)%body, stat, errmsg)
             do jg = 1, ig - 1
                if (groups(jg)%name == groups(ig)%name) then
                   stat = failed
@@ -379,13 +432,21 @@ contains
                real_str(deck%angles(i)), 'must be finite')
          end do
       end if
-      call in_range('laminate', 'k4', deck%k4, 0.0_dp, max_shear_correction, '(0, 1.2]')
-      call in_range('laminate', 'k5', deck%k5, 0.0_dp, max_shear_correction, '(0, 1.2]')
+      if (deck%k4 /= k_not_given) call in_range('laminate', 'k4', deck%k4, 0.0_dp, max_shear_correction, &
+         '(0, 1.2], or not given (Whitney)')
+      if (deck%k5 /= k_not_given) call in_range('laminate', 'k5', deck%k5, 0.0_dp, max_shear_correction, &
+         '(0, 1.2], or not given (Whitney)')
       call keyword('laminate', 'bend_twist', deck%bend_twist, [character(len=name_len) :: 'auto', 'drop', 'keep'])
 
       call positive('impactor', 'mass', deck%mass, 'kg')
       call positive('impactor', 'velocity', deck%velocity, 'm/s')
       call positive('impactor', 'diameter', deck%diameter, 'm')
+      if (stat == 0) call need(ieee_is_finite(deck%x0) .and. abs(deck%x0) <= 0.5_dp*(deck%a - deck%diameter), &
+         'impactor', 'x0', real_str(deck%x0), 'the nose must lie on the plate: |x0| <= (a - diameter)/2 = ' &
+         // real_str(0.5_dp*(deck%a - deck%diameter)) // ' m (x0 is measured from the plate centre)')
+      if (stat == 0) call need(ieee_is_finite(deck%y0) .and. abs(deck%y0) <= 0.5_dp*(deck%b - deck%diameter), &
+         'impactor', 'y0', real_str(deck%y0), 'the nose must lie on the plate: |y0| <= (b - diameter)/2 = ' &
+         // real_str(0.5_dp*(deck%b - deck%diameter)) // ' m (y0 is measured from the plate centre)')
 
       call positive('contact', 'k', deck%k, 'N/m^1.5')
       call positive('contact', 'q', deck%q, '')
@@ -396,10 +457,24 @@ contains
 
       call need(deck%nx >= 1, 'mesh', 'nx', int_str(deck%nx), 'must be at least 1')
       call need(deck%ny >= 1, 'mesh', 'ny', int_str(deck%ny), 'must be at least 1')
-      call keyword('mesh', 'domain', deck%domain, [character(len=name_len) :: 'quarter', 'full', 'strip'])
-      if (stat == 0 .and. deck%domain /= 'full') call need(deck%bend_twist /= 'keep', 'laminate', 'bend_twist', &
+      call keyword('mesh', 'domain', deck%domain, &
+         [character(len=name_len) :: 'auto', 'quarter', 'half', 'full', 'strip'])
+      if (stat == 0 .and. deck%domain /= 'full' .and. deck%domain /= 'auto') &
+         call need(deck%bend_twist /= 'keep', 'laminate', 'bend_twist', &
          "'keep'", "the symmetry lines of &mesh domain = '" // trim(deck%domain) // "' need D16 = D26 = 0 " &
          // "(section 3.1): use domain = 'full'")
+      if (stat == 0 .and. deck%average_bend_twist) call need(deck%bend_twist /= 'keep', 'laminate', 'bend_twist', &
+         "'keep'", "contradicts &mesh average_bend_twist = .true., which accepts D16 = D26 = 0")
+      if (stat == 0 .and. (deck%domain == 'quarter' .or. deck%domain == 'strip')) &
+         call need(deck%x0 == 0.0_dp .and. deck%y0 == 0.0_dp, 'mesh', 'domain', "'" // trim(deck%domain) // "'", &
+         'needs the impact point at the centre, but &impactor x0 = ' // real_str(deck%x0) // ' m, y0 = ' &
+         // real_str(deck%y0) // " m: use domain = 'auto', 'half' or 'full'")
+      if (stat == 0 .and. deck%domain == 'half') &
+         call need(deck%x0 == 0.0_dp .or. deck%y0 == 0.0_dp, 'mesh', 'domain', "'half'", &
+         'needs the impact point on a centre line (x0 = 0 or y0 = 0), but &impactor x0 = ' &
+         // real_str(deck%x0) // ' m, y0 = ' // real_str(deck%y0) // " m: use domain = 'auto' or 'full'")
+      call need(deck%grading >= 1.0_dp .and. deck%grading <= max_grading, 'mesh', 'grading', &
+         real_str(deck%grading), 'must be in [1, ' // real_str(max_grading) // '] (1: uniform)')
       call keyword('mesh', 'shear_rule', deck%shear_rule, &
          [character(len=name_len) :: 'auto', 'selective', 'stabilized'])
       call need(deck%stabilization > 0.0_dp .and. deck%stabilization <= 1.0_dp, 'mesh', 'stabilization', &
@@ -422,17 +497,26 @@ contains
 
       call keyword('analysis', 'kind', deck%analysis_kind, &
          [character(len=name_len) :: 'impact', 'static', 'modes', 'pressure'])
-      call keyword('analysis', 'theory', deck%theory, [character(len=name_len) :: 'linear', 'nonlinear'])
+      call keyword('analysis', 'theory', deck%theory, [character(len=name_len) :: 'linear', 'nonlinear', 'auto'])
+      if (stat == 0 .and. deck%theory == 'auto') call need(deck%analysis_kind == 'impact', 'analysis', 'theory', &
+         "'auto'", "chooses from the impact's deflection estimate: give 'linear' or 'nonlinear' for kind = '" &
+         // trim(deck%analysis_kind) // "'")
       call positive('analysis', 'dt', deck%dt, 's')
       call positive('analysis', 't_end', deck%t_end, 's')
       if (stat == 0) call need(deck%dt < deck%t_end, 'analysis', 'dt', real_str(deck%dt), &
          'must be less than t_end = ' // real_str(deck%t_end))
       call need(deck%cr1 > 0.0_dp .and. deck%cr1 < 1.0_dp, 'analysis', 'cr1', real_str(deck%cr1), &
          'must be in (0, 1): a relative tolerance')
+      call need(deck%cr1 >= min_cr1, 'analysis', 'cr1', real_str(deck%cr1), &
+         'must be at least ' // real_str(min_cr1) // ' (100 eps): eq. (17) cannot be met below the rounding of the force')
+      if (stat == 0) call need(deck%t_end / deck%dt < real(huge(1), dp), 'analysis', 'dt', real_str(deck%dt), &
+         'gives t_end/dt = ' // real_str(deck%t_end / deck%dt) // ' time steps, more than ' // int_str(huge(1)))
       call need(deck%cr2 > 0.0_dp .and. deck%cr2 < 1.0_dp, 'analysis', 'cr2', real_str(deck%cr2), &
          'must be in (0, 1): a relative tolerance')
       call keyword('analysis', 'scheme', deck%scheme, [character(len=name_len) :: 'paper', 'fast'])
       call keyword('analysis', 'storage', deck%storage, [character(len=name_len) :: 'band', 'skyline'])
+      call keyword('analysis', 'force_update', deck%force_update, &
+         [character(len=name_len) :: 'bracketed', 'fixed_point'])
       call need(deck%max_contact_iter >= 1, 'analysis', 'max_contact_iter', int_str(deck%max_contact_iter), &
          'must be at least 1')
       call need(deck%max_nonlinear_iter >= 1, 'analysis', 'max_nonlinear_iter', &
@@ -530,11 +614,11 @@ contains
       n = 0
       if (allocated(deck%angles)) n = size(deck%angles)
       if (n > 0) then
-         call put('&laminate', 'k4 = ' // real_str(deck%k4) // ', k5 = ' // real_str(deck%k5) // ", bend_twist = '" &
+         call put('&laminate', k_str('k4', deck%k4) // ', ' // k_str('k5', deck%k5) // ", bend_twist = '" &
             // trim(deck%bend_twist) // "', " // int_str(n) // ' plies of ' // real_str(deck%h / n) &
             // ' m, angles (deg, bottom to top) =')
       else
-         call put('&laminate', 'k4 = ' // real_str(deck%k4) // ', k5 = ' // real_str(deck%k5) &
+         call put('&laminate', k_str('k4', deck%k4) // ', ' // k_str('k5', deck%k5) &
             // ", bend_twist = '" // trim(deck%bend_twist) // "', no plies")
       end if
       angles_1: do i = 1, n
@@ -549,12 +633,15 @@ contains
          end if
       end do angles_1
       call put('&impactor', 'mass = ' // real_str(deck%mass) // ' kg, velocity = ' // real_str(deck%velocity) &
-         // ' m/s, diameter = ' // real_str(deck%diameter) // ' m')
+         // ' m/s, diameter = ' // real_str(deck%diameter) // ' m, x0 = ' // real_str(deck%x0) // ' m, y0 = ' &
+         // real_str(deck%y0) // ' m')
       call put('&contact', 'k = ' // real_str(deck%k) // ' N/m^1.5, q = ' // real_str(deck%q) &
          // ', alpha_p = ' // real_str(deck%alpha_p) // ' m, beta = ' // real_str(deck%beta))
       call put('&mesh', 'nx = ' // int_str(deck%nx) // ', ny = ' // int_str(deck%ny) // ", domain = '" &
          // trim(deck%domain) // "', shear_rule = '" // trim(deck%shear_rule) // "', stabilization = " &
          // real_str(deck%stabilization))
+      call put(blank, 'average_bend_twist = ' // trim(merge('.true. ', '.false.', deck%average_bend_twist)) &
+         // ', grading = ' // real_str(deck%grading))
       call put('&boundary', "edges = '" // trim(deck%edges) // "', inplane = '" // trim(deck%inplane) // "'")
       call put('&analysis', "kind = '" // trim(deck%analysis_kind) // "', theory = '" // trim(deck%theory) &
          // "', dt = " // real_str(deck%dt) // ' s, t_end = ' // real_str(deck%t_end) // ' s, cr1 = ' &
@@ -562,15 +649,30 @@ contains
       call put(blank, "scheme = '" // trim(deck%scheme) // "', storage = '" // trim(deck%storage) &
          // "', max_contact_iter = " // int_str(deck%max_contact_iter) // ', max_nonlinear_iter = ' &
          // int_str(deck%max_nonlinear_iter))
+      call put(blank, "force_update = '" // trim(deck%force_update) // "', stop_on_warning = " &
+         // trim(merge('.true. ', '.false.', deck%stop_on_warning)))
       call put('&load', "kind = '" // trim(deck%load_kind) // "', magnitude = " // real_str(deck%load_magnitude) &
          // ' ' // trim(merge('N ', 'Pa', deck%load_kind == 'central_force')) // ', increments = ' &
          // int_str(deck%load_increments))
-      call put('&modes', 'count = ' // int_str(deck%mode_count))
+      call put('&modes', 'count = ' // int_str(deck%mode_count) // ', shapes = ' &
+         // trim(merge('.true. ', '.false.', deck%mode_shapes)))
       call put('&output', "prefix = '" // trim(deck%prefix) // "', every = " // int_str(deck%every) &
          // ', hdf5 = ' // trim(merge('.true. ', '.false.', deck%hdf5)) // ', fields_every = ' &
-         // int_str(deck%fields_every))
+         // int_str(deck%fields_every) // ', overwrite = ' // trim(merge('.true. ', '.false.', deck%overwrite)))
 
    contains
+
+      !> 'name = value', or 'name = (not given: Whitney)' for a shear correction factor.
+      function k_str(name, k) result(text)
+         character(len=*), intent(in) :: name
+         real(dp), intent(in) :: k
+         character(len=:), allocatable :: text
+         if (k == k_not_given) then
+            text = name // ' = (not given: Whitney)'
+         else
+            text = name // ' = ' // real_str(k)
+         end if
+      end function k_str
 
       !> Writes lead, the group name padded to the group column, and the text.
       subroutine put(group, text)
@@ -731,15 +833,15 @@ contains
       stat = 0
    end subroutine read_laminate
 
-   !> &impactor mass, velocity, diameter /
+   !> &impactor mass, velocity, diameter, x0, y0 /
    subroutine read_impactor(scratch, body, deck, stat, errmsg)
       integer, intent(in) :: scratch
       character(len=*), intent(in) :: body
       type(deck_t), intent(inout) :: deck
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      real(dp) :: mass, velocity, diameter
-      namelist /impactor/ mass, velocity, diameter
+      real(dp) :: mass, velocity, diameter, x0, y0
+      namelist /impactor/ mass, velocity, diameter, x0, y0
       integer :: ios, trial, bad
       character(len=msg_len) :: msg
       type(text_t), allocatable :: pieces(:)
@@ -747,6 +849,8 @@ contains
       mass = deck%mass
       velocity = deck%velocity
       diameter = deck%diameter
+      x0 = deck%x0
+      y0 = deck%y0
       msg = ''
       rewind (scratch, iostat=ios, iomsg=msg)
       if (ios == 0) read (scratch, nml=impactor, iostat=ios, iomsg=msg)
@@ -756,13 +860,15 @@ contains
             read (pieces(bad)%s, nml=impactor, iostat=trial)
             if (trial /= 0) exit
          end do
-         call read_failure(deck%source, 'impactor', 'mass, velocity, diameter', ios, msg, pieces, bad, &
+         call read_failure(deck%source, 'impactor', 'mass, velocity, diameter, x0, y0', ios, msg, pieces, bad, &
             stat, errmsg)
          return
       end if
       deck%mass = mass
       deck%velocity = velocity
       deck%diameter = diameter
+      deck%x0 = x0
+      deck%y0 = y0
       stat = 0
    end subroutine read_impactor
 
@@ -802,7 +908,7 @@ contains
       stat = 0
    end subroutine read_contact
 
-   !> &mesh nx, ny, domain /
+   !> &mesh nx, ny, domain, shear_rule, stabilization, average_bend_twist, grading /
    subroutine read_mesh(scratch, body, deck, stat, errmsg)
       integer, intent(in) :: scratch
       character(len=*), intent(in) :: body
@@ -811,8 +917,9 @@ contains
       character(len=*), intent(inout) :: errmsg
       integer :: nx, ny
       character(len=name_len) :: domain, shear_rule
-      real(dp) :: stabilization
-      namelist /mesh/ nx, ny, domain, shear_rule, stabilization
+      real(dp) :: stabilization, grading
+      logical :: average_bend_twist
+      namelist /mesh/ nx, ny, domain, shear_rule, stabilization, average_bend_twist, grading
       integer :: ios, trial, bad
       character(len=msg_len) :: msg
       type(text_t), allocatable :: pieces(:)
@@ -822,6 +929,8 @@ contains
       domain = deck%domain
       shear_rule = deck%shear_rule
       stabilization = deck%stabilization
+      average_bend_twist = deck%average_bend_twist
+      grading = deck%grading
       msg = ''
       rewind (scratch, iostat=ios, iomsg=msg)
       if (ios == 0) read (scratch, nml=mesh, iostat=ios, iomsg=msg)
@@ -831,7 +940,9 @@ contains
             read (pieces(bad)%s, nml=mesh, iostat=trial)
             if (trial /= 0) exit
          end do
-         call read_failure(deck%source, 'mesh', 'nx, ny, domain, shear_rule, stabilization', ios, msg, pieces, bad, stat, errmsg)
+         call read_failure(deck%source, 'mesh', &
+            'nx, ny, domain, shear_rule, stabilization, average_bend_twist, grading', ios, msg, pieces, bad, &
+            stat, errmsg)
          return
       end if
       deck%nx = nx
@@ -839,6 +950,8 @@ contains
       deck%domain = domain
       deck%shear_rule = shear_rule
       deck%stabilization = stabilization
+      deck%average_bend_twist = average_bend_twist
+      deck%grading = grading
       stat = 0
    end subroutine read_mesh
 
@@ -884,8 +997,10 @@ contains
       character(len=name_len) :: kind, theory, scheme, storage
       real(dp) :: dt, t_end, cr1, cr2
       integer :: max_contact_iter, max_nonlinear_iter
+      character(len=name_len) :: force_update
+      logical :: stop_on_warning
       namelist /analysis/ kind, theory, dt, t_end, cr1, cr2, scheme, storage, max_contact_iter, &
-         max_nonlinear_iter
+         max_nonlinear_iter, force_update, stop_on_warning
       integer :: ios, trial, bad
       character(len=msg_len) :: msg
       type(text_t), allocatable :: pieces(:)
@@ -900,6 +1015,8 @@ contains
       storage = deck%storage
       max_contact_iter = deck%max_contact_iter
       max_nonlinear_iter = deck%max_nonlinear_iter
+      force_update = deck%force_update
+      stop_on_warning = deck%stop_on_warning
       msg = ''
       rewind (scratch, iostat=ios, iomsg=msg)
       if (ios == 0) read (scratch, nml=analysis, iostat=ios, iomsg=msg)
@@ -910,8 +1027,8 @@ contains
             if (trial /= 0) exit
          end do
          call read_failure(deck%source, 'analysis', &
-            'kind, theory, dt, t_end, cr1, cr2, scheme, storage, max_contact_iter, max_nonlinear_iter', &
-            ios, msg, pieces, bad, stat, errmsg)
+            'kind, theory, dt, t_end, cr1, cr2, scheme, storage, max_contact_iter, max_nonlinear_iter, ' &
+            // 'force_update, stop_on_warning', ios, msg, pieces, bad, stat, errmsg)
          return
       end if
       deck%analysis_kind = kind
@@ -924,6 +1041,8 @@ contains
       deck%storage = storage
       deck%max_contact_iter = max_contact_iter
       deck%max_nonlinear_iter = max_nonlinear_iter
+      deck%force_update = force_update
+      deck%stop_on_warning = stop_on_warning
       stat = 0
    end subroutine read_analysis
 
@@ -964,7 +1083,7 @@ contains
       stat = 0
    end subroutine read_load
 
-   !> &modes count /
+   !> &modes count, shapes /
    subroutine read_modes(scratch, body, deck, stat, errmsg)
       integer, intent(in) :: scratch
       character(len=*), intent(in) :: body
@@ -972,12 +1091,14 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer :: count
-      namelist /modes/ count
+      logical :: shapes
+      namelist /modes/ count, shapes
       integer :: ios, trial, bad
       character(len=msg_len) :: msg
       type(text_t), allocatable :: pieces(:)
 
       count = deck%mode_count
+      shapes = deck%mode_shapes
       msg = ''
       rewind (scratch, iostat=ios, iomsg=msg)
       if (ios == 0) read (scratch, nml=modes, iostat=ios, iomsg=msg)
@@ -987,10 +1108,11 @@ contains
             read (pieces(bad)%s, nml=modes, iostat=trial)
             if (trial /= 0) exit
          end do
-         call read_failure(deck%source, 'modes', 'count', ios, msg, pieces, bad, stat, errmsg)
+         call read_failure(deck%source, 'modes', 'count, shapes', ios, msg, pieces, bad, stat, errmsg)
          return
       end if
       deck%mode_count = count
+      deck%mode_shapes = shapes
       stat = 0
    end subroutine read_modes
 
@@ -1004,7 +1126,8 @@ contains
       character(len=path_len) :: prefix
       integer :: every, fields_every
       logical :: hdf5
-      namelist /output/ prefix, every, hdf5, fields_every
+      logical :: overwrite
+      namelist /output/ prefix, every, hdf5, fields_every, overwrite
       integer :: ios, trial, bad
       character(len=msg_len) :: msg
       type(text_t), allocatable :: pieces(:)
@@ -1013,6 +1136,7 @@ contains
       every = deck%every
       hdf5 = deck%hdf5
       fields_every = deck%fields_every
+      overwrite = deck%overwrite
       msg = ''
       rewind (scratch, iostat=ios, iomsg=msg)
       if (ios == 0) read (scratch, nml=output, iostat=ios, iomsg=msg)
@@ -1022,14 +1146,15 @@ contains
             read (pieces(bad)%s, nml=output, iostat=trial)
             if (trial /= 0) exit
          end do
-         call read_failure(deck%source, 'output', 'prefix, every, hdf5, fields_every', ios, msg, pieces, bad, &
-            stat, errmsg)
+         call read_failure(deck%source, 'output', 'prefix, every, hdf5, fields_every, overwrite', ios, msg, &
+            pieces, bad, stat, errmsg)
          return
       end if
       deck%prefix = prefix
       deck%every = every
       deck%hdf5 = hdf5
       deck%fields_every = fields_every
+      deck%overwrite = overwrite
       stat = 0
    end subroutine read_output
 
@@ -1088,6 +1213,38 @@ contains
             // ' (a value of the wrong type, or too many values? text values need quotes)'
       end if
    end subroutine read_failure
+
+   !> Fails when an assignment of the group has no value (`mass = ,`, `angles = /`):
+   !> the namelist read takes it as a null value and keeps the default, silently.
+   subroutine missing_value(source, group, body, stat, errmsg)
+      !> Name of the deck.
+      character(len=*), intent(in) :: source
+      !> Group name, without '&'.
+      character(len=*), intent(in) :: group
+      !> The group's text (see scan_groups).
+      character(len=*), intent(in) :: body
+      !> Set to failed when a value is missing, else unchanged.
+      integer, intent(inout) :: stat
+      !> The message.
+      character(len=*), intent(inout) :: errmsg
+      type(text_t), allocatable :: pieces(:)
+      character(len=:), allocatable :: piece
+      integer :: i, eq
+
+      call split_assignments(group, body, pieces)
+      do i = 1, size(pieces)
+         ! '&group name = values /': the values are between the '=' and the closing ' /'
+         piece = pieces(i)%s
+         eq = index(piece, '=')
+         if (eq == 0) cycle
+         if (verify(piece(eq + 1:len(piece) - 1), ' ,') == 0) then
+            stat = failed
+            errmsg = trim(source) // ': &' // group // ': ' // trim(adjustl(piece(len(group) + 2:eq - 1))) &
+               // ' = (nothing): the value is missing (a variable without a value would keep its default)'
+            return
+         end if
+      end do
+   end subroutine missing_value
 
    !> Reads every line of `unit` up to its end.
    subroutine read_lines(unit, lines, ios, msg)

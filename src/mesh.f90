@@ -1,22 +1,45 @@
 !> Mesh, freedoms and boundary conditions (paper Fig. 4).
 !>
-!> The modelled domain is a rectangle meshed with nx x ny 9-node elements:
-!>  - domain 'quarter': 0 <= x <= a/2, 0 <= y <= b/2, the impact point (the
-!>    plate centre) at the corner (0, 0); the lines x = 0 and y = 0 are
-!>    symmetry lines (section 2.4, 3.1);
-!>  - domain 'full': -a/2 <= x <= a/2, -b/2 <= y <= b/2, the impact point at
-!>    the origin, which is always a node of the (2nx+1) x (2ny+1) node grid;
-!>  - domain 'strip': the quarter's rectangle, but y = b/2 is a symmetry line
+!> Coordinates are measured from the plate centre: the plate is
+!> -a/2 <= x <= a/2, -b/2 <= y <= b/2, and the impact point is (x_i, y_i)
+!> (&impactor x0, y0; the centre by default). The modelled domain is:
+!>  - 'quarter': 0 <= x <= a/2, 0 <= y <= b/2, the impact point at the
+!>    centre, the corner (0, 0); the lines x = 0 and y = 0 are symmetry lines
+!>    (section 2.4, 3.1);
+!>  - 'half': symmetric about one centre line through the impact point: about
+!>    y = 0 (the x axis; 0 <= y <= b/2 modelled) when y_i = 0, else about
+!>    x = 0 (the y axis; 0 <= x <= a/2 modelled), which needs x_i = 0; a
+!>    'half' at the centre is therefore the half y >= 0;
+!>  - 'full': the whole plate;
+!>  - 'strip': the quarter's rectangle, but y = b/2 is a symmetry line
 !>    too, so the model is a plate infinitely long along y in cylindrical
 !>    bending, of span a between its x edges (TWK Arts. 2-3; the
 !>    validation's strip). y = 0 and y = b/2 hold v and psi_y.
+!>
+!> Element counts and sizes: nx x ny elements on the modelled domain. The
+!> impact point is always a corner node of the elements around it (a node
+!> line runs through x_i and one through y_i): where the domain extends on
+!> both sides of it along x, the stretch of length L_lo below it gets
+!> n_lo = nint(nx L_lo/a) elements, at least 1 and at most nx - 1, and the
+!> stretch above the other nx - n_lo (nx >= 2 is needed; likewise along y).
+!> So a centred quarter nx x ny, half 2nx x ny and full 2nx x 2ny are
+!> mirror images of each other. With quarter_counts (the scene's 'auto'
+!> domain), nx and ny are read as the quarter plate's counts and doubled
+!> along each direction in which the domain spans both sides of a centre
+!> line, so the chosen domain keeps the quarter's element size. Within a
+!> stretch of n elements the sizes grow geometrically away from the impact
+!> point, s_k = s_1 g^(k-1), k = 1..n, with g = grading (1: uniform) and
+!> s_1 = L (g - 1)/(g^n - 1); a symmetry line is such a stretch's start.
+!> Mid-side and centre nodes sit at the middle of their element
+!> (straight-sided, affine elements).
 !>
 !> Freedoms per node, in this order everywhere in the code (eq. 1):
 !>    1 u,  2 v,  3 w,  4 psi_x,  5 psi_y.
 !> w and z point the way the impactor moves.
 !>
-!> Node numbering: the grid node (i, j), i = 0..2nx along x and j = 0..2ny
-!> along y, is numbered running first along the direction with fewer nodes,
+!> Node numbering: the grid node (i, j), i = 0..2 mesh%nx along x and
+!> j = 0..2 mesh%ny along y (mesh%nx, mesh%ny: the elements of the modelled
+!> domain), is numbered running first along the direction with fewer nodes,
 !> which keeps the half-bandwidth at about 5 (2 min(nx,ny) + 2) + 4.
 !> Equation numbers: eq(k, node) is the global equation of freedom k of node,
 !> 0 where the freedom is held; equations follow the node numbering.
@@ -28,8 +51,10 @@
 !>    support of Navier's solution); in-plane 'immovable' also holds u = v = 0,
 !>    'movable' leaves them free;
 !>  - 'free':             nothing held;
-!>  - symmetry lines of the quarter model: x = 0 holds u and psi_x, y = 0
-!>    holds v and psi_y.
+!>  - symmetry lines (quarter, half, strip): a mirror image about x = 0 has
+!>    u, psi_x odd and v, w, psi_y even in x, so x = 0 holds u and psi_x;
+!>    likewise y = 0 holds v and psi_y. Which laminates allow it is the
+!>    business of src/scene_model.f90.
 module mesh
    use kinds, only: dp, msg_len
    use shape_functions, only: nen, node_xi
@@ -50,8 +75,12 @@ module mesh
       integer :: nx = 0, ny = 0               !< elements along x and y
       integer :: nnode = 0, nelem = 0         !< nodes, elements
       integer :: neq = 0                      !< free freedoms (equations)
-      character(len=16) :: domain = ''        !< 'quarter', 'full' or 'strip'
-      real(dp) :: x0 = 0, x1 = 0, y0 = 0, y1 = 0   !< domain extent (m)
+      character(len=16) :: domain = ''        !< 'quarter', 'half', 'full' or 'strip'
+      real(dp) :: x0 = 0, x1 = 0, y0 = 0, y1 = 0   !< domain extent (m), from the plate centre
+      logical :: sym_x = .false.              !< x = 0 is a symmetry line (x >= 0 modelled)
+      logical :: sym_y = .false.              !< y = 0 is a symmetry line (y >= 0 modelled)
+      real(dp) :: x_impact = 0, y_impact = 0  !< impact point from the plate centre (m)
+      real(dp) :: grading = 1.0_dp            !< ratio of successive element sizes away from the impact point
       real(dp), allocatable :: coords(:,:)    !< (2, nnode) node coordinates (m)
       integer, allocatable :: conn(:,:)       !< (nen, nelem) element nodes
       integer, allocatable :: grid(:,:)       !< (0:2nx, 0:2ny) node number of grid point
@@ -59,20 +88,29 @@ module mesh
       integer, allocatable :: elem_eq(:,:)    !< (nfe, nelem) equation numbers of element freedoms
       integer :: impact_node = 0              !< node at the impact point
       integer :: impact_elem = 0              !< element nearest the impact point (for the strain gauge)
-      real(dp) :: sym_factor = 1.0_dp         !< plate represented / plate modelled (4 for a quarter)
+      real(dp) :: sym_factor = 1.0_dp         !< plate represented / plate modelled (4 quarter, 2 half)
    end type mesh_t
 
 contains
 
-   !> Lays out nodes and elements of the modelled domain (Fig. 4).
-   subroutine build_mesh(a, b, nx, ny, domain, m, stat, errmsg)
+   !> Lays out nodes and elements of the modelled domain (Fig. 4; module
+   !> header: domains, element counts and grading).
+   subroutine build_mesh(a, b, nx, ny, domain, m, stat, errmsg, x0, y0, grading, quarter_counts)
       real(dp), intent(in) :: a, b            !< plate size along x and y (m)
-      integer, intent(in) :: nx, ny           !< elements along x and y of the domain
-      character(len=*), intent(in) :: domain  !< 'quarter', 'full' or 'strip'
+      integer, intent(in) :: nx, ny           !< elements along x and y of the domain (module header)
+      character(len=*), intent(in) :: domain  !< 'quarter', 'half', 'full' or 'strip'
       type(mesh_t), intent(out) :: m          !< the mesh
       integer, intent(out) :: stat            !< 0 on success
       character(len=*), intent(inout) :: errmsg  !< reason on failure
-      integer :: i, j, ie, je, e, k, n, ngx, ngy
+      real(dp), intent(in), optional :: x0, y0   !< impact point from the plate centre (m); absent: the centre
+      !> ratio of successive element sizes away from the impact point (-); absent: 1, uniform
+      real(dp), intent(in), optional :: grading
+      !> nx, ny are the quarter plate's counts, doubled where the domain spans
+      !> both sides of a centre line (module header); absent: false
+      logical, intent(in), optional :: quarter_counts
+      real(dp), allocatable :: xl(:), yl(:)
+      integer :: i, j, ie, je, e, k, n, ngx, ngy, ix, jy, ncx, ncy
+      logical :: doubled
       real(dp) :: xi(2)
 
       stat = 0
@@ -81,23 +119,65 @@ contains
          write (errmsg, '(a,i0,a,i0)') 'mesh: needs at least one element each way, got nx = ', nx, ', ny = ', ny
          return
       end if
-      m%nx = nx;  m%ny = ny;  m%domain = domain
+      m%x_impact = 0.0_dp;  m%y_impact = 0.0_dp;  m%grading = 1.0_dp
+      if (present(x0)) m%x_impact = x0
+      if (present(y0)) m%y_impact = y0
+      if (present(grading)) m%grading = grading
+      if (abs(m%x_impact) >= 0.5_dp*a .or. abs(m%y_impact) >= 0.5_dp*b) then
+         stat = 1
+         write (errmsg, '(a,es11.4,a,es11.4,a)') 'mesh: the impact point (', m%x_impact, ', ', m%y_impact, &
+            ') m is not inside the plate'
+         return
+      end if
+      if (.not. (m%grading >= 1.0_dp)) then
+         stat = 1
+         write (errmsg, '(a,es11.4,a)') 'mesh: grading = ', m%grading, ' must be at least 1'
+         return
+      end if
+      m%domain = domain
       select case (domain)
       case ('quarter', 'strip')
-         m%x0 = 0.0_dp;  m%x1 = 0.5_dp*a;  m%y0 = 0.0_dp;  m%y1 = 0.5_dp*b
-         m%sym_factor = 4.0_dp
+         m%sym_x = .true.;  m%sym_y = .true.
+      case ('half')
+         m%sym_y = m%y_impact == 0.0_dp          ! about y = 0 when possible (module header)
+         m%sym_x = .not. m%sym_y
       case ('full')
-         m%x0 = -0.5_dp*a;  m%x1 = 0.5_dp*a;  m%y0 = -0.5_dp*b;  m%y1 = 0.5_dp*b
-         m%sym_factor = 1.0_dp
+         m%sym_x = .false.;  m%sym_y = .false.
       case default
          stat = 1
-         errmsg = 'mesh: unknown domain "'//trim(domain)//'" (quarter, full or strip)'
+         errmsg = 'mesh: unknown domain "'//trim(domain)//'" (quarter, half, full or strip)'
          return
       end select
+      if ((m%sym_x .and. m%x_impact /= 0.0_dp) .or. (m%sym_y .and. m%y_impact /= 0.0_dp)) then
+         stat = 1
+         write (errmsg, '(a,a,a,es11.4,a,es11.4,a)') 'mesh: domain "', trim(domain), &
+            '" needs the impact point on its symmetry lines, got (', m%x_impact, ', ', m%y_impact, ') m'
+         return
+      end if
+      m%sym_factor = merge(2.0_dp, 1.0_dp, m%sym_x)*merge(2.0_dp, 1.0_dp, m%sym_y)
 
-      ngx = 2*nx + 1;  ngy = 2*ny + 1
+      ! element counts of the domain
+      doubled = .false.
+      if (present(quarter_counts)) doubled = quarter_counts
+      ncx = nx;  ncy = ny
+      if (doubled .and. .not. m%sym_x) ncx = 2*nx
+      if (doubled .and. .not. m%sym_y) ncy = 2*ny
+      if ((ncx < 2 .and. .not. m%sym_x) .or. (ncy < 2 .and. .not. m%sym_y)) then
+         stat = 1
+         write (errmsg, '(a,i0,a,i0,a)') 'mesh: nx = ', ncx, ', ny = ', ncy, ': a domain that extends on both ' &
+            // 'sides of the impact point needs at least 2 elements that way (one each side)'
+         return
+      end if
+
+      ! element corner lines along x and y, the impact point on one of each
+      call node_lines(0.5_dp*a, ncx, m%x_impact, m%sym_x, m%grading, xl, ix)
+      call node_lines(0.5_dp*b, ncy, m%y_impact, m%sym_y, m%grading, yl, jy)
+      m%nx = size(xl) - 1;  m%ny = size(yl) - 1
+      m%x0 = xl(0);  m%x1 = xl(m%nx);  m%y0 = yl(0);  m%y1 = yl(m%ny)
+
+      ngx = 2*m%nx + 1;  ngy = 2*m%ny + 1
       m%nnode = ngx*ngy
-      m%nelem = nx*ny
+      m%nelem = m%nx*m%ny
       allocate (m%coords(2, m%nnode), m%grid(0:ngx-1, 0:ngy-1), m%conn(nen, m%nelem))
 
       ! node numbers: run first along the direction with fewer nodes
@@ -109,14 +189,13 @@ contains
                n = 1 + i + ngx*j
             end if
             m%grid(i, j) = n
-            m%coords(:, n) = [m%x0 + (m%x1 - m%x0)*real(i, dp)/real(ngx - 1, dp), &
-                              m%y0 + (m%y1 - m%y0)*real(j, dp)/real(ngy - 1, dp)]
+            m%coords(:, n) = [0.5_dp*(xl(i/2) + xl(i - i/2)), 0.5_dp*(yl(j/2) + yl(j - j/2))]
          end do
       end do grid_nodes
 
-      elements: do je = 0, ny - 1
-         do ie = 0, nx - 1
-            e = 1 + ie + nx*je
+      elements: do je = 0, m%ny - 1
+         do ie = 0, m%nx - 1
+            e = 1 + ie + m%nx*je
             do k = 1, nen
                xi = node_xi(k)
                m%conn(k, e) = m%grid(2*ie + 1 + nint(xi(1)), 2*je + 1 + nint(xi(2)))
@@ -124,16 +203,57 @@ contains
          end do
       end do elements
 
-      ! the impact point: the plate centre
-      if (domain /= 'full') then
-         m%impact_node = m%grid(0, 0)
-         m%impact_elem = 1
-      else
-         m%impact_node = m%grid(nx, ny)
-         ! the element with the centre at (or nearest to) its lower-left corner
-         m%impact_elem = 1 + nx/2 + nx*(ny/2)
-      end if
+      ! the impact point, and the element that has it as its lower-left
+      ! corner (the +x, +y side: the quarter's first element)
+      m%impact_node = m%grid(2*ix, 2*jy)
+      m%impact_elem = 1 + ix + m%nx*jy
    end subroutine build_mesh
+
+   !> Element corner lines of one direction (module header): from the lower
+   !> edge (or the symmetry line) to the upper edge, graded away from the
+   !> impact point, which is line `at`.
+   pure subroutine node_lines(half, n, p, sym, grading, lines, at)
+      real(dp), intent(in) :: half              !< half the plate's size in this direction (m)
+      integer, intent(in) :: n                  !< elements of the domain in this direction (>= 2 unless sym)
+      real(dp), intent(in) :: p                 !< impact point coordinate from the centre (m)
+      logical, intent(in) :: sym                !< the centre line is a symmetry line (p = 0)
+      real(dp), intent(in) :: grading           !< ratio of successive element sizes (-)
+      real(dp), allocatable, intent(out) :: lines(:)  !< (0:n) line coordinates (m), increasing
+      integer, intent(out) :: at                !< index of the line through the impact point
+      integer :: n_lo, n_hi
+
+      n_lo = 0
+      if (.not. sym) n_lo = min(max(1, nint(real(n, dp)*(half + p)/(2.0_dp*half))), n - 1)
+      n_hi = n - n_lo
+      allocate (lines(0:n))
+      at = n_lo
+      lines(n_lo:) = p + graded_offsets(half - p, n_hi, grading)
+      if (.not. sym) lines(n_lo:0:-1) = p - graded_offsets(half + p, n_lo, grading)
+      lines(n) = half          ! the edges exactly
+      if (.not. sym) lines(0) = -half
+   end subroutine node_lines
+
+   !> Offsets 0 = d_0 < d_1 < ... < d_n = len of n elements whose sizes grow
+   !> by the factor g: d_k - d_{k-1} = s_1 g^(k-1), s_1 = len (g-1)/(g^n-1)
+   !> (len/n for g = 1).
+   pure function graded_offsets(len, n, g) result(d)
+      real(dp), intent(in) :: len   !< stretch length (m)
+      integer, intent(in) :: n      !< elements
+      real(dp), intent(in) :: g     !< ratio of successive sizes, >= 1
+      real(dp) :: d(0:n)
+      real(dp) :: s
+      integer :: k
+      if (g == 1.0_dp) then
+         s = len/real(n, dp)
+      else
+         s = len*(g - 1.0_dp)/(g**n - 1.0_dp)
+      end if
+      d(0) = 0.0_dp
+      do k = 1, n
+         d(k) = d(k-1) + s*g**(k - 1)
+      end do
+      d(n) = len
+   end function graded_offsets
 
    !> Holds the freedoms of the edges and symmetry lines and numbers the
    !> remaining equations.
@@ -160,9 +280,9 @@ contains
       grid_nodes: do j = 0, ngy - 1
          do i = 0, ngx - 1
             n = m%grid(i, j)
-            ! outer edges: x = x1 always; x = x0 only on the full plate
-            on_x_edge = i == ngx - 1 .or. (i == 0 .and. m%domain == 'full')
-            on_y_edge = (j == ngy - 1 .and. m%domain /= 'strip') .or. (j == 0 .and. m%domain == 'full')
+            ! outer edges: x = x1 always; x = x0 unless it is a symmetry line
+            on_x_edge = i == ngx - 1 .or. (i == 0 .and. .not. m%sym_x)
+            on_y_edge = (j == ngy - 1 .and. m%domain /= 'strip') .or. (j == 0 .and. .not. m%sym_y)
             if (on_x_edge .or. on_y_edge) then
                select case (edges)
                case ('clamped')
@@ -174,10 +294,8 @@ contains
                   if (inplane == 'immovable') held(1:2, n) = .true.
                end select
             end if
-            if (m%domain /= 'full') then
-               if (i == 0) held([1, 4], n) = .true.   ! symmetry about x = 0
-               if (j == 0) held([2, 5], n) = .true.   ! symmetry about y = 0
-            end if
+            if (m%sym_x .and. i == 0) held([1, 4], n) = .true.   ! symmetry about x = 0
+            if (m%sym_y .and. j == 0) held([2, 5], n) = .true.   ! symmetry about y = 0
             if (m%domain == 'strip' .and. j == ngy - 1) held([2, 5], n) = .true.   ! and about y = b/2
          end do
       end do grid_nodes

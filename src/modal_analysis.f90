@@ -12,9 +12,11 @@
 !> problem (dsbgst) and to tridiagonal form (dsbtrd), bisection and inverse
 !> iteration. K_L and M are used in the upper band storage of
 !> src/band_matrix.f90 (global_matrix_t%band%ab), which is LAPACK's layout
-!> with uplo = 'U', ka = kb = kd. The reduction keeps an n x n orthogonal
-!> matrix: memory 8 n^2 bytes and time of order n^2 kd, so this suits
-!> models of a few thousand equations (n = 3000: 72 MB, seconds).
+!> with uplo = 'U', ka = kb = kd. With the mode shapes (`&modes shapes`,
+!> the default) the reduction keeps an n x n orthogonal matrix: memory
+!> 8 n^2 bytes and time of order n^2 kd (n = 1400: 16 MB, 2 s; n = 2800:
+!> 63 MB, 25 s). Frequencies alone (shapes = .false.) need neither: time
+!> of order n kd^2, a fraction of a second for the same models.
 !>
 !> Free edges: K_L is singular (rigid-body modes); M is positive definite,
 !> so dsbgvx still applies, and the rigid-body modes come out with omega^2
@@ -33,7 +35,7 @@ module modal_analysis
    use input_deck, only: deck_t
    use impact_driver, only: model_t
    use global_matrix, only: global_matvec
-   use analysis_support, only: open_result_file, gather_element
+   use analysis_support, only: check_result_files, open_result_file, gather_element
    use mesh, only: ndof_node
    implicit none
    private
@@ -67,16 +69,18 @@ module modal_analysis
 contains
 
    !> The lowest `count` eigenpairs of K_L phi = omega^2 M phi (band storage).
-   subroutine modal_solve(model, count, res, stat, errmsg)
+   subroutine modal_solve(model, count, vectors, res, stat, errmsg)
       type(model_t), intent(in) :: model           !< model: K_L and M in band storage
       integer, intent(in) :: count                 !< modes wanted, 1..neq
-      type(modal_result_t), intent(out) :: res     !< frequencies and modes
+      logical, intent(in) :: vectors               !< also the modes (res%shapes, res%fraction)
+      type(modal_result_t), intent(out) :: res     !< frequencies, and modes when asked for
       integer, intent(out) :: stat                 !< 0 on success
       character(len=*), intent(inout) :: errmsg    !< reason on failure
       real(dp), allocatable :: ab(:,:), bb(:,:), q(:,:), w(:), work(:), part(:), mpart(:)
       integer, allocatable :: iwork(:), ifail(:), kind_of(:)
-      integer :: n, kd, found, info, j, k, node, c
+      integer :: n, kd, found, info, j, k, node, c, nq
       integer, parameter :: w_dof = 3
+      character :: jobz
       character(len=msg_len) :: msg
 
       stat = 0
@@ -95,14 +99,19 @@ contains
       kd = model%stiff%band%kd
       ab = model%stiff%band%ab
       bb = model%mass%band%ab
-      allocate (q(n, n), w(n), res%shapes(n, count), work(7*n), iwork(5*n), ifail(n), stat=info, errmsg=msg)
+      ! without the vectors dsbgvx references neither Q nor Z
+      jobz = merge('V', 'N', vectors)
+      nq = merge(n, 1, vectors)
+      allocate (q(nq, nq), w(n), res%shapes(nq, merge(count, 1, vectors)), work(7*n), iwork(5*n), ifail(n), &
+                stat=info, errmsg=msg)
       if (info /= 0) then
          stat = 1
-         write (errmsg, '(a,i0,a)') 'modes: cannot allocate the ', n, ' x n work matrix of dsbgvx: ' // trim(msg)
+         write (errmsg, '(a,i0,a)') 'modes: cannot allocate the ', n, ' x n work matrix of dsbgvx: ' // trim(msg) &
+            // ' (&modes shapes = .false. computes the frequencies alone)'
          return
       end if
-      call dsbgvx('V', 'I', 'U', n, kd, kd, ab, kd + 1, bb, kd + 1, q, n, 0.0_dp, 0.0_dp, 1, count, &
-                  2.0_dp*tiny(1.0_dp), found, w, res%shapes, n, work, iwork, ifail, info)
+      call dsbgvx(jobz, 'I', 'U', n, kd, kd, ab, kd + 1, bb, kd + 1, q, nq, 0.0_dp, 0.0_dp, 1, count, &
+                  2.0_dp*tiny(1.0_dp), found, w, res%shapes, nq, work, iwork, ifail, info)
       if (info /= 0 .or. found /= count) then
          stat = 1
          if (info < 0) then
@@ -120,6 +129,10 @@ contains
       res%count = count
       res%omega2 = w(:count)
       res%freq = sign(sqrt(abs(res%omega2)), res%omega2)/(2.0_dp*pi)
+      if (.not. vectors) then
+         deallocate (res%shapes)
+         return
+      end if
 
       ! -- kinetic energy share of each kind of freedom: 1 u, v; 2 w; 3 psi
       allocate (kind_of(n), part(n), mpart(n), res%fraction(3, count))
@@ -156,22 +169,35 @@ contains
       integer :: u, j, k
 
       report = ''
-      call modal_solve(model, deck%mode_count, res, stat, errmsg)
+      call check_result_files(deck, [character(len=20) :: '_modes.dat', '_mode_shapes.dat'], stat, errmsg)
+      if (stat /= 0) return
+      call modal_solve(model, deck%mode_count, deck%mode_shapes, res, stat, errmsg)
       if (stat /= 0) return
 
       call open_result_file(deck, '_modes.dat', 'impact: modal analysis, K_L phi = omega^2 M phi (LAPACK dsbgvx)', &
          [character(len=18) :: 'mode', 'frequency_Hz', 'omega_rad_s', 'w_fraction', 'inplane_fraction', &
           'rotation_fraction'], &
          [character(len=64) :: 'mode number, ascending frequency (-)', 'natural frequency (Hz)', &
-          'circular frequency (rad/s)', 'kinetic energy share of w (-)', &
-          'kinetic energy share of u, v (-)', 'kinetic energy share of psi_x, psi_y (-)'], &
+          'circular frequency (rad/s)', 'kinetic energy share of w (-; -1: no shapes)', &
+          'kinetic energy share of u, v (-; -1: no shapes)', 'kinetic energy share of psi_x, psi_y (-; -1: no shapes)'], &
          u, path, stat, errmsg)
       if (stat /= 0) return
       rows: do j = 1, res%count
-         write (u, '(i6, 2es17.8e3, 3f12.6)') j, res%freq(j), sign(sqrt(abs(res%omega2(j))), res%omega2(j)), &
-            res%fraction(:, j)
+         if (deck%mode_shapes) then
+            write (u, '(i6, 2es17.8e3, 3f12.6)') j, res%freq(j), sign(sqrt(abs(res%omega2(j))), res%omega2(j)), &
+               res%fraction(:, j)
+         else
+            write (u, '(i6, 2es17.8e3, 3f12.1)') j, res%freq(j), sign(sqrt(abs(res%omega2(j))), res%omega2(j)), &
+               -1.0_dp, -1.0_dp, -1.0_dp
+         end if
       end do rows
       close (u)
+      if (.not. deck%mode_shapes) then
+         write (report, '(a,i0,a,es13.6,a,es13.6,a)') 'modes: ', res%count, ' frequencies from ', res%freq(1), &
+            ' to ', res%freq(res%count), ' Hz (no shapes: &modes shapes = .false.)' // new_line('a') // &
+            'results: ' // trim(path)
+         return
+      end if
 
       ! -- mode shapes: w at the nodes, each mode scaled to max |w| = 1
       allocate (names(2 + res%count), texts(2 + res%count))

@@ -23,14 +23,22 @@
 !> valid file up to its last step.
 !>
 !> <prefix>_summary.dat: 'key = value' lines (see write_summary).
+!>
+!> Nothing lost: before any work (check_output) the run makes sure it can
+!> write <prefix>_history.dat and refuses to start when <prefix>_history.dat,
+!> <prefix>_summary.dat or <prefix>.h5 (&output hdf5) exists, the results of
+!> another run, unless the deck says &output overwrite = .true. (or the
+!> command line --overwrite).
 module output_files
    use kinds, only: dp, msg_len
    use input_deck, only: deck_t, echo_deck
    implicit none
    private
    public :: history_row_t, run_summary_t, open_history, write_history_row, &
-             summary_record, write_summary, ncol
+             summary_record, write_summary, ncol, check_output
 
+   !> Names of the result files: <prefix> followed by these.
+   character(len=*), parameter :: history_suffix = '_history.dat', summary_suffix = '_summary.dat'
    !> Number of history columns.
    integer, parameter :: ncol = 16
    character(len=20), parameter :: col_name(ncol) = [character(len=20) :: &
@@ -73,7 +81,11 @@ module output_files
       real(dp) :: initial_energy = 0.0_dp      !< m v0^2 / 2 (J)
       integer :: steps = 0, plate_solves = 0, factorizations = 0
       integer :: contact_iterations = 0, max_contact_iter = 0, max_nonlinear_iter = 0
-      integer :: unconverged_steps = 0
+      integer :: unconverged_steps = 0         !< steps whose iterations did not converge (the run stops at the first)
+      integer :: warnings = 0                  !< warnings given (each kind once)
+      integer :: nonlinear_fallback_steps = 0  !< steps where eq. (19) needed its fall-back (Anderson mixing)
+      integer :: contact_fallback_steps = 0    !< steps where the contact iteration needed its fall-back
+      real(dp) :: max_w_over_h = 0.0_dp        !< largest plate deflection over the thickness
       real(dp) :: cpu_s = 0.0_dp
       character(len=64) :: status = 'completed'
    end type run_summary_t
@@ -196,9 +208,58 @@ contains
       write (u, '(a,i0)')     'max_contact_iter = ', s%max_contact_iter
       write (u, '(a,i0)')     'max_nonlinear_iter = ', s%max_nonlinear_iter
       write (u, '(a,i0)')     'unconverged_steps = ', s%unconverged_steps
+      write (u, '(a,i0)')     'nonlinear_fallback_steps = ', s%nonlinear_fallback_steps
+      write (u, '(a,i0)')     'contact_fallback_steps = ', s%contact_fallback_steps
+      write (u, '(a,es15.7)') 'max_w_over_h = ', s%max_w_over_h
+      write (u, '(a,i0)')     'warnings = ', s%warnings
       write (u, '(a,f12.4)')  'cpu_s = ', s%cpu_s
       close (u)
    end subroutine write_summary
+
+   !> Before any work: creates the directory of prefix, refuses to replace
+   !> the results of another run (<prefix>_history.dat, _summary.dat, .h5)
+   !> unless deck%overwrite, and checks that <prefix>_history.dat can be
+   !> written (an existing file is opened for appending and left as it is; a
+   !> new one is created and deleted). Messages name the deck, &output and
+   !> prefix.
+   subroutine check_output(deck, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< effective deck
+      integer, intent(out) :: stat                  !< 0 when the run may write its results
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      character(len=msg_len) :: iomsg, head
+      character(len=len(deck%prefix) + len(history_suffix)) :: path(3)
+      integer :: u, i, nfile
+      logical :: exists
+
+      stat = 0
+      head = trim(deck%source)//": &output: prefix = '"//trim(deck%prefix)//"': "
+      call make_parent_directory(deck%prefix)
+      path(1) = trim(deck%prefix)//history_suffix
+      path(2) = trim(deck%prefix)//summary_suffix
+      path(3) = trim(deck%prefix)//'.h5'
+      nfile = merge(3, 2, deck%hdf5)
+      results: do i = 1, nfile
+         inquire (file=trim(path(i)), exist=exists)
+         if (exists .and. .not. deck%overwrite) then
+            stat = 1
+            errmsg = trim(head)//' '//trim(path(i))//' exists, the results of another run: '// &
+               'choose another prefix, or set overwrite = .true. in &output (or run impact --overwrite) '// &
+               'to replace them'
+            return
+         end if
+      end do results
+
+      inquire (file=trim(path(1)), exist=exists)
+      if (exists) then
+         open (newunit=u, file=trim(path(1)), status='old', action='write', position='append', &
+               iostat=stat, iomsg=iomsg)
+         if (stat == 0) close (u, status='keep')
+      else
+         open (newunit=u, file=trim(path(1)), status='new', action='write', iostat=stat, iomsg=iomsg)
+         if (stat == 0) close (u, status='delete')
+      end if
+      if (stat /= 0) errmsg = trim(head)//' cannot write '//trim(path(1))//': '//trim(iomsg)
+   end subroutine check_output
 
    !> mkdir -p of the directory part of a path prefix (nothing if none).
    subroutine make_parent_directory(prefix)

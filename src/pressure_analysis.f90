@@ -26,7 +26,7 @@ module pressure_analysis
       plate_strain_energy
    use newmark, only: newmark_t, newmark_init, newmark_predictor, newmark_update
    use global_matrix, only: global_matrix_t, global_copy, global_factor, global_solve, global_matvec
-   use analysis_support, only: assemble_load, open_result_file, centre_deflection
+   use analysis_support, only: assemble_load, check_result_files, open_result_file, centre_deflection
    use mesh, only: describe_equation
    implicit none
    private
@@ -125,6 +125,8 @@ contains
       integer :: u, step, nstep, peak
 
       report = ''
+      call check_result_files(deck, [character(len=24) :: '_pressure_history.dat'], stat, errmsg)
+      if (stat /= 0) return
       allocate (f(model%msh%neq))
       call assemble_load(deck, model, f, stat, errmsg)
       if (stat /= 0) return

@@ -59,8 +59,10 @@
 !>        E^2 h^8/((1-nu^2)^2 q^2 l^8) = -81/16 1/(u^7 tanh u) - 27/16 1/(u^6 sinh^2 u)
 !>                                        + 27/4 1/u^8 + 9/8 1/u^6;
 !>    strip_deflection solves Q(u) = Q for u by bisection and returns the
-!>    centre deflection w0/h = A + B. G has a cancellation of order u^-6,
-!>    so u is kept >= strip_u_min (Q >= about 0.1: 1e-10 relative accuracy).
+!>    centre deflection w0/h = A + B. G has a cancellation of order u^-6
+!>    (rounding error about 1e-16 u^-6 relative), so u is kept >=
+!>    strip_u_min = 0.05 (Q >= 0.13 simply supported, 0.65 built in); TWK's
+!>    printed forms cancel worse (u^-9).
 !>
 !> 4. Hertz impact of a rigid mass m at speed v on a rigid flat target
 !>    through the contact law F = k alpha^1.5 (K. L. Johnson, Contact

@@ -32,7 +32,8 @@ module static_analysis
    use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, global_copy, &
       global_matvec, global_factor, global_solve
    use mesh, only: nfe, ndof_node, describe_equation
-   use analysis_support, only: assemble_load, open_result_file, gather_element, centre_deflection
+   use analysis_support, only: assemble_load, check_result_files, open_result_file, gather_element, &
+      centre_deflection
    implicit none
    private
    public :: static_result_t, static_solve, internal_force, run_static
@@ -189,6 +190,8 @@ contains
       real(dp) :: de(ndof_node)
 
       report = ''
+      call check_result_files(deck, [character(len=16) :: '_static.dat', '_deflection.dat'], stat, errmsg)
+      if (stat /= 0) return
       allocate (f(model%msh%neq))
       call assemble_load(deck, model, f, stat, errmsg)
       if (stat /= 0) return

@@ -1,0 +1,19 @@
+# Model choices of issue 8: Whitney's shear correction factors, the domain
+# 'auto' picks, the symmetry check, the scene report's estimate against
+# runs, graded against uniform meshes.
+#
+#   make validate-model   build ./impact, run validation/model_choice/run.py
+#                         (decks and outputs in build/validation/model_choice),
+#                         write docs/validation/model_choice.md and
+#                         docs/validation/model_choice/grading.{dat,png}.
+#                         Fails (exit 1) when a check is outside its
+#                         tolerance; the report is written either way.
+#                         About 3 minutes of one core.
+
+PYTHON ?= python3
+
+.PHONY: validate-model
+
+validate-model: setup impact
+	@mkdir -p build/validation/model_choice docs/validation/model_choice
+	$(PYTHON) validation/model_choice/run.py

@@ -1,0 +1,374 @@
+#!/usr/bin/env python3
+"""Validation of the model choices of issue 8 (make validate-model).
+
+Runs ./impact on decks written to build/validation/model_choice/, and writes
+docs/validation/model_choice.md with the data and the figure of
+docs/validation/model_choice/ (grading.dat, grading.png by grading.gp).
+
+Sections: 1 Whitney's shear correction factors against the paper's Table 1;
+2 the domain 'auto' picks for a set of scenes; 3 the symmetry check (a
+cross-ply plate on the quarter, the half and the full plate, centred and off
+the centre; the paper's layup on the full plate against the averaged
+quarter); 4 the static estimate of the scene report against runs, for
+impactors of one energy and different masses, and theory = 'auto'; 5 graded
+against uniform meshes, the error of the peak force and of the largest
+deflection against the number of equations.
+
+Checks with tolerances (the script exits 1 if one fails, after writing the
+report): Whitney within 1.5e-3 of Table 1; the domains as expected; the
+symmetric cases equal to 1e-6 of the peak force and deflection.
+Usage: python3 validation/model_choice/run.py   (from the repository root)
+"""
+import os
+import re
+import subprocess
+import sys
+import time
+
+ROOT = os.getcwd()
+IMPACT = os.path.join(ROOT, 'impact')
+WORK = os.path.join(ROOT, 'build', 'validation', 'model_choice')
+DOCS = os.path.join(ROOT, 'docs', 'validation')
+FIGS = os.path.join(DOCS, 'model_choice')
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+PAPER = '0, 45, 0, -45, 0, 0, 45, 0, -45, 0, 0, -45, 0, 45, 0, 0, -45, 0, 45, 0'
+CROSS = '0, 90, 0, 90, 90, 0, 90, 0'
+ANGLE = '45, -45, 45, -45'
+# Table 1 of the paper and the tolerance of the comparison (tests/test_shear_correction.pf)
+TABLE1 = (0.864, 0.879)
+TABLE1_TOL = 1.5e-3
+SYM_TOL = 1.0e-6
+
+failures = []
+
+
+def deck(name, groups):
+    """Writes build/validation/model_choice/<name>.nml; groups: {group: 'text'}."""
+    path = os.path.join(WORK, name + '.nml')
+    with open(path, 'w') as f:
+        f.write('! written by validation/model_choice/run.py\n')
+        for g, body in groups.items():
+            f.write('&%s %s /\n' % (g, body))
+        if 'output' not in groups:
+            f.write("&output prefix = '%s', overwrite = .true. /\n" % os.path.join(WORK, name))
+    return path
+
+
+def run(name, groups, check=False):
+    """Runs ./impact [--check] on a deck; returns (stdout+stderr, summary dict, wall s)."""
+    path = deck(name, groups)
+    args = [IMPACT, '--check', path] if check else [IMPACT, path]
+    t0 = time.time()
+    p = subprocess.run(args, capture_output=True, text=True)
+    wall = time.time() - t0
+    out = p.stdout + p.stderr
+    if p.returncode != 0:
+        sys.exit('validate-model: %s failed:\n%s' % (name, out))
+    summ = {}
+    sp = os.path.join(WORK, name + '_summary.dat')
+    if not check and os.path.exists(sp):
+        for line in open(sp):
+            if line.startswith('#') or '=' not in line:
+                continue
+            k, v = line.split('=', 1)
+            summ[k.strip()] = v.strip()
+    return out, summ, wall
+
+
+def scene_value(out, pattern):
+    m = re.search(pattern, out)
+    return m.group(1) if m else '?'
+
+
+def num(summ, key):
+    try:
+        return float(summ[key])
+    except (KeyError, ValueError):
+        return float('nan')
+
+
+def equations(out):
+    return int(scene_value(out, r'equations (\d+)'))
+
+
+def clamped(extra_mesh, extra=None, laminate="angles = %s" % PAPER, theory='nonlinear', t_end='1.6e-3'):
+    g = {'laminate': laminate,
+         'mesh': extra_mesh,
+         'boundary': "edges = 'clamped'",
+         'analysis': "theory = '%s', scheme = 'fast', t_end = %s" % (theory, t_end)}
+    if extra:
+        g.update(extra)
+    return g
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    os.makedirs(FIGS, exist_ok=True)
+    md = []
+    w = md.append
+    w('# Model choices: Whitney factors, domains, symmetry, scene estimate, graded meshes')
+    w('')
+    w('Written by `make validate-model` (validation/model_choice/run.py); the decks and')
+    w('outputs are in build/validation/model_choice/. Issue 8: model only what a scene')
+    w('requires. The README section "How the code decides" explains the rules.')
+    w('')
+
+    # ------------------------------------------------------------ 1 Whitney
+    out, _, _ = run('whitney', {'laminate': 'angles = %s' % PAPER}, check=True)
+    k4 = float(scene_value(out, r'k4 =\s*([0-9.]+)'))
+    k5 = float(scene_value(out, r'k5 =\s*([0-9.]+)'))
+    ok = abs(k4 - TABLE1[0]) <= TABLE1_TOL and abs(k5 - TABLE1[1]) <= TABLE1_TOL
+    if not ok:
+        failures.append('Whitney factors %.4f, %.4f against Table 1' % (k4, k5))
+    w('## 1. Shear correction factors by Whitney\'s method')
+    w('')
+    w('The paper\'s layup [0/45/0/-45/0]2s and lamina (Table 3), k4 and k5 not given')
+    w('(src/shear_correction.f90: cylindrical bending stress, the shear stress from')
+    w('equilibrium, energy equivalence with the ply\'s shear compliance):')
+    w('')
+    w('| factor | Whitney, k | k squared | Table 1 | difference of k |')
+    w('|---|---|---|---|---|')
+    w('| k4 (yz) | %.4f | %.4f | %.3f | %+.4f |' % (k4, k4 ** 2, TABLE1[0], k4 - TABLE1[0]))
+    w('| k5 (xz) | %.4f | %.4f | %.3f | %+.4f |' % (k5, k5 ** 2, TABLE1[1], k5 - TABLE1[1]))
+    w('')
+    w('Table 1 tabulates k, the square root of Whitney\'s energy factor: k matches to')
+    w('0.0005, k squared is 0.1 away. Check: |k - Table 1| <= %.1e (three printed' % TABLE1_TOL)
+    w('decimals, and G13 = 5.5 GPa printed with two digits moves k by 0.00095): %s.'
+      % ('passed' if ok else 'FAILED'))
+    w('')
+
+    # ------------------------------------------------------------ 2 domains
+    w('## 2. The domain `auto` picks')
+    w('')
+    w('`./impact --check` on each scene (clamped edges); the reason is the scene report\'s.')
+    w('')
+    w('| layup | impact point (m) | average_bend_twist | domain | reason |')
+    w('|---|---|---|---|---|')
+    scenes = [
+        ('paper', PAPER, 0, 0, False, 'full'),
+        ('paper, averaged', PAPER, 0, 0, True, 'quarter'),
+        ('paper, averaged, off-centre', PAPER, 0.03, 0, True, 'half'),
+        ('cross-ply [0/90/0/90]s', CROSS, 0, 0, False, 'quarter'),
+        ('cross-ply', CROSS, 0.03, 0, False, 'half'),
+        ('cross-ply', CROSS, 0, 0.02, False, 'half'),
+        ('cross-ply', CROSS, 0.03, 0.02, False, 'full'),
+        ('angle-ply [45/-45]2', ANGLE, 0, 0, True, 'full'),
+    ]
+    for i, (label, ang, x0, y0, avg, expect) in enumerate(scenes):
+        out, _, _ = run('domain_%d' % i, {'laminate': 'angles = %s' % ang,
+                                          'impactor': 'x0 = %g, y0 = %g' % (x0, y0),
+                                          'mesh': 'average_bend_twist = %s' % ('.true.' if avg else '.false.')},
+                        check=True)
+        reason = scene_value(out, r'scene: domain\s+(.*)')
+        got = reason.split(':')[0].split(',')[0].strip()
+        if got != expect:
+            failures.append('domain of %s: %s, expected %s' % (label, got, expect))
+        w('| %s | (%g, %g) | %s | **%s** | %s |' % (label, x0, y0, '.true.' if avg else '.false.', got,
+                                                     reason.replace('|', '/')))
+    w('')
+
+    # ------------------------------------------------------------ 3 symmetry
+    w('## 3. Symmetry check')
+    w('')
+    w('Clamped, 243 g at 3 m/s, nonlinear, scheme \'fast\', cr2 = 1e-20 (the eq. (18)')
+    w('iteration converged to rounding, so that only the model differs), 1.6 ms.')
+    w('The same element size everywhere: quarter 9 x 6, half 18 x 6, full 18 x 12.')
+    w('')
+    w('| case | domain | equations | peak force (N) | time of peak (us) | max deflection (mm) | max back-face strain | cpu (s) |')
+    w('|---|---|---|---|---|---|---|---|')
+    sym = {}
+    cases = [
+        ('cross_quarter', 'cross-ply, centre', 'quarter', 9, 6, 0.0, CROSS),
+        ('cross_half', 'cross-ply, centre', 'half', 18, 6, 0.0, CROSS),
+        ('cross_full', 'cross-ply, centre', 'full', 18, 12, 0.0, CROSS),
+        ('cross_off_half', 'cross-ply, x0 = 0.03 m', 'half', 18, 6, 0.03, CROSS),
+        ('cross_off_full', 'cross-ply, x0 = 0.03 m', 'full', 18, 12, 0.03, CROSS),
+    ]
+    for name, label, dom, nx, ny, x0, ang in cases:
+        out, s, _ = run('sym_' + name, clamped("nx = %d, ny = %d, domain = '%s'" % (nx, ny, dom),
+                                               {'impactor': 'x0 = %g' % x0}, laminate='angles = %s' % ang)
+                        | {'analysis': "theory = 'nonlinear', scheme = 'fast', cr2 = 1.0e-20, t_end = 1.6e-3"})
+        sym[name] = s
+        w('| %s | %s | %d | %.3f | %.1f | %.5f | %.5e | %.2f |' % (
+            label, dom, equations(out), num(s, 'peak_force_N'), num(s, 'time_of_peak_us'),
+            num(s, 'max_deflection_mm'), num(s, 'max_strain_y_back'), num(s, 'cpu_s')))
+    w('')
+    for a, b in [('cross_quarter', 'cross_full'), ('cross_half', 'cross_full'), ('cross_off_half', 'cross_off_full')]:
+        for key in ('peak_force_N', 'max_deflection_mm', 'max_strain_y_back'):
+            ra, rb = num(sym[a], key), num(sym[b], key)
+            if not abs(ra - rb) <= SYM_TOL * abs(rb):
+                failures.append('symmetry %s against %s: %s %g, %g' % (a, b, key, ra, rb))
+    w('Check: quarter and half against full, and the off-centre half against the full')
+    w('plate, agree to %.0e of the peak force, the deflection and the strain: %s.' % (
+        SYM_TOL, 'passed' if not any('symmetry' in f for f in failures) else 'FAILED'))
+    w('The cost grows with the domain: the quarter is the cheapest way to the same answer.')
+    w('')
+    w('**The paper\'s averaging (section 3.1, its Fig. 5).** The paper\'s layup has')
+    w('D16/D11 = 0.038 and D26/D22 = 0.17; `auto` models it on the full plate unless')
+    w('`average_bend_twist = .true.`. How much the averaged quarter differs from the full')
+    w('plate with its D16, D26 (same element size):')
+    w('')
+    w('| theory | model | equations | peak force (N) | time of peak (us) | max deflection (mm) | max back-face strain | cpu (s) |')
+    w('|---|---|---|---|---|---|---|---|')
+    for theory in ('linear', 'nonlinear'):
+        res = {}
+        for name, mesh in (('quarter averaged', "nx = 9, ny = 6, domain = 'quarter'"),
+                           ('full, D16 and D26 kept', "nx = 18, ny = 12, domain = 'full'")):
+            out, s, _ = run('avg_%s_%s' % (theory, name.split()[0].rstrip(',')), clamped(mesh, theory=theory))
+            res[name] = s
+            w('| %s | %s | %d | %.2f | %.1f | %.4f | %.4e | %.2f |' % (
+                theory, name, equations(out), num(s, 'peak_force_N'), num(s, 'time_of_peak_us'),
+                num(s, 'max_deflection_mm'), num(s, 'max_strain_y_back'), num(s, 'cpu_s')))
+        q, f = res['quarter averaged'], res['full, D16 and D26 kept']
+        w('| %s | quarter - full | | %+.2f %% | | %+.2f %% | %+.2f %% | |' % (
+            theory, 100 * (num(q, 'peak_force_N') / num(f, 'peak_force_N') - 1),
+            100 * (num(q, 'max_deflection_mm') / num(f, 'max_deflection_mm') - 1),
+            100 * (num(q, 'max_strain_y_back') / num(f, 'max_strain_y_back') - 1)))
+    w('')
+
+    # ------------------------------------------------------------ 4 estimate
+    w('## 4. The scene report\'s static estimate against runs')
+    w('')
+    w('The paper\'s clamped plate (averaged quarter 9 x 6), impactors of the same energy')
+    w('1.0935 J (243 g at 3 m/s) but of different masses. The estimate is the energy')
+    w('balance of the scene report (no plate inertia); the runs are linear and nonlinear.')
+    w('')
+    w('| impactor (kg) | velocity (m/s) | mass ratio | estimated w/h | linear run w/h | nonlinear run w/h | estimated F (N) | linear run F (N) | nonlinear run F (N) |')
+    w('|---|---|---|---|---|---|---|---|---|')
+    h = 0.0027
+    for m in (0.0243, 0.0608, 0.243, 0.972):
+        v = (2 * 1.0935 / m) ** 0.5
+        row = {}
+        for theory in ('linear', 'nonlinear'):
+            out, s, _ = run('est_%g_%s' % (m, theory), clamped(
+                "nx = 9, ny = 6, domain = 'quarter'", {'impactor': 'mass = %g, velocity = %.6g' % (m, v)},
+                theory=theory, t_end='%g' % max(1.6e-3, 1.6e-3 * (m / 0.243) ** 0.5)))
+            row[theory] = s
+            est_wh = float(scene_value(out, r'w/h =\s*([0-9.]+)'))
+            est_f = float(scene_value(out, r'energy balance\s+F =\s*([0-9.E+-]+)'))
+            ratio = float(scene_value(out, r'impactor/plate = .* kg =\s*([0-9.]+)'))
+        w('| %g | %.3f | %.2f | %.3f | %.3f | %.3f | %.0f | %.0f | %.0f |' % (
+            m, v, ratio, est_wh, num(row['linear'], 'max_deflection_mm') * 1e-3 / h,
+            num(row['nonlinear'], 'max_deflection_mm') * 1e-3 / h, est_f,
+            num(row['linear'], 'peak_force_N'), num(row['nonlinear'], 'peak_force_N')))
+    w('')
+    w('**theory = \'auto\'.** Below the threshold w/h = 0.2 `auto` runs the linear theory;')
+    w('the table compares that choice with the nonlinear run (243 g, slower impacts):')
+    w('')
+    w('| velocity (m/s) | estimated w/h | auto chose | linear: peak F (N), w max (mm) | nonlinear: peak F (N), w max (mm) | difference of F, w |')
+    w('|---|---|---|---|---|---|')
+    for v in (0.3, 0.6, 1.0, 3.0):
+        res = {}
+        for theory in ('auto', 'linear', 'nonlinear'):
+            out, s, _ = run('auto_%g_%s' % (v, theory), clamped(
+                "nx = 9, ny = 6, domain = 'quarter'", {'impactor': 'velocity = %g' % v}, theory=theory,
+                t_end='2.0e-3'), check=(theory == 'auto'))
+            res[theory] = (out, s)
+        out = res['auto'][0]
+        chose = scene_value(out, r'scene: theory\s+(\w+)')
+        est_wh = float(scene_value(out, r'w/h =\s*([0-9.]+)'))
+        lin, nl = res['linear'][1], res['nonlinear'][1]
+        warned = 'warning: the linear run reached' in res['linear'][0]
+        w('| %g | %.3f | %s | %.1f, %.4f%s | %.1f, %.4f | %+.2f %%, %+.2f %% |' % (
+            v, est_wh, chose, num(lin, 'peak_force_N'), num(lin, 'max_deflection_mm'),
+            ' (warned)' if warned else '', num(nl, 'peak_force_N'), num(nl, 'max_deflection_mm'),
+            100 * (num(lin, 'peak_force_N') / num(nl, 'peak_force_N') - 1),
+            100 * (num(lin, 'max_deflection_mm') / num(nl, 'max_deflection_mm') - 1)))
+    w('')
+    w('"(warned)": the linear run ended with the warning that its deflection needed the')
+    w('nonlinear theory.')
+    w('')
+
+    # ------------------------------------------------------------ 5 grading
+    w('## 5. Graded against uniform meshes')
+    w('')
+    w('The paper\'s clamped scene (243 g at 3 m/s, nonlinear, averaged quarter, scheme')
+    w('\'fast\', 1.6 ms). Reference: the uniform 24 x 16 quarter (3.1 mm elements).')
+    w('Errors of the peak force and of the largest deflection against the number of')
+    w('equations; figure: docs/validation/model_choice/grading.png.')
+    w('')
+    meshes = [('uniform', 1.0, n) for n in ((3, 2), (4, 3), (6, 4), (9, 6), (12, 8), (18, 12))]
+    meshes += [('graded 1.25', 1.25, n) for n in ((3, 2), (4, 3), (6, 4), (9, 6), (12, 8))]
+    meshes += [('graded 1.5', 1.5, n) for n in ((3, 2), (4, 3), (6, 4), (9, 6))]
+    out, ref, _ = run('grade_ref', clamped("nx = 24, ny = 16, domain = 'quarter'"))
+    fref, wref = num(ref, 'peak_force_N'), num(ref, 'max_deflection_mm')
+    neq_ref = equations(out)
+    w('| mesh | nx x ny | grading | equations | element at the impact point (mm) | a/element | peak force (N) | error | max deflection (mm) | error | max eq. (19) iterations | unconverged steps | cpu (s) |')
+    w('|---|---|---|---|---|---|---|---|---|---|---|---|---|')
+    w('| reference | 24 x 16 | 1 | %d | 3.13 x 3.13 | %s | %.2f | | %.5f | | %s | %s | %s |' % (
+        neq_ref, scene_value(out, r'a/element =\s*([0-9.]+)'), fref, wref, ref.get('max_nonlinear_iter', '?'),
+        ref.get('unconverged_steps', '?'), ref.get('cpu_s', '?')))
+    if num(ref, 'unconverged_steps') != 0:
+        failures.append('the grading reference did not converge')
+    dat = ['# family grading nx ny equations peak_force_N max_deflection_mm force_error_pct deflection_error_pct '
+           'converged(1/0)']
+    results = []
+    for fam, g, (nx, ny) in meshes:
+        name = 'grade_%s_%d_%d' % (fam.replace(' ', '_'), nx, ny)
+        out, s, _ = run(name, clamped("nx = %d, ny = %d, domain = 'quarter', grading = %g" % (nx, ny, g)))
+        neq = equations(out)
+        f, wm = num(s, 'peak_force_N'), num(s, 'max_deflection_mm')
+        ef, ew = 100 * (f / fref - 1), 100 * (wm / wref - 1)
+        ex = float(scene_value(out, r'impact point\s+([0-9.E+-]+) x'))
+        ey = float(scene_value(out, r'impact point\s+[0-9.E+-]+ x\s+([0-9.E+-]+) m'))
+        conv = num(s, 'unconverged_steps') == 0
+        w('| %s | %d x %d | %g | %d | %.2f x %.2f | %s | %.2f | %+.2f %% | %.5f | %+.2f %% | %s | %s | %s |' % (
+            fam, nx, ny, g, neq, 1e3 * ex, 1e3 * ey, scene_value(out, r'a/element =\s*([0-9.]+)'), f, ef, wm, ew,
+            s.get('max_nonlinear_iter', '?'), s.get('unconverged_steps', '?'), s.get('cpu_s', '?')))
+        dat.append('"%s" %g %d %d %d %.7e %.7e %.5f %.5f %d' % (fam, g, nx, ny, neq, f, wm, ef, ew, conv))
+        results.append((fam, neq, ef, ew, conv))
+    with open(os.path.join(FIGS, 'grading.dat'), 'w') as fdat:
+        fdat.write('\n'.join(dat) + '\n')
+    subprocess.run(['gnuplot', '-e', "dir='%s'" % FIGS, os.path.join(HERE, 'grading.gp')], check=True)
+    w('')
+    w('![error against equations](model_choice/grading.png)')
+    w('')
+    w('Equations from which every finer mesh of the family stays within the error (- : none of')
+    w('those run does):')
+    w('')
+    w('| family | peak force within 1 % | within 0.5 % | max deflection within 1 % | within 0.5 % |')
+    w('|---|---|---|---|---|')
+    for fam in ('uniform', 'graded 1.25', 'graded 1.5'):
+        rows = sorted((r for r in results if r[0] == fam and r[4]), key=lambda r: r[1])
+        cells = []
+        for col in (2, 3):
+            for tol in (1.0, 0.5):
+                need = '-'
+                for i, r in enumerate(rows):
+                    if all(abs(q[col]) <= tol for q in rows[i:]):
+                        need = str(r[1])
+                        break
+                cells.append(need)
+        w('| %s | %s | %s | %s | %s |' % (fam, cells[0], cells[1], cells[2], cells[3]))
+    w('')
+    w('The deflection converges from below and grading reaches a given error with fewer')
+    w('equations. The peak force does not converge monotonically: the force is applied at a')
+    w('node, and under a point force the Mindlin plate\'s deflection grows without bound')
+    w('(logarithmically) as the elements there shrink, so a mesh finer at the impact point')
+    w('than the reference (a/element larger, strong grading) is locally more compliant and')
+    w('its peak force falls below the reference\'s. The reference itself is not converged in')
+    w('that sense: its error can only be judged for meshes no finer than it at the impact')
+    w('point. The eq. (19) iteration also needs more iterations as the element at the impact')
+    w('point shrinks (column "max eq. (19) iterations"); the scene report warns when the')
+    w('element is smaller than the contact diameter (a/element > 0.5).')
+    w('')
+
+    w('## Checks')
+    w('')
+    if failures:
+        for f in failures:
+            w('- FAILED: ' + f)
+    else:
+        w('All checks passed (Whitney against Table 1, the domains `auto` picks, the symmetry check).')
+    w('')
+    with open(os.path.join(DOCS, 'model_choice.md'), 'w') as f:
+        f.write('\n'.join(md))
+    print('written: docs/validation/model_choice.md, docs/validation/model_choice/grading.png')
+    if failures:
+        print('validate-model: %d check(s) failed' % len(failures), file=sys.stderr)
+        sys.exit(1)
+
+
+if __name__ == '__main__':
+    main()
