@@ -1,16 +1,69 @@
-# The paper's figures (issue 4): docs/figures/fig05.png ... fig13.png (+ PDF)
-# and the numbers of docs/PAPER.md.
+# The paper's figures (issue 4): docs/figures/fig05.png ... fig13.png (and
+# .pdf) and the numbers of docs/PAPER.md.
 #
-#   make figures    build ./impact and build/contact_update, run every deck of
-#                   input/paper/ (two at a time; results in out/paper/), run
-#                   the contact-update experiment, draw postproc/fig*.gp and
-#                   write docs/PAPER.md from docs/PAPER.md.in
-#                   (tools/paper-numbers). About 2 minutes on 2 cores.
+#   make figures       build ./impact and build/contact_update; run every deck
+#                      of input/paper/ (and tolerance/) with ./impact and every
+#                      deck of input/paper/update/ with build/contact_update,
+#                      FIG_JOBS at a time (results and logs in out/paper/);
+#                      draw postproc/figNN.gp into docs/figures/; write
+#                      docs/PAPER.md from docs/PAPER.md.in (tools/paper-numbers).
+#                      About 3 minutes on 2 free cores; a rerun redoes only the
+#                      runs whose deck or program changed.
+#   make figures-clean remove out/paper/ (the next `make figures` reruns all)
+#
+# build/contact_update (tools/contact_update.f90) is the experiment of
+# docs/PAPER.md on the update of the assumed contact force: the paper's
+# literal F_assum <- F_cont against this code's bracketed update.
 
 CONTACT_UPDATE := $(BUILD)/contact_update
 FIG_JOBS       ?= 2
+FIG_OUT        := out/paper
+FIG_NUMBERS    := 05 06 07 08 09 10 11 12 13
+FIG_SCRIPTS    := $(patsubst %,postproc/fig%.gp,$(FIG_NUMBERS))
 
-.PHONY: figures
+# the full-plate and long runs first, so that two jobs finish together
+FIG_DECKS      := $(sort $(wildcard input/paper/fig05_full_*.nml)) \
+                  $(filter-out input/paper/fig05_full_%,$(sort $(wildcard input/paper/*.nml))) \
+                  $(sort $(wildcard input/paper/tolerance/*.nml))
+FIG_RUNS       := $(patsubst input/paper/%.nml,$(FIG_OUT)/%_summary.dat,$(FIG_DECKS))
+UPDATE_DECKS   := $(sort $(wildcard input/paper/update/*.nml))
+UPDATE_RUNS    := $(foreach u,fixed bracket,\
+                    $(patsubst input/paper/update/%.nml,$(FIG_OUT)/update/%_$(u).txt,$(UPDATE_DECKS)))
+
+.PHONY: figures figures-runs figures-clean
 
 $(CONTACT_UPDATE): tools/contact_update.f90 $(LIB)
 	$(FC_ALL) $< $(LIB) $(LAPACK) -o $@
+
+figures: setup impact $(CONTACT_UPDATE)
+	@$(MAKE) --no-print-directory -j$(FIG_JOBS) figures-runs
+	@mkdir -p docs/figures
+	@for n in $(FIG_NUMBERS); do \
+	    for fmt in png pdf; do \
+	        gnuplot -e "fmt='$$fmt'; run='$(FIG_OUT)'; figdir='docs/figures'" postproc/fig$$n.gp || exit 1; \
+	    done; echo "figure written: docs/figures/fig$$n.png, .pdf"; \
+	done
+	python3 tools/paper-numbers --runs $(FIG_OUT) docs/PAPER.md.in docs/PAPER.md
+
+figures-runs: $(FIG_RUNS) $(UPDATE_RUNS)
+
+# one ./impact run per deck; its prefix is out/paper/<deck name> (a run that
+# fails leaves its log and no summary, and stops make)
+$(FIG_OUT)/%_summary.dat: input/paper/%.nml impact
+	@mkdir -p $(dir $@)
+	@echo "impact $<"
+	@./impact $< > $(FIG_OUT)/$*.log 2>&1 || { rm -f $@; tail -3 $(FIG_OUT)/$*.log; exit 1; }
+
+# the update experiment: key = value lines on standard output
+$(FIG_OUT)/update/%_fixed.txt: input/paper/update/%.nml $(CONTACT_UPDATE)
+	@mkdir -p $(dir $@)
+	@echo "contact_update $< fixed"
+	@$(CONTACT_UPDATE) $< fixed > $@.tmp && mv $@.tmp $@
+
+$(FIG_OUT)/update/%_bracket.txt: input/paper/update/%.nml $(CONTACT_UPDATE)
+	@mkdir -p $(dir $@)
+	@echo "contact_update $< bracket"
+	@$(CONTACT_UPDATE) $< bracket > $@.tmp && mv $@.tmp $@
+
+figures-clean:
+	rm -rf $(FIG_OUT)

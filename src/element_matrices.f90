@@ -255,13 +255,16 @@ contains
 
    !> Strain energy of the element, U = 1/2 int (eps0 N + kappa M + gamma Q),
    !> von Karman strains when nonlinear is true.
-   pure function element_strain_energy(lmt, geo, de, nonlinear) result(u)
+   pure function element_strain_energy(lmt, geo, de, nonlinear, stabilization) result(u)
       type(laminate_t), intent(in) :: lmt           !< laminate
       type(element_geometry_t), intent(in) :: geo   !< element geometry
       real(dp), intent(in) :: de(nfe_elem)          !< element displacements
       logical, intent(in) :: nonlinear              !< von Karman strains
+      !> fraction of 3x3 shear, as in element_stiffness (absent: 0), so that
+      !> the energy is the one of the stiffness used
+      real(dp), intent(in), optional :: stabilization
       real(dp) :: u
-      real(dp) :: eps0(3), kap(3), gam(2), wx, wy
+      real(dp) :: eps0(3), kap(3), gam(2), wx, wy, eps
       integer :: g, i
 
       u = 0.0_dp
@@ -271,6 +274,8 @@ contains
          u = u + 0.5_dp*geo%wj3(g)*( dot_product(eps0, matmul(lmt%a, eps0)) &
                + 2.0_dp*dot_product(eps0, matmul(lmt%b, kap)) + dot_product(kap, matmul(lmt%d, kap)) )
       end do membrane_bending
+      eps = 0.0_dp
+      if (present(stabilization)) eps = stabilization
       transverse_shear: do g = 1, ngp_shear
          ! gamma = Bs d = (psi_y + w,y, psi_x + w,x), without forming Bs
          gam = 0.0_dp
@@ -278,8 +283,18 @@ contains
             gam(1) = gam(1) + geo%dx2(2, i, g)*de(5*i-2) + geo%phi2(i, g)*de(5*i)
             gam(2) = gam(2) + geo%dx2(1, i, g)*de(5*i-2) + geo%phi2(i, g)*de(5*i-1)
          end do
-         u = u + 0.5_dp*geo%wj2(g)*dot_product(gam, matmul(lmt%as, gam))
+         u = u + (1.0_dp - eps)*0.5_dp*geo%wj2(g)*dot_product(gam, matmul(lmt%as, gam))
       end do transverse_shear
+      if (eps > 0.0_dp) then
+         shear_full_rule: do g = 1, ngp_full
+            gam = 0.0_dp
+            do i = 1, nen
+               gam(1) = gam(1) + geo%dx3(2, i, g)*de(5*i-2) + geo%phi3(i, g)*de(5*i)
+               gam(2) = gam(2) + geo%dx3(1, i, g)*de(5*i-2) + geo%phi3(i, g)*de(5*i-1)
+            end do
+            u = u + eps*0.5_dp*geo%wj3(g)*dot_product(gam, matmul(lmt%as, gam))
+         end do shear_full_rule
+      end if
    end function element_strain_energy
 
    !> In-plane strains (eps_x, eps_y, gamma_xy) at depth z and 3x3 Gauss

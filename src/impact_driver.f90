@@ -528,16 +528,29 @@ contains
       w = d(model%eq_impact)
    end function impact_deflection
 
-   !> Largest plate deflection |w| over the nodes (m).
+   !> Plate deflection for the von Karman check (m): the largest |w| when
+   !> the edges hold w somewhere; for a free plate the spread max w - min w,
+   !> which leaves out the rigid-body translation that strains nothing.
    pure function max_deflection(model, d) result(w_max)
       type(model_t), intent(in) :: model   !< model
       real(dp), intent(in) :: d(:)         !< global displacements
       real(dp) :: w_max
+      real(dp) :: w, w_hi, w_lo
+      logical :: held
       integer :: n
       w_max = 0.0_dp
+      w_hi = -huge(1.0_dp);  w_lo = huge(1.0_dp)
+      held = .false.
       nodes: do n = 1, model%msh%nnode
-         if (model%msh%eq(3, n) > 0) w_max = max(w_max, abs(d(model%msh%eq(3, n))))
+         if (model%msh%eq(3, n) > 0) then
+            w = d(model%msh%eq(3, n))
+            w_max = max(w_max, abs(w))
+            w_hi = max(w_hi, w);  w_lo = min(w_lo, w)
+         else
+            held = .true.
+         end if
       end do nodes
+      if (.not. held .and. w_hi >= w_lo) w_max = w_hi - w_lo
    end function max_deflection
 
    !> Kinetic energy of the whole plate, 1/2 V^T M V (J).
@@ -561,7 +574,7 @@ contains
       u = 0.0_dp
       elements: do e = 1, model%msh%nelem
          call gather(model%msh%elem_eq(:, e), d, de)
-         u = u + element_strain_energy(model%lmt, model%geo(e), de, model%nonlinear)
+         u = u + element_strain_energy(model%lmt, model%geo(e), de, model%nonlinear, model%shear_eps)
       end do elements
       u = u*model%msh%sym_factor
    end function plate_strain_energy

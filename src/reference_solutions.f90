@@ -20,7 +20,9 @@
 !>        M = diag(I0, I2, I2)   (I0 = P, I2 = I of eq. 9),
 !>    A44, A55 the shear stiffnesses with the correction factors included
 !>    (Abar of eq. 6). Loads: uniform q0: Q_mn = 16 q0/(pi^2 m n), m, n odd;
-!>    sinusoidal q0 sin(pi x/a) sin(pi y/b): Q_11 = q0 only.
+!>    sinusoidal q0 sin(pi x/a) sin(pi y/b): Q_11 = q0 only; a force P at
+!>    the centre: Q_mn = 4 P/(a b) sin(m pi/2) sin(n pi/2) (its FSDT series
+!>    diverges like log at the load point: shear; the CLPT series converges).
 !>    With S phi_k = omega_k^2 M phi_k (k = 1..3, phi_k^T M phi_k = 1), the
 !>    centre deflection under a load applied at t = 0 and held is
 !>        w_c(t) = sum_mn sum_k c_mnk (1 - cos omega_mnk t),
@@ -187,7 +189,7 @@ contains
             case (load_sinusoidal)
                qmn = q0
             case (load_central_force)
-               qmn = 4.0_dp*q0/(a*b)
+               qmn = 4.0_dp*q0/(a*b)*real((-1)**((m - 1)/2 + (n - 1)/2), dp)
             case default
                stat = 1
                errmsg = 'navier_fsdt: unknown load case'
@@ -235,8 +237,8 @@ contains
                qmn = 16.0_dp*q0/(pi**2*real(m*n, dp))
             case (load_sinusoidal)
                qmn = q0
-            case default
-               qmn = 4.0_dp*q0/(a*b)
+            case default   ! central force
+               qmn = 4.0_dp*q0/(a*b)*real((-1)**((m - 1)/2 + (n - 1)/2), dp)
             end select
             call navier_static(lmt, m*pi/a, n*pi/b, qmn, x, stat, errmsg)
             if (stat /= 0) return
@@ -358,8 +360,8 @@ contains
                qmn = 16.0_dp*q0/(pi**2*real(m*n, dp))
             case (load_sinusoidal)
                qmn = q0
-            case default
-               qmn = 4.0_dp*q0/(a*b)
+            case default   ! central force
+               qmn = 4.0_dp*q0/(a*b)*real((-1)**((m - 1)/2 + (n - 1)/2), dp)
             end select
             rm = real(m, dp)/a;  rn = real(n, dp)/b
             den = pi**4*(lmt%d(1,1)*rm**4 + 2.0_dp*(lmt%d(1,2) + 2.0_dp*lmt%d(3,3))*rm**2*rn**2 &

@@ -1,0 +1,391 @@
+#!/usr/bin/env python3
+"""make stress: ./impact far from the paper's scene (issue 6).
+
+Runs every scene of SCENES (below) through ./impact, at most --jobs at a
+time, and checks each one:
+  - no NaN or Inf anywhere in its history or summary;
+  - it completed, or it stopped with the diagnostic of a time step that did
+    not converge ("time step did not converge", naming the step, the time
+    and the residuals) -- never a silent wrong answer, never a crash or a
+    time-out;
+  - the energy balance (history column 13, E0 - (kinetic + strain +
+    contact energy)) stays within ENERGY_LOST of E0 = m v0^2/2, and no
+    energy is created beyond ENERGY_CREATED of E0.
+Each scene changes one thing of the paper's scene (the clamped 150 x 100 x
+2.7 mm plate, quarter 9 x 6 mesh, 243 g at 3 m/s, 2.5 us steps, nonlinear),
+except the few marked 'beyond', which combine extremes on purpose.
+
+Writes build/stress/results.dat (one row per scene, a '#' header naming
+each column and its unit) and docs/STABILITY.md from
+tools/stress/STABILITY.md.in (the table, the envelope, the worst energy
+error, the scenes that needed a fall-back). Exit status 0 when every scene
+passes, 1 otherwise.
+
+Usage: tools/stress/stress.py [--jobs N] [--only NAME...] [--impact PATH]
+Python 3 standard library only.
+"""
+
+import argparse
+import concurrent.futures
+import math
+import os
+import re
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+WORK = os.path.join(ROOT, 'build', 'stress')
+TEMPLATE = os.path.join(ROOT, 'tools', 'stress', 'STABILITY.md.in')
+REPORT = os.path.join(ROOT, 'docs', 'STABILITY.md')
+
+# The stated energy bound, as fractions of the impact energy E0 = m v0^2/2:
+# the integration may lose at most ENERGY_LOST and create at most
+# ENERGY_CREATED (docs/STABILITY.md, "The energy bound").
+ENERGY_LOST = 0.01
+ENERGY_CREATED = 0.001
+# Wall-clock limit of one scene (s): a scene that takes longer has hung.
+TIMEOUT_S = 900
+
+# The paper's scene: every scene starts from it.
+BASE = {
+    'plate': {'a': '0.15', 'b': '0.10', 'h': '0.0027'},
+    'impactor': {'mass': '0.243', 'velocity': '3.0'},
+    'mesh': {'nx': '9', 'ny': '6', 'domain': "'quarter'"},
+    'boundary': {'edges': "'clamped'"},
+    'analysis': {'theory': "'nonlinear'", 'dt': '2.5e-6', 't_end': '3.0e-3'},
+    'output': {'every': '1', 'hdf5': '.false.', 'overwrite': '.true.'},
+}
+
+
+def scene(name, group, what, changes, beyond=False):
+    """A scene: its name, its row group in the table, what it tests, and
+    the deck variables it changes ({'group': {'variable': 'value'}})."""
+    return {'name': name, 'group': group, 'what': what, 'changes': changes, 'beyond': beyond}
+
+
+SCENES = [
+    scene('paper', 'reference', "the paper's clamped plate (Fig. 10)", {}),
+    # -- time steps
+    scene('dt_0.05us', 'time step', 'dt = 0.05 us (4000 steps to 0.2 ms)',
+          {'analysis': {'dt': '5.0e-8', 't_end': '2.0e-4'}, 'output': {'every': '20'}}),
+    scene('dt_0.25us', 'time step', 'dt = 0.25 us (4000 steps to 1 ms)',
+          {'analysis': {'dt': '2.5e-7', 't_end': '1.0e-3'}, 'output': {'every': '20'}}),
+    scene('dt_10us', 'time step', 'dt = 10 us', {'analysis': {'dt': '1.0e-5'}}),
+    scene('dt_20us', 'time step', 'dt = 20 us', {'analysis': {'dt': '2.0e-5'}}),
+    scene('dt_20us_fixed_point', 'time step', "dt = 20 us, force_update = 'fixed_point'",
+          {'analysis': {'dt': '2.0e-5', 'force_update': "'fixed_point'"}}),
+    scene('dt_20us_fast', 'time step', "dt = 20 us, scheme = 'fast'",
+          {'analysis': {'dt': '2.0e-5', 'scheme': "'fast'"}}),
+    # -- impactor velocity and mass
+    scene('v_0.05', 'impactor', 'v0 = 0.05 m/s', {'impactor': {'velocity': '0.05'}}),
+    scene('v_50', 'impactor', 'v0 = 50 m/s', {'impactor': {'velocity': '50.0'}, 'analysis': {'t_end': '1.0e-3'}}),
+    scene('m_1g', 'impactor', 'm = 1 g', {'impactor': {'mass': '0.001'}, 'analysis': {'t_end': '1.0e-3'}}),
+    scene('m_20kg', 'impactor', 'm = 20 kg (10 ms)',
+          {'impactor': {'mass': '20.0'}, 'analysis': {'t_end': '1.0e-2'}, 'output': {'every': '4'}}),
+    # -- meshes
+    scene('mesh_1x1', 'mesh', 'quarter 1 x 1 (one element)', {'mesh': {'nx': '1', 'ny': '1'}}),
+    scene('mesh_72x48', 'mesh', "quarter 72 x 48 (the paper's 8 x 12 refined 6 times; 68640 equations), 10 steps",
+          {'mesh': {'nx': '72', 'ny': '48'}, 'analysis': {'t_end': '2.5e-5', 'scheme': "'fast'"}}),
+    scene('full_skyline', 'mesh', "full plate 18 x 12, skyline storage",
+          {'mesh': {'nx': '18', 'ny': '12', 'domain': "'full'"},
+           'analysis': {'storage': "'skyline'", 't_end': '1.0e-3'}}),
+    # -- plates
+    scene('thin_a_h_1000', 'plate', 'a/h = 1000 (h = 0.15 mm)', {'plate': {'h': '1.5e-4'}, 'analysis': {'t_end': '1.0e-3'}}),
+    scene('thick_a_h_5', 'plate', 'a/h = 5 (h = 30 mm)', {'plate': {'h': '0.03'}, 'analysis': {'t_end': '1.0e-3'}}),
+    scene('e1_e2_100', 'plate', 'E1/E2 = 100 (E2 = 1.2 GPa)', {'lamina': {'e2': '1.2e9'}}),
+    # -- edges and theory
+    scene('free', 'edges, theory', 'free edges', {'boundary': {'edges': "'free'"}}),
+    scene('ss_immovable', 'edges, theory', 'simply supported, immovable in-plane',
+          {'boundary': {'edges': "'simply_supported'", 'inplane': "'immovable'"}}),
+    scene('ss_movable', 'edges, theory', 'simply supported, movable in-plane',
+          {'boundary': {'edges': "'simply_supported'", 'inplane': "'movable'"}}),
+    scene('linear', 'edges, theory', 'linear theory', {'analysis': {'theory': "'linear'"}}),
+    scene('fast', 'edges, theory', "scheme = 'fast'", {'analysis': {'scheme': "'fast'"}}),
+    # -- repeated contacts
+    scene('free_heavy_20kg', 'contacts', 'free plate, 20 kg impactor (10 ms)',
+          {'boundary': {'edges': "'free'"}, 'impactor': {'mass': '20.0'},
+           'analysis': {'t_end': '1.0e-2'}, 'output': {'every': '4'}}),
+    scene('free_light_20g', 'contacts', 'free plate, 20 g impactor, dt = 1 us (6 ms)',
+          {'boundary': {'edges': "'free'"}, 'impactor': {'mass': '0.02'},
+           'analysis': {'dt': '1.0e-6', 't_end': '6.0e-3'}, 'output': {'every': '4'}}),
+    scene('ss_100g', 'contacts', 'simply supported, 100 g impactor, dt = 1 us (6 ms)',
+          {'boundary': {'edges': "'simply_supported'"}, 'impactor': {'mass': '0.1'},
+           'analysis': {'dt': '1.0e-6', 't_end': '6.0e-3'}, 'output': {'every': '4'}}),
+    # -- the paper's Fig. 6(a): a 4 x 6 mesh and time steps from 10 us down
+    scene('fig6a_dt10us', 'Fig. 6(a)', '4 x 6, dt = 10 us', {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '1.0e-5'}}),
+    scene('fig6a_dt1us', 'Fig. 6(a)', '4 x 6, dt = 1 us', {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '1.0e-6'}}),
+    scene('fig6a_dt0.25us', 'Fig. 6(a)', '4 x 6, dt = 0.25 us',
+          {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '2.5e-7'}, 'output': {'every': '4'}}),
+    scene('fig6a_dt10us_fp', 'Fig. 6(a)', "4 x 6, dt = 10 us, force_update = 'fixed_point'",
+          {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '1.0e-5', 'force_update': "'fixed_point'"}}),
+    scene('fig6a_dt1us_fp', 'Fig. 6(a)', "4 x 6, dt = 1 us, force_update = 'fixed_point'",
+          {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '1.0e-6', 'force_update': "'fixed_point'"}}),
+    scene('fig6a_dt0.25us_fp', 'Fig. 6(a)', "4 x 6, dt = 0.25 us, force_update = 'fixed_point'",
+          {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '2.5e-7', 'force_update': "'fixed_point'"},
+           'output': {'every': '4'}}),
+    # -- beyond: extremes combined, on purpose past what the model covers
+    scene('beyond_thin_50', 'beyond', 'a/h = 1000 at 50 m/s (w/h ~ 100)',
+          {'plate': {'h': '1.5e-4'}, 'impactor': {'velocity': '50.0'}, 'analysis': {'t_end': '1.0e-3'}}, beyond=True),
+    scene('beyond_dt20_v50', 'beyond', 'dt = 20 us at 50 m/s',
+          {'analysis': {'dt': '2.0e-5'}, 'impactor': {'velocity': '50.0'}}, beyond=True),
+]
+
+
+def deck_text(sc, prefix):
+    """The deck of a scene: the paper's scene with the scene's changes."""
+    groups = {g: dict(v) for g, v in BASE.items()}
+    for g, changes in sc['changes'].items():
+        groups.setdefault(g, {}).update(changes)
+    groups['output']['prefix'] = "'%s'" % prefix
+    lines = ['! make stress (tools/stress/stress.py), scene %s: %s' % (sc['name'], sc['what'])]
+    for g, values in groups.items():
+        lines.append('&%s %s /' % (g, ', '.join('%s = %s' % kv for kv in values.items())))
+    return '\n'.join(lines) + '\n'
+
+
+def number(text):
+    """A float of a result file, NaN and Inf included (Fortran writes NaN,
+    Infinity, -Infinity); None when the text is not a number."""
+    t = text.strip()
+    try:
+        return float(t)
+    except ValueError:
+        pass
+    low = t.lower()
+    if low in ('nan', '+nan', '-nan'):
+        return math.nan
+    if low in ('infinity', '+infinity', 'inf', '+inf'):
+        return math.inf
+    if low in ('-infinity', '-inf'):
+        return -math.inf
+    # a Fortran field overflowed with stars also means a non-finite value
+    if t and set(t) <= set('*'):
+        return math.inf
+    return None
+
+
+def read_history(path):
+    """The rows of a history file (lists of floats) and whether any value is
+    not finite or not a number."""
+    rows, bad = [], False
+    with open(path, encoding='utf-8', errors='replace') as f:
+        for line in f:
+            if line.startswith('#') or not line.strip():
+                continue
+            vals = [number(w) for w in line.split()]
+            if any(v is None or not math.isfinite(v) for v in vals):
+                bad = True
+            rows.append(vals)
+    return rows, bad
+
+
+def read_summary(path):
+    """key = value lines of a summary file; numbers as floats, the rest as text."""
+    out = {}
+    with open(path, encoding='utf-8', errors='replace') as f:
+        for line in f:
+            if line.startswith('#') or '=' not in line:
+                continue
+            k, v = line.split('=', 1)
+            n = number(v)
+            out[k.strip()] = n if n is not None else v.strip()
+    return out
+
+
+def run_scene(sc, impact):
+    """Runs one scene; returns its row of results (a dict)."""
+    name = sc['name']
+    d = os.path.join(WORK, 'runs')
+    os.makedirs(d, exist_ok=True)
+    prefix = os.path.join(d, name)
+    deck = prefix + '.nml'
+    with open(deck, 'w') as f:
+        f.write(deck_text(sc, prefix))
+    for suffix in ('_history.dat', '_summary.dat'):
+        if os.path.exists(prefix + suffix):
+            os.remove(prefix + suffix)
+    start = time.time()
+    try:
+        p = subprocess.run([impact, deck], cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           stdin=subprocess.DEVNULL, text=True, timeout=TIMEOUT_S)
+        status, stderr = p.returncode, p.stderr
+    except subprocess.TimeoutExpired as e:
+        status, stderr = 'timeout', (e.stderr or b'').decode(errors='replace') if isinstance(e.stderr, bytes) else (e.stderr or '')
+    wall = time.time() - start
+    with open(prefix + '.err', 'w') as f:
+        f.write(stderr)
+    r = {'name': name, 'group': sc['group'], 'what': sc['what'], 'beyond': sc['beyond'],
+         'exit': status, 'wall_s': wall, 'problems': []}
+    hist = prefix + '_history.dat'
+    summ = prefix + '_summary.dat'
+    rows, bad = read_history(hist) if os.path.exists(hist) else ([], False)
+    s = read_summary(summ) if os.path.exists(summ) else {}
+    r['rows'] = len(rows)
+    r['nan'] = bad or any(isinstance(v, float) and not math.isfinite(v) for v in s.values())
+    e0 = s.get('initial_energy_J')
+    errs = [row[12] for row in rows if len(row) >= 13 and math.isfinite(row[12])]
+    if isinstance(e0, float) and e0 > 0 and errs:
+        r['lost'] = max(errs) / e0
+        r['created'] = max(0.0, -min(errs)) / e0
+    else:
+        r['lost'] = r['created'] = math.nan
+    for key in ('steps', 'peak_force_N', 'contacts', 'max_w_over_h', 'nonlinear_fallback_steps',
+                'contact_fallback_steps', 'warnings', 'plate_solves', 'cpu_s', 'unconverged_steps'):
+        r[key] = s.get(key, math.nan)
+    r['status'] = s.get('status', '(no summary)')
+    diag = [l for l in stderr.splitlines() if 'time step did not converge' in l]
+    r['diagnostic'] = diag[0] if diag else ''
+    # -- the verdict
+    if r['nan']:
+        r['problems'].append('NaN or Inf in the results')
+    if status == 'timeout':
+        r['problems'].append('no answer within %d s' % TIMEOUT_S)
+    elif status == 0:
+        if r['status'] != 'completed':
+            r['problems'].append('exit 0 but status %s' % r['status'])
+    elif status == 1 and diag and re.search(r'failed at step \d+', str(r['status'])) \
+            and re.search(r'ratio|residual|F_assum', diag[0]):
+        pass                        # stopped with the diagnostic: step, time, residuals
+    else:
+        r['problems'].append('exit status %s without the diagnostic of a step: %s'
+                             % (status, (stderr.strip().splitlines() or [''])[-1][:200]))
+    if not (r['lost'] <= ENERGY_LOST):
+        r['problems'].append('energy lost %.3g E0 > %.3g E0' % (r['lost'], ENERGY_LOST))
+    if not (r['created'] <= ENERGY_CREATED):
+        r['problems'].append('energy created %.3g E0 > %.3g E0' % (r['created'], ENERGY_CREATED))
+    if status == 0:
+        r['outcome'] = 'completed'
+    elif diag:
+        r['outcome'] = 'stopped: diagnostic'
+    else:
+        r['outcome'] = 'FAILED'
+    r['pass'] = not r['problems']
+    return r
+
+
+# results.dat columns: (key, unit, meaning, format)
+COLUMNS = [
+    ('name', '-', 'scene', '{}'),
+    ('pass', '-', '1 when the scene passed every check', '{:d}'),
+    ('exit', '-', 'exit status of ./impact', '{}'),
+    ('steps', '-', 'time steps done', '{:.0f}'),
+    ('nan', '-', '1 when a NaN or Inf was found', '{:d}'),
+    ('lost', 'E0', 'largest energy lost by the integration (history column 13 / E0)', '{:.3e}'),
+    ('created', 'E0', 'largest energy created (-column 13 / E0, 0 if never negative)', '{:.3e}'),
+    ('peak_force_N', 'N', 'peak contact force', '{:.5g}'),
+    ('contacts', '-', 'separate contacts', '{:.0f}'),
+    ('max_w_over_h', '-', 'largest plate deflection / thickness', '{:.3g}'),
+    ('nonlinear_fallback_steps', '-', 'steps where eq. (19) fell back to Anderson mixing', '{:.0f}'),
+    ('contact_fallback_steps', '-', 'steps where the contact iteration fell back', '{:.0f}'),
+    ('plate_solves', '-', 'back substitutions', '{:.0f}'),
+    ('cpu_s', 's', 'cpu time ./impact reports', '{:.2f}'),
+    ('wall_s', 's', 'wall-clock time of the run', '{:.1f}'),
+]
+
+
+def fmt(value, f):
+    if isinstance(value, bool):
+        value = int(value)
+    if isinstance(value, float) and not math.isfinite(value):
+        return 'nan'
+    try:
+        return f.format(value)
+    except (ValueError, TypeError):
+        return str(value)
+
+
+def write_results(results, path):
+    with open(path, 'w') as f:
+        f.write('# make stress: one row per scene (tools/stress/stress.py); E0 = m v0^2/2\n')
+        for i, (k, unit, meaning, _) in enumerate(COLUMNS, 1):
+            f.write('# %2d %-26s %-4s %s\n' % (i, k, unit, meaning))
+        f.write('# ' + ' '.join(k for k, *_ in COLUMNS) + '\n')
+        for r in results:
+            f.write(' '.join(fmt(r[k], fm) for k, _, _, fm in COLUMNS) + '\n')
+
+
+def md_table(results):
+    head = ('| scene | what changes | outcome | steps | NaN/Inf | energy lost (E0) | energy created (E0) '
+            '| peak F (N) | contacts | max w/h | fall-back steps (eq. 19 / contact) | cpu (s) | check |')
+    lines = [head, '|' + '---|' * (head.count('|') - 1)]
+    for r in results:
+        lines.append('| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s / %s | %s | %s |' % (
+            r['name'], r['what'], r['outcome'], fmt(r['steps'], '{:.0f}'), 'yes' if r['nan'] else 'no',
+            fmt(r['lost'], '{:.2e}'), fmt(r['created'], '{:.2e}'), fmt(r['peak_force_N'], '{:.4g}'),
+            fmt(r['contacts'], '{:.0f}'), fmt(r['max_w_over_h'], '{:.3g}'),
+            fmt(r['nonlinear_fallback_steps'], '{:.0f}'), fmt(r['contact_fallback_steps'], '{:.0f}'),
+            fmt(r['cpu_s'], '{:.1f}'), 'pass' if r['pass'] else 'FAIL: ' + '; '.join(r['problems'])))
+    return '\n'.join(lines)
+
+
+def write_report(results, elapsed, jobs):
+    with open(TEMPLATE, encoding='utf-8') as f:
+        text = f.read()
+    finite = [r for r in results if math.isfinite(r['lost'])]
+    worst_lost = max(finite, key=lambda r: r['lost']) if finite else None
+    worst_created = max(finite, key=lambda r: r['created']) if finite else None
+    fallbacks = [r for r in results if (r['nonlinear_fallback_steps'] or 0) > 0 or (r['contact_fallback_steps'] or 0) > 0]
+    stopped = [r for r in results if r['outcome'].startswith('stopped')]
+    failed = [r for r in results if not r['pass']]
+    subs = {
+        '@TABLE@': md_table(results),
+        '@NSCENES@': str(len(results)),
+        '@NPASS@': str(len(results) - len(failed)),
+        '@ELAPSED@': '%.0f' % elapsed,
+        '@JOBS@': str(jobs),
+        '@ENERGY_LOST@': '%g' % ENERGY_LOST,
+        '@ENERGY_CREATED@': '%g' % ENERGY_CREATED,
+        '@WORST_LOST@': ('%.2e E0 (%s)' % (worst_lost['lost'], worst_lost['name'])) if worst_lost else 'n/a',
+        '@WORST_CREATED@': ('%.2e E0 (%s)' % (worst_created['created'], worst_created['name'])) if worst_created else 'n/a',
+        '@FALLBACKS@': '\n'.join('- `%s` (%s): %s steps fell back to Anderson mixing, %s contact steps fell back'
+                                 % (r['name'], r['what'], fmt(r['nonlinear_fallback_steps'], '{:.0f}'),
+                                    fmt(r['contact_fallback_steps'], '{:.0f}')) for r in fallbacks) or '- none',
+        '@STOPPED@': '\n'.join('- `%s` (%s): %s' % (r['name'], r['what'], r['diagnostic'].replace('impact: error: ', ''))
+                               for r in stopped) or '- none',
+        '@FAILED@': '\n'.join('- `%s`: %s' % (r['name'], '; '.join(r['problems'])) for r in failed) or '- none',
+    }
+    for k, v in subs.items():
+        text = text.replace(k, v)
+    os.makedirs(os.path.dirname(REPORT), exist_ok=True)
+    with open(REPORT, 'w', encoding='utf-8') as f:
+        f.write(text)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    ap.add_argument('--jobs', type=int, default=2, help='scenes run at once (default 2, at most 2)')
+    ap.add_argument('--only', nargs='*', help='run only these scenes (no report written)')
+    ap.add_argument('--impact', default=os.path.join(ROOT, 'impact'), help='the program (default ./impact)')
+    args = ap.parse_args(argv)
+    jobs = max(1, min(args.jobs, 2))
+    scenes = [s for s in SCENES if not args.only or s['name'] in args.only]
+    if not os.access(args.impact, os.X_OK):
+        sys.exit('stress: %s is not there: make impact' % args.impact)
+    os.makedirs(WORK, exist_ok=True)
+    start = time.time()
+    results = {}
+    # the largest scenes first, so that the two workers finish together
+    order = sorted(scenes, key=lambda s: 0 if 'mesh_72' in s['name'] else 1)
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = {pool.submit(run_scene, s, args.impact): s['name'] for s in order}
+        for fu in concurrent.futures.as_completed(futures):
+            r = fu.result()
+            results[r['name']] = r
+            print('stress: %-22s %-20s lost %-9s created %-9s %s' % (
+                r['name'], r['outcome'], fmt(r['lost'], '{:.2e}'), fmt(r['created'], '{:.2e}'),
+                'pass' if r['pass'] else 'FAIL: ' + '; '.join(r['problems'])), flush=True)
+    elapsed = time.time() - start
+    ordered = [results[s['name']] for s in scenes]
+    write_results(ordered, os.path.join(WORK, 'results.dat'))
+    npass = sum(r['pass'] for r in ordered)
+    print('stress: %d scenes, %d passed, %d failed, %.0f s; results in %s'
+          % (len(ordered), npass, len(ordered) - npass, elapsed, os.path.join(WORK, 'results.dat')))
+    if not args.only:
+        write_report(ordered, elapsed, jobs)
+        print('stress: report %s' % REPORT)
+    return 0 if npass == len(ordered) else 1
+
+
+if __name__ == '__main__':
+    sys.exit(main())
