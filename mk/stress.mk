@@ -5,7 +5,7 @@
 #                   stopped with a diagnostic, energy within the stated bound)
 #                   and write build/stress/results.dat and docs/STABILITY.md
 #                   from tools/stress/STABILITY.md.in. Exit status 1 when a
-#                   scene fails a check. About 5 minutes on 2 shared cores.
+#                   scene fails a check. About 3 to 4 minutes on 2 shared cores.
 #   make stress STRESS_JOBS=1   one scene at a time
 
 STRESS_JOBS ?= 2

@@ -366,7 +366,7 @@ contains
    !> A step whose iterations did not converge: the run stops here with the
    !> diagnostic (the step and time follow from fail_in_run).
    subroutine fail_to_converge(diagnostic)
-      character(len=*), intent(in) :: diagnostic
+      character(len=*), intent(in) :: diagnostic   !< which iteration, its residuals against its tolerance
       summary%unconverged_steps = summary%unconverged_steps + 1
       call fail_in_run('time step did not converge: '//diagnostic)
    end subroutine fail_to_converge
@@ -382,8 +382,8 @@ contains
    !> kind (seen); counted in the summary. With &analysis stop_on_warning
    !> the run stops here, keeping what it computed.
    subroutine warn(seen, message)
-      logical, intent(inout) :: seen
-      character(len=*), intent(in) :: message
+      logical, intent(inout) :: seen               !< this kind of warning was given (set here)
+      character(len=*), intent(in) :: message      !< what happened
       write (error_unit, '(a,i0,a,es11.4,a)') 'impact: warning: step ', step, ' (t = ', t, ' s): '//message
       flush (error_unit)
       seen = .true.
@@ -393,7 +393,7 @@ contains
 
    !> A real in a short form for messages.
    pure function real_text(x) result(text)
-      real(dp), intent(in) :: x
+      real(dp), intent(in) :: x                    !< the number
       character(len=:), allocatable :: text
       character(len=24) :: buf
       write (buf, '(g0.4)') x

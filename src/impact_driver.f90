@@ -495,14 +495,19 @@ contains
       integer, intent(in) :: iterations           !< iterations made
       character(len=:), allocatable :: text
       character(len=320) :: buf
-      real(dp), parameter :: collapsed = 8.0_dp*epsilon(1.0_dp)   ! relative width of a bracket at rounding
-      write (buf, '(a,i0,a,es12.5,a,es12.5,a,es10.3,a,es10.3,a,es12.5,a,es12.5,a)') 'no convergence in ', &
+      real(dp), parameter :: collapsed = 1.0e-9_dp   ! relative width of a bracket that has collapsed
+      write (buf, '(a,i0,a,es12.5,a,es12.5,a,es10.3,a,es10.3,a,es16.9,a,es16.9,a)') 'no convergence in ', &
          iterations, ' iterations (max_contact_iter); F_assum = ', f_assumed, ' N, F_cont = ', f_contact, &
          ' N, |F_assum - F_cont| / F_assum = ', abs(f_assumed - f_contact)/max(abs(f_assumed), tiny(1.0_dp)), &
          ' against C_r1 = ', cr1, '; the root lies in [', br%lo, ', ', min(br%hi, huge(1.0_dp)), '] N'
       text = trim(buf)
-      if (br%has_lo .and. br%has_hi .and. br%hi - br%lo <= collapsed*br%hi) text = text // &
-         ': the bracket has shrunk to a point where F_cont jumps (the plate response is discontinuous there)'
+      if (br%blind_hi) then
+         text = text // '; the plate solution (eq. 19) failed under the upper end of the bracket, and the ' // &
+            'root lies beyond the forces it can be solved for with this time step: a shorter dt may help'
+      else if (br%has_lo .and. br%has_hi .and. br%hi - br%lo <= collapsed*br%hi) then
+         text = text // '; the bracket has shrunk to a point where F_cont jumps (the plate''s response ' // &
+            'changes abruptly there)'
+      end if
    end function contact_report
 
    !> Convergence of the contact iteration, eq. (17):

@@ -127,6 +127,9 @@ SCENES = [
     # -- beyond: extremes combined, on purpose past what the model covers
     scene('beyond_thin_50', 'beyond', 'a/h = 1000 at 50 m/s (w/h ~ 100)',
           {'plate': {'h': '1.5e-4'}, 'impactor': {'velocity': '50.0'}, 'analysis': {'t_end': '1.0e-3'}}, beyond=True),
+    scene('beyond_thin_50_fast', 'beyond', "a/h = 1000 at 50 m/s, scheme = 'fast'",
+          {'plate': {'h': '1.5e-4'}, 'impactor': {'velocity': '50.0'},
+           'analysis': {'t_end': '1.0e-3', 'scheme': "'fast'"}}, beyond=True),
     scene('beyond_dt20_v50', 'beyond', 'dt = 20 us at 50 m/s',
           {'analysis': {'dt': '2.0e-5'}, 'impactor': {'velocity': '50.0'}}, beyond=True),
 ]
