@@ -7,7 +7,7 @@
 #                      FIG_JOBS at a time (results and logs in out/paper/);
 #                      draw postproc/figNN.gp into docs/figures/; write
 #                      docs/PAPER.md from docs/PAPER.md.in (tools/paper-numbers).
-#                      About 3 minutes on 2 free cores; a rerun redoes only the
+#                      About 2 minutes on 2 free cores; a rerun redoes only the
 #                      runs whose deck or program changed.
 #   make figures-clean remove out/paper/ (the next `make figures` reruns all)
 #

@@ -4,7 +4,8 @@
 #   gnuplot -e "results='bench/results.dat'; outdir='docs/performance'" postproc/bench_pareto.gp
 #
 # writes <outdir>/pareto.png (the paper scene CN: one panel per error measure)
-# and <outdir>/scenes.png (the four scenes: the largest of the three errors).
+# <outdir>/scenes.png (the four scenes: the largest of the three errors) and
+# <outdir>/knobs.png (6x9 runs: time step and tolerances, mesh error excluded).
 # Columns of results.dat (see its header): 1 scene, 2 sweep, 15 cpu_s,
 # 26 err_peak, 27 err_duration, 28 err_deflection, 29 err_max.
 if (!exists("results")) results = 'bench/results.dat'
@@ -13,7 +14,7 @@ if (!exists("outdir")) outdir = 'docs/performance'
 # the knobs: sweep name in column 2 and the curve's title
 sweeps = "mesh mesh_sky mesh_paper dt dt_paper cr2 cr2_paper cr1_paper"
 titles = "'mesh (fast, band)' 'mesh (fast, skyline)' 'mesh (paper)' 'time step (fast)' 'time step (paper)' 'cr2 (fast)' 'cr2 (paper)' 'cr1 (paper)'"
-sel(scene, sweep, col) = (strcol(1) eq scene && strcol(2) eq sweep && strcol(5) eq 'system') ? column(col) : NaN
+sel(scene, sweep, col) = (strcol(1) eq scene && strcol(2) eq sweep && strcol(5) eq 'system' && strcol(30) eq 'ok') ? column(col) : NaN
 
 # common ranges, so that a panel without data (a smaller grid) still draws
 stats results using 15 nooutput
@@ -47,5 +48,21 @@ do for [k = 1:4] {
     set title word(stitles, k)
     plot for [i = 1:words(sweeps)] results using (sel(word(scenes, k), word(sweeps, i), 15)):(sel(word(scenes, k), word(sweeps, i), 29)) \
          with linespoints pt i lw 1.5 title word(titles, i)
+}
+unset multiplot
+
+# the time step and the tolerances alone: 6x9 runs against the 6x9 mesh's own
+# limit (column 34, err6_max), which leaves out the mesh error
+set terminal pngcairo size 1200,900 font ",10"
+set output outdir.'/knobs.png'
+set yrange [1e-7:1]
+set multiplot layout 2,2 title "6x9 mesh: the error of the time step and the tolerances alone (against the 6x9 mesh's converged answer), largest of the three"
+ksweeps = "dt dt_paper cr2 cr2_paper cr1_paper"
+ktitles = "'time step (fast)' 'time step (paper)' 'cr2 (fast)' 'cr2 (paper)' 'cr1 (paper)'"
+set ylabel "largest relative error, mesh error excluded"
+do for [k = 1:4] {
+    set title word(stitles, k)
+    plot for [i = 1:words(ksweeps)] results using (sel(word(scenes, k), word(ksweeps, i), 15)):(sel(word(scenes, k), word(ksweeps, i), 34)) \
+         with linespoints pt i+3 lw 1.5 title word(ktitles, i)
 }
 unset multiplot

@@ -15,7 +15,7 @@ if (!exists("fmt")) fmt = 'png'
 if (!exists("run")) run = 'out/paper'
 if (!exists("figdir")) figdir = 'docs/figures'
 if (fmt eq 'pdf') {
-    set terminal pdfcairo enhanced size W, H font "sans,8" linewidth 1
+    set terminal pdfcairo enhanced size W, H font "sans,9" linewidth 1
 } else {
     set terminal pngcairo enhanced size int(W*110), int(H*110) font "sans,10" linewidth 1
 }
