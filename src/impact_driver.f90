@@ -275,6 +275,7 @@ contains
       integer, intent(out) :: stat              !< 0 unless the solver failed
       character(len=*), intent(inout) :: errmsg !< reason on failure
       real(dp) :: rhs(size(d)), fn(size(d))
+      logical :: done
 
       converged = .false.
       iterations = 0
@@ -287,21 +288,8 @@ contains
          call global_solve(model%keff, rhs, stat, errmsg)
          model%solves = model%solves + 1
          if (stat /= 0) return
-         if (.not. model%nonlinear) then
-            d = rhs                 ! linear theory: one solve is exact
-            converged = .true.
-            exit nonlinear_iterations
-         end if
-         ! -- eq. (18), and the guard against divergence and stagnation
-         call fp_check(model%nl_guard, d, rhs, d_t)
-         converged = model%nl_guard%state == fp_converged
-         if (converged) d = rhs
-         if (model%nl_guard%state /= fp_iterating) then
-            if (.not. converged) d = model%nl_guard%d_best   ! the least wrong iterate, finite
-            exit nonlinear_iterations
-         end if
-         call fp_next(model%nl_guard, d, rhs, stat, errmsg)
-         if (stat /= 0) return
+         call iteration_end(model, d_t, rhs, d, converged, done, stat, errmsg)
+         if (done .or. stat /= 0) exit nonlinear_iterations
       end do nonlinear_iterations
    end subroutine plate_solve
 
@@ -348,6 +336,7 @@ contains
       integer, intent(out) :: stat                 !< 0 unless the solver failed
       character(len=*), intent(inout) :: errmsg   !< reason on failure
       real(dp) :: rhs(size(d)), fn(size(d)), w_r0, compliance
+      logical :: done
 
       ! impactor position at t+dt if the new force were zero, and how it moves with F
       w_r0 = imp%w + imp%v*dt - imp%f*dt**2/(4.0_dp*model%impactor_mass)
@@ -365,23 +354,42 @@ contains
          if (stat /= 0) return
          call solve_contact_equation(model%law, hist, w_r0 - rhs(model%eq_impact), compliance, f, alpha)
          rhs = rhs + f*model%g_unit
-         if (.not. model%nonlinear) then
-            d = rhs
-            converged = .true.
-            exit nonlinear_iterations
-         end if
-         ! -- eq. (18), and the guard against divergence and stagnation
-         call fp_check(model%nl_guard, d, rhs, d_t)
-         converged = model%nl_guard%state == fp_converged
-         if (converged) d = rhs
-         if (model%nl_guard%state /= fp_iterating) then
-            if (.not. converged) d = model%nl_guard%d_best   ! the least wrong iterate, finite
-            exit nonlinear_iterations
-         end if
-         call fp_next(model%nl_guard, d, rhs, stat, errmsg)
-         if (stat /= 0) return
+         call iteration_end(model, d_t, rhs, d, converged, done, stat, errmsg)
+         if (done .or. stat /= 0) exit nonlinear_iterations
       end do nonlinear_iterations
    end subroutine fast_step
+
+   !> The end of one iteration of eq. (19), for both schemes: the linear
+   !> theory is exact after one solve; otherwise eq. (18) and the guard
+   !> against divergence and stagnation decide, and the next iterate is
+   !> formed (plain substitution, or the guard's Anderson mixing fall-back).
+   subroutine iteration_end(model, d_t, rhs, d, converged, done, stat, errmsg)
+      type(model_t), intent(inout) :: model     !< model (its guard)
+      real(dp), intent(in) :: d_t(:)            !< converged displacements at t
+      real(dp), intent(in) :: rhs(:)            !< the solution of eq. (19) from iterate d
+      real(dp), intent(inout) :: d(:)           !< iterate in; next iterate, or the result, out
+      logical, intent(out) :: converged         !< eq. (18) met
+      logical, intent(out) :: done              !< the iteration is over (converged or given up)
+      integer, intent(out) :: stat              !< 0 unless the mixing failed
+      character(len=*), intent(inout) :: errmsg !< reason on failure
+      stat = 0
+      done = .true.
+      converged = .true.
+      if (.not. model%nonlinear) then
+         d = rhs
+         return
+      end if
+      call fp_check(model%nl_guard, d, rhs, d_t)
+      converged = model%nl_guard%state == fp_converged
+      if (converged) then
+         d = rhs
+      else if (model%nl_guard%state /= fp_iterating) then
+         d = model%nl_guard%d_best   ! the least wrong iterate, finite
+      else
+         done = .false.
+         call fp_next(model%nl_guard, d, rhs, stat, errmsg)
+      end if
+   end subroutine iteration_end
 
    ! ======================================================= contact force
 
