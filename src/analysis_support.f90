@@ -21,13 +21,12 @@
 module analysis_support
    use kinds, only: dp, pi, msg_len
    use input_deck, only: deck_t, echo_deck
-   use impact_driver, only: model_t
+   use impact_driver, only: model_t, gather_element, scatter_add_element
    use element_matrices, only: element_pressure_load, ngp_full
    use mesh, only: nfe
    implicit none
    private
-   public :: assemble_load, check_result_files, open_result_file, gather_element, scatter_add_element, &
-             centre_deflection
+   public :: assemble_load, check_result_files, open_result_file
 
 contains
 
@@ -122,36 +121,5 @@ contains
       end do
       write (unit, '(a)') ''
    end subroutine open_result_file
-
-   !> Element freedoms from the global vector (0 for held freedoms).
-   pure subroutine gather_element(eqs, d, de)
-      integer, intent(in) :: eqs(:)        !< equation of each element freedom (0: held)
-      real(dp), intent(in) :: d(:)         !< global vector
-      real(dp), intent(out) :: de(:)       !< element vector
-      where (eqs > 0)
-         de = d(max(eqs, 1))
-      elsewhere
-         de = 0.0_dp
-      end where
-   end subroutine gather_element
-
-   !> Adds an element vector into the global vector.
-   pure subroutine scatter_add_element(eqs, fe, f)
-      integer, intent(in) :: eqs(:)        !< equation of each element freedom (0: held)
-      real(dp), intent(in) :: fe(:)        !< element vector
-      real(dp), intent(inout) :: f(:)      !< global vector, added into
-      integer :: k
-      do k = 1, size(eqs)
-         if (eqs(k) > 0) f(eqs(k)) = f(eqs(k)) + fe(k)
-      end do
-   end subroutine scatter_add_element
-
-   !> Deflection w at the plate centre (m).
-   pure function centre_deflection(model, d) result(w)
-      type(model_t), intent(in) :: model   !< model
-      real(dp), intent(in) :: d(:)         !< global displacements
-      real(dp) :: w
-      w = d(model%eq_impact)
-   end function centre_deflection
 
 end module analysis_support

@@ -31,7 +31,7 @@ module impact_driver
              predicted_displacements, &
              nonlinear_force, mass_times, bracket_start, bracket_update, contact_converged, &
              first_force_guess, plate_kinetic_energy, plate_strain_energy, &
-             back_face_strain, impact_deflection, &
+             back_face_strain, impact_deflection, gather_element, scatter_add_element, &
              bracket_cut, fixed_point_force, contact_report, max_deflection, von_karman_limit
 
    !> Everything about the plate that does not change during a run.
@@ -233,9 +233,9 @@ contains
       fn = 0.0_dp
       if (.not. model%nonlinear) return
       elements: do e = 1, model%msh%nelem
-         call gather(model%msh%elem_eq(:, e), d, de)
+         call gather_element(model%msh%elem_eq(:, e), d, de)
          call element_nonlinear_force(model%lmt, model%geo(e), de, fe)
-         call scatter_add(model%msh%elem_eq(:, e), fe, fn)
+         call scatter_add_element(model%msh%elem_eq(:, e), fe, fn)
       end do elements
    end subroutine nonlinear_force
 
@@ -251,9 +251,9 @@ contains
       integer :: e
       y = 0.0_dp
       elements: do e = 1, model%msh%nelem
-         call gather(model%msh%elem_eq(:, e), x, xe)
+         call gather_element(model%msh%elem_eq(:, e), x, xe)
          call element_mass_product(model%lmt, model%mass_s(:, :, e), xe, ye)
-         call scatter_add(model%msh%elem_eq(:, e), ye, y)
+         call scatter_add_element(model%msh%elem_eq(:, e), ye, y)
       end do elements
    end subroutine mass_times
 
@@ -586,7 +586,7 @@ contains
       integer :: e
       u = 0.0_dp
       elements: do e = 1, model%msh%nelem
-         call gather(model%msh%elem_eq(:, e), d, de)
+         call gather_element(model%msh%elem_eq(:, e), d, de)
          u = u + element_strain_energy(model%lmt, model%geo(e), de, model%nonlinear, model%shear_eps)
       end do elements
       u = u*model%msh%sym_factor
@@ -602,7 +602,7 @@ contains
       real(dp) :: de(nfe), eps(3)
       integer :: e
       e = model%msh%impact_elem
-      call gather(model%msh%elem_eq(:, e), d, de)
+      call gather_element(model%msh%elem_eq(:, e), d, de)
       eps = element_inplane_strain(model%geo(e), de, model%gauge_gp, model%z_back, model%nonlinear)
       eps_y = eps(2)
    end function back_face_strain
@@ -610,7 +610,7 @@ contains
    ! ============================================================ helpers
 
    !> Element displacements from the global vector (0 for held freedoms).
-   pure subroutine gather(eqs, d, de)
+   pure subroutine gather_element(eqs, d, de)
       integer, intent(in) :: eqs(:)
       real(dp), intent(in) :: d(:)
       real(dp), intent(out) :: de(:)
@@ -619,10 +619,10 @@ contains
       elsewhere
          de = 0.0_dp
       end where
-   end subroutine gather
+   end subroutine gather_element
 
    !> Adds element forces into the global vector.
-   pure subroutine scatter_add(eqs, fe, f)
+   pure subroutine scatter_add_element(eqs, fe, f)
       integer, intent(in) :: eqs(:)
       real(dp), intent(in) :: fe(:)
       real(dp), intent(inout) :: f(:)
@@ -630,6 +630,6 @@ contains
       do k = 1, size(eqs)
          if (eqs(k) > 0) f(eqs(k)) = f(eqs(k)) + fe(k)
       end do
-   end subroutine scatter_add
+   end subroutine scatter_add_element
 
 end module impact_driver

@@ -33,9 +33,9 @@
 module modal_analysis
    use kinds, only: dp, pi, msg_len
    use input_deck, only: deck_t
-   use impact_driver, only: model_t
+   use impact_driver, only: model_t, gather_element
    use global_matrix, only: global_matvec
-   use analysis_support, only: check_result_files, open_result_file, gather_element
+   use analysis_support, only: check_result_files, open_result_file
    use mesh, only: ndof_node
    implicit none
    private

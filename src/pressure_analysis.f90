@@ -26,7 +26,8 @@ module pressure_analysis
       plate_strain_energy
    use newmark, only: newmark_t, newmark_init, newmark_predictor, newmark_update
    use global_matrix, only: global_matrix_t, global_copy, global_factor, global_solve, global_matvec
-   use analysis_support, only: assemble_load, check_result_files, open_result_file, centre_deflection
+   use analysis_support, only: assemble_load, check_result_files, open_result_file
+   use impact_driver, only: impact_deflection
    use mesh, only: describe_equation
    implicit none
    private
@@ -101,7 +102,7 @@ contains
          d = d_new
          res%nstep = step
          res%t(step) = real(step, dp)*dt
-         res%w_centre(step) = centre_deflection(model, d)
+         res%w_centre(step) = impact_deflection(model, d)
          res%iterations(step) = model%solves - solves0
          if (mod(step, every) == 0 .or. step == nstep) then
             res%kinetic(step) = plate_kinetic_energy(model, v)

@@ -27,13 +27,12 @@
 module static_analysis
    use kinds, only: dp, msg_len
    use input_deck, only: deck_t
-   use impact_driver, only: model_t, nonlinear_force
+   use impact_driver, only: model_t, nonlinear_force, impact_deflection, gather_element
    use element_matrices, only: element_tangent_stiffness
    use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, global_copy, &
       global_matvec, global_factor, global_solve
    use mesh, only: nfe, ndof_node, describe_equation
-   use analysis_support, only: assemble_load, check_result_files, open_result_file, gather_element, &
-      centre_deflection
+   use analysis_support, only: assemble_load, check_result_files, open_result_file
    implicit none
    private
    public :: static_result_t, static_solve, internal_force, run_static
@@ -87,7 +86,7 @@ contains
          linear_path: do inc = 1, increments
             lam = real(inc, dp)/real(increments, dp)
             res%load_factor(inc) = lam
-            res%w_centre(inc) = lam*centre_deflection(model, r)
+            res%w_centre(inc) = lam*impact_deflection(model, r)
             res%iterations(inc) = 1
             call internal_force(model, lam*r, fint)
             res%residual(inc) = norm2(lam*f - fint)/max(norm2(lam*f), tiny(1.0_dp))
@@ -133,7 +132,7 @@ contains
          end if
          call internal_force(model, d, fint)
          res%load_factor(inc) = lam
-         res%w_centre(inc) = centre_deflection(model, d)
+         res%w_centre(inc) = impact_deflection(model, d)
          res%iterations(inc) = min(it, model%max_nonlinear_iter)
          res%residual(inc) = norm2(lam*f - fint)/max(norm2(lam*f), tiny(1.0_dp))
          res%increments = inc
