@@ -29,7 +29,7 @@ module contact_law
    implicit none
    private
    public :: contact_law_t, contact_history_t, contact_force, contact_branch, &
-             contact_commit, permanent_indentation, loading_indentation, &
+             contact_commit, permanent_indentation, loading_indentation, law_indentation, &
              solve_contact_equation, &
              branch_none, branch_loading, branch_unloading, branch_reloading
 
@@ -74,6 +74,28 @@ contains
       real(dp) :: alpha
       alpha = (max(f, 0.0_dp)/law%k)**(2.0_dp/3.0_dp)
    end function loading_indentation
+
+   !> The indentation at which the law gives the force f, on the curve a
+   !> force f would follow after the committed history: the inverse of
+   !> contact_force. Above F_m (or before any contact) the loading curve;
+   !> below it the unloading curve, or the reloading curve once the impactor
+   !> has left the plate (the switching rule of the module header). 0 for
+   !> f <= 0. It gives the contact area of an assumed force (contact_load).
+   elemental function law_indentation(law, hist, f) result(alpha)
+      type(contact_law_t), intent(in) :: law       !< law constants
+      type(contact_history_t), intent(in) :: hist  !< committed history
+      real(dp), intent(in) :: f                    !< force (N)
+      real(dp) :: alpha
+      if (f <= 0.0_dp) then
+         alpha = 0.0_dp
+      else if (f >= hist%f_m .or. hist%alpha_m <= 0.0_dp) then
+         alpha = loading_indentation(law, f)
+      else if (hist%separated) then
+         alpha = hist%alpha_0 + (hist%alpha_m - hist%alpha_0)*(f/hist%f_m)**(1.0_dp/1.5_dp)
+      else
+         alpha = hist%alpha_0 + (hist%alpha_m - hist%alpha_0)*(f/hist%f_m)**(1.0_dp/law%q)
+      end if
+   end function law_indentation
 
    !> The branch of the law that a trial indentation alpha follows.
    elemental function contact_branch(hist, alpha) result(branch)

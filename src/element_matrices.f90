@@ -9,8 +9,11 @@
 !>   shear      gamma = Bs d = (psi_y + w,y, psi_x + w,x)  = (eps4, eps5)
 !>   resultants N = A eps0 + B kappa,  M = B eps0 + D kappa,  Q = Abar gamma   eq. (4)
 !>
-!> Selective reduced integration (section 2.3): 3x3 Gauss points for the
-!> membrane, bending and inertia terms, 2x2 for the transverse shear terms.
+!> Integration: 3x3 Gauss points for the membrane, bending and inertia
+!> terms; the transverse shear terms by the element's shear rule (module
+!> shear_strain): the paper's selective 2x2 rule (section 2.3), or the
+!> MITC9 assumed shear strain at 3x3 points (the default), or the others
+!> there. gamma = Bs d below stands for the rule's discrete operator.
 !>
 !> Matrices (eq. 15, Appendix B):
 !>   [M]   = int N^T diag(P, P, P, I, I) N  (+ R coupling u-psi_x, v-psi_y)
@@ -26,6 +29,7 @@ module element_matrices
    use materials, only: laminate_t
    use shape_functions, only: nen, shape9, shape9_derivs
    use gauss_rules, only: gauss_2d
+   use shear_strain, only: shear_rule_t, shear_operator_t, shear_operator
    implicit none
    private
    public :: element_geometry_t, element_geometry, element_mass, &
@@ -33,49 +37,47 @@ module element_matrices
              element_strain_energy, element_inplane_strain, element_gauss_point, &
              element_tangent_stiffness, element_pressure_load, &
              element_mass_integrals, element_mass_product, &
-             ngp_full, ngp_shear, nfe_elem
+             ngp_full, nfe_elem
 
-   !> Gauss points of the full (3x3) and reduced (2x2) rules.
-   integer, parameter :: ngp_full = 9, ngp_shear = 4
+   !> Gauss points of the full (3x3) rule.
+   integer, parameter :: ngp_full = 9
    !> Freedoms per element.
    integer, parameter :: nfe_elem = 5*nen
 
    !> Shape functions and their x, y derivatives at the Gauss points of one
-   !> element, with the weights times det J: computed once per element.
+   !> element, with the weights times det J, and its transverse shear
+   !> operator: computed once per element.
    type :: element_geometry_t
       real(dp) :: phi3(nen, ngp_full)      !< phi_i at the 3x3 points
       real(dp) :: dx3(2, nen, ngp_full)    !< (d/dx, d/dy) phi_i at the 3x3 points
       real(dp) :: wj3(ngp_full)            !< weight * det J (m^2) at the 3x3 points
       real(dp) :: xy3(2, ngp_full)         !< (x, y) of the 3x3 points (m)
-      real(dp) :: phi2(nen, ngp_shear)     !< phi_i at the 2x2 points
-      real(dp) :: dx2(2, nen, ngp_shear)   !< derivatives at the 2x2 points
-      real(dp) :: wj2(ngp_shear)           !< weight * det J at the 2x2 points
+      type(shear_operator_t) :: shear      !< gamma = Bs d at the shear points (module shear_strain)
    end type element_geometry_t
 
 contains
 
    !> Shape function derivatives and integration weights of the element with
-   !> node coordinates xe (isoparametric map, eq. 14). ok is false when the
-   !> Jacobian is not positive somewhere (a distorted or inverted element).
-   pure subroutine element_geometry(xe, geo, ok)
+   !> node coordinates xe (isoparametric map, eq. 14), and its shear
+   !> operator under rule. ok is false when the Jacobian is not positive
+   !> somewhere (a distorted or inverted element).
+   pure subroutine element_geometry(xe, rule, geo, ok)
       real(dp), intent(in) :: xe(2, nen)             !< node coordinates (m)
+      type(shear_rule_t), intent(in) :: rule         !< transverse shear rule (module shear_strain)
       type(element_geometry_t), intent(out) :: geo   !< the element's geometry
       logical, intent(out) :: ok                     !< det J > 0 at every point
-      real(dp) :: pts3(2, ngp_full), w3(ngp_full), pts2(2, ngp_shear), w2(ngp_shear)
-      real(dp) :: det3(ngp_full), det2(ngp_shear)
+      real(dp) :: pts3(2, ngp_full), w3(ngp_full)
+      real(dp) :: det3(ngp_full)
+      logical :: shear_ok
       integer :: g
 
       call gauss_2d(3, pts3, w3)
-      call gauss_2d(2, pts2, w2)
-      ok = .true.
       full_rule: do g = 1, ngp_full
          call point_derivs(pts3(:, g), w3(g), geo%phi3(:, g), geo%dx3(:, :, g), geo%wj3(g), det3(g))
          geo%xy3(:, g) = matmul(xe, geo%phi3(:, g))
       end do full_rule
-      shear_rule: do g = 1, ngp_shear
-         call point_derivs(pts2(:, g), w2(g), geo%phi2(:, g), geo%dx2(:, :, g), geo%wj2(g), det2(g))
-      end do shear_rule
-      ok = all(det3 > 0.0_dp) .and. all(det2 > 0.0_dp)
+      call shear_operator(xe, rule, geo%shear, shear_ok)
+      ok = all(det3 > 0.0_dp) .and. shear_ok
 
    contains
 
@@ -169,16 +171,13 @@ contains
       end do
    end subroutine element_mass_product
 
-   !> Linear stiffness [K_L] (Appendix B): membrane and bending with 3x3,
-   !> transverse shear with 2x2 Gauss points.
-   pure subroutine element_stiffness(lmt, geo, ke, stabilization)
+   !> Linear stiffness [K_L] (Appendix B): membrane and bending with 3x3
+   !> Gauss points, transverse shear by the element's shear rule.
+   pure subroutine element_stiffness(lmt, geo, ke)
       type(laminate_t), intent(in) :: lmt           !< A, B, D, Abar (eq. 6)
       type(element_geometry_t), intent(in) :: geo   !< element geometry
       real(dp), intent(out) :: ke(nfe_elem, nfe_elem)  !< element stiffness
-      !> fraction eps of the shear stiffness integrated with 3x3 points:
-      !> K_s = (1 - eps) K_s(2x2) + eps K_s(3x3); absent: 0 (the paper's rule)
-      real(dp), intent(in), optional :: stabilization
-      real(dp) :: bmb(6, nfe_elem), bs(2, nfe_elem), c(6,6), eps
+      real(dp) :: bmb(6, nfe_elem), bs(2, nfe_elem), c(6,6)
       integer :: g
 
       c(1:3, 1:3) = lmt%a;  c(1:3, 4:6) = lmt%b
@@ -188,18 +187,10 @@ contains
          bmb = b_membrane_bending(geo%dx3(:, :, g))
          ke = ke + geo%wj3(g)*matmul(transpose(bmb), matmul(c, bmb))
       end do membrane_bending
-      eps = 0.0_dp
-      if (present(stabilization)) eps = stabilization
-      transverse_shear: do g = 1, ngp_shear
-         bs = b_shear(geo%phi2(:, g), geo%dx2(:, :, g))
-         ke = ke + (1.0_dp - eps)*geo%wj2(g)*matmul(transpose(bs), matmul(lmt%as, bs))
+      transverse_shear: do g = 1, geo%shear%npoint
+         bs = b_shear(geo%shear%b(:, :, :, g))
+         ke = ke + geo%shear%wj(g)*matmul(transpose(bs), matmul(lmt%as, bs))
       end do transverse_shear
-      if (eps > 0.0_dp) then
-         shear_full_rule: do g = 1, ngp_full
-            bs = b_shear(geo%phi3(:, g), geo%dx3(:, :, g))
-            ke = ke + eps*geo%wj3(g)*matmul(transpose(bs), matmul(lmt%as, bs))
-         end do shear_full_rule
-      end if
    end subroutine element_stiffness
 
    !> The nonlinear term K_N(d) d of eq. (15) and (19) for the element
@@ -254,18 +245,16 @@ contains
    end subroutine element_internal_force
 
    !> Strain energy of the element, U = 1/2 int (eps0 N + kappa M + gamma Q),
-   !> von Karman strains when nonlinear is true.
-   pure function element_strain_energy(lmt, geo, de, nonlinear, stabilization) result(u)
+   !> von Karman strains when nonlinear is true; the shear part by the
+   !> element's shear rule, so that the energy is the one of its stiffness.
+   pure function element_strain_energy(lmt, geo, de, nonlinear) result(u)
       type(laminate_t), intent(in) :: lmt           !< laminate
       type(element_geometry_t), intent(in) :: geo   !< element geometry
       real(dp), intent(in) :: de(nfe_elem)          !< element displacements
       logical, intent(in) :: nonlinear              !< von Karman strains
-      !> fraction of 3x3 shear, as in element_stiffness (absent: 0), so that
-      !> the energy is the one of the stiffness used
-      real(dp), intent(in), optional :: stabilization
       real(dp) :: u
-      real(dp) :: eps0(3), kap(3), gam(2), wx, wy, eps
-      integer :: g, i
+      real(dp) :: eps0(3), kap(3), gam(2), wx, wy
+      integer :: g
 
       u = 0.0_dp
       membrane_bending: do g = 1, ngp_full
@@ -274,28 +263,24 @@ contains
          u = u + 0.5_dp*geo%wj3(g)*( dot_product(eps0, matmul(lmt%a, eps0)) &
                + 2.0_dp*dot_product(eps0, matmul(lmt%b, kap)) + dot_product(kap, matmul(lmt%d, kap)) )
       end do membrane_bending
-      eps = 0.0_dp
-      if (present(stabilization)) eps = stabilization
-      transverse_shear: do g = 1, ngp_shear
-         ! gamma = Bs d = (psi_y + w,y, psi_x + w,x), without forming Bs
-         gam = 0.0_dp
-         do i = 1, nen
-            gam(1) = gam(1) + geo%dx2(2, i, g)*de(5*i-2) + geo%phi2(i, g)*de(5*i)
-            gam(2) = gam(2) + geo%dx2(1, i, g)*de(5*i-2) + geo%phi2(i, g)*de(5*i-1)
-         end do
-         u = u + (1.0_dp - eps)*0.5_dp*geo%wj2(g)*dot_product(gam, matmul(lmt%as, gam))
+      transverse_shear: do g = 1, geo%shear%npoint
+         gam = shear_strains(geo%shear%b(:, :, :, g), de)
+         u = u + 0.5_dp*geo%shear%wj(g)*dot_product(gam, matmul(lmt%as, gam))
       end do transverse_shear
-      if (eps > 0.0_dp) then
-         shear_full_rule: do g = 1, ngp_full
-            gam = 0.0_dp
-            do i = 1, nen
-               gam(1) = gam(1) + geo%dx3(2, i, g)*de(5*i-2) + geo%phi3(i, g)*de(5*i)
-               gam(2) = gam(2) + geo%dx3(1, i, g)*de(5*i-2) + geo%phi3(i, g)*de(5*i-1)
-            end do
-            u = u + eps*0.5_dp*geo%wj3(g)*dot_product(gam, matmul(lmt%as, gam))
-         end do shear_full_rule
-      end if
    end function element_strain_energy
+
+   !> The transverse shear strains (eps4, eps5) = Bs d at one shear point,
+   !> without forming Bs.
+   pure function shear_strains(b, de) result(gam)
+      real(dp), intent(in) :: b(2, 3, nen)          !< the operator at the point (module shear_strain)
+      real(dp), intent(in) :: de(nfe_elem)          !< element displacements
+      real(dp) :: gam(2)
+      integer :: i
+      gam = 0.0_dp
+      do i = 1, nen
+         gam = gam + b(:, 1, i)*de(5*i-2) + b(:, 2, i)*de(5*i-1) + b(:, 3, i)*de(5*i)
+      end do
+   end function shear_strains
 
    !> In-plane strains (eps_x, eps_y, gamma_xy) at depth z and 3x3 Gauss
    !> point g, eq. (2): eps = eps0 + z kappa.
@@ -327,22 +312,16 @@ contains
    !> with Bnl(d) the rows of d eps_nl/d d (module header), G = (phi_i,x;
    !> phi_i,y) on the w freedoms and N = A (eps0 + eps_nl) + B kappa the
    !> membrane forces at d: the derivative of K_L d + K_N(d) d (eq. 15, 19).
-   pure subroutine element_tangent_stiffness(lmt, geo, de, kt, stabilization)
+   pure subroutine element_tangent_stiffness(lmt, geo, de, kt)
       type(laminate_t), intent(in) :: lmt           !< A, B, D, Abar (eq. 6)
       type(element_geometry_t), intent(in) :: geo   !< element geometry
       real(dp), intent(in) :: de(nfe_elem)          !< element displacements
       real(dp), intent(out) :: kt(nfe_elem, nfe_elem)  !< tangent stiffness
-      !> fraction of 3x3 shear, as in element_stiffness (absent: 0)
-      real(dp), intent(in), optional :: stabilization
       real(dp) :: bmb(6, nfe_elem), bnl(6, nfe_elem), gw(2, nfe_elem), c(6,6), &
                   cb(6, nfe_elem), eps0(3), kap(3), n(3), nhat(2,2), wx, wy
       integer :: g, i
 
-      if (present(stabilization)) then
-         call element_stiffness(lmt, geo, kt, stabilization)
-      else
-         call element_stiffness(lmt, geo, kt)
-      end if
+      call element_stiffness(lmt, geo, kt)
       c(1:3, 1:3) = lmt%a;  c(1:3, 4:6) = lmt%b
       c(4:6, 1:3) = lmt%b;  c(4:6, 4:6) = lmt%d
       gauss_points: do g = 1, ngp_full
@@ -425,15 +404,17 @@ contains
       end do
    end function b_membrane_bending
 
-   !> Bs (2 x 45): eps4 = psi_y + w,y, eps5 = psi_x + w,x.
-   pure function b_shear(phi, dxy) result(bmat)
-      real(dp), intent(in) :: phi(nen), dxy(2, nen)
+   !> Bs (2 x 45) at one shear point from the shear operator there:
+   !> rows eps4 = psi_y + w,y, eps5 = psi_x + w,x (module shear_strain).
+   pure function b_shear(b) result(bmat)
+      real(dp), intent(in) :: b(2, 3, nen)
       real(dp) :: bmat(2, nfe_elem)
       integer :: i
       bmat = 0.0_dp
       do i = 1, nen
-         bmat(1, 5*i-2) = dxy(2, i);  bmat(1, 5*i) = phi(i)
-         bmat(2, 5*i-2) = dxy(1, i);  bmat(2, 5*i-1) = phi(i)
+         bmat(:, 5*i-2) = b(:, 1, i)
+         bmat(:, 5*i-1) = b(:, 2, i)
+         bmat(:, 5*i)   = b(:, 3, i)
       end do
    end function b_shear
 

@@ -8,7 +8,7 @@ module gauss_rules
    use kinds, only: dp
    implicit none
    private
-   public :: gauss_1d, gauss_2d, max_gauss_order
+   public :: gauss_1d, gauss_2d, gauss_legendre, max_gauss_order
 
    !> Highest number of points per direction tabulated here.
    integer, parameter :: max_gauss_order = 4
@@ -59,5 +59,35 @@ contains
          end do cols
       end do rows
    end subroutine gauss_2d
+
+   !> The n-point Gauss-Legendre rule on [-1, 1] for any n >= 1, by the
+   !> Golub-Welsch algorithm: the abscissae are the eigenvalues of the
+   !> symmetric tridiagonal Jacobi matrix of the Legendre polynomials
+   !> (off-diagonal k/sqrt(4k^2 - 1)), the weights 2 v_1^2 from the first
+   !> components of its normalised eigenvectors (LAPACK dstev).
+   subroutine gauss_legendre(n, xi, w, stat)
+      integer, intent(in) :: n          !< number of points, >= 1
+      real(dp), intent(out) :: xi(n)    !< abscissae, increasing
+      real(dp), intent(out) :: w(n)     !< weights, summing to 2
+      integer, intent(out) :: stat      !< 0, or LAPACK's info
+      interface
+         subroutine dstev(jobz, n, d, e, z, ldz, work, info)
+            import :: dp
+            character, intent(in) :: jobz
+            integer, intent(in) :: n, ldz
+            real(dp), intent(inout) :: d(*), e(*)
+            real(dp), intent(out) :: z(ldz, *), work(*)
+            integer, intent(out) :: info
+         end subroutine dstev
+      end interface
+      real(dp) :: off(max(n - 1, 1)), z(n, n), work(max(2*n - 2, 1))
+      integer :: k
+      xi = 0.0_dp
+      do k = 1, n - 1
+         off(k) = real(k, dp)/sqrt(4.0_dp*real(k, dp)**2 - 1.0_dp)
+      end do
+      call dstev('V', n, xi, off, z, n, work, stat)
+      w = 2.0_dp*z(1, :)**2
+   end subroutine gauss_legendre
 
 end module gauss_rules

@@ -30,7 +30,7 @@ program impact
    use global_matrix, only: global_bandwidth, global_stored_entries
    use impact_driver, only: model_t, plate_state_t, impactor_state_t, force_bracket_t, &
       build_model, factor_effective_matrix, plate_solve, bracket_start, bracket_update, &
-      unit_force_response, fast_step, predicted_displacements, mass_times, &
+      fast_step, predicted_displacements, mass_times, contact_area, contact_work_increment, &
       contact_converged, first_force_guess, plate_kinetic_energy, plate_strain_energy, &
       back_face_strain, impact_deflection, &
       bracket_cut, fixed_point_force, contact_report, max_deflection, von_karman_limit
@@ -38,6 +38,7 @@ program impact
    use output_files, only: history_row_t, run_summary_t, open_history, write_history_row, &
       summary_record, write_summary, check_output
    use fixed_point, only: fp_report
+   use contact_load, only: load_pattern_t
    use static_analysis, only: run_static
    use modal_analysis, only: run_modes
    use pressure_analysis, only: run_pressure
@@ -56,8 +57,9 @@ program impact
    type(run_summary_t) :: summary
    type(results_file_t) :: results
    real(dp), allocatable :: mb(:), d_new(:)
+   type(load_pattern_t) :: pattern_old
    real(dp) :: t, f_assum, f_cont, f_next, alpha, alpha_old, w_plate, w_plate_old, e0, t_cpu0, t_cpu1
-   real(dp) :: contact_work, indentation_energy, w_bend, w_bend_max
+   real(dp) :: contact_work, indentation_energy, w_bend, w_bend_max, w_step
    integer :: stat, step, nstep, hist_unit, ic, nl_iter, step_solves
    logical :: nl_ok, contact_ok, check_only, theory_short
    character(len=msg_len) :: errmsg, path, arg
@@ -137,10 +139,6 @@ program impact
    nm = newmark_init(deck%dt)
    call factor_effective_matrix(model, nm, stat, errmsg)
    if (stat /= 0) call fail(errmsg)
-   if (deck%scheme == 'fast') then
-      call unit_force_response(model, stat, errmsg)
-      if (stat /= 0) call fail(errmsg)
-   end if
    call cpu_time(t_cpu1)
    write (output_unit, '(a,f10.3,a)') 'set-up (model, matrices, factorization): cpu ', t_cpu1 - t_cpu0, ' s'
    if (check_only) then
@@ -160,6 +158,7 @@ program impact
    summary%initial_energy = e0
    contact_work = 0.0_dp;  indentation_energy = 0.0_dp
    alpha_old = 0.0_dp;  w_plate_old = 0.0_dp
+   pattern_old = model%pattern
    warned_mixing = .false.;  warned_contact = .false.;  warned_w = .false.
    w_bend_max = 0.0_dp
    nstep = nint(deck%t_end/deck%dt)
@@ -193,6 +192,7 @@ program impact
          !    eq. (19), from the scalar equation F = F_law(alpha(F)) (eq. 11-13, 21),
          !    the iteration starting where the plate's velocity would take it
          d_new = predicted_displacements(deck%dt, plate%d, plate%v)
+         f_assum = imp%f
          call fast_step(model, mb, plate%d, imp, deck%dt, hist, d_new, f_assum, alpha, &
                         nl_iter, nl_ok, stat, errmsg)
          if (stat /= 0) call fail_in_run('plate solution: '//errmsg)
@@ -211,7 +211,9 @@ program impact
       br = bracket_start()
 
       contact_iterations: do ic = 1, deck%max_contact_iter
-         ! -- the plate under the assumed force: eq. (19) iterated to eq. (18)
+         ! -- the plate under the assumed force, over its contact area:
+         !    eq. (19) iterated to eq. (18)
+         call contact_area(model, hist, f_assum)
          call plate_solve(model, mb, f_assum, plate%d, d_new, nl_iter, nl_ok, stat, errmsg)
          if (stat /= 0) call fail_in_run('plate solution: '//errmsg)
          if (model%nl_guard%mixing) call note_mixing()
@@ -250,12 +252,16 @@ program impact
       if (.not. contact_ok) call fail_to_converge('the contact iteration (eq. 17): ' &
          //contact_report(br, f_assum, f_cont, deck%cr1, deck%max_contact_iter))
 
-      ! -- accept the step: Newmark update, impactor, contact history
+      ! -- accept the step: Newmark update, impactor, contact history; the
+      !    work of the contact force on the plate, and what the impactor
+      !    lost beyond it (the energy the contact took)
       call newmark_update(nm, plate%d, d_new, plate%v, plate%a)
-      plate%d = d_new
       imp_new%f = f_assum
-      contact_work = contact_work + 0.5_dp*(imp%f + imp_new%f)*(w_plate - w_plate_old)
-      indentation_energy = indentation_energy + 0.5_dp*(imp%f + imp_new%f)*(alpha - alpha_old)
+      w_step = contact_work_increment(pattern_old, imp%f, model%pattern, imp_new%f, d_new - plate%d)
+      contact_work = contact_work + w_step
+      indentation_energy = indentation_energy + 0.5_dp*(imp%f + imp_new%f)*(imp_new%w - imp%w) - w_step
+      plate%d = d_new
+      pattern_old = model%pattern
       imp = imp_new
       call contact_commit(model%law, hist, alpha)
       w_plate_old = w_plate;  alpha_old = alpha
@@ -423,8 +429,7 @@ contains
       write (u, '(a,i0,a,i0,a,i0,a,i0,a,i0)') 'model: nodes ', model%msh%nnode, ', elements ', &
          model%msh%nelem, ', equations ', model%msh%neq, ', half-bandwidth ', &
          global_bandwidth(model%mass), ', stored entries ', global_stored_entries(model%mass)
-      write (u, '(a,a,a,es10.3,a)') 'shear integration: ', trim(model%shear_rule), &
-         ' (fraction of 3x3 shear ', model%shear_eps, ')'
+      write (u, '(a)') 'transverse shear: '//trim(model%shear_rule)//'; contact load: '//trim(deck%contact_load)
       write (u, '(a,3es12.4)') 'laminate: A11 A22 A66 (N/m)  ', model%lmt%a(1,1), model%lmt%a(2,2), model%lmt%a(3,3)
       write (u, '(a,4es12.4)') 'laminate: D11 D22 D66 D16 (N m) ', model%lmt%d(1,1), model%lmt%d(2,2), &
          model%lmt%d(3,3), model%lmt%d(1,3)

@@ -15,20 +15,24 @@ module impact_driver
    use scene_model, only: scene_t, model_laminate, choose_domain, point_stiffness, energy_balance, &
       choose_theory, impact_element_size
    use mesh, only: mesh_t, build_mesh, apply_boundary, describe_equation, nfe, ndof_node
+   use shear_strain, only: shear_rule_t, shear_rule_code, shear_mitc9, shear_stabilized
+   use contact_load, only: contact_load_t, load_pattern_t, contact_load_init, load_pattern, pattern_mean, &
+      pattern_add, load_point, load_hertz
    use element_matrices, only: element_geometry_t, element_geometry, element_mass, &
       element_stiffness, element_nonlinear_force, element_strain_energy, &
       element_inplane_strain, element_gauss_point, element_mass_integrals, element_mass_product
    use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, &
       global_axpy_matrix, global_copy, global_matvec, global_factor, global_solve
-   use contact_law, only: contact_law_t, contact_history_t, contact_force, solve_contact_equation
+   use contact_law, only: contact_law_t, contact_history_t, contact_force, solve_contact_equation, &
+      law_indentation
    use newmark, only: newmark_t, impactor_advance
    use input_deck, only: deck_t
    use fixed_point, only: fp_guard_t, fp_start, fp_check, fp_next, fp_converged, fp_iterating
    implicit none
    private
    public :: model_t, plate_state_t, impactor_state_t, force_bracket_t, &
-             build_model, factor_effective_matrix, plate_solve, unit_force_response, fast_step, &
-             predicted_displacements, &
+             build_model, factor_effective_matrix, plate_solve, fast_step, &
+             predicted_displacements, contact_area, contact_work_increment, &
              nonlinear_force, mass_times, bracket_start, bracket_update, contact_converged, &
              first_force_guess, plate_kinetic_energy, plate_strain_energy, &
              back_face_strain, impact_deflection, gather_element, scatter_add_element, &
@@ -51,13 +55,19 @@ module impact_driver
       real(dp) :: impactor_mass = 0.0_dp       !< m (kg)
       integer :: eq_impact = 0                 !< equation of w at the impact point
       real(dp) :: force_share = 1.0_dp         !< share of the contact force carried by the model
+      type(contact_load_t) :: cload            !< how the contact force enters the plate (module contact_load)
+      type(load_pattern_t) :: pattern          !< the contact load of the current force (contact_area)
       integer :: gauge_gp = 0                  !< 3x3 Gauss point of the strain gauge in msh%impact_elem
       real(dp) :: z_back = 0.0_dp              !< z of the back face, +h/2 (m)
       integer :: max_nonlinear_iter = 200      !< limit of the eq. (18) iteration
       real(dp) :: cr2 = 1.0e-7_dp              !< tolerance of eq. (18)
-      character(len=32) :: shear_rule = ''     !< transverse shear rule used: 'selective' or 'stabilized'
-      real(dp) :: shear_eps = 0.0_dp           !< fraction of 3x3 shear (0: the paper's 2x2 rule)
-      real(dp), allocatable :: g_unit(:)       !< (K_L + 4/dt^2 M)^-1 applied to a unit contact force (m/N)
+      character(len=32) :: shear_rule = ''     !< transverse shear rule used (module shear_strain)
+      type(shear_rule_t) :: shear              !< the same, as the elements take it
+      !> scheme = 'fast': (K_L + 4/dt^2 M)^-1 e_j for the equations j a contact
+      !> load has touched so far (m/N), computed when first needed (contact_response)
+      integer :: nresp = 0                     !< columns held
+      integer, allocatable :: resp_eq(:)       !< their equations j
+      real(dp), allocatable :: resp(:,:)       !< (neq, columns) the columns
       integer :: solves = 0                    !< back substitutions so far
       type(fp_guard_t) :: nl_guard             !< guard of the last eq. (19) iteration (module fixed_point)
       integer :: factorizations = 0            !< factorizations so far
@@ -125,14 +135,14 @@ contains
       model%cr2 = deck%cr2
       model%max_nonlinear_iter = deck%max_nonlinear_iter
 
-      ! -- transverse shear rule: the paper's 2x2 rule leaves one zero-energy
-      !    mode per element, which free edges do not suppress (README)
+      ! -- transverse shear of the element (module shear_strain): 'auto' is
+      !    MITC9, which neither locks nor leaves a mechanism (the paper's 2x2
+      !    rule, 'selective', leaves near-mechanisms that a point force
+      !    excites: docs/VALIDATION.md)
       model%shear_rule = deck%shear_rule
-      if (deck%shear_rule == 'auto') then
-         model%shear_rule = merge('stabilized', 'selective ', deck%edges == 'free')
-      end if
-      model%shear_eps = 0.0_dp
-      if (model%shear_rule == 'stabilized') model%shear_eps = deck%stabilization
+      if (deck%shear_rule == 'auto') model%shear_rule = 'mitc9'
+      model%shear = shear_rule_t(code=shear_rule_code(model%shear_rule))
+      if (model%shear%code == shear_stabilized) model%shear%eps = deck%stabilization
 
       ! -- mesh, boundary conditions, equation numbers (Fig. 4)
       call build_mesh(deck%a, deck%b, deck%nx, deck%ny, model%scene%domain, model%msh, stat, errmsg, &
@@ -143,10 +153,20 @@ contains
       model%eq_impact = model%msh%eq(3, model%msh%impact_node)
       model%force_share = 1.0_dp/model%msh%sym_factor
 
+      ! -- the contact load: the paper's point force (eq. 10) or Hertz's
+      !    pressure over the contact area (module contact_load)
+      call contact_load_init(model%msh, merge(load_point, load_hertz, deck%contact_load == 'point'), &
+                             0.5_dp*deck%diameter, model%cload, stat)
+      if (stat /= 0) then
+         write (errmsg, '(a,i0)') 'contact load: the Gauss rule of the contact disc failed, LAPACK info = ', stat
+         return
+      end if
+      call load_pattern(model%cload, model%msh, 0.0_dp, model%pattern)
+
       ! -- element geometry, once per element
       allocate (model%geo(model%msh%nelem))
       geometry: do e = 1, model%msh%nelem
-         call element_geometry(model%msh%coords(:, model%msh%conn(:, e)), model%geo(e), ok)
+         call element_geometry(model%msh%coords(:, model%msh%conn(:, e)), model%shear, model%geo(e), ok)
          if (.not. ok) then
             stat = 1
             write (errmsg, '(a,i0,a)') 'mesh: element ', e, ' has a non-positive Jacobian'
@@ -167,20 +187,21 @@ contains
       elements: do e = 1, model%msh%nelem
          model%mass_s(:, :, e) = element_mass_integrals(model%geo(e))
          call element_mass(model%lmt, model%geo(e), me)
-         call element_stiffness(model%lmt, model%geo(e), ke, model%shear_eps)
+         call element_stiffness(model%lmt, model%geo(e), ke)
          call global_assemble(model%mass, me, model%msh%elem_eq(:, e))
          call global_assemble(model%stiff, ke, model%msh%elem_eq(:, e))
       end do elements
 
       ! -- the scene's static estimate, and the theory it calls for
       !    (src/scene_model.f90)
-      call point_stiffness(model%msh, model%lmt, model%geo, model%shear_eps, model%force_share, deck%edges, &
+      call point_stiffness(model%msh, model%lmt, model%geo, model%force_share, deck%edges, &
                            deck%storage, model%scene, stat, errmsg)
       if (stat /= 0) return
       call energy_balance(model%scene%energy, model%scene%stiffness, deck%k, model%scene%force, &
                           model%scene%deflection, model%scene%indentation)
       model%scene%contact_radius = sqrt(0.5_dp*deck%diameter*model%scene%indentation)   ! Hertz
       model%scene%element_size = impact_element_size(model%msh)
+      model%scene%point_load = deck%contact_load == 'point'
       call choose_theory(deck%theory, model%scene%deflection/deck%h, model%scene%theory, &
                          model%scene%theory_reason)
       model%nonlinear = model%scene%theory == 'nonlinear'
@@ -204,21 +225,68 @@ contains
                   trim(describe_equation(model%msh, bad_eq))
    end subroutine factor_effective_matrix
 
-   !> The plate's response to a unit contact force, g = (K_L + 4/dt^2 M)^-1 e,
-   !> one back substitution per run (scheme = 'fast'): with the left-hand
-   !> matrix of eq. (19) constant, the solution of a step is linear in the
-   !> contact force F: D = D_0 + F g.
-   subroutine unit_force_response(model, stat, errmsg)
-      type(model_t), intent(inout) :: model     !< model; g_unit is set
+   !> scheme = 'fast': the plate's response to a unit load on each equation
+   !> of the current contact pattern, (K_L + 4/dt^2 M)^-1 e_j, one back
+   !> substitution per equation the first time a pattern touches it (kept
+   !> for the rest of the run). With the left-hand matrix of eq. (19)
+   !> constant, the solution of a step is linear in the contact force F:
+   !> D = D_0 + F sum_j c_j (K_L + 4/dt^2 M)^-1 e_j.
+   subroutine contact_response(model, stat, errmsg)
+      type(model_t), intent(inout) :: model     !< model; resp grows
       integer, intent(out) :: stat              !< 0 on success
       character(len=*), intent(inout) :: errmsg !< reason on failure
-      if (allocated(model%g_unit)) deallocate (model%g_unit)
-      allocate (model%g_unit(model%msh%neq))
-      model%g_unit = 0.0_dp
-      model%g_unit(model%eq_impact) = model%force_share
-      call global_solve(model%keff, model%g_unit, stat, errmsg)
-      model%solves = model%solves + 1
-   end subroutine unit_force_response
+      real(dp), allocatable :: grown(:,:)
+      integer, allocatable :: grown_eq(:)
+      integer :: j, eq
+      stat = 0
+      if (.not. allocated(model%resp)) then
+         allocate (model%resp(model%msh%neq, 16), model%resp_eq(16))
+         model%nresp = 0
+      end if
+      equations: do j = 1, model%pattern%n
+         eq = model%pattern%eq(j)
+         if (any(model%resp_eq(:model%nresp) == eq)) cycle equations
+         if (model%nresp == size(model%resp_eq)) then
+            allocate (grown(model%msh%neq, 2*model%nresp), grown_eq(2*model%nresp))
+            grown(:, :model%nresp) = model%resp(:, :model%nresp)
+            grown_eq(:model%nresp) = model%resp_eq(:model%nresp)
+            call move_alloc(grown, model%resp);  call move_alloc(grown_eq, model%resp_eq)
+         end if
+         model%nresp = model%nresp + 1
+         model%resp_eq(model%nresp) = eq
+         model%resp(:, model%nresp) = 0.0_dp
+         model%resp(eq, model%nresp) = 1.0_dp
+         call global_solve(model%keff, model%resp(:, model%nresp), stat, errmsg)
+         model%solves = model%solves + 1
+         if (stat /= 0) return
+      end do equations
+   end subroutine contact_response
+
+   !> The contact area of the contact force f (N): the pattern of its load
+   !> (module contact_load), with the contact radius a = sqrt(R alpha(f)),
+   !> alpha(f) the law's indentation at f after the committed history.
+   subroutine contact_area(model, hist, f)
+      type(model_t), intent(inout) :: model        !< model; its pattern is set
+      type(contact_history_t), intent(in) :: hist  !< committed contact history
+      real(dp), intent(in) :: f                    !< contact force on the whole plate (N)
+      real(dp) :: a
+      a = 0.0_dp
+      if (model%cload%kind == load_hertz .and. f > 0.0_dp) &
+         a = sqrt(model%cload%nose_radius*law_indentation(model%law, hist, f))
+      call load_pattern(model%cload, model%msh, a, model%pattern)
+   end subroutine contact_area
+
+   !> The work of the contact force on the (whole) plate over a step (J):
+   !> the trapezoidal rule of the load vectors at both ends,
+   !> 1/2 (F_t p_t + F_{t+dt} p_{t+dt})^T (D_{t+dt} - D_t) times sym_factor,
+   !> which is the work Newmark's rule balances against the plate's energy.
+   pure function contact_work_increment(pat_old, f_old, pat_new, f_new, dd) result(w)
+      type(load_pattern_t), intent(in) :: pat_old, pat_new  !< the load patterns at t and t+dt
+      real(dp), intent(in) :: f_old, f_new                  !< the forces at t and t+dt (N)
+      real(dp), intent(in) :: dd(:)                         !< D_{t+dt} - D_t
+      real(dp) :: w
+      w = 0.5_dp*(f_old*pattern_mean(pat_old, dd) + f_new*pattern_mean(pat_new, dd))
+   end function contact_work_increment
 
    ! ================================================================ plate
 
@@ -258,7 +326,8 @@ contains
    end subroutine mass_times
 
    !> The plate at t+dt under the contact force f (the share the model
-   !> carries is applied at the impact point): Akay's iteration of eq. (19),
+   !> carries, spread as model%pattern says: contact_area): Akay's
+   !> iteration of eq. (19),
    !>   (K_L + 4/dt^2 M) D^{n+1} = F + M b - K_N(D^n) D^n,
    !> until eq. (18): sum (D^{n+1} - D^n)^2 / sum (D^{n+1} - D_t)^2 < C_r2.
    !> d holds the first iterate on entry and the solution on exit. The
@@ -284,7 +353,7 @@ contains
          iterations = iterations + 1
          call nonlinear_force(model, d, fn)
          rhs = mb - fn
-         rhs(model%eq_impact) = rhs(model%eq_impact) + model%force_share*f
+         call pattern_add(model%pattern, f, rhs)
          call global_solve(model%keff, rhs, stat, errmsg)
          model%solves = model%solves + 1
          if (stat /= 0) return
@@ -315,35 +384,44 @@ contains
    !> each iteration of eq. (19) instead of around the whole nonlinear
    !> solution. In iteration n,
    !>   D_0 = (K_L + 4/dt^2 M)^-1 (M b - K_N(D^n) D^n)         eq. (19), F = 0
-   !>   D(F) = D_0 + F g,  w_r(F) = w_r + v dt - (F_t + F) dt^2/(4m)   eq. (21)
-   !>   alpha(F) = w_r(F) - w_p(F), linear in F                 eq. (13)
+   !>   D(F) = D_0 + F g,  g = (K_L + 4/dt^2 M)^-1 p(F)        p the contact load
+   !>   w_r(F) = w_r + v dt - (F_t + F) dt^2/(4m)              eq. (21)
+   !>   alpha(F) = w_r(F) - w_p(D(F)), linear in F             eq. (13)
    !> and F = F_law(alpha(F)) (eq. 11-12) is a scalar equation solved to
-   !> rounding (solve_contact_equation). The iteration stops by eq. (18);
-   !> at that point eq. (17) holds exactly. One back substitution per
-   !> iteration, one iteration in all for the linear theory.
+   !> rounding (solve_contact_equation). With Hertz's load the pattern p
+   !> depends on F through the contact radius; the scalar equation is then
+   !> solved again with the pattern of its root until the root stops moving
+   !> (the pattern changes with F^(1/3): two or three passes). g comes from
+   !> the columns of contact_response, without a solve once the contact's
+   !> equations are known. The iteration stops by eq. (18); at that point
+   !> eq. (17) holds exactly. One back substitution per iteration, one
+   !> iteration in all for the linear theory.
    subroutine fast_step(model, mb, d_t, imp, dt, hist, d, f, alpha, iterations, converged, stat, errmsg)
-      type(model_t), intent(inout) :: model        !< model (counts solves)
+      type(model_t), intent(inout) :: model        !< model (counts solves; its contact pattern is set)
       real(dp), intent(in) :: mb(:)                !< M {b} of eq. (19)-(20)
       real(dp), intent(in) :: d_t(:)               !< converged displacements at t
       type(impactor_state_t), intent(in) :: imp    !< impactor at t
       real(dp), intent(in) :: dt                   !< time step (s)
       type(contact_history_t), intent(in) :: hist  !< committed contact history
       real(dp), intent(inout) :: d(:)              !< first iterate in, solution out
-      real(dp), intent(out) :: f                   !< contact force at t+dt (N)
+      real(dp), intent(inout) :: f                 !< a guess of the contact force in (N), the force at t+dt out
       real(dp), intent(out) :: alpha               !< indentation at t+dt (m)
       integer, intent(out) :: iterations           !< iterations (= back substitutions)
       logical, intent(out) :: converged            !< eq. (18) met
       integer, intent(out) :: stat                 !< 0 unless the solver failed
       character(len=*), intent(inout) :: errmsg   !< reason on failure
-      real(dp) :: rhs(size(d)), fn(size(d)), w_r0, compliance
+      integer, parameter :: max_passes = 50
+      real(dp), parameter :: pass_tol = 1.0e-12_dp
+      real(dp) :: rhs(size(d)), fn(size(d)), w_r0, compliance, f_new
+      integer :: pass, j
       logical :: done
 
-      ! impactor position at t+dt if the new force were zero, and how it moves with F
+      ! impactor position at t+dt if the new force were zero
       w_r0 = imp%w + imp%v*dt - imp%f*dt**2/(4.0_dp*model%impactor_mass)
-      compliance = dt**2/(4.0_dp*model%impactor_mass) + model%g_unit(model%eq_impact)
       converged = .false.
       iterations = 0
-      f = 0.0_dp;  alpha = 0.0_dp
+      alpha = 0.0_dp
+      f = max(f, 0.0_dp)
       call fp_start(model%nl_guard, size(d), model%max_nonlinear_iter, model%cr2)
       nonlinear_iterations: do
          iterations = iterations + 1
@@ -352,12 +430,42 @@ contains
          call global_solve(model%keff, rhs, stat, errmsg)
          model%solves = model%solves + 1
          if (stat /= 0) return
-         call solve_contact_equation(model%law, hist, w_r0 - rhs(model%eq_impact), compliance, f, alpha)
-         rhs = rhs + f*model%g_unit
+         ! -- the contact equation, with the contact area of its root
+         contact_passes: do pass = 1, max_passes
+            call contact_area(model, hist, f)
+            call contact_response(model, stat, errmsg)
+            if (stat /= 0) return
+            compliance = dt**2/(4.0_dp*model%impactor_mass) + pattern_compliance(model)
+            call solve_contact_equation(model%law, hist, w_r0 - pattern_mean(model%pattern, rhs), compliance, &
+                                        f_new, alpha)
+            done = abs(f_new - f) <= pass_tol*max(f_new, f) .or. model%cload%kind == load_point
+            f = f_new
+            if (done) exit contact_passes
+         end do contact_passes
+         call contact_area(model, hist, f)
+         do j = 1, model%pattern%n
+            rhs = rhs + f*model%pattern%c(j)*model%resp(:, findloc(model%resp_eq(:model%nresp), &
+                                                                 model%pattern%eq(j), dim=1))
+         end do
          call iteration_end(model, d_t, rhs, d, converged, done, stat, errmsg)
          if (done .or. stat /= 0) exit nonlinear_iterations
       end do nonlinear_iterations
    end subroutine fast_step
+
+   !> The plate's compliance under the impactor for the current contact
+   !> pattern p: the pressure-weighted deflection per newton of contact
+   !> force, p^T (K_L + 4/dt^2 M)^-1 p / total (m/N), from the columns of
+   !> contact_response.
+   pure function pattern_compliance(model) result(c)
+      type(model_t), intent(in) :: model           !< model with the pattern's columns
+      real(dp) :: c
+      integer :: j, k
+      c = 0.0_dp
+      do k = 1, model%pattern%n
+         j = findloc(model%resp_eq(:model%nresp), model%pattern%eq(k), dim=1)
+         c = c + model%pattern%c(k)*pattern_mean(model%pattern, model%resp(:, j))
+      end do
+   end function pattern_compliance
 
    !> The end of one iteration of eq. (19), for both schemes: the linear
    !> theory is exact after one solve; otherwise eq. (18) and the guard
@@ -533,12 +641,15 @@ contains
 
    ! ============================================================ outputs
 
-   !> Plate deflection at the impact point (m).
+   !> Plate deflection under the impactor (m), eq. (13): the deflection of
+   !> the impact point for the point force, the pressure-weighted mean over
+   !> the contact area for Hertz's load (module contact_load), with the
+   !> current contact pattern (contact_area).
    pure function impact_deflection(model, d) result(w)
       type(model_t), intent(in) :: model   !< model
       real(dp), intent(in) :: d(:)         !< global displacements
       real(dp) :: w
-      w = d(model%eq_impact)
+      w = pattern_mean(model%pattern, d)
    end function impact_deflection
 
    !> Plate deflection for the von Karman check (m): the largest |w| when
@@ -587,7 +698,7 @@ contains
       u = 0.0_dp
       elements: do e = 1, model%msh%nelem
          call gather_element(model%msh%elem_eq(:, e), d, de)
-         u = u + element_strain_energy(model%lmt, model%geo(e), de, model%nonlinear, model%shear_eps)
+         u = u + element_strain_energy(model%lmt, model%geo(e), de, model%nonlinear)
       end do elements
       u = u*model%msh%sym_factor
    end function plate_strain_energy

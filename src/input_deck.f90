@@ -34,6 +34,8 @@
 !>                q                   -          2.5              unloading exponent
 !>                alpha_p             m          1.667e-5         indentation beyond which it is permanent
 !>                beta                -          0.094            alpha0 = beta (alpha_m - alpha_p)
+!>                load                -          'hertz'          'hertz' (Hertz's pressure over the contact
+!>                                                                area) | 'point' (the paper's point force)
 !>     &mesh      nx, ny              -          9, 6             9-node elements from the impact point to
 !>                                                                an edge along x, y for a centred impact
 !>                                                                (the quarter's counts; src/mesh.f90)
@@ -42,9 +44,10 @@
 !>                                                                | 'full' |
 !>                                                                'strip' (quarter of a plate infinitely
 !>                                                                long in y: y = b/2 a symmetry line too)
-!>                shear_rule          -          'auto'           transverse shear integration: 'selective'
-!>                                                                (2x2, the paper's) | 'stabilized' | 'auto'
-!>                                                                (selective unless the edges are free)
+!>                shear_rule          -          'auto'           transverse shear of the element: 'mitc9'
+!>                                                                (assumed strain) | 'selective' (2x2, the
+!>                                                                paper's) | 'stabilized' | 'full' (3x3) |
+!>                                                                'auto' (mitc9; src/shear_strain.f90)
 !>                stabilization       -          0.01             fraction eps of 3x3 shear when stabilized
 !>                average_bend_twist  -          .false.          .true.: the paper's averaging (section 3.1)
 !>                                                                is accepted, D16 = D26 = 0 on a quarter or
@@ -171,6 +174,9 @@ module input_deck
       real(dp) :: x0 = 0.0_dp, y0 = 0.0_dp               ! impact point from the plate centre (m)
       ! &contact k, q, alpha_p, beta /  (N/m^1.5, -, m, -)  paper Table 2 in SI
       real(dp) :: k = 1.413e9_dp, q = 2.5_dp, alpha_p = 1.667e-5_dp, beta = 0.094_dp
+      ! &contact load /  how the contact force enters the plate: 'hertz' (Hertz's pressure over the
+      !    contact area, the default) | 'point' (the paper's point force, eq. 10)
+      character(len=name_len) :: contact_load = 'hertz'
       ! &mesh nx, ny, domain, shear_rule, stabilization, average_bend_twist, grading /
       !    elements along x and y of the domain (the quarter's with 'auto'); domain and how the code
       !    chooses it; D16 = D26 = 0 accepted; ratio of successive element sizes
@@ -178,7 +184,7 @@ module input_deck
       character(len=name_len) :: domain = 'auto'         ! 'auto' | 'quarter' | 'half' | 'full' | 'strip'
       logical :: average_bend_twist = .false.            ! accept D16 = D26 = 0 (section 3.1) for 'auto'
       real(dp) :: grading = 1.0_dp                       ! ratio of successive element sizes (1: uniform)
-      character(len=name_len) :: shear_rule = 'auto'     ! 'auto' | 'selective' | 'stabilized'
+      character(len=name_len) :: shear_rule = 'auto'     ! 'auto' (mitc9) | 'mitc9' | 'selective' | 'stabilized' | 'full'
       real(dp) :: stabilization = 0.01_dp                ! fraction of 3x3 shear when stabilized
       ! &boundary edges, inplane /  'free' | 'simply_supported' | 'clamped';
       !    in-plane condition of simply supported edges: 'immovable' | 'movable'
@@ -454,6 +460,7 @@ contains
          real_str(deck%alpha_p), 'must be zero or positive (m)')
       call need(deck%beta >= 0.0_dp .and. deck%beta < 1.0_dp, 'contact', 'beta', real_str(deck%beta), &
          'must be in [0, 1)')
+      call keyword('contact', 'load', deck%contact_load, [character(len=name_len) :: 'hertz', 'point'])
 
       call need(deck%nx >= 1, 'mesh', 'nx', int_str(deck%nx), 'must be at least 1')
       call need(deck%ny >= 1, 'mesh', 'ny', int_str(deck%ny), 'must be at least 1')
@@ -476,7 +483,7 @@ contains
       call need(deck%grading >= 1.0_dp .and. deck%grading <= max_grading, 'mesh', 'grading', &
          real_str(deck%grading), 'must be in [1, ' // real_str(max_grading) // '] (1: uniform)')
       call keyword('mesh', 'shear_rule', deck%shear_rule, &
-         [character(len=name_len) :: 'auto', 'selective', 'stabilized'])
+         [character(len=name_len) :: 'auto', 'mitc9', 'selective', 'stabilized', 'full'])
       call need(deck%stabilization > 0.0_dp .and. deck%stabilization <= 1.0_dp, 'mesh', 'stabilization', &
          real_str(deck%stabilization), 'must be in (0, 1]')
       if (stat == 0 .and. (deck%domain == 'quarter' .or. deck%domain == 'strip')) then
@@ -636,7 +643,8 @@ contains
          // ' m/s, diameter = ' // real_str(deck%diameter) // ' m, x0 = ' // real_str(deck%x0) // ' m, y0 = ' &
          // real_str(deck%y0) // ' m')
       call put('&contact', 'k = ' // real_str(deck%k) // ' N/m^1.5, q = ' // real_str(deck%q) &
-         // ', alpha_p = ' // real_str(deck%alpha_p) // ' m, beta = ' // real_str(deck%beta))
+         // ', alpha_p = ' // real_str(deck%alpha_p) // ' m, beta = ' // real_str(deck%beta) &
+         // ", load = '" // trim(deck%contact_load) // "'")
       call put('&mesh', 'nx = ' // int_str(deck%nx) // ', ny = ' // int_str(deck%ny) // ", domain = '" &
          // trim(deck%domain) // "', shear_rule = '" // trim(deck%shear_rule) // "', stabilization = " &
          // real_str(deck%stabilization))
@@ -872,7 +880,7 @@ contains
       stat = 0
    end subroutine read_impactor
 
-   !> &contact k, q, alpha_p, beta /
+   !> &contact k, q, alpha_p, beta, load /
    subroutine read_contact(scratch, body, deck, stat, errmsg)
       integer, intent(in) :: scratch
       character(len=*), intent(in) :: body
@@ -880,11 +888,13 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       real(dp) :: k, q, alpha_p, beta
-      namelist /contact/ k, q, alpha_p, beta
+      character(len=name_len) :: load
+      namelist /contact/ k, q, alpha_p, beta, load
       integer :: ios, trial, bad
       character(len=msg_len) :: msg
       type(text_t), allocatable :: pieces(:)
 
+      load = deck%contact_load
       k = deck%k
       q = deck%q
       alpha_p = deck%alpha_p
@@ -898,9 +908,10 @@ contains
             read (pieces(bad)%s, nml=contact, iostat=trial)
             if (trial /= 0) exit
          end do
-         call read_failure(deck%source, 'contact', 'k, q, alpha_p, beta', ios, msg, pieces, bad, stat, errmsg)
+         call read_failure(deck%source, 'contact', 'k, q, alpha_p, beta, load', ios, msg, pieces, bad, stat, errmsg)
          return
       end if
+      deck%contact_load = load
       deck%k = k
       deck%q = q
       deck%alpha_p = alpha_p

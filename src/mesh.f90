@@ -61,7 +61,7 @@ module mesh
    implicit none
    private
    public :: mesh_t, ndof_node, nfe, build_mesh, apply_boundary, &
-             freedom_name, describe_equation, element_freedoms
+             freedom_name, describe_equation, element_freedoms, locate_point
 
    !> Freedoms per node (u, v, w, psi_x, psi_y).
    integer, parameter :: ndof_node = 5
@@ -84,6 +84,8 @@ module mesh
       real(dp), allocatable :: coords(:,:)    !< (2, nnode) node coordinates (m)
       integer, allocatable :: conn(:,:)       !< (nen, nelem) element nodes
       integer, allocatable :: grid(:,:)       !< (0:2nx, 0:2ny) node number of grid point
+      real(dp), allocatable :: xline(:)       !< (0:nx) x of the element corner lines (m), increasing
+      real(dp), allocatable :: yline(:)       !< (0:ny) y of the element corner lines (m), increasing
       integer, allocatable :: eq(:,:)         !< (ndof_node, nnode) equation numbers
       integer, allocatable :: elem_eq(:,:)    !< (nfe, nelem) equation numbers of element freedoms
       integer :: impact_node = 0              !< node at the impact point
@@ -174,6 +176,7 @@ contains
       call node_lines(0.5_dp*b, ncy, m%y_impact, m%sym_y, m%grading, yl, jy)
       m%nx = size(xl) - 1;  m%ny = size(yl) - 1
       m%x0 = xl(0);  m%x1 = xl(m%nx);  m%y0 = yl(0);  m%y1 = yl(m%ny)
+      m%xline = xl;  m%yline = yl
 
       ngx = 2*m%nx + 1;  ngy = 2*m%ny + 1
       m%nnode = ngx*ngy
@@ -334,6 +337,46 @@ contains
          eqs(ndof_node*(k-1)+1 : ndof_node*k) = m%eq(:, m%conn(k, e))
       end do
    end function element_freedoms
+
+   !> The element that holds the point p of the modelled domain, and p's
+   !> reference coordinates (xi, eta) in it (the elements are straight-sided
+   !> rectangles on the grid lines: module header). e = 0 when p lies
+   !> outside the domain.
+   pure subroutine locate_point(m, p, e, xi)
+      type(mesh_t), intent(in) :: m       !< mesh
+      real(dp), intent(in) :: p(2)        !< point (m), from the plate centre
+      integer, intent(out) :: e           !< element, 0 when outside
+      real(dp), intent(out) :: xi(2)      !< reference coordinates in [-1, 1]
+      integer :: ie, je
+      real(dp) :: lo(2), hi(2)
+      e = 0;  xi = 0.0_dp
+      ie = stretch(p(1), m%xline)
+      je = stretch(p(2), m%yline)
+      if (ie < 0 .or. je < 0) return
+      e = 1 + ie + m%nx*je
+      lo = [m%xline(ie), m%yline(je)];  hi = [m%xline(ie + 1), m%yline(je + 1)]
+      xi = (2.0_dp*p - (lo + hi))/(hi - lo)
+   contains
+      !> The stretch k - 1 (from 0) between the increasing lines(k) and
+      !> lines(k+1) that holds x, by bisection; -1 outside.
+      pure function stretch(x, lines) result(k)
+         real(dp), intent(in) :: x, lines(:)
+         integer :: k
+         integer :: lo_i, hi_i, mid
+         k = -1
+         if (x < lines(1) .or. x > lines(size(lines))) return
+         lo_i = 1;  hi_i = size(lines)
+         do while (hi_i - lo_i > 1)
+            mid = (lo_i + hi_i)/2
+            if (x >= lines(mid)) then
+               lo_i = mid
+            else
+               hi_i = mid
+            end if
+         end do
+         k = lo_i - 1
+      end function stretch
+   end subroutine locate_point
 
    !> Name of freedom k (1..5).
    pure function freedom_name(k) result(name)

@@ -65,14 +65,17 @@
 !> much).
 !>
 !> Contact radius: Hertz, a = sqrt(R alpha), R the nose radius, alpha at the
-!> estimated peak force; the contact force is applied at the impact node, so
-!> a much smaller than the element size there is consistent. An element
-!> smaller than the contact's diameter (a/element > max_radius_ratio = 0.5)
-!> resolves a point load that the contact does not apply: under a point
-!> force the Mindlin plate's deflection grows without bound (logarithmically)
-!> as the mesh is refined there, and the slopes at the point steepen, which
-!> slows and can stop the convergence of the eq. (19) iteration
-!> (docs/validation/model_choice.md, section 5); the report warns.
+!> estimated peak force. With &contact load = 'hertz' (the default) the
+!> force is spread over that disc (src/contact_load.f90), whatever the
+!> element size. With the paper's point force (load = 'point') it is
+!> applied at the impact node, which is consistent only while a is much
+!> smaller than the element there: an element smaller than the contact's
+!> diameter (a/element > max_radius_ratio = 0.5) resolves a point load that
+!> the contact does not apply (under a point force the Mindlin plate's
+!> deflection grows without bound, logarithmically, as the mesh is refined
+!> there, and the slopes at the point steepen, which slows and can stop the
+!> convergence of the eq. (19) iteration: docs/validation/model_choice.md,
+!> section 5); the report warns.
 module scene_model
    use kinds, only: dp, msg_len
    use materials, only: lamina_t, laminate_t, laminate_from_layup
@@ -138,6 +141,7 @@ module scene_model
       real(dp) :: deflection = 0.0_dp               !< estimated deflection at the impact point (m)
       real(dp) :: indentation = 0.0_dp              !< estimated indentation (m)
       real(dp) :: contact_radius = 0.0_dp           !< Hertz contact radius at that force (m)
+      logical :: point_load = .false.               !< the paper's point force (&contact load = 'point')
       real(dp) :: element_size(2) = 0.0_dp          !< sides along x, y of the element at the impact point (m)
       real(dp) :: impactor_mass = 0.0_dp            !< m (kg)
       real(dp) :: plate_mass = 0.0_dp               !< rho h a b, the whole plate (kg)
@@ -393,7 +397,8 @@ contains
          scene%contact_radius, ' m (Hertz, alpha = ', scene%indentation, ' m); element at the impact point ', &
          scene%element_size(1), ' x ', scene%element_size(2), ' m; a/element = ', &
          scene%contact_radius/minval(scene%element_size)
-      if (scene%contact_radius > max_radius_ratio*minval(scene%element_size)) write (unit, '(a,f4.2,a)') &
+      if (scene%point_load .and. scene%contact_radius > max_radius_ratio*minval(scene%element_size)) &
+         write (unit, '(a,f4.2,a)') &
          lead // 'warning: the element at the impact point is smaller than the contact''s diameter (a/element > ', &
          max_radius_ratio, '): the point force is resolved more finely than the contact applies it, and the' &
          // ' eq. (19) iteration may converge slowly or not at all; use a coarser element there (grading, nx, ny)'
@@ -422,11 +427,10 @@ contains
    !> force on the whole plate (module header): K_L of the model's mesh,
    !> assembled and factored here once more (not counted among the run's
    !> factorisations); free edges are replaced by simply supported ones.
-   subroutine point_stiffness(msh, lmt, geo, shear_eps, force_share, edges, storage, scene, stat, errmsg)
+   subroutine point_stiffness(msh, lmt, geo, force_share, edges, storage, scene, stat, errmsg)
       type(mesh_t), intent(in) :: msh                    !< the model's mesh and freedoms
       type(laminate_t), intent(in) :: lmt                !< the model's laminate
       type(element_geometry_t), intent(in) :: geo(:)     !< per-element geometry
-      real(dp), intent(in) :: shear_eps                  !< fraction of 3x3 shear (element_stiffness)
       real(dp), intent(in) :: force_share                !< share of the force the domain carries (-)
       character(len=*), intent(in) :: edges              !< &boundary edges
       character(len=*), intent(in) :: storage            !< 'band' or 'skyline'
@@ -451,7 +455,7 @@ contains
       if (stat /= 0) return
       call global_zero(k)
       elements: do e = 1, m%nelem
-         call element_stiffness(lmt, geo(e), ke, shear_eps)
+         call element_stiffness(lmt, geo(e), ke)
          call global_assemble(k, ke, m%elem_eq(:, e))
       end do elements
       call global_factor(k, stat, errmsg, bad_eq)

@@ -166,7 +166,7 @@ contains
       call global_zero(kt)
       elements: do e = 1, model%msh%nelem
          call gather_element(model%msh%elem_eq(:, e), d, de)
-         call element_tangent_stiffness(model%lmt, model%geo(e), de, ke, model%shear_eps)
+         call element_tangent_stiffness(model%lmt, model%geo(e), de, ke)
          call global_assemble(kt, ke, model%msh%elem_eq(:, e))
       end do elements
       call global_factor(kt, stat, errmsg, bad_eq)
