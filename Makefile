@@ -26,6 +26,12 @@ SOURCES := $(filter-out $(MAIN),$(sort $(wildcard src/*.f90)))
 OBJS    := $(patsubst src/%.f90,$(BUILD)/%.o,$(SOURCES))
 LIB     := $(BUILD)/libimpact.a
 
+# The validation's oracles (exact and independent solutions: Navier,
+# Hertz, the rigid target, ...) are not part of the solver: they live in
+# validation/ and are built for make validate and make test only.
+ORACLE_SOURCES := validation/reference_solutions.f90 validation/rigid_target.f90
+ORACLE_OBJS    := $(patsubst validation/%.f90,$(BUILD)/oracles/%.o,$(ORACLE_SOURCES))
+
 .PHONY: all run test setup clean reference
 all: impact
 
@@ -41,6 +47,12 @@ $(BUILD)/deps.mk: $(SOURCES) tools/fortran-deps | $(BUILD)
 
 $(LIB): $(OBJS)
 	ar rcs $@ $^
+
+$(BUILD)/oracles/%.o: validation/%.f90 $(LIB)
+	@mkdir -p $(BUILD)/oracles
+	$(FC_ALL) -c $< -o $@
+# (in the order of their use statements)
+$(BUILD)/oracles/rigid_target.o: $(BUILD)/oracles/reference_solutions.o
 
 # The main program is built without gfortran's run-time backtrace, so that a
 # bad deck ends with its one-line message (error stop 1) and not a stack dump;

@@ -76,7 +76,7 @@ $(BUILD)/code_version.inc: hdf5-version | $(BUILD)
 	@v=$$(git -C '$(CURDIR)' describe --always --dirty 2>/dev/null || echo unknown); \
 	printf "   character(len=*), parameter :: code_version = 'impact %s'\n" "$$v" > $@.tmp; \
 	if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
-$(BUILD)/results_hdf5.o: $(BUILD)/code_version.inc
+$(BUILD)/build_info.o: $(BUILD)/code_version.inc
 
 # ---- HDF5 -> gnuplot: the deflected shape at the peak force
 H5EXPORT := $(BUILD)/h5export

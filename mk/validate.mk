@@ -13,8 +13,8 @@ VALIDATE_EXE := $(BUILD)/validate
 
 .PHONY: validate
 
-$(VALIDATE_EXE): validation/validate.f90 $(LIB)
-	$(FC_ALL) $< $(LIB) $(LAPACK) -o $@
+$(VALIDATE_EXE): validation/validate.f90 $(ORACLE_OBJS) $(LIB)
+	$(FC_ALL) $< $(ORACLE_OBJS) $(LIB) $(LAPACK) -o $@
 
 validate: setup impact $(VALIDATE_EXE)
 	@mkdir -p build/validation docs/validation

@@ -1,6 +1,5 @@
-!> What the static, modal and pressure analyses share (`&analysis kind =
-!> 'static' | 'modes' | 'pressure'`): the load vector of `&load` and the
-!> result files.
+!> The load of the static and pressure analyses (`&analysis kind =
+!> 'static' | 'pressure'`): the load vector of `&load`.
 !>
 !> Loads (`&load kind`), w positive the way the impactor moves:
 !>  - 'uniform':       q = q0 over the whole plate (Pa);
@@ -11,22 +10,17 @@
 !> Pressures are integrated consistently, f_i = int phi_i q dA, element by
 !> element (element_pressure_load); on a quarter (or strip) model the load
 !> vector is the modelled part's share, and a central force enters as
-!> P / sym_factor, as the contact force does.
-!>
-!> Result files are column text: a title line, the deck echo, one line per
-!> column with its unit, then the column names on one '#' line. As for the
-!> impact analysis (output_files, check_output), a run refuses to replace
-!> the result files of an earlier run unless &output overwrite = .true.
-!> (or impact --overwrite): check_result_files, before any work.
+!> P / sym_factor, as the paper's point contact force does. (The result
+!> files of every analysis: src/result_files.f90.)
 module analysis_support
    use kinds, only: dp, pi, msg_len
-   use input_deck, only: deck_t, echo_deck
-   use impact_driver, only: model_t, gather_element, scatter_add_element
+   use deck_schema, only: deck_t
+   use plate_model, only: model_t, scatter_add_element
    use element_matrices, only: element_pressure_load, ngp_full
    use mesh, only: nfe
    implicit none
    private
-   public :: assemble_load, check_result_files, open_result_file
+   public :: assemble_load
 
 contains
 
@@ -61,65 +55,5 @@ contains
          errmsg = '&load: kind = '''//trim(deck%load_kind)//''': unknown load'
       end select
    end subroutine assemble_load
-
-   !> Before any work: refuses when <prefix><suffix> exists for one of the
-   !> suffixes, the results of an earlier run, unless deck%overwrite.
-   subroutine check_result_files(deck, suffixes, stat, errmsg)
-      type(deck_t), intent(in) :: deck            !< effective deck (prefix, overwrite)
-      character(len=*), intent(in) :: suffixes(:) !< file names after the prefix
-      integer, intent(out) :: stat                !< 0 when the run may write its results
-      character(len=*), intent(inout) :: errmsg   !< reason on failure
-      logical :: exists
-      integer :: i
-      stat = 0
-      if (deck%overwrite) return
-      files: do i = 1, size(suffixes)
-         inquire (file=trim(deck%prefix)//trim(suffixes(i)), exist=exists)
-         if (exists) then
-            stat = 1
-            errmsg = trim(deck%source)//": &output: prefix = '"//trim(deck%prefix)//"': "// &
-               trim(deck%prefix)//trim(suffixes(i))//' exists, the results of another run: '// &
-               'choose another prefix, or set overwrite = .true. in &output (or run impact --overwrite) '// &
-               'to replace them'
-            return
-         end if
-      end do files
-   end subroutine check_result_files
-
-   !> Creates the directory of the path if needed, opens it and writes the
-   !> header: title, deck echo, the columns with their units, the names.
-   subroutine open_result_file(deck, suffix, title, names, texts, unit, path, stat, errmsg)
-      type(deck_t), intent(in) :: deck            !< effective deck (echoed; prefix)
-      character(len=*), intent(in) :: suffix      !< file name after the prefix, e.g. '_static.dat'
-      character(len=*), intent(in) :: title       !< first line, after '# '
-      character(len=*), intent(in) :: names(:)    !< column names (with their unit)
-      character(len=*), intent(in) :: texts(:)    !< column meanings (with their unit)
-      integer, intent(out) :: unit                !< the open file
-      character(len=*), intent(out) :: path       !< its path
-      integer, intent(out) :: stat                !< 0 on success
-      character(len=*), intent(inout) :: errmsg   !< reason on failure
-      character(len=msg_len) :: iomsg
-      integer :: c, slash, ex
-
-      path = trim(deck%prefix)//suffix
-      slash = index(path, '/', back=.true.)
-      if (slash > 1) call execute_command_line('mkdir -p "'//path(1:slash-1)//'"', exitstat=ex)
-      open (newunit=unit, file=path, status='replace', action='write', iostat=stat, iomsg=iomsg)
-      if (stat /= 0) then
-         errmsg = '&output: prefix = "'//trim(deck%prefix)//'": cannot write '//trim(path)//': '//trim(iomsg)
-         return
-      end if
-      write (unit, '(a)') '# '//title
-      call echo_deck(deck, unit, '# ')
-      write (unit, '(a)') '# columns:'
-      do c = 1, size(names)
-         write (unit, '(a,i2,1x,a,1x,a)') '# ', c, names(c), trim(texts(c))
-      end do
-      write (unit, '(a)', advance='no') '#'
-      do c = 1, size(names)
-         write (unit, '(1x,a)', advance='no') trim(names(c))
-      end do
-      write (unit, '(a)') ''
-   end subroutine open_result_file
 
 end module analysis_support

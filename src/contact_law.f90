@@ -29,7 +29,7 @@ module contact_law
    implicit none
    private
    public :: contact_law_t, contact_history_t, contact_force, contact_branch, &
-             contact_commit, permanent_indentation, loading_indentation, law_indentation, &
+             contact_commit, permanent_indentation, loading_indentation, law_indentation, law_tangent, &
              solve_contact_equation, &
              branch_none, branch_loading, branch_unloading, branch_reloading
 
@@ -96,6 +96,23 @@ contains
          alpha = hist%alpha_0 + (hist%alpha_m - hist%alpha_0)*(f/hist%f_m)**(1.0_dp/law%q)
       end if
    end function law_indentation
+
+   !> The law's tangent stiffness dF/d alpha at the trial indentation alpha
+   !> on its current branch (N/m), by a central difference of relative step
+   !> 1e-6: the slope that decides whether the plain update F <- F_cont of
+   !> the contact iteration contracts.
+   elemental function law_tangent(law, hist, alpha) result(k_t)
+      type(contact_law_t), intent(in) :: law       !< law constants
+      type(contact_history_t), intent(in) :: hist  !< committed history
+      real(dp), intent(in) :: alpha                !< trial indentation (m)
+      real(dp) :: k_t
+      real(dp), parameter :: rel_step = 1.0e-6_dp
+      real(dp) :: da
+      k_t = 0.0_dp
+      if (alpha <= 0.0_dp) return
+      da = rel_step*alpha
+      k_t = (contact_force(law, hist, alpha + da) - contact_force(law, hist, alpha - da))/(2.0_dp*da)
+   end function law_tangent
 
    !> The branch of the law that a trial indentation alpha follows.
    elemental function contact_branch(hist, alpha) result(branch)

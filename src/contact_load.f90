@@ -43,7 +43,7 @@ module contact_load
    implicit none
    private
    public :: contact_load_t, load_pattern_t, contact_load_init, load_pattern, pattern_mean, &
-             pattern_add, load_point, load_hertz, load_kind_names
+             pattern_add, pattern_load, load_point, load_hertz, load_kind_names
 
    !> Kinds of load, by code, and their names in the deck (&contact load).
    integer, parameter :: load_point = 1, load_hertz = 2
@@ -186,5 +186,16 @@ contains
       real(dp), intent(inout) :: rhs(:)            !< global load vector
       rhs(pat%eq(:pat%n)) = rhs(pat%eq(:pat%n)) + f*pat%c(:pat%n)
    end subroutine pattern_add
+
+   !> The load vector f (pattern) of the contact force f (N) on the model,
+   !> as a whole vector of n equations.
+   pure function pattern_load(pat, f, n) result(v)
+      type(load_pattern_t), intent(in) :: pat      !< the pattern
+      real(dp), intent(in) :: f                    !< contact force on the whole plate (N)
+      integer, intent(in) :: n                     !< equations
+      real(dp) :: v(n)
+      v = 0.0_dp
+      call pattern_add(pat, f, v)
+   end function pattern_load
 
 end module contact_load

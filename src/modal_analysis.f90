@@ -32,10 +32,10 @@
 !> scaled to a largest |w| of 1).
 module modal_analysis
    use kinds, only: dp, pi, msg_len
-   use input_deck, only: deck_t
-   use impact_driver, only: model_t, gather_element
+   use deck_schema, only: deck_t
+   use plate_model, only: model_t, gather_element
    use global_matrix, only: global_matvec
-   use analysis_support, only: check_result_files, open_result_file
+   use result_files, only: claim_results, open_columns
    use mesh, only: ndof_node
    implicit none
    private
@@ -157,24 +157,24 @@ contains
    !> a few lines for the terminal.
    subroutine run_modes(deck, model, report, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< deck
-      type(model_t), intent(inout) :: model         !< model
+      type(model_t), intent(in) :: model            !< model
       character(len=*), intent(out) :: report       !< what was done, for the terminal
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(modal_result_t) :: res
-      character(len=msg_len) :: path, path2
+      character(len=:), allocatable :: path, path2
       character(len=16), allocatable :: names(:)
       character(len=48), allocatable :: texts(:)
       real(dp) :: de(ndof_node), wmax(deck%mode_count), wk
       integer :: u, j, k
 
       report = ''
-      call check_result_files(deck, [character(len=20) :: '_modes.dat', '_mode_shapes.dat'], stat, errmsg)
+      call claim_results(deck, [character(len=20) :: '_modes.dat', '_mode_shapes.dat'], stat, errmsg)
       if (stat /= 0) return
       call modal_solve(model, deck%mode_count, deck%mode_shapes, res, stat, errmsg)
       if (stat /= 0) return
 
-      call open_result_file(deck, '_modes.dat', 'impact: modal analysis, K_L phi = omega^2 M phi (LAPACK dsbgvx)', &
+      call open_columns(deck, '_modes.dat', 'impact: modal analysis, K_L phi = omega^2 M phi (LAPACK dsbgvx)', &
          [character(len=18) :: 'mode', 'frequency_Hz', 'omega_rad_s', 'w_fraction', 'inplane_fraction', &
           'rotation_fraction'], &
          [character(len=64) :: 'mode number, ascending frequency (-)', 'natural frequency (Hz)', &
@@ -213,7 +213,7 @@ contains
          end do
          if (wmax(j) == 0.0_dp) wmax(j) = 1.0_dp
       end do
-      call open_result_file(deck, '_mode_shapes.dat', 'impact: modal analysis, mode shapes (modelled domain)', &
+      call open_columns(deck, '_mode_shapes.dat', 'impact: modal analysis, mode shapes (modelled domain)', &
          names, texts, u, path2, stat, errmsg)
       if (stat /= 0) return
       nodes: do k = 1, model%msh%nnode

@@ -18,8 +18,8 @@ module newmark
    use kinds, only: dp
    implicit none
    private
-   public :: newmark_t, newmark_init, newmark_predictor, newmark_update, &
-             impactor_advance
+   public :: newmark_t, plate_state_t, impactor_state_t, newmark_init, newmark_predictor, newmark_update, &
+             impactor_advance, impactor_moved
 
    !> The integration constants of a time step dt.
    type :: newmark_t
@@ -27,6 +27,17 @@ module newmark
       real(dp) :: a0 = 0.0_dp   !< 4/dt^2 (1/s^2)
       real(dp) :: a1 = 0.0_dp   !< 4/dt (1/s)
    end type newmark_t
+
+   !> The plate's displacements, velocities and accelerations {D}, {V}, {A}.
+   type :: plate_state_t
+      real(dp), allocatable :: d(:), v(:), a(:)
+   end type plate_state_t
+
+   !> The rigid impactor: position (m, from first touch), velocity (m/s,
+   !> positive towards the plate) and the contact force (N) at the same time.
+   type :: impactor_state_t
+      real(dp) :: w = 0.0_dp, v = 0.0_dp, f = 0.0_dp
+   end type impactor_state_t
 
 contains
 
@@ -76,5 +87,17 @@ contains
       w_new = w + v*dt + 0.5_dp*acc*dt**2
       v_new = v + acc*dt
    end subroutine impactor_advance
+
+   !> The impactor at t+dt under the force f_new at t+dt, eq. (21); its force
+   !> is f_new.
+   pure function impactor_moved(mass, dt, imp, f_new) result(imp_new)
+      real(dp), intent(in) :: mass                 !< impactor mass (kg)
+      real(dp), intent(in) :: dt                   !< time step (s)
+      type(impactor_state_t), intent(in) :: imp    !< the impactor at t
+      real(dp), intent(in) :: f_new                !< contact force at t+dt (N)
+      type(impactor_state_t) :: imp_new
+      call impactor_advance(mass, dt, imp%w, imp%v, imp%f, f_new, imp_new%w, imp_new%v)
+      imp_new%f = f_new
+   end function impactor_moved
 
 end module newmark

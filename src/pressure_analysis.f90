@@ -21,13 +21,14 @@
 !> (`&output every`).
 module pressure_analysis
    use kinds, only: dp, msg_len
-   use input_deck, only: deck_t
-   use impact_driver, only: model_t, factor_effective_matrix, plate_solve, plate_kinetic_energy, &
+   use deck_schema, only: deck_t
+   use plate_model, only: model_t, centre_deflection, plate_kinetic_energy, &
       plate_strain_energy
    use newmark, only: newmark_t, newmark_init, newmark_predictor, newmark_update
    use global_matrix, only: global_matrix_t, global_copy, global_factor, global_solve, global_matvec
-   use analysis_support, only: assemble_load, check_result_files, open_result_file
-   use impact_driver, only: impact_deflection
+   use analysis_support, only: assemble_load
+   use result_files, only: claim_results, open_columns
+   use plate_solver, only: solver_t, solver_init, plate_solve
    use mesh, only: describe_equation
    implicit none
    private
@@ -51,7 +52,7 @@ contains
    !> t = 0 (module header). Energies are computed every `every` steps (and
    !> at the last); the other rows keep zero energies.
    subroutine pressure_solve(model, f, dt, nstep, every, res, stat, errmsg)
-      type(model_t), intent(inout) :: model        !< model; keff is factored here
+      type(model_t), intent(in) :: model           !< model
       real(dp), intent(in) :: f(:)                 !< load vector (N)
       real(dp), intent(in) :: dt                   !< time step (s)
       integer, intent(in) :: nstep                 !< number of steps
@@ -62,7 +63,8 @@ contains
       type(newmark_t) :: nm
       type(global_matrix_t) :: mfac
       real(dp) :: d(size(f)), v(size(f)), a(size(f)), d_new(size(f)), rhs(size(f))
-      integer :: step, iters, bad_eq, solves0
+      type(solver_t) :: solver
+      integer :: step, bad_eq, solves0
       logical :: converged
 
       allocate (res%t(0:nstep), res%w_centre(0:nstep), res%kinetic(0:nstep), res%strain(0:nstep), &
@@ -84,15 +86,15 @@ contains
 
       ! -- K_L + 4/dt^2 M, factored once (eq. 19)
       nm = newmark_init(dt)
-      call factor_effective_matrix(model, nm, stat, errmsg)
+      call solver_init(model, nm, solver, stat, errmsg)
       if (stat /= 0) return
 
       time_steps: do step = 1, nstep
          call global_matvec(model%mass, newmark_predictor(nm, d, v, a), rhs)
          rhs = rhs + f
          d_new = d
-         solves0 = model%solves
-         call plate_solve(model, rhs, 0.0_dp, d, d_new, iters, converged, stat, errmsg)
+         solves0 = solver%solves
+         call plate_solve(solver, model, rhs, d, d_new, converged, stat, errmsg)
          if (stat /= 0) then
             write (errmsg, '(a,i0,a)') 'pressure: step ', step, ': ' // trim(errmsg)
             return
@@ -102,8 +104,8 @@ contains
          d = d_new
          res%nstep = step
          res%t(step) = real(step, dp)*dt
-         res%w_centre(step) = impact_deflection(model, d)
-         res%iterations(step) = model%solves - solves0
+         res%w_centre(step) = centre_deflection(model, d)
+         res%iterations(step) = solver%solves - solves0
          if (mod(step, every) == 0 .or. step == nstep) then
             res%kinetic(step) = plate_kinetic_energy(model, v)
             res%strain(step) = plate_strain_energy(model, d)
@@ -116,17 +118,18 @@ contains
    !> file; report is a few lines for the terminal.
    subroutine run_pressure(deck, model, report, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< deck
-      type(model_t), intent(inout) :: model         !< model
+      type(model_t), intent(in) :: model            !< model
       character(len=*), intent(out) :: report       !< what was done, for the terminal
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(pressure_result_t) :: res
       real(dp), allocatable :: f(:)
-      character(len=msg_len) :: path, warning
+      character(len=msg_len) :: warning
+      character(len=:), allocatable :: path
       integer :: u, step, nstep, peak
 
       report = ''
-      call check_result_files(deck, [character(len=24) :: '_pressure_history.dat'], stat, errmsg)
+      call claim_results(deck, [character(len=24) :: '_pressure_history.dat'], stat, errmsg)
       if (stat /= 0) return
       allocate (f(model%msh%neq))
       call assemble_load(deck, model, f, stat, errmsg)
@@ -135,7 +138,7 @@ contains
       call pressure_solve(model, f, deck%dt, nstep, deck%every, res, stat, errmsg)
       if (stat /= 0) return
 
-      call open_result_file(deck, '_pressure_history.dat', &
+      call open_columns(deck, '_pressure_history.dat', &
          'impact: transient response to a load applied at t = 0 and held', &
          [character(len=16) :: 'time_us', 'w_centre_mm', 'ke_plate_J', 'strain_energy_J', 'work_J', &
           'energy_error_J', 'plate_solves'], &

@@ -40,43 +40,22 @@
 module results_hdf5
    use hdf5, only: hid_t
    use kinds, only: dp, msg_len
-   use input_deck, only: deck_t, echo_deck, path_len
+   use deck_schema, only: deck_t, deck_vars, deck_groups, value_t, deck_bind, kind_real, kind_integer, &
+      kind_logical, kind_word, kind_path, kind_reals
+   use input_deck, only: echo_deck
+   use build_info, only: code_version
    use mesh, only: mesh_t, ndof_node, freedom_name
-   use output_files, only: history_row_t, run_summary_t
+   use result_files, only: history_columns, nhist, summary_item_t
    use hdf5_io, only: h5io_start, h5io_create, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
       h5io_write, h5io_rewrite, h5io_create_series, h5io_create_columns, h5io_append, &
       h5io_close_dataset, h5io_real, h5io_integer
    implicit none
    private
    public :: results_file_t, results_open, results_append_history, results_snapshot, results_peak, &
-             results_finish, nodal_values, code_version, nhist_real, nhist_int, hist_name, hist_units, &
-             field_units
+             results_finish, nodal_values, field_units
 
-   !> code_version: 'impact <git describe>' at build time (build/code_version.inc,
-   !> written by mk/hdf5.mk).
-   include 'code_version.inc'
 
-   !> History columns: the reals, then the integers, in the order of the
-   !> history file's columns (src/output_files.f90), in SI units.
-   integer, parameter :: nhist_real = 13, nhist_int = 3
-   integer, parameter :: name_len = 20, units_len = 8, text_len = 72
-   character(len=name_len), parameter :: hist_name(nhist_real + nhist_int) = [character(len=name_len) :: &
-      'time', 'force', 'indentation', 'w_plate', 'w_impactor', 'v_impactor', 'strain_y_back', &
-      'ke_impactor', 'ke_plate', 'strain_energy', 'contact_work', 'indentation_energy', 'energy_error', &
-      'branch', 'contact_iter', 'nonlinear_iter']
-   character(len=units_len), parameter :: hist_units(nhist_real + nhist_int) = [character(len=units_len) :: &
-      's', 'N', 'm', 'm', 'm', 'm/s', '-', 'J', 'J', 'J', 'J', 'J', 'J', '-', '-', '-']
-   character(len=text_len), parameter :: hist_text(nhist_real + nhist_int) = [character(len=text_len) :: &
-      'time', 'contact force on the whole plate F', 'indentation alpha = w_impactor - w_plate, eq. (13)', &
-      'plate deflection at the impact point', 'impactor displacement since first touch', &
-      'impactor velocity, positive towards the plate', &
-      'in-plane y strain on the back face at the gauge (Fig. 9b, 10b)', 'impactor kinetic energy', &
-      'plate kinetic energy, whole plate', 'plate strain energy, whole plate', &
-      'work of the contact force on the plate, int F dw_plate', &
-      'int F d alpha: stored in and dissipated by the contact', &
-      'E0 - (ke_impactor + ke_plate + strain_energy + indentation_energy)', &
-      'contact law branch: 0 none, 1 loading, 2 unloading, 3 reloading', &
-      'contact-force iterations of the step, eq. (17)', 'plate solutions of the step, eq. (19)']
+   integer, parameter :: units_len = 8
    !> Units of the nodal fields u, v, w, psi_x, psi_y.
    character(len=units_len), parameter :: field_units(ndof_node) = [character(len=units_len) :: &
       'm', 'm', 'm', 'rad', 'rad']
@@ -85,9 +64,9 @@ module results_hdf5
    !> An open results file and the ids of its growing datasets.
    type :: results_file_t
       logical :: active = .false.                       !< a file is open (&output hdf5)
-      character(len=path_len + 3) :: path = ''          !< <prefix>.h5
+      character(len=:), allocatable :: path             !< <prefix>.h5
       integer(hid_t) :: fid = -1                        !< the file
-      integer(hid_t) :: hist(nhist_real + nhist_int) = -1   !< /history/<column>
+      integer(hid_t) :: hist(nhist) = -1                !< /history/<column> (result_files: history_columns)
       integer(hid_t) :: snap_time = -1, snap_step = -1, snap_force = -1   !< /fields/time, step, force
       integer(hid_t) :: snap_field(ndof_node) = -1      !< /fields/u, v, w, psi_x, psi_y
       integer, allocatable :: eq(:,:)                   !< (ndof_node, nnode) equation numbers, 0 held
@@ -116,7 +95,7 @@ contains
 
       stat = 0
       if (.not. deck%hdf5) return
-      rf%path = trim(deck%prefix)//'.h5'
+      rf%path = deck%prefix//'.h5'
       rf%eq = msh%eq
       why = ''
       call h5io_start(stat, why)
@@ -140,13 +119,15 @@ contains
       ! -- histories: one extendible dataset per column
       if (stat == 0) call h5io_group(rf%fid, 'history', stat, why)
       if (stat == 0) call put_int('history', 'every', deck%every, 'steps')
-      history_columns: do c = 1, nhist_real + nhist_int
-         if (stat /= 0) exit history_columns
-         call h5io_create_series(rf%fid, 'history/'//trim(hist_name(c)), &
-            merge(h5io_real, h5io_integer, c <= nhist_real), hist_chunk, rf%hist(c), stat, why)
-         call put_string('history/'//trim(hist_name(c)), 'units', hist_units(c))
-         call put_string('history/'//trim(hist_name(c)), 'description', hist_text(c))
-      end do history_columns
+      columns: do c = 1, nhist
+         if (stat /= 0) exit columns
+         associate (col => history_columns(c))
+            call h5io_create_series(rf%fid, 'history/'//trim(col%name), &
+               merge(h5io_integer, h5io_real, col%whole), hist_chunk, rf%hist(c), stat, why)
+            call put_string('history/'//trim(col%name), 'units', col%unit)
+            call put_string('history/'//trim(col%name), 'description', col%meaning)
+         end associate
+      end do columns
 
       ! -- field snapshots: extendible, one column of nnode values per snapshot
       if (stat == 0) call h5io_group(rf%fid, 'fields', stat, why)
@@ -179,8 +160,8 @@ contains
       call put_string('summary', 'status', 'running')
       if (stat == 0) call h5io_flush(rf%fid, stat, why)
       if (stat /= 0) then
-         errmsg = trim(rf%path)//': '//trim(why)
-         call results_finish(rf, run_summary_t(status='failed while opening'), ecode, why)
+         errmsg = rf%path//': '//trim(why)
+         call results_finish(rf, 'failed while opening', [summary_item_t ::], ecode, why)
       end if
 
    contains
@@ -208,37 +189,29 @@ contains
 
    end subroutine results_open
 
-   !> Appends one history row (SI units) to /history and flushes the file.
-   subroutine results_append_history(rf, row, stat, errmsg)
-      !> The results file.
-      type(results_file_t), intent(inout) :: rf
-      !> The row just written to the history file.
-      type(history_row_t), intent(in) :: row
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      real(dp) :: r(nhist_real)
-      integer :: i(nhist_int), c
+   !> Appends one history row (SI units, in the order of history_columns)
+   !> to /history; flushes the file when flush is true.
+   subroutine results_append_history(rf, row, flush, stat, errmsg)
+      type(results_file_t), intent(inout) :: rf     !< the results file
+      real(dp), intent(in) :: row(nhist)            !< the row just written to the history file, SI
+      logical, intent(in) :: flush                  !< flush the file after it
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      integer :: c
       character(len=msg_len) :: why
-
       stat = 0
       if (.not. rf%active) return
-      r = [row%time, row%force, row%alpha, row%w_plate, row%w_impactor, row%v_impactor, row%strain_y, &
-         row%ke_impactor, row%ke_plate, row%strain_energy, row%contact_work, row%indentation_energy, &
-         row%energy_error]
-      i = [row%branch, row%contact_iter, row%nonlinear_iter]
       why = ''
-      reals: do c = 1, nhist_real
-         call h5io_append(rf%hist(c), r(c), stat, why)
-         if (stat /= 0) exit reals
-      end do reals
-      integers: do c = 1, nhist_int
-         if (stat /= 0) exit integers
-         call h5io_append(rf%hist(nhist_real + c), i(c), stat, why)
-      end do integers
-      if (stat == 0) call h5io_flush(rf%fid, stat, why)
-      if (stat /= 0) errmsg = trim(rf%path)//': /history: '//trim(why)
+      columns: do c = 1, nhist
+         if (history_columns(c)%whole) then
+            call h5io_append(rf%hist(c), nint(row(c)), stat, why)
+         else
+            call h5io_append(rf%hist(c), row(c), stat, why)
+         end if
+         if (stat /= 0) exit columns
+      end do columns
+      if (stat == 0 .and. flush) call h5io_flush(rf%fid, stat, why)
+      if (stat /= 0) errmsg = rf%path//': /history: '//trim(why)
    end subroutine results_append_history
 
    !> Appends a snapshot of the nodal fields u, v, w, psi_x, psi_y to /fields
@@ -272,7 +245,7 @@ contains
          call h5io_append(rf%snap_field(k), f(k, :), stat, why)
       end do fields
       if (stat == 0) call h5io_flush(rf%fid, stat, why)
-      if (stat /= 0) errmsg = trim(rf%path)//': /fields: '//trim(why)
+      if (stat /= 0) errmsg = rf%path//': /fields: '//trim(why)
    end subroutine results_snapshot
 
    !> Keeps in /peak the state of the step with the largest contact force:
@@ -307,50 +280,38 @@ contains
       if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'step', step, stat, why)
       if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'time', time, stat, why)
       if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'force', force, stat, why)
-      if (stat /= 0) errmsg = trim(rf%path)//': /peak: '//trim(why)
+      if (stat /= 0) errmsg = rf%path//': /peak: '//trim(why)
    end subroutine results_peak
 
-   !> Writes /summary (the figures of <prefix>_summary.dat, SI units) and
-   !> closes the file. Closes what it can even after a failure.
-   subroutine results_finish(rf, s, stat, errmsg)
-      !> The results file; inactive on return.
-      type(results_file_t), intent(inout) :: rf
-      !> The run's summary.
-      type(run_summary_t), intent(in) :: s
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure (the first).
-      character(len=*), intent(inout) :: errmsg
+   !> Writes /summary (the items of <prefix>_summary.dat, SI units, and the
+   !> status) and closes the file. Closes what it can even after a failure.
+   subroutine results_finish(rf, status, items, stat, errmsg)
+      type(results_file_t), intent(inout) :: rf     !< the results file; inactive on return
+      character(len=*), intent(in) :: status        !< 'completed', 'failed at step N', ...
+      type(summary_item_t), intent(in) :: items(:)  !< the summary (result_files)
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure (the first)
       character(len=msg_len) :: why
-      real(dp) :: duration
       integer :: c, k, ios
 
       stat = 0
       if (.not. rf%active) return
       why = ''
-      duration = -1.0_dp
-      if (s%first_contact_end >= 0.0_dp) duration = s%first_contact_end - s%first_contact_start
-      call put_string('status', s%status)
-      call put_real('peak_force', s%peak_force, 'N')
-      call put_real('time_of_peak', s%time_of_peak, 's')
-      call put_real('contact_duration', duration, 's')
-      call put_string('contact_duration_note', 'first contact; -1 if it had not ended')
-      call put_int('contacts', s%contacts, '-')
-      call put_real('max_deflection', s%max_deflection, 'm')
-      call put_real('max_strain_y_back', s%max_strain_y, '-')
-      call put_real('permanent_indentation', s%permanent_indentation, 'm')
-      call put_real('rebound_velocity', -s%final_velocity, 'm/s')
-      call put_real('initial_energy', s%initial_energy, 'J')
-      call put_real('max_energy_error', s%max_energy_error, 'J')
-      call put_int('steps', s%steps, '-')
-      call put_int('plate_solves', s%plate_solves, '-')
-      call put_int('factorizations', s%factorizations, '-')
-      call put_int('contact_iterations', s%contact_iterations, '-')
-      call put_int('max_contact_iter', s%max_contact_iter, '-')
-      call put_int('max_nonlinear_iter', s%max_nonlinear_iter, '-')
-      call put_int('unconverged_steps', s%unconverged_steps, '-')
-      call put_real('cpu', s%cpu_s, 's')
-      if (stat /= 0) errmsg = trim(rf%path)//': /summary: '//trim(why)
+      call put_string('status', status)
+      summary_items: do k = 1, size(items)
+         if (items(k)%key == 'status') cycle summary_items
+         select case (items(k)%kind)
+         case (1)
+            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name, items(k)%si, stat, why)
+            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name//'_units', items(k)%unit, stat, why)
+         case (2)
+            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name, nint(items(k)%si), stat, why)
+            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name//'_units', '-', stat, why)
+         case default
+            call put_string(items(k)%name, items(k)%text)
+         end select
+      end do summary_items
+      if (stat /= 0) errmsg = rf%path//': /summary: '//trim(why)
 
       ! -- close everything, keeping the first failure
       do c = 1, size(rf%hist)
@@ -365,7 +326,7 @@ contains
       call h5io_close(rf%fid, ios, why)
       if (ios /= 0 .and. stat == 0) then
          stat = ios
-         errmsg = trim(rf%path)//': '//trim(why)
+         errmsg = rf%path//': '//trim(why)
       end if
       rf%active = .false.
 
@@ -377,7 +338,7 @@ contains
          call h5io_close_dataset(did, ios, why)
          if (ios /= 0 .and. stat == 0) then
             stat = ios
-            errmsg = trim(rf%path)//': '//trim(why)
+            errmsg = rf%path//': '//trim(why)
          end if
          did = -1
       end subroutine close_one
@@ -386,22 +347,6 @@ contains
          character(len=*), intent(in) :: name, value
          if (stat == 0) call h5io_set_attr(rf%fid, 'summary', name, trim(value), stat, why)
       end subroutine put_string
-
-      subroutine put_int(name, value, units)
-         character(len=*), intent(in) :: name
-         integer, intent(in) :: value
-         character(len=*), intent(in) :: units
-         if (stat == 0) call h5io_set_attr(rf%fid, 'summary', name, value, stat, why)
-         if (stat == 0) call h5io_set_attr(rf%fid, 'summary', name//'_units', units, stat, why)
-      end subroutine put_int
-
-      subroutine put_real(name, value, units)
-         character(len=*), intent(in) :: name
-         real(dp), intent(in) :: value
-         character(len=*), intent(in) :: units
-         if (stat == 0) call h5io_set_attr(rf%fid, 'summary', name, value, stat, why)
-         if (stat == 0) call h5io_set_attr(rf%fid, 'summary', name//'_units', units, stat, why)
-      end subroutine put_real
 
    end subroutine results_finish
 
@@ -424,19 +369,19 @@ contains
 
    ! ------------------------------------------------------------ deck, mesh
 
-   !> /deck: the echo, and one attribute per namelist variable with its unit.
+   !> /deck: the echo, and one attribute per variable of the schema
+   !> (src/deck_schema.f90) in /deck/<group>, with its unit in <name>_units;
+   !> an optional variable not given is the text 'not given'.
    subroutine write_deck(fid, deck, stat, errmsg)
-      !> The open results file.
-      integer(hid_t), intent(in) :: fid
-      !> The effective deck.
-      type(deck_t), intent(in) :: deck
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      character(len=:), allocatable :: echo
-      character(len=path_len) :: line
-      integer :: u, ios
+      integer(hid_t), intent(in) :: fid             !< the open results file
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      character(len=:), allocatable :: echo, grp, name
+      character(len=4096) :: line
+      type(deck_t) :: copy
+      type(value_t) :: v
+      integer :: u, ios, ig, iv
 
       stat = 0
       call h5io_group(fid, 'deck', stat, errmsg)
@@ -455,99 +400,40 @@ contains
       end if
       call put_text('deck', 'source', deck%source)
       call put_text('deck', 'echo', echo)
-
-      call add_group('plate')
-      call put_real('plate', 'a', deck%a, 'm')
-      call put_real('plate', 'b', deck%b, 'm')
-      call put_real('plate', 'h', deck%h, 'm')
-      call add_group('lamina')
-      call put_real('lamina', 'e1', deck%e1, 'Pa')
-      call put_real('lamina', 'e2', deck%e2, 'Pa')
-      call put_real('lamina', 'g12', deck%g12, 'Pa')
-      call put_real('lamina', 'g13', deck%g13, 'Pa')
-      call put_real('lamina', 'g23', deck%g23, 'Pa')
-      call put_real('lamina', 'nu12', deck%nu12, '-')
-      call put_real('lamina', 'rho', deck%rho, 'kg/m^3')
-      call add_group('laminate')
-      if (stat == 0) call h5io_set_attr(fid, 'deck/laminate', 'angles', deck%angles, stat, errmsg)
-      call put_text('deck/laminate', 'angles_units', 'deg')
-      call put_real('laminate', 'k4', deck%k4, '-')
-      call put_real('laminate', 'k5', deck%k5, '-')
-      call add_group('impactor')
-      call put_real('impactor', 'mass', deck%mass, 'kg')
-      call put_real('impactor', 'velocity', deck%velocity, 'm/s')
-      call put_real('impactor', 'diameter', deck%diameter, 'm')
-      call add_group('contact')
-      call put_real('contact', 'k', deck%k, 'N/m^1.5')
-      call put_real('contact', 'q', deck%q, '-')
-      call put_real('contact', 'alpha_p', deck%alpha_p, 'm')
-      call put_real('contact', 'beta', deck%beta, '-')
-      call add_group('mesh')
-      call put_int('mesh', 'nx', deck%nx)
-      call put_int('mesh', 'ny', deck%ny)
-      call put_word('mesh', 'domain', deck%domain)
-      call put_word('mesh', 'shear_rule', deck%shear_rule)
-      call put_real('mesh', 'stabilization', deck%stabilization, '-')
-      call add_group('boundary')
-      call put_word('boundary', 'edges', deck%edges)
-      call put_word('boundary', 'inplane', deck%inplane)
-      call add_group('analysis')
-      call put_word('analysis', 'kind', deck%analysis_kind)
-      call put_word('analysis', 'theory', deck%theory)
-      call put_real('analysis', 'dt', deck%dt, 's')
-      call put_real('analysis', 't_end', deck%t_end, 's')
-      call put_real('analysis', 'cr1', deck%cr1, '-')
-      call put_real('analysis', 'cr2', deck%cr2, '-')
-      call put_word('analysis', 'scheme', deck%scheme)
-      call put_word('analysis', 'storage', deck%storage)
-      call put_int('analysis', 'max_contact_iter', deck%max_contact_iter)
-      call put_int('analysis', 'max_nonlinear_iter', deck%max_nonlinear_iter)
-      call add_group('load')
-      call put_word('load', 'kind', deck%load_kind)
-      call put_real('load', 'magnitude', deck%load_magnitude, &
-         trim(merge('N ', 'Pa', deck%load_kind == 'central_force')))
-      call put_int('load', 'increments', deck%load_increments)
-      call add_group('modes')
-      call put_int('modes', 'count', deck%mode_count)
-      call add_group('output')
-      call put_word('output', 'prefix', deck%prefix)
-      call put_int('output', 'every', deck%every)
-      call put_word('output', 'hdf5', trim(merge('.true. ', '.false.', deck%hdf5)))
-      call put_int('output', 'fields_every', deck%fields_every)
+      do ig = 1, size(deck_groups)
+         if (stat == 0) call h5io_group(fid, 'deck/'//trim(deck_groups(ig)), stat, errmsg)
+      end do
+      copy = deck
+      variables: do iv = 1, size(deck_vars)
+         if (stat /= 0) exit variables
+         grp = 'deck/'//trim(deck_vars(iv)%group)
+         call deck_bind(copy, iv, v, .false.)
+         name = trim(deck_vars(iv)%name)
+            select case (deck_vars(iv)%kind)
+            case (kind_real)
+               if (v%given) then
+                  call h5io_set_attr(fid, grp, name, v%r, stat, errmsg)
+               else
+                  call put_text(grp, name, 'not given')
+               end if
+            case (kind_integer)
+               call h5io_set_attr(fid, grp, name, v%i, stat, errmsg)
+            case (kind_logical)
+               call put_text(grp, name, trim(merge('.true. ', '.false.', v%l)))
+            case (kind_word, kind_path)
+               call put_text(grp, name, v%s)
+            case (kind_reals)
+               call h5io_set_attr(fid, grp, name, v%list, stat, errmsg)
+            end select
+            call put_text(grp, name//'_units', trim(deck_vars(iv)%unit))
+      end do variables
 
    contains
-
-      subroutine add_group(name)
-         character(len=*), intent(in) :: name
-         if (stat == 0) call h5io_group(fid, 'deck/'//name, stat, errmsg)
-      end subroutine add_group
 
       subroutine put_text(obj, name, value)
          character(len=*), intent(in) :: obj, name, value
          if (stat == 0) call h5io_set_attr(fid, obj, name, value, stat, errmsg)
       end subroutine put_text
-
-      !> A keyword or a path: its value, unit '-'.
-      subroutine put_word(grp, name, value)
-         character(len=*), intent(in) :: grp, name, value
-         call put_text('deck/'//grp, name, trim(value))
-         call put_text('deck/'//grp, name//'_units', '-')
-      end subroutine put_word
-
-      subroutine put_real(grp, name, value, units)
-         character(len=*), intent(in) :: grp, name
-         real(dp), intent(in) :: value
-         character(len=*), intent(in) :: units
-         if (stat == 0) call h5io_set_attr(fid, 'deck/'//grp, name, value, stat, errmsg)
-         call put_text('deck/'//grp, name//'_units', units)
-      end subroutine put_real
-
-      subroutine put_int(grp, name, value)
-         character(len=*), intent(in) :: grp, name
-         integer, intent(in) :: value
-         if (stat == 0) call h5io_set_attr(fid, 'deck/'//grp, name, value, stat, errmsg)
-         call put_text('deck/'//grp, name//'_units', '-')
-      end subroutine put_int
 
    end subroutine write_deck
 

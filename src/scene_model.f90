@@ -77,10 +77,11 @@
 !> convergence of the eq. (19) iteration: docs/validation/model_choice.md,
 !> section 5); the report warns.
 module scene_model
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use kinds, only: dp, msg_len
    use materials, only: lamina_t, laminate_t, laminate_from_layup
    use shear_correction, only: whitney_shear_factors
-   use input_deck, only: deck_t, k_not_given, name_len
+   use deck_schema, only: deck_t, max_word_len
    use mesh, only: mesh_t, apply_boundary, nfe
    use element_matrices, only: element_geometry_t, element_stiffness
    use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, global_factor, &
@@ -108,7 +109,7 @@ module scene_model
    !> Bisection steps of the energy balance: 2^-200 of the bracket, far below rounding.
    integer, parameter :: max_bisection = 200
    !> Text length of the keywords (those of the deck).
-   integer, parameter :: word_len = name_len
+   integer, parameter :: word_len = max_word_len
    !> Rigid-body terms of a plane w = c1 + c2 x + c3 y, at most.
    integer, parameter :: max_plane_terms = 3
 
@@ -162,9 +163,9 @@ contains
 
       lam = lamina_t(deck%e1, deck%e2, deck%g12, deck%g13, deck%g23, deck%nu12, deck%rho)
       call whitney_shear_factors(lam, deck%angles, deck%h, k4w, k5w)
-      scene%k_whitney = deck%k4 == k_not_given .or. deck%k5 == k_not_given
-      scene%k4 = merge(k4w, deck%k4, deck%k4 == k_not_given)
-      scene%k5 = merge(k5w, deck%k5, deck%k5 == k_not_given)
+      scene%k_whitney = ieee_is_nan(deck%k4) .or. ieee_is_nan(deck%k5)    ! not given (src/deck_schema.f90)
+      scene%k4 = merge(k4w, deck%k4, ieee_is_nan(deck%k4))
+      scene%k5 = merge(k5w, deck%k5, ieee_is_nan(deck%k5))
       lmt = laminate_from_layup(lam, deck%angles, deck%h, scene%k4, scene%k5)
       scene%couplings = laminate_couplings(lmt)
       scene%h = deck%h

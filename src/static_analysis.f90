@@ -26,13 +26,14 @@
 !> `<prefix>_deflection.dat`, the nodal displacements at the full load.
 module static_analysis
    use kinds, only: dp, msg_len
-   use input_deck, only: deck_t
-   use impact_driver, only: model_t, nonlinear_force, impact_deflection, gather_element
+   use deck_schema, only: deck_t
+   use plate_model, only: model_t, nonlinear_force, centre_deflection, gather_element
    use element_matrices, only: element_tangent_stiffness
    use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, global_copy, &
       global_matvec, global_factor, global_solve
    use mesh, only: nfe, ndof_node, describe_equation
-   use analysis_support, only: assemble_load, check_result_files, open_result_file
+   use analysis_support, only: assemble_load
+   use result_files, only: claim_results, open_columns
    implicit none
    private
    public :: static_result_t, static_solve, internal_force, run_static
@@ -53,7 +54,7 @@ contains
    !> (one solve, scaled) or Newton in each increment (module header).
    !> On failure res holds the increments completed.
    subroutine static_solve(model, f, increments, res, stat, errmsg)
-      type(model_t), intent(inout) :: model         !< model (counts solves)
+      type(model_t), intent(in) :: model            !< model
       real(dp), intent(in) :: f(:)                  !< load vector at load factor 1 (N)
       integer, intent(in) :: increments             !< load increments (>= 1)
       type(static_result_t), intent(out) :: res     !< load-deflection path
@@ -81,12 +82,11 @@ contains
          end if
          r = f
          call global_solve(kl, r, stat, errmsg)
-         model%solves = model%solves + 1
          if (stat /= 0) return
          linear_path: do inc = 1, increments
             lam = real(inc, dp)/real(increments, dp)
             res%load_factor(inc) = lam
-            res%w_centre(inc) = lam*impact_deflection(model, r)
+            res%w_centre(inc) = lam*centre_deflection(model, r)
             res%iterations(inc) = 1
             call internal_force(model, lam*r, fint)
             res%residual(inc) = norm2(lam*f - fint)/max(norm2(lam*f), tiny(1.0_dp))
@@ -113,7 +113,6 @@ contains
                return
             end if
             call global_solve(kt, r, stat, errmsg)
-            model%solves = model%solves + 1
             if (stat /= 0) return
             d = d + r
             num = sum(r**2)
@@ -132,7 +131,7 @@ contains
          end if
          call internal_force(model, d, fint)
          res%load_factor(inc) = lam
-         res%w_centre(inc) = impact_deflection(model, d)
+         res%w_centre(inc) = centre_deflection(model, d)
          res%iterations(inc) = min(it, model%max_nonlinear_iter)
          res%residual(inc) = norm2(lam*f - fint)/max(norm2(lam*f), tiny(1.0_dp))
          res%increments = inc
@@ -178,18 +177,19 @@ contains
    !> report is a line for the terminal.
    subroutine run_static(deck, model, report, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< deck
-      type(model_t), intent(inout) :: model         !< model
+      type(model_t), intent(in) :: model            !< model
       character(len=*), intent(out) :: report       !< what was done, for the terminal
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(static_result_t) :: res
       real(dp), allocatable :: f(:)
-      character(len=msg_len) :: path, path2, load_unit, solve_msg
+      character(len=msg_len) :: load_unit, solve_msg
+      character(len=:), allocatable :: path, path2
       integer :: u, inc, n, solve_stat, k
       real(dp) :: de(ndof_node)
 
       report = ''
-      call check_result_files(deck, [character(len=16) :: '_static.dat', '_deflection.dat'], stat, errmsg)
+      call claim_results(deck, [character(len=16) :: '_static.dat', '_deflection.dat'], stat, errmsg)
       if (stat /= 0) return
       allocate (f(model%msh%neq))
       call assemble_load(deck, model, f, stat, errmsg)
@@ -201,7 +201,7 @@ contains
 
       load_unit = 'Pa'
       if (deck%load_kind == 'central_force') load_unit = 'N'
-      call open_result_file(deck, '_static.dat', 'impact: static analysis, load-deflection path', &
+      call open_columns(deck, '_static.dat', 'impact: static analysis, load-deflection path', &
          [character(len=16) :: 'increment', 'load_factor', 'load', 'w_centre_mm', 'w_centre_h', &
           'iterations', 'residual'], &
          [character(len=80) :: 'load increment (-)', 'load factor lambda (-)', &
@@ -217,7 +217,7 @@ contains
       end do rows
       close (u)
 
-      call open_result_file(deck, '_deflection.dat', 'impact: static analysis, nodal displacements ' // &
+      call open_columns(deck, '_deflection.dat', 'impact: static analysis, nodal displacements ' // &
          'at the last load reached (modelled domain)', &
          [character(len=12) :: 'node', 'x_mm', 'y_mm', 'u_mm', 'v_mm', 'w_mm', 'psi_x_rad', 'psi_y_rad'], &
          [character(len=40) :: 'node (-)', 'x from the plate centre (mm)', 'y from the plate centre (mm)', &

@@ -5,7 +5,7 @@
 !> average-acceleration update (eq. 16, 21; newmark), the indentation law
 !> with its history (eq. 11-13; contact_law), and the contact-force
 !> iteration of a time step, eq. (17), with the same first guess and the
-!> same bracketed update (impact_driver). Its closed form is Hertz's
+!> same bracketed update (src/contact_iteration.f90). Its closed form is Hertz's
 !> (reference_solutions, hertz_impact).
 !>
 !> The run starts at first touch (alpha = 0, speed v0 towards the target)
@@ -16,7 +16,7 @@ module rigid_target
    use kinds, only: dp
    use contact_law, only: contact_law_t, contact_history_t, contact_force, contact_commit
    use newmark, only: impactor_advance
-   use impact_driver, only: force_bracket_t, bracket_start, bracket_update, contact_converged
+   use contact_iteration, only: force_bracket_t, bracket_update, contact_converged
    implicit none
    private
    public :: rigid_target_result_t, rigid_target_impact
@@ -57,7 +57,7 @@ contains
          ! -- the first guess: the impactor moves on under the force at t alone
          call impactor_advance(mass, dt, w, v, f, 0.0_dp, w_new, v_new)
          fa = contact_force(law, hist, w_new)
-         br = bracket_start()
+         br = force_bracket_t()
          contact_iterations: do it = 1, max_iter
             call impactor_advance(mass, dt, w, v, f, fa, w_new, v_new)   ! eq. (21)
             fc = contact_force(law, hist, w_new)                         ! eq. (11)-(13), w_plate = 0

@@ -1,0 +1,285 @@
+!> The result files of every analysis, in one place: which files a run
+!> claims before any work, how a column file is opened and headed, the
+!> history's columns (one table for <prefix>_history.dat and the
+!> /history datasets of <prefix>.h5), and the summary's items (one list for
+!> <prefix>_summary.dat and /summary of <prefix>.h5).
+!>
+!> A column file: a title line, the deck echo ('# ' lines), one line per
+!> column with its meaning and unit, then the column names on one '#' line,
+!> then the rows. The summary: 'key = value' lines after the echo, the unit
+!> in the key's name (peak_force_N).
+!>
+!> Nothing lost: before any work a run claims its files (claim_results):
+!> it creates the prefix's directories (by the C library, no shell), and
+!> refuses to start when one of its files exists, the results of another
+!> run, unless &output overwrite = .true. (or impact --overwrite).
+module result_files
+   use kinds, only: dp, msg_len
+   use deck_schema, only: deck_t
+   use input_deck, only: echo_deck, real_str
+   use file_system, only: make_directories, parent_directory, path_problem
+   implicit none
+   private
+   public :: column_t, history_columns, nhist
+   public :: col_time, col_force, col_alpha, col_w_plate, col_w_impactor, col_v_impactor, col_strain_y, &
+             col_ke_impactor, col_ke_plate, col_strain_energy, col_contact_work, col_contact_energy, &
+             col_energy_error, col_branch, col_contact_iter, col_solves
+   public :: summary_item_t, summary_real, summary_integer, summary_text
+   public :: claim_results, open_columns, write_history_row, write_summary_file
+
+   !> One column of the history.
+   type :: column_t
+      character(len=20) :: name        !< its name in <prefix>.h5 (/history/<name>), SI
+      character(len=24) :: file_name   !< its name in <prefix>_history.dat, with the file's unit
+      character(len=4) :: unit         !< SI unit in the .h5
+      character(len=4) :: file_unit    !< unit in the file
+      real(dp) :: scale                !< value in the file = SI value * scale
+      logical :: whole                 !< an integer (written as one)
+      character(len=72) :: meaning     !< what it is
+   end type column_t
+
+   !> The history's columns, in the order of the file.
+   integer, parameter :: col_time = 1, col_force = 2, col_alpha = 3, col_w_plate = 4, col_w_impactor = 5, &
+      col_v_impactor = 6, col_strain_y = 7, col_ke_impactor = 8, col_ke_plate = 9, col_strain_energy = 10, &
+      col_contact_work = 11, col_contact_energy = 12, col_energy_error = 13, col_branch = 14, &
+      col_contact_iter = 15, col_solves = 16, nhist = 16
+   type(column_t), parameter :: history_columns(nhist) = [ &
+      column_t('time', 'time_us', 's', 'us', 1.0e6_dp, .false., 'time'), &
+      column_t('force', 'force_N', 'N', 'N', 1.0_dp, .false., 'contact force on the whole plate F'), &
+      column_t('indentation', 'indentation_mm', 'm', 'mm', 1.0e3_dp, .false., &
+         'indentation alpha = w_impactor - w_plate, eq. (13)'), &
+      column_t('w_plate', 'w_plate_mm', 'm', 'mm', 1.0e3_dp, .false., &
+         'plate deflection under the impactor (pressure-weighted mean)'), &
+      column_t('w_impactor', 'w_impactor_mm', 'm', 'mm', 1.0e3_dp, .false., 'impactor displacement since first touch'), &
+      column_t('v_impactor', 'v_impactor_m_s', 'm/s', 'm/s', 1.0_dp, .false., &
+         'impactor velocity, positive towards the plate'), &
+      column_t('strain_y_back', 'strain_y_back', '-', '-', 1.0_dp, .false., &
+         'in-plane y strain on the back face at the gauge (Fig. 9b, 10b)'), &
+      column_t('ke_impactor', 'ke_impactor_J', 'J', 'J', 1.0_dp, .false., 'impactor kinetic energy'), &
+      column_t('ke_plate', 'ke_plate_J', 'J', 'J', 1.0_dp, .false., 'plate kinetic energy, whole plate'), &
+      column_t('strain_energy', 'strain_energy_J', 'J', 'J', 1.0_dp, .false., 'plate strain energy, whole plate'), &
+      column_t('contact_work', 'contact_work_J', 'J', 'J', 1.0_dp, .false., &
+         'work of the contact force on the plate, int F p^T dD'), &
+      column_t('indentation_energy', 'indentation_energy_J', 'J', 'J', 1.0_dp, .false., &
+         'energy the contact took: the impactor''s work less contact_work'), &
+      column_t('energy_error', 'energy_error_J', 'J', 'J', 1.0_dp, .false., &
+         'E0 - (ke_impactor + ke_plate + strain_energy + indentation_energy)'), &
+      column_t('branch', 'branch', '-', '-', 1.0_dp, .true., &
+         'contact law branch: 0 none, 1 loading, 2 unloading, 3 reloading'), &
+      column_t('contact_iter', 'contact_iter', '-', '-', 1.0_dp, .true., &
+         'contact-force iterations of the step, eq. (17)'), &
+      column_t('nonlinear_iter', 'nonlinear_iter', '-', '-', 1.0_dp, .true., 'plate solutions of the step, eq. (19)') ]
+
+   !> Kinds of summary item.
+   integer, parameter :: item_real = 1, item_integer = 2, item_text = 3
+
+   !> One line of the summary.
+   type :: summary_item_t
+      character(len=:), allocatable :: key      !< in <prefix>_summary.dat, with the file's unit
+      character(len=:), allocatable :: name     !< in /summary of <prefix>.h5, SI
+      character(len=:), allocatable :: unit     !< SI unit ('-' none)
+      character(len=:), allocatable :: text     !< the value as the file writes it
+      real(dp) :: si = 0.0_dp                   !< the value in SI (real and integer items)
+      integer :: kind = item_real               !< item_real, item_integer or item_text
+   end type summary_item_t
+
+contains
+
+   ! ============================================================ claiming
+
+   !> Before any work: the prefix is a usable path, its directories exist
+   !> (created), no result file of this run exists unless the deck says
+   !> &output overwrite = .true., and the first one can be written. Messages
+   !> name the deck, &output and prefix.
+   subroutine claim_results(deck, suffixes, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< effective deck (prefix, overwrite)
+      character(len=*), intent(in) :: suffixes(:)   !< the run's file names after the prefix
+      integer, intent(out) :: stat                  !< 0 when the run may write its results
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      character(len=:), allocatable :: head, path, why
+      character(len=msg_len) :: iomsg
+      integer :: i, u
+      logical :: exists
+
+      head = deck%source // ": &output: prefix = '" // deck%prefix // "': "
+      why = path_problem(deck%prefix)
+      if (len(why) > 0) then
+         stat = 1
+         errmsg = head // why
+         return
+      end if
+      call make_directories(parent_directory(deck%prefix), stat, iomsg)
+      if (stat /= 0) then
+         errmsg = head // trim(iomsg)
+         return
+      end if
+      files: do i = 1, size(suffixes)
+         path = deck%prefix // trim(suffixes(i))
+         inquire (file=path, exist=exists)
+         if (exists .and. .not. deck%overwrite) then
+            stat = 1
+            errmsg = head // path // ' exists, the results of another run: choose another prefix, or set ' &
+               // 'overwrite = .true. in &output (or run impact --overwrite) to replace them'
+            return
+         end if
+      end do files
+      ! -- the first file can be written (an existing one is left as it is)
+      path = deck%prefix // trim(suffixes(1))
+      inquire (file=path, exist=exists)
+      if (exists) then
+         open (newunit=u, file=path, status='old', action='write', position='append', iostat=stat, iomsg=iomsg)
+         if (stat == 0) close (u, status='keep')
+      else
+         open (newunit=u, file=path, status='new', action='write', iostat=stat, iomsg=iomsg)
+         if (stat == 0) close (u, status='delete')
+      end if
+      if (stat /= 0) errmsg = head // 'cannot write ' // path // ': ' // trim(iomsg)
+   end subroutine claim_results
+
+   ! ======================================================== column files
+
+   !> Opens <prefix><suffix> (claimed before) and writes its header: title,
+   !> deck echo, the columns with their meanings, the names.
+   subroutine open_columns(deck, suffix, title, names, texts, unit, path, stat, errmsg)
+      type(deck_t), intent(in) :: deck            !< effective deck (echoed; prefix)
+      character(len=*), intent(in) :: suffix      !< file name after the prefix, e.g. '_static.dat'
+      character(len=*), intent(in) :: title       !< first line, after '# '
+      character(len=*), intent(in) :: names(:)    !< column names (with their unit)
+      character(len=*), intent(in) :: texts(:)    !< column meanings (with their unit)
+      integer, intent(out) :: unit                !< the open file
+      character(len=:), allocatable, intent(out) :: path   !< its path
+      integer, intent(out) :: stat                !< 0 on success
+      character(len=*), intent(inout) :: errmsg   !< reason on failure
+      character(len=msg_len) :: iomsg
+      integer :: c
+      path = deck%prefix // suffix
+      open (newunit=unit, file=path, status='replace', action='write', iostat=stat, iomsg=iomsg)
+      if (stat /= 0) then
+         errmsg = deck%source // ": &output: prefix = '" // deck%prefix // "': cannot write " // path &
+            // ': ' // trim(iomsg)
+         return
+      end if
+      write (unit, '(a)') '# ' // title
+      call echo_deck(deck, unit, '# ')
+      write (unit, '(a)') '# columns:'
+      do c = 1, size(names)
+         write (unit, '(a,i2,1x,a,1x,a)') '# ', c, names(c), trim(texts(c))
+      end do
+      write (unit, '(a)', advance='no') '#'
+      do c = 1, size(names)
+         write (unit, '(1x,a)', advance='no') trim(names(c))
+      end do
+      write (unit, '(a)') ''
+      flush (unit)
+   end subroutine open_columns
+
+   !> One row of the history, values in SI in the order of history_columns,
+   !> written in the file's units; flushed.
+   subroutine write_history_row(unit, values, stat)
+      integer, intent(in) :: unit                 !< the history file
+      real(dp), intent(in) :: values(nhist)       !< the row, SI
+      integer, intent(out) :: stat                !< 0, or the write's iostat
+      write (unit, '(f16.4, 12es16.7e3, 3i6)', iostat=stat) values(1)*history_columns(1)%scale, &
+         values(2:13)*history_columns(2:13)%scale, nint(values(14:16))
+      if (stat == 0) flush (unit, iostat=stat)
+   end subroutine write_history_row
+
+   ! ============================================================= summary
+
+   !> Appends a real item: the file's key (with its unit), the SI name and
+   !> unit, the SI value and the factor to the file's unit.
+   subroutine summary_real(items, key, name, unit, si, scale)
+      type(summary_item_t), allocatable, intent(inout) :: items(:)
+      character(len=*), intent(in) :: key, name, unit
+      real(dp), intent(in) :: si, scale
+      character(len=24) :: buf
+      write (buf, '(es15.7)') si*scale
+      call append(items, key, name, unit, trim(adjustl(buf)), si, item_real)
+   end subroutine summary_real
+
+   !> Appends an integer item (no unit).
+   subroutine summary_integer(items, key, value)
+      type(summary_item_t), allocatable, intent(inout) :: items(:)
+      character(len=*), intent(in) :: key
+      integer, intent(in) :: value
+      character(len=24) :: buf
+      write (buf, '(i0)') value
+      call append(items, key, key, '-', trim(buf), real(value, dp), item_integer)
+   end subroutine summary_integer
+
+   !> Appends a text item ('completed', 'none', 'true').
+   subroutine summary_text(items, key, value)
+      type(summary_item_t), allocatable, intent(inout) :: items(:)
+      character(len=*), intent(in) :: key, value
+      call append(items, key, key, '-', value, 0.0_dp, item_text)
+   end subroutine summary_text
+
+   !> Appends an item, component by component (a structure constructor with
+   !> deferred-length components loses them in gfortran 12).
+   subroutine append(items, key, name, unit, text, si, kind)
+      type(summary_item_t), allocatable, intent(inout) :: items(:)
+      character(len=*), intent(in) :: key, name, unit, text
+      real(dp), intent(in) :: si
+      integer, intent(in) :: kind
+      type(summary_item_t), allocatable :: grown(:)
+      integer :: n
+      n = 0
+      if (allocated(items)) n = size(items)
+      allocate (grown(n + 1))
+      if (n > 0) grown(:n) = items
+      grown(n + 1)%key = key
+      grown(n + 1)%name = name
+      grown(n + 1)%unit = unit
+      grown(n + 1)%text = text
+      grown(n + 1)%si = si
+      grown(n + 1)%kind = kind
+      call move_alloc(grown, items)
+   end subroutine append
+
+   !> Writes <prefix>_summary.dat: title, deck echo, 'key = value' lines.
+   !> It is written whole to <prefix>_summary.dat.tmp and renamed into
+   !> place, so the file is either the previous one or complete.
+   subroutine write_summary_file(deck, items, stat, errmsg)
+      type(deck_t), intent(in) :: deck                  !< effective deck
+      type(summary_item_t), intent(in) :: items(:)      !< the summary
+      integer, intent(out) :: stat                      !< 0 on success
+      character(len=*), intent(inout) :: errmsg        !< reason on failure, naming the file
+      character(len=msg_len) :: iomsg
+      character(len=:), allocatable :: path
+      integer :: u, i
+      path = deck%prefix // '_summary.dat'
+      open (newunit=u, file=path // '.tmp', status='replace', action='write', iostat=stat, iomsg=iomsg)
+      if (stat == 0) write (u, '(a)', iostat=stat, iomsg=iomsg) &
+         '# impact: summary (key = value; units in the key names)'
+      if (stat == 0) call echo_deck(deck, u, '# ')
+      do i = 1, size(items)
+         if (stat /= 0) exit
+         write (u, '(a)', iostat=stat, iomsg=iomsg) items(i)%key // ' = ' // items(i)%text
+      end do
+      if (stat == 0) then
+         close (u, iostat=stat, iomsg=iomsg)
+      else
+         close (u, iostat=i)
+      end if
+      if (stat == 0) call rename_file(path // '.tmp', path, stat, iomsg)
+      if (stat /= 0) errmsg = path // ': ' // trim(iomsg)
+   end subroutine write_summary_file
+
+   !> rename(2): replaces `to` by `from` in one step.
+   subroutine rename_file(from, to, stat, errmsg)
+      use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+      character(len=*), intent(in) :: from, to
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      interface
+         function c_rename(old, new) bind(c, name='rename') result(r)
+            import :: c_int, c_char
+            character(kind=c_char), intent(in) :: old(*), new(*)
+            integer(c_int) :: r
+         end function c_rename
+      end interface
+      stat = int(c_rename(from // c_null_char, to // c_null_char))
+      if (stat /= 0) errmsg = 'cannot rename ' // from // ' to ' // to
+   end subroutine rename_file
+
+end module result_files
