@@ -21,3 +21,23 @@ validate: setup impact $(VALIDATE_EXE)
 	@status=0; $(VALIDATE_EXE) || status=$$?; \
 	gnuplot validation/plots.gp || status=1; \
 	exit $$status
+
+# The Navier modal impact solution of the simply supported plate, the
+# reference for ./impact's dynamic point response (validation/navier_impact.f90,
+# module validation/navier_impact_solution.f90; tests/test_navier_impact.pf).
+#
+#   make navier-impact      build build/navier_impact
+#   build/navier_impact deck.nml [--load hertz|point] [--mmax N] [--max-mmax N] [--tol X] [--out prefix]
+#
+# The module's object is also linked with the tests (tests/tests.mk, TEST_ORACLES).
+NAVIER_IMPACT := $(BUILD)/navier_impact
+
+.PHONY: navier-impact
+navier-impact: $(NAVIER_IMPACT)
+
+$(BUILD)/navier_impact_solution.o: validation/navier_impact_solution.f90 $(LIB)
+	$(FC_ALL) -c $< -o $@
+
+# (without the run-time backtrace, as ./impact: bad input ends with one line)
+$(NAVIER_IMPACT): validation/navier_impact.f90 $(BUILD)/navier_impact_solution.o $(LIB)
+	$(FC_ALL) $(MAIN_FLAGS) $< $(BUILD)/navier_impact_solution.o $(LIB) $(LAPACK) -o $@

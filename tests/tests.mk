@@ -20,6 +20,10 @@ PYTHON     ?= python3
 FUNIT      := tests/funit
 TEST_BUILD := $(BUILD)/tests
 TEST_PF    := $(sort $(wildcard tests/test_*.pf))
+# Validation oracles the tests check that are not in the library (modules of
+# validation/, built by their rules in mk/validate.mk): built before the
+# tests, which use their modules, and linked with them ahead of $(LIB).
+TEST_ORACLES := $(BUILD)/navier_impact_solution.o
 
 .PHONY: test test-funit test-build FORCE
 
@@ -48,12 +52,12 @@ ifdef PFUNIT_DIR
 TEST_EXE := $(BUILD)/pfunit/impact_tests
 
 # pf2f90.py checks that the tests stay in the subset the default route builds.
-test-build: $(LIB)
+test-build: $(LIB) $(TEST_ORACLES)
 	@mkdir -p $(BUILD)/pfunit
 	$(PYTHON) $(FUNIT)/pf2f90.py --driver $(BUILD)/pfunit/subset_check.f90 $(TEST_PF)
 	$(MAKE) -C $(BUILD)/pfunit -f $(CURDIR)/$(FUNIT)/pfunit.mk impact_tests \
 	    PFUNIT_DIR='$(abspath $(PFUNIT_DIR))' FC='$(FC)' FFLAGS='$(FFLAGS)' \
-	    IMPACT_TESTS='$(abspath $(TEST_PF))' IMPACT_LIB='$(abspath $(LIB))' \
+	    IMPACT_TESTS='$(abspath $(TEST_PF))' IMPACT_LIB='$(abspath $(TEST_ORACLES) $(LIB))' \
 	    IMPACT_MODULES='$(abspath $(BUILD))' LAPACK='$(LAPACK)'
 
 else
@@ -79,9 +83,9 @@ $(TEST_BUILD)/test-list: FORCE | $(TEST_BUILD)
 $(TEST_BUILD)/funit_driver.f90: $(TEST_BUILD)/test-list $(TEST_PF) $(FUNIT)/pf2f90.py
 	$(PYTHON) $(FUNIT)/pf2f90.py --driver $@ $(TEST_PF)
 
-$(TEST_BUILD)/%.o: $(TEST_BUILD)/%.F90 $(TEST_BUILD)/funit.o $(LIB)
+$(TEST_BUILD)/%.o: $(TEST_BUILD)/%.F90 $(TEST_BUILD)/funit.o $(LIB) $(TEST_ORACLES)
 	$(FC_ALL) -c $< -o $@
 
-$(TEST_EXE): $(TEST_BUILD)/funit_driver.f90 $(TEST_OBJ) $(TEST_BUILD)/funit.o $(LIB)
-	$(FC_ALL) $< $(TEST_OBJ) $(TEST_BUILD)/funit.o $(LIB) $(LAPACK) -o $@
+$(TEST_EXE): $(TEST_BUILD)/funit_driver.f90 $(TEST_OBJ) $(TEST_BUILD)/funit.o $(TEST_ORACLES) $(LIB)
+	$(FC_ALL) $< $(TEST_OBJ) $(TEST_BUILD)/funit.o $(TEST_ORACLES) $(LIB) $(LAPACK) -o $@
 endif
