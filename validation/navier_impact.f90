@@ -18,7 +18,7 @@
 !>              by less than --tol (default 1e-4) relative, at most up to
 !>              --max-mmax (default 2047)
 !>   --out      prefix of the result files (default: the deck's &output
-!>              prefix followed by '_navier')
+!>              prefix followed by '_navier_hertz' or '_navier_point')
 !>
 !> It reads the deck's &plate, &lamina, &laminate, &impactor, &contact and
 !> &analysis (dt, t_end); &boundary edges must be 'simply_supported' and
@@ -113,7 +113,7 @@ program navier_impact
    if (stat /= 0) call fail('input: '//errmsg)
    call navier_problem_from_deck(deck, load, problem, stat, errmsg)
    if (stat /= 0) call fail(errmsg)
-   if (len_trim(prefix) == 0) prefix = trim(deck%prefix)//'_navier'
+   if (len_trim(prefix) == 0) prefix = trim(deck%prefix)//'_navier_'//load_name(load)
    call echo_problem(output_unit)
 
    ! =====================================================================
@@ -311,9 +311,9 @@ contains
       character(len=18), parameter :: names(ncol) = [character(len=18) :: 'time_us', 'force_N', &
          'indentation_mm', 'w_plate_mm', 'w_centre_mm', 'w_impactor_mm', 'v_impactor_m_s', &
          'contact_radius_mm', 'energy_error_J', 'branch', 'evaluations']
-      character(len=72), parameter :: text(ncol) = [character(len=72) :: 'time (us)', &
+      character(len=88), parameter :: text(ncol) = [character(len=88) :: 'time (us)', &
          'contact force F (N)', 'indentation alpha = w_impactor - w_plate, eq. (13) (mm)', &
-         'plate deflection weighted by the contact pressure, (1/F) int p w dA (mm)', &
+         'plate deflection weighted by the contact pressure (1/F) int p w dA; point: centre (mm)', &
          'plate centre deflection (mm)', 'impactor displacement since first touch (mm)', &
          'impactor velocity, + towards the plate (m/s)', 'contact radius sqrt(R alpha), 0 without contact (mm)', &
          'E0 - (impactor + plate energy + int F d(alpha)) (J)', &
@@ -427,7 +427,7 @@ contains
       real(dp), intent(in) :: x                   !< the number
       character(len=:), allocatable :: text
       character(len=24) :: buf
-      write (buf, '(g0.4)') x
+      write (buf, '(es10.2)') x
       text = trim(adjustl(buf))
    end function real_text
 
