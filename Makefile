@@ -29,7 +29,8 @@ LIB     := $(BUILD)/libimpact.a
 # The validation's oracles (exact and independent solutions: Navier,
 # Hertz, the rigid target, ...) are not part of the solver: they live in
 # validation/ and are built for make validate and make test only.
-ORACLE_SOURCES := validation/reference_solutions.f90 validation/rigid_target.f90
+ORACLE_SOURCES := validation/reference_solutions.f90 validation/rigid_target.f90 \
+                  validation/navier_impact_solution.f90
 ORACLE_OBJS    := $(patsubst validation/%.f90,$(BUILD)/oracles/%.o,$(ORACLE_SOURCES))
 
 .PHONY: all run test setup clean reference
@@ -53,6 +54,7 @@ $(BUILD)/oracles/%.o: validation/%.f90 $(LIB)
 	$(FC_ALL) -c $< -o $@
 # (in the order of their use statements)
 $(BUILD)/oracles/rigid_target.o: $(BUILD)/oracles/reference_solutions.o
+$(BUILD)/oracles/navier_impact_solution.o: $(BUILD)/oracles/reference_solutions.o
 
 # The main program is built without gfortran's run-time backtrace, so that a
 # bad deck ends with its one-line message (error stop 1) and not a stack dump;

@@ -21,3 +21,20 @@ validate: setup impact $(VALIDATE_EXE)
 	@status=0; $(VALIDATE_EXE) || status=$$?; \
 	gnuplot validation/plots.gp || status=1; \
 	exit $$status
+
+# The Navier modal impact solution of the simply supported plate, the
+# reference for ./impact's dynamic point response (validation/navier_impact.f90,
+# module validation/navier_impact_solution.f90; tests/test_navier_impact.pf).
+#
+#   make navier-impact      build build/navier_impact
+#   build/navier_impact deck.nml [--load hertz|point] [--mmax N] [--max-mmax N] [--tol X] [--out prefix]
+#
+# The module is one of the oracles (Makefile, ORACLE_OBJS), linked with the tests too.
+NAVIER_IMPACT := $(BUILD)/navier_impact
+
+.PHONY: navier-impact
+navier-impact: $(NAVIER_IMPACT)
+
+# (without the run-time backtrace, as ./impact: bad input ends with one line)
+$(NAVIER_IMPACT): validation/navier_impact.f90 $(ORACLE_OBJS) $(LIB)
+	$(FC_ALL) $(MAIN_FLAGS) $< $(ORACLE_OBJS) $(LIB) $(LAPACK) -o $@

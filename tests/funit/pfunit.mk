@@ -10,7 +10,8 @@
 #                   or the prefix holding PFUNIT-<version>/include/PFUNIT.mk
 #   FC, FFLAGS      the compiler and the project's flags
 #   IMPACT_TESTS    the .pf files (absolute paths)
-#   IMPACT_LIB      build/libimpact.a, IMPACT_MODULES its .mod directory
+#   IMPACT_LIB      build/libimpact.a (after the objects of the validation
+#                   oracles the tests use), IMPACT_MODULES their .mod directory
 #   LAPACK          the LAPACK and BLAS link flags
 
 PFUNIT_MK := $(firstword $(wildcard $(PFUNIT_DIR)/include/PFUNIT.mk \
