@@ -1,30 +1,47 @@
-# The paper's figures (issue 4): docs/figures/fig05.png ... fig13.png (and
-# .pdf) and the numbers of docs/PAPER.md.
+# The paper's figures (issue 4): docs/figures/fig05.png ... fig13.png,
+# fig06_converged.png, fig09_10_converged.png (and .pdf) and the numbers of
+# docs/PAPER.md.
 #
 #   make figures       build ./impact and build/contact_update; run every deck
-#                      of input/paper/ (and tolerance/) with ./impact and every
-#                      deck of input/paper/update/ with build/contact_update,
+#                      of input/paper/ (and tolerance/, converged/) with
+#                      ./impact and every deck of input/paper/update/ with
+#                      build/contact_update,
 #                      FIG_JOBS at a time (results and logs in out/paper/);
 #                      draw postproc/figNN.gp into docs/figures/; write
 #                      docs/PAPER.md from docs/PAPER.md.in (tools/paper-numbers).
-#                      About 2 minutes on 2 free cores; a rerun redoes only the
-#                      runs whose deck or program changed.
+#                      3 to 5 minutes on 2 cores (about 4.5 minutes of CPU,
+#                      half of it the 24 x 36 meshes of input/paper/ and
+#                      converged/); a rerun redoes only the runs whose deck
+#                      or program changed.
 #   make figures-clean remove out/paper/ (the next `make figures` reruns all)
 #
 # build/contact_update (tools/contact_update.f90) is the experiment of
 # docs/PAPER.md on the update of the assumed contact force: the paper's
 # literal F_assum <- F_cont against this code's bracketed update.
+#
+# input/paper/converged/ holds the scenes of Fig. 6 (mesh study), 9 and 10
+# with the converged model (MITC9 shear, Hertz contact load; docs/PAPER.md,
+# "With a converged model"); results in out/paper/converged/. Beside them the
+# paper's model on finer meshes than the paper's (input/paper/*_12x18.nml,
+# *_24x36.nml). Both are drawn by postproc/fig06_converged.gp and
+# fig09_10_converged.gp.
 
 CONTACT_UPDATE := $(BUILD)/contact_update
 FIG_JOBS       ?= 2
 FIG_OUT        := out/paper
-FIG_NUMBERS    := 05 06 07 08 09 10 11 12 13
+FIG_NUMBERS    := 05 06 07 08 09 10 11 12 13 06_converged 09_10_converged
 FIG_SCRIPTS    := $(patsubst %,postproc/fig%.gp,$(FIG_NUMBERS))
 
-# the full-plate and long runs first, so that two jobs finish together
-FIG_DECKS      := $(sort $(wildcard input/paper/fig05_full_*.nml)) \
-                  $(filter-out input/paper/fig05_full_%,$(sort $(wildcard input/paper/*.nml))) \
-                  $(sort $(wildcard input/paper/tolerance/*.nml))
+# the full-plate and long runs first (the 24 x 36 meshes, then the full
+# plates), so that two jobs finish together
+FIG_LONG       := input/paper/fig06_24x36.nml input/paper/converged/fig06_24x36.nml \
+                  input/paper/fig10_clamped_linear_24x36.nml \
+                  input/paper/converged/fig10_clamped_linear_24x36.nml \
+                  $(sort $(wildcard input/paper/fig05_full_*.nml))
+FIG_DECKS      := $(FIG_LONG) \
+                  $(filter-out $(FIG_LONG),$(sort $(wildcard input/paper/*.nml))) \
+                  $(sort $(wildcard input/paper/tolerance/*.nml)) \
+                  $(filter-out $(FIG_LONG),$(sort $(wildcard input/paper/converged/*.nml)))
 FIG_RUNS       := $(patsubst input/paper/%.nml,$(FIG_OUT)/%_summary.dat,$(FIG_DECKS))
 UPDATE_DECKS   := $(sort $(wildcard input/paper/update/*.nml))
 UPDATE_RUNS    := $(foreach u,fixed bracket,\

@@ -47,9 +47,10 @@ program contact_update
    use contact_law, only: contact_history_t, contact_force, contact_commit
    use newmark, only: newmark_t, newmark_init, newmark_predictor, newmark_update, impactor_advance
    use impact_driver, only: model_t, plate_state_t, impactor_state_t, force_bracket_t, &
-      build_model, factor_effective_matrix, unit_force_response, plate_solve, mass_times, &
+      build_model, factor_effective_matrix, plate_solve, mass_times, contact_area, &
       bracket_start, bracket_update, contact_converged, first_force_guess, &
       plate_kinetic_energy, plate_strain_energy, impact_deflection
+   use global_matrix, only: global_solve
    implicit none
 
    !> Exponent of the loading curve F = k alpha^1.5, eq. (11).
@@ -66,7 +67,7 @@ program contact_update
    type(impactor_state_t) :: imp, imp_new
    type(contact_history_t) :: hist
    type(force_bracket_t) :: br
-   real(dp), allocatable :: mb(:), d_new(:)
+   real(dp), allocatable :: mb(:), d_new(:), g_unit(:)
    real(dp) :: t, f_assum, f_cont, f_next, alpha, alpha_old, e0, e_ind, e_err
    real(dp) :: c_plate, c_impactor, c_total, alpha_star, peak_force, max_error, slope, max_slope, da
    integer :: stat, step, nstep, ic, nl_iter, unit, failed_steps, first_failed, iterations, nl_failed
@@ -97,9 +98,16 @@ program contact_update
    nm = newmark_init(deck%dt)
    call factor_effective_matrix(model, nm, stat, errmsg)
    if (stat /= 0) call fail(errmsg)
-   call unit_force_response(model, stat, errmsg)
+   ! the plate's response to a unit force at the impact point (the point
+   ! force of eq. 10: the decks of input/paper/update/ say load = 'point')
+   if (deck%contact_load /= 'point') call fail(trim(deck_path)//': &contact: load = '// &
+      trim(deck%contact_load)//": this experiment needs the paper's point force, load = 'point'")
+   allocate (g_unit(model%msh%neq))
+   g_unit = 0.0_dp
+   g_unit(model%eq_impact) = model%force_share
+   call global_solve(model%keff, g_unit, stat, errmsg)
    if (stat /= 0) call fail(errmsg)
-   c_plate = model%g_unit(model%eq_impact)                 ! m/N, whole-plate force
+   c_plate = g_unit(model%eq_impact)                       ! m/N, whole-plate force
    c_impactor = deck%dt**2/(4.0_dp*deck%mass)             ! m/N, eq. (21)
    c_total = c_plate + c_impactor
    alpha_star = (1.0_dp/(load_exponent*deck%k*c_total))**2 ! m, where 1.5 k alpha^0.5 = 1/c
@@ -136,6 +144,7 @@ program contact_update
       br = bracket_start()
 
       contact_iterations: do ic = 1, deck%max_contact_iter
+         call contact_area(model, hist, f_assum)
          call plate_solve(model, mb, f_assum, plate%d, d_new, nl_iter, nl_ok, stat, errmsg)
          if (stat /= 0) call fail('plate solution: '//errmsg)
          if (.not. nl_ok) nl_failed = nl_failed + 1
