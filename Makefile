@@ -32,6 +32,8 @@ LIB     := $(BUILD)/libimpact.a
 ORACLE_SOURCES := validation/reference_solutions.f90 validation/rigid_target.f90 \
                   validation/navier_impact_solution.f90
 ORACLE_OBJS    := $(patsubst validation/%.f90,$(BUILD)/oracles/%.o,$(ORACLE_SOURCES))
+# The tools' own modules (the HDF5 reader of tools/h5export and the tests).
+TOOL_OBJS      := $(BUILD)/tools/hdf5_read.o
 
 .PHONY: all run test setup clean reference
 all: impact
@@ -48,6 +50,10 @@ $(BUILD)/deps.mk: $(SOURCES) tools/fortran-deps | $(BUILD)
 
 $(LIB): $(OBJS)
 	ar rcs $@ $^
+
+$(BUILD)/tools/%.o: tools/%.f90 $(LIB)
+	@mkdir -p $(BUILD)/tools
+	$(FC_ALL) -c $< -o $@
 
 $(BUILD)/oracles/%.o: validation/%.f90 $(LIB)
 	@mkdir -p $(BUILD)/oracles

@@ -85,8 +85,8 @@ SHAPE_PREFIX ?= out/clamped
 h5export: $(H5EXPORT)
 # tests/test_hdf5.pf runs the exporter
 test-build: $(H5EXPORT)
-$(H5EXPORT): tools/h5export.f90 $(LIB)
-	$(FC_ALL) $< $(LIB) $(LAPACK) -o $@
+$(H5EXPORT): tools/h5export.f90 $(TOOL_OBJS) $(LIB)
+	$(FC_ALL) $< $(TOOL_OBJS) $(LIB) $(LAPACK) -o $@
 
 shape: $(H5EXPORT) impact
 	@test -f '$(SHAPE_PREFIX).h5' || { test '$(SHAPE_PREFIX)' = out/clamped && ./impact input/clamped.nml > /dev/null; } \

@@ -17,7 +17,10 @@
 !> Arrays keep Fortran order on disk: a Fortran x(m, n) reads as x[n, m] in
 !> h5py and h5dump (C order).
 !>
-!> Nothing is cached here: the caller holds the file and dataset ids.
+!> Nothing is cached here: the caller holds the file and dataset ids. This
+!> is the write half, what the program needs; the tools that read a results
+!> file (tools/h5export.f90, the tests) have the read half,
+!> tools/hdf5_read.f90, over the same messages (h5io_check, h5io_fail).
 module hdf5_io
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_f_pointer, c_char, c_null_char
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, h5fclose_f, &
@@ -36,8 +39,9 @@ module hdf5_io
    use kinds, only: dp, msg_len
    implicit none
    private
-   public :: h5io_start, h5io_create, h5io_open_read, h5io_close, h5io_flush, h5io_group
-   public :: h5io_set_attr, h5io_get_attr, h5io_write, h5io_rewrite, h5io_read
+   public :: h5io_start, h5io_create, h5io_close, h5io_flush, h5io_group
+   public :: h5io_set_attr, h5io_write, h5io_rewrite
+   public :: h5io_check, h5io_fail, h5io_attr_path, h5io_vlen_string_type
    public :: h5io_create_series, h5io_create_columns, h5io_append, h5io_close_dataset
    public :: h5io_real, h5io_integer
 
@@ -55,9 +59,6 @@ module hdf5_io
    end interface h5io_set_attr
 
    !> Reads a scalar attribute: real, integer or string (fixed or variable length).
-   interface h5io_get_attr
-      module procedure get_attr_real, get_attr_int, get_attr_string
-   end interface h5io_get_attr
 
    !> Writes a whole dataset (H5LT): real or integer, rank 1 or 2.
    interface h5io_write
@@ -65,9 +66,6 @@ module hdf5_io
    end interface h5io_write
 
    !> Reads a whole dataset (H5LT) into an allocatable array of its shape.
-   interface h5io_read
-      module procedure read_real_1d, read_real_2d, read_int_1d, read_int_2d
-   end interface h5io_read
 
    !> Appends one entry to a series: a real or an integer to a rank-1 series,
    !> a real column to a rank-2 series.
@@ -89,7 +87,7 @@ contains
       integer :: err
       call h5open_f(err)
       if (err /= 0) then
-         call fail('cannot initialise the HDF5 library', '', stat, errmsg)
+         call h5io_fail('cannot initialise the HDF5 library', '', stat, errmsg)
          return
       end if
       call h5eset_auto_f(0, err)
@@ -108,23 +106,9 @@ contains
       character(len=*), intent(inout) :: errmsg
       integer :: err
       call h5fcreate_f(path, H5F_ACC_TRUNC_F, fid, err)
-      call check(err, 'cannot create the HDF5 file', path, stat, errmsg)
+      call h5io_check(err, 'cannot create the HDF5 file', path, stat, errmsg)
    end subroutine h5io_create
 
-   !> Opens the existing file `path` read-only.
-   subroutine h5io_open_read(path, fid, stat, errmsg)
-      !> File path.
-      character(len=*), intent(in) :: path
-      !> Id of the open file.
-      integer(hid_t), intent(out) :: fid
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      integer :: err
-      call h5fopen_f(path, H5F_ACC_RDONLY_F, fid, err)
-      call check(err, 'cannot open the HDF5 file', path, stat, errmsg)
-   end subroutine h5io_open_read
 
    !> Closes a file.
    subroutine h5io_close(fid, stat, errmsg)
@@ -136,7 +120,7 @@ contains
       character(len=*), intent(inout) :: errmsg
       integer :: err
       call h5fclose_f(fid, err)
-      call check(err, 'cannot close the HDF5 file', '', stat, errmsg)
+      call h5io_check(err, 'cannot close the HDF5 file', '', stat, errmsg)
    end subroutine h5io_close
 
    !> Writes everything buffered to the file (H5Fflush), so that a run killed
@@ -150,7 +134,7 @@ contains
       character(len=*), intent(inout) :: errmsg
       integer :: err
       call h5fflush_f(fid, H5F_SCOPE_GLOBAL_F, err)
-      call check(err, 'cannot flush the HDF5 file', '', stat, errmsg)
+      call h5io_check(err, 'cannot flush the HDF5 file', '', stat, errmsg)
    end subroutine h5io_flush
 
    !> Creates the group `name` (a path relative to loc; its parent must exist).
@@ -166,10 +150,10 @@ contains
       integer(hid_t) :: gid
       integer :: err
       call h5gcreate_f(loc, name, gid, err)
-      call check(err, 'cannot create the group', name, stat, errmsg)
+      call h5io_check(err, 'cannot create the group', name, stat, errmsg)
       if (stat /= 0) return
       call h5gclose_f(gid, err)
-      call check(err, 'cannot close the group', name, stat, errmsg)
+      call h5io_check(err, 'cannot close the group', name, stat, errmsg)
    end subroutine h5io_group
 
    ! ------------------------------------------------------------ attributes
@@ -263,8 +247,8 @@ contains
       end do
       chars(n + 1) = c_null_char
       ptr(1) = c_loc(chars)
-      call vlen_string_type(tid, err)
-      call check(err, 'cannot make a string type for the attribute', name, stat, errmsg)
+      call h5io_vlen_string_type(tid, err)
+      call h5io_check(err, 'cannot make a string type for the attribute', name, stat, errmsg)
       if (stat /= 0) return
       call put_attr(loc, obj, name, tid, c_loc(ptr), 0, stat, errmsg)
       call h5tclose_f(tid, err)
@@ -290,11 +274,11 @@ contains
       logical :: there
 
       call h5aexists_by_name_f(loc, obj, name, there, err)
-      call check(err, 'cannot look for the attribute', attr_path(obj, name), stat, errmsg)
+      call h5io_check(err, 'cannot look for the attribute', h5io_attr_path(obj, name), stat, errmsg)
       if (stat /= 0) return
       if (there) then
          call h5adelete_by_name_f(loc, obj, name, err)
-         call check(err, 'cannot replace the attribute', attr_path(obj, name), stat, errmsg)
+         call h5io_check(err, 'cannot replace the attribute', h5io_attr_path(obj, name), stat, errmsg)
          if (stat /= 0) return
       end if
       if (n == 0) then
@@ -302,155 +286,26 @@ contains
       else
          call h5screate_simple_f(1, [int(n, hsize_t)], sid, err)
       end if
-      call check(err, 'cannot make the dataspace of the attribute', attr_path(obj, name), stat, errmsg)
+      call h5io_check(err, 'cannot make the dataspace of the attribute', h5io_attr_path(obj, name), stat, errmsg)
       if (stat /= 0) return
       call h5acreate_by_name_f(loc, obj, name, tid, sid, aid, err)
-      call check(err, 'cannot create the attribute', attr_path(obj, name), stat, errmsg)
+      call h5io_check(err, 'cannot create the attribute', h5io_attr_path(obj, name), stat, errmsg)
       if (stat == 0) then
          call h5awrite_f(aid, tid, buf, err)
-         call check(err, 'cannot write the attribute', attr_path(obj, name), stat, errmsg)
+         call h5io_check(err, 'cannot write the attribute', h5io_attr_path(obj, name), stat, errmsg)
          call h5aclose_f(aid, err)
       end if
       call h5sclose_f(sid, err)
    end subroutine put_attr
 
-   !> Reads the real scalar attribute `name` of object `obj`.
-   subroutine get_attr_real(loc, obj, name, x, stat, errmsg)
-      !> File or group the object path starts from.
-      integer(hid_t), intent(in) :: loc
-      !> Object path and attribute name.
-      character(len=*), intent(in) :: obj, name
-      !> Value read.
-      real(dp), intent(out), target :: x
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      x = 0.0_dp
-      call take_attr(loc, obj, name, H5T_NATIVE_DOUBLE, c_loc(x), stat, errmsg)
-   end subroutine get_attr_real
 
-   !> Reads the integer scalar attribute `name` of object `obj`.
-   subroutine get_attr_int(loc, obj, name, i, stat, errmsg)
-      !> File or group the object path starts from.
-      integer(hid_t), intent(in) :: loc
-      !> Object path and attribute name.
-      character(len=*), intent(in) :: obj, name
-      !> Value read.
-      integer, intent(out), target :: i
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      i = 0
-      call take_attr(loc, obj, name, H5T_NATIVE_INTEGER, c_loc(i), stat, errmsg)
-   end subroutine get_attr_int
 
-   !> Reads the string attribute `name` of object `obj`, variable or fixed length.
-   subroutine get_attr_string(loc, obj, name, s, stat, errmsg)
-      !> File or group the object path starts from.
-      integer(hid_t), intent(in) :: loc
-      !> Object path and attribute name.
-      character(len=*), intent(in) :: obj, name
-      !> Value read, without the terminating null.
-      character(len=:), allocatable, intent(out) :: s
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      integer(hid_t) :: aid, ftype, mtype, sid
-      type(c_ptr), target :: ptr(1)
-      type(c_ptr) :: to
-      character(kind=c_char), allocatable, target :: fixed(:)
-      character(kind=c_char), pointer :: chars(:)
-      integer(size_t) :: nchar
-      logical :: variable
-      integer :: err, k, n
 
-      s = ''
-      call h5aopen_by_name_f(loc, obj, name, aid, err)
-      call check(err, 'cannot open the attribute', attr_path(obj, name), stat, errmsg)
-      if (stat /= 0) return
-      call h5aget_type_f(aid, ftype, err)
-      if (err == 0) call h5tis_variable_str_f(ftype, variable, err)
-      if (err == 0) call h5tget_size_f(ftype, nchar, err)
-      call check(err, 'cannot tell the type of the attribute', attr_path(obj, name), stat, errmsg)
-      if (stat /= 0) then
-         call h5aclose_f(aid, err)
-         return
-      end if
-      if (variable) then
-         call vlen_string_type(mtype, err)
-         to = c_loc(ptr)
-         if (err == 0) call h5aread_f(aid, mtype, to, err)
-         call check(err, 'cannot read the attribute', attr_path(obj, name), stat, errmsg)
-         if (stat == 0) then
-            n = 0
-            call c_f_pointer(ptr(1), chars, [huge(1)])
-            do while (chars(n + 1) /= c_null_char)
-               n = n + 1
-            end do
-            s = repeat(' ', n)
-            do k = 1, n
-               s(k:k) = chars(k)
-            end do
-            call h5aget_space_f(aid, sid, err)
-            call h5dvlen_reclaim_f(mtype, sid, H5P_DEFAULT_F, to, err)
-            call h5sclose_f(sid, err)
-         end if
-      else
-         allocate (fixed(nchar + 1))
-         fixed = c_null_char
-         call h5tcopy_f(H5T_FORTRAN_S1, mtype, err)
-         if (err == 0) call h5tset_size_f(mtype, nchar, err)
-         to = c_loc(fixed)
-         if (err == 0) call h5aread_f(aid, mtype, to, err)
-         call check(err, 'cannot read the attribute', attr_path(obj, name), stat, errmsg)
-         if (stat == 0) then
-            n = 0
-            do while (fixed(n + 1) /= c_null_char .and. n < int(nchar))
-               n = n + 1
-            end do
-            s = repeat(' ', n)
-            do k = 1, n
-               s(k:k) = fixed(k)
-            end do
-            s = trim(s)
-         end if
-      end if
-      call h5tclose_f(mtype, err)
-      call h5tclose_f(ftype, err)
-      call h5aclose_f(aid, err)
-   end subroutine get_attr_string
-
-   !> Reads a scalar attribute into buf, converted to the memory type tid.
-   subroutine take_attr(loc, obj, name, tid, buf, stat, errmsg)
-      !> File or group the object path starts from; memory type to read into.
-      integer(hid_t), intent(in) :: loc, tid
-      !> Object path and attribute name.
-      character(len=*), intent(in) :: obj, name
-      !> Address of the variable that receives the value.
-      type(c_ptr), intent(in) :: buf
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      integer(hid_t) :: aid
-      type(c_ptr) :: to
-      integer :: err
-      call h5aopen_by_name_f(loc, obj, name, aid, err)
-      call check(err, 'cannot open the attribute', attr_path(obj, name), stat, errmsg)
-      if (stat /= 0) return
-      to = buf
-      call h5aread_f(aid, tid, to, err)
-      call check(err, 'cannot read the attribute', attr_path(obj, name), stat, errmsg)
-      call h5aclose_f(aid, err)
-   end subroutine take_attr
 
    !> A variable-length, null-terminated UTF-8 string type (the caller closes
    !> it), made from the one-character type H5T_FORTRAN_S1: the module's
    !> H5T_STRING is already variable-length in HDF5 1.10 and cannot be resized.
-   subroutine vlen_string_type(tid, err)
+   subroutine h5io_vlen_string_type(tid, err)
       !> The new type.
       integer(hid_t), intent(out) :: tid
       !> HDF5's error code (0 on success).
@@ -459,7 +314,7 @@ contains
       if (err == 0) call h5tset_size_f(tid, variable_length, err)
       if (err == 0) call h5tset_strpad_f(tid, H5T_STR_NULLTERM_F, err)
       if (err == 0) call h5tset_cset_f(tid, H5T_CSET_UTF8_F, err)
-   end subroutine vlen_string_type
+   end subroutine h5io_vlen_string_type
 
    ! ------------------------------------------------------------ whole datasets
 
@@ -477,7 +332,7 @@ contains
       character(len=*), intent(inout) :: errmsg
       integer :: err
       call h5ltmake_dataset_double_f(loc, name, 1, shape(x, kind=hsize_t), x, err)
-      call check(err, 'cannot write the dataset', name, stat, errmsg)
+      call h5io_check(err, 'cannot write the dataset', name, stat, errmsg)
    end subroutine write_real_1d
 
    !> Writes the real dataset `name` of x(:,:) (C order: x[n2, n1]).
@@ -494,7 +349,7 @@ contains
       character(len=*), intent(inout) :: errmsg
       integer :: err
       call h5ltmake_dataset_double_f(loc, name, 2, shape(x, kind=hsize_t), x, err)
-      call check(err, 'cannot write the dataset', name, stat, errmsg)
+      call h5io_check(err, 'cannot write the dataset', name, stat, errmsg)
    end subroutine write_real_2d
 
    !> Writes the integer dataset `name` of i(:).
@@ -511,7 +366,7 @@ contains
       character(len=*), intent(inout) :: errmsg
       integer :: err
       call h5ltmake_dataset_int_f(loc, name, 1, shape(i, kind=hsize_t), i, err)
-      call check(err, 'cannot write the dataset', name, stat, errmsg)
+      call h5io_check(err, 'cannot write the dataset', name, stat, errmsg)
    end subroutine write_int_1d
 
    !> Writes the integer dataset `name` of i(:,:) (C order: i[n2, n1]).
@@ -528,7 +383,7 @@ contains
       character(len=*), intent(inout) :: errmsg
       integer :: err
       call h5ltmake_dataset_int_f(loc, name, 2, shape(i, kind=hsize_t), i, err)
-      call check(err, 'cannot write the dataset', name, stat, errmsg)
+      call h5io_check(err, 'cannot write the dataset', name, stat, errmsg)
    end subroutine write_int_2d
 
    !> Overwrites the whole existing real dataset `name` with x(:), which must
@@ -547,128 +402,17 @@ contains
       integer(hid_t) :: did
       integer :: err
       call h5dopen_f(loc, name, did, err)
-      call check(err, 'cannot open the dataset', name, stat, errmsg)
+      call h5io_check(err, 'cannot open the dataset', name, stat, errmsg)
       if (stat /= 0) return
       call h5dwrite_f(did, H5T_NATIVE_DOUBLE, x, shape(x, kind=hsize_t), err)
-      call check(err, 'cannot write the dataset', name, stat, errmsg)
+      call h5io_check(err, 'cannot write the dataset', name, stat, errmsg)
       call h5dclose_f(did, err)
    end subroutine h5io_rewrite
 
-   !> Reads the rank-1 real dataset `name`.
-   subroutine read_real_1d(loc, name, x, stat, errmsg)
-      !> File or group the path starts from.
-      integer(hid_t), intent(in) :: loc
-      !> Dataset path.
-      character(len=*), intent(in) :: name
-      !> Values read.
-      real(dp), allocatable, intent(out) :: x(:)
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      integer(hsize_t) :: dims(1)
-      integer :: err
-      call dataset_dims(loc, name, dims, stat, errmsg)
-      if (stat /= 0) return
-      allocate (x(dims(1)))
-      if (size(x) == 0) return
-      call h5ltread_dataset_double_f(loc, name, x, dims, err)
-      call check(err, 'cannot read the dataset', name, stat, errmsg)
-   end subroutine read_real_1d
 
-   !> Reads the rank-2 real dataset `name` (Fortran shape: C order reversed).
-   subroutine read_real_2d(loc, name, x, stat, errmsg)
-      !> File or group the path starts from.
-      integer(hid_t), intent(in) :: loc
-      !> Dataset path.
-      character(len=*), intent(in) :: name
-      !> Values read.
-      real(dp), allocatable, intent(out) :: x(:,:)
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      integer(hsize_t) :: dims(2)
-      integer :: err
-      call dataset_dims(loc, name, dims, stat, errmsg)
-      if (stat /= 0) return
-      allocate (x(dims(1), dims(2)))
-      if (size(x) == 0) return
-      call h5ltread_dataset_double_f(loc, name, x, dims, err)
-      call check(err, 'cannot read the dataset', name, stat, errmsg)
-   end subroutine read_real_2d
 
-   !> Reads the rank-1 integer dataset `name`.
-   subroutine read_int_1d(loc, name, i, stat, errmsg)
-      !> File or group the path starts from.
-      integer(hid_t), intent(in) :: loc
-      !> Dataset path.
-      character(len=*), intent(in) :: name
-      !> Values read.
-      integer, allocatable, intent(out) :: i(:)
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      integer(hsize_t) :: dims(1)
-      integer :: err
-      call dataset_dims(loc, name, dims, stat, errmsg)
-      if (stat /= 0) return
-      allocate (i(dims(1)))
-      if (size(i) == 0) return
-      call h5ltread_dataset_int_f(loc, name, i, dims, err)
-      call check(err, 'cannot read the dataset', name, stat, errmsg)
-   end subroutine read_int_1d
 
-   !> Reads the rank-2 integer dataset `name` (Fortran shape: C order reversed).
-   subroutine read_int_2d(loc, name, i, stat, errmsg)
-      !> File or group the path starts from.
-      integer(hid_t), intent(in) :: loc
-      !> Dataset path.
-      character(len=*), intent(in) :: name
-      !> Values read.
-      integer, allocatable, intent(out) :: i(:,:)
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      integer(hsize_t) :: dims(2)
-      integer :: err
-      call dataset_dims(loc, name, dims, stat, errmsg)
-      if (stat /= 0) return
-      allocate (i(dims(1), dims(2)))
-      if (size(i) == 0) return
-      call h5ltread_dataset_int_f(loc, name, i, dims, err)
-      call check(err, 'cannot read the dataset', name, stat, errmsg)
-   end subroutine read_int_2d
 
-   !> The dimensions (Fortran order) of dataset `name`, which must have rank size(dims).
-   subroutine dataset_dims(loc, name, dims, stat, errmsg)
-      !> File or group the path starts from.
-      integer(hid_t), intent(in) :: loc
-      !> Dataset path.
-      character(len=*), intent(in) :: name
-      !> Its dimensions, Fortran order; their number is the rank expected.
-      integer(hsize_t), intent(out) :: dims(:)
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      integer :: rank, type_class, err
-      integer(size_t) :: type_size
-      character(len=16) :: text
-      dims = 0
-      call h5ltget_dataset_ndims_f(loc, name, rank, err)
-      call check(err, 'cannot find the dataset', name, stat, errmsg)
-      if (stat /= 0) return
-      if (rank /= size(dims)) then
-         write (text, '(a,i0,a,i0)') ' ', rank, ', not ', size(dims)
-         call fail('the dataset has rank'//trim(text), name, stat, errmsg)
-         return
-      end if
-      call h5ltget_dataset_info_f(loc, name, dims, type_class, type_size, err)
-      call check(err, 'cannot read the shape of the dataset', name, stat, errmsg)
-   end subroutine dataset_dims
 
    ! ------------------------------------------------------------ series
 
@@ -741,14 +485,14 @@ contains
       maxdims(rank) = H5S_UNLIMITED_F
       did = -1
       call h5screate_simple_f(rank, dims, sid, err, maxdims)
-      call check(err, 'cannot make the dataspace of the dataset', name, stat, errmsg)
+      call h5io_check(err, 'cannot make the dataspace of the dataset', name, stat, errmsg)
       if (stat /= 0) return
       call h5pcreate_f(H5P_DATASET_CREATE_F, plist, err)
       if (err == 0) call h5pset_chunk_f(plist, rank, chunk, err)
-      call check(err, 'cannot set the chunks of the dataset', name, stat, errmsg)
+      call h5io_check(err, 'cannot set the chunks of the dataset', name, stat, errmsg)
       if (stat == 0) then
          call h5dcreate_f(loc, name, tid, sid, did, err, dcpl_id=plist)
-         call check(err, 'cannot create the dataset', name, stat, errmsg)
+         call h5io_check(err, 'cannot create the dataset', name, stat, errmsg)
       end if
       call h5pclose_f(plist, err)
       call h5sclose_f(sid, err)
@@ -816,7 +560,7 @@ contains
       if (err == 0) call h5sget_simple_extent_dims_f(fspace, dims, maxdims, err)
       if (err == rank) err = 0
       if (err == 0) call h5sclose_f(fspace, err)
-      call check(err, 'cannot read the extent of a series', '', stat, errmsg)
+      call h5io_check(err, 'cannot read the extent of a series', '', stat, errmsg)
       if (stat /= 0) return
       start = 0
       start(rank) = dims(rank)
@@ -824,15 +568,15 @@ contains
       count(rank) = 1
       dims(rank) = dims(rank) + 1
       call h5dset_extent_f(did, dims, err)
-      call check(err, 'cannot extend a series', '', stat, errmsg)
+      call h5io_check(err, 'cannot extend a series', '', stat, errmsg)
       if (stat /= 0) return
       call h5dget_space_f(did, fspace, err)
       if (err == 0) call h5sselect_hyperslab_f(fspace, H5S_SELECT_SET_F, start, count, err)
       if (err == 0) call h5screate_simple_f(rank, count, mspace, err)
-      call check(err, 'cannot select the new entry of a series', '', stat, errmsg)
+      call h5io_check(err, 'cannot select the new entry of a series', '', stat, errmsg)
       if (stat /= 0) return
       call h5dwrite_f(did, tid, buf, err, mem_space_id=mspace, file_space_id=fspace)
-      call check(err, 'cannot write the new entry of a series', '', stat, errmsg)
+      call h5io_check(err, 'cannot write the new entry of a series', '', stat, errmsg)
       call h5sclose_f(mspace, err)
       call h5sclose_f(fspace, err)
    end subroutine grow_and_write
@@ -847,13 +591,13 @@ contains
       character(len=*), intent(inout) :: errmsg
       integer :: err
       call h5dclose_f(did, err)
-      call check(err, 'cannot close a dataset', '', stat, errmsg)
+      call h5io_check(err, 'cannot close a dataset', '', stat, errmsg)
    end subroutine h5io_close_dataset
 
    ! ------------------------------------------------------------ messages
 
    !> stat = 0 if err = 0, else failed and the message "what 'name'".
-   subroutine check(err, what, name, stat, errmsg)
+   subroutine h5io_check(err, what, name, stat, errmsg)
       !> HDF5's error code.
       integer, intent(in) :: err
       !> What failed, and the object it failed on ('' for none).
@@ -865,12 +609,12 @@ contains
       if (err == 0) then
          stat = 0
       else
-         call fail(what, name, stat, errmsg)
+         call h5io_fail(what, name, stat, errmsg)
       end if
-   end subroutine check
+   end subroutine h5io_check
 
    !> stat = failed and the message "what 'name'" (or "what" without a name).
-   subroutine fail(what, name, stat, errmsg)
+   subroutine h5io_fail(what, name, stat, errmsg)
       !> What failed, and the object it failed on ('' for none).
       character(len=*), intent(in) :: what, name
       !> Set to failed.
@@ -883,14 +627,14 @@ contains
       else
          errmsg = what
       end if
-   end subroutine fail
+   end subroutine h5io_fail
 
    !> 'obj@name' for messages about attribute name of object obj.
-   pure function attr_path(obj, name) result(text)
+   pure function h5io_attr_path(obj, name) result(text)
       !> Object path and attribute name.
       character(len=*), intent(in) :: obj, name
       character(len=len(obj) + len(name) + 1) :: text
       text = obj//'@'//name
-   end function attr_path
+   end function h5io_attr_path
 
 end module hdf5_io

@@ -48,12 +48,12 @@ ifdef PFUNIT_DIR
 TEST_EXE := $(BUILD)/pfunit/impact_tests
 
 # pf2f90.py checks that the tests stay in the subset the default route builds.
-test-build: $(LIB) $(ORACLE_OBJS)
+test-build: $(LIB) $(ORACLE_OBJS) $(TOOL_OBJS)
 	@mkdir -p $(BUILD)/pfunit
 	$(PYTHON) $(FUNIT)/pf2f90.py --driver $(BUILD)/pfunit/subset_check.f90 $(TEST_PF)
 	$(MAKE) -C $(BUILD)/pfunit -f $(CURDIR)/$(FUNIT)/pfunit.mk impact_tests \
 	    PFUNIT_DIR='$(abspath $(PFUNIT_DIR))' FC='$(FC)' FFLAGS='$(FFLAGS)' \
-	    IMPACT_TESTS='$(abspath $(TEST_PF))' IMPACT_LIB='$(abspath $(ORACLE_OBJS) $(LIB))' \
+	    IMPACT_TESTS='$(abspath $(TEST_PF))' IMPACT_LIB='$(abspath $(ORACLE_OBJS) $(TOOL_OBJS) $(LIB))' \
 	    IMPACT_MODULES='$(abspath $(BUILD))' LAPACK='$(LAPACK)'
 
 else
@@ -79,9 +79,9 @@ $(TEST_BUILD)/test-list: FORCE | $(TEST_BUILD)
 $(TEST_BUILD)/funit_driver.f90: $(TEST_BUILD)/test-list $(TEST_PF) $(FUNIT)/pf2f90.py
 	$(PYTHON) $(FUNIT)/pf2f90.py --driver $@ $(TEST_PF)
 
-$(TEST_BUILD)/%.o: $(TEST_BUILD)/%.F90 $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(LIB)
+$(TEST_BUILD)/%.o: $(TEST_BUILD)/%.F90 $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(TOOL_OBJS) $(LIB)
 	$(FC_ALL) -c $< -o $@
 
-$(TEST_EXE): $(TEST_BUILD)/funit_driver.f90 $(TEST_OBJ) $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(LIB)
-	$(FC_ALL) $< $(TEST_OBJ) $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(LIB) $(LAPACK) -o $@
+$(TEST_EXE): $(TEST_BUILD)/funit_driver.f90 $(TEST_OBJ) $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(TOOL_OBJS) $(LIB)
+	$(FC_ALL) $< $(TEST_OBJ) $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(TOOL_OBJS) $(LIB) $(LAPACK) -o $@
 endif

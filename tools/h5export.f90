@@ -25,7 +25,8 @@ program h5export
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use hdf5, only: hid_t
    use kinds, only: dp, msg_len
-   use hdf5_io, only: h5io_start, h5io_open_read, h5io_close, h5io_get_attr, h5io_read
+   use hdf5_io, only: h5io_start, h5io_close
+   use hdf5_read, only: h5io_open_read, h5io_get_attr, h5io_read
    implicit none
 
    !> Metres to millimetres.

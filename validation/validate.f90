@@ -33,7 +33,7 @@ program validate
    use kinds, only: dp, pi, msg_len
    use input_deck, only: deck_t, read_deck_file, validate_deck
    use materials, only: lamina_t, laminate_t, laminate_from_layup
-   use impact_driver, only: model_t, build_model
+   use plate_model, only: model_t, build_model
    use analysis_support, only: assemble_load
    use static_analysis, only: static_result_t, static_solve
    use modal_analysis, only: modal_result_t, modal_solve
