@@ -3,8 +3,8 @@
 # (b, c) meshes 2 x 3, 4 x 6, 6 x 9, 8 x 12 at 2.5 us (fig06_2x3,
 #        fig06_4x6_dt2p5, fig10_clamped_nonlinear, fig06_8x12);
 # (d) the same four steps with the paper's literal update of the assumed
-#     force, F_assum <- F_cont (build/contact_update on
-#     input/paper/update/clamped_4x6_dt*.nml; a run that diverged, its
+#     force, F_assum <- F_cont (./impact --set analysis.force_update=plain
+#     on input/paper/update/clamped_4x6_dt*.nml; a run that diverged, its
 #     energy error below -E0, stops there and is marked).
 fig = 'fig06';  W = 11.0;  H = 8.5
 load 'postproc/paper_style.gp'
@@ -13,7 +13,7 @@ steplabel(s) = (s eq '2p5' ? '2.5' : s).' μs'
 meshes = "2x3 4x6 6x9 8x12"
 meshrun(m) = (m eq '4x6' ? 'fig06_4x6_dt2p5' : (m eq '6x9' ? 'fig10_clamped_nonlinear' : 'fig06_'.m))
 upd(s) = run.'/update/clamped_4x6_dt'.s.'_fixed'
-diverged(s) = system("awk -F' = ' '/^diverged_at_us/{print $2}' ".upd(s).'.txt')
+diverged(s) = system("awk -F' = ' '/^diverged_at_us/{print $2}' ".upd(s).'_summary.dat')
 
 set multiplot layout 2,2 title "Fig. 6  Convergence: clamped, nonlinear, 243 g at 3 m/s"
 set xrange [0:2000]
@@ -32,7 +32,7 @@ set title "(d) time step, 4×6 mesh, the paper's literal update F_{assum} ← F_
 set ylabel 'contact force (N)'
 set yrange [0:4000]
 set key top right
-plot for [i=1:4] upd(word(steps,i)).'.dat' u 1:2 w l ls (10+i) \
+plot for [i=1:4] upd(word(steps,i)).'_history.dat' u 1:2 w l ls (10+i) \
      t 'Δt = '.steplabel(word(steps,i)).(diverged(word(steps,i)) eq 'none' ? '' : \
        sprintf(': diverged at %.0f μs', real(diverged(word(steps,i)))))
 unset multiplot

@@ -148,6 +148,7 @@ program impact
          ic = min(ic, deck%max_contact_iter)
          if (.not. ok .and. deck%force_update /= 'plain') call fail_in_run('time step did not converge: ' &
             // 'the contact iteration (eq. 17): ' // contact_report(cit, deck%cr1, ic))
+         if (.not. ok) imp_new%f = cit%f_cont     ! 'plain': F_assum <- F_cont once more, and on to the next step
       end if
 
       ! -- accept the step: Newmark update (eq. 20), the impactor, the contact history
