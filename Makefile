@@ -90,3 +90,9 @@ clean:
 include tests/tests.mk
 # Further targets (figures, validation, benchmarks, ...) live in mk/*.mk.
 -include $(sort $(wildcard mk/*.mk))
+
+# The README's deck table, from the schema of src/deck_schema.f90 (between
+# the markers <!-- deck:begin --> and <!-- deck:end -->).
+.PHONY: deck-table
+deck-table: impact
+	@python3 tools/readme-deck-table README.md ./impact

@@ -9,7 +9,7 @@ if (!exists("prefix")) prefix = 'out/clamped'
 file = prefix.'_history.dat'
 set terminal pngcairo size 900,1100 font ",10"
 set output prefix.'_history.png'
-set multiplot layout 3,1 title "impact: ".file
+set multiplot layout 3,1 title "impact: ".file noenhanced
 set grid
 set xlabel "time (us)"
 set key top right

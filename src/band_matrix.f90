@@ -42,7 +42,7 @@ module band_matrix
    private
    public :: band_matrix_t, pivot_rel_tol
    public :: band_init, band_zero, band_in_band, band_add, band_get, &
-             band_matvec, band_factor, band_solve, band_copy, band_axpy
+             band_matvec, band_factor, band_solve, band_axpy
 
    !> Relative pivot tolerance: pivot d_j <= pivot_rel_tol*|A(j,j)| fails
    !> (64 machine epsilons, about 1.4e-14: all digits of d_j lost).
@@ -385,16 +385,6 @@ contains
          errmsg = msg
       end if
    end subroutine check_info
-
-   !> dst = src (structure, values and factored flag).
-   subroutine band_copy(dst, src)
-      !> The copy.
-      type(band_matrix_t), intent(out) :: dst
-      !> The matrix copied.
-      type(band_matrix_t), intent(in) :: src
-
-      dst = src
-   end subroutine band_copy
 
    !> a = a + alpha*b for two unfactored matrices of the same n and kd.
    subroutine band_axpy(a, alpha, b, stat, errmsg)

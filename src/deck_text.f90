@@ -24,7 +24,7 @@ module deck_text
    use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor
    implicit none
    private
-   public :: item_t, assignment_t, group_text_t, read_deck_text, lower_case
+   public :: item_t, group_text_t, read_deck_text, lower_case
 
    !> One value as written: its text (without quotes) and whether it was quoted.
    type :: item_t

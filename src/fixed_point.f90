@@ -41,9 +41,9 @@ module fixed_point
    use kinds, only: dp, msg_len
    implicit none
    private
-   public :: fp_guard_t, fp_start, fp_check, fp_next, fp_state_text, fp_report
+   public :: fp_guard_t, fp_start, fp_check, fp_next, fp_report
    public :: fp_iterating, fp_converged, fp_not_finite, fp_diverged, fp_stagnated, fp_limit
-   public :: growth_limit, stagnation_window, progress_factor, anderson_depth
+
 
    !> States of the iteration.
    integer, parameter :: fp_iterating = 0   !< going on

@@ -35,7 +35,7 @@ module global_matrix
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    implicit none
    private
-   public :: global_matrix_t, storage_len
+   public :: global_matrix_t
    public :: global_init, global_zero, global_assemble, global_axpy_matrix, &
              global_copy, global_matvec, global_factor, global_solve, &
              global_bandwidth, global_stored_entries, global_entry

@@ -26,7 +26,7 @@ module input_deck
    implicit none
    private
    public :: deck_t, default_deck, read_deck, read_deck_file, validate_deck, echo_deck, set_variable
-   public :: deck_value_text, write_deck_table, write_schema, real_str, group_applies
+   public :: write_deck_table, write_schema, real_str
 
    !> Status returned on any failure.
    integer, parameter :: failed = 1

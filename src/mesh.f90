@@ -44,7 +44,9 @@
 !> Equation numbers: eq(k, node) is the global equation of freedom k of node,
 !> 0 where the freedom is held; equations follow the node numbering.
 !>
-!> Boundary conditions (section 2.4; NOTES.md "open points"):
+!> Boundary conditions (section 2.4; the in-plane condition of "simply
+!> supported" and the tangential rotation the paper leaves open, README
+!> "Choices the paper leaves open"):
 !>  - 'clamped':          u = v = w = psi_x = psi_y = 0;
 !>  - 'simply_supported': w = 0 and the rotation along the edge psi_s = 0
 !>    (psi_y on x = const edges, psi_x on y = const edges: the "hard" simple

@@ -44,7 +44,7 @@ module shear_strain
    use gauss_rules, only: gauss_2d
    implicit none
    private
-   public :: shear_rule_t, shear_operator_t, shear_operator, shear_rule_names, max_shear_points, &
+   public :: shear_rule_t, shear_operator_t, shear_operator, shear_rule_names, &
              shear_selective, shear_stabilized, shear_full, shear_mitc9, shear_rule_code
 
    !> The rules, by code.

@@ -48,7 +48,7 @@ module skyline_matrix
    public :: skyline_matrix_t
    public :: skyline_init, skyline_zero, skyline_in_profile, skyline_add, &
              skyline_get, skyline_first_row, skyline_half_bandwidth, &
-             skyline_matvec, skyline_factor, skyline_solve, skyline_copy, &
+             skyline_matvec, skyline_factor, skyline_solve, &
              skyline_axpy
 
    !> Symmetric matrix in skyline storage (see module header).
@@ -379,16 +379,6 @@ contains
          end do
       end do back
    end subroutine skyline_solve
-
-   !> dst = src (profile, values and factored flag).
-   subroutine skyline_copy(dst, src)
-      !> The copy.
-      type(skyline_matrix_t), intent(out) :: dst
-      !> The matrix copied.
-      type(skyline_matrix_t), intent(in) :: src
-
-      dst = src
-   end subroutine skyline_copy
 
    !> sky = sky + alpha*other for two unfactored matrices of one profile.
    subroutine skyline_axpy(sky, alpha, other, stat, errmsg)

@@ -36,7 +36,7 @@ module static_analysis
    use result_files, only: claim_results, open_columns
    implicit none
    private
-   public :: static_result_t, static_solve, internal_force, run_static
+   public :: static_result_t, static_solve, run_static
 
    !> The load-deflection path of a static analysis.
    type :: static_result_t

@@ -85,10 +85,13 @@ contains
       if (scheme == 'fast') then
          write (tr%unit, '(a)') "trace:   scheme 'fast': the contact equation F = F_law(alpha(F)) solved inside " &
             // 'each eq. (19) iteration (src/fast_scheme.f90)'
-      else
+      else if (cit%pattern%radius > 0.0_dp) then
          write (tr%unit, '(a,i0,a,es13.6,a,es11.4,a,i0,a)') 'trace:   contact iteration ', ic, &
             ': assumed force F_assum = ', cit%f_assum, ' N over a contact disc of radius ', cit%pattern%radius, &
-            ' m (', cit%pattern%n, ' equations loaded)'
+            ' m (Hertz''s pressure on ', cit%pattern%n, ' equations)'
+      else
+         write (tr%unit, '(a,i0,a,es13.6,a)') 'trace:   contact iteration ', ic, &
+            ': assumed force F_assum = ', cit%f_assum, ' N at the impact node (the point force, eq. 10)'
       end if
       do n = 1, solver%iterations
          write (tr%unit, '(a,i0,a,es10.3,a,es10.3)') 'trace:     eq. (19) iteration ', n, &
