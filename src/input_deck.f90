@@ -422,20 +422,20 @@ contains
          type(value_t), intent(in) :: v
          type(deck_var_t) :: e
          e = deck_vars(iv)      ! (a copy: gfortran 12 loses an associate name of a constant's element)
-            select case (e%kind)
-            case (kind_real)
-               if (v%given) call need(in_interval(v%r, e%range), trim(e%group), trim(e%name), real_str(v%r), &
-                  interval_text(e%range, e%unit))
-            case (kind_integer)
-               call need(in_interval(real(v%i, dp), e%range), trim(e%group), trim(e%name), int_str(v%i), &
-                  interval_text(e%range, e%unit))
-            case (kind_word)
-               call need(index(' ' // words_of(e%range) // ' ', ' ' // v%s // ' ') > 0 .and. len(v%s) > 0, &
-                  trim(e%group), trim(e%name), "'" // v%s // "'", 'must be one of ' // words_quoted(e%range))
-            case (kind_path)
-               call need(len(v%s) <= max_path_len, trim(e%group), trim(e%name), quoted_cut(v%s), &
-                  'longer than ' // int_str(max_path_len) // ' characters')
-            end select
+         select case (e%kind)
+         case (kind_real)
+            if (v%given) call need(in_interval(v%r, e%range), trim(e%group), trim(e%name), real_str(v%r), &
+               interval_text(e%range, e%unit))
+         case (kind_integer)
+            call need(in_interval(real(v%i, dp), e%range), trim(e%group), trim(e%name), int_str(v%i), &
+               interval_text(e%range, e%unit))
+         case (kind_word)
+            call need(index(' ' // words_of(e%range) // ' ', ' ' // v%s // ' ') > 0 .and. len(v%s) > 0, &
+               trim(e%group), trim(e%name), "'" // v%s // "'", 'must be one of ' // words_quoted(e%range))
+         case (kind_path)
+            call need(len(v%s) <= max_path_len, trim(e%group), trim(e%name), quoted_cut(v%s), &
+               'longer than ' // int_str(max_path_len) // ' characters')
+         end select
       end subroutine check_range
 
    end subroutine validate_deck
@@ -593,29 +593,29 @@ contains
       write (unit, '(a)') '|---|---|---|---|---|'
       do iv = 1, size(deck_vars)
          e = deck_vars(iv)
-            group = ''
-            if (iv == 1) then
-               group = '`&' // trim(e%group) // '`'
-            else if (deck_vars(iv - 1)%group /= e%group) then
-               group = '`&' // trim(e%group) // '`'
-            end if
-            meaning = trim(e%meaning)
-            if (e%kind == kind_word) meaning = meaning // ' (' // words_quoted(e%range) // ')'
-            if ((e%kind == kind_real .or. e%kind == kind_integer) .and. trim(e%range) /= '(-inf, inf)') &
-               meaning = meaning // '; in ' // trim(e%range)
-            write (unit, '(a)') '| ' // group // ' | `' // trim(e%name) // '` | ' // trim(e%unit) // ' | ' &
-               // default_text(e) // ' | ' // meaning // ' |'
+         group = ''
+         if (iv == 1) then
+         group = '`&' // trim(e%group) // '`'
+         else if (deck_vars(iv - 1)%group /= e%group) then
+         group = '`&' // trim(e%group) // '`'
+         end if
+         meaning = trim(e%meaning)
+         if (e%kind == kind_word) meaning = meaning // ' (' // words_quoted(e%range) // ')'
+         if ((e%kind == kind_real .or. e%kind == kind_integer) .and. trim(e%range) /= '(-inf, inf)') &
+         meaning = meaning // '; in ' // trim(e%range)
+         write (unit, '(a)') '| ' // group // ' | `' // trim(e%name) // '` | ' // trim(e%unit) // ' | ' &
+         // default_text(e) // ' | ' // meaning // ' |'
       end do
    contains
       function default_text(e) result(text)
          type(deck_var_t), intent(in) :: e
          character(len=:), allocatable :: text
          if (len_trim(e%default) == 0) then
-            text = 'not given'
+         text = 'not given'
          else if (e%kind == kind_word .or. e%kind == kind_path) then
-            text = "`'" // trim(e%default) // "'`"
+         text = "`'" // trim(e%default) // "'`"
          else
-            text = '`' // trim(e%default) // '`'
+         text = '`' // trim(e%default) // '`'
          end if
       end function default_text
    end subroutine write_deck_table
@@ -631,8 +631,8 @@ contains
          // tab // 'range' // tab // 'meaning'
       do iv = 1, size(deck_vars)
          e = deck_vars(iv)
-            write (unit, '(a)') trim(e%group) // tab // trim(e%name) // tab // trim(kind_names(e%kind)) // tab &
-               // trim(e%unit) // tab // trim(e%default) // tab // trim(e%range) // tab // trim(e%meaning)
+         write (unit, '(a)') trim(e%group) // tab // trim(e%name) // tab // trim(kind_names(e%kind)) // tab &
+            // trim(e%unit) // tab // trim(e%default) // tab // trim(e%range) // tab // trim(e%meaning)
       end do
    end subroutine write_schema
 

@@ -45,7 +45,7 @@ module results_hdf5
    use input_deck, only: echo_deck
    use build_info, only: code_version
    use mesh, only: mesh_t, ndof_node, freedom_name
-   use result_files, only: history_columns, nhist, summary_item_t
+   use result_files, only: column_t, history_columns, nhist, summary_item_t
    use hdf5_io, only: h5io_start, h5io_create, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
       h5io_write, h5io_rewrite, h5io_create_series, h5io_create_columns, h5io_append, &
       h5io_close_dataset, h5io_real, h5io_integer
@@ -89,6 +89,7 @@ contains
       !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       character(len=msg_len) :: why
+      type(column_t) :: col
       character(len=8) :: date
       character(len=10) :: clock
       integer :: c, k, ecode
@@ -121,12 +122,11 @@ contains
       if (stat == 0) call put_int('history', 'every', deck%every, 'steps')
       columns: do c = 1, nhist
          if (stat /= 0) exit columns
-         associate (col => history_columns(c))
-            call h5io_create_series(rf%fid, 'history/'//trim(col%name), &
-               merge(h5io_integer, h5io_real, col%whole), hist_chunk, rf%hist(c), stat, why)
-            call put_string('history/'//trim(col%name), 'units', col%unit)
-            call put_string('history/'//trim(col%name), 'description', col%meaning)
-         end associate
+         col = history_columns(c)      ! (a copy, not an associate name: see src/input_deck.f90)
+         call h5io_create_series(rf%fid, 'history/'//trim(col%name), &
+            merge(h5io_integer, h5io_real, col%whole), hist_chunk, rf%hist(c), stat, why)
+         call put_string('history/'//trim(col%name), 'units', col%unit)
+         call put_string('history/'//trim(col%name), 'description', col%meaning)
       end do columns
 
       ! -- field snapshots: extendible, one column of nnode values per snapshot
@@ -409,23 +409,23 @@ contains
          grp = 'deck/'//trim(deck_vars(iv)%group)
          call deck_bind(copy, iv, v, .false.)
          name = trim(deck_vars(iv)%name)
-            select case (deck_vars(iv)%kind)
-            case (kind_real)
-               if (v%given) then
-                  call h5io_set_attr(fid, grp, name, v%r, stat, errmsg)
-               else
-                  call put_text(grp, name, 'not given')
-               end if
-            case (kind_integer)
-               call h5io_set_attr(fid, grp, name, v%i, stat, errmsg)
-            case (kind_logical)
-               call put_text(grp, name, trim(merge('.true. ', '.false.', v%l)))
-            case (kind_word, kind_path)
-               call put_text(grp, name, v%s)
-            case (kind_reals)
-               call h5io_set_attr(fid, grp, name, v%list, stat, errmsg)
-            end select
-            call put_text(grp, name//'_units', trim(deck_vars(iv)%unit))
+         select case (deck_vars(iv)%kind)
+         case (kind_real)
+            if (v%given) then
+               call h5io_set_attr(fid, grp, name, v%r, stat, errmsg)
+            else
+               call put_text(grp, name, 'not given')
+            end if
+         case (kind_integer)
+            call h5io_set_attr(fid, grp, name, v%i, stat, errmsg)
+         case (kind_logical)
+            call put_text(grp, name, trim(merge('.true. ', '.false.', v%l)))
+         case (kind_word, kind_path)
+            call put_text(grp, name, v%s)
+         case (kind_reals)
+            call h5io_set_attr(fid, grp, name, v%list, stat, errmsg)
+         end select
+         call put_text(grp, name//'_units', trim(deck_vars(iv)%unit))
       end do variables
 
    contains
