@@ -116,32 +116,27 @@ contains
       if (n < 1 .or. kd < 0 .or. kd > n - 1) then
          write (msg, '(a,i0,a,i0,a)') 'band_init: invalid order n = ', n, &
             ' or half-bandwidth kd = ', kd, ' (need n >= 1, 0 <= kd <= n-1)'
-         call fail(msg)
+         stat = 1
+         errmsg = msg
          return
       end if
       if (int(kd + 1, int64) * int(n, int64) > int(huge(n), int64)) then
          write (msg, '(a,i0,a,i0,a)') 'band_init: band of ', kd + 1, ' x ', n, &
             ' entries exceeds the default integer range'
-         call fail(msg)
+         stat = 1
+         errmsg = msg
          return
       end if
       allocate (a%ab(kd + 1, n), stat=stat, errmsg=msg)
       if (stat /= 0) then
-         call fail('band_init: allocation of the band failed: ' // trim(msg))
+         stat = 1
+         errmsg = 'band_init: allocation of the band failed: ' // trim(msg)
          return
       end if
       a%n = n
       a%kd = kd
       a%ab = 0.0_dp
       a%factored = .false.
-   contains
-      !> Set stat and errmsg for a failure.
-      subroutine fail(text)
-         !> The error message.
-         character(len=*), intent(in) :: text
-         stat = 1
-         errmsg = text
-      end subroutine fail
    end subroutine band_init
 
    !> Set every entry to zero and forget any factorisation.
@@ -157,10 +152,7 @@ contains
    pure logical function band_in_band(a, i, j)
       !> The matrix.
       type(band_matrix_t), intent(in) :: a
-      !> Row index.
-      integer, intent(in) :: i
-      !> Column index.
-      integer, intent(in) :: j
+      integer, intent(in) :: i, j      !< row and column indices
 
       band_in_band = i >= 1 .and. i <= a%n .and. j >= 1 .and. j <= a%n &
                      .and. abs(i - j) <= a%kd
@@ -174,10 +166,7 @@ contains
    subroutine band_add(a, i, j, value)
       !> The matrix, added into.
       type(band_matrix_t), intent(inout) :: a
-      !> Row index.
-      integer, intent(in) :: i
-      !> Column index.
-      integer, intent(in) :: j
+      integer, intent(in) :: i, j      !< row and column indices
       !> Value added to A(i,j).
       real(dp), intent(in) :: value
       integer :: r, c
@@ -192,10 +181,7 @@ contains
    pure real(dp) function band_get(a, i, j)
       !> The matrix.
       type(band_matrix_t), intent(in) :: a
-      !> Row index.
-      integer, intent(in) :: i
-      !> Column index.
-      integer, intent(in) :: j
+      integer, intent(in) :: i, j      !< row and column indices
 
       if (band_in_band(a, i, j)) then
          band_get = a%ab(a%kd + 1 + min(i, j) - max(i, j), max(i, j))
@@ -206,8 +192,8 @@ contains
 
    !> y = A x (BLAS dsbmv).
    !>
-   !> Fails when a is factored or the sizes do not match; without stat the
-   !> failure leaves y = NaN so that it cannot pass unnoticed.
+   !> Fails when a is factored or the sizes do not match; y is then NaN, so
+   !> that a failure cannot pass unnoticed.
    subroutine band_matvec(a, x, y, stat, errmsg)
       !> The matrix, not factored.
       type(band_matrix_t), intent(in) :: a
@@ -215,13 +201,11 @@ contains
       real(dp), intent(in) :: x(:)
       !> Result A x, length n.
       real(dp), intent(out) :: y(:)
-      !> 0 on success, 1 on failure (optional).
-      integer, intent(out), optional :: stat
-      !> Reason for the failure (optional, set only on failure).
-      character(len=*), intent(inout), optional :: errmsg
+      integer, intent(out) :: stat               !< 0 on success, 1 on failure
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure)
       character(len=msg_len) :: msg
 
-      if (present(stat)) stat = 0
+      stat = 0
       msg = ''
       if (a%factored) then
          msg = 'band_matvec: the matrix holds its factor, not A'
@@ -231,8 +215,8 @@ contains
       end if
       if (len_trim(msg) > 0) then
          y = ieee_value(1.0_dp, ieee_quiet_nan)
-         if (present(stat)) stat = 1
-         if (present(errmsg)) errmsg = msg
+         stat = 1
+         errmsg = msg
          return
       end if
       call dsbmv('U', a%n, a%kd, 1.0_dp, a%ab, a%kd + 1, x, 1, 0.0_dp, y, 1)

@@ -234,76 +234,81 @@ contains
       logical, intent(in) :: set            !< direction: v -> deck
       if (.not. set) v = value_t()
       select case (var_key(iv))
-      case ('plate.a');                    call real_value(deck%a)
-      case ('plate.b');                    call real_value(deck%b)
-      case ('plate.h');                    call real_value(deck%h)
-      case ('lamina.e1');                  call real_value(deck%e1)
-      case ('lamina.e2');                  call real_value(deck%e2)
-      case ('lamina.g12');                 call real_value(deck%g12)
-      case ('lamina.g13');                 call real_value(deck%g13)
-      case ('lamina.g23');                 call real_value(deck%g23)
-      case ('lamina.nu12');                call real_value(deck%nu12)
-      case ('lamina.rho');                 call real_value(deck%rho)
+      case ('plate.a');                    call scalar_value(r=deck%a)
+      case ('plate.b');                    call scalar_value(r=deck%b)
+      case ('plate.h');                    call scalar_value(r=deck%h)
+      case ('lamina.e1');                  call scalar_value(r=deck%e1)
+      case ('lamina.e2');                  call scalar_value(r=deck%e2)
+      case ('lamina.g12');                 call scalar_value(r=deck%g12)
+      case ('lamina.g13');                 call scalar_value(r=deck%g13)
+      case ('lamina.g23');                 call scalar_value(r=deck%g23)
+      case ('lamina.nu12');                call scalar_value(r=deck%nu12)
+      case ('lamina.rho');                 call scalar_value(r=deck%rho)
       case ('laminate.angles');            call list_value(deck%angles)
       case ('laminate.k4');                call optional_value(deck%k4)
       case ('laminate.k5');                call optional_value(deck%k5)
       case ('laminate.bend_twist');        call text_value(deck%bend_twist)
-      case ('impactor.mass');              call real_value(deck%mass)
-      case ('impactor.velocity');          call real_value(deck%velocity)
-      case ('impactor.diameter');          call real_value(deck%diameter)
-      case ('impactor.x0');                call real_value(deck%x0)
-      case ('impactor.y0');                call real_value(deck%y0)
-      case ('contact.k');                  call real_value(deck%k)
-      case ('contact.q');                  call real_value(deck%q)
-      case ('contact.alpha_p');            call real_value(deck%alpha_p)
-      case ('contact.beta');               call real_value(deck%beta)
+      case ('impactor.mass');              call scalar_value(r=deck%mass)
+      case ('impactor.velocity');          call scalar_value(r=deck%velocity)
+      case ('impactor.diameter');          call scalar_value(r=deck%diameter)
+      case ('impactor.x0');                call scalar_value(r=deck%x0)
+      case ('impactor.y0');                call scalar_value(r=deck%y0)
+      case ('contact.k');                  call scalar_value(r=deck%k)
+      case ('contact.q');                  call scalar_value(r=deck%q)
+      case ('contact.alpha_p');            call scalar_value(r=deck%alpha_p)
+      case ('contact.beta');               call scalar_value(r=deck%beta)
       case ('contact.load');               call text_value(deck%contact_load)
-      case ('mesh.nx');                    call integer_value(deck%nx)
-      case ('mesh.ny');                    call integer_value(deck%ny)
+      case ('mesh.nx');                    call scalar_value(i=deck%nx)
+      case ('mesh.ny');                    call scalar_value(i=deck%ny)
       case ('mesh.domain');                call text_value(deck%domain)
-      case ('mesh.average_bend_twist');    call logical_value(deck%average_bend_twist)
-      case ('mesh.grading');               call real_value(deck%grading)
+      case ('mesh.average_bend_twist');    call scalar_value(l=deck%average_bend_twist)
+      case ('mesh.grading');               call scalar_value(r=deck%grading)
       case ('mesh.shear_rule');            call text_value(deck%shear_rule)
-      case ('mesh.stabilization');         call real_value(deck%stabilization)
+      case ('mesh.stabilization');         call scalar_value(r=deck%stabilization)
       case ('boundary.edges');             call text_value(deck%edges)
       case ('boundary.inplane');           call text_value(deck%inplane)
       case ('analysis.kind');              call text_value(deck%analysis_kind)
       case ('analysis.theory');            call text_value(deck%theory)
-      case ('analysis.dt');                call real_value(deck%dt)
-      case ('analysis.t_end');             call real_value(deck%t_end)
-      case ('analysis.cr1');               call real_value(deck%cr1)
-      case ('analysis.cr2');               call real_value(deck%cr2)
+      case ('analysis.dt');                call scalar_value(r=deck%dt)
+      case ('analysis.t_end');             call scalar_value(r=deck%t_end)
+      case ('analysis.cr1');               call scalar_value(r=deck%cr1)
+      case ('analysis.cr2');               call scalar_value(r=deck%cr2)
       case ('analysis.scheme');            call text_value(deck%scheme)
       case ('analysis.storage');           call text_value(deck%storage)
-      case ('analysis.max_contact_iter');  call integer_value(deck%max_contact_iter)
-      case ('analysis.max_nonlinear_iter'); call integer_value(deck%max_nonlinear_iter)
+      case ('analysis.max_contact_iter');  call scalar_value(i=deck%max_contact_iter)
+      case ('analysis.max_nonlinear_iter'); call scalar_value(i=deck%max_nonlinear_iter)
       case ('analysis.force_update');      call text_value(deck%force_update)
-      case ('analysis.stop_on_warning');   call logical_value(deck%stop_on_warning)
+      case ('analysis.stop_on_warning');   call scalar_value(l=deck%stop_on_warning)
       case ('load.kind');                  call text_value(deck%load_kind)
-      case ('load.magnitude');             call real_value(deck%load_magnitude)
-      case ('load.increments');            call integer_value(deck%load_increments)
-      case ('modes.count');                call integer_value(deck%mode_count)
-      case ('modes.shapes');               call logical_value(deck%mode_shapes)
+      case ('load.magnitude');             call scalar_value(r=deck%load_magnitude)
+      case ('load.increments');            call scalar_value(i=deck%load_increments)
+      case ('modes.count');                call scalar_value(i=deck%mode_count)
+      case ('modes.shapes');               call scalar_value(l=deck%mode_shapes)
       case ('output.prefix');              call text_value(deck%prefix)
-      case ('output.every');               call integer_value(deck%every)
-      case ('output.overwrite');           call logical_value(deck%overwrite)
-      case ('output.hdf5');                call logical_value(deck%hdf5)
-      case ('output.fields_every');        call integer_value(deck%fields_every)
+      case ('output.every');               call scalar_value(i=deck%every)
+      case ('output.overwrite');           call scalar_value(l=deck%overwrite)
+      case ('output.hdf5');                call scalar_value(l=deck%hdf5)
+      case ('output.fields_every');        call scalar_value(i=deck%fields_every)
       end select
 
    contains
 
-      subroutine real_value(x)
-         real(dp), intent(inout) :: x
+      !> A real, integer or logical: the one of r, i, l given.
+      subroutine scalar_value(r, i, l)
+         real(dp), intent(inout), optional :: r
+         integer, intent(inout), optional :: i
+         logical, intent(inout), optional :: l
          if (set) then
-            x = v%r
+            if (present(r)) r = v%r
+            if (present(i)) i = v%i
+            if (present(l)) l = v%l
          else
-            v%r = x
+            if (present(r)) v%r = r
+            if (present(i)) v%i = i
+            if (present(l)) v%l = l
          end if
-      end subroutine real_value
+      end subroutine scalar_value
 
-      !> An optional real: NaN in the deck stands for "not given" (the
-      !> reader refuses a NaN in a deck, so it cannot mean anything else).
       subroutine optional_value(x)
          real(dp), intent(inout) :: x
          if (set) then
@@ -313,24 +318,6 @@ contains
             v%r = x;  v%given = .not. ieee_is_nan(x)
          end if
       end subroutine optional_value
-
-      subroutine integer_value(n)
-         integer, intent(inout) :: n
-         if (set) then
-            n = v%i
-         else
-            v%i = n
-         end if
-      end subroutine integer_value
-
-      subroutine logical_value(l)
-         logical, intent(inout) :: l
-         if (set) then
-            l = v%l
-         else
-            v%l = l
-         end if
-      end subroutine logical_value
 
       subroutine text_value(s)
          character(len=:), allocatable, intent(inout) :: s

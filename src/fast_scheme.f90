@@ -21,13 +21,12 @@
 !> the linear theory.
 module fast_scheme
    use kinds, only: dp
-   use plate_model, only: model_t, nonlinear_force
-   use plate_solver, only: solver_t, iteration_end, contact_response, pattern_response, pattern_compliance
+   use plate_model, only: model_t
+   use plate_solver, only: solver_t, solve_once, iteration_end, contact_response, pattern_response, pattern_compliance
    use contact_iteration, only: contact_iteration_t, contact_area
    use contact_law, only: contact_history_t, solve_contact_equation
    use contact_load, only: pattern_mean, load_point
    use newmark, only: impactor_state_t
-   use global_matrix, only: global_solve
    use fixed_point, only: fp_start
    implicit none
    private
@@ -68,7 +67,7 @@ contains
       character(len=*), intent(inout) :: errmsg        !< reason on failure
       integer, parameter :: max_passes = 50
       real(dp), parameter :: pass_tol = 1.0e-12_dp
-      real(dp) :: rhs(size(d)), fn(size(d)), w_r0, compliance, f, f_new, alpha
+      real(dp) :: rhs(size(d)), w_r0, compliance, f, f_new, alpha
       integer :: pass
       logical :: done
 
@@ -80,10 +79,7 @@ contains
       alpha = 0.0_dp
       call fp_start(solver%guard, size(d), solver%max_iter, solver%cr2)
       nonlinear_iterations: do
-         call nonlinear_force(model, d, fn)
-         rhs = mb - fn
-         call global_solve(solver%keff, rhs, stat, errmsg)
-         solver%solves = solver%solves + 1
+         call solve_once(solver, model, mb, d, rhs, stat, errmsg)
          if (stat /= 0) return
          ! -- the contact equation, with the contact area of its root
          contact_passes: do pass = 1, max_passes

@@ -39,6 +39,7 @@
 module fixed_point
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: dp, msg_len
+   use number_text, only: int_str
    implicit none
    private
    public :: fp_guard_t, fp_start, fp_check, fp_next, fp_report
@@ -310,10 +311,10 @@ contains
       case (fp_not_finite)
          text = 'the residual is not finite (NaN or Inf)'
       case (fp_diverged)
-         text = 'diverging (the residual grew ' // int_text(growth_limit) // ' iterations in a row)'
+         text = 'diverging (the residual grew ' // int_str(growth_limit) // ' iterations in a row)'
       case (fp_stagnated)
          text = 'stagnating (the squared residual fell by less than a factor ' // &
-            int_text(nint(1.0_dp/progress_factor)) // ' in ' // int_text(stagnation_window) // ' iterations)'
+            int_str(nint(1.0_dp/progress_factor)) // ' in ' // int_str(stagnation_window) // ' iterations)'
       case (fp_limit)
          text = 'iteration limit (max_nonlinear_iter) reached'
       case default
@@ -332,16 +333,8 @@ contains
          ' against C_r2 = ', guard%cr2, '; sum (G(D) - D)^2 = ', guard%res
       text = fp_state_text(guard%state) // trim(buf)
       if (guard%mixing) text = text // '; fall-back (Anderson mixing) engaged at iteration ' // &
-         int_text(guard%mixing_from) // ' because ' // fp_state_text(guard%mixing_cause)
+         int_str(guard%mixing_from) // ' because ' // fp_state_text(guard%mixing_cause)
    end function fp_report
 
-   !> An integer without blanks.
-   pure function int_text(i) result(s)
-      integer, intent(in) :: i                  !< the integer
-      character(len=:), allocatable :: s
-      character(len=12) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
-   end function int_text
 
 end module fixed_point

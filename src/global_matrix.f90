@@ -84,7 +84,8 @@ contains
       stat = 0
       if (neq < 1) then
          write (msg, '(a,i0)') 'global_init: number of equations must be >= 1, got ', neq
-         call fail(msg)
+         stat = 1
+         errmsg = msg
          return
       end if
       ! Every equation number must be 0 (constrained) or 1..neq.
@@ -94,7 +95,8 @@ contains
                write (msg, '(a,i0,a,i0,a,i0,a,i0)') 'global_init: element ', e, &
                   ' freedom ', k, ' has equation ', elem_eq(k, e), &
                   ' outside 0..', neq
-               call fail(msg)
+               stat = 1
+               errmsg = msg
                return
             end if
          end do
@@ -130,20 +132,13 @@ contains
          call skyline_init(g%sky, neq, first_row, stat, errmsg)
          if (stat /= 0) return
       case default
-         call fail("global_init: unknown storage '" // trim(storage) // &
-                   "' (expected 'band' or 'skyline')")
+         stat = 1
+         errmsg = "global_init: unknown storage '" // trim(storage) // &
+                   "' (expected 'band' or 'skyline')"
          return
       end select
       g%storage = trim(name)
       g%neq = neq
-   contains
-      !> Set stat and errmsg for a failure.
-      subroutine fail(text)
-         !> The error message.
-         character(len=*), intent(in) :: text
-         stat = 1
-         errmsg = text
-      end subroutine fail
    end subroutine global_init
 
    !> Set every entry to zero, forget any factorisation and any deferred
@@ -289,15 +284,11 @@ contains
    !> Fails when g is not initialised, factored or carries a deferred error,
    !> or the sizes differ; y is then NaN.
    subroutine global_matvec(g, x, y, stat, errmsg)
-      !> The matrix, not factored.
-      type(global_matrix_t), intent(in) :: g
-      !> Vector of length neq.
-      real(dp), intent(in) :: x(:)
-      !> Result A x, length neq.
-      real(dp), intent(out) :: y(:)
-      !> 0 on success, 1 on failure (optional).
-      integer, intent(out), optional :: stat
-      !> Reason for the failure (optional, set only on failure).
+      type(global_matrix_t), intent(in) :: g     !< the matrix, not factored
+      real(dp), intent(in) :: x(:)               !< a vector of length neq
+      real(dp), intent(out) :: y(:)              !< A x
+      integer, intent(out), optional :: stat     !< 0 on success, 1 on failure
+      !> Reason for the failure (set only on failure).
       character(len=*), intent(inout), optional :: errmsg
       character(len=msg_len) :: msg
       integer :: ierr
@@ -339,51 +330,47 @@ contains
       !> Equation whose pivot failed, 0 if none did.
       integer, intent(out) :: bad_eq
 
-      stat = 0
       bad_eq = 0
-      if (len_trim(g%deferred_error) > 0) then
-         stat = 1
-         errmsg = g%deferred_error
-         return
-      end if
-      select case (trim(g%storage))
-      case ('band')
+      if (.not. usable(g, 'global_factor', stat, errmsg)) return
+      if (g%storage == 'band') then
          call band_factor(g%band, stat, errmsg, bad_eq)
-      case ('skyline')
+      else
          call skyline_factor(g%sky, stat, errmsg, bad_eq)
-      case default
-         stat = 1
-         errmsg = 'global_factor: the matrix was never initialised'
-      end select
+      end if
    end subroutine global_factor
 
    !> Solve A x = b with the factored matrix; b is overwritten by x.
    subroutine global_solve(g, b, stat, errmsg)
-      !> The factored matrix.
-      type(global_matrix_t), intent(in) :: g
-      !> Right-hand side on entry, solution on return, length neq.
-      real(dp), intent(inout) :: b(:)
-      !> 0 on success, 1 on failure.
-      integer, intent(out) :: stat
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout) :: errmsg
+      type(global_matrix_t), intent(in) :: g        !< the factored matrix
+      real(dp), intent(inout) :: b(:)               !< right-hand side on entry, solution on return (neq)
+      integer, intent(out) :: stat                  !< 0 on success, 1 on failure
+      character(len=*), intent(inout) :: errmsg     !< reason for the failure (set only on failure)
 
+      if (.not. usable(g, 'global_solve', stat, errmsg)) return
+      if (g%storage == 'band') then
+         call band_solve(g%band, b, stat, errmsg)
+      else
+         call skyline_solve(g%sky, b, stat, errmsg)
+      end if
+   end subroutine global_solve
+
+   !> True when g can be used: initialised and without a deferred error
+   !> (module header); otherwise stat = 1 and errmsg says why.
+   logical function usable(g, caller, stat, errmsg)
+      type(global_matrix_t), intent(in) :: g        !< the matrix
+      character(len=*), intent(in) :: caller        !< the routine asking, for the message
+      integer, intent(out) :: stat                  !< 0 when usable, else 1
+      character(len=*), intent(inout) :: errmsg     !< the reason, when not
       stat = 0
       if (len_trim(g%deferred_error) > 0) then
          stat = 1
          errmsg = g%deferred_error
-         return
-      end if
-      select case (trim(g%storage))
-      case ('band')
-         call band_solve(g%band, b, stat, errmsg)
-      case ('skyline')
-         call skyline_solve(g%sky, b, stat, errmsg)
-      case default
+      else if (g%storage /= 'band' .and. g%storage /= 'skyline') then
          stat = 1
-         errmsg = 'global_solve: the matrix was never initialised'
-      end select
-   end subroutine global_solve
+         errmsg = caller // ': the matrix was never initialised'
+      end if
+      usable = stat == 0
+   end function usable
 
    !> Half-bandwidth: kd for band storage, the largest column height
    !> max_j (j - m_j) for skyline storage; 0 before global_init.
@@ -418,12 +405,8 @@ contains
 
    !> Entry A(i,j) of the unfactored matrix (zero outside the structure).
    pure real(dp) function global_entry(g, i, j)
-      !> The matrix, not factored.
-      type(global_matrix_t), intent(in) :: g
-      !> Row index.
-      integer, intent(in) :: i
-      !> Column index.
-      integer, intent(in) :: j
+      type(global_matrix_t), intent(in) :: g     !< the matrix, not factored
+      integer, intent(in) :: i, j                !< row and column indices
 
       select case (trim(g%storage))
       case ('band')
@@ -439,12 +422,8 @@ contains
 
    !> True when the stored structure holds A(i,j).
    pure logical function in_structure(g, i, j)
-      !> The matrix.
-      type(global_matrix_t), intent(in) :: g
-      !> Row index.
-      integer, intent(in) :: i
-      !> Column index.
-      integer, intent(in) :: j
+      type(global_matrix_t), intent(in) :: g     !< the matrix
+      integer, intent(in) :: i, j                !< row and column indices
 
       select case (trim(g%storage))
       case ('band')

@@ -17,8 +17,9 @@
 !> value outside its admissible range (the schema's `range`) and every
 !> combination the program cannot run (validate_deck).
 module input_deck
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: dp, msg_len
+   use number_text, only: real_str, int_str
    use deck_text, only: item_t, group_text_t, read_deck_text, lower_case
    use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, find_var, var_key, &
       kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names, &
@@ -26,7 +27,7 @@ module input_deck
    implicit none
    private
    public :: deck_t, default_deck, read_deck, read_deck_file, validate_deck, echo_deck, set_variable
-   public :: write_deck_table, write_schema, real_str
+   public :: write_deck_table, write_schema
 
    !> Status returned on any failure.
    integer, parameter :: failed = 1
@@ -771,68 +772,5 @@ contains
       end do
    end function list_str
 
-   pure function int_str(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=24) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
-   end function int_str
-
-   !> x with the fewest significant digits that read back to the same
-   !> double: 0.15, 1.2E+11, 2.5E-06.
-   pure function real_str(x) result(s)
-      real(dp), intent(in) :: x
-      character(len=:), allocatable :: s
-      integer, parameter :: max_decimals = 16, min_fixed_exp = -3, max_fixed_exp = 6
-      character(len=40) :: buf, fmt
-      character(len=:), allocatable :: sign, digits
-      real(dp) :: back
-      integer :: p, epos, e, ios
-
-      if (ieee_is_nan(x)) then
-         s = 'NaN'
-         return
-      else if (.not. ieee_is_finite(x)) then
-         s = 'Infinity'
-         if (x < 0.0_dp) s = '-Infinity'
-         return
-      else if (x == 0.0_dp) then
-         s = '0.0'
-         return
-      end if
-      do p = 1, max_decimals
-         write (fmt, '(a, i0, a)') '(es40.', p, 'e4)'
-         write (buf, fmt) x
-         read (buf, *, iostat=ios) back
-         if (ios == 0 .and. back == x) exit
-      end do
-      buf = adjustl(buf)
-      sign = ''
-      if (buf(1:1) == '-') then
-         sign = '-'
-         buf = buf(2:)
-      end if
-      epos = index(buf, 'E')
-      read (buf(epos + 1:), *) e
-      digits = buf(1:1) // buf(3:epos - 1)          ! mantissa d.ddd without the point
-      do while (len(digits) > 1)
-         if (digits(len(digits):) /= '0') exit
-         digits = digits(:len(digits) - 1)
-      end do
-      if (e >= 0 .and. e <= max_fixed_exp) then
-         if (len(digits) <= e + 1) then
-            s = sign // digits // repeat('0', e + 1 - len(digits)) // '.0'
-         else
-            s = sign // digits(:e + 1) // '.' // digits(e + 2:)
-         end if
-      else if (e < 0 .and. e >= min_fixed_exp) then
-         s = sign // '0.' // repeat('0', -e - 1) // digits
-      else if (len(digits) == 1) then
-         s = sign // digits // '.0e' // int_str(e)
-      else
-         s = sign // digits(1:1) // '.' // digits(2:) // 'e' // int_str(e)
-      end if
-   end function real_str
 
 end module input_deck

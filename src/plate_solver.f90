@@ -22,7 +22,7 @@ module plate_solver
    use fixed_point, only: fp_guard_t, fp_start, fp_check, fp_next, fp_report, fp_converged, fp_iterating
    implicit none
    private
-   public :: solver_t, solver_init, plate_solve, iteration_end, contact_response, pattern_response, &
+   public :: solver_t, solver_init, plate_solve, solve_once, iteration_end, contact_response, pattern_response, &
              pattern_compliance
 
    !> The plate solver of a run.
@@ -82,21 +82,35 @@ contains
       logical, intent(out) :: converged         !< eq. (18) met
       integer, intent(out) :: stat              !< 0 unless the solver failed
       character(len=*), intent(inout) :: errmsg !< reason on failure
-      real(dp) :: rhs(size(d)), fn(size(d))
+      real(dp) :: rhs(size(d))
       logical :: done
       converged = .false.
       solver%iterations = 0
       call fp_start(solver%guard, size(d), solver%max_iter, solver%cr2)
       nonlinear_iterations: do
-         call nonlinear_force(model, d, fn)
-         rhs = load - fn
-         call global_solve(solver%keff, rhs, stat, errmsg)
-         solver%solves = solver%solves + 1
+         call solve_once(solver, model, load, d, rhs, stat, errmsg)
          if (stat /= 0) return
          call iteration_end(solver, model, d_t, rhs, d, converged, done, stat, errmsg)
          if (done .or. stat /= 0) exit nonlinear_iterations
       end do nonlinear_iterations
    end subroutine plate_solve
+
+   !> One solution of eq. (19) from the iterate d: rhs = (K_L + 4/dt^2 M)^-1
+   !> (load - K_N(d) d), one back substitution, counted.
+   subroutine solve_once(solver, model, load, d, rhs, stat, errmsg)
+      type(solver_t), intent(inout) :: solver   !< solver (counts solves)
+      type(model_t), intent(in) :: model        !< model
+      real(dp), intent(in) :: load(:)           !< M {b} + {F} of eq. (19)-(20)
+      real(dp), intent(in) :: d(:)              !< the iterate D^n
+      real(dp), intent(out) :: rhs(:)           !< D^n+1 from it
+      integer, intent(out) :: stat              !< 0 unless the solver failed
+      character(len=*), intent(inout) :: errmsg !< reason on failure
+      real(dp) :: fn(size(d))
+      call nonlinear_force(model, d, fn)
+      rhs = load - fn
+      call global_solve(solver%keff, rhs, stat, errmsg)
+      solver%solves = solver%solves + 1
+   end subroutine solve_once
 
    !> The end of one iteration of eq. (19), for both schemes: the linear
    !> theory is exact after one solve; otherwise eq. (18) and the guard

@@ -16,7 +16,7 @@
 module result_files
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t
-   use input_deck, only: echo_deck, real_str
+   use input_deck, only: echo_deck
    use file_system, only: make_directories, parent_directory, path_problem
    implicit none
    private

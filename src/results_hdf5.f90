@@ -33,10 +33,10 @@
 !> extendible, the file is flushed (H5Fflush) after every history row and
 !> every snapshot, and /summary status stays 'running'.
 !>
-!> Usage (src/impact.f90): results_open after the history file is open,
-!> results_append_history after every history row, results_peak after every
-!> step, results_snapshot every fields_every steps, results_finish at the end
-!> (also after a failure). With hdf5 = .false. they all do nothing.
+!> Usage (src/run_recorder.f90): results_open after the history file is
+!> open, results_append_history after every history row, results_state after
+!> every step (a snapshot every fields_every steps), results_finish at the
+!> end (also after a failure). With hdf5 = .false. they all do nothing.
 module results_hdf5
    use hdf5, only: hid_t
    use kinds, only: dp, msg_len
@@ -51,7 +51,7 @@ module results_hdf5
       h5io_close_dataset, h5io_real, h5io_integer
    implicit none
    private
-   public :: results_file_t, results_open, results_append_history, results_snapshot, results_peak, &
+   public :: results_file_t, results_open, results_append_history, results_state, &
              results_finish, nodal_values, field_units
 
 
@@ -214,21 +214,18 @@ contains
       if (stat /= 0) errmsg = rf%path//': /history: '//trim(why)
    end subroutine results_append_history
 
-   !> Appends a snapshot of the nodal fields u, v, w, psi_x, psi_y to /fields
-   !> and flushes the file.
-   subroutine results_snapshot(rf, step, time, force, d, stat, errmsg)
-      !> The results file.
-      type(results_file_t), intent(inout) :: rf
-      !> Time step of the state.
-      integer, intent(in) :: step
-      !> Time (s) and contact force (N) of the state.
-      real(dp), intent(in) :: time, force
-      !> Plate displacements {D} by equation.
-      real(dp), intent(in) :: d(:)
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
+   !> The nodal fields u, v, w, psi_x, psi_y of the state at the end of a
+   !> step: appended to /fields as a snapshot when `snapshot` is true (and the
+   !> file flushed), and kept in /peak when the contact force exceeds the
+   !> largest so far.
+   subroutine results_state(rf, step, time, force, d, snapshot, stat, errmsg)
+      type(results_file_t), intent(inout) :: rf     !< the results file
+      integer, intent(in) :: step                   !< time step of the state
+      real(dp), intent(in) :: time, force           !< its time (s) and contact force (N)
+      real(dp), intent(in) :: d(:)                  !< plate displacements {D} by equation
+      logical, intent(in) :: snapshot               !< append it to /fields
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
       real(dp) :: f(ndof_node, size(rf%eq, 2))
       character(len=msg_len) :: why
       integer :: k
@@ -237,51 +234,31 @@ contains
       if (.not. rf%active) return
       why = ''
       f = nodal_values(rf%eq, d)
-      call h5io_append(rf%snap_time, time, stat, why)
-      if (stat == 0) call h5io_append(rf%snap_step, step, stat, why)
-      if (stat == 0) call h5io_append(rf%snap_force, force, stat, why)
-      fields: do k = 1, ndof_node
-         if (stat /= 0) exit fields
-         call h5io_append(rf%snap_field(k), f(k, :), stat, why)
-      end do fields
-      if (stat == 0) call h5io_flush(rf%fid, stat, why)
-      if (stat /= 0) errmsg = rf%path//': /fields: '//trim(why)
-   end subroutine results_snapshot
-
-   !> Keeps in /peak the state of the step with the largest contact force:
-   !> rewrites it when `force` exceeds the largest so far.
-   subroutine results_peak(rf, step, time, force, d, stat, errmsg)
-      !> The results file.
-      type(results_file_t), intent(inout) :: rf
-      !> Time step of the state.
-      integer, intent(in) :: step
-      !> Time (s) and contact force (N) of the state.
-      real(dp), intent(in) :: time, force
-      !> Plate displacements {D} by equation.
-      real(dp), intent(in) :: d(:)
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      real(dp) :: f(ndof_node, size(rf%eq, 2))
-      character(len=msg_len) :: why
-      integer :: k
-
-      stat = 0
-      if (.not. rf%active) return
+      if (snapshot) then
+         call h5io_append(rf%snap_time, time, stat, why)
+         if (stat == 0) call h5io_append(rf%snap_step, step, stat, why)
+         if (stat == 0) call h5io_append(rf%snap_force, force, stat, why)
+         fields: do k = 1, ndof_node
+            if (stat /= 0) exit fields
+            call h5io_append(rf%snap_field(k), f(k, :), stat, why)
+         end do fields
+         if (stat == 0) call h5io_flush(rf%fid, stat, why)
+         if (stat /= 0) then
+            errmsg = rf%path//': /fields: '//trim(why)
+            return
+         end if
+      end if
       if (.not. force > rf%peak_force) return
       rf%peak_force = force
-      why = ''
-      f = nodal_values(rf%eq, d)
-      fields: do k = 1, ndof_node
+      peak_fields: do k = 1, ndof_node
          call h5io_rewrite(rf%fid, 'peak/'//trim(freedom_name(k)), f(k, :), stat, why)
-         if (stat /= 0) exit fields
-      end do fields
+         if (stat /= 0) exit peak_fields
+      end do peak_fields
       if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'step', step, stat, why)
       if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'time', time, stat, why)
       if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'force', force, stat, why)
       if (stat /= 0) errmsg = rf%path//': /peak: '//trim(why)
-   end subroutine results_peak
+   end subroutine results_state
 
    !> Writes /summary (the items of <prefix>_summary.dat, SI units, and the
    !> status) and closes the file. Closes what it can even after a failure.

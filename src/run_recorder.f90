@@ -27,6 +27,7 @@ module run_recorder
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: dp, msg_len
+   use number_text, only: int_str, real_short
    use deck_schema, only: deck_t
    use plate_model, only: model_t, back_face_strain, max_deflection, plate_kinetic_energy, plate_strain_energy
    use plate_solver, only: solver_t, contact_response, pattern_compliance
@@ -39,8 +40,7 @@ module run_recorder
       open_columns, write_history_row, write_summary_file, col_time, col_force, col_alpha, col_w_plate, &
       col_w_impactor, col_v_impactor, col_strain_y, col_ke_impactor, col_ke_plate, col_strain_energy, &
       col_contact_work, col_contact_energy, col_energy_error, col_branch, col_contact_iter, col_solves
-   use results_hdf5, only: results_file_t, results_open, results_append_history, results_snapshot, &
-      results_peak, results_finish
+   use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_finish
    implicit none
    private
    public :: record_t, record_open, record_step, record_close, von_karman_limit
@@ -210,19 +210,16 @@ contains
          rec%max_energy_error = nan_max(rec%max_energy_error, abs(row(col_energy_error)))
          call write_row(rec, row, stat, errmsg)
          if (stat /= 0) return
-         if (row(col_energy_error) < -rec%e0) call stop_here('diverged at step ' // int_text(step), &
+         if (row(col_energy_error) < -rec%e0) call stop_here('diverged at step ' // int_str(step), &
             'the run created more energy than the impact brought (energy balance ' &
-            // real_text(row(col_energy_error)) // ' J, E0 = ' // real_text(rec%e0) // ' J): it has diverged')
+            // real_short(row(col_energy_error)) // ' J, E0 = ' // real_short(rec%e0) // ' J): it has diverged')
       end if
       if (.not. (ieee_is_finite(w_plate) .and. ieee_is_finite(imp%f) .and. ieee_is_finite(imp%w))) &
-         call stop_here('failed at step ' // int_text(step), 'the state is not finite (NaN or Inf): ' &
+         call stop_here('failed at step ' // int_str(step), 'the state is not finite (NaN or Inf): ' &
          // 'the iterations reached values the model cannot hold')
-      call results_peak(rec%h5, step, t, imp%f, plate%d, stat, errmsg)
+      call results_state(rec%h5, step, t, imp%f, plate%d, mod(step, rec%fields_every) == 0 .or. step == rec%nstep, &
+                         stat, errmsg)
       if (stat /= 0) return
-      if (mod(step, rec%fields_every) == 0 .or. step == rec%nstep) then
-         call results_snapshot(rec%h5, step, t, imp%f, plate%d, stat, errmsg)
-         if (stat /= 0) return
-      end if
 
       ! -- warnings: fall-backs, deflections beyond von Karman's theory, a
       !    step that did not converge and went on (force_update = 'plain')
@@ -243,8 +240,8 @@ contains
          end if
       end if
       if (rec%max_w_over_h > von_karman_limit) call warn(warn_deflection, 'the plate deflection is ' &
-         // real_text(rec%max_w_over_h) // ' times the thickness, beyond the moderately large deflections of ' &
-         // 'von Karman''s theory (w/h > ' // real_text(von_karman_limit) // '): the results are outside ' &
+         // real_short(rec%max_w_over_h) // ' times the thickness, beyond the moderately large deflections of ' &
+         // 'von Karman''s theory (w/h > ' // real_short(von_karman_limit) // '): the results are outside ' &
          // 'the model''s validity')
       if (.not. converged) then
          rec%unconverged_steps = rec%unconverged_steps + 1
@@ -266,7 +263,7 @@ contains
          rec%warned(kind) = .true.
          rec%warnings = rec%warnings + 1
          write (error_unit, '(a,i0,a,es11.4,a)') 'impact: warning: step ', step, ' (t = ', t, ' s): ' // message
-         if (rec%stop_on_warning) call stop_here('stopped at step ' // int_text(step) // ' by the warning ' &
+         if (rec%stop_on_warning) call stop_here('stopped at step ' // int_str(step) // ' by the warning ' &
             // '(&analysis stop_on_warning = .true.)', '')
       end subroutine warn
 
@@ -276,7 +273,7 @@ contains
          rec%stop = .true.
          rec%stop_status = status
          if (status(1:min(8, len(status))) == 'diverged') rec%diverged_at = t
-         if (len(message) > 0) write (error_unit, '(a)') 'impact: error: step ' // int_text(step) // ': ' // message
+         if (len(message) > 0) write (error_unit, '(a)') 'impact: error: step ' // int_str(step) // ': ' // message
       end subroutine stop_here
 
    end subroutine record_step
@@ -410,20 +407,5 @@ contains
       end if
    end function nan_max
 
-   pure function int_text(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
-   end function int_text
-
-   pure function real_text(x) result(s)
-      real(dp), intent(in) :: x
-      character(len=:), allocatable :: s
-      character(len=24) :: buf
-      write (buf, '(g0.4)') x
-      s = trim(adjustl(buf))
-   end function real_text
 
 end module run_recorder

@@ -85,7 +85,8 @@ contains
       if (n < 1 .or. size(first_row) /= n) then
          write (msg, '(a,i0,a,i0)') 'skyline_init: order n = ', n, &
             ' with size(first_row) = ', size(first_row)
-         call fail(msg)
+         stat = 1
+         errmsg = msg
          return
       end if
       nwk = 0
@@ -93,7 +94,8 @@ contains
          if (first_row(j) < 1 .or. first_row(j) > j) then
             write (msg, '(a,i0,a,i0,a)') 'skyline_init: first_row(', j, ') = ', &
                first_row(j), ' is outside 1..j'
-            call fail(msg)
+            stat = 1
+            errmsg = msg
             return
          end if
          nwk = nwk + (j - first_row(j) + 1)
@@ -101,12 +103,14 @@ contains
       if (nwk >= int(huge(n), int64)) then
          write (msg, '(a,i0,a)') 'skyline_init: profile of ', nwk, &
             ' entries exceeds the default integer range'
-         call fail(msg)
+         stat = 1
+         errmsg = msg
          return
       end if
       allocate (sky%maxa(n + 1), sky%a(nwk), stat=stat, errmsg=msg)
       if (stat /= 0) then
-         call fail('skyline_init: allocation failed: ' // trim(msg))
+         stat = 1
+         errmsg = 'skyline_init: allocation failed: ' // trim(msg)
          return
       end if
       ! maxa(j+1) = maxa(j) + (column height j - m_j) + 1 (the diagonal).
@@ -117,14 +121,6 @@ contains
       sky%n = n
       sky%a = 0.0_dp
       sky%factored = .false.
-   contains
-      !> Set stat and errmsg for a failure.
-      subroutine fail(text)
-         !> The error message.
-         character(len=*), intent(in) :: text
-         stat = 1
-         errmsg = text
-      end subroutine fail
    end subroutine skyline_init
 
    !> Set every entry to zero and forget any factorisation.
@@ -164,10 +160,7 @@ contains
    pure logical function skyline_in_profile(sky, i, j)
       !> The matrix.
       type(skyline_matrix_t), intent(in) :: sky
-      !> Row index.
-      integer, intent(in) :: i
-      !> Column index.
-      integer, intent(in) :: j
+      integer, intent(in) :: i, j      !< row and column indices
 
       skyline_in_profile = .false.
       if (min(i, j) < 1 .or. max(i, j) > sky%n) return
@@ -182,10 +175,7 @@ contains
    subroutine skyline_add(sky, i, j, value)
       !> The matrix, added into.
       type(skyline_matrix_t), intent(inout) :: sky
-      !> Row index.
-      integer, intent(in) :: i
-      !> Column index.
-      integer, intent(in) :: j
+      integer, intent(in) :: i, j      !< row and column indices
       !> Value added to A(i,j).
       real(dp), intent(in) :: value
       integer :: k
@@ -199,10 +189,7 @@ contains
    pure real(dp) function skyline_get(sky, i, j)
       !> The matrix.
       type(skyline_matrix_t), intent(in) :: sky
-      !> Row index.
-      integer, intent(in) :: i
-      !> Column index.
-      integer, intent(in) :: j
+      integer, intent(in) :: i, j      !< row and column indices
 
       if (skyline_in_profile(sky, i, j)) then
          skyline_get = sky%a(sky%maxa(max(i, j)) + max(i, j) - min(i, j))
@@ -213,8 +200,8 @@ contains
 
    !> y = A x, column by column over the stored upper triangle.
    !>
-   !> Fails when sky is factored or the sizes do not match; without stat
-   !> the failure leaves y = NaN so that it cannot pass unnoticed.
+   !> Fails when sky is factored or the sizes do not match; y is then NaN,
+   !> so that a failure cannot pass unnoticed.
    subroutine skyline_matvec(sky, x, y, stat, errmsg)
       !> The matrix, not factored.
       type(skyline_matrix_t), intent(in) :: sky
@@ -222,15 +209,13 @@ contains
       real(dp), intent(in) :: x(:)
       !> Result A x, length n.
       real(dp), intent(out) :: y(:)
-      !> 0 on success, 1 on failure (optional).
-      integer, intent(out), optional :: stat
-      !> Reason for the failure (optional, set only on failure).
-      character(len=*), intent(inout), optional :: errmsg
+      integer, intent(out) :: stat               !< 0 on success, 1 on failure
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure)
       character(len=msg_len) :: msg
       real(dp) :: aij
       integer :: i, j
 
-      if (present(stat)) stat = 0
+      stat = 0
       msg = ''
       if (sky%factored) then
          msg = 'skyline_matvec: the matrix holds its factors, not A'
@@ -240,8 +225,8 @@ contains
       end if
       if (len_trim(msg) > 0) then
          y = ieee_value(1.0_dp, ieee_quiet_nan)
-         if (present(stat)) stat = 1
-         if (present(errmsg)) errmsg = msg
+         stat = 1
+         errmsg = msg
          return
       end if
       ! Each stored A(i,j), i < j, acts twice: y_i += A(i,j) x_j and

@@ -40,6 +40,11 @@ program validate
    use pressure_analysis, only: pressure_result_t, pressure_solve
    use contact_law, only: contact_law_t
    use rigid_target, only: rigid_target_result_t, rigid_target_impact
+   use navier_impact_solution, only: navier_problem_t, navier_result_t, navier_problem_from_deck, &
+      navier_impact_run, load_hertz
+   use shear_strain, only: shear_rule_t, shear_rule_names
+   use element_matrices, only: element_geometry_t, element_geometry, element_stiffness
+   use shape_functions, only: nen, node_xi
    use reference_solutions, only: navier_series_t, navier_fsdt, navier_fsdt_static, navier_step_centre, &
       navier_frequencies, navier_clpt_centre, strip_deflection, hertz_impact_t, hertz_impact, &
       load_uniform, load_sinusoidal, load_central_force, edge_simply_supported, edge_clamped
@@ -82,6 +87,10 @@ program validate
    call lap('check 7')
    call check_energy()
    call lap('check 8')
+   call check_element()
+   call lap('check 9')
+   call check_point_response()
+   call lap('check 10')
 
    close (su)
    call assemble_report()
@@ -1038,6 +1047,188 @@ contains
       call pressure_solve(model, f, deck%dt, nstep, nstep, res, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
    end subroutine fe_pressure
+
+   ! ================================================================ check 9
+
+   !> The element's transverse shear (src/shear_strain.f90): the paper's 2x2
+   !> rule, full 3x3, the stabilized blend and MITC9 on (a) the growth of the
+   !> static compliance under a point force per mesh halving, against the
+   !> log rate of Mindlin's theory itself, ln 2 / (2 pi sqrt(Abar44 Abar55));
+   !> (b) the zero eigenvalues of one free element, square and distorted
+   !> (exactly the 6 rigid-body modes: 3 in-plane, w, two rotations).
+   !> Thin-plate locking is check 3; the patch test is a unit test
+   !> (tests/test_element.pf).
+   subroutine check_element()
+      integer, parameter :: rules(4) = [4, 1, 3, 2]     ! mitc9, selective, full, stabilized
+      integer, parameter :: nmesh = 4
+      integer, parameter :: mx(nmesh) = [6, 12, 24, 48], my(nmesh) = [4, 8, 16, 32]
+      !> MITC9's growth from 24 x 16 to 48 x 32 against the theory's rate
+      real(dp), parameter :: tol_rate = 3.0e-2_dp
+      type(deck_t) :: deck
+      type(laminate_t) :: lmt
+      real(dp) :: c(nmesh, 4), rate, ev(45), ke(45, 45), xe(2, nen), corner(2, 4), work(45*64), sq, xi(2)
+      type(element_geometry_t) :: geo
+      integer :: ir, k, i, info, zeros(2, 4), shape_k
+      logical :: ok
+      character(len=cw) :: cells(6)
+      external :: dsyev
+
+      ! -- (a) the point compliance of the paper's clamped plate, quarter
+      call load_deck('point_response_converged_9x6', deck)
+      deck%edges = 'clamped'
+      deck%analysis_kind = 'static';  deck%load_kind = 'central_force';  deck%load_magnitude = 1.0_dp
+      lmt = deck_laminate(deck)
+      rate = log(2.0_dp)/(2.0_dp*pi*sqrt(lmt%as(1,1)*lmt%as(2,2)))
+      rules_loop: do ir = 1, 4
+         deck%shear_rule = shear_rule_names(rules(ir))
+         do k = 1, nmesh
+            deck%nx = mx(k);  deck%ny = my(k)
+            c(k, ir) = fe_static_centre(deck)
+         end do
+      end do rules_loop
+      call table_open('element_compliance', [character(len=cw) :: 'shear rule', &
+         'w/P on 6 x 4 (m/N)', 'growth 6 x 4 -> 12 x 8 / theory', 'growth 12 x 8 -> 24 x 16 / theory', &
+         'growth 24 x 16 -> 48 x 32 / theory', 'w/P on 48 x 32 (m/N)'])
+      do ir = 1, 4
+         cells = [character(len=cw) :: cell(shear_rule_names(rules(ir))), sci(c(1, ir)), &
+            num((c(2, ir) - c(1, ir))/rate, '(f7.3)'), num((c(3, ir) - c(2, ir))/rate, '(f7.3)'), &
+            num((c(4, ir) - c(3, ir))/rate, '(f7.3)'), sci(c(4, ir))]
+         call table_row(cells)
+      end do
+      call table_close()
+      call record('9 the element', 'MITC9: compliance growth per halving (24 x 16 -> 48 x 32) / theory''s rate - 1', &
+         abs((c(4, 1) - c(3, 1))/rate - 1.0_dp), tol_rate)
+
+      ! -- (b) one free element: its zero eigenvalues
+      sq = 0.0167_dp
+      do shape_k = 1, 2
+         if (shape_k == 1) then
+            corner = reshape([0.0_dp, 0.0_dp, sq, 0.0_dp, sq, sq, 0.0_dp, sq], [2, 4])
+         else
+            corner = reshape([0.0_dp, 0.0_dp, 0.02_dp, 0.001_dp, 0.021_dp, 0.018_dp, -0.002_dp, 0.02_dp], [2, 4])
+         end if
+         do i = 1, nen
+            xi = node_xi(i)
+            xe(:, i) = matmul(corner, 0.25_dp*[(1 - xi(1))*(1 - xi(2)), (1 + xi(1))*(1 - xi(2)), &
+                                               (1 + xi(1))*(1 + xi(2)), (1 - xi(1))*(1 + xi(2))])
+         end do
+         do ir = 1, 4
+            call element_geometry(xe, shear_rule_t(code=rules(ir), eps=deck%stabilization), geo, ok)
+            call element_stiffness(lmt, geo, ke)
+            call dsyev('N', 'U', 45, ke, 45, ev, work, size(work), info)
+            zeros(shape_k, ir) = count(abs(ev) < 1.0e-12_dp*maxval(abs(ev)))
+         end do
+      end do
+      call table_open('element_zeros', [character(len=cw) :: 'shear rule', 'zero eigenvalues, square element', &
+         'zero eigenvalues, distorted element', 'rigid-body modes'])
+      do ir = 1, 4
+         call table_row([character(len=cw) :: cell(shear_rule_names(rules(ir))), inum(zeros(1, ir)), &
+            inum(zeros(2, ir)), '6'])
+      end do
+      call table_close()
+      call record('9 the element', 'MITC9: zero eigenvalues of one element - 6 (square, distorted)', &
+         real(abs(zeros(1, 1) - 6) + abs(zeros(2, 1) - 6), dp), 0.5_dp)
+   end subroutine check_element
+
+   ! =============================================================== check 10
+
+   !> The dynamic point response: the first contact of the paper's simply
+   !> supported plate (linear, 243 g at 3 m/s) on three quarter meshes, with
+   !> the converged model (MITC9, Hertz's load) and with the paper's (2x2
+   !> shear, point force), against the Navier modal solution of the same
+   !> plate, the same law and the same Newmark rule with Hertz's load
+   !> (validation/navier_impact_solution.f90), converged in its modes.
+   subroutine check_point_response()
+      character(len=10), parameter :: models(2) = [character(len=10) :: 'converged', 'paper']
+      character(len=6), parameter :: meshes(3) = [character(len=6) :: '9x6', '18x12', '36x24']
+      !> the converged model's first contact on 18 x 12 and 36 x 24 against the modal solution
+      real(dp), parameter :: tol_peak = 1.0e-2_dp, tol_end = 1.5e-2_dp, tol_mesh = 5.0e-3_dp
+      !> modes of the reference: every odd m, n <= mmax (converged to 3e-6 in the peak)
+      integer, parameter :: mmax = 1023
+      type(deck_t) :: deck
+      type(navier_problem_t) :: problem
+      type(navier_result_t) :: ref
+      real(dp) :: fe(3, 2, 3), worst_peak, worst_end, d_peak, d_end
+      real(dp), allocatable :: h(:,:)
+      integer :: im, k, stat, du, i
+      character(len=msg_len) :: errmsg
+      character(len=64) :: name
+      character(len=cw) :: cells(7)
+
+      call load_deck('point_response_converged_9x6', deck)
+      call navier_problem_from_deck(deck, load_hertz, problem, stat, errmsg)
+      if (stat == 0) call navier_impact_run(problem, mmax, ref, stat, errmsg)
+      if (stat /= 0) then
+         call record('10 point response', 'the modal reference did not run: ' // trim(errmsg), 1.0_dp, tol_peak)
+         return
+      end if
+      open (newunit=du, file=out_dir // '/point_response_modal.dat', status='replace', action='write')
+      write (du, '(a)') '# check 10: Navier modal solution, Hertz load; columns: 1 time (us), 2 force (N)'
+      do i = 0, ref%nstep
+         write (du, '(f10.3, es15.6)') ref%time(i)*1.0e6_dp, ref%force(i)
+      end do
+      close (du)
+      models_loop: do im = 1, 2
+         do k = 1, 3
+            name = 'point_response_' // trim(models(im)) // '_' // trim(meshes(k))
+            call run_program(trim(name), out_dir // '/' // trim(name) // '_summary.dat', stat)
+            fe(:, im, k) = -1.0_dp
+            if (stat /= 0) cycle
+            call read_table(out_dir // '/' // trim(name) // '_history.dat', 16, h, stat)
+            if (stat == 0) fe(:, im, k) = force_pulse(h(1, :)*1.0e-6_dp, h(2, :))
+         end do
+      end do models_loop
+
+      call table_open('point_response', [character(len=cw) :: 'model', 'quarter mesh', &
+         'first-contact peak (N)', 'at (μs)', 'first contact ends (μs)', 'peak / modal - 1', 'end / modal - 1'])
+      call table_row([character(len=cw) :: 'Navier modal solution', cell('m, n <= ' // trim(inum(mmax))), &
+         num(ref%first_peak_force, '(f9.2)'), num(ref%first_peak_time*1.0e6_dp, '(f8.1)'), &
+         num(ref%s%first_contact_end*1.0e6_dp, '(f8.1)'), '0', '0'])
+      worst_peak = 0.0_dp;  worst_end = 0.0_dp
+      do im = 1, 2
+         do k = 1, 3
+            d_peak = fe(1, im, k)/ref%first_peak_force - 1.0_dp
+            d_end = fe(3, im, k)/ref%s%first_contact_end - 1.0_dp
+            cells = [character(len=cw) :: cell(merge('converged: MITC9, Hertz load', 'the paper''s: 2x2, point     ', &
+               im == 1)), cell(meshes(k)), num(fe(1, im, k), '(f9.2)'), num(fe(2, im, k)*1.0e6_dp, '(f8.1)'), &
+               num(fe(3, im, k)*1.0e6_dp, '(f8.1)'), sci(d_peak), sci(d_end)]
+            if (fe(3, im, k) < 0.0_dp) cells(5) = 'does not end'
+            call table_row(cells)
+            if (im == 1 .and. k >= 2) then
+               worst_peak = max(worst_peak, abs(d_peak))
+               worst_end = max(worst_end, abs(d_end))
+            end if
+         end do
+      end do
+      call table_close()
+      call record('10 point response', 'converged model, 18 x 12 and 36 x 24: first-contact peak / modal - 1', &
+         worst_peak, tol_peak)
+      call record('10 point response', 'converged model, 18 x 12 and 36 x 24: first-contact end / modal - 1', &
+         worst_end, tol_end)
+      call record('10 point response', 'converged model: 18 x 12 / 36 x 24 - 1, peak and end of the first contact', &
+         max(abs(fe(1, 1, 2)/fe(1, 1, 3) - 1.0_dp), abs(fe(3, 1, 2)/fe(3, 1, 3) - 1.0_dp)), tol_mesh)
+
+   end subroutine check_point_response
+
+   !> The first contact of a force history: its peak, the time of the
+   !> peak and the time the force returns to 0 (-1 when it does not).
+   function force_pulse(t, f) result(v)
+      real(dp), intent(in) :: t(:), f(:)
+      real(dp) :: v(3)
+      integer :: j
+      logical :: started
+      v = [0.0_dp, 0.0_dp, -1.0_dp]
+      started = .false.
+      do j = 1, size(f)
+         if (f(j) > 0.0_dp) started = .true.
+         if (.not. started) cycle
+         if (f(j) <= 0.0_dp) then
+            v(3) = t(j)
+            return
+         end if
+         if (f(j) > v(1)) v(1:2) = [f(j), t(j)]
+      end do
+   end function force_pulse
 
    ! ============================================================ the program
 
