@@ -4,16 +4,18 @@ One module for every Python tool of the project (tools/sweep,
 tools/paper-numbers, tools/stress/stress.py, bench/run_bench.py,
 validation/model_choice/run.py, validation/mesh_study/run.py):
 
-  decks       parse_deck, set_value, deck_text, fortran_value, with_settings
-              (a deck is a list of [group, [[name, value], ...]], values as
-              written; the program's own reader is src/input_deck.f90)
+  decks       parse_deck, split_assignments, set_value, deck_text,
+              fortran_value, with_settings (a deck is a list of [group,
+              [[name, value], ...]], values as written; the program's own
+              reader is src/input_deck.f90)
   schema      schema(impact): the deck's variables, their kind, unit,
               default, range and meaning, from `impact --schema`
               (src/deck_schema.f90, the one list)
   summaries   read_keys, summary_number ('key = value' lines after the
               '#' echo; 'none' is NaN, 'true'/'false' are 1/0)
   columns     read_columns, read_history (column files: the names on the
-              last '#' line before the rows)
+              last '#' line before the rows; a field that is not a number
+              is NaN, or its row left out: read_columns(whole_rows=True))
   running     run_impact: ./impact on a deck, never through a shell
 
 Python 3's standard library only. Import it from a tool with
@@ -208,21 +210,37 @@ def summary_number(values, key):
 
 # ---------------------------------------------------------------- columns
 
-def read_columns(path):
+def read_columns(path, whole_rows=False):
     """A column file: (names, rows), the names from the last '#' line before
-    the first row, the rows as lists of floats ('*' fields: NaN)."""
+    the first row, the rows as lists of floats. A field that is not a number
+    is NaN: the '*'s of a Fortran field too narrow for its value, or the
+    value a stopped run cut short. whole_rows: leave out, instead, a row with
+    such a field or with another number of fields than the first row (the
+    last row of a run stopped while writing it)."""
     names, rows, last = [], [], None
     with open(path, encoding='utf-8', errors='replace') as f:
         for line in f:
             if line.startswith('#'):
                 last = line[1:].split()
                 continue
-            if not line.strip():
+            values = [_number(x) for x in line.split()]
+            if not values:
+                continue
+            if whole_rows and (None in values or (rows and len(values) != len(rows[0]))):
                 continue
             if not rows and last:
                 names = last
-            rows.append([float(x) if '*' not in x else math.nan for x in line.split()])
+            rows.append([math.nan if v is None else v for v in values])
     return names, rows
+
+
+def _number(text):
+    """float(text) (NaN, Infinity as Fortran writes them too), None when it is
+    not a number."""
+    try:
+        return float(text)
+    except ValueError:
+        return None
 
 
 def read_history(path):
@@ -233,11 +251,13 @@ def read_history(path):
 
 # ---------------------------------------------------------------- running
 
-def run_impact(impact, deck, sets=(), cwd=None, timeout=None, log=None):
-    """Runs `impact [--set g.v=x ...] deck` (an argument list, no shell);
-    standard output and error go to the file log (or are captured).
-    Returns the CompletedProcess."""
-    args = [impact]
+def run_impact(impact, deck, sets=(), cwd=None, timeout=None, log=None, options=()):
+    """Runs `impact [options] [--set g.v=x ...] deck` (an argument list, no
+    shell; options such as '--check' or '--overwrite'); standard output and
+    error go to the file log (or are captured). Returns the
+    CompletedProcess; past the timeout the run is killed and
+    subprocess.TimeoutExpired raised."""
+    args = [impact] + list(options)
     for s in sets:
         args += ['--set', s]
     args.append(deck)

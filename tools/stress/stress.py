@@ -38,6 +38,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 WORK = os.path.join(ROOT, 'build', 'stress')
 TEMPLATE = os.path.join(ROOT, 'tools', 'stress', 'STABILITY.md.in')
 REPORT = os.path.join(ROOT, 'docs', 'STABILITY.md')
+sys.path.insert(0, os.path.join(ROOT, 'tools'))
+import impact_files as imf  # noqa: E402
 
 # The stated energy bound, as fractions of the impact energy E0 = m v0^2/2:
 # the integration may lose at most ENERGY_LOST and create at most
@@ -135,65 +137,24 @@ SCENES = [
 ]
 
 
-def deck_text(sc, prefix):
+def scene_deck(sc, prefix):
     """The deck of a scene: the paper's scene with the scene's changes."""
-    groups = {g: dict(v) for g, v in BASE.items()}
+    groups = [[g, [[name, value] for name, value in values.items()]] for g, values in BASE.items()]
     for g, changes in sc['changes'].items():
-        groups.setdefault(g, {}).update(changes)
-    groups['output']['prefix'] = "'%s'" % prefix
-    lines = ['! make stress (tools/stress/stress.py), scene %s: %s' % (sc['name'], sc['what'])]
-    for g, values in groups.items():
-        lines.append('&%s %s /' % (g, ', '.join('%s = %s' % kv for kv in values.items())))
-    return '\n'.join(lines) + '\n'
+        for name, value in changes.items():
+            imf.set_value(groups, g, name, value)
+    imf.set_value(groups, 'output', 'prefix', "'%s'" % prefix)
+    return imf.deck_text(groups, ['make stress (tools/stress/stress.py), scene %s: %s' % (sc['name'], sc['what'])])
 
 
 def number(text):
-    """A float of a result file, NaN and Inf included (Fortran writes NaN,
-    Infinity, -Infinity); None when the text is not a number."""
-    t = text.strip()
+    """A summary value as a float, NaN and Inf included (Fortran writes NaN,
+    Infinity, -Infinity); a field of '*'s (too narrow for its value) is Inf;
+    None when the text is not a number ('completed', 'none', ...)."""
     try:
-        return float(t)
+        return float(text)
     except ValueError:
-        pass
-    low = t.lower()
-    if low in ('nan', '+nan', '-nan'):
-        return math.nan
-    if low in ('infinity', '+infinity', 'inf', '+inf'):
-        return math.inf
-    if low in ('-infinity', '-inf'):
-        return -math.inf
-    # a Fortran field overflowed with stars also means a non-finite value
-    if t and set(t) <= set('*'):
-        return math.inf
-    return None
-
-
-def read_history(path):
-    """The rows of a history file (lists of floats) and whether any value is
-    not finite or not a number."""
-    rows, bad = [], False
-    with open(path, encoding='utf-8', errors='replace') as f:
-        for line in f:
-            if line.startswith('#') or not line.strip():
-                continue
-            vals = [number(w) for w in line.split()]
-            if any(v is None or not math.isfinite(v) for v in vals):
-                bad = True
-            rows.append(vals)
-    return rows, bad
-
-
-def read_summary(path):
-    """key = value lines of a summary file; numbers as floats, the rest as text."""
-    out = {}
-    with open(path, encoding='utf-8', errors='replace') as f:
-        for line in f:
-            if line.startswith('#') or '=' not in line:
-                continue
-            k, v = line.split('=', 1)
-            n = number(v)
-            out[k.strip()] = n if n is not None else v.strip()
-    return out
+        return math.inf if text and set(text) <= set('*') else None
 
 
 def run_scene(sc, impact):
@@ -204,14 +165,13 @@ def run_scene(sc, impact):
     prefix = os.path.join(d, name)
     deck = prefix + '.nml'
     with open(deck, 'w') as f:
-        f.write(deck_text(sc, prefix))
+        f.write(scene_deck(sc, prefix))
     for suffix in ('_history.dat', '_summary.dat'):
         if os.path.exists(prefix + suffix):
             os.remove(prefix + suffix)
     start = time.time()
     try:
-        p = subprocess.run([impact, deck], cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                           stdin=subprocess.DEVNULL, text=True, timeout=TIMEOUT_S)
+        p = imf.run_impact(impact, deck, cwd=ROOT, timeout=TIMEOUT_S)
         status, stderr = p.returncode, p.stderr
     except subprocess.TimeoutExpired as e:
         status, stderr = 'timeout', (e.stderr or b'').decode(errors='replace') if isinstance(e.stderr, bytes) else (e.stderr or '')
@@ -222,10 +182,14 @@ def run_scene(sc, impact):
          'exit': status, 'wall_s': wall, 'problems': []}
     hist = prefix + '_history.dat'
     summ = prefix + '_summary.dat'
-    rows, bad = read_history(hist) if os.path.exists(hist) else ([], False)
-    s = read_summary(summ) if os.path.exists(summ) else {}
+    rows = imf.read_columns(hist)[1] if os.path.exists(hist) else []     # a field not a number: NaN
+    s = {}                                  # the summary: numbers as floats, the rest as text
+    for k, v in (imf.read_keys(summ) if os.path.exists(summ) else {}).items():
+        n = number(v)
+        s[k] = v if n is None else n
     r['rows'] = len(rows)
-    r['nan'] = bad or any(isinstance(v, float) and not math.isfinite(v) for v in s.values())
+    r['nan'] = any(not math.isfinite(v) for row in rows for v in row) \
+        or any(isinstance(v, float) and not math.isfinite(v) for v in s.values())
     e0 = s.get('initial_energy_J')
     errs = [row[12] for row in rows if len(row) >= 13 and math.isfinite(row[12])]
     if isinstance(e0, float) and e0 > 0 and errs:

@@ -74,11 +74,11 @@ from concurrent.futures import ThreadPoolExecutor
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(REPO, 'tools'))
+import impact_files as imf  # noqa: E402
 
 SPLIT_FRACTION = 0.10   # a dip below this fraction of the peaks on both sides splits the pulses
-NUMBER = re.compile(r'^[+-]?(\d+\.?\d*|\.\d+)([eEdD][+-]?\d+)?$')
 WARNING_RE = re.compile(r'^\s*(impact:\s*)?warning', re.I)
-LOGICAL = re.compile(r'^\.?(true|false|t|f)\.?$', re.I)
 MESH_RE = re.compile(r'^\s*(\d+)\s*[xX]\s*(\d+)\s*$')
 SET_RE = re.compile(r'^([A-Za-z]\w*)\.([A-Za-z]\w*)=(.*)$', re.S)
 # variables the study itself sets in every deck: --set may not change them
@@ -94,179 +94,38 @@ class StudyError(Exception):
 
 # ------------------------------------------------------------------ decks
 
-def parse_deck(text):
-    """The namelist groups of a deck: [[group, [[name, value], ...]], ...],
-    names in lower case, values as written. A group runs from &name to '/'
-    (or &end) outside a quoted string; '!' starts a comment."""
-    groups, body, quote, i, n = [], None, None, 0, len(text)
-    while i < n:
-        c = text[i]
-        if quote:
-            body.append(c)
-            if c == quote:
-                quote = None
-        elif c == '!':
-            while i < n and text[i] != '\n':
-                i += 1
-            continue
-        elif body is not None and c in '\'"':
-            quote = c
-            body.append(c)
-        elif body is not None and c == '/':
-            groups[-1][1] = split_assignments(''.join(body))
-            body = None
-        elif c in '&$':
-            m = re.match(r'[A-Za-z]\w*', text[i + 1:])
-            if m and body is not None and m.group(0).lower() == 'end':
-                groups[-1][1] = split_assignments(''.join(body))
-                body = None
-                i += 1 + m.end()
-                continue
-            if m:
-                if body is not None:
-                    raise StudyError('template: &%s has no closing /' % groups[-1][0])
-                groups.append([m.group(0).lower(), []])
-                body = []
-                i += 1 + m.end()
-                continue
-            if body is not None:
-                body.append(c)
-        elif body is not None:
-            body.append(' ' if c == '\n' else c)
-        i += 1
-    if body is not None:
-        raise StudyError('template: &%s has no closing /' % groups[-1][0])
-    return groups
-
-
-def split_assignments(body):
-    """'a = 1, b = 2, 3' -> [['a', '1'], ['b', '2, 3']]."""
-    starts, quote = [], None
-    for i, c in enumerate(body):
-        if quote:
-            if c == quote:
-                quote = None
-        elif c in '\'"':
-            quote = c
-        elif c == '=':
-            j = i - 1
-            while j >= 0 and body[j] == ' ':
-                j -= 1
-            if j >= 0 and body[j] == ')':
-                j = body.rfind('(', 0, j) - 1
-            k = j
-            while k >= 0 and (body[k].isalnum() or body[k] == '_'):
-                k -= 1
-            if k < j:
-                starts.append((k + 1, i))
-    pairs = []
-    for s, (name_at, eq_at) in enumerate(starts):
-        end = starts[s + 1][0] if s + 1 < len(starts) else len(body)
-        value = body[eq_at + 1:end].strip().rstrip(',').strip()
-        if '\'' not in value and '"' not in value:
-            value = re.sub(r'\s+', ' ', value)
-        pairs.append([body[name_at:eq_at].strip().lower(), value])
-    return pairs
-
-
-def set_value(groups, group, name, value):
-    """group.name = value, replacing an assignment of the same name in that group."""
-    for g in groups:
-        if g[0] == group:
-            for pair in g[1]:
-                if pair[0] == name:
-                    pair[1] = value
-                    return
-            g[1].append([name, value])
-            return
-    groups.append([group, [[name, value]]])
-
-
-def fortran_value(text):
-    """Numbers and logicals as given, quoted text as given, anything else quoted."""
-    t = text.strip()
-    if NUMBER.match(t) or LOGICAL.match(t):
-        return t
-    if len(t) >= 2 and t[0] == t[-1] and t[0] in '\'"':
-        return t
-    return "'" + t.replace("'", "''") + "'"
-
-
-def deck_text(groups, header):
-    lines = ['! ' + h for h in header]
-    for group, pairs in groups:
-        lines.append('&' + group)
-        for k, (name, value) in enumerate(pairs):
-            lines.append('   %s = %s%s' % (name, value, ',' if k + 1 < len(pairs) else ''))
-        lines.append('/')
-    return '\n'.join(lines) + '\n'
-
-
 def make_deck(template_path, settings, extra, header):
     """The template's groups with settings [(group, name, value)] and then the
-    --set values [(group, name, value)] applied."""
+    --set values [(group, name, value)] applied; the blanks of an unquoted
+    value written over several lines of the template are joined into one."""
     with open(template_path, encoding='utf-8') as f:
-        groups = parse_deck(f.read())
+        try:
+            groups = imf.parse_deck(f.read())
+        except imf.DeckError as e:
+            raise StudyError('template: %s' % e)
+    for _, pairs in groups:
+        for pair in pairs:
+            if '\'' not in pair[1] and '"' not in pair[1]:
+                pair[1] = re.sub(r'\s+', ' ', pair[1])
     for g, n, v in list(settings) + list(extra):
-        set_value(groups, g, n, v)
-    return deck_text(groups, header)
+        imf.set_value(groups, g, n, v)
+    return imf.deck_text(groups, header)
 
 
 # ------------------------------------------------------------------ results
 
-def read_summary(path):
-    """key = value lines of <prefix>_summary.dat (comments skipped)."""
-    out = {}
-    if not os.path.exists(path):
-        return out
-    with open(path, encoding='utf-8', errors='replace') as f:
-        for line in f:
-            if line.startswith('#') or '=' not in line:
-                continue
-            k, v = line.split('=', 1)
-            out[k.strip()] = v.strip()
-    return out
-
-
 def read_columns(path):
-    """A column file with a '#' header: ({name: [values]}, {name: unit}).
-    The names are those of the last '#' line before the data whose number of
-    words equals the number of data columns; units from the numbered lines
-    '#  N name  description (unit)' when present."""
-    comments, rows = [], []
+    """A column file as {name: [values]}, {} when it is missing or has no row;
+    a row that is not all numbers, or is cut short (a stopped run), is left
+    out. The names are those of the '#' line just before the rows."""
     if not os.path.exists(path):
-        return {}, {}
-    with open(path, encoding='utf-8', errors='replace') as f:
-        for line in f:
-            if line.startswith('#'):
-                if not rows:
-                    comments.append(line[1:].strip())
-                continue
-            words = line.split()
-            if not words:
-                continue
-            try:
-                rows.append([float(w.replace('D', 'E').replace('d', 'e')) for w in words])
-            except ValueError:
-                continue   # a partly written last row of a stopped run
+        return {}
+    names, rows = imf.read_columns(path, whole_rows=True)
     if not rows:
-        return {}, {}
-    ncol = len(rows[0])
-    rows = [r for r in rows if len(r) == ncol]
-    names = None
-    for c in reversed(comments):
-        w = c.split()
-        if len(w) == ncol and all(re.match(r'^[A-Za-z]\w*$', x) for x in w):
-            names = w
-            break
-    if names is None:
-        raise StudyError('%s: no header line naming its %d columns' % (path, ncol))
-    units = {}
-    for c in comments:
-        m = re.match(r'^(\d+)\s+([A-Za-z]\w*)\s+.*\(([^()]*)\)\s*$', c)
-        if m:
-            units[m.group(2)] = m.group(3)
-    return {n: [r[k] for r in rows] for k, n in enumerate(names)}, units
+        return {}
+    if len(names) != len(rows[0]) or not all(re.match(r'^[A-Za-z]\w*$', x) for x in names):
+        raise StudyError('%s: no header line naming its %d columns' % (path, len(rows[0])))
+    return {n: [r[k] for r in rows] for k, n in enumerate(names)}
 
 
 def first_dip(F, a, b):
@@ -334,11 +193,7 @@ def first_contact(t, F):
     return r
 
 
-def fnum(s, key):
-    try:
-        return float(s[key])
-    except (KeyError, ValueError):
-        return math.nan
+fnum = imf.summary_number     # a summary value as a number; NaN when missing or not a number
 
 
 def ival(s, key):
@@ -363,17 +218,13 @@ class Runner:
         """Runs impact on job['deck'] in the runs directory; fills job."""
         log_path = os.path.join(self.dir, job['name'] + '.log')
         t0 = time.time()
-        with open(log_path, 'w', encoding='utf-8') as log:
-            p = subprocess.Popen([self.impact, job['name'] + '.nml'], cwd=self.dir,
-                                 stdout=log, stderr=subprocess.STDOUT)
-            try:
-                job['rc'] = p.wait(timeout=self.timeout if self.timeout > 0 else None)
-                job['timed_out'] = False
-            except subprocess.TimeoutExpired:
-                p.kill()            # the process this script started, by its handle
-                p.wait()
-                job['rc'] = None
-                job['timed_out'] = True
+        try:
+            job['rc'] = imf.run_impact(self.impact, job['name'] + '.nml', cwd=self.dir, log=log_path,
+                                       timeout=self.timeout if self.timeout > 0 else None).returncode
+            job['timed_out'] = False
+        except subprocess.TimeoutExpired:   # run_impact killed the process it started
+            job['rc'] = None
+            job['timed_out'] = True
         job['wall_s'] = time.time() - t0
         with open(log_path, encoding='utf-8', errors='replace') as f:
             job['log'] = f.read()
@@ -387,9 +238,9 @@ class Runner:
 
 def analyse_impact(job):
     prefix = os.path.join(job['dir'], job['name'])
-    s = read_summary(prefix + '_summary.dat')
-    job['summary'] = s
-    cols, _ = read_columns(prefix + '_history.dat')
+    summary = prefix + '_summary.dat'
+    job['summary'] = imf.read_keys(summary) if os.path.exists(summary) else {}
+    cols = read_columns(prefix + '_history.dat')
     job.update(first_contact(cols.get('time_us', []), cols.get('force_N', [])))
     job['rows'] = len(cols.get('time_us', []))
     job['last_time_us'] = cols['time_us'][-1] if job['rows'] else math.nan
@@ -402,14 +253,14 @@ def analyse_impact(job):
 
 def analyse_static(job):
     prefix = os.path.join(job['dir'], job['name'])
-    st, _ = read_columns(prefix + '_static.dat')
+    st = read_columns(prefix + '_static.dat')
     job['wP'] = math.nan
     job['wP_node'] = math.nan
     if st.get('load') and st.get('w_centre_mm'):
         k = max(range(len(st['load'])), key=lambda i: st['load'][i])
         if st['load'][k] != 0.0:
             job['wP'] = st['w_centre_mm'][k] * 1e-3 / st['load'][k]
-    de, _ = read_columns(prefix + '_deflection.dat')
+    de = read_columns(prefix + '_deflection.dat')
     if de.get('x_mm'):
         for i in range(len(de['x_mm'])):
             if abs(de['x_mm'][i]) < 1e-9 and abs(de['y_mm'][i]) < 1e-9:
@@ -774,7 +625,7 @@ def parse_args(argv):
         g, n = m.group(1).lower(), m.group(2).lower()
         if (g, n) in CONTROLLED:
             raise StudyError('--set %s: %s.%s is set by the study itself (use its own option)' % (s, g, n))
-        a.set_list.append((g, n, fortran_value(m.group(3))))
+        a.set_list.append((g, n, imf.fortran_value(m.group(3))))
     return a
 
 

@@ -31,6 +31,8 @@ WORK = os.path.join(ROOT, 'build', 'validation', 'model_choice')
 DOCS = os.path.join(ROOT, 'docs', 'validation')
 FIGS = os.path.join(DOCS, 'model_choice')
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), 'tools'))
+import impact_files as imf  # noqa: E402
 
 PAPER = '0, 45, 0, -45, 0, 0, 45, 0, -45, 0, 0, -45, 0, 45, 0, 0, -45, 0, 45, 0'
 CROSS = '0, 90, 0, 90, 90, 0, 90, 0'
@@ -44,35 +46,27 @@ failures = []
 
 
 def deck(name, groups):
-    """Writes build/validation/model_choice/<name>.nml; groups: {group: 'text'}."""
+    """Writes build/validation/model_choice/<name>.nml; groups: {group: 'name = value, ...'}."""
     path = os.path.join(WORK, name + '.nml')
+    g = [[group, imf.split_assignments(body)] for group, body in groups.items()]
+    if 'output' not in groups:
+        g.append(['output', [['prefix', "'%s'" % os.path.join(WORK, name)], ['overwrite', '.true.']]])
     with open(path, 'w') as f:
-        f.write('! written by validation/model_choice/run.py\n')
-        for g, body in groups.items():
-            f.write('&%s %s /\n' % (g, body))
-        if 'output' not in groups:
-            f.write("&output prefix = '%s', overwrite = .true. /\n" % os.path.join(WORK, name))
+        f.write(imf.deck_text(g, ['written by validation/model_choice/run.py']))
     return path
 
 
 def run(name, groups, check=False):
     """Runs ./impact [--check] on a deck; returns (stdout+stderr, summary dict, wall s)."""
     path = deck(name, groups)
-    args = [IMPACT, '--check', path] if check else [IMPACT, path]
     t0 = time.time()
-    p = subprocess.run(args, capture_output=True, text=True)
+    p = imf.run_impact(IMPACT, path, options=['--check'] if check else [])
     wall = time.time() - t0
     out = p.stdout + p.stderr
     if p.returncode != 0:
         sys.exit('validate-model: %s failed:\n%s' % (name, out))
-    summ = {}
     sp = os.path.join(WORK, name + '_summary.dat')
-    if not check and os.path.exists(sp):
-        for line in open(sp):
-            if line.startswith('#') or '=' not in line:
-                continue
-            k, v = line.split('=', 1)
-            summ[k.strip()] = v.strip()
+    summ = imf.read_keys(sp) if not check and os.path.exists(sp) else {}
     return out, summ, wall
 
 
@@ -81,11 +75,7 @@ def scene_value(out, pattern):
     return m.group(1) if m else '?'
 
 
-def num(summ, key):
-    try:
-        return float(summ[key])
-    except (KeyError, ValueError):
-        return float('nan')
+num = imf.summary_number      # a summary value as a number; NaN when missing or not a number
 
 
 def equations(out):
