@@ -37,7 +37,7 @@ module contact_iteration
       logical :: has_lo = .false., has_hi = .false.  !< residual known at that end
       integer :: last_side = 0                    !< end moved last (-1 lo, +1 hi), for Illinois
       logical :: blind_hi = .false.      !< hi is a force whose plate solution failed: no residual there
-      real(dp) :: r_prev = huge(1.0_dp)  !< |r| of the previous iteration (N), force_update = 'fixed_point'
+      real(dp) :: r_prev = huge(1.0_dp)  !< |r| of the previous iteration (N)
    end type force_bracket_t
 
    !> One step's contact iteration.
@@ -52,9 +52,11 @@ module contact_iteration
       logical :: cut = .false.        !< a plate solution failed under an assumed force, which was cut
    end type contact_iteration_t
 
-   !> Largest factor by which force_update = 'fixed_point' may shrink the
-   !> contact residual per iteration before it falls back (0.5: C_r1 = 0.2 %
-   !> from a residual of the order of the force within about 9 iterations).
+   !> Smallest factor by which the law's force must shrink the contact
+   !> residual per iteration (0.5: C_r1 = 0.2 % from a residual of the order
+   !> of the force within about 9 iterations); below it force_update =
+   !> 'fixed_point' falls back to the bracketed update, and the bracketed
+   !> update, with only an upper end known, tries F = 0.
    real(dp), parameter :: max_contraction = 0.5_dp
 
 contains
@@ -83,19 +85,19 @@ contains
       type(contact_iteration_t), intent(inout) :: cit  !< the iteration: f_assum, f_cont of the last
       type(model_t), intent(in) :: model               !< model
       type(contact_history_t), intent(in) :: hist      !< committed contact history
-      real(dp) :: f_next, r
+      real(dp) :: f_next
+      logical :: contracting
       if (cit%update == 'plain') then
          f_next = cit%f_cont
       else
+         contracting = abs(cit%f_assum - cit%f_cont) <= max_contraction*cit%br%r_prev
          call bracket_update(cit%br, cit%f_assum, cit%f_cont, f_next)
          if (cit%update == 'fixed_point' .and. .not. cit%fell_back) then
-            r = abs(cit%f_assum - cit%f_cont)
-            if (r > max_contraction*cit%br%r_prev) then
-               cit%fell_back = .true.
-            else
+            if (contracting) then
                f_next = cit%f_cont
+            else
+               cit%fell_back = .true.
             end if
-            cit%br%r_prev = r
          end if
       end if
       cit%f_assum = f_next
@@ -136,6 +138,11 @@ contains
    !> assumed force: the law's force while only one side of the root is
    !> known, regula falsi with the Illinois modification once it is
    !> bracketed. It always converges because r increases with the force.
+   !> Only forces too high known, and the law's force no longer shrinking
+   !> |r| by max_contraction (a plate that yields almost as much as the law
+   !> asks: thin plates, light contacts, where the fixed point would crawl
+   !> towards 0 for hundreds of iterations): F = 0 is tried; its residual
+   !> -F_cont(0) <= 0 closes the bracket, or F_cont(0) = 0 is the root.
    pure subroutine bracket_update(br, f_assumed, f_contact, f_next)
       type(force_bracket_t), intent(inout) :: br  !< bracket, updated
       real(dp), intent(in) :: f_assumed           !< force the plate was solved with (N)
@@ -154,9 +161,12 @@ contains
       if (r > 0.0_dp) br%blind_hi = .false.
       if (br%has_lo .and. br%has_hi .and. .not. br%blind_hi) then
          f_next = br%lo - br%r_lo*(br%hi - br%lo)/(br%r_hi - br%r_lo)
+      else if (br%has_hi .and. .not. br%has_lo .and. abs(r) > max_contraction*br%r_prev) then
+         f_next = br%lo        ! F = 0: either the root (no contact) or the bracket's lower end
       else
          f_next = f_contact
       end if
+      br%r_prev = abs(r)
       ! stay inside the bracket; F = 0 may be tried while its residual is unknown
       inside = f_next < br%hi .and. (f_next > br%lo .or. (.not. br%has_lo .and. f_next >= br%lo))
       if (.not. inside) then

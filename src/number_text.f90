@@ -3,7 +3,7 @@
 !>
 !>  - real_str: the fewest significant digits that read back to the same
 !>    double (0.15, 1.2e11, 2.5e-6): the deck's echo and its messages;
-!>  - real_short: four significant digits (g0.4): warnings;
+!>  - real_short: rounded to four significant digits: warnings;
 !>  - int_str: an integer without blanks.
 module number_text
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
@@ -79,13 +79,22 @@ contains
       end if
    end function real_str
 
-   !> x with four significant digits (g0.4), without blanks.
+   !> x rounded to four significant digits, written as real_str writes it:
+   !> 5.004, 1.843e-3, 1.2e11.
    pure function real_short(x) result(s)
       real(dp), intent(in) :: x
       character(len=:), allocatable :: s
       character(len=24) :: buf
-      write (buf, '(g0.4)') x
-      s = trim(adjustl(buf))
+      real(dp) :: rounded
+      integer :: ios
+      if (.not. ieee_is_finite(x)) then
+         s = real_str(x)
+         return
+      end if
+      write (buf, '(es24.3e4)') x
+      read (buf, *, iostat=ios) rounded
+      if (ios /= 0) rounded = x
+      s = real_str(rounded)
    end function real_short
 
 end module number_text

@@ -51,7 +51,12 @@ module run_recorder
 
    !> Kinds of warning, each given once (later ones are counted).
    integer, parameter :: warn_mixing = 1, warn_contact = 2, warn_deflection = 3, warn_unconverged = 4, &
-                         nwarn = 4
+                         warn_energy = 5, nwarn = 5
+   !> Energy the integration may create before it is warned, as a fraction
+   !> of E0 (docs/STABILITY.md, "The energy bound"): the average acceleration
+   !> rule conserves energy, so created energy is the time step's error in
+   !> the contacts and the nonlinear terms, not rounding.
+   real(dp), parameter :: energy_created_bound = 1.0e-3_dp
 
    !> What a run has recorded so far.
    type :: record_t
@@ -76,7 +81,7 @@ module run_recorder
       integer :: contact_fallback_steps = 0, warnings = 0, mixed_seen = 0, solves_before = 0
       logical :: in_contact = .false.
       real(dp) :: peak_force = 0, time_of_peak = 0, first_contact_start = -1, first_contact_end = -1
-      real(dp) :: max_deflection = 0, max_strain_y = 0, max_energy_error = 0, max_w_over_h = 0
+      real(dp) :: max_deflection = 0, max_strain_y = 0, max_energy_error = 0, energy_created = 0, max_w_over_h = 0
       real(dp) :: w_bend_max = 0, diverged_at = -1
       real(dp) :: c_plate = -1, c_impactor = 0, max_slope = 0
       logical :: warned(nwarn) = .false.
@@ -208,6 +213,7 @@ contains
          row(col_contact_iter) = ic
          row(col_solves) = solves
          rec%max_energy_error = nan_max(rec%max_energy_error, abs(row(col_energy_error)))
+         rec%energy_created = nan_max(rec%energy_created, -row(col_energy_error))
          call write_row(rec, row, stat, errmsg)
          if (stat /= 0) return
          if (row(col_energy_error) < -rec%e0) call stop_here('diverged at step ' // int_str(step), &
@@ -243,6 +249,10 @@ contains
          // real_short(rec%max_w_over_h) // ' times the thickness, beyond the moderately large deflections of ' &
          // 'von Karman''s theory (w/h > ' // real_short(von_karman_limit) // '): the results are outside ' &
          // 'the model''s validity')
+      if (rec%energy_created > energy_created_bound*rec%e0) call warn(warn_energy, 'the integration has ' &
+         // 'created ' // real_short(rec%energy_created/rec%e0) // ' E0 of energy (more than ' &
+         // real_short(energy_created_bound) // ' E0): the time step is too long for this scene''s contacts; ' &
+         // 'halve dt until max_energy_created_J settles (docs/STABILITY.md)')
       if (.not. converged) then
          rec%unconverged_steps = rec%unconverged_steps + 1
          if (rec%first_unconverged == 0) rec%first_unconverged = step
@@ -327,6 +337,7 @@ contains
       call summary_real(s, 'rebound_velocity_m_s', 'rebound_velocity', 'm/s', -imp%v, 1.0_dp)
       call summary_real(s, 'initial_energy_J', 'initial_energy', 'J', rec%e0, 1.0_dp)
       call summary_real(s, 'max_energy_error_J', 'max_energy_error', 'J', rec%max_energy_error, 1.0_dp)
+      call summary_real(s, 'max_energy_created_J', 'max_energy_created', 'J', rec%energy_created, 1.0_dp)
       call summary_integer(s, 'steps', rec%steps)
       call summary_integer(s, 'plate_solves', solver%solves + solver%response_solves)
       call summary_integer(s, 'factorizations', solver%factorizations)

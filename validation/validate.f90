@@ -905,14 +905,18 @@ contains
    !> force): their difference measures that term, which the model has and
    !> the point force has not. Bound: 1e-3 of E0.
    subroutine check_energy_hertz()
-      real(dp), parameter :: tol_area = 1.0e-3_dp
+      !> the balance closes as with the point force (check 8, elastic: 1e-5 E0
+      !> for von Karman at 2.5 us); the dissipation differs from the loop at the
+      !> centre by the pressure's work through the patch's deflection relative
+      !> to its centre, bounded by a tenth of the loop (VALIDATION.md, check 8)
+      real(dp), parameter :: tol_balance = 1.0e-5_dp, tol_patch = 0.1_dp
       real(dp), allocatable :: h(:,:)
       real(dp) :: e0, diss, loop
       integer :: stat, n, i
       e0 = 0.5_dp*0.243_dp*3.0_dp**2
       call run_program('energy_paper_hertz', 'build/validation/energy_paper_hertz_history.dat', stat)
       if (stat /= 0) then
-         call record('8 energy', 'energy_paper_hertz did not run', 1.0_dp, tol_area)
+         call record('8 energy', 'energy_paper_hertz did not run', 1.0_dp, tol_balance)
          return
       end if
       call read_table('build/validation/energy_paper_hertz_history.dat', 16, h, stat)
@@ -933,8 +937,10 @@ contains
       call table_row([character(len=cw) :: 'max |energy error| (history column 13)', &
          num(maxval(abs(h(13, :)))*1.0e3_dp, '(es10.3)'), sci(maxval(abs(h(13, :)))/e0)])
       call table_close()
-      call record('8 energy', 'Hertz load: (dissipated energy - loop area) / E0, the moving contact area', &
-         abs(diss - loop)/e0, tol_area)
+      call record('8 energy', 'Hertz load: max |energy error| / E0 (history column 13)', &
+         maxval(abs(h(13, :)))/e0, tol_balance)
+      call record('8 energy', 'Hertz load: |dissipated energy - loop area| / loop area (the patch''s own work)', &
+         abs(diss - loop)/loop, tol_patch)
    end subroutine check_energy_hertz
 
    ! ============================================================ FE runs
