@@ -1,6 +1,6 @@
 # make bench: the speed-accuracy trade, measured (issue 5; docs/PERFORMANCE.md).
 #
-#   make bench                   the full grid (about 10-15 minutes on 2 cores);
+#   make bench                   the full grid (about 15 minutes on 2 cores);
 #                                writes bench/results.dat, docs/performance/*.png
 #                                and the generated block of docs/PERFORMANCE.md
 #   make bench BENCH_ARGS=--quick   a small grid, to check the machinery
