@@ -1,9 +1,12 @@
 !> Thin checked wrappers over HDF5-Fortran for the results file
 !> (src/results_hdf5.f90) and the tools that read it (tools/h5export.f90).
 !>
-!> Every routine returns `stat` (0 on success) and a message naming the
-!> operation and the object; the library's own error printing is switched
-!> off by h5io_start, so a failure reads as one line of the caller's.
+!> Every routine returns `stat` (0 on success) and, on failure, `errmsg`, a
+!> message naming the operation and the object; the library's own error
+!> printing is switched off by h5io_start, so a failure reads as one line of
+!> the caller's. The arguments recur: `loc` is the file or group a path
+!> starts from, `name` a path relative to it (`obj` and `name` an object's
+!> path and its attribute's name), `did` an open dataset.
 !>
 !> What is written, and how a reader sees it:
 !>  - attributes are scalars (dataspace SCALAR: h5py gives a number or a
@@ -53,24 +56,21 @@ module hdf5_io
    !> (size_t)(-1) in C, which the HDF5 1.10 Fortran module does not define.
    integer(size_t), parameter :: variable_length = -1_size_t
 
-   !> Writes an attribute: real, integer or string scalar, real or integer array.
+   !> Writes an attribute: a real(dp), integer or string scalar, or a real(dp)
+   !> or integer 1-D array.
    interface h5io_set_attr
-      module procedure set_attr_real, set_attr_int, set_attr_string, set_attr_real_1d, set_attr_int_1d
+      module procedure set_attr_scalar, set_attr_array
    end interface h5io_set_attr
 
-   !> Reads a scalar attribute: real, integer or string (fixed or variable length).
-
-   !> Writes a whole dataset (H5LT): real or integer, rank 1 or 2.
+   !> Writes a whole dataset (H5LT): real(dp) or integer, rank 1 or 2.
    interface h5io_write
-      module procedure write_real_1d, write_real_2d, write_int_1d, write_int_2d
+      module procedure write_1d, write_2d
    end interface h5io_write
-
-   !> Reads a whole dataset (H5LT) into an allocatable array of its shape.
 
    !> Appends one entry to a series: a real or an integer to a rank-1 series,
    !> a real column to a rank-2 series.
    interface h5io_append
-      module procedure append_real, append_int, append_column
+      module procedure append_value, append_column
    end interface h5io_append
 
 contains
@@ -80,72 +80,51 @@ contains
    !> Opens the HDF5 library (its predefined types) and switches off its own
    !> error printing. Safe to call more than once.
    subroutine h5io_start(stat, errmsg)
-      !> 0 on success.
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       integer :: err
       call h5open_f(err)
-      if (err /= 0) then
-         call h5io_fail('cannot initialise the HDF5 library', '', stat, errmsg)
-         return
-      end if
-      call h5eset_auto_f(0, err)
-      stat = 0
+      if (err == 0) call h5eset_auto_f(0, err)
+      call h5io_check(err, 'cannot initialise the HDF5 library', '', stat, errmsg)
    end subroutine h5io_start
 
-   !> Creates (or truncates) the file `path` for writing.
+   !> Creates (or truncates) the file `path` for writing; fid is its id.
    subroutine h5io_create(path, fid, stat, errmsg)
-      !> File path.
       character(len=*), intent(in) :: path
-      !> Id of the open file.
       integer(hid_t), intent(out) :: fid
-      !> 0 on success.
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       integer :: err
       call h5fcreate_f(path, H5F_ACC_TRUNC_F, fid, err)
       call h5io_check(err, 'cannot create the HDF5 file', path, stat, errmsg)
    end subroutine h5io_create
 
-
-   !> Closes a file.
+   !> Closes the file fid.
    subroutine h5io_close(fid, stat, errmsg)
-      !> Id of the open file.
       integer(hid_t), intent(in) :: fid
-      !> 0 on success.
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       integer :: err
       call h5fclose_f(fid, err)
       call h5io_check(err, 'cannot close the HDF5 file', '', stat, errmsg)
    end subroutine h5io_close
 
-   !> Writes everything buffered to the file (H5Fflush), so that a run killed
-   !> later leaves a file that opens with all it had written so far.
+   !> Writes everything buffered to the file fid (H5Fflush), so that a run
+   !> killed later leaves a file that opens with all it had written so far.
    subroutine h5io_flush(fid, stat, errmsg)
-      !> Id of the open file.
       integer(hid_t), intent(in) :: fid
-      !> 0 on success.
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       integer :: err
       call h5fflush_f(fid, H5F_SCOPE_GLOBAL_F, err)
       call h5io_check(err, 'cannot flush the HDF5 file', '', stat, errmsg)
    end subroutine h5io_flush
 
-   !> Creates the group `name` (a path relative to loc; its parent must exist).
+   !> Creates the group `name` (its parent must exist).
    subroutine h5io_group(loc, name, stat, errmsg)
-      !> File or group the path starts from.
       integer(hid_t), intent(in) :: loc
-      !> Group path.
       character(len=*), intent(in) :: name
-      !> 0 on success.
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       integer(hid_t) :: gid
       integer :: err
@@ -158,116 +137,67 @@ contains
 
    ! ------------------------------------------------------------ attributes
 
-   !> Real scalar attribute `name` of object `obj`.
-   subroutine set_attr_real(loc, obj, name, x, stat, errmsg)
-      !> File or group the object path starts from.
+   !> Scalar attribute `name` of object `obj`: real(dp), integer or a string
+   !> (variable-length UTF-8, trailing blanks removed).
+   subroutine set_attr_scalar(loc, obj, name, x, stat, errmsg)
       integer(hid_t), intent(in) :: loc
-      !> Object path ('.' for loc itself) and attribute name.
       character(len=*), intent(in) :: obj, name
-      !> Value.
-      real(dp), intent(in), target :: x
-      !> 0 on success.
+      class(*), intent(in), target :: x
       integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      call put_attr(loc, obj, name, H5T_NATIVE_DOUBLE, c_loc(x), 0, stat, errmsg)
-   end subroutine set_attr_real
-
-   !> Integer scalar attribute `name` of object `obj`.
-   subroutine set_attr_int(loc, obj, name, i, stat, errmsg)
-      !> File or group the object path starts from.
-      integer(hid_t), intent(in) :: loc
-      !> Object path ('.' for loc itself) and attribute name.
-      character(len=*), intent(in) :: obj, name
-      !> Value.
-      integer, intent(in), target :: i
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      call put_attr(loc, obj, name, H5T_NATIVE_INTEGER, c_loc(i), 0, stat, errmsg)
-   end subroutine set_attr_int
-
-   !> Real 1-D array attribute `name` of object `obj`.
-   subroutine set_attr_real_1d(loc, obj, name, x, stat, errmsg)
-      !> File or group the object path starts from.
-      integer(hid_t), intent(in) :: loc
-      !> Object path ('.' for loc itself) and attribute name.
-      character(len=*), intent(in) :: obj, name
-      !> Values (at least one).
-      real(dp), intent(in), target :: x(:)
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      real(dp), target :: buf(size(x))
-      buf = x
-      call put_attr(loc, obj, name, H5T_NATIVE_DOUBLE, c_loc(buf), size(buf), stat, errmsg)
-   end subroutine set_attr_real_1d
-
-   !> Integer 1-D array attribute `name` of object `obj`.
-   subroutine set_attr_int_1d(loc, obj, name, i, stat, errmsg)
-      !> File or group the object path starts from.
-      integer(hid_t), intent(in) :: loc
-      !> Object path ('.' for loc itself) and attribute name.
-      character(len=*), intent(in) :: obj, name
-      !> Values (at least one).
-      integer, intent(in), target :: i(:)
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      integer, target :: buf(size(i))
-      buf = i
-      call put_attr(loc, obj, name, H5T_NATIVE_INTEGER, c_loc(buf), size(buf), stat, errmsg)
-   end subroutine set_attr_int_1d
-
-   !> String attribute `name` of object `obj`: variable-length UTF-8, trailing
-   !> blanks removed.
-   subroutine set_attr_string(loc, obj, name, s, stat, errmsg)
-      !> File or group the object path starts from.
-      integer(hid_t), intent(in) :: loc
-      !> Object path ('.' for loc itself) and attribute name.
-      character(len=*), intent(in) :: obj, name
-      !> Value.
-      character(len=*), intent(in) :: s
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       character(kind=c_char), allocatable, target :: chars(:)
       type(c_ptr), target :: ptr(1)
       integer(hid_t) :: tid
-      integer :: err, k, n
+      integer :: err, k
+      select type (x)
+      type is (real(dp))
+         call put_attr(loc, obj, name, H5T_NATIVE_DOUBLE, c_loc(x), 0, stat, errmsg)
+      type is (integer)
+         call put_attr(loc, obj, name, H5T_NATIVE_INTEGER, c_loc(x), 0, stat, errmsg)
+      type is (character(len=*))
+         chars = [(x(k:k), k = 1, len_trim(x)), c_null_char]
+         ptr(1) = c_loc(chars)
+         call h5io_vlen_string_type(tid, err)
+         call h5io_check(err, 'cannot make a string type for the attribute', name, stat, errmsg)
+         if (stat /= 0) return
+         call put_attr(loc, obj, name, tid, c_loc(ptr), 0, stat, errmsg)
+         call h5tclose_f(tid, err)
+      class default
+         call h5io_fail('an attribute is a real(dp), an integer or a string', h5io_attr_path(obj, name), &
+            stat, errmsg)
+      end select
+   end subroutine set_attr_scalar
 
-      n = len_trim(s)
-      allocate (chars(n + 1))
-      do k = 1, n
-         chars(k) = s(k:k)
-      end do
-      chars(n + 1) = c_null_char
-      ptr(1) = c_loc(chars)
-      call h5io_vlen_string_type(tid, err)
-      call h5io_check(err, 'cannot make a string type for the attribute', name, stat, errmsg)
-      if (stat /= 0) return
-      call put_attr(loc, obj, name, tid, c_loc(ptr), 0, stat, errmsg)
-      call h5tclose_f(tid, err)
-   end subroutine set_attr_string
+   !> 1-D array attribute `name` of object `obj` (at least one value):
+   !> real(dp) or integer.
+   subroutine set_attr_array(loc, obj, name, x, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: obj, name
+      class(*), intent(in) :: x(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      real(dp), allocatable, target :: r(:)
+      integer, allocatable, target :: i(:)
+      select type (x)
+      type is (real(dp))
+         r = x
+         call put_attr(loc, obj, name, H5T_NATIVE_DOUBLE, c_loc(r), size(r), stat, errmsg)
+      type is (integer)
+         i = x
+         call put_attr(loc, obj, name, H5T_NATIVE_INTEGER, c_loc(i), size(i), stat, errmsg)
+      class default
+         call h5io_fail('an array attribute is real(dp) or integer', h5io_attr_path(obj, name), stat, errmsg)
+      end select
+   end subroutine set_attr_array
 
    !> Creates (replacing one of the same name) and writes an attribute of
-   !> type tid: a scalar when n = 0, else a 1-D array of n values.
+   !> type tid from the address buf: a scalar when n = 0, else n values.
    subroutine put_attr(loc, obj, name, tid, buf, n, stat, errmsg)
-      !> File or group the object path starts from; memory and file type of the value.
       integer(hid_t), intent(in) :: loc, tid
-      !> Object path and attribute name.
       character(len=*), intent(in) :: obj, name
-      !> Address of the value(s).
       type(c_ptr), intent(in) :: buf
-      !> 0 for a scalar, else the number of values.
       integer, intent(in) :: n
-      !> 0 on success.
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       integer(hid_t) :: sid, aid
       integer :: err
@@ -298,18 +228,12 @@ contains
       call h5sclose_f(sid, err)
    end subroutine put_attr
 
-
-
-
-
    !> A variable-length, null-terminated UTF-8 string type (the caller closes
    !> it), made from the one-character type H5T_FORTRAN_S1: the module's
    !> H5T_STRING is already variable-length in HDF5 1.10 and cannot be resized.
    subroutine h5io_vlen_string_type(tid, err)
-      !> The new type.
-      integer(hid_t), intent(out) :: tid
-      !> HDF5's error code (0 on success).
-      integer, intent(out) :: err
+      integer(hid_t), intent(out) :: tid  !< the new type
+      integer, intent(out) :: err         !< HDF5's error code (0 on success)
       call h5tcopy_f(H5T_FORTRAN_S1, tid, err)
       if (err == 0) call h5tset_size_f(tid, variable_length, err)
       if (err == 0) call h5tset_strpad_f(tid, H5T_STR_NULLTERM_F, err)
@@ -318,86 +242,50 @@ contains
 
    ! ------------------------------------------------------------ whole datasets
 
-   !> Writes the real dataset `name` of x(:).
-   subroutine write_real_1d(loc, name, x, stat, errmsg)
-      !> File or group the path starts from.
+   !> Writes the dataset `name` of the 1-D array x: real(dp) or integer.
+   subroutine write_1d(loc, name, x, stat, errmsg)
       integer(hid_t), intent(in) :: loc
-      !> Dataset path.
       character(len=*), intent(in) :: name
-      !> Values.
-      real(dp), intent(in) :: x(:)
-      !> 0 on success.
+      class(*), intent(in) :: x(:)
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       integer :: err
-      call h5ltmake_dataset_double_f(loc, name, 1, shape(x, kind=hsize_t), x, err)
+      err = -1
+      select type (x)
+      type is (real(dp))
+         call h5ltmake_dataset_double_f(loc, name, 1, shape(x, kind=hsize_t), x, err)
+      type is (integer)
+         call h5ltmake_dataset_int_f(loc, name, 1, shape(x, kind=hsize_t), x, err)
+      end select
       call h5io_check(err, 'cannot write the dataset', name, stat, errmsg)
-   end subroutine write_real_1d
+   end subroutine write_1d
 
-   !> Writes the real dataset `name` of x(:,:) (C order: x[n2, n1]).
-   subroutine write_real_2d(loc, name, x, stat, errmsg)
-      !> File or group the path starts from.
+   !> Writes the dataset `name` of the 2-D array x, real(dp) or integer
+   !> (x(m, n) reads as x[n, m] in C order).
+   subroutine write_2d(loc, name, x, stat, errmsg)
       integer(hid_t), intent(in) :: loc
-      !> Dataset path.
       character(len=*), intent(in) :: name
-      !> Values.
-      real(dp), intent(in) :: x(:,:)
-      !> 0 on success.
+      class(*), intent(in) :: x(:,:)
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       integer :: err
-      call h5ltmake_dataset_double_f(loc, name, 2, shape(x, kind=hsize_t), x, err)
+      err = -1
+      select type (x)
+      type is (real(dp))
+         call h5ltmake_dataset_double_f(loc, name, 2, shape(x, kind=hsize_t), x, err)
+      type is (integer)
+         call h5ltmake_dataset_int_f(loc, name, 2, shape(x, kind=hsize_t), x, err)
+      end select
       call h5io_check(err, 'cannot write the dataset', name, stat, errmsg)
-   end subroutine write_real_2d
-
-   !> Writes the integer dataset `name` of i(:).
-   subroutine write_int_1d(loc, name, i, stat, errmsg)
-      !> File or group the path starts from.
-      integer(hid_t), intent(in) :: loc
-      !> Dataset path.
-      character(len=*), intent(in) :: name
-      !> Values.
-      integer, intent(in) :: i(:)
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      integer :: err
-      call h5ltmake_dataset_int_f(loc, name, 1, shape(i, kind=hsize_t), i, err)
-      call h5io_check(err, 'cannot write the dataset', name, stat, errmsg)
-   end subroutine write_int_1d
-
-   !> Writes the integer dataset `name` of i(:,:) (C order: i[n2, n1]).
-   subroutine write_int_2d(loc, name, i, stat, errmsg)
-      !> File or group the path starts from.
-      integer(hid_t), intent(in) :: loc
-      !> Dataset path.
-      character(len=*), intent(in) :: name
-      !> Values.
-      integer, intent(in) :: i(:,:)
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      integer :: err
-      call h5ltmake_dataset_int_f(loc, name, 2, shape(i, kind=hsize_t), i, err)
-      call h5io_check(err, 'cannot write the dataset', name, stat, errmsg)
-   end subroutine write_int_2d
+   end subroutine write_2d
 
    !> Overwrites the whole existing real dataset `name` with x(:), which must
    !> have its size.
    subroutine h5io_rewrite(loc, name, x, stat, errmsg)
-      !> File or group the path starts from.
       integer(hid_t), intent(in) :: loc
-      !> Dataset path.
       character(len=*), intent(in) :: name
-      !> Values.
       real(dp), intent(in) :: x(:)
-      !> 0 on success.
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       integer(hid_t) :: did
       integer :: err
@@ -409,72 +297,45 @@ contains
       call h5dclose_f(did, err)
    end subroutine h5io_rewrite
 
-
-
-
-
-
    ! ------------------------------------------------------------ series
 
    !> Creates the empty extendible rank-1 dataset `name` of reals or integers
    !> (kind = h5io_real or h5io_integer), stored in chunks of `chunk` entries,
-   !> and returns it open.
+   !> and returns it open as did (close with h5io_close_dataset).
    subroutine h5io_create_series(loc, name, kind, chunk, did, stat, errmsg)
-      !> File or group the path starts from.
       integer(hid_t), intent(in) :: loc
-      !> Dataset path.
       character(len=*), intent(in) :: name
-      !> h5io_real or h5io_integer.
-      integer, intent(in) :: kind
-      !> Entries per chunk (>= 1).
-      integer, intent(in) :: chunk
-      !> Id of the open dataset (close with h5io_close_dataset).
+      integer, intent(in) :: kind, chunk
       integer(hid_t), intent(out) :: did
-      !> 0 on success.
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       integer(hid_t) :: tid
-      if (kind == h5io_integer) then
-         tid = H5T_NATIVE_INTEGER
-      else
-         tid = H5T_NATIVE_DOUBLE
-      end if
+      tid = merge(H5T_NATIVE_INTEGER, H5T_NATIVE_DOUBLE, kind == h5io_integer)
       call create_extendible(loc, name, tid, [0_hsize_t], [int(chunk, hsize_t)], did, stat, errmsg)
    end subroutine h5io_create_series
 
    !> Creates the empty extendible real dataset `name` of shape (nrow, 0),
-   !> growing by whole columns of nrow values (one chunk each), and returns it open.
+   !> growing by whole columns of nrow values (one chunk each), and returns
+   !> it open as did.
    subroutine h5io_create_columns(loc, name, nrow, did, stat, errmsg)
-      !> File or group the path starts from.
       integer(hid_t), intent(in) :: loc
-      !> Dataset path.
       character(len=*), intent(in) :: name
-      !> Values per column (>= 1).
       integer, intent(in) :: nrow
-      !> Id of the open dataset (close with h5io_close_dataset).
       integer(hid_t), intent(out) :: did
-      !> 0 on success.
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       call create_extendible(loc, name, H5T_NATIVE_DOUBLE, [int(nrow, hsize_t), 0_hsize_t], &
          [int(nrow, hsize_t), 1_hsize_t], did, stat, errmsg)
    end subroutine h5io_create_columns
 
-   !> Creates a chunked dataset of initial shape dims whose last dimension is unlimited.
+   !> Creates a chunked dataset of element type tid, initial shape dims and
+   !> chunks chunk (Fortran order), its last dimension unlimited.
    subroutine create_extendible(loc, name, tid, dims, chunk, did, stat, errmsg)
-      !> File or group the path starts from; element type.
       integer(hid_t), intent(in) :: loc, tid
-      !> Dataset path.
       character(len=*), intent(in) :: name
-      !> Initial dimensions and chunk dimensions, Fortran order.
       integer(hsize_t), intent(in) :: dims(:), chunk(:)
-      !> Id of the open dataset.
       integer(hid_t), intent(out) :: did
-      !> 0 on success.
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       integer(hsize_t) :: maxdims(size(dims))
       integer(hid_t) :: sid, plist
@@ -498,59 +359,41 @@ contains
       call h5sclose_f(sid, err)
    end subroutine create_extendible
 
-   !> Appends the real x to the rank-1 series did.
-   subroutine append_real(did, x, stat, errmsg)
-      !> Open extendible dataset.
+   !> Appends the value x, real(dp) or integer, to the rank-1 series did.
+   subroutine append_value(did, x, stat, errmsg)
       integer(hid_t), intent(in) :: did
-      !> Value.
-      real(dp), intent(in), target :: x
-      !> 0 on success.
+      class(*), intent(in), target :: x
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
-      call grow_and_write(did, H5T_NATIVE_DOUBLE, 1, c_loc(x), stat, errmsg)
-   end subroutine append_real
+      select type (x)
+      type is (real(dp))
+         call grow_and_write(did, H5T_NATIVE_DOUBLE, 1, c_loc(x), stat, errmsg)
+      type is (integer)
+         call grow_and_write(did, H5T_NATIVE_INTEGER, 1, c_loc(x), stat, errmsg)
+      class default
+         call h5io_fail('a series holds real(dp) or integer values', '', stat, errmsg)
+      end select
+   end subroutine append_value
 
-   !> Appends the integer i to the rank-1 series did.
-   subroutine append_int(did, i, stat, errmsg)
-      !> Open extendible dataset.
-      integer(hid_t), intent(in) :: did
-      !> Value.
-      integer, intent(in), target :: i
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-      call grow_and_write(did, H5T_NATIVE_INTEGER, 1, c_loc(i), stat, errmsg)
-   end subroutine append_int
-
-   !> Appends the column x(:) (its size the dataset's nrow) to the rank-2 series did.
+   !> Appends the column x(:) (of the dataset's nrow values) to the rank-2 series did.
    subroutine append_column(did, x, stat, errmsg)
-      !> Open extendible dataset.
       integer(hid_t), intent(in) :: did
-      !> Values.
       real(dp), intent(in) :: x(:)
-      !> 0 on success.
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
-      real(dp), target :: buf(size(x))
+      real(dp), allocatable, target :: buf(:)
       buf = x
       call grow_and_write(did, H5T_NATIVE_DOUBLE, 2, c_loc(buf), stat, errmsg)
    end subroutine append_column
 
-   !> Extends the last dimension of did by one and writes buf into the new
-   !> slice (one value for rank 1, one column for rank 2).
+   !> Extends the last dimension of did by one and writes the values at buf
+   !> (memory type tid) into the new slice: one value for rank 1, one column
+   !> for rank 2.
    subroutine grow_and_write(did, tid, rank, buf, stat, errmsg)
-      !> Open extendible dataset; memory type of the values.
       integer(hid_t), intent(in) :: did, tid
-      !> Rank of the dataset (1 or 2).
       integer, intent(in) :: rank
-      !> Address of the new value or column.
       type(c_ptr), intent(in) :: buf
-      !> 0 on success.
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       integer(hsize_t) :: dims(rank), maxdims(rank), start(rank), count(rank)
       integer(hid_t) :: fspace, mspace
@@ -583,11 +426,8 @@ contains
 
    !> Closes a dataset opened by h5io_create_series or h5io_create_columns.
    subroutine h5io_close_dataset(did, stat, errmsg)
-      !> Open dataset.
       integer(hid_t), intent(in) :: did
-      !> 0 on success.
       integer, intent(out) :: stat
-      !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       integer :: err
       call h5dclose_f(did, err)
@@ -596,15 +436,12 @@ contains
 
    ! ------------------------------------------------------------ messages
 
-   !> stat = 0 if err = 0, else failed and the message "what 'name'".
+   !> stat = 0 if HDF5's error code err is 0, else failed and the message
+   !> "what 'name'" (name '' for none).
    subroutine h5io_check(err, what, name, stat, errmsg)
-      !> HDF5's error code.
       integer, intent(in) :: err
-      !> What failed, and the object it failed on ('' for none).
       character(len=*), intent(in) :: what, name
-      !> 0, or failed.
       integer, intent(out) :: stat
-      !> Set on failure.
       character(len=*), intent(inout) :: errmsg
       if (err == 0) then
          stat = 0
@@ -615,11 +452,8 @@ contains
 
    !> stat = failed and the message "what 'name'" (or "what" without a name).
    subroutine h5io_fail(what, name, stat, errmsg)
-      !> What failed, and the object it failed on ('' for none).
       character(len=*), intent(in) :: what, name
-      !> Set to failed.
       integer, intent(out) :: stat
-      !> The message.
       character(len=*), intent(inout) :: errmsg
       stat = failed
       if (len(name) > 0) then
@@ -631,7 +465,6 @@ contains
 
    !> 'obj@name' for messages about attribute name of object obj.
    pure function h5io_attr_path(obj, name) result(text)
-      !> Object path and attribute name.
       character(len=*), intent(in) :: obj, name
       character(len=len(obj) + len(name) + 1) :: text
       text = obj//'@'//name

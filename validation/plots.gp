@@ -107,3 +107,18 @@ set xlabel "indentation (mm)"
 set ylabel "contact force (N)"
 set key top left
 plot d.'energy_loop.dat' u 1:2 w l lw 2 t "./impact history"
+
+# ---- check 10: the first contact against the modal solution
+set output o.'point_response.png'
+set title "Check 10: simply supported plate, linear, 243 g at 3 m/s: the first contact"
+set xlabel "time (μs)"
+set ylabel "contact force (N)"
+set key top right
+set xrange [0:420]
+set yrange [0:600]
+plot d.'point_response_modal.dat' u 1:2 w l lw 3 lc rgb "black" t "Navier modal solution, Hertz load", \
+     d.'point_response_converged_9x6_history.dat' u 1:2 w l lw 2 t "MITC9, Hertz load, quarter 9 x 6", \
+     d.'point_response_converged_36x24_history.dat' u 1:2 w l lw 2 dt 2 t "MITC9, Hertz load, quarter 36 x 24", \
+     d.'point_response_paper_9x6_history.dat' u 1:2 w l lw 2 t "2 x 2 shear, point force (the paper's), 9 x 6", \
+     d.'point_response_paper_36x24_history.dat' u 1:2 w l lw 2 dt 2 t "2 x 2 shear, point force (the paper's), 36 x 24"
+set autoscale

@@ -1198,7 +1198,7 @@ contains
             cells = [character(len=cw) :: cell(merge('converged: MITC9, Hertz load', 'the paper''s: 2x2, point     ', &
                im == 1)), cell(meshes(k)), num(fe(1, im, k), '(f9.2)'), num(fe(2, im, k)*1.0e6_dp, '(f8.1)'), &
                num(fe(3, im, k)*1.0e6_dp, '(f8.1)'), sci(d_peak), sci(d_end)]
-            if (fe(3, im, k) < 0.0_dp) cells(5) = 'does not end'
+            if (fe(3, im, k) < 0.0_dp) cells([5, 7]) = [character(len=cw) :: 'does not end', '–']
             call table_row(cells)
             if (im == 1 .and. k >= 2) then
                worst_peak = max(worst_peak, abs(d_peak))
