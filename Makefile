@@ -14,7 +14,7 @@ FC      := gfortran
 endif
 BUILD   := build
 FFLAGS  ?= -O2 -g
-FSTD    := -std=f2008 -Wall -fimplicit-none
+FSTD    := -std=f2008 -Wall -fimplicit-none -ffpe-summary=none
 LAPACK  ?= -llapack -lblas
 FC_ALL   = $(FC) $(FSTD) $(FFLAGS) -J$(BUILD) -I$(BUILD)
 

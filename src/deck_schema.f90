@@ -56,17 +56,17 @@ module deck_schema
    !> THE LIST. Paper's values as defaults where the paper gives one (Choi,
    !> Hong & Lee 1991: section 2.4, Tables 1-3); SI units.
    type(deck_var_t), parameter :: deck_vars(*) = [ &
-      deck_var_t('plate', 'a', kind_real, 'm', '0.15', '(0, inf)', 'plate length along x'), &
-      deck_var_t('plate', 'b', kind_real, 'm', '0.10', '(0, inf)', 'plate width along y'), &
-      deck_var_t('plate', 'h', kind_real, 'm', '0.0027', '(0, inf)', 'plate thickness'), &
-      deck_var_t('lamina', 'e1', kind_real, 'Pa', '120e9', '(0, inf)', &
+      deck_var_t('plate', 'a', kind_real, 'm', '0.15', '[1e-3, 100]', 'plate length along x'), &
+      deck_var_t('plate', 'b', kind_real, 'm', '0.10', '[1e-3, 100]', 'plate width along y'), &
+      deck_var_t('plate', 'h', kind_real, 'm', '0.0027', '[1e-6, 1]', 'plate thickness'), &
+      deck_var_t('lamina', 'e1', kind_real, 'Pa', '120e9', '[1e5, 1e18]', &
          'Young''s modulus along the fibres (Table 3)'), &
-      deck_var_t('lamina', 'e2', kind_real, 'Pa', '7.9e9', '(0, inf)', 'Young''s modulus across the fibres'), &
-      deck_var_t('lamina', 'g12', kind_real, 'Pa', '5.5e9', '(0, inf)', 'in-plane shear modulus'), &
-      deck_var_t('lamina', 'g13', kind_real, 'Pa', '5.5e9', '(0, inf)', 'transverse shear modulus, 1-3 plane'), &
-      deck_var_t('lamina', 'g23', kind_real, 'Pa', '2.63e9', '(0, inf)', 'transverse shear modulus, 2-3 plane'), &
-      deck_var_t('lamina', 'nu12', kind_real, '-', '0.30', '(0, inf)', 'major Poisson ratio'), &
-      deck_var_t('lamina', 'rho', kind_real, 'kg/m^3', '1580', '(0, inf)', 'density'), &
+      deck_var_t('lamina', 'e2', kind_real, 'Pa', '7.9e9', '[1e5, 1e18]', 'Young''s modulus across the fibres'), &
+      deck_var_t('lamina', 'g12', kind_real, 'Pa', '5.5e9', '[1e5, 1e18]', 'in-plane shear modulus'), &
+      deck_var_t('lamina', 'g13', kind_real, 'Pa', '5.5e9', '[1e5, 1e18]', 'transverse shear modulus, 1-3 plane'), &
+      deck_var_t('lamina', 'g23', kind_real, 'Pa', '2.63e9', '[1e5, 1e18]', 'transverse shear modulus, 2-3 plane'), &
+      deck_var_t('lamina', 'nu12', kind_real, '-', '0.30', '(0, 10]', 'major Poisson ratio'), &
+      deck_var_t('lamina', 'rho', kind_real, 'kg/m^3', '1580', '[1, 1e5]', 'density'), &
       deck_var_t('laminate', 'angles', kind_reals, 'deg', &
          '0, 45, 0, -45, 0, 0, 45, 0, -45, 0, 0, -45, 0, 45, 0, 0, -45, 0, 45, 0', '', &
          'ply angles from x, listed from z = -h/2 (the impacted face) to +h/2, all plies h/n thick ' &
@@ -77,24 +77,24 @@ module deck_schema
          // 'int Qbar55 dz; not given: Whitney''s method'), &
       deck_var_t('laminate', 'bend_twist', kind_word, '-', 'auto', 'auto | drop | keep', 'D16, D26: ''auto'' ' &
          // '(dropped on a quarter, half or strip, section 3.1), ''drop'' (everywhere), ''keep'' (full plate only)'), &
-      deck_var_t('impactor', 'mass', kind_real, 'kg', '0.243', '(0, inf)', 'impactor mass'), &
-      deck_var_t('impactor', 'velocity', kind_real, 'm/s', '3.0', '(0, inf)', 'impact velocity, towards the plate'), &
-      deck_var_t('impactor', 'diameter', kind_real, 'm', '0.0127', '(0, inf)', &
+      deck_var_t('impactor', 'mass', kind_real, 'kg', '0.243', '[1e-6, 1e4]', 'impactor mass'), &
+      deck_var_t('impactor', 'velocity', kind_real, 'm/s', '3.0', '(0, 1e3]', 'impact velocity, towards the plate'), &
+      deck_var_t('impactor', 'diameter', kind_real, 'm', '0.0127', '[1e-5, 10]', &
          'diameter of the hemispherical nose (the law''s k belongs to it)'), &
       deck_var_t('impactor', 'x0', kind_real, 'm', '0', '(-inf, inf)', 'impact point along x, from the plate centre'), &
       deck_var_t('impactor', 'y0', kind_real, 'm', '0', '(-inf, inf)', 'impact point along y, from the plate centre'), &
-      deck_var_t('contact', 'k', kind_real, 'N/m^1.5', '1.413e9', '(0, inf)', &
+      deck_var_t('contact', 'k', kind_real, 'N/m^1.5', '1.413e9', '[1e3, 1e15]', &
          'contact stiffness, F = k alpha^1.5 (eq. 11, Table 2)'), &
-      deck_var_t('contact', 'q', kind_real, '-', '2.5', '(0, inf)', 'unloading exponent'), &
-      deck_var_t('contact', 'alpha_p', kind_real, 'm', '1.667e-5', '[0, inf)', &
+      deck_var_t('contact', 'q', kind_real, '-', '2.5', '(0, 10]', 'unloading exponent'), &
+      deck_var_t('contact', 'alpha_p', kind_real, 'm', '1.667e-5', '[0, 1e-2]', &
          'critical indentation, beyond which it is permanent'), &
       deck_var_t('contact', 'beta', kind_real, '-', '0.094', '[0, 1)', &
          'permanent indentation alpha0 = beta (alpha_m - alpha_p) (eq. 12)'), &
       deck_var_t('contact', 'load', kind_word, '-', 'hertz', 'hertz | point', 'how the force enters the plate: ' &
          // '''hertz'' (Hertz''s pressure over the contact disc a = sqrt(R alpha)) or ''point'' (eq. 10)'), &
-      deck_var_t('mesh', 'nx', kind_integer, '-', '9', '[1, inf)', 'elements along x of the domain (with domain ' &
+      deck_var_t('mesh', 'nx', kind_integer, '-', '9', '[1, 10000]', 'elements along x of the domain (with domain ' &
          // '''auto'': of the quarter, doubled across each centre line the domain spans)'), &
-      deck_var_t('mesh', 'ny', kind_integer, '-', '6', '[1, inf)', 'elements along y, likewise'), &
+      deck_var_t('mesh', 'ny', kind_integer, '-', '6', '[1, 10000]', 'elements along y, likewise'), &
       deck_var_t('mesh', 'domain', kind_word, '-', 'auto', 'auto | quarter | half | full | strip', &
          '''auto'' (the smallest domain the scene allows), ''quarter'', ''half'', ''full'' or ''strip'''), &
       deck_var_t('mesh', 'average_bend_twist', kind_logical, '-', '.false.', '', &
@@ -114,8 +114,8 @@ module deck_schema
          'the analysis: ''impact'' (the paper''s), ''static'', ''modes'' or ''pressure'' (&load held from t = 0)'), &
       deck_var_t('analysis', 'theory', kind_word, '-', 'nonlinear', 'linear | nonlinear | auto', &
          '''linear'', ''nonlinear'' (von Karman) or ''auto'' (from the scene''s deflection estimate)'), &
-      deck_var_t('analysis', 'dt', kind_real, 's', '2.5e-6', '(0, inf)', 'time step'), &
-      deck_var_t('analysis', 't_end', kind_real, 's', '3.0e-3', '(0, inf)', 'end time'), &
+      deck_var_t('analysis', 'dt', kind_real, 's', '2.5e-6', '[1e-10, 1e-2]', 'time step'), &
+      deck_var_t('analysis', 't_end', kind_real, 's', '3.0e-3', '(0, 10]', 'end time'), &
       deck_var_t('analysis', 'cr1', kind_real, '-', '2.0e-3', '(0, 1)', &
          'contact-force tolerance C_r1, eq. (17)'), &
       deck_var_t('analysis', 'cr2', kind_real, '-', '1.0e-7', '(0, 1)', &
@@ -125,9 +125,9 @@ module deck_schema
          // 'each eq. (19) iteration'), &
       deck_var_t('analysis', 'storage', kind_word, '-', 'band', 'band | skyline', &
          '''band'' (LAPACK dpbtrf/dpbtrs) or ''skyline'' (the code''s own LDL^T)'), &
-      deck_var_t('analysis', 'max_contact_iter', kind_integer, '-', '50', '[1, inf)', &
+      deck_var_t('analysis', 'max_contact_iter', kind_integer, '-', '50', '[1, 10000]', &
          'contact iterations per step, at most'), &
-      deck_var_t('analysis', 'max_nonlinear_iter', kind_integer, '-', '200', '[1, inf)', &
+      deck_var_t('analysis', 'max_nonlinear_iter', kind_integer, '-', '200', '[1, 100000]', &
          'eq. (19) iterations per plate solution, at most'), &
       deck_var_t('analysis', 'force_update', kind_word, '-', 'bracketed', 'bracketed | fixed_point | plain', &
          'update of the assumed contact force (scheme ''paper''): ''bracketed'' (regula falsi), ''fixed_point''' &
@@ -137,11 +137,11 @@ module deck_schema
       deck_var_t('load', 'kind', kind_word, '-', 'uniform', 'uniform | sinusoidal | central_force', &
          'load of the static and pressure analyses: ''uniform'', ''sinusoidal'' (the single Navier term) or ' &
          // '''central_force'''), &
-      deck_var_t('load', 'magnitude', kind_real, 'Pa or N', '1000', '(0, inf)', &
+      deck_var_t('load', 'magnitude', kind_real, 'Pa or N', '1000', '(0, 1e12]', &
          'q0, or the central force'), &
-      deck_var_t('load', 'increments', kind_integer, '-', '10', '[1, inf)', &
+      deck_var_t('load', 'increments', kind_integer, '-', '10', '[1, 100000]', &
          'load increments of a von Karman static analysis'), &
-      deck_var_t('modes', 'count', kind_integer, '-', '6', '[1, inf)', 'natural modes computed'), &
+      deck_var_t('modes', 'count', kind_integer, '-', '6', '[1, 1000]', 'natural modes computed'), &
       deck_var_t('modes', 'shapes', kind_logical, '-', '.true.', '', 'also the mode shapes'), &
       deck_var_t('output', 'prefix', kind_path, '-', 'out/impact', '', &
          'path prefix of the result files; its directory is created'), &

@@ -4,12 +4,32 @@
 !>
 !>  - make_directories: `mkdir -p` of a path's directories, by mkdir(2);
 !>  - path_problem: a path the program refuses to use (empty, control
-!>    characters).
+!>    characters);
+!>  - lock_file / unlock_file: an exclusive advisory lock (flock(2)) on a
+!>    file, held until unlocked or the process ends (the kernel releases it
+!>    then, even after a kill), so that two runs never write one file;
+!>  - rename_file: rename(2), which replaces a file by another in one step;
+!>  - truncate_file: truncate(2), which cuts a file to a length (a row
+!>    half written when the disk filled up);
+!>  - file_size: the length of a file as it is on disk, whatever a Fortran
+!>    unit still holds in its buffer (gfortran 12 reports neither a failed
+!>    write(2) under FLUSH nor the size on disk through INQUIRE on the unit);
+!>  - keep_file_size_errors: a write beyond the file-size limit (ulimit -f)
+!>    returns an error (EFBIG) instead of killing the process (SIGXFSZ), so
+!>    that the run can end cleanly and say so.
 module file_system
-   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_associated, &
+      c_funptr, c_intptr_t, c_int64_t, c_long
+   use, intrinsic :: iso_fortran_env, only: int64
    implicit none
    private
    public :: make_directories, parent_directory, path_problem
+   public :: file_lock_t, lock_file, unlock_file, keep_file_size_errors, rename_file, truncate_file, file_size
+
+   !> A lock taken by lock_file: the stream it holds open.
+   type :: file_lock_t
+      type(c_ptr) :: stream = c_null_ptr
+   end type file_lock_t
 
    interface
       !> int mkdir(const char *path, mode_t mode)
@@ -19,7 +39,73 @@ module file_system
          integer(c_int), value :: mode
          integer(c_int) :: r
       end function c_mkdir
+      !> FILE *fopen(const char *path, const char *mode)
+      function c_fopen(path, mode) bind(c, name='fopen') result(stream)
+         import :: c_char, c_ptr
+         character(kind=c_char), intent(in) :: path(*), mode(*)
+         type(c_ptr) :: stream
+      end function c_fopen
+      !> int fseek(FILE *stream, long offset, int whence)
+      function c_fseek(stream, offset, whence) bind(c, name='fseek') result(r)
+         import :: c_ptr, c_long, c_int
+         type(c_ptr), value :: stream
+         integer(c_long), value :: offset
+         integer(c_int), value :: whence
+         integer(c_int) :: r
+      end function c_fseek
+      !> long ftell(FILE *stream)
+      function c_ftell(stream) bind(c, name='ftell') result(r)
+         import :: c_ptr, c_long
+         type(c_ptr), value :: stream
+         integer(c_long) :: r
+      end function c_ftell
+      !> int fclose(FILE *stream)
+      function c_fclose(stream) bind(c, name='fclose') result(r)
+         import :: c_ptr, c_int
+         type(c_ptr), value :: stream
+         integer(c_int) :: r
+      end function c_fclose
+      !> int fileno(FILE *stream)
+      function c_fileno(stream) bind(c, name='fileno') result(fd)
+         import :: c_ptr, c_int
+         type(c_ptr), value :: stream
+         integer(c_int) :: fd
+      end function c_fileno
+      !> int rename(const char *old, const char *new)
+      function c_rename(old, new) bind(c, name='rename') result(r)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: old(*), new(*)
+         integer(c_int) :: r
+      end function c_rename
+      !> int truncate(const char *path, off_t length) (off_t: 64 bits)
+      function c_truncate(path, length) bind(c, name='truncate') result(r)
+         import :: c_int, c_char, c_int64_t
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int64_t), value :: length
+         integer(c_int) :: r
+      end function c_truncate
+      !> int flock(int fd, int operation)
+      function c_flock(fd, operation) bind(c, name='flock') result(r)
+         import :: c_int
+         integer(c_int), value :: fd, operation
+         integer(c_int) :: r
+      end function c_flock
+      !> sighandler_t signal(int signum, sighandler_t handler)
+      function c_signal(signum, handler) bind(c, name='signal') result(old)
+         import :: c_int, c_funptr
+         integer(c_int), value :: signum
+         type(c_funptr), value :: handler
+         type(c_funptr) :: old
+      end function c_signal
    end interface
+
+   !> fseek's whence: from the end of the file (<stdio.h>).
+   integer(c_int), parameter :: seek_end = 2
+   !> flock(2) operations (Linux, <sys/file.h>): exclusive, do not wait.
+   integer(c_int), parameter :: lock_ex = 2, lock_nb = 4
+   !> SIGXFSZ (Linux, <signal.h>) and SIG_IGN, the handler that ignores it.
+   integer(c_int), parameter :: sigxfsz = 25
+   integer(c_intptr_t), parameter :: sig_ign = 1
 
    !> Permissions of a directory created here, before the umask: rwxrwxrwx.
    integer(c_int), parameter :: dir_mode = int(o'777', c_int)
@@ -84,5 +170,79 @@ contains
          end if
       end do
    end function path_problem
+
+   !> Takes an exclusive lock on the file `path` (created empty if missing,
+   !> never truncated) without waiting: stat = 1 when another process holds
+   !> it (or the file cannot be opened), with the file named.
+   subroutine lock_file(path, lock, stat, errmsg)
+      character(len=*), intent(in) :: path          !< the file
+      type(file_lock_t), intent(out) :: lock        !< the lock, held until unlock_file
+      integer, intent(out) :: stat                  !< 0 when locked
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      integer(c_int) :: r
+      stat = 1
+      lock%stream = c_fopen(path // c_null_char, 'a' // c_null_char)
+      if (.not. c_associated(lock%stream)) then
+         errmsg = 'cannot open ' // path
+         return
+      end if
+      r = c_flock(c_fileno(lock%stream), ior(lock_ex, lock_nb))
+      if (r /= 0) then
+         errmsg = path // ' is being written by another run now (it is locked)'
+         r = c_fclose(lock%stream)
+         lock%stream = c_null_ptr
+         return
+      end if
+      stat = 0
+   end subroutine lock_file
+
+   !> Releases a lock taken by lock_file (nothing when none is held).
+   subroutine unlock_file(lock)
+      type(file_lock_t), intent(inout) :: lock      !< the lock
+      integer(c_int) :: r
+      if (.not. c_associated(lock%stream)) return
+      r = c_fclose(lock%stream)
+      lock%stream = c_null_ptr
+   end subroutine unlock_file
+
+   !> From now on a write past the process's file-size limit fails with
+   !> EFBIG, which the writer reports, instead of the signal SIGXFSZ, which
+   !> would kill the process with its files half written.
+   subroutine keep_file_size_errors()
+      type(c_funptr) :: old
+      old = c_signal(sigxfsz, transfer(sig_ign, old))
+   end subroutine keep_file_size_errors
+
+   !> Replaces the file `to` by `from` in one step (rename(2)).
+   subroutine rename_file(from, to, stat, errmsg)
+      character(len=*), intent(in) :: from, to      !< the paths
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      stat = int(c_rename(from // c_null_char, to // c_null_char))
+      if (stat /= 0) errmsg = 'cannot rename ' // from // ' to ' // to
+   end subroutine rename_file
+
+   !> Cuts the file `path` to `length` bytes (truncate(2)); stat /= 0 when
+   !> it cannot.
+   subroutine truncate_file(path, length, stat)
+      character(len=*), intent(in) :: path          !< the file
+      integer(int64), intent(in) :: length          !< its new length (bytes)
+      integer, intent(out) :: stat                  !< 0 on success
+      stat = int(c_truncate(path // c_null_char, int(length, c_int64_t)))
+   end subroutine truncate_file
+
+   !> The length of the file `path` on disk (bytes), -1 when it cannot be
+   !> opened: the end found by fseek/ftell on a stream of its own.
+   function file_size(path) result(bytes)
+      character(len=*), intent(in) :: path          !< the file
+      integer(int64) :: bytes
+      type(c_ptr) :: stream
+      integer(c_int) :: r
+      bytes = -1
+      stream = c_fopen(path // c_null_char, 'r' // c_null_char)
+      if (.not. c_associated(stream)) return
+      if (c_fseek(stream, 0_c_long, seek_end) == 0) bytes = int(c_ftell(stream), int64)
+      r = c_fclose(stream)
+   end function file_size
 
 end module file_system

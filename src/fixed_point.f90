@@ -332,8 +332,9 @@ contains
          ' iterations; eq. (18) ratio sum (G(D) - D)^2 / sum (G(D) - D_t)^2 = ', guard%ratio, &
          ' against C_r2 = ', guard%cr2, '; sum (G(D) - D)^2 = ', guard%res
       text = fp_state_text(guard%state) // trim(buf)
-      if (guard%mixing) text = text // '; fall-back (Anderson mixing) engaged at iteration ' // &
-         int_str(guard%mixing_from) // ' because ' // fp_state_text(guard%mixing_cause)
+      if (guard%mixing) text = text // '; the plain iteration had stopped at iteration ' // &
+         int_str(guard%mixing_from) // ', ' // fp_state_text(guard%mixing_cause) // &
+         ', and the fall-back (Anderson mixing) took over from there'
    end function fp_report
 
 

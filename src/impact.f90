@@ -14,7 +14,6 @@
 !> Usage: impact [options] [deck.nml]     (no deck: standard input; --help)
 program impact
    use, intrinsic :: iso_fortran_env, only: input_unit, output_unit, error_unit
-   use, intrinsic :: ieee_exceptions, only: ieee_set_flag, ieee_all
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t
    use input_deck, only: write_schema, write_deck_table
@@ -30,11 +29,13 @@ program impact
       newmark_update, impactor_moved
    use run_recorder, only: record_t, record_open, record_step, record_close
    use step_trace, only: trace_t, trace_parse, trace_step, trace_iteration
-   use run_report, only: echo_model, usage
+   use run_report, only: echo_model, usage, usage_line
    use build_info, only: code_version
-   use result_files, only: claim_results
+   use result_files, only: results_claim_t, result_suffixes, claim_results, release_results
    use fixed_point, only: fp_report
    use other_analyses, only: run_other_analysis
+   use program_exit, only: exit_program
+   use file_system, only: keep_file_size_errors
    implicit none
 
    type(deck_t) :: deck
@@ -47,6 +48,7 @@ program impact
    type(contact_iteration_t) :: cit
    type(record_t) :: rec
    type(trace_t) :: tr
+   type(results_claim_t) :: claim
    real(dp), allocatable :: mb(:), d_new(:)
    real(dp) :: t, cpu0, cpu1
    integer :: stat, step, nstep, ic
@@ -57,6 +59,7 @@ program impact
    ! Input data: the deck (a file, or standard input), the command line's
    ! settings over it; checked against the schema and echoed
    ! =====================================================================
+   call keep_file_size_errors()       ! past ulimit -f a write fails and the run says so
    call read_input()
    call cpu_time(cpu0)
 
@@ -72,6 +75,7 @@ program impact
    if (deck%analysis_kind /= 'impact') then
       if (.not. check_only) call run_other_analysis(deck, model, output_unit, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
+      call release_results(claim, discard=.false.)
       stop
    end if
 
@@ -188,8 +192,8 @@ contains
       call read_input_deck(opts, input_unit, deck, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
       tr%unit = output_unit;  tr%cr1 = deck%cr1;  tr%cr2 = deck%cr2
-      if (deck%analysis_kind == 'impact' .and. .not. check_only) then
-         call claim_results(deck, [character(len=16) :: '_history.dat', '_summary.dat', '.h5'], stat, errmsg)
+      if (.not. check_only) then
+         call claim_results(deck, result_suffixes(deck%analysis_kind), claim, stat, errmsg)
          if (stat /= 0) call fail(errmsg)
       end if
    end subroutine read_input
@@ -208,8 +212,8 @@ contains
       call cpu_time(cpu1)
       call record_close(rec, deck, model, solver, status, hist, imp, cpu1 - cpu0, output_unit, stat, errmsg)
       if (stat /= 0) write (error_unit, '(a)') 'impact: error: ' // trim(errmsg)
-      call ieee_set_flag(ieee_all, .false.)     ! the messages say what went wrong: no note on the flags
-      if (exit_code /= 0 .or. stat /= 0) error stop 1
+      call release_results(claim, discard=.false.)
+      if (exit_code /= 0 .or. stat /= 0) call exit_program(1)
       stop
    end subroutine finish
 
@@ -227,20 +231,21 @@ contains
       call finish(trim(where), 1)
    end subroutine fail_in_run
 
-   !> Stops before any result exists: one line, exit status 1.
+   !> Stops before any result exists: one line, exit status 1; a result
+   !> file the claim created, still empty, is removed.
    subroutine fail(message)
       character(len=*), intent(in) :: message
       write (error_unit, '(a)') 'impact: error: ' // trim(message)
-      call ieee_set_flag(ieee_all, .false.)
-      error stop 1
+      call release_results(claim, discard=.true.)
+      call exit_program(1)
    end subroutine fail
 
-   !> A wrong command line: the message and the usage, exit status 1.
+   !> A wrong command line: the message and the usage's line, exit status 1.
    subroutine bad_usage(message)
       character(len=*), intent(in) :: message
-      write (error_unit, '(a)') 'impact: error: ' // message
-      call usage(error_unit)
-      error stop 1
+      write (error_unit, '(a)') 'impact: error: ' // trim(message)
+      write (error_unit, '(a)') usage_line // '      (impact --help: the options)'
+      call exit_program(1)
    end subroutine bad_usage
 
 end program impact

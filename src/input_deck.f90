@@ -19,7 +19,9 @@
 module input_deck
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: dp, msg_len
-   use number_text, only: real_str, int_str
+   use number_text, only: real_str, real_short, int_str
+   use system_limits, only: physical_memory, free_disk_space, file_size_limit
+   use file_system, only: path_problem
    use deck_text, only: item_t, group_text_t, read_deck_text, lower_case
    use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, find_var, var_key, &
       kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names, &
@@ -37,6 +39,8 @@ module input_deck
    integer, parameter :: echo_width = 100, group_column = 11
    !> Smallest contact-force tolerance C_r1: 100 eps, the rounding of the force.
    real(dp), parameter :: min_cr1 = 100.0_dp*epsilon(1.0_dp)
+   !> Bytes in a GiB, for the messages of the size checks.
+   real(dp), parameter :: mib = 1024.0_dp**2, gib = 1024.0_dp**3
 
 contains
 
@@ -326,7 +330,6 @@ contains
       character(len=*), intent(inout) :: errmsg     !< the message on failure
       type(value_t) :: v
       integer :: iv, n, i
-      real(dp) :: t_end_steps
 
       stat = 0
       if (.not. allocated(deck%source)) deck%source = '<deck>'
@@ -397,16 +400,62 @@ contains
          'must be less than t_end = ' // real_str(deck%t_end))
       call need(deck%cr1 >= min_cr1, 'analysis', 'cr1', real_str(deck%cr1), 'must be at least ' &
          // real_str(min_cr1) // ' (100 eps): eq. (17) cannot be met below the rounding of the force')
-      if (stat == 0) then
-         t_end_steps = deck%t_end/deck%dt
-         call need(t_end_steps < real(huge(1), dp), 'analysis', 'dt', real_str(deck%dt), &
-            'gives t_end/dt = ' // real_str(t_end_steps) // ' time steps, more than ' // int_str(huge(1)))
-      end if
+      if (stat == 0) call check_needs()
       if (deck%analysis_kind == 'modes') call need(deck%storage == 'band', 'analysis', 'storage', &
          "'" // deck%storage // "'", "kind = 'modes' needs storage = 'band' (LAPACK's banded eigensolver dsbgvx)")
       call need(len(deck%prefix) > 0, 'output', 'prefix', "''", 'must not be empty')
 
    contains
+
+      !> What the run would need, before any of it is allocated or written
+      !> (README, "Stability, bad input, nothing lost"): at most max_steps
+      !> time steps; the matrices' memory, estimated from the mesh, within
+      !> the machine's; the results' size within the free space where they
+      !> go. The estimates: nodes (2 ex + 1)(2 ey + 1) for ex x ey 9-node
+      !> elements (ex = 2 nx when the domain may be doubled across a centre
+      !> line), 5 freedoms a node, half-bandwidth 10 (2 min(ex, ey) + 1),
+      !> three band matrices (K_L, M, the factored K_L + 4/dt^2 M); a
+      !> history row of 230 bytes in the text file and 130 in <prefix>.h5,
+      !> a field snapshot of 8 bytes a freedom, and in <prefix>.h5 64 KiB
+      !> and four more snapshots for the deck, the mesh and the peak state.
+      subroutine check_needs()
+         real(dp), parameter :: max_steps = 1.0e8_dp, text_row_bytes = 230.0_dp, row_bytes = 360.0_dp, &
+                                band_matrices = 3.0_dp, h5_fixed_bytes = 65536.0_dp
+         real(dp) :: steps, ex, ey, neq, kd, memory, machine, output, room, biggest
+         steps = deck%t_end/deck%dt
+         call need(steps <= max_steps, 'analysis', 'dt', real_str(deck%dt), 'gives t_end/dt = ' &
+            // real_short(steps) // ' time steps, more than the limit of ' // real_short(max_steps) &
+            // ' (a longer dt, or a shorter t_end)')
+         if (stat /= 0) return
+         ex = real(deck%nx, dp);  ey = real(deck%ny, dp)
+         if (deck%domain == 'auto' .or. deck%domain == 'half') then
+            ex = 2.0_dp*ex;  ey = 2.0_dp*ey
+         end if
+         neq = 5.0_dp*(2.0_dp*ex + 1.0_dp)*(2.0_dp*ey + 1.0_dp)
+         kd = 10.0_dp*(2.0_dp*min(ex, ey) + 1.0_dp)
+         memory = band_matrices*neq*(kd + 1.0_dp)*8.0_dp
+         machine = physical_memory()
+         if (machine > 0.0_dp) call need(memory < machine, 'mesh', 'nx', int_str(deck%nx), 'with ny = ' &
+            // int_str(deck%ny) // ' the model would need about ' // real_short(memory/gib) // ' GiB of memory (' &
+            // real_short(neq) // ' equations), more than this machine''s ' // real_short(machine/gib) &
+            // ' GiB: a coarser mesh, or a graded one (&mesh grading)')
+         if (stat /= 0 .or. deck%analysis_kind == 'modes' .or. deck%analysis_kind == 'static') return
+         output = (steps/real(deck%every, dp) + 1.0_dp)*row_bytes
+         if (deck%hdf5 .and. deck%analysis_kind == 'impact') output = output + h5_fixed_bytes &
+            + (steps/real(deck%fields_every, dp) + 5.0_dp)*neq*8.0_dp
+         biggest = max(output - (steps/real(deck%every, dp) + 1.0_dp)*text_row_bytes, &
+                       (steps/real(deck%every, dp) + 1.0_dp)*text_row_bytes)
+         room = file_size_limit()
+         if (room > 0.0_dp) call need(biggest < room, 'output', 'every', int_str(deck%every), &
+            'with fields_every = ' // int_str(deck%fields_every) // ' a result file would reach about ' &
+            // real_short(biggest/mib) // ' MiB, more than the ' // real_short(room/mib) // ' MiB this process ' &
+            // 'may write to one file (ulimit -f): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
+         room = free_disk_space(deck%prefix)
+         if (room > 0.0_dp) call need(output < room, 'output', 'every', int_str(deck%every), 'with fields_every = ' &
+            // int_str(deck%fields_every) // ' the results would take about ' // real_short(output/gib) &
+            // ' GiB, more than the ' // real_short(room/gib) // ' GiB free where they go (prefix ''' &
+            // deck%prefix // '''): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
+      end subroutine check_needs
 
       !> Fails with "<deck>: &group: name = value: what" unless ok (the first failure wins).
       subroutine need(ok, group, name, value, what)
@@ -436,6 +485,8 @@ contains
          case (kind_path)
             call need(len(v%s) <= max_path_len, trim(e%group), trim(e%name), quoted_cut(v%s), &
                'longer than ' // int_str(max_path_len) // ' characters')
+            if (len(v%s) > 0) call need(len(path_problem(v%s)) == 0, trim(e%group), trim(e%name), &
+               quoted_cut(v%s), path_problem(v%s))
          end select
       end subroutine check_range
 
@@ -689,15 +740,19 @@ contains
       text = quoted_cut(text)
    end function items_text
 
-   !> text, cut short after max_quoted characters.
+   !> text, cut short after max_quoted characters, its control characters shown as '?'.
    pure function quoted_cut(text) result(cut)
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: cut
+      integer :: k
       if (len(text) > max_quoted) then
          cut = text(:max_quoted) // '...'
       else
          cut = text
       end if
+      do k = 1, len(cut)          ! a control character would break the message's one line
+         if (iachar(cut(k:k)) < 32 .or. iachar(cut(k:k)) == 127) cut(k:k) = '?'
+      end do
    end function quoted_cut
 
    !> The words of a range 'a | b | c' as 'a b c'.

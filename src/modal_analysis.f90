@@ -35,7 +35,7 @@ module modal_analysis
    use deck_schema, only: deck_t
    use plate_model, only: model_t, gather_element
    use global_matrix, only: global_matvec
-   use result_files, only: claim_results, open_columns
+   use result_files, only: open_columns
    use mesh, only: ndof_node
    implicit none
    private
@@ -169,8 +169,6 @@ contains
       integer :: u, j, k
 
       report = ''
-      call claim_results(deck, [character(len=20) :: '_modes.dat', '_mode_shapes.dat'], stat, errmsg)
-      if (stat /= 0) return
       call modal_solve(model, deck%mode_count, deck%mode_shapes, res, stat, errmsg)
       if (stat /= 0) return
 

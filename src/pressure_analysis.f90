@@ -20,6 +20,7 @@
 !> Results: `<prefix>_pressure_history.dat`, one row per output step
 !> (`&output every`).
 module pressure_analysis
+   use number_text, only: int_str
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t
    use plate_model, only: model_t, centre_deflection, plate_kinetic_energy, &
@@ -27,7 +28,7 @@ module pressure_analysis
    use newmark, only: newmark_t, newmark_init, newmark_predictor, newmark_update
    use global_matrix, only: global_matrix_t, global_copy, global_factor, global_solve, global_matvec
    use analysis_support, only: assemble_load
-   use result_files, only: claim_results, open_columns
+   use result_files, only: open_columns
    use plate_solver, only: solver_t, solver_init, plate_solve
    use mesh, only: describe_equation
    implicit none
@@ -96,7 +97,7 @@ contains
          solves0 = solver%solves
          call plate_solve(solver, model, rhs, d, d_new, converged, stat, errmsg)
          if (stat /= 0) then
-            write (errmsg, '(a,i0,a)') 'pressure: step ', step, ': ' // trim(errmsg)
+            errmsg = 'pressure: step ' // int_str(step) // ': ' // trim(errmsg)
             return
          end if
          if (.not. converged) res%unconverged = res%unconverged + 1
@@ -129,8 +130,6 @@ contains
       integer :: u, step, nstep, peak
 
       report = ''
-      call claim_results(deck, [character(len=24) :: '_pressure_history.dat'], stat, errmsg)
-      if (stat /= 0) return
       allocate (f(model%msh%neq))
       call assemble_load(deck, model, f, stat, errmsg)
       if (stat /= 0) return

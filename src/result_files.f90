@@ -9,15 +9,21 @@
 !> then the rows. The summary: 'key = value' lines after the echo, the unit
 !> in the key's name (peak_force_N).
 !>
-!> Nothing lost: before any work a run claims its files (claim_results):
-!> it creates the prefix's directories (by the C library, no shell), and
-!> refuses to start when one of its files exists, the results of another
-!> run, unless &output overwrite = .true. (or impact --overwrite).
+!> Nothing lost: before any work a run claims its files (claim_results,
+!> the list of each analysis in result_suffixes): it creates the prefix's
+!> directories (by the C library, no shell), refuses to start when one of
+!> its files exists, the results of another run, unless &output overwrite
+!> = .true. (or impact --overwrite), creates its first file exclusively
+!> (of two runs started together with one prefix, one wins, the other
+!> stops before it writes anything) and holds a lock on it until it ends
+!> (two runs that both overwrite cannot write at once either).
 module result_files
+   use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t
    use input_deck, only: echo_deck
-   use file_system, only: make_directories, parent_directory, path_problem
+   use file_system, only: make_directories, parent_directory, path_problem, file_lock_t, lock_file, unlock_file, &
+      rename_file, file_size
    implicit none
    private
    public :: column_t, history_columns, nhist
@@ -25,7 +31,8 @@ module result_files
              col_ke_impactor, col_ke_plate, col_strain_energy, col_contact_work, col_contact_energy, &
              col_energy_error, col_branch, col_contact_iter, col_solves
    public :: summary_item_t, summary_real, summary_integer, summary_text
-   public :: claim_results, open_columns, write_history_row, write_summary_file
+   public :: results_claim_t, result_suffixes, claim_results, release_results
+   public :: open_columns, write_history_row, reserve_summary, write_summary_file
 
    !> One column of the history.
    type :: column_t
@@ -70,6 +77,21 @@ module result_files
          'contact-force iterations of the step, eq. (17)'), &
       column_t('nonlinear_iter', 'nonlinear_iter', '-', '-', 1.0_dp, .true., 'plate solutions of the step, eq. (19)') ]
 
+   !> A run's hold on its result files (claim_results).
+   type :: results_claim_t
+      type(file_lock_t) :: lock                    !< the lock on the first file
+      character(len=:), allocatable :: first       !< the first file's path
+      logical :: created = .false.                 !< the claim created it (empty)
+   end type results_claim_t
+
+   !> Bytes reserved for the summary before a run (reserve_summary): it is
+   !> a few kilobytes.
+   integer, parameter :: summary_reserve = 65536
+
+   !> Characters of a history row (its format in write_history_row): the
+   !> time, twelve reals and three integers.
+   integer, parameter :: history_row_len = 16 + 12*16 + 3*6
+
    !> Kinds of summary item.
    integer, parameter :: item_real = 1, item_integer = 2, item_text = 3
 
@@ -87,13 +109,28 @@ contains
 
    ! ============================================================ claiming
 
+   !> The result files of an analysis (&analysis kind), after the prefix;
+   !> the first is the one a run claims and locks.
+   pure function result_suffixes(analysis_kind) result(list)
+      character(len=*), intent(in) :: analysis_kind   !< 'impact', 'static', 'modes' or 'pressure'
+      character(len=24), allocatable :: list(:)
+      select case (analysis_kind)
+      case ('static');   list = [character(len=24) :: '_static.dat', '_deflection.dat']
+      case ('modes');    list = [character(len=24) :: '_modes.dat', '_mode_shapes.dat']
+      case ('pressure'); list = [character(len=24) :: '_pressure_history.dat']
+      case default;      list = [character(len=24) :: '_history.dat', '_summary.dat', '.h5']
+      end select
+   end function result_suffixes
+
    !> Before any work: the prefix is a usable path, its directories exist
    !> (created), no result file of this run exists unless the deck says
-   !> &output overwrite = .true., and the first one can be written. Messages
-   !> name the deck, &output and prefix.
-   subroutine claim_results(deck, suffixes, stat, errmsg)
+   !> &output overwrite = .true.; then the first file is created (exclusively
+   !> when it must not exist) and locked for the run. Messages name the
+   !> deck, &output and prefix.
+   subroutine claim_results(deck, suffixes, claim, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< effective deck (prefix, overwrite)
       character(len=*), intent(in) :: suffixes(:)   !< the run's file names after the prefix
+      type(results_claim_t), intent(out) :: claim   !< the claim, held until release_results
       integer, intent(out) :: stat                  !< 0 when the run may write its results
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=:), allocatable :: head, path, why
@@ -123,18 +160,42 @@ contains
             return
          end if
       end do files
-      ! -- the first file can be written (an existing one is left as it is)
-      path = deck%prefix // trim(suffixes(1))
-      inquire (file=path, exist=exists)
-      if (exists) then
-         open (newunit=u, file=path, status='old', action='write', position='append', iostat=stat, iomsg=iomsg)
-         if (stat == 0) close (u, status='keep')
-      else
-         open (newunit=u, file=path, status='new', action='write', iostat=stat, iomsg=iomsg)
-         if (stat == 0) close (u, status='delete')
+      claim%first = deck%prefix // trim(suffixes(1))
+      if (.not. deck%overwrite) then
+         ! status = 'new' creates the file exclusively (O_EXCL): of two runs, one does
+         open (newunit=u, file=claim%first, status='new', action='write', iostat=stat, iomsg=iomsg)
+         if (stat /= 0) then
+            inquire (file=claim%first, exist=exists)
+            errmsg = head // 'cannot write ' // claim%first // ': ' // trim(iomsg)
+            if (exists) errmsg = head // claim%first // ' was just created by another run with the same ' &
+               // 'prefix: choose another prefix'
+            return
+         end if
+         close (u)
+         claim%created = .true.
       end if
-      if (stat /= 0) errmsg = head // 'cannot write ' // path // ': ' // trim(iomsg)
+      call lock_file(claim%first, claim%lock, stat, iomsg)
+      if (stat /= 0) errmsg = head // trim(iomsg) // ': choose another prefix, or wait for that run to end'
    end subroutine claim_results
+
+   !> Ends a claim: the lock is released; with `discard`, the first file is
+   !> removed when the claim created it and nothing has been written to it
+   !> (a run that failed before its results began leaves nothing behind).
+   subroutine release_results(claim, discard)
+      type(results_claim_t), intent(inout) :: claim  !< the claim
+      logical, intent(in) :: discard                 !< remove the first file if still as created
+      integer :: u, ios
+      integer(int64) :: bytes
+      if (discard .and. claim%created) then
+         inquire (file=claim%first, size=bytes)
+         if (bytes == 0) then
+            open (newunit=u, file=claim%first, status='old', iostat=ios)
+            if (ios == 0) close (u, status='delete')
+         end if
+      end if
+      call unlock_file(claim%lock)
+      claim%created = .false.
+   end subroutine release_results
 
    ! ======================================================== column files
 
@@ -175,13 +236,28 @@ contains
 
    !> One row of the history, values in SI in the order of history_columns,
    !> written in the file's units; flushed.
-   subroutine write_history_row(unit, values, stat)
+   subroutine write_history_row(unit, path, values, bytes, stat, iomsg)
       integer, intent(in) :: unit                 !< the history file
+      character(len=*), intent(in) :: path        !< its path
       real(dp), intent(in) :: values(nhist)       !< the row, SI
+      integer(int64), intent(inout) :: bytes      !< the file's length on disk before the row, then after it
       integer, intent(out) :: stat                !< 0, or the write's iostat
-      write (unit, '(f16.4, 12es16.7e3, 3i6)', iostat=stat) values(1)*history_columns(1)%scale, &
+      character(len=*), intent(inout) :: iomsg    !< the run-time's message on failure
+      character(len=history_row_len) :: line
+      integer(int64) :: after
+      write (line, '(f16.4, 12es16.7e3, 3i6)') values(1)*history_columns(1)%scale, &
          values(2:13)*history_columns(2:13)%scale, nint(values(14:16))
-      if (stat == 0) flush (unit, iostat=stat)
+      write (unit, '(a)', iostat=stat, iomsg=iomsg) line
+      if (stat == 0) flush (unit, iostat=stat, iomsg=iomsg)
+      if (stat /= 0) return
+      ! gfortran 12's FLUSH does not report a failed write(2): the length on disk does
+      after = file_size(path)
+      if (after /= bytes + history_row_len + 1) then
+         stat = 1
+         iomsg = 'the row did not reach the disk (a full disk, or the file-size limit)'
+         return
+      end if
+      bytes = after
    end subroutine write_history_row
 
    ! ============================================================= summary
@@ -236,6 +312,32 @@ contains
       call move_alloc(grown, items)
    end subroutine append
 
+   !> Reserves the summary's space before the run fills the disk:
+   !> <prefix>_summary.dat.tmp of summary_reserve bytes, which
+   !> write_summary_file writes over (no new blocks) and renames into place,
+   !> so that a run stopped by a full disk still says how far it got.
+   subroutine reserve_summary(deck, stat, errmsg)
+      type(deck_t), intent(in) :: deck                  !< effective deck (prefix)
+      integer, intent(out) :: stat                      !< 0 on success
+      character(len=*), intent(inout) :: errmsg        !< reason on failure, naming the file
+      integer, parameter :: line_len = 63, lines = summary_reserve/(line_len + 1)
+      character(len=msg_len) :: iomsg
+      character(len=:), allocatable :: path
+      integer :: u, i
+      path = deck%prefix // '_summary.dat.tmp'
+      open (newunit=u, file=path, status='replace', action='write', iostat=stat, iomsg=iomsg)
+      do i = 1, lines
+         if (stat /= 0) exit
+         write (u, '(a)', iostat=stat, iomsg=iomsg) '#' // repeat(' ', line_len - 1)
+      end do
+      if (stat == 0) then
+         close (u, iostat=stat, iomsg=iomsg)
+      else
+         close (u, status='delete', iostat=i)
+      end if
+      if (stat /= 0) errmsg = path // ': ' // trim(iomsg)
+   end subroutine reserve_summary
+
    !> Writes <prefix>_summary.dat: title, deck echo, 'key = value' lines.
    !> It is written whole to <prefix>_summary.dat.tmp and renamed into
    !> place, so the file is either the previous one or complete.
@@ -247,8 +349,15 @@ contains
       character(len=msg_len) :: iomsg
       character(len=:), allocatable :: path
       integer :: u, i
+      logical :: reserved
       path = deck%prefix // '_summary.dat'
-      open (newunit=u, file=path // '.tmp', status='replace', action='write', iostat=stat, iomsg=iomsg)
+      inquire (file=path // '.tmp', exist=reserved)
+      if (reserved) then         ! written over the reserved space, then cut to its length
+         open (newunit=u, file=path // '.tmp', status='old', action='readwrite', position='rewind', &
+               iostat=stat, iomsg=iomsg)
+      else
+         open (newunit=u, file=path // '.tmp', status='replace', action='write', iostat=stat, iomsg=iomsg)
+      end if
       if (stat == 0) write (u, '(a)', iostat=stat, iomsg=iomsg) &
          '# impact: summary (key = value; units in the key names)'
       if (stat == 0) call echo_deck(deck, u, '# ')
@@ -256,6 +365,7 @@ contains
          if (stat /= 0) exit
          write (u, '(a)', iostat=stat, iomsg=iomsg) items(i)%key // ' = ' // items(i)%text
       end do
+      if (stat == 0) endfile (u, iostat=stat, iomsg=iomsg)
       if (stat == 0) then
          close (u, iostat=stat, iomsg=iomsg)
       else
@@ -265,21 +375,5 @@ contains
       if (stat /= 0) errmsg = path // ': ' // trim(iomsg)
    end subroutine write_summary_file
 
-   !> rename(2): replaces `to` by `from` in one step.
-   subroutine rename_file(from, to, stat, errmsg)
-      use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
-      character(len=*), intent(in) :: from, to
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      interface
-         function c_rename(old, new) bind(c, name='rename') result(r)
-            import :: c_int, c_char
-            character(kind=c_char), intent(in) :: old(*), new(*)
-            integer(c_int) :: r
-         end function c_rename
-      end interface
-      stat = int(c_rename(from // c_null_char, to // c_null_char))
-      if (stat /= 0) errmsg = 'cannot rename ' // from // ' to ' // to
-   end subroutine rename_file
 
 end module result_files

@@ -64,6 +64,7 @@ module results_hdf5
    !> An open results file and the ids of its growing datasets.
    type :: results_file_t
       logical :: active = .false.                       !< a file is open (&output hdf5)
+      logical :: broken = .false.                       !< a write failed: the file is left as at its last flush
       character(len=:), allocatable :: path             !< <prefix>.h5
       integer(hid_t) :: fid = -1                        !< the file
       integer(hid_t) :: hist(nhist) = -1                !< /history/<column> (result_files: history_columns)
@@ -161,6 +162,7 @@ contains
       if (stat == 0) call h5io_flush(rf%fid, stat, why)
       if (stat /= 0) then
          errmsg = rf%path//': '//trim(why)
+         rf%broken = .true.
          call results_finish(rf, 'failed while opening', [summary_item_t ::], ecode, why)
       end if
 
@@ -212,6 +214,7 @@ contains
       end do columns
       if (stat == 0 .and. flush) call h5io_flush(rf%fid, stat, why)
       if (stat /= 0) errmsg = rf%path//': /history: '//trim(why)
+      rf%broken = stat /= 0
    end subroutine results_append_history
 
    !> The nodal fields u, v, w, psi_x, psi_y of the state at the end of a
@@ -245,6 +248,7 @@ contains
          if (stat == 0) call h5io_flush(rf%fid, stat, why)
          if (stat /= 0) then
             errmsg = rf%path//': /fields: '//trim(why)
+            rf%broken = .true.
             return
          end if
       end if
@@ -258,6 +262,7 @@ contains
       if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'time', time, stat, why)
       if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'force', force, stat, why)
       if (stat /= 0) errmsg = rf%path//': /peak: '//trim(why)
+      rf%broken = stat /= 0
    end subroutine results_state
 
    !> Writes /summary (the items of <prefix>_summary.dat, SI units, and the
@@ -273,6 +278,15 @@ contains
 
       stat = 0
       if (.not. rf%active) return
+      if (rf%broken) then
+         ! a write failed (a full disk, the file-size limit): writing more, even
+         ! closing, would rewrite the file's metadata for data that is not there;
+         ! left alone it opens as it was at its last flush
+         stat = 1
+         errmsg = rf%path//': a write failed; the file is left as it was at its last flush, unfinished'
+         rf%active = .false.
+         return
+      end if
       why = ''
       call put_string('status', status)
       summary_items: do k = 1, size(items)

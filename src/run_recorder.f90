@@ -24,7 +24,7 @@
 !> (it created more energy than the impact brought) has diverged and stops;
 !> so does one whose state is not finite.
 module run_recorder
-   use, intrinsic :: iso_fortran_env, only: error_unit
+   use, intrinsic :: iso_fortran_env, only: error_unit, int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: dp, msg_len
    use number_text, only: int_str, real_short
@@ -37,9 +37,10 @@ module run_recorder
    use newmark, only: plate_state_t, impactor_state_t
    use scene_model, only: theory_warning, bending_deflection
    use result_files, only: history_columns, nhist, summary_item_t, summary_real, summary_integer, summary_text, &
-      open_columns, write_history_row, write_summary_file, col_time, col_force, col_alpha, col_w_plate, &
+      open_columns, write_history_row, reserve_summary, write_summary_file, col_time, col_force, col_alpha, col_w_plate, &
       col_w_impactor, col_v_impactor, col_strain_y, col_ke_impactor, col_ke_plate, col_strain_energy, &
       col_contact_work, col_contact_energy, col_energy_error, col_branch, col_contact_iter, col_solves
+   use file_system, only: truncate_file, file_size
    use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_finish
    implicit none
    private
@@ -51,7 +52,7 @@ module run_recorder
 
    !> Kinds of warning, each given once (later ones are counted).
    integer, parameter :: warn_mixing = 1, warn_contact = 2, warn_deflection = 3, warn_unconverged = 4, &
-                         warn_energy = 5, nwarn = 5
+                         warn_energy = 5, warn_indentation = 6, warn_drift = 7, nwarn = 7
    !> Energy the integration may create before it is warned, as a fraction
    !> of E0 (docs/STABILITY.md, "The energy bound"): the average acceleration
    !> rule conserves energy, so created energy is the time step's error in
@@ -63,6 +64,7 @@ module run_recorder
       logical :: stop = .false.                  !< the run must end after this step
       character(len=:), allocatable :: stop_status   !< why (the summary's status)
       integer :: hist_unit = -1                  !< <prefix>_history.dat
+      integer(int64) :: hist_bytes = 0           !< its length after the last whole row
       character(len=:), allocatable :: hist_path
       type(results_file_t) :: h5                 !< <prefix>.h5
       integer :: every = 1, fields_every = 1, nstep = 0
@@ -121,12 +123,15 @@ contains
          rec%c_plate = pattern_compliance(solver, rec%pattern_prev)
       end if
 
+      call reserve_summary(deck, stat, errmsg)
+      if (stat /= 0) return
       call open_columns(deck, '_history.dat', 'impact: history of a low-velocity impact (Choi, Hong & Lee 1991)', &
          [(history_columns(c)%file_name, c = 1, nhist)], &
          [character(len=96) :: (history_columns(c)%meaning // ' (' // trim(history_columns(c)%file_unit) // ')', &
          c = 1, nhist)], &
          rec%hist_unit, rec%hist_path, stat, errmsg)
       if (stat /= 0) return
+      rec%hist_bytes = file_size(rec%hist_path)
       call results_open(deck, model%msh, rec%h5, stat, errmsg)
       if (stat /= 0) return
       row = 0.0_dp
@@ -151,7 +156,7 @@ contains
       logical, intent(in) :: converged                   !< its iterations converged
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
-      real(dp) :: t, w_plate, strain_y, work, row(nhist), w_bend
+      real(dp) :: t, w_plate, strain_y, work, row(nhist), w_bend, w_rigid
       integer :: solves
 
       stat = 0
@@ -193,6 +198,8 @@ contains
       call bending_deflection(model%msh, rec%edges, plate%d, w_bend, stat, errmsg)
       if (stat /= 0) return
       rec%w_bend_max = nan_max(rec%w_bend_max, abs(w_bend))
+      w_rigid = 0.0_dp     ! the rigid-body part of the deflection under the impactor (free edges)
+      if (rec%edges == 'free') w_rigid = plate%d(model%msh%eq(3, model%msh%impact_node)) - w_bend
       if (rec%c_plate >= 0.0_dp) rec%max_slope = max(rec%max_slope, &
          (rec%c_plate + rec%c_impactor)*law_tangent(model%law, hist, cit%alpha))
 
@@ -253,6 +260,13 @@ contains
          // 'created ' // real_short(rec%energy_created/rec%e0) // ' E0 of energy (more than ' &
          // real_short(energy_created_bound) // ' E0): the time step is too long for this scene''s contacts; ' &
          // 'halve dt until max_energy_created_J settles (docs/STABILITY.md)')
+      if (cit%alpha > rec%h) call warn(warn_indentation, 'the indentation (' // real_short(cit%alpha*1.0e3_dp) &
+         // ' mm) exceeds the plate thickness (' // real_short(rec%h*1.0e3_dp) // ' mm): the impactor is ' &
+         // 'going through the plate, beyond the contact law (eq. 11-12) and the plate theory')
+      if (abs(w_rigid) > rec%w_bend_max .and. rec%w_bend_max > 0.0_dp) call warn(warn_drift, 'the free ' &
+         // 'plate has moved ' // real_short(abs(w_rigid)*1.0e3_dp) // ' mm as a rigid body under the ' &
+         // 'impactor, more than its largest bending deflection (' // real_short(rec%w_bend_max*1.0e3_dp) &
+         // ' mm): nothing holds it, and from here on its deflections are mostly flight, not bending')
       if (.not. converged) then
          rec%unconverged_steps = rec%unconverged_steps + 1
          if (rec%first_unconverged == 0) rec%first_unconverged = step
@@ -315,9 +329,9 @@ contains
          write (error_unit, '(a)') 'impact: warning: ' // trim(text)
          rec%warnings = rec%warnings + 1
       end if
-      if (rec%warnings > 0) write (error_unit, '(a,i0,a,i0,a,i0,a,f0.2)') 'impact: ', rec%warnings, &
-         ' warning(s) above; steps with a fall-back: nonlinear ', rec%nonlinear_fallback_steps, &
-         ', contact ', rec%contact_fallback_steps, '; largest w/h ', rec%max_w_over_h
+      if (rec%warnings > 0) write (error_unit, '(a)') 'impact: ' // int_str(rec%warnings) // ' warning(s) above; ' &
+         // 'steps with a fall-back: nonlinear ' // int_str(rec%nonlinear_fallback_steps) // ', contact ' &
+         // int_str(rec%contact_fallback_steps) // '; largest w/h ' // real_short(rec%max_w_over_h)
 
       ! -- first contact: its duration, or the time in contact so far
       ended = rec%contacts == 0 .or. rec%first_contact_end >= 0.0_dp
@@ -398,9 +412,16 @@ contains
       real(dp), intent(in) :: row(nhist)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      call write_history_row(rec%hist_unit, row, stat)
+      character(len=msg_len) :: iomsg
+      integer :: ios
+      call write_history_row(rec%hist_unit, rec%hist_path, row, rec%hist_bytes, stat, iomsg)
       if (stat /= 0) then
-         errmsg = rec%hist_path // ': cannot write a row'
+         ! a full disk, the file-size limit: the history is cut back to its
+         ! last whole row, so that every row it keeps reads
+         errmsg = rec%hist_path // ': cannot write a row: ' // trim(iomsg)
+         close (rec%hist_unit, iostat=ios)
+         rec%hist_unit = -1
+         call truncate_file(rec%hist_path, rec%hist_bytes, ios)
          return
       end if
       call results_append_history(rec%h5, row, .true., stat, errmsg)

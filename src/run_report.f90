@@ -10,7 +10,11 @@ module run_report
    use scene_model, only: write_scene_report
    implicit none
    private
-   public :: echo_model, usage
+   public :: echo_model, usage, usage_line
+
+   !> The usage in one line: the first of impact --help, and what a wrong
+   !> command line gets after its message.
+   character(len=*), parameter :: usage_line = 'usage: impact [options] [deck.nml]'
 
 contains
 
@@ -42,7 +46,7 @@ contains
       do g = 1, size(deck_groups)
          groups = groups // ' &' // trim(deck_groups(g))
       end do
-      write (u, '(a)') 'usage: impact [options] [deck.nml]      (no deck: the deck is read from standard input)'
+      write (u, '(a)') usage_line // '      (no deck: the deck is read from standard input)'
       write (u, '(a)') ''
       write (u, '(a)') 'Nonlinear low-velocity impact of a composite laminate (Choi, Hong & Lee 1991).'
       write (u, '(a)') ''

@@ -446,9 +446,15 @@ contains
 
       m = msh
       if (edges == 'free') then
-         call apply_boundary(m, 'simply_supported', 'movable', stat, errmsg)
+         call apply_boundary(m, 'simply_supported', 'immovable', stat, errmsg)
          if (stat /= 0) return
          scene%stiffness_note = 'free edges replaced by simply supported ones (a free plate has none)'
+      else if (edges == 'simply_supported') then
+         ! movable edges leave the in-plane rigid-body modes to the mass matrix,
+         ! which K_L alone lacks: the estimate holds them (immovable edges)
+         call apply_boundary(m, 'simply_supported', 'immovable', stat, errmsg)
+         if (stat /= 0) return
+         scene%stiffness_note = 'simply supported edges, in-plane held, K_L of this mesh (bending and shear)'
       else
          scene%stiffness_note = trim(edges) // ' edges, K_L of this mesh (bending and shear)'
       end if

@@ -25,6 +25,7 @@
 !> Results: `<prefix>_static.dat`, one row per load increment, and
 !> `<prefix>_deflection.dat`, the nodal displacements at the full load.
 module static_analysis
+   use number_text, only: int_str, real_str
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t
    use plate_model, only: model_t, nonlinear_force, centre_deflection, gather_element
@@ -33,7 +34,7 @@ module static_analysis
       global_matvec, global_factor, global_solve
    use mesh, only: nfe, ndof_node, describe_equation
    use analysis_support, only: assemble_load
-   use result_files, only: claim_results, open_columns
+   use result_files, only: open_columns
    implicit none
    private
    public :: static_result_t, static_solve, run_static
@@ -108,8 +109,8 @@ contains
             r = lam*f - fint
             call tangent_stiffness(model, d, kt, stat, errmsg)
             if (stat /= 0) then
-               write (errmsg, '(a,i0,a,f8.5,a)') 'static: increment ', inc, ' (load factor ', lam, '): ' // &
-                  trim(errmsg)
+               errmsg = 'static: increment ' // int_str(inc) // ' (load factor ' // real_str(lam) // '): ' &
+                  // trim(errmsg)
                return
             end if
             call global_solve(kt, r, stat, errmsg)
@@ -189,8 +190,6 @@ contains
       real(dp) :: de(ndof_node)
 
       report = ''
-      call claim_results(deck, [character(len=16) :: '_static.dat', '_deflection.dat'], stat, errmsg)
-      if (stat /= 0) return
       allocate (f(model%msh%neq))
       call assemble_load(deck, model, f, stat, errmsg)
       if (stat /= 0) return
