@@ -25,8 +25,9 @@
 !> history's steps only, so &output every bounds it (README, "Ply stresses
 !> and failure", gives the measured share of a run).
 !>
-!> At the end (damage_close): the summary's items (max_failure_index,
-!> failure_onset_us, failure_mode, failure_ply, failure_x_mm, failure_y_mm)
+!> At the end (damage_close): the summary's items (max_failure_index, the
+!> largest stresses max_abs_s11_MPa ... max_abs_t13_MPa, failure_onset_us,
+!> failure_mode, failure_ply, failure_x_mm, failure_y_mm)
 !> and, in <prefix>.h5, the group /strength (damage_write, layout there).
 module damage_record
    use kinds, only: dp, msg_len
@@ -58,6 +59,7 @@ module damage_record
       real(dp), allocatable :: fi_max(:,:)          !< (nply, npoint) largest index over the run
       integer, allocatable :: mode_max(:,:)         !< (nply, npoint) its mode
       real(dp), allocatable :: onset_time(:,:)      !< (nply, npoint) first time the index reached 1 (s), -1 never
+      real(dp) :: smax(5) = 0.0_dp                  !< largest |s11|, |s22|, |t12|, |t23|, |t13| over the run (Pa)
       ! -- the step just evaluated
       real(dp) :: step_fi = 0.0_dp
       integer :: step_mode = mode_none
@@ -126,6 +128,9 @@ contains
             p = g + ngp*(el - 1)
             e = point_strain_state(model%geo(el)%dx3(:, :, g), dmg%d2(:, :, g, el), de, dmg%nonlinear)
             call ply_stresses(dmg%stack, e, sigma)
+            do k = 1, 5
+               dmg%smax(k) = max(dmg%smax(k), maxval(abs(sigma(k, :, :))))
+            end do
             call ply_indices(dmg, sigma, fi, mode)
             plies: do k = 1, dmg%nply
                if (fi(k) > dmg%fi_max(k, p)) then
@@ -240,11 +245,16 @@ contains
       type(results_file_t), intent(in) :: rf        !< the results file (written when active)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
+      character(len=3), parameter :: comp(5) = [character(len=3) :: 's11', 's22', 't12', 't23', 't13']
       real(dp), allocatable :: xy(:,:)
-      integer :: ply, point, mode
+      integer :: ply, point, mode, c
       stat = 0
       if (.not. dmg%active) return
       call summary_real(s, 'max_failure_index', 'max_failure_index', '-', dmg%max_fi, 1.0_dp)
+      do c = 1, 5
+         call summary_real(s, 'max_abs_' // trim(comp(c)) // '_MPa', 'max_abs_' // trim(comp(c)), 'Pa', &
+                           dmg%smax(c), 1.0e-6_dp)
+      end do
       if (dmg%onset >= 0.0_dp) then
          call summary_real(s, 'failure_onset_us', 'failure_onset', 's', dmg%onset, 1.0e6_dp)
          ply = dmg%onset_ply;  point = dmg%onset_point;  mode = dmg%onset_mode
