@@ -195,6 +195,12 @@ contains
       real(dp), intent(in) :: values(:)           !< the row, SI
       integer, intent(out) :: stat                !< 0, or the write's iostat
       integer :: c
+      if (size(values) == nhist) then
+         write (unit, '(f16.4, 12es16.7e3, 3i6)', iostat=stat) values(1)*history_columns(1)%scale, &
+            values(2:13)*history_columns(2:13)%scale, nint(values(14:16))
+         if (stat == 0) flush (unit, iostat=stat)
+         return
+      end if
       write (unit, '(f16.4, 12es16.7e3, 3i6)', iostat=stat, advance='no') values(1)*history_columns(1)%scale, &
          values(2:13)*history_columns(2:13)%scale, nint(values(14:16))
       extra: do c = nhist + 1, size(values)
