@@ -25,6 +25,10 @@
 !>                           whenever the force passes its previous largest value
 !>   /summary                status ('running' until the run ends), then the figures
 !>                           of <prefix>_summary.dat in SI units
+!>   /strength               only with &strength: the damage map and the ply stresses
+!>                           at the peak force, written at the end by src/damage_record.f90
+!>                           (layout there); the history then has the columns
+!>                           failure_index and failure_mode too (history_width)
 !>
 !> The fields are those of the modelled domain (a quarter of the plate when
 !> &mesh domain = 'quarter'); held freedoms are 0.
