@@ -21,6 +21,12 @@
 # A plain run that diverges stops with exit status 1 and the summary's
 # status 'diverged at step N': that is its result, not a failure.
 #
+# input/paper/strength/ (issue 16) holds Fig. 9 and 10's scenes, linear and
+# nonlinear, the paper's model and the converged one, with &strength: the
+# ply stresses and Hashin's index of docs/PAPER.md, "Ply stresses"; their
+# damage maps (postproc/damage_map.gp, over tools/damage-map and h5py) are
+# docs/figures/damage_fig09_simply_supported.png and damage_fig10_clamped.png.
+#
 # input/paper/converged/ holds the scenes of Fig. 6 (mesh study), 9 and 10
 # with the converged model (MITC9 shear, Hertz contact load; docs/PAPER.md,
 # "With a converged model"); results in out/paper/converged/. Beside them the
@@ -42,7 +48,8 @@ FIG_LONG       := input/paper/fig06_24x36.nml input/paper/converged/fig06_24x36.
 FIG_DECKS      := $(FIG_LONG) \
                   $(filter-out $(FIG_LONG),$(sort $(wildcard input/paper/*.nml))) \
                   $(sort $(wildcard input/paper/tolerance/*.nml)) \
-                  $(filter-out $(FIG_LONG),$(sort $(wildcard input/paper/converged/*.nml)))
+                  $(filter-out $(FIG_LONG),$(sort $(wildcard input/paper/converged/*.nml))) \
+                  $(sort $(wildcard input/paper/strength/*.nml))
 FIG_RUNS       := $(patsubst input/paper/%.nml,$(FIG_OUT)/%_summary.dat,$(FIG_DECKS))
 UPDATE_DECKS   := $(sort $(wildcard input/paper/update/*.nml))
 UPDATE_RUNS    := $(foreach u,fixed bracket,\
@@ -57,6 +64,10 @@ figures: setup impact
 	    for fmt in png pdf; do \
 	        gnuplot -e "fmt='$$fmt'; run='$(FIG_OUT)'; figdir='docs/figures'" postproc/fig$$n.gp || exit 1; \
 	    done; echo "figure written: docs/figures/fig$$n.png, .pdf"; \
+	done
+	@for s in fig09_simply_supported fig10_clamped; do \
+	    gnuplot -e "prefix='$(FIG_OUT)/strength/converged_$${s}_nonlinear'; out='docs/figures/damage_$${s}.png'" \
+	        postproc/damage_map.gp || exit 1; \
 	done
 	python3 tools/paper-numbers --runs $(FIG_OUT) docs/PAPER.md.in docs/PAPER.md
 

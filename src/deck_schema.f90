@@ -19,13 +19,15 @@
 !> non-finite values refused; for words the admissible words, 'a | b | c';
 !> for texts (kind_path) the empty range (any text without control
 !> characters); for logicals none. A default '' means "not given": the
-!> variable is optional and the program decides (k4, k5: Whitney's method).
+!> variable is optional and the program decides (k4, k5: Whitney's method;
+!> the strengths of &strength: without them no ply stresses and no failure
+!> criterion are computed, strength_given).
 module deck_schema
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
    use kinds, only: dp
    implicit none
    private
-   public :: deck_var_t, deck_t, value_t, deck_vars, deck_groups, deck_bind, find_var, var_key
+   public :: deck_var_t, deck_t, value_t, deck_vars, deck_groups, deck_bind, find_var, var_key, strength_given
    public :: kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names
    public :: max_word_len, max_path_len, max_list_len
 
@@ -50,8 +52,8 @@ module deck_schema
    end type deck_var_t
 
    !> The namelist groups, in the order of the echo and the README table.
-   character(len=8), parameter :: deck_groups(11) = [character(len=8) :: 'plate', 'lamina', 'laminate', &
-      'impactor', 'contact', 'mesh', 'boundary', 'analysis', 'load', 'modes', 'output']
+   character(len=8), parameter :: deck_groups(12) = [character(len=8) :: 'plate', 'lamina', 'laminate', &
+      'strength', 'impactor', 'contact', 'mesh', 'boundary', 'analysis', 'load', 'modes', 'output']
 
    !> THE LIST. Paper's values as defaults where the paper gives one (Choi,
    !> Hong & Lee 1991: section 2.4, Tables 1-3); SI units.
@@ -77,6 +79,19 @@ module deck_schema
          // 'int Qbar55 dz; not given: Whitney''s method'), &
       deck_var_t('laminate', 'bend_twist', kind_word, '-', 'auto', 'auto | drop | keep', 'D16, D26: ''auto'' ' &
          // '(dropped on a quarter, half or strip, section 3.1), ''drop'' (everywhere), ''keep'' (full plate only)'), &
+      deck_var_t('strength', 'xt', kind_real, 'Pa', '', '[1e3, 1e11]', 'ply tensile strength along the fibres; ' &
+         // 'the paper gives no strengths: with all six given, ply stresses and failure indices are computed'), &
+      deck_var_t('strength', 'xc', kind_real, 'Pa', '', '[1e3, 1e11]', &
+         'ply compressive strength along the fibres (a magnitude)'), &
+      deck_var_t('strength', 'yt', kind_real, 'Pa', '', '[1e3, 1e11]', 'ply tensile strength across the fibres'), &
+      deck_var_t('strength', 'yc', kind_real, 'Pa', '', '[1e3, 1e11]', &
+         'ply compressive strength across the fibres (a magnitude)'), &
+      deck_var_t('strength', 's12', kind_real, 'Pa', '', '[1e3, 1e11]', &
+         'ply in-plane shear strength (also of tau_13)'), &
+      deck_var_t('strength', 's23', kind_real, 'Pa', '', '[1e3, 1e11]', 'ply transverse shear strength'), &
+      deck_var_t('strength', 'criterion', kind_word, '-', 'hashin', 'hashin | max_stress | tsai_wu', &
+         'failure criterion of the plies: ''hashin'' (Hashin 1980), ''max_stress'' or ''tsai_wu'' ' &
+         // '(Tsai & Wu 1971)'), &
       deck_var_t('impactor', 'mass', kind_real, 'kg', '0.243', '[1e-6, 1e4]', 'impactor mass'), &
       deck_var_t('impactor', 'velocity', kind_real, 'm/s', '3.0', '(0, 1e3]', 'impact velocity, towards the plate'), &
       deck_var_t('impactor', 'diameter', kind_real, 'm', '0.0127', '[1e-5, 10]', &
@@ -164,6 +179,9 @@ module deck_schema
       real(dp), allocatable :: angles(:)
       real(dp) :: k4 = 0, k5 = 0                    !< NaN: not given (Whitney's method; a deck cannot give NaN)
       character(len=:), allocatable :: bend_twist
+      ! &strength (NaN: not given, as k4, k5)
+      real(dp) :: xt = 0, xc = 0, yt = 0, yc = 0, s12 = 0, s23 = 0
+      character(len=:), allocatable :: criterion
       ! &impactor
       real(dp) :: mass = 0, velocity = 0, diameter = 0, x0 = 0, y0 = 0
       ! &contact
@@ -225,6 +243,13 @@ contains
       iv = 0
    end function find_var
 
+   !> True when the deck gives the six strengths of &strength: the ply
+   !> stresses and the failure criterion are then computed (src/damage_record.f90).
+   pure logical function strength_given(deck)
+      type(deck_t), intent(in) :: deck   !< the deck
+      strength_given = .not. any(ieee_is_nan([deck%xt, deck%xc, deck%yt, deck%yc, deck%s12, deck%s23]))
+   end function strength_given
+
    !> Moves the value of entry iv between v and the deck's component: into
    !> the deck when set is true, out of it otherwise.
    subroutine deck_bind(deck, iv, v, set)
@@ -248,6 +273,13 @@ contains
       case ('laminate.k4');                call optional_value(deck%k4)
       case ('laminate.k5');                call optional_value(deck%k5)
       case ('laminate.bend_twist');        call text_value(deck%bend_twist)
+      case ('strength.xt');                call optional_value(deck%xt)
+      case ('strength.xc');                call optional_value(deck%xc)
+      case ('strength.yt');                call optional_value(deck%yt)
+      case ('strength.yc');                call optional_value(deck%yc)
+      case ('strength.s12');               call optional_value(deck%s12)
+      case ('strength.s23');               call optional_value(deck%s23)
+      case ('strength.criterion');         call text_value(deck%criterion)
       case ('impactor.mass');              call scalar_value(r=deck%mass)
       case ('impactor.velocity');          call scalar_value(r=deck%velocity)
       case ('impactor.diameter');          call scalar_value(r=deck%diameter)

@@ -17,13 +17,14 @@
 !> value outside its admissible range (the schema's `range`) and every
 !> combination the program cannot run (validate_deck).
 module input_deck
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use kinds, only: dp, msg_len
    use number_text, only: real_str, real_short, int_str
    use system_limits, only: physical_memory, free_disk_space, file_size_limit
    use file_system, only: path_problem
    use deck_text, only: item_t, group_text_t, read_deck_text, lower_case
    use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, find_var, var_key, &
+      strength_given, &
       kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names, &
       max_word_len, max_path_len, max_list_len
    implicit none
@@ -404,6 +405,7 @@ contains
       if (deck%analysis_kind == 'modes') call need(deck%storage == 'band', 'analysis', 'storage', &
          "'" // deck%storage // "'", "kind = 'modes' needs storage = 'band' (LAPACK's banded eigensolver dsbgvx)")
       call need(len(deck%prefix) > 0, 'output', 'prefix', "''", 'must not be empty')
+      call check_strength()
 
    contains
 
@@ -456,6 +458,20 @@ contains
             // ' GiB, more than the ' // real_short(room/gib) // ' GiB free where they go (prefix ''' &
             // deck%prefix // '''): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
       end subroutine check_needs
+
+      !> &strength: all six strengths or none; the criterion only with them;
+      !> the ply stresses belong to the impact analysis.
+      subroutine check_strength()
+         character(len=3), parameter :: names(6) = [character(len=3) :: 'xt', 'xc', 'yt', 'yc', 's12', 's23']
+         logical :: missing(6)
+         missing = ieee_is_nan([deck%xt, deck%xc, deck%yt, deck%yc, deck%s12, deck%s23])
+         if (any(missing) .and. .not. all(missing)) call need(.false., 'strength', trim(names(findloc(missing, &
+            .true., dim=1))), '(not given)', 'give all six strengths (xt, xc, yt, yc, s12, s23) or none')
+         if (deck%given(find_var('strength', 'criterion'))) call need(.not. all(missing), 'strength', 'criterion', &
+            "'" // deck%criterion // "'", 'needs the ply strengths xt, xc, yt, yc, s12, s23 (the paper gives none)')
+         if (strength_given(deck)) call need(deck%analysis_kind == 'impact', 'strength', 'xt', real_str(deck%xt), &
+            "the ply stresses and failure indices are computed by kind = 'impact' only")
+      end subroutine check_strength
 
       !> Fails with "<deck>: &group: name = value: what" unless ok (the first failure wins).
       subroutine need(ok, group, name, value, what)
@@ -566,16 +582,26 @@ contains
 
    !> True when the group concerns a deck of this analysis kind (the echo
    !> leaves the others out: &load only for static and pressure analyses,
-   !> &modes only for modes, &contact only for the impact).
-   pure logical function group_applies(group, analysis_kind)
-      character(len=*), intent(in) :: group, analysis_kind
+   !> &modes only for modes, &contact only for the impact, &strength only
+   !> when its strengths are given).
+   pure logical function group_applies(group, deck)
+      character(len=*), intent(in) :: group
+      type(deck_t), intent(in) :: deck
       select case (trim(group))
-      case ('contact');  group_applies = analysis_kind == 'impact'
-      case ('load');     group_applies = analysis_kind == 'static' .or. analysis_kind == 'pressure'
-      case ('modes');    group_applies = analysis_kind == 'modes'
-      case default;      group_applies = .true.
+      case ('strength'); group_applies = strength_given(deck)
+      case default;      group_applies = group_applies_kind(group, deck%analysis_kind)
       end select
    end function group_applies
+
+   pure logical function group_applies_kind(group, analysis_kind)
+      character(len=*), intent(in) :: group, analysis_kind
+      select case (trim(group))
+      case ('contact');  group_applies_kind = analysis_kind == 'impact'
+      case ('load');     group_applies_kind = analysis_kind == 'static' .or. analysis_kind == 'pressure'
+      case ('modes');    group_applies_kind = analysis_kind == 'modes'
+      case default;      group_applies_kind = .true.
+      end select
+   end function group_applies_kind
 
    !> The value of entry iv as a deck would give it ('0.15', "'clamped'",
    !> '.true.', '0, 45, ...'), or '(not given)'.
@@ -615,7 +641,7 @@ contains
       integer :: ig, iv
       write (unit, '(a)') lead // 'deck       source = ''' // deck%source // ''''
       groups_loop: do ig = 1, size(deck_groups)
-         if (.not. group_applies(deck_groups(ig), deck%analysis_kind)) cycle groups_loop
+         if (.not. group_applies(deck_groups(ig), deck)) cycle groups_loop
          column = '&' // deck_groups(ig)
          line = ''
          vars: do iv = 1, size(deck_vars)

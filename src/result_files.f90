@@ -26,10 +26,10 @@ module result_files
       rename_file, file_size
    implicit none
    private
-   public :: column_t, history_columns, nhist
+   public :: column_t, history_columns, nhist, nhist_strength, history_width
    public :: col_time, col_force, col_alpha, col_w_plate, col_w_impactor, col_v_impactor, col_strain_y, &
              col_ke_impactor, col_ke_plate, col_strain_energy, col_contact_work, col_contact_energy, &
-             col_energy_error, col_branch, col_contact_iter, col_solves
+             col_energy_error, col_branch, col_contact_iter, col_solves, col_failure_index, col_failure_mode
    public :: summary_item_t, summary_real, summary_integer, summary_text
    public :: results_claim_t, result_suffixes, claim_results, release_results
    public :: open_columns, write_history_row, reserve_summary, write_summary_file
@@ -43,14 +43,18 @@ module result_files
       real(dp) :: scale                !< value in the file = SI value * scale
       logical :: whole                 !< an integer (written as one)
       character(len=72) :: meaning     !< what it is
+      logical :: strength = .false.    !< only with &strength (ply stresses), after the others
    end type column_t
 
-   !> The history's columns, in the order of the file.
+   !> The history's columns, in the order of the file: the first nhist in
+   !> every run, the last ones only when the deck gives &strength
+   !> (history_width).
    integer, parameter :: col_time = 1, col_force = 2, col_alpha = 3, col_w_plate = 4, col_w_impactor = 5, &
       col_v_impactor = 6, col_strain_y = 7, col_ke_impactor = 8, col_ke_plate = 9, col_strain_energy = 10, &
       col_contact_work = 11, col_contact_energy = 12, col_energy_error = 13, col_branch = 14, &
-      col_contact_iter = 15, col_solves = 16, nhist = 16
-   type(column_t), parameter :: history_columns(nhist) = [ &
+      col_contact_iter = 15, col_solves = 16, nhist = 16, col_failure_index = 17, col_failure_mode = 18, &
+      nhist_strength = 18
+   type(column_t), parameter :: history_columns(nhist_strength) = [ &
       column_t('time', 'time_us', 's', 'us', 1.0e6_dp, .false., 'time'), &
       column_t('force', 'force_N', 'N', 'N', 1.0_dp, .false., 'contact force on the whole plate F'), &
       column_t('indentation', 'indentation_mm', 'm', 'mm', 1.0e3_dp, .false., &
@@ -75,7 +79,11 @@ module result_files
          'contact law branch: 0 none, 1 loading, 2 unloading, 3 reloading'), &
       column_t('contact_iter', 'contact_iter', '-', '-', 1.0_dp, .true., &
          'contact-force iterations of the step, eq. (17)'), &
-      column_t('nonlinear_iter', 'nonlinear_iter', '-', '-', 1.0_dp, .true., 'plate solutions of the step, eq. (19)') ]
+      column_t('nonlinear_iter', 'nonlinear_iter', '-', '-', 1.0_dp, .true., 'plate solutions of the step, eq. (19)'), &
+      column_t('failure_index', 'failure_index', '-', '-', 1.0_dp, .false., &
+         'largest ply failure index of the step (&strength criterion)', strength=.true.), &
+      column_t('failure_mode', 'failure_mode', '-', '-', 1.0_dp, .true., &
+         'its mode: 1/2 fibre t/c, 3/4 matrix t/c, 5 shear 12-13, 6 shear 23', strength=.true.) ]
 
    !> A run's hold on its result files (claim_results).
    type :: results_claim_t
@@ -234,25 +242,44 @@ contains
       flush (unit)
    end subroutine open_columns
 
-   !> One row of the history, values in SI in the order of history_columns,
-   !> written in the file's units; flushed.
+   !> The history's columns of a run: nhist, or nhist_strength when the
+   !> deck gives &strength.
+   pure integer function history_width(with_strength)
+      logical, intent(in) :: with_strength   !< the run computes ply stresses
+      history_width = merge(nhist_strength, nhist, with_strength)
+   end function history_width
+
+   !> One row of the history, values in SI in the order of history_columns
+   !> (the first size(values) columns), written in the file's units,
+   !> flushed, and checked on disk: the file must have grown by the row.
    subroutine write_history_row(unit, path, values, bytes, stat, iomsg)
       integer, intent(in) :: unit                 !< the history file
       character(len=*), intent(in) :: path        !< its path
-      real(dp), intent(in) :: values(nhist)       !< the row, SI
+      real(dp), intent(in) :: values(:)           !< the row, SI (nhist or nhist_strength values)
       integer(int64), intent(inout) :: bytes      !< the file's length on disk before the row, then after it
       integer, intent(out) :: stat                !< 0, or the write's iostat
       character(len=*), intent(inout) :: iomsg    !< the run-time's message on failure
-      character(len=history_row_len) :: line
+      character(len=history_row_len + 16*(size(values) - nhist)) :: line
       integer(int64) :: after
-      write (line, '(f16.4, 12es16.7e3, 3i6)') values(1)*history_columns(1)%scale, &
+      integer :: c, at
+      write (line(:history_row_len), '(f16.4, 12es16.7e3, 3i6)') values(1)*history_columns(1)%scale, &
          values(2:13)*history_columns(2:13)%scale, nint(values(14:16))
-      write (unit, '(a)', iostat=stat, iomsg=iomsg) line
+      at = history_row_len
+      extra: do c = nhist + 1, size(values)
+         if (history_columns(c)%whole) then
+            write (line(at + 1:at + 6), '(i6)') nint(values(c))
+            at = at + 6
+         else
+            write (line(at + 1:at + 16), '(es16.7e3)') values(c)*history_columns(c)%scale
+            at = at + 16
+         end if
+      end do extra
+      write (unit, '(a)', iostat=stat, iomsg=iomsg) line(:at)
       if (stat == 0) flush (unit, iostat=stat, iomsg=iomsg)
       if (stat /= 0) return
       ! gfortran 12's FLUSH does not report a failed write(2): the length on disk does
       after = file_size(path)
-      if (after /= bytes + history_row_len + 1) then
+      if (after /= bytes + at + 1) then
          stat = 1
          iomsg = 'the row did not reach the disk (a full disk, or the file-size limit)'
          return

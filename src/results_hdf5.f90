@@ -25,6 +25,10 @@
 !>                           whenever the force passes its previous largest value
 !>   /summary                status ('running' until the run ends), then the figures
 !>                           of <prefix>_summary.dat in SI units
+!>   /strength               only with &strength: the damage map and the ply stresses
+!>                           at the peak force, written at the end by src/damage_record.f90
+!>                           (layout there); the history then has the columns
+!>                           failure_index and failure_mode too (history_width)
 !>
 !> The fields are those of the modelled domain (a quarter of the plate when
 !> &mesh domain = 'quarter'); held freedoms are 0.
@@ -40,12 +44,12 @@
 module results_hdf5
    use hdf5, only: hid_t
    use kinds, only: dp, msg_len
-   use deck_schema, only: deck_t, deck_vars, deck_groups, value_t, deck_bind, kind_real, kind_integer, &
+   use deck_schema, only: deck_t, deck_vars, deck_groups, value_t, deck_bind, strength_given, kind_real, kind_integer, &
       kind_logical, kind_word, kind_path, kind_reals
    use input_deck, only: echo_deck
    use build_info, only: code_version
    use mesh, only: mesh_t, ndof_node, freedom_name
-   use result_files, only: column_t, history_columns, nhist, summary_item_t
+   use result_files, only: column_t, history_columns, nhist_strength, history_width, summary_item_t
    use hdf5_io, only: h5io_start, h5io_create, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
       h5io_write, h5io_rewrite, h5io_create_series, h5io_create_columns, h5io_append, &
       h5io_close_dataset, h5io_real, h5io_integer
@@ -67,7 +71,8 @@ module results_hdf5
       logical :: broken = .false.                       !< a write failed: the file is left as at its last flush
       character(len=:), allocatable :: path             !< <prefix>.h5
       integer(hid_t) :: fid = -1                        !< the file
-      integer(hid_t) :: hist(nhist) = -1                !< /history/<column> (result_files: history_columns)
+      integer(hid_t) :: hist(nhist_strength) = -1       !< /history/<column> (result_files: history_columns)
+      integer :: ncol = 0                               !< the run's columns (history_width)
       integer(hid_t) :: snap_time = -1, snap_step = -1, snap_force = -1   !< /fields/time, step, force
       integer(hid_t) :: snap_field(ndof_node) = -1      !< /fields/u, v, w, psi_x, psi_y
       integer, allocatable :: eq(:,:)                   !< (ndof_node, nnode) equation numbers, 0 held
@@ -118,10 +123,11 @@ contains
       call write_deck(rf%fid, deck, stat, why)
       if (stat == 0) call write_mesh(rf%fid, msh, stat, why)
 
-      ! -- histories: one extendible dataset per column
+      ! -- histories: one extendible dataset per column of the run
+      rf%ncol = history_width(strength_given(deck))
       if (stat == 0) call h5io_group(rf%fid, 'history', stat, why)
       if (stat == 0) call put_int('history', 'every', deck%every, 'steps')
-      columns: do c = 1, nhist
+      columns: do c = 1, rf%ncol
          if (stat /= 0) exit columns
          col = history_columns(c)      ! (a copy, not an associate name: see src/input_deck.f90)
          call h5io_create_series(rf%fid, 'history/'//trim(col%name), &
@@ -195,7 +201,7 @@ contains
    !> to /history; flushes the file when flush is true.
    subroutine results_append_history(rf, row, flush, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file
-      real(dp), intent(in) :: row(nhist)            !< the row just written to the history file, SI
+      real(dp), intent(in) :: row(:)                !< the row just written to the history file, SI (rf%ncol)
       logical, intent(in) :: flush                  !< flush the file after it
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
@@ -204,7 +210,7 @@ contains
       stat = 0
       if (.not. rf%active) return
       why = ''
-      columns: do c = 1, nhist
+      columns: do c = 1, rf%ncol
          if (history_columns(c)%whole) then
             call h5io_append(rf%hist(c), nint(row(c)), stat, why)
          else

@@ -36,12 +36,14 @@ module run_recorder
    use contact_load, only: load_pattern_t, pattern_mean
    use newmark, only: plate_state_t, impactor_state_t
    use scene_model, only: theory_warning, bending_deflection
-   use result_files, only: history_columns, nhist, summary_item_t, summary_real, summary_integer, summary_text, &
-      open_columns, write_history_row, reserve_summary, write_summary_file, col_time, col_force, col_alpha, col_w_plate, &
-      col_w_impactor, col_v_impactor, col_strain_y, col_ke_impactor, col_ke_plate, col_strain_energy, &
-      col_contact_work, col_contact_energy, col_energy_error, col_branch, col_contact_iter, col_solves
+   use result_files, only: column_t, history_columns, nhist, summary_item_t, summary_real, summary_integer, &
+      summary_text, open_columns, write_history_row, reserve_summary, write_summary_file, col_time, col_force, &
+      col_alpha, col_w_plate, col_w_impactor, col_v_impactor, col_strain_y, col_ke_impactor, col_ke_plate, &
+      col_strain_energy, col_contact_work, col_contact_energy, col_energy_error, col_branch, col_contact_iter, &
+      col_solves, nhist_strength, history_width, col_failure_index, col_failure_mode
    use file_system, only: truncate_file, file_size
    use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_finish
+   use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
    implicit none
    private
    public :: record_t, record_open, record_step, record_close, von_karman_limit
@@ -67,6 +69,8 @@ module run_recorder
       integer(int64) :: hist_bytes = 0           !< its length after the last whole row
       character(len=:), allocatable :: hist_path
       type(results_file_t) :: h5                 !< <prefix>.h5
+      type(damage_t) :: damage                   !< ply stresses and failure (&strength; src/damage_record.f90)
+      integer :: ncol = nhist                    !< history columns of the run (history_width)
       integer :: every = 1, fields_every = 1, nstep = 0
       logical :: stop_on_warning = .false.
       real(dp) :: dt = 0, mass = 0, h = 0
@@ -104,7 +108,10 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(contact_history_t) :: fresh
-      real(dp) :: row(nhist)
+      real(dp) :: row(nhist_strength)
+      character(len=24), allocatable :: names(:)
+      character(len=96), allocatable :: texts(:)
+      type(column_t) :: col
       integer :: c
 
       rec%every = deck%every;  rec%fields_every = deck%fields_every
@@ -125,10 +132,20 @@ contains
 
       call reserve_summary(deck, stat, errmsg)
       if (stat /= 0) return
+      ! -- with &strength: the ply stresses and failure indices (src/damage_record.f90)
+      call damage_open(rec%damage, deck, model)
+      rec%ncol = history_width(rec%damage%active)
+      ! (filled in a loop: gfortran 12 garbles an array constructor of a
+      ! constant's components with a variable implied-do bound)
+      allocate (names(rec%ncol), texts(rec%ncol))
+      do c = 1, rec%ncol
+         col = history_columns(c)
+         names(c) = col%file_name
+         texts(c) = col%meaning // ' (' // trim(col%file_unit) // ')'
+      end do
+
       call open_columns(deck, '_history.dat', 'impact: history of a low-velocity impact (Choi, Hong & Lee 1991)', &
-         [(history_columns(c)%file_name, c = 1, nhist)], &
-         [character(len=96) :: (history_columns(c)%meaning // ' (' // trim(history_columns(c)%file_unit) // ')', &
-         c = 1, nhist)], &
+         names, texts, &
          rec%hist_unit, rec%hist_path, stat, errmsg)
       if (stat /= 0) return
       rec%hist_bytes = file_size(rec%hist_path)
@@ -156,7 +173,7 @@ contains
       logical, intent(in) :: converged                   !< its iterations converged
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
-      real(dp) :: t, w_plate, strain_y, work, row(nhist), w_bend, w_rigid
+      real(dp) :: t, w_plate, strain_y, work, row(nhist_strength), w_bend, w_rigid
       integer :: solves
 
       stat = 0
@@ -202,6 +219,7 @@ contains
       if (rec%edges == 'free') w_rigid = plate%d(model%msh%eq(3, model%msh%impact_node)) - w_bend
       if (rec%c_plate >= 0.0_dp) rec%max_slope = max(rec%max_slope, &
          (rec%c_plate + rec%c_impactor)*law_tangent(model%law, hist, cit%alpha))
+      call damage_peak(rec%damage, step, t, imp%f, plate%d)
 
       ! -- the history row and the fields
       if (mod(step, rec%every) == 0 .or. step == rec%nstep) then
@@ -219,6 +237,11 @@ contains
          if (imp%f <= 0.0_dp) row(col_branch) = branch_none
          row(col_contact_iter) = ic
          row(col_solves) = solves
+         call damage_step(rec%damage, model, t, plate%d)
+         if (rec%damage%active) then
+            row(col_failure_index) = rec%damage%step_fi
+            row(col_failure_mode) = rec%damage%step_mode
+         end if
          rec%max_energy_error = nan_max(rec%max_energy_error, abs(row(col_energy_error)))
          rec%energy_created = nan_max(rec%energy_created, -row(col_energy_error))
          call write_row(rec, row, stat, errmsg)
@@ -319,10 +342,10 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure (the first)
       type(summary_item_t), allocatable :: s(:)
-      character(len=msg_len) :: text
+      character(len=msg_len) :: text, dtext
       real(dp) :: duration
       logical :: ended, short
-      integer :: ios
+      integer :: ios, dstat
 
       call theory_warning(model%scene, rec%w_bend_max, short, text)
       if (short) then
@@ -370,6 +393,7 @@ contains
          call summary_real(s, 'impactor_compliance_m_per_N', 'impactor_compliance', 'm/N', rec%c_impactor, 1.0_dp)
          call summary_real(s, 'max_fixed_point_slope', 'max_fixed_point_slope', '-', rec%max_slope, 1.0_dp)
       end if
+      call damage_close(rec%damage, model, s, rec%h5, dstat, dtext)
       call summary_integer(s, 'warnings', rec%warnings)
       call summary_real(s, 'cpu_s', 'cpu', 's', cpu_s, 1.0_dp)
 
@@ -377,6 +401,10 @@ contains
       rec%hist_unit = -1
       if (.not. allocated(rec%hist_path)) rec%hist_path = deck%prefix // '_history.dat'
       call write_summary_file(deck, s, stat, errmsg)
+      if (dstat /= 0 .and. stat == 0) then
+         stat = dstat
+         errmsg = dtext
+      end if
       call results_finish(rec%h5, status, s, ios, text)
       if (ios /= 0 .and. stat == 0) then
          stat = ios
@@ -409,12 +437,12 @@ contains
    !> A history row to the file and to <prefix>.h5.
    subroutine write_row(rec, row, stat, errmsg)
       type(record_t), intent(inout) :: rec
-      real(dp), intent(in) :: row(nhist)
+      real(dp), intent(in) :: row(nhist_strength)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       character(len=msg_len) :: iomsg
       integer :: ios
-      call write_history_row(rec%hist_unit, rec%hist_path, row, rec%hist_bytes, stat, iomsg)
+      call write_history_row(rec%hist_unit, rec%hist_path, row(:rec%ncol), rec%hist_bytes, stat, iomsg)
       if (stat /= 0) then
          ! a full disk, the file-size limit: the history is cut back to its
          ! last whole row, so that every row it keeps reads
@@ -424,7 +452,7 @@ contains
          call truncate_file(rec%hist_path, rec%hist_bytes, ios)
          return
       end if
-      call results_append_history(rec%h5, row, .true., stat, errmsg)
+      call results_append_history(rec%h5, row(:rec%ncol), .true., stat, errmsg)
    end subroutine write_row
 
    !> max(a, b) that keeps a NaN (Fortran's max may drop it).

@@ -15,7 +15,7 @@ module shape_functions
    use kinds, only: dp
    implicit none
    private
-   public :: nen, shape9, shape9_derivs, node_xi
+   public :: nen, shape9, shape9_derivs, shape9_second_derivs, node_xi
 
    !> Nodes per element.
    integer, parameter :: nen = 9
@@ -54,6 +54,22 @@ contains
       dphi(1,:) = dlx(ia)*ly(ib)
       dphi(2,:) = lx(ia)*dly(ib)
    end function shape9_derivs
+
+   !> Second derivatives of the nine shape functions with respect to xi and
+   !> eta: d2phi(1,i) = d2 phi_i/d xi2, d2phi(2,i) = d2 phi_i/d eta2,
+   !> d2phi(3,i) = d2 phi_i/d xi d eta (the ply stresses' equilibrium,
+   !> src/ply_stress.f90, needs the gradients of the strains).
+   pure function shape9_second_derivs(xi, eta) result(d2phi)
+      real(dp), intent(in) :: xi, eta   !< reference coordinates
+      real(dp) :: d2phi(3, nen)
+      real(dp) :: lx(3), ly(3), dlx(3), dly(3)
+      real(dp), parameter :: d2l(3) = [1.0_dp, -2.0_dp, 1.0_dp]   ! L'' of the three polynomials
+      call lagrange3(xi, lx, dlx)
+      call lagrange3(eta, ly, dly)
+      d2phi(1,:) = d2l(ia)*ly(ib)
+      d2phi(2,:) = lx(ia)*d2l(ib)
+      d2phi(3,:) = dlx(ia)*dly(ib)
+   end function shape9_second_derivs
 
    !> Quadratic Lagrange polynomials through s = -1, 0, 1 and their slopes.
    pure subroutine lagrange3(s, l, dl)

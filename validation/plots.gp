@@ -122,3 +122,23 @@ plot d.'point_response_modal.dat' u 1:2 w l lw 3 lc rgb "black" t "Navier modal 
      d.'point_response_paper_9x6_history.dat' u 1:2 w l lw 2 t "2 x 2 shear, point force (the paper's), 9 x 6", \
      d.'point_response_paper_36x24_history.dat' u 1:2 w l lw 2 dt 2 t "2 x 2 shear, point force (the paper's), 36 x 24"
 set autoscale
+
+# ---- check 11: ply stresses against the mesh
+set output o.'ply_stress_convergence.png'
+set title "Check 11: ply stresses, a/h = 10, sinusoidal load: largest |FE - exact| / max |exact|"
+set logscale xy
+set format y "10^{%L}"
+set xlabel "elements per half side (quarter model)"
+set ylabel "relative error"
+set key top right
+set xrange [3:40]
+plot d.'ply_stress_mesh.dat' u 1:2 w lp pt 7 lw 2 t "cross-ply: s11 (in-plane)", \
+     d.'ply_stress_mesh.dat' u 1:6 w lp pt 5 lw 2 t "cross-ply: t13 (equilibrium)", \
+     d.'ply_stress_mesh.dat' u 1:5 w lp pt 4 lw 2 t "cross-ply: t23 (equilibrium)", \
+     d.'ply_stress_mesh.dat' u 1:7 w lp pt 9 lw 2 t "isotropic: s11", \
+     d.'ply_stress_mesh.dat' u 1:11 w lp pt 11 lw 2 t "isotropic: t13", \
+     0.1*x**(-2) w l dt 2 lc rgb "black" t "slope -2", \
+     0.55*x**(-1) w l dt 3 lc rgb "black" t "slope -1"
+unset logscale
+set format y "%g"
+set autoscale

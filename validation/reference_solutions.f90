@@ -83,16 +83,44 @@
 !>    energy dissipated (the area of the force-indentation loop) is
 !>    (1 - e^2) m v^2/2.
 !>
+!> 5. Ply stresses of the Navier solution (item 1) under the sinusoidal
+!>    load q0 sin(pi x/a) sin(pi y/b), symmetric cross-ply (Qbar16 = Qbar26
+!>    = 0, B = 0): with W, X, Y of the (1, 1) term, kappa_x = -alpha X s c',
+!>    ... (s = sin, c = cos of alpha x and beta y), the in-plane stresses
+!>    of ply k are exact, eq. (3): sigma_x = z (Qbar11 kappa_x + Qbar12 kappa_y),
+!>    sigma_y = z (Qbar12 kappa_x + Qbar22 kappa_y), tau_xy = z Qbar66 kappa_xy;
+!>    the transverse shear from the first two equations of equilibrium
+!>    (eq. 7, static), integrated from z = -h/2 ply by ply:
+!>        tau_xz(z) = -int zeta (Qbar11 kappa_x,x + Qbar12 kappa_y,x + Qbar66 kappa_xy,y) dzeta,
+!>        tau_yz(z) = -int zeta (Qbar66 kappa_xy,x + Qbar12 kappa_x,y + Qbar22 kappa_y,y) dzeta,
+!>    (Reddy 2004, section 7.3.3, the same recovery); it vanishes on both
+!>    faces, since N = 0. Written out here with its own rotation into the
+!>    ply axes, independent of src/ply_stress.f90.
+!>
+!> 6. The isotropic plate under the same load, Kirchhoff's resultants
+!>    (Timoshenko & Woinowsky-Krieger, Art. 28): with
+!>    W = q0/(D (alpha^2 + beta^2)^2),
+!>        M_x = D (alpha^2 + nu beta^2) W s s,  M_y = D (nu alpha^2 + beta^2) W s s,
+!>        M_xy = -D (1 - nu) alpha beta W c c,
+!>        Q_x = D alpha (alpha^2 + beta^2) W c s,  Q_y = D beta (alpha^2 + beta^2) W s c
+!>    (the signs of this code: z and w along the load, kappa_x = psi_x,x),
+!>    and the stresses of a homogeneous plate sigma = 12 M z/h^3,
+!>    tau_xz = 3 Q_x/(2 h) (1 - 4 z^2/h^2). For a simply supported polygonal
+!>    isotropic plate the first-order theory's moments and shear forces are
+!>    Kirchhoff's (its rotations are -grad w of the classical plate: C. M.
+!>    Wang, J. N. Reddy, K. H. Lee, Shear Deformable Beams and Plates,
+!>    Elsevier 2000, ch. 7), so these are exact for the FE's theory too.
+!>
 !> Units: SI throughout (m, N, Pa, kg, s, rad/s).
 module reference_solutions
    use kinds, only: dp, pi
-   use materials, only: laminate_t
+   use materials, only: laminate_t, lamina_t, lamina_qbar
    implicit none
    private
    public :: navier_series_t, navier_fsdt, navier_fsdt_static, navier_static_centre, navier_step_centre, &
              navier_frequencies, navier_clpt_centre, &
              strip_load_parameter, strip_deflection, strip_twk_rhs, strip_u_min, &
-             hertz_impact_t, hertz_impact, &
+             hertz_impact_t, hertz_impact, navier_sinusoidal_ply_stresses, isotropic_sinusoidal_stresses, &
              load_uniform, load_sinusoidal, load_central_force, &
              edge_simply_supported, edge_clamped
 
@@ -336,6 +364,73 @@ contains
       end if
       phi = s
    end subroutine navier_modes
+
+   ! ===================================================== ply stresses
+
+   !> Item 5: the ply stresses (s11, s22, t12, t23, t13) in the material
+   !> axes, sigma(:, f, k) on face f (1 bottom, 2 top) of ply k, of the
+   !> Navier solution under the sinusoidal load q0 at (x, y), 0 <= x <= a.
+   subroutine navier_sinusoidal_ply_stresses(lam, angles, lmt, a, b, q0, x, y, sigma, stat, errmsg)
+      type(lamina_t), intent(in) :: lam            !< the lamina
+      real(dp), intent(in) :: angles(:)            !< ply angles (0 or 90), bottom to top (deg)
+      type(laminate_t), intent(in) :: lmt          !< its laminate (D, Abar; h)
+      real(dp), intent(in) :: a, b, q0             !< plate (m), load amplitude (Pa)
+      real(dp), intent(in) :: x, y                 !< point, from the corner (m)
+      real(dp), intent(out) :: sigma(:,:,:)        !< (5, 2, nply) (Pa)
+      integer, intent(out) :: stat                 !< 0 on success
+      character(len=*), intent(inout) :: errmsg    !< reason on failure
+      real(dp) :: wxy(3), al, be, sx, cx, sy, cy, kap(3), kx(3), ky(3), qb(3,3), z0, z1, z, txz, tyz, &
+                  txz0, tyz0, sxyz(3), c, s
+      integer :: k, f, n
+      al = pi/a;  be = pi/b
+      call navier_static(lmt, al, be, q0, wxy, stat, errmsg)
+      if (stat /= 0) return
+      sx = sin(al*x);  cx = cos(al*x);  sy = sin(be*y);  cy = cos(be*y)
+      associate (xx => wxy(2), yy => wxy(3))
+         kap = [-al*xx*sx*sy, -be*yy*sx*sy, (be*xx + al*yy)*cx*cy]
+         kx = [-al**2*xx*cx*sy, -al*be*yy*cx*sy, -al*(be*xx + al*yy)*sx*cy]     ! d kappa/dx
+         ky = [-al*be*xx*sx*cy, -be**2*yy*sx*cy, -be*(be*xx + al*yy)*cx*sy]     ! d kappa/dy
+      end associate
+      n = size(angles)
+      txz0 = 0.0_dp;  tyz0 = 0.0_dp
+      plies: do k = 1, n
+         qb = lamina_qbar(lam, angles(k))
+         z0 = -0.5_dp*lmt%h + real(k - 1, dp)*lmt%h/real(n, dp)
+         z1 = z0 + lmt%h/real(n, dp)
+         c = cos(angles(k)*pi/180.0_dp);  s = sin(angles(k)*pi/180.0_dp)
+         faces: do f = 1, 2
+            z = merge(z0, z1, f == 1)
+            sxyz = z*[qb(1,1)*kap(1) + qb(1,2)*kap(2), qb(1,2)*kap(1) + qb(2,2)*kap(2), qb(3,3)*kap(3)]
+            txz = txz0 - 0.5_dp*(z**2 - z0**2)*(qb(1,1)*kx(1) + qb(1,2)*kx(2) + qb(3,3)*ky(3))
+            tyz = tyz0 - 0.5_dp*(z**2 - z0**2)*(qb(3,3)*kx(3) + qb(1,2)*ky(1) + qb(2,2)*ky(2))
+            sigma(1, f, k) = c*c*sxyz(1) + s*s*sxyz(2) + 2.0_dp*c*s*sxyz(3)
+            sigma(2, f, k) = s*s*sxyz(1) + c*c*sxyz(2) - 2.0_dp*c*s*sxyz(3)
+            sigma(3, f, k) = -c*s*sxyz(1) + c*s*sxyz(2) + (c*c - s*s)*sxyz(3)
+            sigma(4, f, k) = -s*txz + c*tyz
+            sigma(5, f, k) = c*txz + s*tyz
+         end do faces
+         txz0 = txz;  tyz0 = tyz
+      end do plies
+   end subroutine navier_sinusoidal_ply_stresses
+
+   !> Item 6: (sigma_x, sigma_y, tau_xy, tau_yz, tau_xz) of the isotropic
+   !> plate (E, nu, h) under the sinusoidal load q0 at (x, y, z), x, y from
+   !> the corner.
+   pure function isotropic_sinusoidal_stresses(e, nu, h, a, b, q0, x, y, z) result(st)
+      real(dp), intent(in) :: e, nu, h, a, b, q0, x, y, z
+      real(dp) :: st(5)
+      real(dp) :: d, al, be, w, mx, my, mxy, qx, qy
+      d = e*h**3/(12.0_dp*(1.0_dp - nu**2))
+      al = pi/a;  be = pi/b
+      w = q0/(d*(al**2 + be**2)**2)
+      mx = d*(al**2 + nu*be**2)*w*sin(al*x)*sin(be*y)
+      my = d*(nu*al**2 + be**2)*w*sin(al*x)*sin(be*y)
+      mxy = -d*(1.0_dp - nu)*al*be*w*cos(al*x)*cos(be*y)
+      qx = d*al*(al**2 + be**2)*w*cos(al*x)*sin(be*y)
+      qy = d*be*(al**2 + be**2)*w*sin(al*x)*cos(be*y)
+      st = [12.0_dp*mx*z/h**3, 12.0_dp*my*z/h**3, 12.0_dp*mxy*z/h**3, &
+            1.5_dp*qy/h*(1.0_dp - 4.0_dp*z**2/h**2), 1.5_dp*qx/h*(1.0_dp - 4.0_dp*z**2/h**2)]
+   end function isotropic_sinusoidal_stresses
 
    ! ===================================================== Navier, CLPT
 

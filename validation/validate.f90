@@ -12,6 +12,9 @@
 !>   6 the impactor on a rigid target against Hertz, with the paper's law
 !>   7 the paper's Fig. 5: quarter against full plate
 !>   8 energy balance, dissipation = loop area
+!>   9 the element's shear rules; 10 the impact against the modal solution
+!>  11 ply stresses against the Navier solution and the isotropic plate,
+!>     each failure criterion against hand values
 !> plus the program path: ./impact on the static, modes and pressure decks
 !> gives the numbers the library gives.
 !>
@@ -45,6 +48,10 @@ program validate
    use shear_strain, only: shear_rule_t, shear_rule_names
    use element_matrices, only: element_geometry_t, element_geometry, element_stiffness
    use shape_functions, only: nen, node_xi
+   use damage_record, only: damage_t, damage_open, damage_stresses, damage_points
+   use failure_criteria, only: strength_t, failure_index, criterion_hashin, criterion_max_stress, &
+      criterion_tsai_wu, mode_names
+   use reference_solutions, only: navier_sinusoidal_ply_stresses, isotropic_sinusoidal_stresses
    use reference_solutions, only: navier_series_t, navier_fsdt, navier_fsdt_static, navier_step_centre, &
       navier_frequencies, navier_clpt_centre, strip_deflection, hertz_impact_t, hertz_impact, &
       load_uniform, load_sinusoidal, load_central_force, edge_simply_supported, edge_clamped
@@ -91,6 +98,8 @@ program validate
    call lap('check 9')
    call check_point_response()
    call lap('check 10')
+   call check_ply_stresses()
+   call lap('check 11')
 
    close (su)
    call assemble_report()
@@ -1235,6 +1244,189 @@ contains
          if (f(j) > v(1)) v(1:2) = [f(j), t(j)]
       end do
    end function force_pulse
+
+   ! =============================================================== check 11
+
+   !> Ply stresses (src/ply_stress.f90) of a linear static solution at every
+   !> 3 x 3 Gauss point and ply face, against (a) the Navier solution of the
+   !> simply supported cross-ply [0/90/90/0] under the sinusoidal load, a/h =
+   !> 10 (reference_solutions item 5: exact in-plane stresses, transverse
+   !> shear from equilibrium), and (b) a homogeneous isotropic plate against
+   !> the plate formulas (item 6), on quarter meshes 4 x 4 to 32 x 32; then
+   !> (c) each criterion on single stress states against hand values.
+   !> Error of a component: the largest |FE - exact| over the points and
+   !> faces, over the largest |exact| of that component.
+   subroutine check_ply_stresses()
+      integer, parameter :: meshes(4) = [4, 8, 16, 32]
+      !> in-plane: first derivatives at the 3 x 3 points, second order in the
+      !> element size (1.0e-4 measured at 32 x 32: twice that); shear: the
+      !> second derivatives of a biquadratic field, first order (1.8e-2
+      !> measured at 32 x 32: the next 40 %); the observed order of the shear
+      !> from 16 x 16 to 32 x 32 must be 1 within 0.1, that of the in-plane
+      !> stresses 2 within 0.1
+      real(dp), parameter :: tol_inplane = 2.0e-4_dp, tol_shear = 2.5e-2_dp, tol_order = 0.1_dp
+      !> the criteria: rounding only
+      real(dp), parameter :: tol_criteria = 1.0e-12_dp
+      real(dp) :: err(5, size(meshes), 2), e_prev(5)
+      integer :: k, c, plate, du
+      character(len=cw) :: cells(12)
+
+      open (newunit=du, file=out_dir // '/ply_stress_mesh.dat', status='replace', action='write')
+      write (du, '(a)') '# check 11: ply stresses, largest |FE - exact|/max|exact| per component, quarter n x n mesh'
+      write (du, '(a)') '# columns: 1 n, 2-6 cross-ply s11 s22 t12 t23 t13, 7-11 isotropic s11 s22 t12 t23 t13'
+      do k = 1, size(meshes)
+         call ply_stress_errors(meshes(k), err(:, k, 1), err(:, k, 2))
+         write (du, '(i4, 10es14.5)') meshes(k), err(:, k, 1), err(:, k, 2)
+      end do
+      close (du)
+      do plate = 1, 2
+         call table_open(trim(merge('ply_stress_navier   ', 'ply_stress_isotropic', plate == 1)), &
+            [character(len=cw) :: 'quarter mesh', 's11 error', 'rate', 's22 error', 'rate', 't12 error', 'rate', &
+            't23 error', 'rate', 't13 error', 'rate'])
+         e_prev = 0.0_dp
+         do k = 1, size(meshes)
+            cells(1) = cell(trim(inum(meshes(k))) // ' x ' // trim(inum(meshes(k))))
+            do c = 1, 5
+               cells(2*c) = sci(err(c, k, plate))
+               cells(2*c + 1) = rate(e_prev(c), err(c, k, plate), k)
+            end do
+            call table_row(cells(1:11))
+            e_prev = err(:, k, plate)
+         end do
+         call table_close()
+      end do
+      k = size(meshes)
+      call record('11 ply stresses', 'cross-ply, Navier: in-plane s11, s22, t12 (32 x 32)', maxval(err(1:3, k, 1)), &
+                  tol_inplane)
+      call record('11 ply stresses', 'cross-ply, Navier: equilibrium t23, t13 (32 x 32)', maxval(err(4:5, k, 1)), &
+                  tol_shear)
+      call record('11 ply stresses', 'isotropic plate formulas: in-plane (32 x 32)', maxval(err(1:3, k, 2)), &
+                  tol_inplane)
+      call record('11 ply stresses', 'isotropic plate formulas: parabolic shear (32 x 32)', maxval(err(4:5, k, 2)), &
+                  tol_shear)
+      call record('11 ply stresses', 'observed order 16 x 16 -> 32 x 32 of the in-plane stresses - 2', &
+                  maxval(abs(log(err(1:3, k - 1, :)/err(1:3, k, :))/log(2.0_dp) - 2.0_dp)), tol_order)
+      call record('11 ply stresses', 'observed order 16 x 16 -> 32 x 32 of the equilibrium shear - 1', &
+                  maxval(abs(log(err(4:5, k - 1, :)/err(4:5, k, :))/log(2.0_dp) - 1.0_dp)), tol_order)
+      call check_criteria(tol_criteria)
+   end subroutine check_ply_stresses
+
+   !> The errors of the cross-ply (Navier) and the isotropic plate on the
+   !> quarter n x n mesh (check_ply_stresses).
+   subroutine ply_stress_errors(n, err_navier, err_iso)
+      integer, intent(in) :: n
+      real(dp), intent(out) :: err_navier(5), err_iso(5)
+      type(deck_t) :: deck
+      real(dp), parameter :: e_iso = 70.0e9_dp, nu_iso = 0.3_dp
+      integer :: plate
+      do plate = 1, 2
+         call load_deck('navier_crossply', deck)
+         deck%h = deck%a/10.0_dp
+         deck%nx = n;  deck%ny = n
+         deck%load_kind = 'sinusoidal'
+         if (plate == 2) then
+            deck%e1 = e_iso;  deck%e2 = e_iso;  deck%nu12 = nu_iso
+            deck%g12 = e_iso/(2.0_dp*(1.0_dp + nu_iso));  deck%g13 = deck%g12;  deck%g23 = deck%g12
+            deck%angles = [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]
+            call errors_of(deck, err_iso, .true.)
+         else
+            call errors_of(deck, err_navier, .false.)
+         end if
+      end do
+   end subroutine ply_stress_errors
+
+   !> The ply-stress errors of one plate deck (ply_stress_errors).
+   subroutine errors_of(deck, err, isotropic)
+      type(deck_t), intent(inout) :: deck
+      real(dp), intent(out) :: err(5)
+      logical, intent(in) :: isotropic
+      type(static_result_t) :: res
+      type(damage_t) :: dmg
+      type(model_t) :: model
+      real(dp), allocatable :: sig(:,:,:,:), fi(:,:,:), ref(:,:,:,:), xy(:,:)
+      real(dp) :: z
+      integer :: np, nply, p, k, f, stat
+      character(len=msg_len) :: errmsg
+      call fe_static(deck, res)
+      deck%analysis_kind = 'static'
+      call model_of(deck, model)
+      ! the stresses of src/ply_stress.f90 through the run's record (strengths only so it is active)
+      deck%xt = 1.0_dp;  deck%xc = 1.0_dp;  deck%yt = 1.0_dp;  deck%yc = 1.0_dp;  deck%s12 = 1.0_dp
+      deck%s23 = 1.0_dp
+      call damage_open(dmg, deck, model)
+      nply = size(deck%angles)
+      xy = damage_points(model)
+      np = size(xy, 2)
+      allocate (sig(5, 2, nply, np), fi(2, nply, np), ref(5, 2, nply, np))
+      call damage_stresses(dmg, model, res%d, sig, fi)
+      points: do p = 1, np
+         if (isotropic) then
+            do k = 1, nply
+               do f = 1, 2
+                  z = -0.5_dp*deck%h + real(k - 2 + f, dp)*deck%h/real(nply, dp)
+                  ref(:, f, k, p) = isotropic_sinusoidal_stresses(deck%e1, deck%nu12, deck%h, deck%a, deck%b, &
+                     deck%load_magnitude, xy(1, p) + 0.5_dp*deck%a, xy(2, p) + 0.5_dp*deck%b, z)
+               end do
+            end do
+         else
+            call navier_sinusoidal_ply_stresses(lamina_t(deck%e1, deck%e2, deck%g12, deck%g13, deck%g23, &
+               deck%nu12, deck%rho), deck%angles, model%lmt, deck%a, deck%b, deck%load_magnitude, &
+               xy(1, p) + 0.5_dp*deck%a, xy(2, p) + 0.5_dp*deck%b, ref(:, :, :, p), stat, errmsg)
+            if (stat /= 0) call fail(errmsg)
+         end if
+      end do points
+      do k = 1, 5
+         err(k) = maxval(abs(sig(k, :, :, :) - ref(k, :, :, :)))/maxval(abs(ref(k, :, :, :)))
+      end do
+   end subroutine errors_of
+
+   !> Each criterion on single stress states against values worked out by
+   !> hand (strengths Xt 1000, Xc 800, Yt 50, Yc 200, S12 80, S23 50 MPa).
+   subroutine check_criteria(tol)
+      real(dp), intent(in) :: tol
+      real(dp), parameter :: mpa = 1.0e6_dp
+      type(strength_t), parameter :: hand = strength_t(1000.0_dp*mpa, 800.0_dp*mpa, 50.0_dp*mpa, 200.0_dp*mpa, &
+         80.0_dp*mpa, 50.0_dp*mpa)
+      integer, parameter :: nstate = 9
+      !> criterion, stress state (MPa), hand value, and how it was worked out
+      integer, parameter :: crit(nstate) = [criterion_hashin, criterion_hashin, criterion_hashin, criterion_hashin, &
+         criterion_hashin, criterion_max_stress, criterion_max_stress, criterion_tsai_wu, criterion_tsai_wu]
+      real(dp), parameter :: states(5, nstate) = reshape([ &
+         500.0_dp, 0.0_dp, 40.0_dp, 0.0_dp, 0.0_dp, &
+         -800.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+         0.0_dp, 25.0_dp, 40.0_dp, 25.0_dp, 40.0_dp, &
+         0.0_dp, -200.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+         0.0_dp, -150.0_dp, 0.0_dp, 20.0_dp, 0.0_dp, &
+         -400.0_dp, 10.0_dp, 40.0_dp, 0.0_dp, 60.0_dp, &
+         0.0_dp, -150.0_dp, 0.0_dp, 30.0_dp, 0.0_dp, &
+         500.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+         0.0_dp, -200.0_dp, 0.0_dp, 0.0_dp, 0.0_dp], [5, nstate])
+      real(dp), parameter :: hand_value(nstate) = [0.5_dp, 1.0_dp, 1.0_dp, 1.0_dp, 0.16_dp, 0.75_dp, 0.75_dp, &
+         0.5_dp, 1.0_dp]
+      character(len=64), parameter :: how(nstate) = [character(len=64) :: '(500/1000)^2 + 40^2/80^2', &
+         '(-800/800)^2', '(25/50)^2 + (25/50)^2 + (40^2 + 40^2)/80^2', 'at -Yc: 1 (eq. 26)', &
+         '(150/100)^2 - 3 (150/200) + (20/50)^2', 'max(400/800, 10/50, 60/80)', 'max(150/200, 30/50)', &
+         'a = 0.3125, b = -0.125: (b + sqrt(b^2 + 4a))/2', 'at -Yc: 1']
+      character(len=12), parameter :: names(3) = [character(len=12) :: 'hashin', 'max_stress', 'tsai_wu']
+      real(dp) :: fi, worst
+      integer :: j, mode
+      character(len=cw) :: cells(6)
+      worst = 0.0_dp
+      call table_open('criteria', [character(len=cw) :: 'criterion', 'stress state (s11, s22, t12, t23, t13), MPa', &
+         'by hand', 'computed', 'mode', 'error'])
+      do j = 1, nstate
+         call failure_index(hand, crit(j), states(:, j)*mpa, fi, mode)
+         worst = max(worst, abs(fi - hand_value(j)))
+         cells = [character(len=cw) :: names(crit(j)), cell(trim(num(states(1, j), '(f7.1)')) // ', ' // &
+            trim(num(states(2, j), '(f7.1)')) // ', ' // trim(num(states(3, j), '(f6.1)')) // ', ' // &
+            trim(num(states(4, j), '(f6.1)')) // ', ' // trim(num(states(5, j), '(f6.1)'))), &
+            cell(trim(num(hand_value(j), '(f6.3)')) // ' = ' // trim(how(j))), num(fi, '(f18.15)'), &
+            mode_names(mode), sci(fi - hand_value(j))]
+         call table_row(cells)
+      end do
+      call table_close()
+      call record('11 failure criteria', 'Hashin, max stress, Tsai-Wu against hand values', worst, tol)
+   end subroutine check_criteria
 
    ! ============================================================ the program
 
