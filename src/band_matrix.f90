@@ -50,14 +50,10 @@ module band_matrix
 
    !> Symmetric band matrix, upper band storage (see module header).
    type :: band_matrix_t
-      !> Order of the matrix (number of equations).
-      integer :: n = 0
-      !> Half-bandwidth: A(i,j) = 0 for |i-j| > kd.
-      integer :: kd = 0
-      !> Band of the upper triangle, ab(kd+1+i-j, j) = A(i,j).
-      real(dp), allocatable :: ab(:,:)
-      !> True once ab holds the Cholesky factor instead of A.
-      logical :: factored = .false.
+      integer :: n = 0  !< order of the matrix (number of equations).
+      integer :: kd = 0  !< half-bandwidth: A(i,j) = 0 for |i-j| > kd.
+      real(dp), allocatable :: ab(:,:)  !< band of the upper triangle, ab(kd+1+i-j, j) = A(i,j).
+      logical :: factored = .false.  !< true once ab holds the Cholesky factor instead of A.
    end type band_matrix_t
 
    !> Solve with the factored matrix: one right-hand side b(n) or several
@@ -100,16 +96,11 @@ contains
 
    !> Allocate an n x n band matrix of half-bandwidth kd, all zero.
    subroutine band_init(a, n, kd, stat, errmsg)
-      !> The matrix, (re)defined here.
-      type(band_matrix_t), intent(out) :: a
-      !> Order of the matrix, n >= 1.
-      integer, intent(in) :: n
-      !> Half-bandwidth, 0 <= kd <= n-1.
-      integer, intent(in) :: kd
-      !> 0 on success, 1 on invalid sizes or failed allocation.
-      integer, intent(out) :: stat
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout) :: errmsg
+      type(band_matrix_t), intent(out) :: a  !< the matrix, (re)defined here.
+      integer, intent(in) :: n  !< order of the matrix, n >= 1.
+      integer, intent(in) :: kd  !< half-bandwidth, 0 <= kd <= n-1.
+      integer, intent(out) :: stat  !< 0 on success, 1 on invalid sizes or failed allocation.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
 
       stat = 0
@@ -141,8 +132,7 @@ contains
 
    !> Set every entry to zero and forget any factorisation.
    subroutine band_zero(a)
-      !> The matrix (its structure is kept).
-      type(band_matrix_t), intent(inout) :: a
+      type(band_matrix_t), intent(inout) :: a  !< the matrix (its structure is kept).
 
       if (allocated(a%ab)) a%ab = 0.0_dp
       a%factored = .false.
@@ -150,8 +140,7 @@ contains
 
    !> True when A(i,j) is a valid index pair inside the stored band.
    pure logical function band_in_band(a, i, j)
-      !> The matrix.
-      type(band_matrix_t), intent(in) :: a
+      type(band_matrix_t), intent(in) :: a  !< the matrix.
       integer, intent(in) :: i, j      !< row and column indices
 
       band_in_band = i >= 1 .and. i <= a%n .and. j >= 1 .and. j <= a%n &
@@ -164,11 +153,9 @@ contains
    !> global_matrix checks this for every element before it adds; a pair
    !> outside the band is not stored (never written outside ab).
    subroutine band_add(a, i, j, value)
-      !> The matrix, added into.
-      type(band_matrix_t), intent(inout) :: a
+      type(band_matrix_t), intent(inout) :: a  !< the matrix, added into.
       integer, intent(in) :: i, j      !< row and column indices
-      !> Value added to A(i,j).
-      real(dp), intent(in) :: value
+      real(dp), intent(in) :: value  !< value added to A(i,j).
       integer :: r, c
 
       if (.not. band_in_band(a, i, j)) return
@@ -179,8 +166,7 @@ contains
 
    !> Entry A(i,j) of the (unfactored) matrix; zero outside the band.
    pure real(dp) function band_get(a, i, j)
-      !> The matrix.
-      type(band_matrix_t), intent(in) :: a
+      type(band_matrix_t), intent(in) :: a  !< the matrix.
       integer, intent(in) :: i, j      !< row and column indices
 
       if (band_in_band(a, i, j)) then
@@ -190,35 +176,12 @@ contains
       end if
    end function band_get
 
-   !> y = A x (BLAS dsbmv).
-   !>
-   !> Fails when a is factored or the sizes do not match; y is then NaN, so
-   !> that a failure cannot pass unnoticed.
-   subroutine band_matvec(a, x, y, stat, errmsg)
-      !> The matrix, not factored.
-      type(band_matrix_t), intent(in) :: a
-      !> Vector of length n.
-      real(dp), intent(in) :: x(:)
-      !> Result A x, length n.
-      real(dp), intent(out) :: y(:)
-      integer, intent(out) :: stat               !< 0 on success, 1 on failure
-      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure)
-      character(len=msg_len) :: msg
-
-      stat = 0
-      msg = ''
-      if (a%factored) then
-         msg = 'band_matvec: the matrix holds its factor, not A'
-      else if (size(x) /= a%n .or. size(y) /= a%n) then
-         write (msg, '(a,i0,a,i0,a,i0)') 'band_matvec: size(x) = ', size(x), &
-            ', size(y) = ', size(y), ' but n = ', a%n
-      end if
-      if (len_trim(msg) > 0) then
-         y = ieee_value(1.0_dp, ieee_quiet_nan)
-         stat = 1
-         errmsg = msg
-         return
-      end if
+   !> y = A x (BLAS dsbmv), a not factored and x, y of its size (global_matvec,
+   !> the one caller, checks both).
+   subroutine band_matvec(a, x, y)
+      type(band_matrix_t), intent(in) :: a  !< the matrix, not factored
+      real(dp), intent(in) :: x(:)          !< vector of length n
+      real(dp), intent(out) :: y(:)         !< result A x, length n
       call dsbmv('U', a%n, a%kd, 1.0_dp, a%ab, a%kd + 1, x, 1, 0.0_dp, y, 1)
    end subroutine band_matvec
 
@@ -228,14 +191,10 @@ contains
    !> equation and errmsg says "matrix not positive definite at equation N";
    !> the matrix is then left unusable (not flagged factored).
    subroutine band_factor(a, stat, errmsg, bad_eq)
-      !> The matrix, overwritten by its Cholesky factor.
-      type(band_matrix_t), intent(inout) :: a
-      !> 0 on success, 1 on failure.
-      integer, intent(out) :: stat
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout) :: errmsg
-      !> Equation whose pivot failed, 0 if none did.
-      integer, intent(out) :: bad_eq
+      type(band_matrix_t), intent(inout) :: a  !< the matrix, overwritten by its Cholesky factor.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+      integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
       character(len=msg_len) :: msg
       real(dp), allocatable :: diag(:)
       real(dp) :: pivot
@@ -293,14 +252,10 @@ contains
 
    !> Solve A x = b for one right-hand side with the factor (dpbtrs).
    subroutine band_solve_vec(a, b, stat, errmsg)
-      !> The factored matrix.
-      type(band_matrix_t), intent(in) :: a
-      !> Right-hand side on entry, solution on return, length n.
-      real(dp), intent(inout) :: b(:)
-      !> 0 on success, 1 on failure.
-      integer, intent(out) :: stat
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout) :: errmsg
+      type(band_matrix_t), intent(in) :: a  !< the factored matrix.
+      real(dp), intent(inout) :: b(:)  !< right-hand side on entry, solution on return, length n.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       integer :: info
 
       call check_solve(a, size(b), stat, errmsg)
@@ -312,14 +267,10 @@ contains
 
    !> Solve A X = B for nrhs right-hand sides with the factor (dpbtrs).
    subroutine band_solve_mat(a, b, stat, errmsg)
-      !> The factored matrix.
-      type(band_matrix_t), intent(in) :: a
-      !> Right-hand sides b(n, nrhs) on entry, solutions on return.
-      real(dp), intent(inout) :: b(:,:)
-      !> 0 on success, 1 on failure.
-      integer, intent(out) :: stat
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout) :: errmsg
+      type(band_matrix_t), intent(in) :: a  !< the factored matrix.
+      real(dp), intent(inout) :: b(:,:)  !< right-hand sides b(n, nrhs) on entry, solutions on return.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       integer :: info
 
       call check_solve(a, size(b, 1), stat, errmsg)
@@ -330,14 +281,10 @@ contains
 
    !> The checks before a solve: factored, right-hand side of length n.
    subroutine check_solve(a, nb, stat, errmsg)
-      !> The matrix to solve with.
-      type(band_matrix_t), intent(in) :: a
-      !> Length of the right-hand side(s).
-      integer, intent(in) :: nb
-      !> 0 when the solve may proceed, 1 otherwise.
-      integer, intent(out) :: stat
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout) :: errmsg
+      type(band_matrix_t), intent(in) :: a  !< the matrix to solve with.
+      integer, intent(in) :: nb  !< length of the right-hand side(s).
+      integer, intent(out) :: stat  !< 0 when the solve may proceed, 1 otherwise.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
 
       stat = 0
@@ -354,12 +301,9 @@ contains
 
    !> Turn dpbtrs's info into stat and errmsg.
    subroutine check_info(info, stat, errmsg)
-      !> info returned by dpbtrs.
-      integer, intent(in) :: info
-      !> 0 when info = 0, 1 otherwise.
-      integer, intent(out) :: stat
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout) :: errmsg
+      integer, intent(in) :: info  !< info returned by dpbtrs.
+      integer, intent(out) :: stat  !< 0 when info = 0, 1 otherwise.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
 
       stat = 0
@@ -372,16 +316,11 @@ contains
 
    !> a = a + alpha*b for two unfactored matrices of the same n and kd.
    subroutine band_axpy(a, alpha, b, stat, errmsg)
-      !> The matrix added into.
-      type(band_matrix_t), intent(inout) :: a
-      !> Scalar multiplying b.
-      real(dp), intent(in) :: alpha
-      !> The matrix added, same n and kd as a.
-      type(band_matrix_t), intent(in) :: b
-      !> 0 on success, 1 on failure (a unchanged).
-      integer, intent(out) :: stat
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout) :: errmsg
+      type(band_matrix_t), intent(inout) :: a  !< the matrix added into.
+      real(dp), intent(in) :: alpha  !< scalar multiplying b.
+      type(band_matrix_t), intent(in) :: b  !< the matrix added, same n and kd as a.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure (a unchanged).
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
 
       stat = 0

@@ -25,6 +25,7 @@
 !> (bad_eq); the caller maps it to a node and a freedom.
 module global_matrix
    use kinds, only: dp, msg_len
+   use number_text, only: int_str
    use band_matrix, only: band_matrix_t, band_init, band_zero, band_in_band, &
                           band_add, band_get, band_matvec, band_factor, band_solve, &
                           band_axpy
@@ -46,14 +47,10 @@ module global_matrix
    !> A global matrix in the storage named by `storage`; only that one of
    !> `band` and `sky` is allocated.
    type :: global_matrix_t
-      !> 'band' or 'skyline' ('' before global_init).
-      character(len=storage_len) :: storage = ''
-      !> Number of equations.
-      integer :: neq = 0
-      !> The matrix when storage = 'band'.
-      type(band_matrix_t) :: band
-      !> The matrix when storage = 'skyline'.
-      type(skyline_matrix_t) :: sky
+      character(len=storage_len) :: storage = ''  !< 'band' or 'skyline' ('' before global_init).
+      integer :: neq = 0  !< number of equations.
+      type(band_matrix_t) :: band  !< the matrix when storage = 'band'.
+      type(skyline_matrix_t) :: sky  !< the matrix when storage = 'skyline'.
       !> First error of an assembly or addition called without stat
       !> ('' = none); reported by global_factor and global_solve.
       character(len=msg_len) :: deferred_error = ''
@@ -64,18 +61,12 @@ contains
    !> Find the structure from the element freedom table and allocate a
    !> zero matrix in the chosen storage.
    subroutine global_init(g, storage, neq, elem_eq, stat, errmsg)
-      !> The matrix, (re)defined here.
-      type(global_matrix_t), intent(out) :: g
-      !> 'band' or 'skyline' (case and surrounding blanks ignored).
-      character(len=*), intent(in) :: storage
-      !> Number of equations, >= 1.
-      integer, intent(in) :: neq
-      !> elem_eq(k, e): equation of freedom k of element e, 0 = constrained.
-      integer, intent(in) :: elem_eq(:,:)
-      !> 0 on success, 1 on failure.
-      integer, intent(out) :: stat
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout) :: errmsg
+      type(global_matrix_t), intent(out) :: g  !< the matrix, (re)defined here.
+      character(len=*), intent(in) :: storage  !< 'band' or 'skyline' (case and surrounding blanks ignored).
+      integer, intent(in) :: neq  !< number of equations, >= 1.
+      integer, intent(in) :: elem_eq(:,:)  !< elem_eq(k, e): equation of freedom k of element e, 0 = constrained.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
       character(len=len(storage)) :: name
       integer, allocatable :: first_row(:)
@@ -144,8 +135,7 @@ contains
    !> Set every entry to zero, forget any factorisation and any deferred
    !> error; the structure is kept.
    subroutine global_zero(g)
-      !> The matrix.
-      type(global_matrix_t), intent(inout) :: g
+      type(global_matrix_t), intent(inout) :: g  !< the matrix.
 
       select case (trim(g%storage))
       case ('band')
@@ -164,18 +154,14 @@ contains
    !> sizes differ, or an equation is out of range or outside the structure
    !> (eqs not a column of the elem_eq given to global_init).
    subroutine global_assemble(g, ke, eqs, stat, errmsg)
-      !> The global matrix, added into.
-      type(global_matrix_t), intent(inout) :: g
-      !> Symmetric element matrix ke(nfe, nfe).
-      real(dp), intent(in) :: ke(:,:)
-      !> Global equations of the element freedoms, eqs(nfe), 0 = skip.
-      integer, intent(in) :: eqs(:)
-      !> 0 on success, 1 on failure (optional; see module header).
-      integer, intent(out), optional :: stat
-      !> Reason for the failure (optional, set only on failure).
-      character(len=*), intent(inout), optional :: errmsg
+      type(global_matrix_t), intent(inout) :: g  !< the global matrix, added into.
+      real(dp), intent(in) :: ke(:,:)  !< symmetric element matrix ke(nfe, nfe).
+      integer, intent(in) :: eqs(:)  !< global equations of the element freedoms, eqs(nfe), 0 = skip.
+      integer, intent(out), optional :: stat  !< 0 on success, 1 on failure (optional; see module header).
+      character(len=*), intent(inout), optional :: errmsg  !< reason for the failure (optional, set only on failure).
       character(len=msg_len) :: msg
       integer :: p, q, ip, iq
+      logical :: banded
 
       if (present(stat)) stat = 0
       msg = ''
@@ -207,43 +193,30 @@ contains
          return
       end if
 
-      select case (trim(g%storage))
-      case ('band')
-         do q = 1, size(eqs)
-            iq = eqs(q)
-            if (iq == 0) cycle
-            do p = 1, size(eqs)
-               ip = eqs(p)
-               if (ip == 0 .or. ip > iq) cycle
+      banded = g%storage == 'band'
+      columns: do q = 1, size(eqs)
+         iq = eqs(q)
+         if (iq == 0) cycle columns
+         do p = 1, size(eqs)
+            ip = eqs(p)
+            if (ip == 0 .or. ip > iq) cycle
+            if (banded) then
                call band_add(g%band, ip, iq, ke(p, q))
-            end do
-         end do
-      case ('skyline')
-         do q = 1, size(eqs)
-            iq = eqs(q)
-            if (iq == 0) cycle
-            do p = 1, size(eqs)
-               ip = eqs(p)
-               if (ip == 0 .or. ip > iq) cycle
+            else
                call skyline_add(g%sky, ip, iq, ke(p, q))
-            end do
+            end if
          end do
-      end select
+      end do columns
    end subroutine global_assemble
 
    !> g = g + alpha*other, for two unfactored matrices built by global_init
    !> with the same storage, neq and elem_eq (e.g. K + 4/dt**2 M).
    subroutine global_axpy_matrix(g, alpha, other, stat, errmsg)
-      !> The matrix added into.
-      type(global_matrix_t), intent(inout) :: g
-      !> Scalar multiplying other.
-      real(dp), intent(in) :: alpha
-      !> The matrix added; same structure as g.
-      type(global_matrix_t), intent(in) :: other
-      !> 0 on success, 1 on failure (optional; see module header).
-      integer, intent(out), optional :: stat
-      !> Reason for the failure (optional, set only on failure).
-      character(len=*), intent(inout), optional :: errmsg
+      type(global_matrix_t), intent(inout) :: g  !< the matrix added into.
+      real(dp), intent(in) :: alpha  !< scalar multiplying other.
+      type(global_matrix_t), intent(in) :: other  !< the matrix added; same structure as g.
+      integer, intent(out), optional :: stat  !< 0 on success, 1 on failure (optional; see module header).
+      character(len=*), intent(inout), optional :: errmsg  !< reason for the failure (optional, set only on failure).
       character(len=msg_len) :: msg
       integer :: ierr
 
@@ -271,10 +244,8 @@ contains
 
    !> dst = src (storage, structure, values, factorisation).
    subroutine global_copy(dst, src)
-      !> The copy.
-      type(global_matrix_t), intent(out) :: dst
-      !> The matrix copied.
-      type(global_matrix_t), intent(in) :: src
+      type(global_matrix_t), intent(out) :: dst  !< the copy.
+      type(global_matrix_t), intent(in) :: src  !< the matrix copied.
 
       dst = src
    end subroutine global_copy
@@ -288,25 +259,24 @@ contains
       real(dp), intent(in) :: x(:)               !< a vector of length neq
       real(dp), intent(out) :: y(:)              !< A x
       integer, intent(out), optional :: stat     !< 0 on success, 1 on failure
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout), optional :: errmsg
+      character(len=*), intent(inout), optional :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
       integer :: ierr
 
       if (present(stat)) stat = 0
       msg = ''
       ierr = 0
-      if (len_trim(g%deferred_error) > 0) then
-         msg = g%deferred_error
+      if (.not. usable(g, 'global_matvec', ierr, msg)) then
+         continue
+      else if (is_factored(g)) then
+         msg = 'global_matvec: the matrix holds its factors, not A'
+      else if (size(x) /= g%neq .or. size(y) /= g%neq) then
+         msg = 'global_matvec: size(x) = ' // int_str(size(x)) // ', size(y) = ' // int_str(size(y)) &
+            // ' but neq = ' // int_str(g%neq)
+      else if (g%storage == 'band') then
+         call band_matvec(g%band, x, y)
       else
-         select case (trim(g%storage))
-         case ('band')
-            call band_matvec(g%band, x, y, ierr, msg)
-         case ('skyline')
-            call skyline_matvec(g%sky, x, y, ierr, msg)
-         case default
-            msg = 'global_matvec: the matrix was never initialised'
-         end select
+         call skyline_matvec(g%sky, x, y)
       end if
       if (len_trim(msg) > 0) then
          y = ieee_value(1.0_dp, ieee_quiet_nan)
@@ -321,14 +291,10 @@ contains
    !> "matrix not positive definite at equation N (...)"; the caller names
    !> the node and freedom. Both storages use the same pivot rule.
    subroutine global_factor(g, stat, errmsg, bad_eq)
-      !> The matrix, overwritten by its factors.
-      type(global_matrix_t), intent(inout) :: g
-      !> 0 on success, 1 on failure.
-      integer, intent(out) :: stat
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout) :: errmsg
-      !> Equation whose pivot failed, 0 if none did.
-      integer, intent(out) :: bad_eq
+      type(global_matrix_t), intent(inout) :: g  !< the matrix, overwritten by its factors.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+      integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
 
       bad_eq = 0
       if (.not. usable(g, 'global_factor', stat, errmsg)) return
@@ -375,8 +341,7 @@ contains
    !> Half-bandwidth: kd for band storage, the largest column height
    !> max_j (j - m_j) for skyline storage; 0 before global_init.
    pure integer function global_bandwidth(g)
-      !> The matrix.
-      type(global_matrix_t), intent(in) :: g
+      type(global_matrix_t), intent(in) :: g  !< the matrix.
 
       select case (trim(g%storage))
       case ('band')
@@ -390,8 +355,7 @@ contains
 
    !> Number of stored reals: (kd+1)*neq for band, nwk for skyline.
    pure integer function global_stored_entries(g)
-      !> The matrix.
-      type(global_matrix_t), intent(in) :: g
+      type(global_matrix_t), intent(in) :: g  !< the matrix.
 
       select case (trim(g%storage))
       case ('band')
@@ -437,22 +401,17 @@ contains
 
    !> True when the selected storage holds a factorisation.
    pure logical function is_factored(g)
-      !> The matrix.
-      type(global_matrix_t), intent(in) :: g
+      type(global_matrix_t), intent(in) :: g  !< the matrix.
 
       is_factored = g%band%factored .or. g%sky%factored
    end function is_factored
 
    !> Hand a failure to the caller's stat/errmsg, or record it in g.
    subroutine report(g, msg, stat, errmsg)
-      !> The matrix, which records the failure when stat is absent.
-      type(global_matrix_t), intent(inout) :: g
-      !> What failed.
-      character(len=*), intent(in) :: msg
-      !> The caller's stat, set to 1 when present.
-      integer, intent(out), optional :: stat
-      !> The caller's errmsg, set to msg when present.
-      character(len=*), intent(inout), optional :: errmsg
+      type(global_matrix_t), intent(inout) :: g  !< the matrix, which records the failure when stat is absent.
+      character(len=*), intent(in) :: msg  !< what failed.
+      integer, intent(out), optional :: stat  !< the caller's stat, set to 1 when present.
+      character(len=*), intent(inout), optional :: errmsg  !< the caller's errmsg, set to msg when present.
 
       if (present(stat)) then
          stat = 1
@@ -464,8 +423,7 @@ contains
 
    !> Lower-case copy of an ASCII string.
    pure function lower(s) result(t)
-      !> The string.
-      character(len=*), intent(in) :: s
+      character(len=*), intent(in) :: s  !< the string.
       character(len=len(s)) :: t
       integer :: k
 

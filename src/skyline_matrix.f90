@@ -53,30 +53,21 @@ module skyline_matrix
 
    !> Symmetric matrix in skyline storage (see module header).
    type :: skyline_matrix_t
-      !> Order of the matrix (number of equations).
-      integer :: n = 0
-      !> Address of the diagonal of column j in a; maxa(n+1) = nwk + 1.
-      integer, allocatable :: maxa(:)
-      !> Packed columns, a(maxa(j) + j - i) = A(i,j).
-      real(dp), allocatable :: a(:)
-      !> True once a holds L and D instead of A.
-      logical :: factored = .false.
+      integer :: n = 0  !< order of the matrix (number of equations).
+      integer, allocatable :: maxa(:)  !< address of the diagonal of column j in a; maxa(n+1) = nwk + 1.
+      real(dp), allocatable :: a(:)  !< packed columns, a(maxa(j) + j - i) = A(i,j).
+      logical :: factored = .false.  !< true once a holds L and D instead of A.
    end type skyline_matrix_t
 
 contains
 
    !> Build the addresses from the profile and allocate a zero matrix.
    subroutine skyline_init(sky, n, first_row, stat, errmsg)
-      !> The matrix, (re)defined here.
-      type(skyline_matrix_t), intent(out) :: sky
-      !> Order of the matrix, n >= 1.
-      integer, intent(in) :: n
-      !> first_row(j): smallest row with a nonzero in column j, 1..j.
-      integer, intent(in) :: first_row(:)
-      !> 0 on success, 1 on invalid input or failed allocation.
-      integer, intent(out) :: stat
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout) :: errmsg
+      type(skyline_matrix_t), intent(out) :: sky  !< the matrix, (re)defined here.
+      integer, intent(in) :: n  !< order of the matrix, n >= 1.
+      integer, intent(in) :: first_row(:)  !< first_row(j): smallest row with a nonzero in column j, 1..j.
+      integer, intent(out) :: stat  !< 0 on success, 1 on invalid input or failed allocation.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
       integer(int64) :: nwk
       integer :: j
@@ -125,8 +116,7 @@ contains
 
    !> Set every entry to zero and forget any factorisation.
    subroutine skyline_zero(sky)
-      !> The matrix (its profile is kept).
-      type(skyline_matrix_t), intent(inout) :: sky
+      type(skyline_matrix_t), intent(inout) :: sky  !< the matrix (its profile is kept).
 
       if (allocated(sky%a)) sky%a = 0.0_dp
       sky%factored = .false.
@@ -134,10 +124,8 @@ contains
 
    !> First stored row m_j of column j.
    pure integer function skyline_first_row(sky, j)
-      !> The matrix.
-      type(skyline_matrix_t), intent(in) :: sky
-      !> Column, 1..n.
-      integer, intent(in) :: j
+      type(skyline_matrix_t), intent(in) :: sky  !< the matrix.
+      integer, intent(in) :: j  !< column, 1..n.
 
       skyline_first_row = j - (sky%maxa(j + 1) - sky%maxa(j) - 1)
    end function skyline_first_row
@@ -145,8 +133,7 @@ contains
    !> Largest column height max_j (j - m_j): the half-bandwidth a band
    !> storage of the same matrix would need.
    pure integer function skyline_half_bandwidth(sky)
-      !> The matrix.
-      type(skyline_matrix_t), intent(in) :: sky
+      type(skyline_matrix_t), intent(in) :: sky  !< the matrix.
       integer :: j
 
       skyline_half_bandwidth = 0
@@ -158,8 +145,7 @@ contains
 
    !> True when A(i,j) is a valid index pair inside the stored profile.
    pure logical function skyline_in_profile(sky, i, j)
-      !> The matrix.
-      type(skyline_matrix_t), intent(in) :: sky
+      type(skyline_matrix_t), intent(in) :: sky  !< the matrix.
       integer, intent(in) :: i, j      !< row and column indices
 
       skyline_in_profile = .false.
@@ -173,11 +159,9 @@ contains
    !> factored. global_matrix checks this for every element before it adds;
    !> a pair outside the profile is not stored (never written outside a).
    subroutine skyline_add(sky, i, j, value)
-      !> The matrix, added into.
-      type(skyline_matrix_t), intent(inout) :: sky
+      type(skyline_matrix_t), intent(inout) :: sky  !< the matrix, added into.
       integer, intent(in) :: i, j      !< row and column indices
-      !> Value added to A(i,j).
-      real(dp), intent(in) :: value
+      real(dp), intent(in) :: value  !< value added to A(i,j).
       integer :: k
 
       if (.not. skyline_in_profile(sky, i, j)) return
@@ -187,8 +171,7 @@ contains
 
    !> Entry A(i,j) of the (unfactored) matrix; zero outside the profile.
    pure real(dp) function skyline_get(sky, i, j)
-      !> The matrix.
-      type(skyline_matrix_t), intent(in) :: sky
+      type(skyline_matrix_t), intent(in) :: sky  !< the matrix.
       integer, intent(in) :: i, j      !< row and column indices
 
       if (skyline_in_profile(sky, i, j)) then
@@ -198,37 +181,15 @@ contains
       end if
    end function skyline_get
 
-   !> y = A x, column by column over the stored upper triangle.
-   !>
-   !> Fails when sky is factored or the sizes do not match; y is then NaN,
-   !> so that a failure cannot pass unnoticed.
-   subroutine skyline_matvec(sky, x, y, stat, errmsg)
-      !> The matrix, not factored.
-      type(skyline_matrix_t), intent(in) :: sky
-      !> Vector of length n.
-      real(dp), intent(in) :: x(:)
-      !> Result A x, length n.
-      real(dp), intent(out) :: y(:)
-      integer, intent(out) :: stat               !< 0 on success, 1 on failure
-      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure)
-      character(len=msg_len) :: msg
+   !> y = A x, column by column over the stored upper triangle; sky not
+   !> factored and x, y of its size (global_matvec, the one caller, checks
+   !> both).
+   subroutine skyline_matvec(sky, x, y)
+      type(skyline_matrix_t), intent(in) :: sky  !< the matrix, not factored
+      real(dp), intent(in) :: x(:)               !< vector of length n
+      real(dp), intent(out) :: y(:)              !< result A x, length n
       real(dp) :: aij
       integer :: i, j
-
-      stat = 0
-      msg = ''
-      if (sky%factored) then
-         msg = 'skyline_matvec: the matrix holds its factors, not A'
-      else if (size(x) /= sky%n .or. size(y) /= sky%n) then
-         write (msg, '(a,i0,a,i0,a,i0)') 'skyline_matvec: size(x) = ', size(x), &
-            ', size(y) = ', size(y), ' but n = ', sky%n
-      end if
-      if (len_trim(msg) > 0) then
-         y = ieee_value(1.0_dp, ieee_quiet_nan)
-         stat = 1
-         errmsg = msg
-         return
-      end if
       ! Each stored A(i,j), i < j, acts twice: y_i += A(i,j) x_j and
       ! y_j += A(j,i) x_i; the diagonal once.
       y = 0.0_dp
@@ -248,14 +209,10 @@ contains
    !> equation and errmsg says "matrix not positive definite at equation N";
    !> the matrix is then left unusable (not flagged factored).
    subroutine skyline_factor(sky, stat, errmsg, bad_eq)
-      !> The matrix, overwritten by L (off-diagonals) and D (diagonal).
-      type(skyline_matrix_t), intent(inout) :: sky
-      !> 0 on success, 1 on failure.
-      integer, intent(out) :: stat
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout) :: errmsg
-      !> Equation whose pivot failed, 0 if none did.
-      integer, intent(out) :: bad_eq
+      type(skyline_matrix_t), intent(inout) :: sky  !< the matrix, overwritten by L (off-diagonals) and D (diagonal).
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+      integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
       character(len=msg_len) :: msg
       real(dp) :: ajj, g, l, s
       integer :: i, j, r, mi, mj
@@ -319,14 +276,10 @@ contains
 
    !> Solve A x = b with the factors L and D (b overwritten by x).
    subroutine skyline_solve(sky, b, stat, errmsg)
-      !> The factored matrix.
-      type(skyline_matrix_t), intent(in) :: sky
-      !> Right-hand side on entry, solution on return, length n.
-      real(dp), intent(inout) :: b(:)
-      !> 0 on success, 1 on failure.
-      integer, intent(out) :: stat
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout) :: errmsg
+      type(skyline_matrix_t), intent(in) :: sky  !< the factored matrix.
+      real(dp), intent(inout) :: b(:)  !< right-hand side on entry, solution on return, length n.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
       integer :: i, j
 
@@ -367,16 +320,11 @@ contains
 
    !> sky = sky + alpha*other for two unfactored matrices of one profile.
    subroutine skyline_axpy(sky, alpha, other, stat, errmsg)
-      !> The matrix added into.
-      type(skyline_matrix_t), intent(inout) :: sky
-      !> Scalar multiplying other.
-      real(dp), intent(in) :: alpha
-      !> The matrix added, same profile as sky.
-      type(skyline_matrix_t), intent(in) :: other
-      !> 0 on success, 1 on failure (sky unchanged).
-      integer, intent(out) :: stat
-      !> Reason for the failure (set only on failure).
-      character(len=*), intent(inout) :: errmsg
+      type(skyline_matrix_t), intent(inout) :: sky  !< the matrix added into.
+      real(dp), intent(in) :: alpha  !< scalar multiplying other.
+      type(skyline_matrix_t), intent(in) :: other  !< the matrix added, same profile as sky.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure (sky unchanged).
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
 
       stat = 0
       if (sky%factored .or. other%factored) then
