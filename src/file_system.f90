@@ -4,12 +4,14 @@
 !>
 !>  - make_directories: `mkdir -p` of a path's directories, by mkdir(2);
 !>  - path_problem: a path the program refuses to use (empty, control
-!>    characters).
+!>    characters);
+!>  - rename_file: rename(2), which replaces the target in one step (a
+!>    reader sees the old file or the new one, never half of one).
 module file_system
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
    implicit none
    private
-   public :: make_directories, parent_directory, path_problem
+   public :: make_directories, parent_directory, path_problem, rename_file
 
    interface
       !> int mkdir(const char *path, mode_t mode)
@@ -19,6 +21,13 @@ module file_system
          integer(c_int), value :: mode
          integer(c_int) :: r
       end function c_mkdir
+
+      !> int rename(const char *oldpath, const char *newpath)
+      function c_rename(oldpath, newpath) bind(c, name='rename') result(r)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: oldpath(*), newpath(*)
+         integer(c_int) :: r
+      end function c_rename
    end interface
 
    !> Permissions of a directory created here, before the umask: rwxrwxrwx.
@@ -84,5 +93,19 @@ contains
          end if
       end do
    end function path_problem
+
+   !> Renames the file `from` to `to`, replacing `to` in one step (same file
+   !> system). stat /= 0 when it cannot, with both names in the message.
+   subroutine rename_file(from, to, stat, errmsg)
+      character(len=*), intent(in) :: from          !< the file
+      character(len=*), intent(in) :: to            !< its new name
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< the names, on failure
+      stat = 0
+      if (c_rename(from // c_null_char, to // c_null_char) /= 0_c_int) then
+         stat = 1
+         errmsg = 'cannot rename ''' // from // ''' to ''' // to // ''''
+      end if
+   end subroutine rename_file
 
 end module file_system

@@ -35,7 +35,7 @@ module hdf5_io
       h5tcopy_f, h5tset_size_f, h5tget_size_f, h5tset_cset_f, h5tclose_f, h5tis_variable_str_f, &
       H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5T_FORTRAN_S1, H5T_CSET_UTF8_F, h5tset_strpad_f, &
       H5T_STR_NULLTERM_F, &
-      h5pcreate_f, h5pset_chunk_f, h5pclose_f, H5P_DATASET_CREATE_F, H5P_DEFAULT_F, &
+      h5pcreate_f, h5pset_chunk_f, h5pset_virtual_f, h5pclose_f, H5P_DATASET_CREATE_F, H5P_DEFAULT_F, &
       h5dcreate_f, h5dopen_f, h5dclose_f, h5dwrite_f, h5dset_extent_f, h5dget_space_f, h5dvlen_reclaim_f
    use h5lt, only: h5ltmake_dataset_double_f, h5ltmake_dataset_int_f, h5ltread_dataset_double_f, &
       h5ltread_dataset_int_f, h5ltget_dataset_ndims_f, h5ltget_dataset_info_f
@@ -46,6 +46,7 @@ module hdf5_io
    public :: h5io_set_attr, h5io_write, h5io_rewrite
    public :: h5io_check, h5io_fail, h5io_attr_path, h5io_vlen_string_type
    public :: h5io_create_series, h5io_create_columns, h5io_append, h5io_close_dataset
+   public :: h5io_view_column
    public :: h5io_real, h5io_integer
 
    !> Element types of a series (h5io_create_series).
@@ -423,6 +424,42 @@ contains
       call h5sclose_f(mspace, err)
       call h5sclose_f(fspace, err)
    end subroutine grow_and_write
+
+   !> Creates `name`, a virtual dataset (HDF5 1.10's VDS) of nrow reals
+   !> that shows column `column` (from 1) of the rank-2 series `source`
+   !> (h5io_create_columns) of the same file: a view, no copy. A reader sees
+   !> a plain 1-D dataset (h5py, h5dump, XDMF readers); `source` needs at
+   !> least `column` columns when the view is read.
+   subroutine h5io_view_column(loc, name, source, nrow, column, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name, source
+      integer, intent(in) :: nrow, column
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer(hid_t) :: vspace, sspace, plist, did
+      integer :: err
+      !> The file a virtual dataset's source is in: '.', the same file.
+      character(len=*), parameter :: same_file = '.'
+
+      call h5screate_simple_f(1, [int(nrow, hsize_t)], vspace, err)
+      call h5io_check(err, 'cannot make the dataspace of the view', name, stat, errmsg)
+      if (stat /= 0) return
+      call h5screate_simple_f(2, [int(nrow, hsize_t), int(column, hsize_t)], sspace, err, &
+         [int(nrow, hsize_t), H5S_UNLIMITED_F])
+      if (err == 0) call h5sselect_hyperslab_f(sspace, H5S_SELECT_SET_F, [0_hsize_t, int(column - 1, hsize_t)], &
+         [int(nrow, hsize_t), 1_hsize_t], err)
+      if (err == 0) call h5pcreate_f(H5P_DATASET_CREATE_F, plist, err)
+      if (err == 0) call h5pset_virtual_f(plist, vspace, same_file, source, sspace, err)
+      call h5io_check(err, 'cannot map the view onto '//source, name, stat, errmsg)
+      if (stat == 0) then
+         call h5dcreate_f(loc, name, H5T_NATIVE_DOUBLE, vspace, did, err, dcpl_id=plist)
+         call h5io_check(err, 'cannot create the view', name, stat, errmsg)
+         if (stat == 0) call h5dclose_f(did, err)
+         call h5pclose_f(plist, err)
+      end if
+      call h5sclose_f(sspace, err)
+      call h5sclose_f(vspace, err)
+   end subroutine h5io_view_column
 
    !> Closes a dataset opened by h5io_create_series or h5io_create_columns.
    subroutine h5io_close_dataset(did, stat, errmsg)

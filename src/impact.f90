@@ -189,7 +189,7 @@ contains
       if (stat /= 0) call fail(errmsg)
       tr%unit = output_unit;  tr%cr1 = deck%cr1;  tr%cr2 = deck%cr2
       if (deck%analysis_kind == 'impact' .and. .not. check_only) then
-         call claim_results(deck, [character(len=16) :: '_history.dat', '_summary.dat', '.h5'], stat, errmsg)
+         call claim_results(deck, [character(len=16) :: '_history.dat', '_summary.dat', '.h5', '.xdmf'], stat, errmsg)
          if (stat /= 0) call fail(errmsg)
       end if
    end subroutine read_input
@@ -238,7 +238,7 @@ contains
    !> A wrong command line: the message and the usage, exit status 1.
    subroutine bad_usage(message)
       character(len=*), intent(in) :: message
-      write (error_unit, '(a)') 'impact: error: ' // message
+      write (error_unit, '(a)') 'impact: error: ' // trim(message)
       call usage(error_unit)
       error stop 1
    end subroutine bad_usage
