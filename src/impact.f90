@@ -240,6 +240,7 @@ contains
       character(len=*), intent(in) :: message
       write (error_unit, '(a)') 'impact: error: ' // trim(message)
       call usage(error_unit)
+      flush (error_unit)     ! before the run-time library's own ERROR STOP line
       error stop 1
    end subroutine bad_usage
 
