@@ -216,7 +216,10 @@ contains
       call deck_bind(deck, iv, v, .true.)
       deck%given(iv) = .true.
       call validate_deck(deck, stat, errmsg)
-      if (stat /= 0) return
+      if (stat /= 0) then
+         errmsg = '--set ' // group // '.' // name // '=' // quoted_cut(text) // ': ' // trim(errmsg)
+         return
+      end if
       ! -- recorded as a command line would give it (the echo, /deck settings)
       if (.not. allocated(deck%settings)) deck%settings = ''
       if (len(deck%settings) > 0) deck%settings = deck%settings // ' '
