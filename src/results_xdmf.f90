@@ -15,7 +15,7 @@
 !>
 !>   /xdmf/cells          (nelem, 9)   element nodes numbered from 0 (XDMF
 !>                                     counts from 0, /mesh/connectivity from 1)
-!>   /xdmf/fields/<k>/<f> (nnode)      snapshot k of field f: a virtual dataset
+!>   /xdmf/fields/<f>/<k> (nnode)      field f of snapshot k: a virtual dataset
 !>                                     (HDF5 1.10) showing row k of /fields/<f>,
 !>                                     no copy; readers see a plain dataset
 !>
@@ -23,13 +23,19 @@
 !> functions of an Attribute, and meshio reads only whole datasets; a plain
 !> dataset per snapshot is what every reader takes, hence the views.
 !>
-!> &output xdmf_domain = 'whole' mirrors a quarter or half into the whole
+!> &output xdmf = 'whole' mirrors a quarter or half into the whole
 !> plate (about x = 0 and y = 0, src/mesh.f90): u, psi_x change sign across
 !> x = 0 and v, psi_y across y = 0, which no view can do, so the whole
 !> plate's fields are written as data: /xdmf/coordinates (nnode_whole, 2),
-!> /xdmf/cells, /xdmf/fields/<k>/<f> and /xdmf/peak/<f>, about 4 (quarter)
+!> /xdmf/cells, /xdmf/fields/<f>/<k> and /xdmf/peak/<f>, about 4 (quarter)
 !> or 2 (half) times the modelled fields. Nodes on the symmetry lines are
-!> shared, elements keep the counter-clockwise order.
+!> shared, elements keep the counter-clockwise order. &output xdmf = 'none'
+!> writes neither the XML nor /xdmf.
+!>
+!> Cost: a view is an HDF5 object; making the five of a snapshot takes about
+!> 2 ms (HDF5 1.10, the file flushed after every history row), which is
+!> nothing at the default fields_every and doubles the time of a small run
+!> with a snapshot every step (README, "Looking at the fields").
 !>
 !> As the run goes: after a snapshot the HDF5 file is flushed and the XML is
 !> written to <prefix>.xdmf.tmp and renamed over <prefix>.xdmf (one step: a
@@ -56,6 +62,8 @@ module results_xdmf
    private
    public :: xdmf_t, xdmf_open, xdmf_snapshot, xdmf_peak, xdmf_close, xdmf_rewrite_interval
 
+   !> Longest number as text (src/number_text.f90, real_str).
+   integer, parameter :: text_len = 32
    !> Least wall-clock time between two rewrites of the XML during a run (s).
    real(dp), parameter :: xdmf_rewrite_interval = 1.0_dp
    !> Fields odd across x = 0 (u, psi_x) and across y = 0 (v, psi_y), by freedom.
@@ -76,7 +84,7 @@ module results_xdmf
       character(len=:), allocatable :: status       !< 'running', then the run's status
       integer :: nnode = 0, nelem = 0               !< nodes and elements shown
       integer :: nsnap = 0                          !< snapshots so far
-      real(dp), allocatable :: time(:), force(:)    !< of each snapshot (s, N)
+      character(len=text_len), allocatable :: time(:), force(:)  !< of each snapshot (s, N), as the XML gives them
       integer, allocatable :: step(:)               !< of each snapshot
       integer, allocatable :: source(:)             !< whole: the modelled node of each node shown
       real(dp), allocatable :: parity(:,:)          !< whole: (ndof_node, nnode) sign of each field there
@@ -87,10 +95,11 @@ contains
 
    !> Starts <prefix>.xdmf for the results file fid (open, /mesh written):
    !> /xdmf (the cells numbered from 0; the whole plate's mesh and peak when
-   !> &output xdmf_domain = 'whole') and the XML without a snapshot.
+   !> &output xdmf = 'whole') and the XML without a snapshot; nothing for
+   !> xdmf = 'none'.
    subroutine xdmf_open(x, deck, msh, fid, stat, errmsg)
       type(xdmf_t), intent(out) :: x                !< the XDMF file, active on return
-      type(deck_t), intent(in) :: deck              !< the effective deck (prefix, xdmf_domain)
+      type(deck_t), intent(in) :: deck              !< the effective deck (prefix, xdmf)
       type(mesh_t), intent(in) :: msh               !< the modelled mesh
       integer(hid_t), intent(in) :: fid             !< the open results file
       integer, intent(out) :: stat                  !< 0 on success
@@ -99,11 +108,13 @@ contains
       integer, allocatable :: cells(:,:)
       integer :: slash, k, n
 
+      stat = 0
+      if (deck%xdmf == 'none') return
       x%path = deck%prefix // '.xdmf'
       slash = index(deck%prefix, '/', back=.true.)
       x%h5_name = deck%prefix(slash + 1:) // '.h5'
       x%status = 'running'
-      x%whole = deck%xdmf_domain == 'whole' .and. (msh%sym_x .or. msh%sym_y)
+      x%whole = deck%xdmf == 'whole' .and. (msh%sym_x .or. msh%sym_y)
       allocate (x%time(0), x%force(0), x%step(0))
       call system_clock(x%written_at)
 
@@ -111,8 +122,11 @@ contains
       if (stat == 0) call h5io_set_attr(fid, 'xdmf', 'domain', trim(merge('whole   ', 'modelled', x%whole)), &
          stat, errmsg)
       if (stat == 0) call h5io_set_attr(fid, 'xdmf', 'description', 'what ' // x%h5_name(:len(x%h5_name) - 3) &
-         // '.xdmf shows (src/results_xdmf.f90): cells numbered from 0, one group per snapshot', stat, errmsg)
+         // '.xdmf shows (src/results_xdmf.f90): cells numbered from 0, fields/<f>/<k>: field f of snapshot k', stat, errmsg)
       if (stat == 0) call h5io_group(fid, 'xdmf/fields', stat, errmsg)
+      do k = 1, ndof_node
+         if (stat == 0) call h5io_group(fid, 'xdmf/fields/' // trim(freedom_name(k)), stat, errmsg)
+      end do
       if (stat /= 0) return
       if (x%whole) then
          call whole_plate(msh, xy, cells, x%source, x%parity)
@@ -136,7 +150,7 @@ contains
    end subroutine xdmf_open
 
    !> Snapshot number x%nsnap + 1, just appended to /fields: its views (or,
-   !> for the whole plate, its mirrored fields) in /xdmf/fields/<k>, and the
+   !> for the whole plate, its mirrored fields) /xdmf/fields/<f>/<k>, and the
    !> XML rewritten when due (module header).
    subroutine xdmf_snapshot(x, fid, step, time, force, f, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file
@@ -153,19 +167,16 @@ contains
       stat = 0
       if (.not. x%active) return
       x%nsnap = x%nsnap + 1
-      x%time = [x%time, time]
-      x%force = [x%force, force]
+      x%time = [x%time, real_str(time)]
+      x%force = [x%force, real_str(force)]
       x%step = [x%step, step]
-      group = 'xdmf/fields/' // int_str(x%nsnap)
-      call h5io_group(fid, group, stat, errmsg)
       fields: do k = 1, ndof_node
          if (stat /= 0) exit fields
+         group = 'xdmf/fields/' // trim(freedom_name(k)) // '/' // int_str(x%nsnap)
          if (x%whole) then
-            call h5io_write(fid, group // '/' // trim(freedom_name(k)), x%parity(k, :)*f(k, x%source), &
-               stat, errmsg)
+            call h5io_write(fid, group, x%parity(k, :)*f(k, x%source), stat, errmsg)
          else
-            call h5io_view_column(fid, group // '/' // trim(freedom_name(k)), 'fields/' // trim(freedom_name(k)), &
-               size(f, 2), x%nsnap, stat, errmsg)
+            call h5io_view_column(fid, group, 'fields/' // trim(freedom_name(k)), size(f, 2), x%nsnap, stat, errmsg)
          end if
       end do fields
       if (stat /= 0) return
@@ -253,11 +264,11 @@ contains
          write (u, '(a)') '      <Grid Name="step ' // int_str(x%step(s)) // '" GridType="Uniform">'
          write (u, '(a)') '        <xi:include xpointer="xpointer(//Grid[@Name=''mesh'']/*[self::Topology ' &
             // 'or self::Geometry])"/>'
-         write (u, '(a)') '        <Time Value="' // real_str(x%time(s)) // '"/>'
+         write (u, '(a)') '        <Time Value="' // trim(x%time(s)) // '"/>'
          write (u, '(a)') '        <Information Name="step" Value="' // int_str(x%step(s)) // '"/>'
-         write (u, '(a)') '        <Information Name="force_N" Value="' // real_str(x%force(s)) // '"/>'
+         write (u, '(a)') '        <Information Name="force_N" Value="' // trim(x%force(s)) // '"/>'
          do k = 1, ndof_node
-            call attribute(trim(freedom_name(k)), 'xdmf/fields/' // int_str(s) // '/' // trim(freedom_name(k)))
+            call attribute(trim(freedom_name(k)), 'xdmf/fields/' // trim(freedom_name(k)) // '/' // int_str(s))
          end do
          do k = 1, ndof_node
             call attribute('peak_' // trim(freedom_name(k)), peak // trim(freedom_name(k)))
