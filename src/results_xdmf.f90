@@ -40,10 +40,12 @@
 !> As the run goes: after a snapshot the HDF5 file is flushed and the XML is
 !> written to <prefix>.xdmf.tmp and renamed over <prefix>.xdmf (one step: a
 !> reader sees the old file or the new one), after the first snapshot and
-!> then at most once per rewrite_interval of wall-clock time (the XML grows
+!> then at most once per xdmf_rewrite_interval of wall-clock time (the XML grows
 !> with every snapshot; rewriting it each time would cost the square of
 !> their number), and at the end. A killed run's XDMF opens, with the
-!> snapshots up to its last rewrite and status 'running'.
+!> snapshots up to its last rewrite and status 'running'. (A run still
+!> going: HDF5 1.10 does not let another process read the file it writes,
+!> outside SWMR mode, which allows no new object once started.)
 !>
 !> Usage (src/results_hdf5.f90): xdmf_open after /mesh is written,
 !> xdmf_snapshot after each snapshot appended to /fields, xdmf_peak after
@@ -60,7 +62,7 @@ module results_xdmf
    use file_system, only: rename_file
    implicit none
    private
-   public :: xdmf_t, xdmf_open, xdmf_snapshot, xdmf_peak, xdmf_close, xdmf_rewrite_interval
+   public :: xdmf_t, xdmf_open, xdmf_snapshot, xdmf_peak, xdmf_close
 
    !> Longest number as text (src/number_text.f90, real_str).
    integer, parameter :: text_len = 32
