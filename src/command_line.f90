@@ -8,9 +8,9 @@
 !>     --trace STEP[,STEP]   the teaching trace of those steps (src/step_trace.f90)
 !>     --schema, --deck-table, --version, --help
 !>
-!> The deck comes last, once: anything after it (an option or a second
-!> deck), an unknown option or a missing value is an error (the caller
-!> prints the usage).
+!> Options may stand before or after the deck (impact deck.nml --check is
+!> a data check); one deck only: a second one, an unknown option or a
+!> missing value is an error (the caller prints the usage line).
 module command_line
    use input_deck, only: deck_t, read_deck, read_deck_file, set_variable
    implicit none
@@ -44,11 +44,6 @@ contains
       options: do while (i < n)
          i = i + 1
          arg = argument(i)
-         if (len(opts%deck_path) > 0) then
-            errmsg = 'the deck comes last: ''' // arg // ''' follows ' // opts%deck_path &
-               // ' (impact [options] [deck.nml])'
-            return
-         end if
          select case (arg)
          case ('--help', '-h')
             opts%action = 'help'
@@ -72,6 +67,10 @@ contains
          case default
             if (arg(1:min(1, len(arg))) == '-' .and. len(arg) > 1) then
                errmsg = 'unknown option ' // arg
+               return
+            end if
+            if (len(opts%deck_path) > 0) then
+               errmsg = 'one deck only: ''' // arg // ''' follows the deck ' // opts%deck_path
                return
             end if
             opts%deck_path = arg

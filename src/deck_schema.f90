@@ -164,6 +164,9 @@ module deck_schema
       deck_var_t('output', 'overwrite', kind_logical, '-', '.false.', '', &
          'replace the results of an earlier run with the same prefix (else the run is refused)'), &
       deck_var_t('output', 'hdf5', kind_logical, '-', '.true.', '', 'also write the full results to <prefix>.h5'), &
+      deck_var_t('output', 'xdmf', kind_word, '-', 'modelled', 'modelled | whole | none', '<prefix>.xdmf beside ' &
+         // '<prefix>.h5, for ParaView: ''modelled'' (the domain of &mesh), ''whole'' (a quarter or half mirrored ' &
+         // 'into the whole plate; its fields then also stored in <prefix>.h5) or ''none'' (no XDMF file)'), &
       deck_var_t('output', 'fields_every', kind_integer, '-', '40', '[1, inf)', &
          'field snapshots in <prefix>.h5 every N-th step') ]
 
@@ -171,6 +174,7 @@ module deck_schema
    !> defaults are deck_vars' (default_deck in src/input_deck.f90).
    type :: deck_t
       character(len=:), allocatable :: source       !< file the deck came from, or '<stdin>'
+      character(len=:), allocatable :: settings     !< the command line's --set settings over it, '' for none
       ! &plate
       real(dp) :: a = 0, b = 0, h = 0
       ! &lamina
@@ -210,6 +214,7 @@ module deck_schema
       character(len=:), allocatable :: prefix
       integer :: every = 0, fields_every = 0
       logical :: overwrite = .false., hdf5 = .false.
+      character(len=:), allocatable :: xdmf
       !> which variables the deck (or --set) gave, by entry of deck_vars
       logical :: given(size(deck_vars)) = .false.
    end type deck_t
@@ -320,6 +325,7 @@ contains
       case ('output.every');               call scalar_value(i=deck%every)
       case ('output.overwrite');           call scalar_value(l=deck%overwrite)
       case ('output.hdf5');                call scalar_value(l=deck%hdf5)
+      case ('output.xdmf');                call text_value(deck%xdmf)
       case ('output.fields_every');        call scalar_value(i=deck%fields_every)
       end select
 

@@ -25,7 +25,7 @@
 !> file (tools/h5export.f90, the tests) have the read half,
 !> tools/hdf5_read.f90, over the same messages (h5io_check, h5io_fail).
 module hdf5_io
-   use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_f_pointer, c_char, c_null_char
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_f_pointer, c_char, c_null_char, c_bool, c_int, c_int64_t
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, h5fclose_f, &
       h5fflush_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, H5F_SCOPE_GLOBAL_F, h5gcreate_f, h5gclose_f, &
       h5screate_f, h5screate_simple_f, h5sclose_f, h5sselect_hyperslab_f, h5sget_simple_extent_dims_f, &
@@ -35,7 +35,8 @@ module hdf5_io
       h5tcopy_f, h5tset_size_f, h5tget_size_f, h5tset_cset_f, h5tclose_f, h5tis_variable_str_f, &
       H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5T_FORTRAN_S1, H5T_CSET_UTF8_F, h5tset_strpad_f, &
       H5T_STR_NULLTERM_F, &
-      h5pcreate_f, h5pset_chunk_f, h5pclose_f, H5P_DATASET_CREATE_F, H5P_DEFAULT_F, &
+      h5pcreate_f, h5pset_chunk_f, h5pset_virtual_f, h5pclose_f, H5P_DATASET_CREATE_F, H5P_DEFAULT_F, &
+      H5P_FILE_ACCESS_F, &
       h5dcreate_f, h5dopen_f, h5dclose_f, h5dwrite_f, h5dset_extent_f, h5dget_space_f, h5dvlen_reclaim_f
    use h5lt, only: h5ltmake_dataset_double_f, h5ltmake_dataset_int_f, h5ltread_dataset_double_f, &
       h5ltread_dataset_int_f, h5ltget_dataset_ndims_f, h5ltget_dataset_info_f
@@ -46,6 +47,7 @@ module hdf5_io
    public :: h5io_set_attr, h5io_write, h5io_rewrite
    public :: h5io_check, h5io_fail, h5io_attr_path, h5io_vlen_string_type
    public :: h5io_create_series, h5io_create_columns, h5io_append, h5io_close_dataset
+   public :: h5io_view_column
    public :: h5io_real, h5io_integer
 
    !> Element types of a series (h5io_create_series).
@@ -89,14 +91,34 @@ contains
    end subroutine h5io_start
 
    !> Creates (or truncates) the file `path` for writing; fid is its id.
+   !> The file evicts an object's metadata from HDF5's cache when the object
+   !> is closed (H5Pset_evict_on_close, HDF5 >= 1.10.1; no Fortran wrapper
+   !> in 1.10, so through its C interface): the views of src/results_xdmf.f90,
+   !> made and closed by the thousand, would otherwise fill the cache, which
+   !> every flush walks.
    subroutine h5io_create(path, fid, stat, errmsg)
       character(len=*), intent(in) :: path
       integer(hid_t), intent(out) :: fid
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer :: err
-      call h5fcreate_f(path, H5F_ACC_TRUNC_F, fid, err)
+      integer(hid_t) :: fapl
+      interface
+         !> herr_t H5Pset_evict_on_close(hid_t fapl_id, hbool_t evict_on_close); hbool_t is C's bool
+         function c_h5pset_evict_on_close(fapl_id, evict) bind(c, name='H5Pset_evict_on_close') result(r)
+            import :: c_int64_t, c_bool, c_int
+            integer(c_int64_t), value :: fapl_id     ! hid_t: int64_t since HDF5 1.10
+            logical(c_bool), value :: evict
+            integer(c_int) :: r
+         end function c_h5pset_evict_on_close
+      end interface
+      call h5pcreate_f(H5P_FILE_ACCESS_F, fapl, err)
+      if (err == 0) err = int(c_h5pset_evict_on_close(int(fapl, c_int64_t), .true._c_bool))
+      call h5io_check(err, 'cannot set evict-on-close for the HDF5 file', path, stat, errmsg)
+      if (stat /= 0) return
+      call h5fcreate_f(path, H5F_ACC_TRUNC_F, fid, err, access_prp=fapl)
       call h5io_check(err, 'cannot create the HDF5 file', path, stat, errmsg)
+      call h5pclose_f(fapl, err)
    end subroutine h5io_create
 
    !> Closes the file fid.
@@ -423,6 +445,42 @@ contains
       call h5sclose_f(mspace, err)
       call h5sclose_f(fspace, err)
    end subroutine grow_and_write
+
+   !> Creates `name`, a virtual dataset (HDF5 1.10's VDS) of nrow reals
+   !> that shows column `column` (from 1) of the rank-2 series `source`
+   !> (h5io_create_columns) of the same file: a view, no copy. A reader sees
+   !> a plain 1-D dataset (h5py, h5dump, XDMF readers); `source` needs at
+   !> least `column` columns when the view is read.
+   subroutine h5io_view_column(loc, name, source, nrow, column, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name, source
+      integer, intent(in) :: nrow, column
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer(hid_t) :: vspace, sspace, plist, did
+      integer :: err
+      !> The file a virtual dataset's source is in: '.', the same file.
+      character(len=*), parameter :: same_file = '.'
+
+      call h5screate_simple_f(1, [int(nrow, hsize_t)], vspace, err)
+      call h5io_check(err, 'cannot make the dataspace of the view', name, stat, errmsg)
+      if (stat /= 0) return
+      call h5screate_simple_f(2, [int(nrow, hsize_t), int(column, hsize_t)], sspace, err, &
+         [int(nrow, hsize_t), H5S_UNLIMITED_F])
+      if (err == 0) call h5sselect_hyperslab_f(sspace, H5S_SELECT_SET_F, [0_hsize_t, int(column - 1, hsize_t)], &
+         [int(nrow, hsize_t), 1_hsize_t], err)
+      if (err == 0) call h5pcreate_f(H5P_DATASET_CREATE_F, plist, err)
+      if (err == 0) call h5pset_virtual_f(plist, vspace, same_file, source, sspace, err)
+      call h5io_check(err, 'cannot map the view onto '//source, name, stat, errmsg)
+      if (stat == 0) then
+         call h5dcreate_f(loc, name, H5T_NATIVE_DOUBLE, vspace, did, err, dcpl_id=plist)
+         call h5io_check(err, 'cannot create the view', name, stat, errmsg)
+         if (stat == 0) call h5dclose_f(did, err)
+         call h5pclose_f(plist, err)
+      end if
+      call h5sclose_f(sspace, err)
+      call h5sclose_f(vspace, err)
+   end subroutine h5io_view_column
 
    !> Closes a dataset opened by h5io_create_series or h5io_create_columns.
    subroutine h5io_close_dataset(did, stat, errmsg)

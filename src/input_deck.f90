@@ -54,6 +54,7 @@ contains
       character(len=:), allocatable :: what
       integer :: iv, stat
       deck%source = '<defaults>'
+      deck%settings = ''
       do iv = 1, size(deck_vars)
          if (len_trim(deck_vars(iv)%default) == 0) then
             v = value_t(given=.false.)
@@ -220,6 +221,15 @@ contains
       call deck_bind(deck, iv, v, .true.)
       deck%given(iv) = .true.
       call validate_deck(deck, stat, errmsg)
+      if (stat /= 0) then
+         errmsg = '--set ' // group // '.' // name // '=' // quoted_cut(text) // ': ' // trim(errmsg)
+         return
+      end if
+      ! -- recorded as a command line would give it (the echo, /deck settings)
+      if (.not. allocated(deck%settings)) deck%settings = ''
+      if (len(deck%settings) > 0) deck%settings = deck%settings // ' '
+      if (index(text, ' ') > 0) text = "'" // text // "'"
+      deck%settings = deck%settings // '--set ' // group // '.' // name // '=' // text
    end subroutine set_variable
 
    !> The value of entry iv from the items of its assignment, checked for its
@@ -640,6 +650,9 @@ contains
       character(len=group_column) :: column
       integer :: ig, iv
       write (unit, '(a)') lead // 'deck       source = ''' // deck%source // ''''
+      if (allocated(deck%settings)) then
+         if (len(deck%settings) > 0) write (unit, '(a)') lead // 'deck       command line: ' // deck%settings
+      end if
       groups_loop: do ig = 1, size(deck_groups)
          if (.not. group_applies(deck_groups(ig), deck)) cycle groups_loop
          column = '&' // deck_groups(ig)

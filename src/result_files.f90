@@ -126,7 +126,7 @@ contains
       case ('static');   list = [character(len=24) :: '_static.dat', '_deflection.dat']
       case ('modes');    list = [character(len=24) :: '_modes.dat', '_mode_shapes.dat']
       case ('pressure'); list = [character(len=24) :: '_pressure_history.dat']
-      case default;      list = [character(len=24) :: '_history.dat', '_summary.dat', '.h5']
+      case default;      list = [character(len=24) :: '_history.dat', '_summary.dat', '.h5', '.xdmf']
       end select
    end function result_suffixes
 

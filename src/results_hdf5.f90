@@ -30,6 +30,9 @@
 !>                           (layout there); the history then has the columns
 !>                           failure_index and failure_mode too (history_width)
 !>
+!>   /xdmf                   what <prefix>.xdmf (ParaView, VisIt, meshio) needs
+!>                           besides: src/results_xdmf.f90
+!>
 !> The fields are those of the modelled domain (a quarter of the plate when
 !> &mesh domain = 'quarter'); held freedoms are 0.
 !>
@@ -53,6 +56,7 @@ module results_hdf5
    use hdf5_io, only: h5io_start, h5io_create, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
       h5io_write, h5io_rewrite, h5io_create_series, h5io_create_columns, h5io_append, &
       h5io_close_dataset, h5io_real, h5io_integer
+   use results_xdmf, only: xdmf_t, xdmf_open, xdmf_snapshot, xdmf_peak, xdmf_close
    implicit none
    private
    public :: results_file_t, results_open, results_append_history, results_state, &
@@ -77,6 +81,7 @@ module results_hdf5
       integer(hid_t) :: snap_field(ndof_node) = -1      !< /fields/u, v, w, psi_x, psi_y
       integer, allocatable :: eq(:,:)                   !< (ndof_node, nnode) equation numbers, 0 held
       real(dp) :: peak_force = 0.0_dp                   !< largest contact force so far (N)
+      type(xdmf_t) :: xdmf                              !< <prefix>.xdmf, for ParaView (src/results_xdmf.f90)
    end type results_file_t
 
 contains
@@ -165,6 +170,7 @@ contains
 
       if (stat == 0) call h5io_group(rf%fid, 'summary', stat, why)
       call put_string('summary', 'status', 'running')
+      if (stat == 0) call xdmf_open(rf%xdmf, deck, msh, rf%fid, stat, why)
       if (stat == 0) call h5io_flush(rf%fid, stat, why)
       if (stat /= 0) then
          errmsg = rf%path//': '//trim(why)
@@ -252,6 +258,7 @@ contains
             call h5io_append(rf%snap_field(k), f(k, :), stat, why)
          end do fields
          if (stat == 0) call h5io_flush(rf%fid, stat, why)
+         if (stat == 0) call xdmf_snapshot(rf%xdmf, rf%fid, step, time, force, f, stat, why)
          if (stat /= 0) then
             errmsg = rf%path//': /fields: '//trim(why)
             rf%broken = .true.
@@ -267,6 +274,7 @@ contains
       if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'step', step, stat, why)
       if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'time', time, stat, why)
       if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'force', force, stat, why)
+      if (stat == 0) call xdmf_peak(rf%xdmf, rf%fid, f, stat, why)
       if (stat /= 0) errmsg = rf%path//': /peak: '//trim(why)
       rf%broken = stat /= 0
    end subroutine results_state
@@ -309,6 +317,11 @@ contains
          end select
       end do summary_items
       if (stat /= 0) errmsg = rf%path//': /summary: '//trim(why)
+      call xdmf_close(rf%xdmf, rf%fid, status, ios, why)
+      if (ios /= 0 .and. stat == 0) then
+         stat = ios
+         errmsg = rf%xdmf%path//': '//trim(why)
+      end if
 
       ! -- close everything, keeping the first failure
       do c = 1, size(rf%hist)
@@ -396,6 +409,7 @@ contains
          close (u)
       end if
       call put_text('deck', 'source', deck%source)
+      if (allocated(deck%settings)) call put_text('deck', 'settings', deck%settings)
       call put_text('deck', 'echo', echo)
       do ig = 1, size(deck_groups)
          if (stat == 0) call h5io_group(fid, 'deck/'//trim(deck_groups(ig)), stat, errmsg)

@@ -4,8 +4,9 @@
 #                          framework (test-funit), build $(LIB), ./impact and
 #                          the tests, run every test from the repository root
 #   make test-funit        only the framework's self-check
-#   make test PFUNIT_DIR=<pFUnit 4 install>
+#   make test PFUNIT_DIR=<pFUnit install>
 #                          build and run the same .pf files with real pFUnit
+#                          (4.13 or later: older ones exit 0 on failures)
 #   build/tests/run_tests WORD...
 #                          rerun only the tests whose module.name contains WORD
 #
@@ -47,7 +48,9 @@ ifdef PFUNIT_DIR
 # ---- real pFUnit 4: its PFUNIT.mk and make_pfunit_test, in build/pfunit ----
 TEST_EXE := $(BUILD)/pfunit/impact_tests
 
-# pf2f90.py checks that the tests stay in the subset the default route builds.
+# pf2f90.py checks that the tests stay in the subset the default route builds;
+# pfunit.mk stops on a pFUnit older than 4.13, before anything is built.
+test-build: pfunit-check
 test-build: $(LIB) $(ORACLE_OBJS) $(TOOL_OBJS)
 	@mkdir -p $(BUILD)/pfunit
 	$(PYTHON) $(FUNIT)/pf2f90.py --driver $(BUILD)/pfunit/subset_check.f90 $(TEST_PF)
@@ -55,6 +58,10 @@ test-build: $(LIB) $(ORACLE_OBJS) $(TOOL_OBJS)
 	    PFUNIT_DIR='$(abspath $(PFUNIT_DIR))' FC='$(FC)' FFLAGS='$(FFLAGS)' \
 	    IMPACT_TESTS='$(abspath $(TEST_PF))' IMPACT_LIB='$(abspath $(ORACLE_OBJS) $(TOOL_OBJS) $(LIB))' \
 	    IMPACT_MODULES='$(abspath $(BUILD))' LAPACK='$(LAPACK)'
+
+.PHONY: pfunit-check
+pfunit-check:
+	@$(MAKE) --no-print-directory -f $(FUNIT)/pfunit.mk pfunit-version PFUNIT_DIR='$(abspath $(PFUNIT_DIR))'
 
 else
 # ---- default: translate with pf2f90.py, build with $(FC_ALL) ----

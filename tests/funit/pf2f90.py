@@ -12,6 +12,11 @@ The subset:
   * one module per file, named after the file (test_x.pf holds module
     test_x: pFUnit's PFUNIT.mk names the suite after the file), with
     `use funit` and its tests after `contains`;
+  * no module-level name (a variable, constant, type, interface, procedure,
+    or a name taken from another module by `use ..., only:`) that real
+    pFUnit's funit module also makes public (FUNIT_PUBLIC_NAMES below: run,
+    initialize, finalize, stub, test, is, every, disable, ...): with
+    `use funit` the two would clash and pFUnit would not compile the file;
   * `@test` before `subroutine name()`, a module procedure without arguments
     (blank and comment lines may come between, as pFUnit allows);
   * at most one `@before` and one `@after` per module, before a subroutine
@@ -62,6 +67,35 @@ ASSERTIONS = {
 }
 # Directives that mark the next subroutine.
 MARKERS = ('test', 'before', 'after')
+
+# The public names of real pFUnit 4's funit module (module FUnit,
+# src/funit/FUnit.F90), which a test module gets with `use funit`. FUnit has
+# no PRIVATE statement, so it passes on, besides its own procedures, all that
+# the modules it uses make public: FUnit_Core and PF_Assert (explicit public
+# lists), fHamcrest (everything of its matcher modules) and OUTPUT_UNIT of
+# iso_fortran_env. Collected from pFUnit 4.x (4.13 and later included);
+# names of both older and newer matchers are listed. Lower case.
+FUNIT_PUBLIC_NAMES = frozenset('''
+    initialize run generic_run finalize loadtests_interface stub get_context output_unit
+    sourcelocation test testsuite testmethod testresult testrunner basetestrunner
+    remoterunner robustrunner testlistener testlistenervector listenerpointer
+    resultprinter xmlprinter debuglistener namefilter testcase abstracttestparameter
+    parameterizedtestcase parallelcontext serialcontext throw catchnext catch
+    anyexceptions expectation subject predicate wascalled wasnotcalled wascalledonce
+    testannotation stringtestannotationmap disable timeoutannotation taplistener
+    assertfail asserttrue assertfalse assertequal assertexceptionraised assertsameshape
+    assertany assertall assertnone assertnotall assertnotequal assertlessthan
+    assertlessthanorequal assertgreaterthan assertgreaterthanorequal
+    assertrelativelyequal assertapprox assertisnan assertisfinite assertisinfinite
+    whitespaceoptions ignore_all trim_all keep_all ignore_differences
+    matcherdescription stringdescription assert_that abstractmatcher basematcher
+    is isnot not isequal equal_to isgreater greater_than isgreaterorequal
+    greater_than_or_equal_to isless less_than islessorequal less_than_or_equal_to
+    istrueorfalse true false isnear isnear_32 isnear_64 near isrelativelynear
+    relatively_near anyof any_of allof all_of every every_item stringcontains
+    contains_string stringstartswith starts_with stringendswith ends_with
+    isarraywithsize array_with_size empty_array matchable
+'''.split())
 
 # Words that may precede FUNCTION in a function statement.
 FUNCTION_PREFIX_WORDS = {
@@ -381,9 +415,15 @@ class PfFile:
                 self._stack[-1].contains = True
             return
         if re.match(r'(abstract )?interface\b', low):
+            m = re.match(r'interface (\w+)$', low)
+            if m and len(self._stack) == 1:
+                self._module_name(first, m.group(1), 'interface')
             self._stack.append(Unit('interface', '', first))
             return
         if re.match(r'type ?(,[^:]*)?::', low) or re.match(r'type (?!is\b)\w+$', low):
+            m = re.match(r'type ?(?:,[^:]*)?(?:::)? ?(\w+)', low)
+            if m and len(self._stack) == 1:
+                self._module_name(first, m.group(1), 'type')
             self._stack.append(Unit('type', '', first))
             return
         if len(self._stack) == 1 and not self._stack[0].contains:
@@ -405,7 +445,51 @@ class PfFile:
             if not self._stack:
                 self.refuse(first, '%s %s outside a module: the subset keeps the tests in one '
                             'module' % (kind, name))
+            if len(self._stack) == 1:
+                self._module_name(first, name, kind)
             self._stack.append(Unit(kind, name, first))
+            return
+        if len(self._stack) == 1 and not self._stack[0].contains:
+            for what, name in self._declared_names(low):
+                self._module_name(first, name, what)
+
+    def _module_name(self, line, name, what):
+        """Refuses a module-level name that real pFUnit's funit exports."""
+        if name.lower() in FUNIT_PUBLIC_NAMES:
+            self.refuse(line, 'module %s declares %s %s, a name that real pFUnit\'s funit module '
+                        'makes public: with "use funit" the two clash and pFUnit does not compile '
+                        'the module; rename it' % (self.module[0], what, name))
+
+    @staticmethod
+    def _declared_names(low):
+        """[(what, name)] that a specification statement of the module
+        declares: entities of a type declaration, names a USE ..., ONLY:
+        makes local, a namelist group."""
+        m = re.match(r'use\b.*?\bonly ?:(.*)$', low)
+        if m:
+            names = []
+            for item in split_top(m.group(1), ','):
+                item = item.strip()
+                if not item or re.match(r'(operator|assignment)\b', item):
+                    continue
+                names.append(('the use-associated name', item.split('=>')[0].strip()))
+            return names
+        m = re.match(r'namelist ?/ ?(\w+) ?/', low)
+        if m:
+            return [('namelist group', m.group(1))]
+        m = re.match(r'(integer|real|logical|complex|character|double ?precision|type ?\(|class ?\(|'
+                     r'procedure ?\()', low)
+        if not m:
+            return []
+        parts = low.split('::', 1)
+        if len(parts) != 2:
+            return []
+        names = []
+        for entity in split_top(parts[1], ','):
+            em = re.match(r' ?(\w+)', entity)
+            if em:
+                names.append(('variable' if 'parameter' not in parts[0] else 'constant', em.group(1)))
+        return names
 
     @staticmethod
     def _procedure_start(low):

@@ -6,7 +6,10 @@
 #  2. the suite tests/funit/selfcheck/test_selfcheck.pf, translated and built
 #     in a temporary directory, gives the PASS/FAIL lines, failure locations
 #     and "N passed, N failed" line of selfcheck/expected.txt, exits non-zero,
-#     and its generated code compiles without a warning.
+#     and its generated code compiles without a warning;
+#  3. pfunit.mk (make test PFUNIT_DIR=...) refuses a pFUnit older than 4.13
+#     and takes 4.13, given stand-in installs whose PFUNIT.mk sets only
+#     PFUNIT_VERSION.
 #
 # Usage: sh tests/funit/selfcheck.sh PYTHON FC "FLAGS" MODDIR FUNIT_OBJECT
 #   MODDIR holds funit.mod, FUNIT_OBJECT is the compiled tests/funit/funit.f90.
@@ -67,4 +70,16 @@ fi
 grep -q '^FAIL test_selfcheck.test_fails_then_returns  test_selfcheck.pf:[0-9]*  deliberate: expected <1> but found <2>$' output ||
     fail "the failure line lacks the message: $(grep fails_then_returns output)"
 
-echo "test-funit: framework self-check passed ($(sed -n 's/^pf2f90 self-check: \([0-9]*\).*/\1/p' "$tmp/rejects") inputs refused; deliberate failures reported: $(tail -n 1 output))"
+# 3. The pFUnit version (make in the environment of none that runs this).
+mkdir -p "$tmp/pfunit/old/PFUNIT-4.12/include" "$tmp/pfunit/new/PFUNIT-4.13/include" ||
+    fail "no stand-in pFUnit installs"
+echo 'PFUNIT_VERSION := 4.12' >"$tmp/pfunit/old/PFUNIT-4.12/include/PFUNIT.mk"
+echo 'PFUNIT_VERSION := 4.13' >"$tmp/pfunit/new/PFUNIT-4.13/include/PFUNIT.mk"
+if env MAKEFLAGS= MAKELEVEL= make -s -f "$here/pfunit.mk" pfunit-version PFUNIT_DIR="$tmp/pfunit/old" \
+        >"$tmp/pfunit/old.log" 2>&1; then
+    fail "pfunit.mk took pFUnit 4.12, which exits 0 when tests fail"
+fi
+env MAKEFLAGS= MAKELEVEL= make -s -f "$here/pfunit.mk" pfunit-version PFUNIT_DIR="$tmp/pfunit/new" \
+    >"$tmp/pfunit/new.log" 2>&1 || fail "pfunit.mk refused pFUnit 4.13: $(cat "$tmp/pfunit/new.log")"
+
+echo "test-funit: framework self-check passed ($(sed -n 's/^pf2f90 self-check: \([0-9]*\).*/\1/p' "$tmp/rejects") inputs refused; deliberate failures reported: $(tail -n 1 output); pFUnit 4.12 refused, 4.13 taken)"
