@@ -35,6 +35,7 @@ program impact
    use result_files, only: claim_results
    use fixed_point, only: fp_report
    use other_analyses, only: run_other_analysis
+   use signal_stop, only: catch_stop_signals
    implicit none
 
    type(deck_t) :: deck
@@ -103,8 +104,9 @@ program impact
    if (stat /= 0) call fail_in_run(errmsg, 'failed while opening the results')
 
    ! =====================================================================
-   ! Time integration
+   ! Time integration (SIGTERM, SIGINT: stop after the step, src/signal_stop.f90)
    ! =====================================================================
+   call catch_stop_signals()
    time_steps: do step = 1, nstep
       t = real(step, dp)*deck%dt
       call trace_step(tr, step, t, imp, .false.)
@@ -159,7 +161,7 @@ program impact
       if (stat /= 0) call fail_in_run(errmsg)
       call contact_commit(model%law, hist, cit%alpha)
       call trace_step(tr, step, t, imp, .true.)
-      if (rec%stop) call finish(rec%stop_status, 1)
+      if (rec%stop) call finish(rec%stop_status, rec%exit_status)
    end do time_steps
 
    ! =====================================================================
@@ -209,6 +211,8 @@ contains
       call record_close(rec, deck, model, solver, status, hist, imp, cpu1 - cpu0, output_unit, stat, errmsg)
       if (stat /= 0) write (error_unit, '(a)') 'impact: error: ' // trim(errmsg)
       call ieee_set_flag(ieee_all, .false.)     ! the messages say what went wrong: no note on the flags
+      if (exit_code == 130) error stop 130      ! stopped by SIGINT or SIGTERM: 128 + N, as a shell says
+      if (exit_code == 143) error stop 143
       if (exit_code /= 0 .or. stat /= 0) error stop 1
       stop
    end subroutine finish

@@ -43,6 +43,12 @@ module plate_solver
       integer :: nresp = 0                     !< columns held
       integer, allocatable :: resp_eq(:)       !< their equations j
       real(dp), allocatable :: resp(:,:)       !< (neq, columns) the columns
+      !> scheme 'fast': the contraction of the eq. (19) iteration, theta^2 =
+      !> ratio of iteration 2 / ratio of iteration 1, on the last two steps
+      !> that measured it (huge: not measured yet), and the steps since the
+      !> last (src/fast_scheme.f90, "one solve per step")
+      real(dp) :: contraction(2) = huge(1.0_dp)
+      integer :: since_measured = 0
    end type solver_t
 
 contains
