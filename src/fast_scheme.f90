@@ -55,7 +55,7 @@
 module fast_scheme
    use kinds, only: dp
    use plate_model, only: model_t
-   use plate_solver, only: solver_t, solve_once, iteration_end, contact_response, pattern_response, pattern_compliance
+   use plate_solver, only: solver_t, solve_once, iteration_end, contact_response, add_pattern_response, pattern_compliance
    use contact_iteration, only: contact_iteration_t, contact_area
    use contact_law, only: contact_history_t, solve_contact_equation
    use contact_load, only: pattern_mean, load_point
@@ -116,6 +116,7 @@ contains
       solver%iterations = 0
       f = max(cit%f_assum, 0.0_dp)
       alpha = 0.0_dp
+      f_first = f;  alpha_first = alpha
       call fp_start(solver%guard, size(d), solver%max_iter, solver%cr2)
       solver%guard%rate_test = .true.
       solver%guard%theta2_first = first_contraction(solver)
@@ -136,7 +137,7 @@ contains
             if (done) exit contact_passes
          end do contact_passes
          call contact_area(model, hist, f, cit%pattern)
-         rhs = rhs + f*pattern_response(solver, cit%pattern)
+         call add_pattern_response(solver, cit%pattern, f, rhs)
          ! -- eq. (18), also on the estimated next change (module header)
          call iteration_end(solver, model, d_t, rhs, d, converged, done, stat, errmsg)
          if (solver%iterations == 1) then
