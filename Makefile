@@ -44,6 +44,11 @@ $(BUILD):
 $(BUILD)/%.o: src/%.f90 | $(BUILD)
 	$(FC_ALL) -c $< -o $@
 
+# The element work of a time step is written for the vectoriser, which GCC
+# applies at -O2 only to loops whose trip count it knows: let it weigh the
+# others too (docs/PERFORMANCE.md, "The element work of a step").
+$(BUILD)/element_work.o: private FC_ALL += -fvect-cost-model=dynamic
+
 $(BUILD)/deps.mk: $(SOURCES) tools/fortran-deps | $(BUILD)
 	@python3 tools/fortran-deps $(BUILD) $(SOURCES) > $@.tmp && mv $@.tmp $@
 -include $(BUILD)/deps.mk

@@ -71,7 +71,17 @@ Usage: python3 bench/run_bench.py [--repeat N] [--quick] [--reuse]
             is unchanged (development); the default reruns everything
 Environment: BENCH_OPENBLAS=<dir holding libblas.so.3 and liblapack.so.3 of
   OpenBLAS> adds the paper's scene and the kernel timings with that BLAS
-  (found automatically in /usr/lib/x86_64-linux-gnu/openblas-*).
+  (found automatically in /usr/lib/x86_64-linux-gnu/openblas-*). When the
+  system's BLAS (Debian's alternatives, tools/setup-debian) already is
+  OpenBLAS, the other BLAS is the reference one
+  (/usr/lib/x86_64-linux-gnu/blas and lapack). Which BLAS each run loaded is
+  recorded (the real path of the libblas.so.3 ./impact maps, ldd).
+
+The floor (issue 14): the README's main job as shipped (input/clamped.nml:
+scheme 'fast', HDF5 on, every step written; its output moved to
+build/bench/runs/main_job) against steps x one band solve of its own size
+(bench/kernels.f90 on the same deck), with the same BLAS in the same run,
+for each BLAS: one line, printed and in PERFORMANCE.md.
 """
 
 import argparse
@@ -496,6 +506,9 @@ def kernels(deck, env):
     return d
 
 
+REFERENCE_BLAS = ('/usr/lib/x86_64-linux-gnu/blas', '/usr/lib/x86_64-linux-gnu/lapack')
+
+
 def openblas_dir():
     d = os.environ.get('BENCH_OPENBLAS', '')
     if d:
@@ -506,11 +519,71 @@ def openblas_dir():
     return ''
 
 
-def system_blas():
-    """The BLAS library ./impact loads by default (its real path)."""
-    r = subprocess.run(['ldd', EXE], capture_output=True, text=True)
+def loaded_blas(env=None):
+    """The BLAS library ./impact loads (the real path of its libblas.so.3,
+    through Debian's alternatives), with the environment env."""
+    r = subprocess.run(['ldd', EXE], capture_output=True, text=True, env=env)
     m = re.search(r'libblas\.so\.3 => (\S+)', r.stdout)
     return os.path.realpath(m.group(1)) if m else 'unknown'
+
+
+def system_blas():
+    """The BLAS library ./impact loads by default (its real path)."""
+    return loaded_blas()
+
+
+def blas_name(path):
+    """'openblas' or 'reference' (or the file name) for a libblas path."""
+    if 'openblas' in path:
+        return 'openblas'
+    if path.endswith('/blas/libblas.so.3') or 'libblas.so.3.' in os.path.basename(path):
+        return 'reference'
+    return os.path.basename(path)
+
+
+def other_blas():
+    """The BLAS to compare with: (name, LD_LIBRARY_PATH) of OpenBLAS when the
+    system's is another, of the reference BLAS when the system's is OpenBLAS;
+    None when it is not installed."""
+    if blas_name(system_blas()) == 'openblas':
+        if all(os.path.exists(d) for d in REFERENCE_BLAS):
+            return 'reference', ':'.join(REFERENCE_BLAS)
+        return None
+    ob = openblas_dir()
+    return ('openblas', ob) if ob else None
+
+
+def main_job_floor(env, repeat, blas):
+    """The floor line of one BLAS (module docstring): the README's main job
+    as shipped, median CPU of `repeat` runs, against steps x one solve."""
+    prefix = os.path.join(RUN_DIR, 'main_job_' + blas)
+    cpu, setup, steps = [], [], 0
+    for _ in range(repeat):
+        r = subprocess.run([EXE, '--overwrite', '--set', 'output.prefix=' + prefix, os.path.join(ROOT, 'input', 'clamped.nml')],
+                           capture_output=True, text=True, env=env)
+        if r.returncode != 0:
+            return None
+        summ = read_summary(prefix + '_summary.dat')
+        cpu.append(float(summ['cpu_s']))
+        steps = int(summ['steps'])
+        solves = int(summ['plate_solves'])
+        m = re.search(r'set-up \(model, matrices, factorization\): cpu\s+([0-9.Ee+-]+)', r.stdout)
+        setup.append(float(m.group(1)) if m else float('nan'))
+    k = kernels(os.path.join(ROOT, 'input', 'clamped.nml'), env)
+    if not k:
+        return None
+    solve = float(k['solve_s'])
+    return dict(blas=blas, path=loaded_blas(env), cpu=median(cpu), setup=median(setup), steps=steps, solves=solves,
+                solve=solve, floor=steps * solve, ratio=median(cpu) / (steps * solve),
+                loop_ratio=(median(cpu) - median(setup)) / (steps * solve))
+
+
+def floor_line(f):
+    return ('floor ({} BLAS): input/clamped.nml as shipped (scheme fast, HDF5 on, every step), {} steps, {} solves: '
+            'CPU {:.3f} s (set-up {:.3f} s) against {} x one band solve ({:.4f} ms) = {:.3f} s: '
+            '{:.2f} x the floor ({:.2f} x for the time loop alone)'.format(
+                f['blas'], f['steps'], f['solves'], f['cpu'], f['setup'], f['steps'], f['solve'] * 1e3, f['floor'],
+                f['ratio'], f['loop_ratio']))
 
 
 # --------------------------------------------------------------- output
@@ -523,7 +596,7 @@ COLUMNS = [
                    "mesh_1991: the paper's model (2x2 shear, point force), errors against the converged model's reference"),
     ('scheme', '-', "'paper' or 'fast'"),
     ('storage', '-', "'band' or 'skyline'"),
-    ('blas', '-', "'system' (the default libblas) or 'openblas'"),
+    ('blas', '-', "'system' (the default libblas: see the header) or the other one run ('openblas' or 'reference')"),
     ('ny', '-', 'elements along y (100 mm side) of the quarter'),
     ('nx', '-', 'elements along x (150 mm side)'),
     ('equations', '-', 'freedoms N'),
@@ -594,7 +667,11 @@ def main():
         sys.exit('bench: ./impact not built (make impact)')
     hdf5_off = hdf5_switch_exists()
     env_sys = dict(os.environ)
-    ob = openblas_dir()
+    sys_name = blas_name(system_blas())
+    alt = other_blas()
+    alt_name = alt[0] if alt else ''
+    ob = alt[1] if alt else ''
+    print('bench: BLAS {} ({}){}'.format(sys_name, system_blas(), '; also ' + alt_name + ' from ' + ob if alt else ''))
     g = grid(args.quick)
 
     # run every distinct run once (a run may belong to several sweeps)
@@ -620,16 +697,26 @@ def main():
         for scene, kw in items:
             by_sweep.setdefault(sweep, []).append((scene, recs[run_id(scene, settings(scene, kw))]))
 
-    # OpenBLAS: the paper's scene again, the other BLAS loaded instead
+    # the other BLAS: the paper's scene again, that BLAS loaded instead
     ob_recs = []
     env_ob = None
     if ob:
         env_ob = dict(os.environ, LD_LIBRARY_PATH=ob + (':' + os.environ['LD_LIBRARY_PATH'] if os.environ.get('LD_LIBRARY_PATH') else ''))
         for scheme in ('paper', 'fast'):
-            s = dict(DEFAULT, t_end=3.0e-3, scheme=scheme, blas='openblas')
+            s = dict(DEFAULT, t_end=3.0e-3, scheme=scheme, blas=alt_name)
             r = run_one('CN', s, args.repeat, args.reuse, hdf5_off, env_ob)
             ob_recs.append(('paper_scene', 'CN', r))
-            print('  [openblas] {:<60s} cpu {:8.3f} s'.format(r['id'], median(r['cpu'])), flush=True)
+            print('  [{}] {:<60s} cpu {:8.3f} s'.format(alt_name, r['id'], median(r['cpu'])), flush=True)
+
+    # the floor: the README's main job as shipped against steps x one solve, per BLAS
+    floors = []
+    for name, env in ((sys_name, env_sys), (alt_name, env_ob)):
+        if env is None:
+            continue
+        f = main_job_floor(env, max(args.repeat, 5), name)
+        if f:
+            floors.append(f)
+            print('bench: ' + floor_line(f), flush=True)
 
     # references and errors
     refs, hows, refs6 = {}, {}, {}
@@ -697,15 +784,17 @@ def main():
         if ob:
             k = kernels(deck, env_ob)
             if k:
-                kern.append((label, 'openblas', k))
+                kern.append((label, alt_name, k))
 
-    header = ['machine: {} cores, {}; BLAS: {}{}'.format(
-        os.cpu_count(), platform_cpu(), system_blas(), '; OpenBLAS from ' + ob if ob else ''),
+    header = ['machine: {} cores, {}; BLAS: {} ({}){}'.format(
+        os.cpu_count(), platform_cpu(), sys_name, system_blas(), '; {} from {}'.format(alt_name, ob) if ob else ''),
         'repeats: {}; wall time of the bench: see PERFORMANCE.md'.format(args.repeat)]
     write_results(rows, header)
     plots()
     wall = time.time() - t_wall0
-    write_doc(rows, refs, hows, pairs, tol, cost, kern, by_sweep, ob_recs, wall, args)
+    write_doc(rows, refs, hows, pairs, tol, cost, kern, by_sweep, ob_recs, wall, args, floors, alt_name)
+    for f in floors:
+        print('bench: ' + floor_line(f))
     print('bench: {} rows in {}; figures in {}; {} updated; {:.0f} s'.format(
         len(rows), os.path.relpath(RESULTS, ROOT), os.path.relpath(FIG_DIR, ROOT), os.path.relpath(DOC, ROOT), wall))
     bad = [p for p in pairs if max(p[2]) > p[3]]
@@ -741,18 +830,29 @@ def plots():
             print('bench: gnuplot {} failed: {}'.format(gp, r.stderr[-1000:]))
 
 
-def write_doc(rows, refs, hows, pairs, tol, cost, kern, by_sweep, ob_recs, wall, args):
+def write_doc(rows, refs, hows, pairs, tol, cost, kern, by_sweep, ob_recs, wall, args, floors, alt_name):
     L = []
     L.append('*Generated by `make bench` on {} ({:.0f} s of wall time, {} repeats{}); '
              'do not edit between the markers.*'.format(time.strftime('%Y-%m-%d %H:%M'), wall, args.repeat,
                                                          ', quick grid' if args.quick else ''))
+    L.append('')
+    L.append('System BLAS (what ./impact loads): {} (`{}`); "system" in the tables below is that one.'.format(
+        blas_name(system_blas()), system_blas()))
+    L.append('')
+    # the floor
+    L.append('### The floor')
+    L.append('')
+    for f in floors:
+        L.append('- ' + floor_line(f) + '; libblas: `{}`.'.format(f['path']))
+    if not floors:
+        L.append('- (not measured: build/bench/bench_kernels missing, or the main job failed)')
     L.append('')
     # the paper's scene, both schemes
     L.append('### The paper scene: 6x9 quarter mesh, 2.5 us, clamped, nonlinear, 3 ms')
     L.append('')
     L.append('| scheme | BLAS | CPU (s), median | set-up (s) | steps | plate solves | solves per step | peak force (N) | max deflection (mm) |')
     L.append('|---|---|---|---|---|---|---|---|---|')
-    scene_runs = [('system', r) for sc, r in by_sweep.get('paper_scene', [])] + [('openblas', r) for _, _, r in ob_recs]
+    scene_runs = [('system', r) for sc, r in by_sweep.get('paper_scene', [])] + [(alt_name, r) for _, _, r in ob_recs]
     for blas, r in scene_runs:
         L.append('| {} | {} | {:.3f} | {:.3f} | {} | {} | {:.2f} | {:.1f} | {:.4f} |'.format(
             r['settings']['scheme'], blas, median(r['cpu']), median(r['setup']), r['steps'], r['solves'],

@@ -28,6 +28,17 @@
 !> quarter or half model it carries the model's share, sum c_j = 1/sym_factor
 !> (less what falls on held freedoms, which the supports take).
 !>
+!> The pattern as a function of a: on the structured mesh (elements between
+!> straight grid lines) the reference coordinates of a disc point r = a s
+!> (cos t, sin t) are affine in a as long as the point stays in its
+!> element, so each coefficient c_j(a) is a polynomial of degree 4 in a
+!> (a product of two quadratic Lagrange polynomials, summed over the
+!> points). load_pattern keeps these polynomials in the pattern with the
+!> interval of a in which no point changes element, and evaluates them
+!> while a stays in it; it builds them again (one pass over the disc points)
+!> only when a leaves it. The contact iterations call it for many close
+!> radii in every step.
+!>
 !> The quadrature of the disc: n_radial Gauss-Legendre points in t, with
 !> r = a sin t (which turns sqrt(1 - s^2) s ds into cos^2 t sin t dt, a smooth
 !> integrand), times n_angular equally spaced angles offset by half a
@@ -38,7 +49,7 @@
 module contact_load
    use kinds, only: dp, pi
    use mesh, only: mesh_t, locate_point
-   use shape_functions, only: nen, shape9
+   use shape_functions, only: nen, node_position
    use gauss_rules, only: gauss_legendre
    implicit none
    private
@@ -71,6 +82,10 @@ module contact_load
       integer, allocatable :: eq(:)           !< their numbers
       real(dp), allocatable :: c(:)           !< load on each per newton of contact force (-)
       real(dp) :: total = 1.0_dp              !< the model's share of the force, held freedoms included
+      !> c_j(a) = sum_p poly(p, j) a^p while valid(1) <= a <= valid(2) (module header)
+      real(dp), allocatable :: poly(:,:)      !< (0:4, equations) the polynomials
+      real(dp) :: valid(2) = [1.0_dp, -1.0_dp]   !< their interval of a (m); empty: none
+      real(dp) :: built_for(6) = 0.0_dp       !< the contact load and mesh they belong to (load_key)
    end type load_pattern_t
 
 contains
@@ -116,28 +131,71 @@ contains
       type(contact_load_t), intent(in) :: cl       !< the contact load
       type(mesh_t), intent(in) :: m                !< mesh with equation numbers
       real(dp), intent(in) :: a                    !< contact radius (m)
-      type(load_pattern_t), intent(inout) :: pat   !< the pattern (arrays reused)
-      real(dp) :: p(2), xi(2), phi(nen), kept
-      integer :: k, e, i, eq, j
+      type(load_pattern_t), intent(inout) :: pat   !< the pattern (arrays and polynomials reused)
+      real(dp) :: r
+      integer :: j
 
       pat%total = cl%share
       pat%radius = 0.0_dp
       if (cl%kind == load_point .or. .not. (a > 0.0_dp)) then
          call make_room(pat, 1)
          pat%n = 1;  pat%eq(1) = cl%eq_point;  pat%c(1) = cl%share
+         pat%valid = [1.0_dp, -1.0_dp]
          return
       end if
-      pat%radius = min(a, cl%nose_radius)
+      r = min(a, cl%nose_radius)
+      if (.not. (pat%valid(1) <= r .and. r <= pat%valid(2) .and. all(pat%built_for == load_key(cl, m)))) &
+         call pattern_polynomials(cl, m, r, pat)
+      pat%radius = r
+      do j = 1, pat%n
+         pat%c(j) = pat%poly(0, j) + r*(pat%poly(1, j) + r*(pat%poly(2, j) + r*(pat%poly(3, j) &
+                    + r*pat%poly(4, j))))
+      end do
+   end subroutine load_pattern
+
+   !> The polynomials c_j(a) of the pattern about the radius r and the
+   !> interval of a in which they hold (module header): each disc point in
+   !> the element that holds it at r, its shape functions along the ray as
+   !> products of quadratics in a.
+   pure subroutine pattern_polynomials(cl, m, r, pat)
+      type(contact_load_t), intent(in) :: cl       !< the contact load
+      type(mesh_t), intent(in) :: m                !< mesh with equation numbers
+      real(dp), intent(in) :: r                    !< contact radius (m), > 0
+      type(load_pattern_t), intent(inout) :: pat   !< the pattern: its polynomials and interval
+      real(dp) :: p(2), xi(2), lo(2), hi(2), slope(2), base(2), lq(0:2, 3, 2), kept, reach, term(0:4)
+      integer :: k, e, i, eq, j, d, ie, je
+
       call make_room(pat, 1)
       pat%n = 0
+      pat%valid = [0.0_dp, cl%nose_radius]
+      pat%built_for = load_key(cl, m)
       kept = 0.0_dp
       disc_points: do k = 1, size(cl%wt)
          if ((cl%sym(1) .and. cl%dir(1, k) < 0.0_dp) .or. (cl%sym(2) .and. cl%dir(2, k) < 0.0_dp)) cycle
-         p = cl%centre + pat%radius*cl%s(k)*cl%dir(:, k)
+         p = cl%centre + r*cl%s(k)*cl%dir(:, k)
          call locate_point(m, p, e, xi)
-         if (e == 0) cycle disc_points          ! off the plate: the rest carries the force
+         if (e == 0) then                       ! off the plate: the rest carries the force
+            pat%valid(1) = max(pat%valid(1), r) ! (and it stays off as a grows)
+            cycle disc_points
+         end if
          kept = kept + cl%wt(k)
-         phi = shape9(xi(1), xi(2))
+         ! -- xi(a) = base + slope a along the ray, while the point stays in e
+         ie = mod(e - 1, m%nx);  je = (e - 1)/m%nx
+         lo = [m%xline(ie), m%yline(je)];  hi = [m%xline(ie + 1), m%yline(je + 1)]
+         slope = 2.0_dp*cl%s(k)*cl%dir(:, k)/(hi - lo)
+         base = xi - r*slope
+         do d = 1, 2
+            if (slope(d) /= 0.0_dp) then       ! xi stays within [-1, 1]
+               reach = (sign(1.0_dp, slope(d)) - base(d))/slope(d)
+               pat%valid(2) = min(pat%valid(2), reach)
+               reach = (-sign(1.0_dp, slope(d)) - base(d))/slope(d)
+               pat%valid(1) = max(pat%valid(1), reach)
+            end if
+            ! the quadratic Lagrange polynomials of xi(a) (module shape_functions), coefficients of a^0..a^2
+            lq(:, 1, d) = 0.5_dp*[base(d)**2 - base(d), 2.0_dp*base(d)*slope(d) - slope(d), slope(d)**2]
+            lq(:, 2, d) = [1.0_dp - base(d)**2, -2.0_dp*base(d)*slope(d), -slope(d)**2]
+            lq(:, 3, d) = 0.5_dp*[base(d)**2 + base(d), 2.0_dp*base(d)*slope(d) + slope(d), slope(d)**2]
+         end do
          nodes: do i = 1, nen
             eq = m%eq(3, m%conn(i, e))
             if (eq == 0) cycle nodes             ! a support takes it
@@ -145,27 +203,52 @@ contains
             if (j == 0) then
                call make_room(pat, pat%n + 1)
                pat%n = pat%n + 1;  j = pat%n
-               pat%eq(j) = eq;  pat%c(j) = 0.0_dp
+               pat%eq(j) = eq;  pat%poly(:, j) = 0.0_dp
             end if
-            pat%c(j) = pat%c(j) + cl%wt(k)*phi(i)
+            term = product_of_quadratics(lq(:, node_position(1, i), 1), lq(:, node_position(2, i), 2))
+            pat%poly(:, j) = pat%poly(:, j) + cl%wt(k)*term
          end do nodes
       end do disc_points
-      if (kept > 0.0_dp) pat%c(:pat%n) = pat%c(:pat%n)*cl%share/kept
-   end subroutine load_pattern
+      if (kept > 0.0_dp) pat%poly(:, :pat%n) = pat%poly(:, :pat%n)*cl%share/kept
+      if (pat%n == 0) pat%valid = [1.0_dp, -1.0_dp]
+      ! a point exactly on an element side may be held by either element: keep r itself valid
+      pat%valid = [min(pat%valid(1), r), max(pat%valid(2), r)]
+   end subroutine pattern_polynomials
 
-   !> Grows the pattern's arrays to hold at least n entries, keeping them.
+   !> What a pattern's polynomials belong to: the contact load (its share,
+   !> centre and nose radius) and the mesh (its equations and grid lines).
+   pure function load_key(cl, m) result(key)
+      type(contact_load_t), intent(in) :: cl       !< the contact load
+      type(mesh_t), intent(in) :: m                !< the mesh
+      real(dp) :: key(6)
+      key = [cl%share, cl%centre(1), cl%centre(2), cl%nose_radius, real(m%neq, dp), sum(m%xline) + pi*sum(m%yline)]
+   end function load_key
+
+   !> Coefficients of a^0..a^4 of the product of two quadratics in a.
+   pure function product_of_quadratics(u, v) result(w)
+      real(dp), intent(in) :: u(0:2), v(0:2)   !< coefficients of a^0..a^2
+      real(dp) :: w(0:4)
+      w = [u(0)*v(0), u(0)*v(1) + u(1)*v(0), u(0)*v(2) + u(1)*v(1) + u(2)*v(0), u(1)*v(2) + u(2)*v(1), &
+           u(2)*v(2)]
+   end function product_of_quadratics
+
+   !> Grows the pattern's arrays (equations, loads, polynomials) to hold at
+   !> least n entries, keeping them.
    pure subroutine make_room(pat, n)
       type(load_pattern_t), intent(inout) :: pat   !< the pattern
       integer, intent(in) :: n                     !< entries needed
       integer, allocatable :: eq_new(:)
-      real(dp), allocatable :: c_new(:)
-      if (allocated(pat%eq)) then
+      real(dp), allocatable :: c_new(:), poly_new(:,:)
+      if (allocated(pat%eq) .and. allocated(pat%poly)) then
          if (size(pat%eq) >= n) return
-         allocate (eq_new(2*n), c_new(2*n))
-         eq_new(:size(pat%eq)) = pat%eq;  c_new(:size(pat%c)) = pat%c
-         call move_alloc(eq_new, pat%eq);  call move_alloc(c_new, pat%c)
+         allocate (eq_new(2*n), c_new(2*n), poly_new(0:4, 2*n))
+         eq_new(:size(pat%eq)) = pat%eq;  c_new(:size(pat%c)) = pat%c;  poly_new(:, :size(pat%poly, 2)) = pat%poly
+         call move_alloc(eq_new, pat%eq);  call move_alloc(c_new, pat%c);  call move_alloc(poly_new, pat%poly)
       else
-         allocate (pat%eq(max(n, 16)), pat%c(max(n, 16)))
+         if (allocated(pat%eq)) deallocate (pat%eq)
+         if (allocated(pat%c)) deallocate (pat%c)
+         if (allocated(pat%poly)) deallocate (pat%poly)
+         allocate (pat%eq(max(n, 16)), pat%c(max(n, 16)), pat%poly(0:4, max(n, 16)))
       end if
    end subroutine make_room
 

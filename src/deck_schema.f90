@@ -135,9 +135,9 @@ module deck_schema
          'contact-force tolerance C_r1, eq. (17)'), &
       deck_var_t('analysis', 'cr2', kind_real, '-', '1.0e-7', '(0, 1)', &
          'nonlinear-iteration tolerance C_r2, eq. (18)'), &
-      deck_var_t('analysis', 'scheme', kind_word, '-', 'paper', 'paper | fast', &
-         '''paper'': the flowchart''s nested iterations (Fig. 3); ''fast'': the contact force solved inside ' &
-         // 'each eq. (19) iteration'), &
+      deck_var_t('analysis', 'scheme', kind_word, '-', 'fast', 'fast | paper', &
+         '''fast'': the contact force solved inside each eq. (19) iteration, about one solve per step; ' &
+         // '''paper'': the flowchart''s nested iterations (Fig. 3)'), &
       deck_var_t('analysis', 'storage', kind_word, '-', 'band', 'band | skyline', &
          '''band'' (LAPACK dpbtrf/dpbtrs) or ''skyline'' (the code''s own LDL^T)'), &
       deck_var_t('analysis', 'max_contact_iter', kind_integer, '-', '50', '[1, 10000]', &

@@ -26,7 +26,18 @@
 !>   sum (G(D) - D)^2 <= C_r2 sum (G(D) - D_t)^2,
 !> which is the paper's test for the plain iteration (there D^{n+1} = G(D^n)),
 !> or the residual at the rounding level of D (round_floor), below which no
-!> iteration can go.
+!> iteration can go. With guard%rate_test (scheme 'fast', src/fast_scheme.f90)
+!> G(D) is also accepted when eq. (18) holds for the change the next
+!> iteration would make, estimated with the contraction theta of the map:
+!>   theta^2 sum (G(D) - D)^2 <= C_r2 sum (G(D) - D_t)^2,
+!> theta^2 = guard%theta2_first (given by the caller) for the first
+!> iteration; from the third on the iteration's own, the larger of the last
+!> two quotients ratio(n)/ratio(n-1) (the contraction is not the same from
+!> one iteration to the next: the first removes the predictor's fast modes,
+!> and the ratios may alternate between a large and a small fall, so one
+!> quotient alone can promise far more than the next iteration gives); never
+!> for the second (its quotient is the first's: the paper's test decides);
+!> and only while the ratio itself is below rate_test_max_ratio.
 !>
 !> Usage, once per plate solution:
 !>     call fp_start(guard, n, max_iter, cr2)
@@ -75,6 +86,9 @@ module fixed_point
    real(dp), parameter :: mixing_rcond = 1.0e-10_dp
    !> Residual (relative to D) at the rounding level: (8 eps)^2 of sum D^2.
    real(dp), parameter :: round_floor = (8.0_dp*epsilon(1.0_dp))**2
+   !> Largest eq. (18) ratio the rate test accepts: an iterate whose change
+   !> is over a third of the step's is not trusted to the estimate.
+   real(dp), parameter :: rate_test_max_ratio = 0.1_dp
 
    !> The state of one fixed-point iteration and its history.
    type :: fp_guard_t
@@ -83,6 +97,9 @@ module fixed_point
       integer :: max_iter = 0             !< limit of the iterations
       real(dp) :: cr2 = 0.0_dp            !< tolerance of eq. (18)
       real(dp) :: ratio = huge(1.0_dp)    !< last eq. (18) ratio sum R^2 / sum (G - D_t)^2
+      logical :: rate_test = .false.      !< also accept on the estimated next change (module header)
+      real(dp) :: theta2_first = 1.0_dp   !< theta^2 of the rate test's first iteration
+      real(dp) :: ratios_before(2) = huge(1.0_dp)  !< the eq. (18) ratios of the two iterations before the last
       real(dp) :: res = huge(1.0_dp)      !< last sum R^2 (m^2, rad^2)
       real(dp) :: res_best = huge(1.0_dp) !< smallest sum R^2 so far
       integer :: growths = 0              !< residual growths in a row
@@ -128,6 +145,9 @@ contains
       guard%max_iter = max_iter
       guard%cr2 = cr2
       guard%ratio = huge(1.0_dp)
+      guard%rate_test = .false.
+      guard%theta2_first = 1.0_dp
+      guard%ratios_before = huge(1.0_dp)
       guard%res = huge(1.0_dp)
       guard%res_best = huge(1.0_dp)
       guard%growths = 0
@@ -158,7 +178,7 @@ contains
       real(dp), intent(in) :: d(:)              !< iterate D (m, rad)
       real(dp), intent(in) :: g(:)              !< its image G(D)
       real(dp), intent(in) :: d_t(:)            !< converged solution at t
-      real(dp) :: num, den
+      real(dp) :: num, den, theta2
       integer :: it, trouble
 
       guard%iterations = guard%iterations + 1
@@ -166,6 +186,7 @@ contains
       num = sum((g - d)**2)
       den = sum((g - d_t)**2)
       guard%res = num
+      guard%ratios_before = [guard%ratios_before(2), guard%ratio]
       if (den > 0.0_dp) then
          guard%ratio = num/den
       else
@@ -177,6 +198,15 @@ contains
       ! -- eq. (18), or nothing left to gain above rounding
       if (ieee_is_finite(num) .and. ieee_is_finite(den)) then
          if (num <= guard%cr2*den .or. num <= round_floor*sum(g**2)) then
+            guard%state = fp_converged
+            return
+         end if
+      end if
+      ! -- the rate test: eq. (18) on the estimated next change
+      if (guard%rate_test .and. .not. guard%mixing .and. guard%ratio <= rate_test_max_ratio .and. it /= 2) then
+         theta2 = guard%theta2_first
+         if (it >= 3) theta2 = max(guard%ratio/guard%ratios_before(2), guard%ratios_before(2)/guard%ratios_before(1))
+         if (theta2 < 1.0_dp .and. theta2*guard%ratio <= guard%cr2) then
             guard%state = fp_converged
             return
          end if

@@ -14,7 +14,8 @@
 !>    array); strings are variable-length UTF-8 (h5py gives str);
 !>  - fixed datasets are written whole with the high-level H5LT calls;
 !>  - series are extendible chunked datasets that grow by one entry per
-!>    h5io_append: rank 1 (n) for a history column, rank 2 (nrow, n) in
+!>    h5io_append, or by a block of entries per h5io_append_block: rank 1
+!>    (n) for a history column, rank 2 (nrow, n) in
 !>    Fortran order, i.e. (n, nrow) in C order, h5py and h5dump, for a field
 !>    of nrow nodes per snapshot.
 !> Arrays keep Fortran order on disk: a Fortran x(m, n) reads as x[n, m] in
@@ -46,7 +47,7 @@ module hdf5_io
    public :: h5io_start, h5io_create, h5io_close, h5io_flush, h5io_group
    public :: h5io_set_attr, h5io_write, h5io_rewrite
    public :: h5io_check, h5io_fail, h5io_attr_path, h5io_vlen_string_type
-   public :: h5io_create_series, h5io_create_columns, h5io_append, h5io_close_dataset
+   public :: h5io_create_series, h5io_create_columns, h5io_append, h5io_append_block, h5io_close_dataset
    public :: h5io_view_column
    public :: h5io_real, h5io_integer
 
@@ -74,6 +75,13 @@ module hdf5_io
    interface h5io_append
       module procedure append_value, append_column
    end interface h5io_append
+
+   !> Appends several entries to a series at once: reals or integers to a
+   !> rank-1 series, the columns x(:, k) to a rank-2 series (one extension
+   !> and one write for all of them).
+   interface h5io_append_block
+      module procedure append_reals, append_integers, append_columns
+   end interface h5io_append_block
 
 contains
 
@@ -389,9 +397,9 @@ contains
       character(len=*), intent(inout) :: errmsg
       select type (x)
       type is (real(dp))
-         call grow_and_write(did, H5T_NATIVE_DOUBLE, 1, c_loc(x), stat, errmsg)
+         call grow_and_write(did, H5T_NATIVE_DOUBLE, 1, 1, c_loc(x), stat, errmsg)
       type is (integer)
-         call grow_and_write(did, H5T_NATIVE_INTEGER, 1, c_loc(x), stat, errmsg)
+         call grow_and_write(did, H5T_NATIVE_INTEGER, 1, 1, c_loc(x), stat, errmsg)
       class default
          call h5io_fail('a series holds real(dp) or integer values', '', stat, errmsg)
       end select
@@ -405,15 +413,56 @@ contains
       character(len=*), intent(inout) :: errmsg
       real(dp), allocatable, target :: buf(:)
       buf = x
-      call grow_and_write(did, H5T_NATIVE_DOUBLE, 2, c_loc(buf), stat, errmsg)
+      call grow_and_write(did, H5T_NATIVE_DOUBLE, 2, 1, c_loc(buf), stat, errmsg)
    end subroutine append_column
 
-   !> Extends the last dimension of did by one and writes the values at buf
-   !> (memory type tid) into the new slice: one value for rank 1, one column
+   !> Appends the reals x(:) to the rank-1 series did.
+   subroutine append_reals(did, x, stat, errmsg)
+      integer(hid_t), intent(in) :: did
+      real(dp), intent(in) :: x(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      real(dp), allocatable, target :: buf(:)
+      stat = 0
+      if (size(x) == 0) return
+      buf = x
+      call grow_and_write(did, H5T_NATIVE_DOUBLE, 1, size(x), c_loc(buf), stat, errmsg)
+   end subroutine append_reals
+
+   !> Appends the integers x(:) to the rank-1 series did.
+   subroutine append_integers(did, x, stat, errmsg)
+      integer(hid_t), intent(in) :: did
+      integer, intent(in) :: x(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer, allocatable, target :: buf(:)
+      stat = 0
+      if (size(x) == 0) return
+      buf = x
+      call grow_and_write(did, H5T_NATIVE_INTEGER, 1, size(x), c_loc(buf), stat, errmsg)
+   end subroutine append_integers
+
+   !> Appends the columns x(:, k) (of the dataset's nrow values each) to the
+   !> rank-2 series did.
+   subroutine append_columns(did, x, stat, errmsg)
+      integer(hid_t), intent(in) :: did
+      real(dp), intent(in) :: x(:,:)
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      real(dp), allocatable, target :: buf(:,:)
+      stat = 0
+      if (size(x, 2) == 0) return
+      buf = x
+      call grow_and_write(did, H5T_NATIVE_DOUBLE, 2, size(x, 2), c_loc(buf), stat, errmsg)
+   end subroutine append_columns
+
+   !> Extends the last dimension of did by n and writes the values at buf
+   !> (memory type tid) into the new slices: n values for rank 1, n columns
    !> for rank 2.
-   subroutine grow_and_write(did, tid, rank, buf, stat, errmsg)
+   subroutine grow_and_write(did, tid, rank, n, buf, stat, errmsg)
       integer(hid_t), intent(in) :: did, tid
       integer, intent(in) :: rank
+      integer, intent(in) :: n
       type(c_ptr), intent(in) :: buf
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
@@ -430,8 +479,8 @@ contains
       start = 0
       start(rank) = dims(rank)
       count = dims
-      count(rank) = 1
-      dims(rank) = dims(rank) + 1
+      count(rank) = int(n, hsize_t)
+      dims(rank) = dims(rank) + int(n, hsize_t)
       call h5dset_extent_f(did, dims, err)
       call h5io_check(err, 'cannot extend a series', '', stat, errmsg)
       if (stat /= 0) return

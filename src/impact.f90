@@ -36,6 +36,7 @@ program impact
    use other_analyses, only: run_other_analysis
    use program_exit, only: exit_program
    use file_system, only: keep_file_size_errors
+   use signal_stop, only: catch_stop_signals
    implicit none
 
    type(deck_t) :: deck
@@ -107,8 +108,9 @@ program impact
    if (stat /= 0) call fail_in_run(errmsg, 'failed while opening the results')
 
    ! =====================================================================
-   ! Time integration
+   ! Time integration (SIGTERM, SIGINT: stop after the step, src/signal_stop.f90)
    ! =====================================================================
+   call catch_stop_signals()
    time_steps: do step = 1, nstep
       t = real(step, dp)*deck%dt
       call trace_step(tr, step, t, imp, .false.)
@@ -163,7 +165,7 @@ program impact
       if (stat /= 0) call fail_in_run(errmsg)
       call contact_commit(model%law, hist, cit%alpha)
       call trace_step(tr, step, t, imp, .true.)
-      if (rec%stop) call finish(rec%stop_status, 1)
+      if (rec%stop) call finish(rec%stop_status, rec%exit_status)
    end do time_steps
 
    ! =====================================================================
@@ -213,6 +215,7 @@ contains
       call record_close(rec, deck, model, solver, status, hist, imp, cpu1 - cpu0, output_unit, stat, errmsg)
       if (stat /= 0) write (error_unit, '(a)') 'impact: error: ' // trim(errmsg)
       call release_results(claim, discard=.false.)
+      if (exit_code == 130 .or. exit_code == 143) call exit_program(exit_code)   ! SIGINT, SIGTERM: 128 + N, as a shell says
       if (exit_code /= 0 .or. stat /= 0) call exit_program(1)
       stop
    end subroutine finish

@@ -18,8 +18,8 @@ module plate_model
    use shear_strain, only: shear_rule_t, shear_rule_code, shear_stabilized
    use contact_load, only: contact_load_t, contact_load_init, load_point, load_hertz
    use element_matrices, only: element_geometry_t, element_geometry, element_mass, element_stiffness, &
-      element_nonlinear_force, element_strain_energy, element_inplane_strain, element_gauss_point, &
-      element_mass_integrals, element_mass_product
+      element_inplane_strain, element_gauss_point
+   use element_work, only: element_work_t, work_build, work_nonlinear_force, work_mass_times, work_strain_energy
    use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble
    use contact_law, only: contact_law_t
    use deck_schema, only: deck_t
@@ -34,8 +34,7 @@ module plate_model
       type(laminate_t) :: lmt                  !< laminate used (D16 = D26 = 0 when averaged, scene%averaged)
       type(scene_t) :: scene                   !< the scene's choices and report (src/scene_model.f90)
       type(element_geometry_t), allocatable :: geo(:)  !< per-element geometry and shear operator
-      !> S_ij = int phi_i phi_j dA of each element (m^2), (nen, nen, nelem): M x element by element
-      real(dp), allocatable :: mass_s(:,:,:)
+      type(element_work_t) :: work             !< the same, laid out for the element work of a step
       type(global_matrix_t) :: mass            !< [M]
       type(global_matrix_t) :: stiff           !< [K_L]
       type(contact_law_t) :: law               !< eq. (11)-(12) constants
@@ -126,14 +125,13 @@ contains
       if (stat /= 0) return
       call global_zero(model%mass)
       call global_zero(model%stiff)
-      allocate (model%mass_s(nfe/ndof_node, nfe/ndof_node, model%msh%nelem))   ! nodes per element
       elements: do e = 1, model%msh%nelem
-         model%mass_s(:, :, e) = element_mass_integrals(model%geo(e))
          call element_mass(model%lmt, model%geo(e), me)
          call element_stiffness(model%lmt, model%geo(e), ke)
          call global_assemble(model%mass, me, model%msh%elem_eq(:, e))
          call global_assemble(model%stiff, ke, model%msh%elem_eq(:, e))
       end do elements
+      call work_build(model%msh, model%lmt, model%geo, model%work)
 
       ! -- the scene's static estimate, and the theory it calls for
       !    (src/scene_model.f90)
@@ -153,37 +151,27 @@ contains
    ! ========================================================= element work
 
    !> The nonlinear term K_N(D) D of eq. (19), assembled element by element
-   !> (zero for the linear theory).
+   !> (zero for the linear theory; module element_work).
    subroutine nonlinear_force(model, d, fn)
       type(model_t), intent(in) :: model        !< model
       real(dp), intent(in) :: d(:)              !< global displacements
       real(dp), intent(out) :: fn(:)            !< K_N(D) D
-      real(dp) :: de(nfe), fe(nfe)
-      integer :: e
-      fn = 0.0_dp
-      if (.not. model%nonlinear) return
-      elements: do e = 1, model%msh%nelem
-         call gather_element(model%msh%elem_eq(:, e), d, de)
-         call element_nonlinear_force(model%lmt, model%geo(e), de, fe)
-         call scatter_add_element(model%msh%elem_eq(:, e), fe, fn)
-      end do elements
+      if (.not. model%nonlinear) then
+         fn = 0.0_dp
+         return
+      end if
+      call work_nonlinear_force(model%work, d, fn)
    end subroutine nonlinear_force
 
    !> y = M x, element by element (eq. 15: M is the sum of the element mass
    !> matrices): the product the assembled [M] gives, up to rounding, at a
-   !> cost proportional to the number of elements instead of N kd.
+   !> cost proportional to the number of nodes instead of N kd (module
+   !> element_work).
    subroutine mass_times(model, x, y)
       type(model_t), intent(in) :: model        !< model
       real(dp), intent(in) :: x(:)              !< global vector
       real(dp), intent(out) :: y(:)             !< M x
-      real(dp) :: xe(nfe), ye(nfe)
-      integer :: e
-      y = 0.0_dp
-      elements: do e = 1, model%msh%nelem
-         call gather_element(model%msh%elem_eq(:, e), x, xe)
-         call element_mass_product(model%lmt, model%mass_s(:, :, e), xe, ye)
-         call scatter_add_element(model%msh%elem_eq(:, e), ye, y)
-      end do elements
+      call work_mass_times(model%work, model%msh, x, y)
    end subroutine mass_times
 
    ! =============================================================== probes
@@ -238,14 +226,7 @@ contains
       type(model_t), intent(in) :: model   !< model
       real(dp), intent(in) :: d(:)         !< global displacements
       real(dp) :: u
-      real(dp) :: de(nfe)
-      integer :: e
-      u = 0.0_dp
-      elements: do e = 1, model%msh%nelem
-         call gather_element(model%msh%elem_eq(:, e), d, de)
-         u = u + element_strain_energy(model%lmt, model%geo(e), de, model%nonlinear)
-      end do elements
-      u = u*model%msh%sym_factor
+      u = work_strain_energy(model%work, d, model%nonlinear)*model%msh%sym_factor
    end function plate_strain_energy
 
    !> The paper's strain gauge (Fig. 9b): in-plane y strain on the face

@@ -23,6 +23,7 @@ module plate_solver
    implicit none
    private
    public :: solver_t, solver_init, plate_solve, solve_once, iteration_end, contact_response, pattern_response, &
+             add_pattern_response, &
              pattern_compliance
 
    !> The plate solver of a run.
@@ -43,6 +44,12 @@ module plate_solver
       integer :: nresp = 0                     !< columns held
       integer, allocatable :: resp_eq(:)       !< their equations j
       real(dp), allocatable :: resp(:,:)       !< (neq, columns) the columns
+      !> scheme 'fast': the contraction of the eq. (19) iteration, theta^2 =
+      !> ratio of iteration 2 / ratio of iteration 1, on the last two steps
+      !> that measured it (huge: not measured yet), and the steps since the
+      !> last (src/fast_scheme.f90, "one solve per step")
+      real(dp) :: contraction(2) = huge(1.0_dp)
+      integer :: since_measured = 0
    end type solver_t
 
 contains
@@ -192,12 +199,23 @@ contains
       type(solver_t), intent(in) :: solver          !< solver with the pattern's columns
       type(load_pattern_t), intent(in) :: pattern   !< the contact pattern
       real(dp) :: g(size(solver%resp, 1))
-      integer :: j
       g = 0.0_dp
-      do j = 1, pattern%n
-         g = g + pattern%c(j)*solver%resp(:, findloc(solver%resp_eq(:solver%nresp), pattern%eq(j), dim=1))
-      end do
+      call add_pattern_response(solver, pattern, 1.0_dp, g)
    end function pattern_response
+
+   !> x = x + f g, g = (K_L + 4/dt^2 M)^-1 p the response to the contact
+   !> pattern p (pattern_response), without forming g.
+   pure subroutine add_pattern_response(solver, pattern, f, x)
+      type(solver_t), intent(in) :: solver          !< solver with the pattern's columns
+      type(load_pattern_t), intent(in) :: pattern   !< the contact pattern
+      real(dp), intent(in) :: f                     !< contact force (N)
+      real(dp), intent(inout) :: x(:)               !< vector added to
+      integer :: j, col
+      do j = 1, pattern%n
+         col = findloc(solver%resp_eq(:solver%nresp), pattern%eq(j), dim=1)
+         x = x + (f*pattern%c(j))*solver%resp(:, col)
+      end do
+   end subroutine add_pattern_response
 
    !> The plate's compliance under the impactor for the pattern p: the
    !> pressure-weighted deflection per newton of contact force,

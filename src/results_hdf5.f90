@@ -16,7 +16,7 @@
 !>   /mesh/freedom_map       (nnode, 5)    equation of u, v, w, psi_x, psi_y; 0 = held
 !>   /mesh/grid              (2ny+1, 2nx+1) node at grid point (j, i), i along x
 !>   /history/<column>       (nrow)        one extendible dataset per history column,
-!>                           appended and flushed row by row (see hist_name below)
+!>                           appended block by block (see the flushes below)
 !>   /fields/time, step, force  (nsnap)    snapshot times (s), steps, contact force (N)
 !>   /fields/u, v, w, psi_x, psi_y  (nsnap, nnode)  nodal values (m, m, m, rad, rad),
 !>                           every fields_every steps and at the last step
@@ -36,15 +36,27 @@
 !> The fields are those of the modelled domain (a quarter of the plate when
 !> &mesh domain = 'quarter'); held freedoms are 0.
 !>
-!> A run that is killed leaves a file that opens: the datasets are chunked and
-!> extendible, the file is flushed (H5Fflush) after every history row and
-!> every snapshot, and /summary status stays 'running'.
+!> Output that costs little and loses nothing: the history rows, the
+!> snapshots and the peak state wait in memory and are written in blocks,
+!> and the file is flushed (H5Fflush), by results_flush: once flush_seconds
+!> of wall time have passed since the last flush (checked at every row), when
+!> flush_rows rows or flush_snapshots snapshots are waiting, on a warning
+!> (src/run_recorder.f90), and at the end, whatever the end (results_finish:
+!> completed, failed, stopped by a signal). Between two flushes the library
+!> is not called, so a run that is killed (SIGKILL) leaves a file that
+!> opens, holds every step up to its last flush (all but the last second)
+!> and says /summary status = 'running'; the datasets are chunked and
+!> extendible. Writing a row costs a copy into memory; a flush of a second's
+!> rows costs one write per dataset (docs/PERFORMANCE.md, "What the output
+!> costs").
 !>
 !> Usage (src/run_recorder.f90): results_open after the history file is
 !> open, results_append_history after every history row, results_state after
-!> every step (a snapshot every fields_every steps), results_finish at the
-!> end (also after a failure). With hdf5 = .false. they all do nothing.
+!> every step (a snapshot every fields_every steps), results_flush when the
+!> file must be up to date now, results_finish at the end (also after a
+!> failure). With hdf5 = .false. they all do nothing.
 module results_hdf5
+   use, intrinsic :: iso_fortran_env, only: int64
    use hdf5, only: hid_t
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t, deck_vars, deck_groups, value_t, deck_bind, strength_given, kind_real, kind_integer, &
@@ -54,12 +66,12 @@ module results_hdf5
    use mesh, only: mesh_t, ndof_node, freedom_name
    use result_files, only: column_t, history_columns, nhist_strength, history_width, summary_item_t
    use hdf5_io, only: h5io_start, h5io_create, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
-      h5io_write, h5io_rewrite, h5io_create_series, h5io_create_columns, h5io_append, &
+      h5io_write, h5io_rewrite, h5io_create_series, h5io_create_columns, h5io_append_block, &
       h5io_close_dataset, h5io_real, h5io_integer
    use results_xdmf, only: xdmf_t, xdmf_open, xdmf_snapshot, xdmf_peak, xdmf_close
    implicit none
    private
-   public :: results_file_t, results_open, results_append_history, results_state, &
+   public :: results_file_t, results_open, results_append_history, results_state, results_flush, &
              results_finish, nodal_values, field_units
 
 
@@ -67,8 +79,13 @@ module results_hdf5
    !> Units of the nodal fields u, v, w, psi_x, psi_y.
    character(len=units_len), parameter :: field_units(ndof_node) = [character(len=units_len) :: &
       'm', 'm', 'm', 'rad', 'rad']
-   !> History entries per chunk: one chunk of 1 KiB per column is rewritten at each flush.
+   !> History entries per chunk (1 KiB per column).
    integer, parameter :: hist_chunk = 128
+   !> Wall time between two flushes (s): a killed run loses at most this.
+   real(dp), parameter :: flush_seconds = 1.0_dp
+   !> Rows and snapshots that may wait in memory before a flush (bounds the
+   !> memory: 4096 rows of 16 numbers are 0.5 MB).
+   integer, parameter :: flush_rows = 4096, flush_snapshots = 16
    !> An open results file and the ids of its growing datasets.
    type :: results_file_t
       logical :: active = .false.                       !< a file is open (&output hdf5)
@@ -82,6 +99,18 @@ module results_hdf5
       integer, allocatable :: eq(:,:)                   !< (ndof_node, nnode) equation numbers, 0 held
       real(dp) :: peak_force = 0.0_dp                   !< largest contact force so far (N)
       type(xdmf_t) :: xdmf                              !< <prefix>.xdmf, for ParaView (src/results_xdmf.f90)
+      !> what waits for the next flush (module header)
+      integer :: nrow = 0                               !< history rows waiting
+      real(dp), allocatable :: rows(:,:)                !< (ncol, flush_rows) the rows, SI
+      integer :: nsnap = 0                              !< snapshots waiting
+      real(dp), allocatable :: snap(:,:)                !< (3, flush_snapshots) time, step, force
+      real(dp), allocatable :: snap_fields(:,:,:)       !< (ndof_node, nnode, flush_snapshots) their fields
+      logical :: peak_waiting = .false.                 !< the peak below is newer than the file's
+      integer :: peak_step = 0                          !< step of the largest force
+      real(dp) :: peak_time = 0.0_dp                    !< its time (s)
+      real(dp), allocatable :: peak_fields(:,:)         !< (ndof_node, nnode) its fields
+      integer(int64) :: flushed_at = 0                  !< system_clock count of the last flush
+      integer(int64) :: clock_rate = 1                  !< system_clock counts per second
    end type results_file_t
 
 contains
@@ -109,6 +138,10 @@ contains
       if (.not. deck%hdf5) return
       rf%path = deck%prefix//'.h5'
       rf%eq = msh%eq
+      rf%ncol = history_width(strength_given(deck))
+      allocate (rf%rows(rf%ncol, flush_rows), rf%snap(3, flush_snapshots), &
+                rf%snap_fields(ndof_node, msh%nnode, flush_snapshots), rf%peak_fields(ndof_node, msh%nnode))
+      call system_clock(rf%flushed_at, rf%clock_rate)
       why = ''
       call h5io_start(stat, why)
       if (stat == 0) call h5io_create(trim(rf%path), rf%fid, stat, why)
@@ -129,7 +162,6 @@ contains
       if (stat == 0) call write_mesh(rf%fid, msh, stat, why)
 
       ! -- histories: one extendible dataset per column of the run
-      rf%ncol = history_width(strength_given(deck))
       if (stat == 0) call h5io_group(rf%fid, 'history', stat, why)
       if (stat == 0) call put_int('history', 'every', deck%every, 'steps')
       columns: do c = 1, rf%ncol
@@ -204,35 +236,27 @@ contains
    end subroutine results_open
 
    !> Appends one history row (SI units, in the order of history_columns)
-   !> to /history; flushes the file when flush is true.
-   subroutine results_append_history(rf, row, flush, stat, errmsg)
+   !> to /history: it waits in memory for the next flush (module header),
+   !> which this call makes when it is due.
+   subroutine results_append_history(rf, row, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file
       real(dp), intent(in) :: row(:)                !< the row just written to the history file, SI (rf%ncol)
-      logical, intent(in) :: flush                  !< flush the file after it
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
-      integer :: c
-      character(len=msg_len) :: why
+      integer(int64) :: now
       stat = 0
       if (.not. rf%active) return
-      why = ''
-      columns: do c = 1, rf%ncol
-         if (history_columns(c)%whole) then
-            call h5io_append(rf%hist(c), nint(row(c)), stat, why)
-         else
-            call h5io_append(rf%hist(c), row(c), stat, why)
-         end if
-         if (stat /= 0) exit columns
-      end do columns
-      if (stat == 0 .and. flush) call h5io_flush(rf%fid, stat, why)
-      if (stat /= 0) errmsg = rf%path//': /history: '//trim(why)
-      rf%broken = stat /= 0
+      rf%nrow = rf%nrow + 1
+      rf%rows(:, rf%nrow) = row
+      call system_clock(now)
+      if (rf%nrow == flush_rows .or. real(now - rf%flushed_at, dp) >= flush_seconds*real(rf%clock_rate, dp)) &
+         call results_flush(rf, stat, errmsg)
    end subroutine results_append_history
 
    !> The nodal fields u, v, w, psi_x, psi_y of the state at the end of a
-   !> step: appended to /fields as a snapshot when `snapshot` is true (and the
-   !> file flushed), and kept in /peak when the contact force exceeds the
-   !> largest so far.
+   !> step: a snapshot for /fields when `snapshot` is true, and the state of
+   !> /peak when the contact force exceeds the largest so far; both wait in
+   !> memory for the next flush.
    subroutine results_state(rf, step, time, force, d, snapshot, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file
       integer, intent(in) :: step                   !< time step of the state
@@ -241,43 +265,92 @@ contains
       logical, intent(in) :: snapshot               !< append it to /fields
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
-      real(dp) :: f(ndof_node, size(rf%eq, 2))
+
+      stat = 0
+      if (.not. rf%active) return
+      if (snapshot) then
+         if (rf%nsnap == flush_snapshots) call results_flush(rf, stat, errmsg)
+         if (stat /= 0) return
+         rf%nsnap = rf%nsnap + 1
+         rf%snap(:, rf%nsnap) = [time, real(step, dp), force]
+         rf%snap_fields(:, :, rf%nsnap) = nodal_values(rf%eq, d)
+      end if
+      if (.not. force > rf%peak_force) return
+      rf%peak_force = force
+      rf%peak_step = step
+      rf%peak_time = time
+      rf%peak_fields = nodal_values(rf%eq, d)
+      rf%peak_waiting = .true.
+   end subroutine results_state
+
+   !> Writes what waits in memory (history rows, snapshots, the peak) and
+   !> flushes the file (H5Fflush): on return the file on disk holds every
+   !> row given so far.
+   subroutine results_flush(rf, stat, errmsg)
+      type(results_file_t), intent(inout) :: rf     !< the results file
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=msg_len) :: why
-      integer :: k
+      integer :: c, k, j
 
       stat = 0
       if (.not. rf%active) return
       why = ''
-      f = nodal_values(rf%eq, d)
-      if (snapshot) then
-         call h5io_append(rf%snap_time, time, stat, why)
-         if (stat == 0) call h5io_append(rf%snap_step, step, stat, why)
-         if (stat == 0) call h5io_append(rf%snap_force, force, stat, why)
+      columns: do c = 1, rf%ncol
+         if (rf%nrow == 0 .or. stat /= 0) exit columns
+         if (history_columns(c)%whole) then
+            call h5io_append_block(rf%hist(c), nint(rf%rows(c, :rf%nrow)), stat, why)
+         else
+            call h5io_append_block(rf%hist(c), rf%rows(c, :rf%nrow), stat, why)
+         end if
+      end do columns
+      if (stat /= 0) then
+         errmsg = rf%path//': /history: '//trim(why)
+         rf%broken = .true.
+         return
+      end if
+      rf%nrow = 0
+      if (rf%nsnap > 0) then
+         call h5io_append_block(rf%snap_time, rf%snap(1, :rf%nsnap), stat, why)
+         if (stat == 0) call h5io_append_block(rf%snap_step, nint(rf%snap(2, :rf%nsnap)), stat, why)
+         if (stat == 0) call h5io_append_block(rf%snap_force, rf%snap(3, :rf%nsnap), stat, why)
          fields: do k = 1, ndof_node
             if (stat /= 0) exit fields
-            call h5io_append(rf%snap_field(k), f(k, :), stat, why)
+            call h5io_append_block(rf%snap_field(k), rf%snap_fields(k, :, :rf%nsnap), stat, why)
          end do fields
-         if (stat == 0) call h5io_flush(rf%fid, stat, why)
-         if (stat == 0) call xdmf_snapshot(rf%xdmf, rf%fid, step, time, force, f, stat, why)
+         xdmf_views: do j = 1, rf%nsnap
+            if (stat /= 0) exit xdmf_views
+            call xdmf_snapshot(rf%xdmf, rf%fid, nint(rf%snap(2, j)), rf%snap(1, j), rf%snap(3, j), &
+               rf%snap_fields(:, :, j), stat, why)
+         end do xdmf_views
          if (stat /= 0) then
             errmsg = rf%path//': /fields: '//trim(why)
             rf%broken = .true.
             return
          end if
+         rf%nsnap = 0
       end if
-      if (.not. force > rf%peak_force) return
-      rf%peak_force = force
-      peak_fields: do k = 1, ndof_node
-         call h5io_rewrite(rf%fid, 'peak/'//trim(freedom_name(k)), f(k, :), stat, why)
-         if (stat /= 0) exit peak_fields
-      end do peak_fields
-      if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'step', step, stat, why)
-      if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'time', time, stat, why)
-      if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'force', force, stat, why)
-      if (stat == 0) call xdmf_peak(rf%xdmf, rf%fid, f, stat, why)
-      if (stat /= 0) errmsg = rf%path//': /peak: '//trim(why)
+      if (rf%peak_waiting) then
+         peak_fields: do k = 1, ndof_node
+            call h5io_rewrite(rf%fid, 'peak/'//trim(freedom_name(k)), rf%peak_fields(k, :), stat, why)
+            if (stat /= 0) exit peak_fields
+         end do peak_fields
+         if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'step', rf%peak_step, stat, why)
+         if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'time', rf%peak_time, stat, why)
+         if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'force', rf%peak_force, stat, why)
+         if (stat == 0) call xdmf_peak(rf%xdmf, rf%fid, rf%peak_fields, stat, why)
+         if (stat /= 0) then
+            errmsg = rf%path//': /peak: '//trim(why)
+            rf%broken = .true.
+            return
+         end if
+         rf%peak_waiting = .false.
+      end if
+      call h5io_flush(rf%fid, stat, why)
+      if (stat /= 0) errmsg = rf%path//': '//trim(why)
       rf%broken = stat /= 0
-   end subroutine results_state
+      call system_clock(rf%flushed_at)
+   end subroutine results_flush
 
    !> Writes /summary (the items of <prefix>_summary.dat, SI units, and the
    !> status) and closes the file. Closes what it can even after a failure.
@@ -292,6 +365,7 @@ contains
 
       stat = 0
       if (.not. rf%active) return
+      if (.not. rf%broken) call results_flush(rf, stat, errmsg)      ! what waits, whatever the end
       if (rf%broken) then
          ! a write failed (a full disk, the file-size limit): writing more, even
          ! closing, would rewrite the file's metadata for data that is not there;

@@ -9,7 +9,10 @@
 !>   record_step   after every accepted step: energies, summary figures,
 !>                 history row (every &output every steps), field
 !>                 snapshots and the peak state in <prefix>.h5, warnings;
-!>                 sets rec%stop when the run must end here
+!>                 sets rec%stop when the run must end here (a divergence,
+!>                 a warning with stop_on_warning, or a stop signal, SIGTERM
+!>                 or SIGINT, src/signal_stop.f90: status 'stopped by signal
+!>                 N at step M', exit status 128 + N)
 !>   record_close  at the end, or when a run fails: the summary, in
 !>                 <prefix>_summary.dat and /summary, with its status
 !>
@@ -42,8 +45,10 @@ module run_recorder
       col_strain_energy, col_contact_work, col_contact_energy, col_energy_error, col_branch, col_contact_iter, &
       col_solves, nhist_strength, history_width, col_failure_index, col_failure_mode
    use file_system, only: truncate_file, file_size
-   use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_finish
+   use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_flush, &
+      results_finish
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
+   use signal_stop, only: stop_signal_caught
    implicit none
    private
    public :: record_t, record_open, record_step, record_close, von_karman_limit
@@ -65,6 +70,7 @@ module run_recorder
    type :: record_t
       logical :: stop = .false.                  !< the run must end after this step
       character(len=:), allocatable :: stop_status   !< why (the summary's status)
+      integer :: exit_status = 0                 !< the program's exit status then: 1, or 128 + a signal's number
       integer :: hist_unit = -1                  !< <prefix>_history.dat
       integer(int64) :: hist_bytes = 0           !< its length after the last whole row
       character(len=:), allocatable :: hist_path
@@ -298,6 +304,12 @@ contains
             // 'goes on (later such steps are counted in the summary, unconverged_steps)')
       end if
 
+      ! -- a stop signal (SIGTERM, SIGINT): the run ends after this step
+      if (stop_signal_caught() > 0) then
+         call stop_here('stopped by signal ' // int_str(stop_signal_caught()) // ' at step ' // int_str(step), '')
+         rec%exit_status = 128 + stop_signal_caught()
+      end if
+
    contains
 
       !> A warning on standard error naming the step and time, given once per
@@ -306,10 +318,17 @@ contains
       subroutine warn(kind, message)
          integer, intent(in) :: kind
          character(len=*), intent(in) :: message
+         integer :: ios
+         character(len=msg_len) :: why
          if (rec%warned(kind)) return
          rec%warned(kind) = .true.
          rec%warnings = rec%warnings + 1
          write (error_unit, '(a,i0,a,es11.4,a)') 'impact: warning: step ', step, ' (t = ', t, ' s): ' // message
+         call results_flush(rec%h5, ios, why)      ! the results up to the warning, on disk
+         if (ios /= 0 .and. stat == 0) then
+            stat = ios
+            errmsg = why
+         end if
          if (rec%stop_on_warning) call stop_here('stopped at step ' // int_str(step) // ' by the warning ' &
             // '(&analysis stop_on_warning = .true.)', '')
       end subroutine warn
@@ -319,6 +338,7 @@ contains
          if (rec%stop) return
          rec%stop = .true.
          rec%stop_status = status
+         rec%exit_status = 1
          if (status(1:min(8, len(status))) == 'diverged') rec%diverged_at = t
          if (len(message) > 0) write (error_unit, '(a)') 'impact: error: step ' // int_str(step) // ': ' // message
       end subroutine stop_here
@@ -377,6 +397,7 @@ contains
       call summary_real(s, 'max_energy_created_J', 'max_energy_created', 'J', rec%energy_created, 1.0_dp)
       call summary_integer(s, 'steps', rec%steps)
       call summary_integer(s, 'plate_solves', solver%solves + solver%response_solves)
+      call summary_integer(s, 'response_solves', solver%response_solves)
       call summary_integer(s, 'factorizations', solver%factorizations)
       call summary_integer(s, 'contact_iterations', rec%contact_iterations)
       call summary_integer(s, 'max_contact_iter', rec%max_contact_iter)
@@ -452,7 +473,7 @@ contains
          call truncate_file(rec%hist_path, rec%hist_bytes, ios)
          return
       end if
-      call results_append_history(rec%h5, row(:rec%ncol), .true., stat, errmsg)
+      call results_append_history(rec%h5, row(:rec%ncol), stat, errmsg)
    end subroutine write_row
 
    !> max(a, b) that keeps a NaN (Fortran's max may drop it).

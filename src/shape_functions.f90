@@ -15,7 +15,7 @@ module shape_functions
    use kinds, only: dp
    implicit none
    private
-   public :: nen, shape9, shape9_derivs, shape9_second_derivs, node_xi
+   public :: nen, shape9, shape9_derivs, shape9_second_derivs, node_xi, node_position
 
    !> Nodes per element.
    integer, parameter :: nen = 9
@@ -24,6 +24,15 @@ module shape_functions
    integer, parameter :: ib(nen) = [1, 1, 3, 3, 1, 2, 3, 2, 2]
 
 contains
+
+   !> Position index (1: -1, 2: 0, 3: +1) of local node i along xi (k = 1)
+   !> or eta (k = 2): phi_i = L_a(xi) L_b(eta) with a = node_position(1, i),
+   !> b = node_position(2, i).
+   pure integer function node_position(k, i)
+      integer, intent(in) :: k   !< 1: xi, 2: eta
+      integer, intent(in) :: i   !< local node, 1..9
+      node_position = merge(ia(i), ib(i), k == 1)
+   end function node_position
 
    !> Reference coordinates (xi, eta) of local node i.
    pure function node_xi(i) result(x)

@@ -97,6 +97,15 @@ contains
          write (tr%unit, '(a,i0,a,es10.3,a,es10.3)') 'trace:     eq. (19) iteration ', n, &
             ': eq. (18) ratio sum (D^n+1 - D^n)^2 / sum (D^n+1 - D_t)^2 = ', solver%ratios(n), '  C_r2 = ', tr%cr2
       end do
+      n = solver%iterations
+      if (scheme == 'fast' .and. n == 1 .and. solver%ratios(1) > tr%cr2) then
+         write (tr%unit, '(a,es10.3,a,es10.3,a)') 'trace:     the first solution is the answer: eq. (18) on the ' &
+            // 'next change, theta^2 x ratio = ', solver%guard%theta2_first*solver%ratios(1), ' < C_r2 (theta^2 = ', &
+            solver%guard%theta2_first, ' measured on earlier steps)'
+      else if (scheme == 'fast' .and. n == 2 .and. solver%ratios(2) <= tr%cr2) then
+         write (tr%unit, '(a)') 'trace:     a probe: the second solution measured the first (theta^2 = ratio 2 / ' &
+            // 'ratio 1), which meets eq. (18) and stays the answer'
+      end if
       write (tr%unit, '(a,es13.6,a)') 'trace:     eq. (21) impactor: w_r(t+dt) = ', imp_new%w, ' m'
       write (tr%unit, '(a,es13.6,a,es13.6,a)') 'trace:     eq. (13) indentation: alpha = w_r - w_p = ', cit%alpha, &
          ' m (w_p = ', pattern_mean(cit%pattern, d), ' m, under the impactor)'
