@@ -29,7 +29,7 @@ module deck_schema
    private
    public :: deck_var_t, deck_t, value_t, deck_vars, deck_groups, deck_bind, find_var, var_key, strength_given
    public :: kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names
-   public :: max_word_len, max_path_len, max_list_len
+   public :: max_word_len, max_path_len, max_list_len, words_of, words_quoted
 
    !> Kinds of variable.
    integer, parameter :: kind_real = 1, kind_integer = 2, kind_logical = 3, kind_word = 4, &
@@ -384,5 +384,37 @@ contains
       end subroutine list_value
 
    end subroutine deck_bind
+
+   !> The words of a range 'a | b | c' as 'a b c'.
+   pure function words_of(range) result(words)
+      character(len=*), intent(in) :: range
+      character(len=:), allocatable :: words
+      integer :: i
+      words = trim(range)
+      do i = 1, len(words)
+         if (words(i:i) == '|') words(i:i) = ' '
+      end do
+   end function words_of
+
+
+   !> The words of a range as "'a', 'b', 'c'".
+   pure function words_quoted(range) result(text)
+      character(len=*), intent(in) :: range
+      character(len=:), allocatable :: text, rest
+      integer :: bar
+      text = ''
+      rest = trim(range)
+      do
+         bar = index(rest, '|')
+         if (len(text) > 0) text = text // ', '
+         if (bar == 0) then
+            text = text // "'" // trim(adjustl(rest)) // "'"
+            exit
+         end if
+         text = text // "'" // trim(adjustl(rest(:bar - 1))) // "'"
+         rest = rest(bar + 1:)
+      end do
+   end function words_quoted
+
 
 end module deck_schema

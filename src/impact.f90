@@ -16,7 +16,7 @@ program impact
    use, intrinsic :: iso_fortran_env, only: input_unit, output_unit, error_unit
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t
-   use input_deck, only: write_schema, write_deck_table
+   use deck_echo, only: write_schema, write_deck_table
    use command_line, only: options_t, parse_command_line, read_input_deck
    use plate_model, only: model_t, build_model, mass_times
    use plate_solver, only: solver_t, solver_init, plate_solve
@@ -98,9 +98,8 @@ program impact
    ! Initial conditions: the plate at rest, the impactor touching it at its
    ! impact velocity
    ! =====================================================================
-   allocate (plate%d(model%msh%neq), plate%v(model%msh%neq), plate%a(model%msh%neq), &
-             mb(model%msh%neq), d_new(model%msh%neq))
-   plate%d = 0.0_dp;  plate%v = 0.0_dp;  plate%a = 0.0_dp
+   allocate (plate%d(model%msh%neq), plate%v(model%msh%neq), plate%a(model%msh%neq), source=0.0_dp)
+   allocate (mb(model%msh%neq), d_new(model%msh%neq))
    imp = impactor_state_t(w=0.0_dp, v=deck%velocity, f=0.0_dp)
    call contact_area(model, hist, imp%f, cit%pattern)
    nstep = nint(deck%t_end/deck%dt)
@@ -215,8 +214,7 @@ contains
       call record_close(rec, deck, model, solver, status, hist, imp, cpu1 - cpu0, output_unit, stat, errmsg)
       if (stat /= 0) write (error_unit, '(a)') 'impact: error: ' // trim(errmsg)
       call release_results(claim, discard=.false.)
-      if (exit_code == 130 .or. exit_code == 143) call exit_program(exit_code)   ! SIGINT, SIGTERM: 128 + N, as a shell says
-      if (exit_code /= 0 .or. stat /= 0) call exit_program(1)
+      if (exit_code /= 0 .or. stat /= 0) call exit_program(merge(exit_code, 1, exit_code > 128))  ! a signal: 128 + N
       stop
    end subroutine finish
 
@@ -228,9 +226,8 @@ contains
       character(len=80) :: where
       write (where, '(a,i0,a,es11.4,a)') 'failed at step ', step, ' (t = ', t, ' s)'
       if (present(status)) where = status
-      write (error_unit, '(a)') 'impact: error: ' // trim(message)
-      write (error_unit, '(a)') 'impact: ' // trim(where) // '; results up to the last step are in ' &
-         // deck%prefix // '_history.dat'
+      write (error_unit, '(a/a)') 'impact: error: ' // trim(message), 'impact: ' // trim(where) &
+         // '; results up to the last step are in ' // deck%prefix // '_history.dat'
       call finish(trim(where), 1)
    end subroutine fail_in_run
 
@@ -246,8 +243,7 @@ contains
    !> A wrong command line: the message and the usage's line, exit status 1.
    subroutine bad_usage(message)
       character(len=*), intent(in) :: message
-      write (error_unit, '(a)') 'impact: error: ' // trim(message)
-      write (error_unit, '(a)') usage_line // '      (impact --help: the options)'
+      write (error_unit, '(a/a)') 'impact: error: ' // trim(message), usage_line // '      (impact --help: the options)'
       call exit_program(1)
    end subroutine bad_usage
 

@@ -19,25 +19,22 @@
 module input_deck
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use kinds, only: dp, msg_len
-   use number_text, only: real_str, real_short, int_str
+   use number_text, only: real_str, real_short, int_str, list_str
    use system_limits, only: physical_memory, free_disk_space, file_size_limit
    use file_system, only: path_problem
    use deck_text, only: item_t, group_text_t, read_deck_text, lower_case
    use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, find_var, var_key, &
-      strength_given, &
+      strength_given, words_of, words_quoted, &
       kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names, &
       max_word_len, max_path_len, max_list_len
    implicit none
    private
-   public :: deck_t, default_deck, read_deck, read_deck_file, validate_deck, echo_deck, set_variable
-   public :: write_deck_table, write_schema
+   public :: deck_t, default_deck, read_deck, read_deck_file, validate_deck, set_variable
 
    !> Status returned on any failure.
    integer, parameter :: failed = 1
    !> Longest value text quoted in a message before it is cut short.
    integer, parameter :: max_quoted = 60
-   !> Width of the echo's lines (the group column included), and of its group column.
-   integer, parameter :: echo_width = 100, group_column = 11
    !> Smallest contact-force tolerance C_r1: 100 eps, the rounding of the force.
    real(dp), parameter :: min_cr1 = 100.0_dp*epsilon(1.0_dp)
    !> Bytes in a GiB, for the messages of the size checks.
@@ -395,7 +392,7 @@ contains
       if (stat == 0 .and. (deck%domain == 'quarter' .or. deck%domain == 'strip')) then
          symmetry: do i = 1, n/2
             if (deck%angles(i) == deck%angles(n + 1 - i)) cycle symmetry
-            call need(.false., 'laminate', 'angles', list_str(deck%angles), &
+            call need(.false., 'laminate', 'angles', list_str(deck%angles, max_quoted), &
                'not symmetric about the mid-plane (ply ' // int_str(i) // ' at ' // real_str(deck%angles(i)) &
                // ' deg, ply ' // int_str(n + 1 - i) // ' at ' // real_str(deck%angles(n + 1 - i)) &
                // " deg), but &mesh domain = '" // deck%domain // "' assumes B = 0: use domain = 'full'")
@@ -588,145 +585,6 @@ contains
       if (trim(unit) /= '-' .and. len_trim(unit) > 0) text = text // ' (' // trim(unit) // ')'
    end function interval_text
 
-   ! ================================================================== echo
-
-   !> True when the group concerns a deck of this analysis kind (the echo
-   !> leaves the others out: &load only for static and pressure analyses,
-   !> &modes only for modes, &contact only for the impact, &strength only
-   !> when its strengths are given).
-   pure logical function group_applies(group, deck)
-      character(len=*), intent(in) :: group
-      type(deck_t), intent(in) :: deck
-      select case (trim(group))
-      case ('strength'); group_applies = strength_given(deck)
-      case default;      group_applies = group_applies_kind(group, deck%analysis_kind)
-      end select
-   end function group_applies
-
-   pure logical function group_applies_kind(group, analysis_kind)
-      character(len=*), intent(in) :: group, analysis_kind
-      select case (trim(group))
-      case ('contact');  group_applies_kind = analysis_kind == 'impact'
-      case ('load');     group_applies_kind = analysis_kind == 'static' .or. analysis_kind == 'pressure'
-      case ('modes');    group_applies_kind = analysis_kind == 'modes'
-      case default;      group_applies_kind = .true.
-      end select
-   end function group_applies_kind
-
-   !> The value of entry iv as a deck would give it ('0.15', "'clamped'",
-   !> '.true.', '0, 45, ...'), or '(not given)'.
-   function deck_value_text(deck, iv) result(text)
-      type(deck_t), intent(in) :: deck
-      integer, intent(in) :: iv
-      character(len=:), allocatable :: text
-      type(deck_t) :: copy
-      type(value_t) :: v
-      copy = deck
-      call deck_bind(copy, iv, v, .false.)
-      select case (deck_vars(iv)%kind)
-      case (kind_real)
-         text = real_str(v%r)
-         if (.not. v%given) text = '(not given)'
-      case (kind_integer)
-         text = int_str(v%i)
-      case (kind_logical)
-         text = trim(merge('.true. ', '.false.', v%l))
-      case (kind_word, kind_path)
-         text = "'" // v%s // "'"
-      case (kind_reals)
-         text = list_str(v%list, huge(1))
-      end select
-   end function deck_value_text
-
-   !> Writes the effective values of `deck`, group by group, each line
-   !> starting with `lead` ('# ' in the output files, '' on the terminal),
-   !> 'name = value unit', the reals with the fewest digits that read back to
-   !> the same double. Groups the analysis does not use are left out.
-   subroutine echo_deck(deck, unit, lead)
-      type(deck_t), intent(in) :: deck              !< the deck to echo
-      integer, intent(in) :: unit                   !< open formatted unit
-      character(len=*), intent(in) :: lead          !< text that starts every line
-      character(len=:), allocatable :: line, piece
-      character(len=group_column) :: column
-      integer :: ig, iv
-      write (unit, '(a)') lead // 'deck       source = ''' // deck%source // ''''
-      if (allocated(deck%settings)) then
-         if (len(deck%settings) > 0) write (unit, '(a)') lead // 'deck       command line: ' // deck%settings
-      end if
-      groups_loop: do ig = 1, size(deck_groups)
-         if (.not. group_applies(deck_groups(ig), deck)) cycle groups_loop
-         column = '&' // deck_groups(ig)
-         line = ''
-         vars: do iv = 1, size(deck_vars)
-            if (deck_vars(iv)%group /= deck_groups(ig)) cycle vars
-            piece = trim(deck_vars(iv)%name) // ' = ' // deck_value_text(deck, iv)
-            if (trim(deck_vars(iv)%unit) /= '-') piece = piece // ' ' // trim(deck_vars(iv)%unit)
-            if (len(line) > 0 .and. group_column + len(line) + 2 + len(piece) > echo_width) then
-               write (unit, '(a)') lead // column // line // ','
-               column = ''
-               line = ''
-            end if
-            if (len(line) > 0) line = line // ', '
-            line = line // piece
-         end do vars
-         write (unit, '(a)') lead // column // line
-      end do groups_loop
-   end subroutine echo_deck
-
-   !> The README's deck table (Markdown): group, variable, unit, default,
-   !> meaning, from the schema (make deck-table).
-   subroutine write_deck_table(unit)
-      integer, intent(in) :: unit
-      integer :: iv
-      character(len=:), allocatable :: group, meaning
-      type(deck_var_t) :: e
-      write (unit, '(a)') '| group | variable | unit | default | meaning |'
-      write (unit, '(a)') '|---|---|---|---|---|'
-      do iv = 1, size(deck_vars)
-         e = deck_vars(iv)
-         group = ''
-         if (iv == 1) then
-         group = '`&' // trim(e%group) // '`'
-         else if (deck_vars(iv - 1)%group /= e%group) then
-         group = '`&' // trim(e%group) // '`'
-         end if
-         meaning = trim(e%meaning)
-         if (e%kind == kind_word) meaning = meaning // ' (' // words_quoted(e%range) // ')'
-         if ((e%kind == kind_real .or. e%kind == kind_integer) .and. trim(e%range) /= '(-inf, inf)') &
-         meaning = meaning // '; in ' // trim(e%range)
-         write (unit, '(a)') '| ' // group // ' | `' // trim(e%name) // '` | ' // trim(e%unit) // ' | ' &
-         // default_text(e) // ' | ' // meaning // ' |'
-      end do
-   contains
-      function default_text(e) result(text)
-         type(deck_var_t), intent(in) :: e
-         character(len=:), allocatable :: text
-         if (len_trim(e%default) == 0) then
-         text = 'not given'
-         else if (e%kind == kind_word .or. e%kind == kind_path) then
-         text = "`'" // trim(e%default) // "'`"
-         else
-         text = '`' // trim(e%default) // '`'
-         end if
-      end function default_text
-   end subroutine write_deck_table
-
-   !> The schema as tab-separated lines, one per variable: group, name,
-   !> kind, unit, default, range (impact --schema; tools/impact_files.py).
-   subroutine write_schema(unit)
-      integer, intent(in) :: unit
-      integer :: iv
-      type(deck_var_t) :: e
-      character, parameter :: tab = achar(9)
-      write (unit, '(a)') '# group' // tab // 'name' // tab // 'kind' // tab // 'unit' // tab // 'default' &
-         // tab // 'range' // tab // 'meaning'
-      do iv = 1, size(deck_vars)
-         e = deck_vars(iv)
-         write (unit, '(a)') trim(e%group) // tab // trim(e%name) // tab // trim(kind_names(e%kind)) // tab &
-            // trim(e%unit) // tab // trim(e%default) // tab // trim(e%range) // tab // trim(e%meaning)
-      end do
-   end subroutine write_schema
-
    ! ============================================================== helpers
 
    !> The items of a value text split as a deck line's: '0, 45, -45' -> three
@@ -794,36 +652,6 @@ contains
       end do
    end function quoted_cut
 
-   !> The words of a range 'a | b | c' as 'a b c'.
-   pure function words_of(range) result(words)
-      character(len=*), intent(in) :: range
-      character(len=:), allocatable :: words
-      integer :: i
-      words = trim(range)
-      do i = 1, len(words)
-         if (words(i:i) == '|') words(i:i) = ' '
-      end do
-   end function words_of
-
-   !> The words of a range as "'a', 'b', 'c'".
-   pure function words_quoted(range) result(text)
-      character(len=*), intent(in) :: range
-      character(len=:), allocatable :: text, rest
-      integer :: bar
-      text = ''
-      rest = trim(range)
-      do
-         bar = index(rest, '|')
-         if (len(text) > 0) text = text // ', '
-         if (bar == 0) then
-            text = text // "'" // trim(adjustl(rest)) // "'"
-            exit
-         end if
-         text = text // "'" // trim(adjustl(rest(:bar - 1))) // "'"
-         rest = rest(bar + 1:)
-      end do
-   end function words_quoted
-
    !> The groups as '&plate, &lamina, ...'.
    function group_list() result(list)
       character(len=:), allocatable :: list
@@ -846,25 +674,6 @@ contains
          list = list // trim(deck_vars(iv)%name)
       end do
    end function variable_list
-
-   !> The reals of x as 'x1, x2, ...', cut short after max_chars characters.
-   function list_str(x, max_chars) result(s)
-      real(dp), intent(in) :: x(:)
-      integer, intent(in), optional :: max_chars
-      character(len=:), allocatable :: s
-      integer :: i, limit
-      limit = max_quoted
-      if (present(max_chars)) limit = max_chars
-      s = ''
-      do i = 1, size(x)
-         if (i > 1) s = s // ', '
-         s = s // real_str(x(i))
-         if (len(s) > limit) then
-            s = s // ', ...'
-            return
-         end if
-      end do
-   end function list_str
 
 
 end module input_deck

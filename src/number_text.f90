@@ -10,7 +10,7 @@ module number_text
    use kinds, only: dp
    implicit none
    private
-   public :: real_str, real_short, int_str
+   public :: real_str, real_short, int_str, list_str
 
 contains
 
@@ -96,5 +96,24 @@ contains
       if (ios /= 0) rounded = x
       s = real_str(rounded)
    end function real_short
+
+   !> The reals of x as 'x1, x2, ...', cut short after max_chars characters.
+   function list_str(x, max_chars) result(s)
+      real(dp), intent(in) :: x(:)
+      integer, intent(in) :: max_chars              !< cut after this many characters
+      character(len=:), allocatable :: s
+      integer :: i, limit
+      limit = max_chars
+      s = ''
+      do i = 1, size(x)
+         if (i > 1) s = s // ', '
+         s = s // real_str(x(i))
+         if (len(s) > limit) then
+            s = s // ', ...'
+            return
+         end if
+      end do
+   end function list_str
+
 
 end module number_text

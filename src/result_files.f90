@@ -21,7 +21,7 @@ module result_files
    use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t
-   use input_deck, only: echo_deck
+   use deck_echo, only: echo_deck
    use file_system, only: make_directories, parent_directory, path_problem, file_lock_t, lock_file, unlock_file, &
       rename_file, file_size
    implicit none

@@ -61,7 +61,7 @@ module results_hdf5
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t, deck_vars, deck_groups, value_t, deck_bind, strength_given, kind_real, kind_integer, &
       kind_logical, kind_word, kind_path, kind_reals
-   use input_deck, only: echo_deck
+   use deck_echo, only: echo_deck
    use build_info, only: code_version
    use mesh, only: mesh_t, ndof_node, freedom_name
    use result_files, only: column_t, history_columns, nhist_strength, history_width, summary_item_t

@@ -4,7 +4,7 @@
 !> laminate, and the scene report of src/scene_model.f90).
 module run_report
    use deck_schema, only: deck_t, deck_groups
-   use input_deck, only: echo_deck
+   use deck_echo, only: echo_deck
    use plate_model, only: model_t
    use global_matrix, only: global_bandwidth, global_stored_entries
    use scene_model, only: write_scene_report

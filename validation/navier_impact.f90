@@ -39,7 +39,8 @@
 program navier_impact
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use kinds, only: dp, msg_len
-   use input_deck, only: deck_t, read_deck_file, echo_deck
+   use input_deck, only: deck_t, read_deck_file
+   use deck_echo, only: echo_deck
    use navier_impact_solution, only: navier_problem_t, navier_result_t, navier_problem_from_deck, &
       navier_impact_run, navier_changes, load_hertz, load_point, load_name, nchange, change_names
    implicit none
