@@ -146,7 +146,7 @@ program impact
             cit%f_cont = contact_force(model%law, hist, cit%alpha)
             call trace_iteration(tr, step, ic, cit, solver, imp_new, d_new, hist, deck%scheme)
             ! -- eq. (17): the forces agree, or a new assumed force
-            if (contact_converged(cit%f_assum, cit%f_cont, deck%cr1)) exit contact_iterations
+            if (contact_converged(cit%f_assum, cit%f_cont, deck%cr1, hist%f_m)) exit contact_iterations
             if (ic < deck%max_contact_iter) call contact_next(cit, model, hist)
          end do contact_iterations
          ok = ic <= deck%max_contact_iter

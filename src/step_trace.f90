@@ -113,7 +113,8 @@ contains
          // trim(branch_names(contact_branch(hist, cit%alpha))) // ' branch'
       write (tr%unit, '(a,es10.3,a,es10.3,a)') 'trace:     eq. (17) |F_assum - F_cont| / F_assum = ', &
          abs(cit%f_assum - cit%f_cont)/max(cit%f_assum, tiny(1.0_dp)), ' against C_r1 = ', tr%cr1, ': ' &
-         // trim(merge('converged    ', 'not converged', contact_converged(cit%f_assum, cit%f_cont, tr%cr1)))
+         // trim(merge('converged    ', 'not converged', &
+            contact_converged(cit%f_assum, cit%f_cont, tr%cr1, hist%f_m)))
    end subroutine trace_iteration
 
    pure logical function traced(tr, step)
