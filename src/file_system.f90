@@ -14,17 +14,14 @@
 !>  - file_size: the length of a file as it is on disk, whatever a Fortran
 !>    unit still holds in its buffer (gfortran 12 reports neither a failed
 !>    write(2) under FLUSH nor the size on disk through INQUIRE on the unit);
-!>  - keep_file_size_errors: a write beyond the file-size limit (ulimit -f)
-!>    returns an error (EFBIG) instead of killing the process (SIGXFSZ), so
-!>    that the run can end cleanly and say so.
 module file_system
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_associated, &
-      c_funptr, c_intptr_t, c_int64_t, c_long
+      c_int64_t, c_long
    use, intrinsic :: iso_fortran_env, only: int64
    implicit none
    private
    public :: make_directories, parent_directory, path_problem
-   public :: file_lock_t, lock_file, unlock_file, keep_file_size_errors, rename_file, truncate_file, file_size
+   public :: file_lock_t, lock_file, unlock_file, rename_file, truncate_file, file_size
 
    !> A lock taken by lock_file: the stream it holds open.
    type :: file_lock_t
@@ -90,22 +87,12 @@ module file_system
          integer(c_int), value :: fd, operation
          integer(c_int) :: r
       end function c_flock
-      !> sighandler_t signal(int signum, sighandler_t handler)
-      function c_signal(signum, handler) bind(c, name='signal') result(old)
-         import :: c_int, c_funptr
-         integer(c_int), value :: signum
-         type(c_funptr), value :: handler
-         type(c_funptr) :: old
-      end function c_signal
    end interface
 
    !> fseek's whence: from the end of the file (<stdio.h>).
    integer(c_int), parameter :: seek_end = 2
    !> flock(2) operations (Linux, <sys/file.h>): exclusive, do not wait.
    integer(c_int), parameter :: lock_ex = 2, lock_nb = 4
-   !> SIGXFSZ (Linux, <signal.h>) and SIG_IGN, the handler that ignores it.
-   integer(c_int), parameter :: sigxfsz = 25
-   integer(c_intptr_t), parameter :: sig_ign = 1
 
    !> Permissions of a directory created here, before the umask: rwxrwxrwx.
    integer(c_int), parameter :: dir_mode = int(o'777', c_int)
@@ -204,14 +191,6 @@ contains
       r = c_fclose(lock%stream)
       lock%stream = c_null_ptr
    end subroutine unlock_file
-
-   !> From now on a write past the process's file-size limit fails with
-   !> EFBIG, which the writer reports, instead of the signal SIGXFSZ, which
-   !> would kill the process with its files half written.
-   subroutine keep_file_size_errors()
-      type(c_funptr) :: old
-      old = c_signal(sigxfsz, transfer(sig_ign, old))
-   end subroutine keep_file_size_errors
 
    !> Replaces the file `to` by `from` in one step (rename(2)).
    subroutine rename_file(from, to, stat, errmsg)

@@ -35,8 +35,7 @@ program impact
    use fixed_point, only: fp_report
    use other_analyses, only: run_other_analysis
    use program_exit, only: exit_program
-   use file_system, only: keep_file_size_errors
-   use signal_stop, only: catch_stop_signals
+   use signal_stop, only: catch_stop_signals, keep_file_size_errors
    implicit none
 
    type(deck_t) :: deck

@@ -12,20 +12,28 @@
 !> stop_signal_caught() after every step (SIGKILL or SIGQUIT still end a
 !> step that hangs).
 !>
+!> keep_file_size_errors ignores SIGXFSZ: a write past the process's
+!> file-size limit (ulimit -f) then fails with EFBIG, which the writer
+!> reports (src/run_recorder.f90), instead of killing the process with its
+!> files half written.
+!>
 !> Module state, the one exception in this code to "no saved hidden state":
 !> the number of the signal caught. A signal
 !> handler receives nothing but the signal's number and can reach nothing
 !> but global data, so the flag must live here; it is volatile because it
 !> changes outside the normal flow of the program.
 module signal_stop
-   use, intrinsic :: iso_c_binding, only: c_int, c_funptr, c_funloc
+   use, intrinsic :: iso_c_binding, only: c_int, c_funptr, c_funloc, c_intptr_t
    implicit none
    private
-   public :: catch_stop_signals, stop_signal_caught, sigint, sigterm
+   public :: catch_stop_signals, stop_signal_caught, keep_file_size_errors, sigint, sigterm
 
    !> The signals caught, by their POSIX numbers (the same on Linux, the BSDs
    !> and macOS).
    integer, parameter :: sigint = 2, sigterm = 15
+   !> SIGXFSZ (Linux, <signal.h>) and SIG_IGN, the handler that ignores a signal.
+   integer(c_int), parameter :: sigxfsz = 25
+   integer(c_intptr_t), parameter :: sig_ign = 1
 
    !> The signal caught so far (0: none). Set by on_signal only.
    integer(c_int), volatile, save :: caught = 0_c_int
@@ -61,5 +69,12 @@ contains
       integer(c_int), value :: signum   !< the signal received
       caught = signum
    end subroutine on_signal
+
+   !> From now on a write past the file-size limit fails (EFBIG) instead of
+   !> raising SIGXFSZ (module header).
+   subroutine keep_file_size_errors()
+      type(c_funptr) :: previous
+      previous = c_signal(sigxfsz, transfer(sig_ign, previous))
+   end subroutine keep_file_size_errors
 
 end module signal_stop
