@@ -11,22 +11,30 @@
 !>  - rename_file: rename(2), which replaces a file by another in one step;
 !>  - truncate_file: truncate(2), which cuts a file to a length (a row
 !>    half written when the disk filled up);
-!>  - file_size: the length of a file as it is on disk, whatever a Fortran
-!>    unit still holds in its buffer (gfortran 12 reports neither a failed
-!>    write(2) under FLUSH nor the size on disk through INQUIRE on the unit);
+!>  - file_size, and file_probe_t (open_probe, probe_size, close_probe) to
+!>    read it often: the length of a file as it is on disk, whatever a
+!>    Fortran unit still holds in its buffer (gfortran 12 reports neither a
+!>    failed write(2) under FLUSH nor the size on disk through INQUIRE on
+!>    the unit); a probe keeps the file open, so one reading is one lseek(2).
 module file_system
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_associated, &
-      c_int64_t, c_long
+      c_int64_t
    use, intrinsic :: iso_fortran_env, only: int64
    implicit none
    private
    public :: make_directories, parent_directory, path_problem
    public :: file_lock_t, lock_file, unlock_file, rename_file, truncate_file, file_size
+   public :: file_probe_t, open_probe, probe_size, close_probe
 
    !> A lock taken by lock_file: the stream it holds open.
    type :: file_lock_t
       type(c_ptr) :: stream = c_null_ptr
    end type file_lock_t
+
+   !> A file kept open for reading its length (open_probe): its stream.
+   type :: file_probe_t
+      type(c_ptr) :: stream = c_null_ptr
+   end type file_probe_t
 
    interface
       !> int mkdir(const char *path, mode_t mode)
@@ -42,20 +50,13 @@ module file_system
          character(kind=c_char), intent(in) :: path(*), mode(*)
          type(c_ptr) :: stream
       end function c_fopen
-      !> int fseek(FILE *stream, long offset, int whence)
-      function c_fseek(stream, offset, whence) bind(c, name='fseek') result(r)
-         import :: c_ptr, c_long, c_int
-         type(c_ptr), value :: stream
-         integer(c_long), value :: offset
-         integer(c_int), value :: whence
-         integer(c_int) :: r
-      end function c_fseek
-      !> long ftell(FILE *stream)
-      function c_ftell(stream) bind(c, name='ftell') result(r)
-         import :: c_ptr, c_long
-         type(c_ptr), value :: stream
-         integer(c_long) :: r
-      end function c_ftell
+      !> off_t lseek(int fd, off_t offset, int whence)  (off_t: 64 bits)
+      function c_lseek(fd, offset, whence) bind(c, name='lseek') result(r)
+         import :: c_int, c_int64_t
+         integer(c_int), value :: fd, whence
+         integer(c_int64_t), value :: offset
+         integer(c_int64_t) :: r
+      end function c_lseek
       !> int fclose(FILE *stream)
       function c_fclose(stream) bind(c, name='fclose') result(r)
          import :: c_ptr, c_int
@@ -211,17 +212,43 @@ contains
    end subroutine truncate_file
 
    !> The length of the file `path` on disk (bytes), -1 when it cannot be
-   !> opened: the end found by fseek/ftell on a stream of its own.
+   !> opened.
    function file_size(path) result(bytes)
       character(len=*), intent(in) :: path          !< the file
       integer(int64) :: bytes
-      type(c_ptr) :: stream
-      integer(c_int) :: r
+      type(file_probe_t) :: probe
+      integer :: stat
       bytes = -1
-      stream = c_fopen(path // c_null_char, 'r' // c_null_char)
-      if (.not. c_associated(stream)) return
-      if (c_fseek(stream, 0_c_long, seek_end) == 0) bytes = int(c_ftell(stream), int64)
-      r = c_fclose(stream)
+      call open_probe(path, probe, stat)
+      if (stat /= 0) return
+      bytes = probe_size(probe)
+      call close_probe(probe)
    end function file_size
+
+   !> Opens `path` for reading its length (stat /= 0 when it cannot).
+   subroutine open_probe(path, probe, stat)
+      character(len=*), intent(in) :: path          !< the file
+      type(file_probe_t), intent(out) :: probe      !< the probe, open on success
+      integer, intent(out) :: stat                  !< 0 on success
+      probe%stream = c_fopen(path // c_null_char, 'r' // c_null_char)
+      stat = merge(0, 1, c_associated(probe%stream))
+   end subroutine open_probe
+
+   !> The length on disk of the probe's file (bytes), -1 when it is not open.
+   function probe_size(probe) result(bytes)
+      type(file_probe_t), intent(in) :: probe       !< an open probe
+      integer(int64) :: bytes
+      bytes = -1
+      if (c_associated(probe%stream)) bytes = int(c_lseek(c_fileno(probe%stream), 0_c_int64_t, seek_end), int64)
+   end function probe_size
+
+   !> Closes a probe (nothing when it is not open).
+   subroutine close_probe(probe)
+      type(file_probe_t), intent(inout) :: probe    !< the probe
+      integer(c_int) :: r
+      if (.not. c_associated(probe%stream)) return
+      r = c_fclose(probe%stream)
+      probe%stream = c_null_ptr
+   end subroutine close_probe
 
 end module file_system

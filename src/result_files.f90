@@ -23,7 +23,7 @@ module result_files
    use deck_schema, only: deck_t
    use deck_echo, only: echo_deck
    use file_system, only: make_directories, parent_directory, path_problem, file_lock_t, lock_file, unlock_file, &
-      rename_file, file_size
+      rename_file, file_probe_t, probe_size
    implicit none
    private
    public :: column_t, history_columns, nhist, nhist_strength, history_width
@@ -252,9 +252,9 @@ contains
    !> One row of the history, values in SI in the order of history_columns
    !> (the first size(values) columns), written in the file's units,
    !> flushed, and checked on disk: the file must have grown by the row.
-   subroutine write_history_row(unit, path, values, bytes, stat, iomsg)
+   subroutine write_history_row(unit, probe, values, bytes, stat, iomsg)
       integer, intent(in) :: unit                 !< the history file
-      character(len=*), intent(in) :: path        !< its path
+      type(file_probe_t), intent(in) :: probe     !< the same file, open for its length on disk
       real(dp), intent(in) :: values(:)           !< the row, SI (nhist or nhist_strength values)
       integer(int64), intent(inout) :: bytes      !< the file's length on disk before the row, then after it
       integer, intent(out) :: stat                !< 0, or the write's iostat
@@ -278,7 +278,7 @@ contains
       if (stat == 0) flush (unit, iostat=stat, iomsg=iomsg)
       if (stat /= 0) return
       ! gfortran 12's FLUSH does not report a failed write(2): the length on disk does
-      after = file_size(path)
+      after = probe_size(probe)
       if (after /= bytes + at + 1) then
          stat = 1
          iomsg = 'the row did not reach the disk (a full disk, or the file-size limit)'

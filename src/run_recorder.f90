@@ -44,7 +44,7 @@ module run_recorder
       col_alpha, col_w_plate, col_w_impactor, col_v_impactor, col_strain_y, col_ke_impactor, col_ke_plate, &
       col_strain_energy, col_contact_work, col_contact_energy, col_energy_error, col_branch, col_contact_iter, &
       col_solves, nhist_strength, history_width, col_failure_index, col_failure_mode
-   use file_system, only: truncate_file, file_size
+   use file_system, only: truncate_file, file_probe_t, open_probe, probe_size, close_probe
    use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_flush, &
       results_finish
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
@@ -73,6 +73,7 @@ module run_recorder
       integer :: exit_status = 0                 !< the program's exit status then: 1, or 128 + a signal's number
       integer :: hist_unit = -1                  !< <prefix>_history.dat
       integer(int64) :: hist_bytes = 0           !< its length after the last whole row
+      type(file_probe_t) :: hist_probe           !< it, open for its length on disk (write_history_row)
       character(len=:), allocatable :: hist_path
       type(results_file_t) :: h5                 !< <prefix>.h5
       type(damage_t) :: damage                   !< ply stresses and failure (&strength; src/damage_record.f90)
@@ -154,7 +155,12 @@ contains
          names, texts, &
          rec%hist_unit, rec%hist_path, stat, errmsg)
       if (stat /= 0) return
-      rec%hist_bytes = file_size(rec%hist_path)
+      call open_probe(rec%hist_path, rec%hist_probe, stat)
+      if (stat /= 0) then
+         errmsg = rec%hist_path // ': cannot open it to read its length'
+         return
+      end if
+      rec%hist_bytes = probe_size(rec%hist_probe)
       call results_open(deck, model%msh, rec%h5, stat, errmsg)
       if (stat /= 0) return
       row = 0.0_dp
@@ -420,6 +426,7 @@ contains
 
       if (rec%hist_unit >= 0) close (rec%hist_unit, iostat=ios)
       rec%hist_unit = -1
+      call close_probe(rec%hist_probe)
       if (.not. allocated(rec%hist_path)) rec%hist_path = deck%prefix // '_history.dat'
       call write_summary_file(deck, s, stat, errmsg)
       if (dstat /= 0 .and. stat == 0) then
@@ -463,13 +470,14 @@ contains
       character(len=*), intent(inout) :: errmsg
       character(len=msg_len) :: iomsg
       integer :: ios
-      call write_history_row(rec%hist_unit, rec%hist_path, row(:rec%ncol), rec%hist_bytes, stat, iomsg)
+      call write_history_row(rec%hist_unit, rec%hist_probe, row(:rec%ncol), rec%hist_bytes, stat, iomsg)
       if (stat /= 0) then
          ! a full disk, the file-size limit: the history is cut back to its
          ! last whole row, so that every row it keeps reads
          errmsg = rec%hist_path // ': cannot write a row: ' // trim(iomsg)
          close (rec%hist_unit, iostat=ios)
          rec%hist_unit = -1
+         call close_probe(rec%hist_probe)
          call truncate_file(rec%hist_path, rec%hist_bytes, ios)
          return
       end if
