@@ -177,8 +177,7 @@ contains
       r = c_flock(c_fileno(lock%stream), ior(lock_ex, lock_nb))
       if (r /= 0) then
          errmsg = path // ' is being written by another run now (it is locked)'
-         r = c_fclose(lock%stream)
-         lock%stream = c_null_ptr
+         call close_stream(lock%stream)
          return
       end if
       stat = 0
@@ -187,10 +186,7 @@ contains
    !> Releases a lock taken by lock_file (nothing when none is held).
    subroutine unlock_file(lock)
       type(file_lock_t), intent(inout) :: lock      !< the lock
-      integer(c_int) :: r
-      if (.not. c_associated(lock%stream)) return
-      r = c_fclose(lock%stream)
-      lock%stream = c_null_ptr
+      call close_stream(lock%stream)
    end subroutine unlock_file
 
    !> Replaces the file `to` by `from` in one step (rename(2)).
@@ -245,10 +241,15 @@ contains
    !> Closes a probe (nothing when it is not open).
    subroutine close_probe(probe)
       type(file_probe_t), intent(inout) :: probe    !< the probe
-      integer(c_int) :: r
-      if (.not. c_associated(probe%stream)) return
-      r = c_fclose(probe%stream)
-      probe%stream = c_null_ptr
+      call close_stream(probe%stream)
    end subroutine close_probe
+
+   !> Closes a C stream (fclose) if open; null on return.
+   subroutine close_stream(stream)
+      type(c_ptr), intent(inout) :: stream          !< the stream
+      integer(c_int) :: r
+      if (c_associated(stream)) r = c_fclose(stream)
+      stream = c_null_ptr
+   end subroutine close_stream
 
 end module file_system

@@ -279,15 +279,7 @@ contains
       class(*), intent(in) :: x(:)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      integer :: err
-      err = -1
-      select type (x)
-      type is (real(dp))
-         call h5ltmake_dataset_double_f(loc, name, 1, shape(x, kind=hsize_t), x, err)
-      type is (integer)
-         call h5ltmake_dataset_int_f(loc, name, 1, shape(x, kind=hsize_t), x, err)
-      end select
-      call h5io_check(err, 'cannot write the dataset', name, stat, errmsg)
+      call make_dataset(loc, name, shape(x, kind=hsize_t), x, stat, errmsg)
    end subroutine write_1d
 
    !> Writes the dataset `name` of the 2-D array x, real(dp) or integer
@@ -298,16 +290,34 @@ contains
       class(*), intent(in) :: x(:,:)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
+      stat = 1
+      select type (x)
+      type is (real(dp))
+         call make_dataset(loc, name, shape(x, kind=hsize_t), reshape(x, [size(x)]), stat, errmsg)
+      type is (integer)
+         call make_dataset(loc, name, shape(x, kind=hsize_t), reshape(x, [size(x)]), stat, errmsg)
+      end select
+   end subroutine write_2d
+
+   !> Writes the dataset `name` of shape dims (Fortran order) from the
+   !> values x, in array element order: real(dp) or integer.
+   subroutine make_dataset(loc, name, dims, x, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name
+      integer(hsize_t), intent(in) :: dims(:)
+      class(*), intent(in) :: x(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
       integer :: err
       err = -1
       select type (x)
       type is (real(dp))
-         call h5ltmake_dataset_double_f(loc, name, 2, shape(x, kind=hsize_t), x, err)
+         call h5ltmake_dataset_double_f(loc, name, size(dims), dims, x, err)
       type is (integer)
-         call h5ltmake_dataset_int_f(loc, name, 2, shape(x, kind=hsize_t), x, err)
+         call h5ltmake_dataset_int_f(loc, name, size(dims), dims, x, err)
       end select
       call h5io_check(err, 'cannot write the dataset', name, stat, errmsg)
-   end subroutine write_2d
+   end subroutine make_dataset
 
    !> Overwrites the whole existing real dataset `name` with x(:), which must
    !> have its size.
