@@ -60,6 +60,7 @@ contains
       write (u, '(a)') '  --deck-table         the deck''s variables as the README''s Markdown table'
       write (u, '(a)') '  --version            the version this program was built from'
       write (u, '(a)') '  --help               this text'
+      write (u, '(a)') 'options may stand before or after the deck; one deck only'
       write (u, '(a)') ''
       write (u, '(a)') 'deck groups:' // groups
       write (u, '(a)') 'every variable, its unit, default and meaning: README.md, "The deck" (or impact --deck-table)'
