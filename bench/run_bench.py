@@ -95,6 +95,8 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, 'tools'))
+import impact_files as imf  # noqa: E402  (the one reader of summaries and histories)
 EXE = os.path.join(ROOT, 'impact')
 KERNELS = os.path.join(ROOT, 'build', 'bench', 'bench_kernels')
 RUN_DIR = os.path.join(ROOT, 'build', 'bench', 'runs')
@@ -267,27 +269,6 @@ def hdf5_switch_exists():
     return r.returncode == 0
 
 
-def read_summary(path):
-    d = {}
-    with open(path) as f:
-        for line in f:
-            if line.startswith('#') or '=' not in line:
-                continue
-            k, v = line.split('=', 1)
-            d[k.strip()] = v.strip()
-    return d
-
-
-def read_history(path):
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if line.startswith('#') or not line.strip():
-                continue
-            rows.append([float(x) for x in line.split()])
-    return rows
-
-
 def parabola_peak(t, y):
     """Largest sample, refined by the parabola through it and its neighbours."""
     k = max(range(len(y)), key=lambda i: y[i])
@@ -342,7 +323,7 @@ def run_one(scene, s, repeat, reuse, hdf5_off, env):
         if r.returncode != 0:
             # a run that stops (an iteration that cannot converge at these
             # tolerances) is a result too: recorded with status 'failed'
-            summ = read_summary(prefix + '_summary.dat') if os.path.exists(prefix + '_summary.dat') else {}
+            summ = imf.read_keys(prefix + '_summary.dat') if os.path.exists(prefix + '_summary.dat') else {}
             msg = [l for l in r.stderr.splitlines() if 'error' in l]
             rec = dict(id=rid, scene=scene, settings=s, cpu=[float(summ.get('cpu_s', 'nan'))], setup=[float('nan')],
                        neq=0, kd=0, stored=0, steps=int(summ.get('steps', '0') or 0),
@@ -354,13 +335,13 @@ def run_one(scene, s, repeat, reuse, hdf5_off, env):
                 json.dump(rec, f)
             return rec
         out = r.stdout
-        summ = read_summary(prefix + '_summary.dat')
+        summ = imf.read_keys(prefix + '_summary.dat')
         cpu.append(float(summ['cpu_s']))
         m = re.search(r'set-up \(model, matrices, factorization\): cpu\s+([0-9.Ee+-]+)', out)
         setup.append(float(m.group(1)) if m else float('nan'))
     m = re.search(r'equations (\d+), half-bandwidth (\d+), stored entries (\d+)', out)
     neq, kd, stored = (int(m.group(1)), int(m.group(2)), int(m.group(3))) if m else (0, 0, 0)
-    peak, duration, wmax, inside = measures(read_history(prefix + '_history.dat'))
+    peak, duration, wmax, inside = measures(imf.read_columns(prefix + '_history.dat')[1])
     rec = dict(id=rid, scene=scene, settings=s, cpu=cpu, setup=setup, neq=neq, kd=kd, stored=stored,
                steps=int(summ['steps']), solves=int(summ['plate_solves']),
                factorizations=int(summ['factorizations']), unconverged=int(summ['unconverged_steps']),
@@ -563,7 +544,7 @@ def main_job_floor(env, repeat, blas):
                            capture_output=True, text=True, env=env)
         if r.returncode != 0:
             return None
-        summ = read_summary(prefix + '_summary.dat')
+        summ = imf.read_keys(prefix + '_summary.dat')
         cpu.append(float(summ['cpu_s']))
         steps = int(summ['steps'])
         solves = int(summ['plate_solves'])

@@ -98,20 +98,27 @@ contains
    end function law_indentation
 
    !> The law's tangent stiffness dF/d alpha at the trial indentation alpha
-   !> on its current branch (N/m), by a central difference of relative step
-   !> 1e-6: the slope that decides whether the plain update F <- F_cont of
-   !> the contact iteration contracts.
+   !> on the branch it follows (N/m), eq. (11)-(12) differentiated: loading
+   !> 3/2 k alpha^1/2, unloading q F_m s^(q-1)/(alpha_m - alpha_0), reloading
+   !> 3/2 F_m s^1/2/(alpha_m - alpha_0), s = (alpha - alpha_0)/(alpha_m -
+   !> alpha_0); 0 out of contact.
    elemental function law_tangent(law, hist, alpha) result(k_t)
       type(contact_law_t), intent(in) :: law       !< law constants
       type(contact_history_t), intent(in) :: hist  !< committed history
       real(dp), intent(in) :: alpha                !< trial indentation (m)
       real(dp) :: k_t
-      real(dp), parameter :: rel_step = 1.0e-6_dp
-      real(dp) :: da
-      k_t = 0.0_dp
-      if (alpha <= 0.0_dp) return
-      da = rel_step*alpha
-      k_t = (contact_force(law, hist, alpha + da) - contact_force(law, hist, alpha - da))/(2.0_dp*da)
+      real(dp) :: span
+      span = hist%alpha_m - hist%alpha_0
+      select case (contact_branch(hist, alpha))
+      case (branch_loading)
+         k_t = 1.5_dp*law%k*sqrt(alpha)
+      case (branch_unloading)
+         k_t = law%q*hist%f_m*((alpha - hist%alpha_0)/span)**(law%q - 1.0_dp)/span
+      case (branch_reloading)
+         k_t = 1.5_dp*hist%f_m*sqrt((alpha - hist%alpha_0)/span)/span
+      case default
+         k_t = 0.0_dp
+      end select
    end function law_tangent
 
    !> The branch of the law that a trial indentation alpha follows.

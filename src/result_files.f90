@@ -23,7 +23,7 @@ module result_files
    use deck_schema, only: deck_t
    use deck_echo, only: echo_deck
    use file_system, only: make_directories, parent_directory, path_problem, file_lock_t, lock_file, unlock_file, &
-      rename_file, file_probe_t, probe_size
+      rename_file, file_size, file_probe_t, probe_size
    implicit none
    private
    public :: column_t, history_columns, nhist, nhist_strength, history_width
@@ -32,7 +32,7 @@ module result_files
              col_energy_error, col_branch, col_contact_iter, col_solves, col_failure_index, col_failure_mode
    public :: summary_item_t, summary_real, summary_integer, summary_text
    public :: results_claim_t, result_suffixes, claim_results, release_results
-   public :: open_columns, write_history_row, reserve_summary, write_summary_file
+   public :: open_columns, write_column_block, write_history_row, history_slot, reserve_summary, write_summary_file
 
    !> One column of the history.
    type :: column_t
@@ -99,6 +99,14 @@ module result_files
    !> Characters of a history row (its format in write_history_row): the
    !> time, twelve reals and three integers.
    integer, parameter :: history_row_len = 16 + 12*16 + 3*6
+
+   !> Bytes of a history row on disk, newline included: the row, blanks, the
+   !> newline. A power of two, and the header padded to a multiple of it, so
+   !> that no row straddles a 4 KiB page: a write(2) within one page is whole
+   !> or absent, even under SIGKILL (Linux cuts a write at a page boundary
+   !> when a fatal signal arrives), and a killed run's rows are all whole.
+   !> Holds the widest row, with &strength's two columns.
+   integer, parameter :: history_slot = 256
 
    !> Kinds of summary item.
    integer, parameter :: item_real = 1, item_integer = 2, item_text = 3
@@ -209,7 +217,7 @@ contains
 
    !> Opens <prefix><suffix> (claimed before) and writes its header: title,
    !> deck echo, the columns with their meanings, the names.
-   subroutine open_columns(deck, suffix, title, names, texts, unit, path, stat, errmsg)
+   subroutine open_columns(deck, suffix, title, names, texts, unit, path, stat, errmsg, align)
       type(deck_t), intent(in) :: deck            !< effective deck (echoed; prefix)
       character(len=*), intent(in) :: suffix      !< file name after the prefix, e.g. '_static.dat'
       character(len=*), intent(in) :: title       !< first line, after '# '
@@ -219,8 +227,9 @@ contains
       character(len=:), allocatable, intent(out) :: path   !< its path
       integer, intent(out) :: stat                !< 0 on success
       character(len=*), intent(inout) :: errmsg   !< reason on failure
+      integer, intent(in), optional :: align      !< header length made a multiple of it (history_slot)
       character(len=msg_len) :: iomsg
-      integer :: c
+      integer :: pad
       path = deck%prefix // suffix
       open (newunit=unit, file=path, status='replace', action='write', iostat=stat, iomsg=iomsg)
       if (stat /= 0) then
@@ -228,8 +237,35 @@ contains
             // ': ' // trim(iomsg)
          return
       end if
-      write (unit, '(a)') '# ' // title
-      call echo_deck(deck, unit, '# ')
+      call write_header(0)
+      if (.not. present(align)) return
+      ! the names line padded with blanks to end the header at a multiple of align
+      pad = int(modulo(-file_size(path), int(align, int64)))
+      if (pad == 0) return
+      rewind (unit)
+      call write_header(pad)
+
+   contains
+
+      subroutine write_header(blanks)
+         integer, intent(in) :: blanks            !< after the names line
+         write (unit, '(a)') '# ' // title
+         call echo_deck(deck, unit, '# ')
+         call write_column_block(unit, names, texts, blanks)
+         flush (unit)
+      end subroutine write_header
+
+   end subroutine open_columns
+
+   !> The column block of a file's header: '# columns:', a line per column
+   !> (number, name, meaning), then the names on one '#' line, the last
+   !> line of the header (followed by `blanks` blanks when given).
+   subroutine write_column_block(unit, names, texts, blanks)
+      integer, intent(in) :: unit                 !< open formatted unit
+      character(len=*), intent(in) :: names(:)    !< column names (with their unit)
+      character(len=*), intent(in) :: texts(:)    !< column meanings (with their unit)
+      integer, intent(in), optional :: blanks     !< blanks at the end of the names line
+      integer :: c
       write (unit, '(a)') '# columns:'
       do c = 1, size(names)
          write (unit, '(a,i2,1x,a,1x,a)') '# ', c, names(c), trim(texts(c))
@@ -238,9 +274,9 @@ contains
       do c = 1, size(names)
          write (unit, '(1x,a)', advance='no') trim(names(c))
       end do
+      if (present(blanks)) write (unit, '(a)', advance='no') repeat(' ', blanks)
       write (unit, '(a)') ''
-      flush (unit)
-   end subroutine open_columns
+   end subroutine write_column_block
 
    !> The history's columns of a run: nhist, or nhist_strength when the
    !> deck gives &strength.
@@ -259,9 +295,10 @@ contains
       integer(int64), intent(inout) :: bytes      !< the file's length on disk before the row, then after it
       integer, intent(out) :: stat                !< 0, or the write's iostat
       character(len=*), intent(inout) :: iomsg    !< the run-time's message on failure
-      character(len=history_row_len + 16*(size(values) - nhist)) :: line
+      character(len=history_slot - 1) :: line
       integer(int64) :: after
       integer :: c, at
+      line = ''
       write (line(:history_row_len), '(f16.4, 12es16.7e3, 3i6)') values(1)*history_columns(1)%scale, &
          values(2:13)*history_columns(2:13)%scale, nint(values(14:16))
       at = history_row_len
@@ -274,12 +311,12 @@ contains
             at = at + 16
          end if
       end do extra
-      write (unit, '(a)', iostat=stat, iomsg=iomsg) line(:at)
+      write (unit, '(a)', iostat=stat, iomsg=iomsg) line       ! the whole slot (history_slot)
       if (stat == 0) flush (unit, iostat=stat, iomsg=iomsg)
       if (stat /= 0) return
       ! gfortran 12's FLUSH does not report a failed write(2): the length on disk does
       after = probe_size(probe)
-      if (after /= bytes + at + 1) then
+      if (after /= bytes + history_slot) then
          stat = 1
          iomsg = 'the row did not reach the disk (a full disk, or the file-size limit)'
          return

@@ -43,7 +43,7 @@ module run_recorder
       summary_text, open_columns, write_history_row, reserve_summary, write_summary_file, col_time, col_force, &
       col_alpha, col_w_plate, col_w_impactor, col_v_impactor, col_strain_y, col_ke_impactor, col_ke_plate, &
       col_strain_energy, col_contact_work, col_contact_energy, col_energy_error, col_branch, col_contact_iter, &
-      col_solves, nhist_strength, history_width, col_failure_index, col_failure_mode
+      col_solves, nhist_strength, history_width, history_slot, col_failure_index, col_failure_mode
    use file_system, only: truncate_file, file_probe_t, open_probe, probe_size, close_probe
    use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_flush, &
       results_finish
@@ -152,8 +152,7 @@ contains
       end do
 
       call open_columns(deck, '_history.dat', 'impact: history of a low-velocity impact (Choi, Hong & Lee 1991)', &
-         names, texts, &
-         rec%hist_unit, rec%hist_path, stat, errmsg)
+         names, texts, rec%hist_unit, rec%hist_path, stat, errmsg, align=history_slot)
       if (stat /= 0) return
       call open_probe(rec%hist_path, rec%hist_probe, stat)
       if (stat /= 0) then

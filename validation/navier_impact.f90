@@ -41,6 +41,7 @@ program navier_impact
    use kinds, only: dp, msg_len
    use input_deck, only: deck_t, read_deck_file
    use deck_echo, only: echo_deck
+   use result_files, only: write_column_block
    use navier_impact_solution, only: navier_problem_t, navier_result_t, navier_problem_from_deck, &
       navier_impact_run, navier_changes, load_hertz, load_point, load_name, nchange, change_names
    implicit none
@@ -253,18 +254,9 @@ contains
          'relative change of column 3 from the previous row (-1: first row)', &
          'relative change of column 4 (-)', 'relative change of column 5 (-)', &
          'relative change of column 6 (-)']
-      integer :: c
       write (u, '(a)') '# navier_impact: convergence in modes, load '//load_name(load)//', deck '// &
          trim(deck%source)
-      write (u, '(a)') '# columns:'
-      do c = 1, ncol
-         write (u, '(a,i2,1x,a28,1x,a)') '# ', c, names(c), trim(text(c))
-      end do
-      write (u, '(a)', advance='no') '#'
-      do c = 1, ncol
-         write (u, '(1x,a)', advance='no') trim(names(c))
-      end do
-      write (u, '(a)') ''
+      call write_column_block(u, names, text)
    end subroutine convergence_header
 
    !> One mode count: a line on the terminal and a row of the convergence file.
@@ -320,22 +312,14 @@ contains
          'E0 - (impactor + plate energy + int F d(alpha)) (J)', &
          'contact law branch: 0 none, 1 loading, 2 unloading, 3 reloading (-)', &
          'evaluations of the contact equation in the step (-)']
-      integer :: u, c, i, ios
+      integer :: u, i, ios
       character(len=msg_len) :: iomsg
       open (newunit=u, file=path, status='replace', action='write', iostat=ios, iomsg=iomsg)
       if (ios /= 0) call fail('cannot write '//path//': '//trim(iomsg))
       write (u, '(a)') '# navier_impact: history, Navier modal solution, load '//load_name(r%load)// &
          ', mmax = '//int_text(r%mmax)//', '//int_text(r%modes)//' modes'
       call echo_deck(deck, u, '# ')
-      write (u, '(a)') '# columns:'
-      do c = 1, ncol
-         write (u, '(a,i2,1x,a18,1x,a)') '# ', c, names(c), trim(text(c))
-      end do
-      write (u, '(a)', advance='no') '#'
-      do c = 1, ncol
-         write (u, '(1x,a)', advance='no') trim(names(c))
-      end do
-      write (u, '(a)') ''
+      call write_column_block(u, names, text)
       rows: do i = 0, r%nstep
          write (u, '(f12.4,8es16.7e3,2i4)') r%time(i)*1.0e6_dp, r%force(i), r%alpha(i)*1.0e3_dp, &
             r%w_plate(i)*1.0e3_dp, r%w_centre(i)*1.0e3_dp, r%w_impactor(i)*1.0e3_dp, r%v_impactor(i), &

@@ -87,8 +87,8 @@ module navier_impact_solution
    use materials, only: laminate_t, laminate_drop_bend_twist
    use deck_schema, only: deck_t
    use scene_model, only: scene_t, model_laminate, ncouplings, coupling_names, coupling_tol
-   use contact_law, only: contact_law_t, contact_history_t, contact_force, contact_branch, &
-      contact_commit, branch_loading, branch_unloading, branch_reloading, branch_none
+   use contact_law, only: contact_law_t, contact_history_t, contact_force, contact_branch, law_tangent, &
+      contact_commit, branch_none
    use newmark, only: impactor_advance
    use reference_solutions, only: navier_series_t, navier_fsdt, load_central_force, &
       hertz_impact_t, hertz_impact
@@ -685,7 +685,7 @@ contains
 
       tr%alpha = alpha
       tr%f = contact_force(problem%law, hist, alpha)
-      df = law_slope(problem%law, hist, alpha)
+      df = law_tangent(problem%law, hist, alpha)
       tr%radius = 0.0_dp
       if (problem%load == load_hertz) tr%radius = sqrt(problem%radius*max(alpha, 0.0_dp))
       if (tr%radius > 0.0_dp) then
@@ -751,26 +751,6 @@ contains
       dqsum = 2.0_dp*dqsum
       if (last < st%npair) st%beyond = st%beyond + 1
    end subroutine load_sums
-
-   !> dF/dalpha of the law on the branch alpha follows (contact_law).
-   elemental function law_slope(law, hist, alpha) result(df)
-      type(contact_law_t), intent(in) :: law       !< law constants
-      type(contact_history_t), intent(in) :: hist  !< committed history
-      real(dp), intent(in) :: alpha                !< trial indentation (m)
-      real(dp) :: df
-      real(dp) :: span
-      span = hist%alpha_m - hist%alpha_0
-      select case (contact_branch(hist, alpha))
-      case (branch_loading)
-         df = 1.5_dp*law%k*sqrt(alpha)
-      case (branch_unloading)
-         df = law%q*hist%f_m*((alpha - hist%alpha_0)/span)**(law%q - 1.0_dp)/span
-      case (branch_reloading)
-         df = 1.5_dp*hist%f_m*sqrt((alpha - hist%alpha_0)/span)/span
-      case default
-         df = 0.0_dp
-      end select
-   end function law_slope
 
    !> Newmark update of every mode under the step's force F (and st%hv),
    !> the centre deflection, and the next step's p_mn.

@@ -200,29 +200,19 @@ contains
       real(dp) :: qmn, s_mn, omega2(3), phi(3,3), x(3)
 
       stat = 0
-      if (load == load_sinusoidal) then
-         nmax = 1
-      else
-         nmax = mmax
+      if (all(load /= [load_uniform, load_sinusoidal, load_central_force])) then
+         stat = 1
+         errmsg = 'navier_fsdt: unknown load case'
+         return
       end if
+      nmax = merge(1, mmax, load == load_sinusoidal)
       t = 3*((nmax + 1)/2)**2
       allocate (series%m(t), series%n(t), series%omega(t), series%c(t), series%w_mn(t/3))
       t = 0
       pair = 0
       half_waves_x: do m = 1, nmax, 2
          half_waves_y: do n = 1, nmax, 2
-            select case (load)
-            case (load_uniform)
-               qmn = 16.0_dp*q0/(pi**2*real(m*n, dp))
-            case (load_sinusoidal)
-               qmn = q0
-            case (load_central_force)
-               qmn = 4.0_dp*q0/(a*b)*real((-1)**((m - 1)/2 + (n - 1)/2), dp)
-            case default
-               stat = 1
-               errmsg = 'navier_fsdt: unknown load case'
-               return
-            end select
+            qmn = load_coefficient(load, q0, a, b, m, n)
             s_mn = real((-1)**((m - 1)/2 + (n - 1)/2), dp)   ! sin(m pi/2) sin(n pi/2)
             call navier_modes(lmt, m*pi/a, n*pi/b, omega2, phi, stat, errmsg)
             if (stat /= 0) return
@@ -260,14 +250,7 @@ contains
       if (load == load_sinusoidal) nmax = 1
       half_waves_x: do m = 1, nmax, 2
          half_waves_y: do n = 1, nmax, 2
-            select case (load)
-            case (load_uniform)
-               qmn = 16.0_dp*q0/(pi**2*real(m*n, dp))
-            case (load_sinusoidal)
-               qmn = q0
-            case default   ! central force
-               qmn = 4.0_dp*q0/(a*b)*real((-1)**((m - 1)/2 + (n - 1)/2), dp)
-            end select
+            qmn = load_coefficient(load, q0, a, b, m, n)
             call navier_static(lmt, m*pi/a, n*pi/b, qmn, x, stat, errmsg)
             if (stat /= 0) return
             w = w + real((-1)**((m - 1)/2 + (n - 1)/2), dp)*x(1)
@@ -432,6 +415,25 @@ contains
             1.5_dp*qy/h*(1.0_dp - 4.0_dp*z**2/h**2), 1.5_dp*qx/h*(1.0_dp - 4.0_dp*z**2/h**2)]
    end function isotropic_sinusoidal_stresses
 
+   !> The load's Fourier coefficient Q_mn (Pa) of sin(alpha x) sin(beta y)
+   !> (module header, item 1; Reddy 2004, section 7.3): uniform q0 (Pa)
+   !> 16 q0/(pi^2 m n); sinusoidal q0 (Pa), (1, 1) only; a central force q0
+   !> (N) 4 q0/(a b) sin(m pi/2) sin(n pi/2).
+   pure real(dp) function load_coefficient(load, q0, a, b, m, n) result(qmn)
+      integer, intent(in) :: load          !< load_uniform, load_sinusoidal or load_central_force
+      real(dp), intent(in) :: q0           !< pressure (Pa) or force (N)
+      real(dp), intent(in) :: a, b         !< plate size (m)
+      integer, intent(in) :: m, n          !< half-wave numbers (odd)
+      select case (load)
+      case (load_uniform)
+         qmn = 16.0_dp*q0/(pi**2*real(m*n, dp))
+      case (load_sinusoidal)
+         qmn = q0
+      case default   ! central force
+         qmn = 4.0_dp*q0/(a*b)*real((-1)**((m - 1)/2 + (n - 1)/2), dp)
+      end select
+   end function load_coefficient
+
    ! ===================================================== Navier, CLPT
 
    !> Classical-plate-theory centre deflection (m) of the simply supported
@@ -450,14 +452,7 @@ contains
       if (load == load_sinusoidal) nmax = 1
       do m = 1, nmax, 2
          do n = 1, nmax, 2
-            select case (load)
-            case (load_uniform)
-               qmn = 16.0_dp*q0/(pi**2*real(m*n, dp))
-            case (load_sinusoidal)
-               qmn = q0
-            case default   ! central force
-               qmn = 4.0_dp*q0/(a*b)*real((-1)**((m - 1)/2 + (n - 1)/2), dp)
-            end select
+            qmn = load_coefficient(load, q0, a, b, m, n)
             rm = real(m, dp)/a;  rn = real(n, dp)/b
             den = pi**4*(lmt%d(1,1)*rm**4 + 2.0_dp*(lmt%d(1,2) + 2.0_dp*lmt%d(3,3))*rm**2*rn**2 &
                   + lmt%d(2,2)*rn**4)
