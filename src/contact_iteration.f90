@@ -182,24 +182,22 @@ contains
    end subroutine bracket_update
 
    !> Convergence of the contact iteration, eq. (17):
-   !> |F_assum - F_cont| / F_assum < C_r1 (both zero: no contact, converged).
-   !> Given f_m, the largest force the contact has had (contact_history_t),
-   !> a difference below C_r1 negligible_force f_m also converges: as the
-   !> impactor leaves the plate the root can be a force at the level of
-   !> rounding (1e-14 N after a 300 N contact), which the relative test of
-   !> eq. (17) never accepts; the paper's test is unchanged for every force
-   !> above it.
+   !> |F_assum - F_cont| / F_assum < C_r1 (both zero: no contact, converged),
+   !> or a difference below C_r1 negligible_force f_m, f_m the largest force
+   !> the contact has had (contact_history_t): as the impactor leaves the
+   !> plate the root can be a force at the level of rounding (1e-14 N after
+   !> a 300 N contact), which the relative test never accepts; for every
+   !> force above that level the test is the paper's.
    pure function contact_converged(f_assumed, f_contact, cr1, f_m) result(done)
       real(dp), intent(in) :: f_assumed, f_contact  !< forces (N)
       real(dp), intent(in) :: cr1                   !< tolerance C_r1
-      real(dp), intent(in), optional :: f_m         !< largest force of the contact so far (N)
+      real(dp), intent(in) :: f_m                   !< largest force of the contact so far (N)
       logical :: done
       if (f_assumed <= 0.0_dp) then
          done = f_contact <= 0.0_dp
       else
-         done = abs(f_assumed - f_contact) < cr1*f_assumed
+         done = abs(f_assumed - f_contact) < cr1*max(f_assumed, negligible_force*f_m)
       end if
-      if (present(f_m)) done = done .or. abs(f_assumed - f_contact) < cr1*negligible_force*f_m
    end function contact_converged
 
    !> The diagnostic of a contact iteration that did not converge: the last

@@ -68,10 +68,10 @@ module results_hdf5
    use hdf5_io, only: h5io_start, h5io_create, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
       h5io_write, h5io_rewrite, h5io_create_series, h5io_create_columns, h5io_append_block, &
       h5io_close_dataset, h5io_real, h5io_integer
-   use results_xdmf, only: xdmf_t, xdmf_open, xdmf_snapshot, xdmf_peak, xdmf_close
+   use results_xdmf, only: xdmf_t, xdmf_open, xdmf_batch_open, xdmf_snapshot, xdmf_batch_close, xdmf_peak, xdmf_close
    implicit none
    private
-   public :: results_file_t, results_open, results_append_history, results_state, results_flush, &
+   public :: results_file_t, results_open, results_append_history, results_state, results_flush, results_leave, &
              results_finish, nodal_values, field_units
 
 
@@ -292,10 +292,12 @@ contains
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=msg_len) :: why
       integer :: c, k, j
+      logical :: batch
 
       stat = 0
       if (.not. rf%active) return
       why = ''
+      batch = rf%nsnap > 0
       columns: do c = 1, rf%ncol
          if (rf%nrow == 0 .or. stat /= 0) exit columns
          if (history_columns(c)%whole) then
@@ -318,6 +320,7 @@ contains
             if (stat /= 0) exit fields
             call h5io_append_block(rf%snap_field(k), rf%snap_fields(k, :, :rf%nsnap), stat, why)
          end do fields
+         if (stat == 0) call xdmf_batch_open(rf%xdmf, rf%fid, stat, why)
          xdmf_views: do j = 1, rf%nsnap
             if (stat /= 0) exit xdmf_views
             call xdmf_snapshot(rf%xdmf, rf%fid, nint(rf%snap(2, j)), rf%snap(1, j), rf%snap(3, j), &
@@ -347,10 +350,21 @@ contains
          rf%peak_waiting = .false.
       end if
       call h5io_flush(rf%fid, stat, why)
+      ! the XML last, naming only what this flush has written (src/results_xdmf.f90)
+      if (stat == 0 .and. batch) call xdmf_batch_close(rf%xdmf, rf%fid, stat, why)
       if (stat /= 0) errmsg = rf%path//': '//trim(why)
       rf%broken = stat /= 0
       call system_clock(rf%flushed_at)
    end subroutine results_flush
+
+   !> Another of the run's writes failed (the history: a full disk, the
+   !> file-size limit): the file is written no more and left as it was at its
+   !> last flush, which opens; writing the summary into it now could leave
+   !> its metadata half written.
+   subroutine results_leave(rf)
+      type(results_file_t), intent(inout) :: rf     !< the results file
+      rf%broken = rf%active
+   end subroutine results_leave
 
    !> Writes /summary (the items of <prefix>_summary.dat, SI units, and the
    !> status) and closes the file. Closes what it can even after a failure.

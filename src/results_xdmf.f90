@@ -15,9 +15,14 @@
 !>
 !>   /xdmf/cells          (nelem, 9)   element nodes numbered from 0 (XDMF
 !>                                     counts from 0, /mesh/connectivity from 1)
-!>   /xdmf/fields/<f>/<k> (nnode)      field f of snapshot k: a virtual dataset
+!>   /xdmf/fields/<b>/<f>/<k> (nnode)  field f of snapshot k: a virtual dataset
 !>                                     (HDF5 1.10) showing row k of /fields/<f>,
-!>                                     no copy; readers see a plain dataset
+!>                                     no copy; readers see a plain dataset. b
+!>                                     numbers the batch of snapshots the
+!>                                     results file wrote in one flush
+!>                                     (src/results_hdf5.f90): a group that is
+!>                                     complete before the XML names it and
+!>                                     never changed after
 !>
 !> Debian 12's ParaView (5.11) does not apply the XDMF hyperslabs and
 !> functions of an Attribute, and meshio reads only whole datasets; a plain
@@ -27,7 +32,7 @@
 !> plate (about x = 0 and y = 0, src/mesh.f90): u, psi_x change sign across
 !> x = 0 and v, psi_y across y = 0, which no view can do, so the whole
 !> plate's fields are written as data: /xdmf/coordinates (nnode_whole, 2),
-!> /xdmf/cells, /xdmf/fields/<f>/<k> and /xdmf/peak/<f>, about 4 (quarter)
+!> /xdmf/cells, /xdmf/fields/<b>/<f>/<k> and /xdmf/peak/<f>, about 4 (quarter)
 !> or 2 (half) times the modelled fields. Nodes on the symmetry lines are
 !> shared, elements keep the counter-clockwise order. &output xdmf = 'none'
 !> writes neither the XML nor /xdmf.
@@ -37,19 +42,26 @@
 !> nothing at the default fields_every and doubles the time of a small run
 !> with a snapshot every step (README, "Looking at the fields").
 !>
-!> As the run goes: after a snapshot the HDF5 file is flushed and the XML is
-!> written to <prefix>.xdmf.tmp and renamed over <prefix>.xdmf (one step: a
-!> reader sees the old file or the new one), after the first snapshot and
-!> then at most once per xdmf_rewrite_interval of wall-clock time (the XML grows
-!> with every snapshot; rewriting it each time would cost the square of
-!> their number), and at the end. A killed run's XDMF opens, with the
-!> snapshots up to its last rewrite and status 'running'. (A run still
+!> As the run goes: after a batch of snapshots the HDF5 file is flushed and
+!> the XML is written to <prefix>.xdmf.tmp and renamed over <prefix>.xdmf
+!> (one step: a reader sees the old file or the new one), after the first
+!> batch and then at most once per xdmf_rewrite_interval of wall-clock time
+!> (the XML grows with every snapshot; rewriting it each time would cost the
+!> square of their number), and at the end. A killed run's XDMF opens, with
+!> the snapshots up to its last rewrite and status 'running': the views it
+!> names sit in batch groups that later writes leave alone. (A kill while
+!> HDF5 flushes can still leave the file's newest structures half written:
+!> one link of /xdmf/fields per batch, the growing datasets' chunk indices;
+!> before the batches, every view was a link of one shared group per field,
+!> rewritten 500 times a second by a fast run, and 1 killed run in 10 left
+!> an XDMF that ParaView could not open.) (A run still
 !> going: HDF5 1.10 does not let another process read the file it writes,
 !> outside SWMR mode, which allows no new object once started.)
 !>
-!> Usage (src/results_hdf5.f90): xdmf_open after /mesh is written,
-!> xdmf_snapshot after each snapshot appended to /fields, xdmf_peak after
-!> /peak is rewritten, xdmf_close before the file is closed.
+!> Usage (src/results_hdf5.f90): xdmf_open after /mesh is written; for each
+!> batch of snapshots appended to /fields, xdmf_batch_open, xdmf_snapshot
+!> for each, xdmf_batch_close; xdmf_peak after /peak is rewritten;
+!> xdmf_close before the file is closed.
 module results_xdmf
    use, intrinsic :: iso_fortran_env, only: int64
    use hdf5, only: hid_t
@@ -62,7 +74,7 @@ module results_xdmf
    use file_system, only: rename_file
    implicit none
    private
-   public :: xdmf_t, xdmf_open, xdmf_snapshot, xdmf_peak, xdmf_close
+   public :: xdmf_t, xdmf_open, xdmf_batch_open, xdmf_snapshot, xdmf_batch_close, xdmf_peak, xdmf_close
 
    !> Longest number as text (src/number_text.f90, real_str).
    integer, parameter :: text_len = 32
@@ -88,6 +100,8 @@ module results_xdmf
       integer :: nsnap = 0                          !< snapshots so far
       character(len=text_len), allocatable :: time(:), force(:)  !< of each snapshot (s, N), as the XML gives them
       integer, allocatable :: step(:)               !< of each snapshot
+      integer, allocatable :: batch(:)              !< of each snapshot: its group /xdmf/fields/<batch>
+      integer :: nbatch = 0                         !< batches so far
       integer, allocatable :: source(:)             !< whole: the modelled node of each node shown
       real(dp), allocatable :: parity(:,:)          !< whole: (ndof_node, nnode) sign of each field there
       integer(int64) :: written_at = 0              !< system_clock count of the last rewrite
@@ -117,18 +131,16 @@ contains
       x%h5_name = deck%prefix(slash + 1:) // '.h5'
       x%status = 'running'
       x%whole = deck%xdmf == 'whole' .and. (msh%sym_x .or. msh%sym_y)
-      allocate (x%time(0), x%force(0), x%step(0))
+      allocate (x%time(0), x%force(0), x%step(0), x%batch(0))
       call system_clock(x%written_at)
 
       call h5io_group(fid, 'xdmf', stat, errmsg)
       if (stat == 0) call h5io_set_attr(fid, 'xdmf', 'domain', trim(merge('whole   ', 'modelled', x%whole)), &
          stat, errmsg)
       if (stat == 0) call h5io_set_attr(fid, 'xdmf', 'description', 'what ' // x%h5_name(:len(x%h5_name) - 3) &
-         // '.xdmf shows (src/results_xdmf.f90): cells numbered from 0, fields/<f>/<k>: field f of snapshot k', stat, errmsg)
+         // '.xdmf shows (src/results_xdmf.f90): cells numbered from 0, fields/<b>/<f>/<k>: field f of ' &
+         // 'snapshot k, written in batch b', stat, errmsg)
       if (stat == 0) call h5io_group(fid, 'xdmf/fields', stat, errmsg)
-      do k = 1, ndof_node
-         if (stat == 0) call h5io_group(fid, 'xdmf/fields/' // trim(freedom_name(k)), stat, errmsg)
-      end do
       if (stat /= 0) return
       if (x%whole) then
          call whole_plate(msh, xy, cells, x%source, x%parity)
@@ -151,9 +163,40 @@ contains
       call write_xml(x, fid, stat, errmsg)
    end subroutine xdmf_open
 
-   !> Snapshot number x%nsnap + 1, just appended to /fields: its views (or,
-   !> for the whole plate, its mirrored fields) /xdmf/fields/<f>/<k>, and the
-   !> XML rewritten when due (module header).
+   !> Starts a batch of snapshots: the group /xdmf/fields/<b> and its groups
+   !> of the fields.
+   subroutine xdmf_batch_open(x, fid, stat, errmsg)
+      type(xdmf_t), intent(inout) :: x              !< the XDMF file
+      integer(hid_t), intent(in) :: fid             !< the open results file
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      integer :: k
+      stat = 0
+      if (.not. x%active) return
+      x%nbatch = x%nbatch + 1
+      call h5io_group(fid, batch_group(x%nbatch), stat, errmsg)
+      do k = 1, ndof_node
+         if (stat == 0) call h5io_group(fid, batch_group(x%nbatch) // '/' // trim(freedom_name(k)), stat, errmsg)
+      end do
+   end subroutine xdmf_batch_open
+
+   !> Ends a batch: the XML rewritten when due (module header).
+   subroutine xdmf_batch_close(x, fid, stat, errmsg)
+      type(xdmf_t), intent(inout) :: x              !< the XDMF file
+      integer(hid_t), intent(in) :: fid             !< the open results file
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      integer(int64) :: now, rate
+      stat = 0
+      if (.not. x%active) return
+      call system_clock(now, rate)
+      if (x%nbatch == 1 .or. real(now - x%written_at, dp) >= xdmf_rewrite_interval*real(rate, dp)) &
+         call write_xml(x, fid, stat, errmsg)
+   end subroutine xdmf_batch_close
+
+   !> Snapshot number x%nsnap + 1, just appended to /fields, in the open
+   !> batch b: its views (or, for the whole plate, its mirrored fields)
+   !> /xdmf/fields/<b>/<f>/<k>.
    subroutine xdmf_snapshot(x, fid, step, time, force, f, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file
       integer(hid_t), intent(in) :: fid             !< the open results file
@@ -162,9 +205,7 @@ contains
       real(dp), intent(in) :: f(:,:)                !< (ndof_node, nnode) its nodal values, modelled domain
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
-      character(len=:), allocatable :: group
       integer :: k
-      integer(int64) :: now, rate
 
       stat = 0
       if (.not. x%active) return
@@ -172,20 +213,32 @@ contains
       x%time = [x%time, real_str(time)]
       x%force = [x%force, real_str(force)]
       x%step = [x%step, step]
+      x%batch = [x%batch, x%nbatch]
       fields: do k = 1, ndof_node
          if (stat /= 0) exit fields
-         group = 'xdmf/fields/' // trim(freedom_name(k)) // '/' // int_str(x%nsnap)
          if (x%whole) then
-            call h5io_write(fid, group, x%parity(k, :)*f(k, x%source), stat, errmsg)
+            call h5io_write(fid, view_path(x, k, x%nsnap), x%parity(k, :)*f(k, x%source), stat, errmsg)
          else
-            call h5io_view_column(fid, group, 'fields/' // trim(freedom_name(k)), size(f, 2), x%nsnap, stat, errmsg)
+            call h5io_view_column(fid, view_path(x, k, x%nsnap), 'fields/' // trim(freedom_name(k)), size(f, 2), &
+               x%nsnap, stat, errmsg)
          end if
       end do fields
-      if (stat /= 0) return
-      call system_clock(now, rate)
-      if (x%nsnap == 1 .or. real(now - x%written_at, dp) >= xdmf_rewrite_interval*real(rate, dp)) &
-         call write_xml(x, fid, stat, errmsg)
    end subroutine xdmf_snapshot
+
+   !> The group of batch b.
+   pure function batch_group(b) result(path)
+      integer, intent(in) :: b                      !< batch number
+      character(len=:), allocatable :: path
+      path = 'xdmf/fields/' // int_str(b)
+   end function batch_group
+
+   !> Where field k of snapshot s is: /xdmf/fields/<b>/<f>/<s>.
+   pure function view_path(x, k, s) result(path)
+      type(xdmf_t), intent(in) :: x                 !< the XDMF file
+      integer, intent(in) :: k, s                   !< freedom, snapshot
+      character(len=:), allocatable :: path
+      path = batch_group(x%batch(s)) // '/' // trim(freedom_name(k)) // '/' // int_str(s)
+   end function view_path
 
    !> The peak state just rewritten in /peak: for the whole plate, mirrored
    !> into /xdmf/peak (the modelled domain's XML shows /peak itself).
@@ -270,7 +323,7 @@ contains
          write (u, '(a)') '        <Information Name="step" Value="' // int_str(x%step(s)) // '"/>'
          write (u, '(a)') '        <Information Name="force_N" Value="' // trim(x%force(s)) // '"/>'
          do k = 1, ndof_node
-            call attribute(trim(freedom_name(k)), 'xdmf/fields/' // trim(freedom_name(k)) // '/' // int_str(s))
+            call attribute(trim(freedom_name(k)), view_path(x, k, s))
          end do
          do k = 1, ndof_node
             call attribute('peak_' // trim(freedom_name(k)), peak // trim(freedom_name(k)))

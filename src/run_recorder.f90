@@ -46,7 +46,7 @@ module run_recorder
       col_solves, nhist_strength, history_width, history_slot, col_failure_index, col_failure_mode
    use file_system, only: truncate_file, file_probe_t, open_probe, probe_size, close_probe
    use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_flush, &
-      results_finish
+      results_leave, results_finish
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
    use signal_stop, only: stop_signal_caught
    implicit none
@@ -478,6 +478,7 @@ contains
          rec%hist_unit = -1
          call close_probe(rec%hist_probe)
          call truncate_file(rec%hist_path, rec%hist_bytes, ios)
+         call results_leave(rec%h5)
          return
       end if
       call results_append_history(rec%h5, row(:rec%ncol), stat, errmsg)

@@ -61,7 +61,7 @@ contains
          contact_iterations: do it = 1, max_iter
             call impactor_advance(mass, dt, w, v, f, fa, w_new, v_new)   ! eq. (21)
             fc = contact_force(law, hist, w_new)                         ! eq. (11)-(13), w_plate = 0
-            if (contact_converged(fa, fc, cr1)) exit contact_iterations  ! eq. (17)
+            if (contact_converged(fa, fc, cr1, hist%f_m)) exit contact_iterations  ! eq. (17)
             call bracket_update(br, fa, fc, fnext)
             fa = fnext
          end do contact_iterations
