@@ -13,8 +13,8 @@
 !>    str, not a one-element array), or 1-D arrays (h5io_set_attr with an
 !>    array); strings are variable-length UTF-8 (h5py gives str);
 !>  - fixed datasets are written whole with the high-level H5LT calls;
-!>  - series are extendible chunked datasets that grow by one entry per
-!>    h5io_append, or by a block of entries per h5io_append_block: rank 1
+!>  - series are extendible chunked datasets that grow by a block of
+!>    entries per h5io_append_block: rank 1
 !>    (n) for a history column, rank 2 (nrow, n) in
 !>    Fortran order, i.e. (n, nrow) in C order, h5py and h5dump, for a field
 !>    of nrow nodes per snapshot.
@@ -47,7 +47,7 @@ module hdf5_io
    public :: h5io_start, h5io_create, h5io_close, h5io_flush, h5io_group
    public :: h5io_set_attr, h5io_write, h5io_rewrite
    public :: h5io_check, h5io_fail, h5io_attr_path, h5io_vlen_string_type
-   public :: h5io_create_series, h5io_create_columns, h5io_append, h5io_append_block, h5io_close_dataset
+   public :: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_close_dataset
    public :: h5io_view_column
    public :: h5io_real, h5io_integer
 
@@ -69,12 +69,6 @@ module hdf5_io
    interface h5io_write
       module procedure write_1d, write_2d
    end interface h5io_write
-
-   !> Appends one entry to a series: a real or an integer to a rank-1 series,
-   !> a real column to a rank-2 series.
-   interface h5io_append
-      module procedure append_value, append_column
-   end interface h5io_append
 
    !> Appends several entries to a series at once: reals or integers to a
    !> rank-1 series, the columns x(:, k) to a rank-2 series (one extension
@@ -398,33 +392,6 @@ contains
       call h5pclose_f(plist, err)
       call h5sclose_f(sid, err)
    end subroutine create_extendible
-
-   !> Appends the value x, real(dp) or integer, to the rank-1 series did.
-   subroutine append_value(did, x, stat, errmsg)
-      integer(hid_t), intent(in) :: did
-      class(*), intent(in), target :: x
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      select type (x)
-      type is (real(dp))
-         call grow_and_write(did, H5T_NATIVE_DOUBLE, 1, 1, c_loc(x), stat, errmsg)
-      type is (integer)
-         call grow_and_write(did, H5T_NATIVE_INTEGER, 1, 1, c_loc(x), stat, errmsg)
-      class default
-         call h5io_fail('a series holds real(dp) or integer values', '', stat, errmsg)
-      end select
-   end subroutine append_value
-
-   !> Appends the column x(:) (of the dataset's nrow values) to the rank-2 series did.
-   subroutine append_column(did, x, stat, errmsg)
-      integer(hid_t), intent(in) :: did
-      real(dp), intent(in) :: x(:)
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      real(dp), allocatable, target :: buf(:)
-      buf = x
-      call grow_and_write(did, H5T_NATIVE_DOUBLE, 2, 1, c_loc(buf), stat, errmsg)
-   end subroutine append_column
 
    !> Appends the reals x(:) to the rank-1 series did.
    subroutine append_reals(did, x, stat, errmsg)

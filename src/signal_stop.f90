@@ -26,7 +26,7 @@ module signal_stop
    use, intrinsic :: iso_c_binding, only: c_int, c_funptr, c_funloc, c_intptr_t
    implicit none
    private
-   public :: catch_stop_signals, stop_signal_caught, keep_file_size_errors, sigint, sigterm
+   public :: catch_stop_signals, stop_signal_caught, keep_file_size_errors
 
    !> The signals caught, by their POSIX numbers (the same on Linux, the BSDs
    !> and macOS).
