@@ -68,7 +68,7 @@ module results_hdf5
    use hdf5_io, only: h5io_start, h5io_create, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
       h5io_write, h5io_rewrite, h5io_create_series, h5io_create_columns, h5io_append_block, &
       h5io_close_dataset, h5io_real, h5io_integer
-   use results_xdmf, only: xdmf_t, xdmf_open, xdmf_batch_open, xdmf_snapshot, xdmf_batch_close, xdmf_peak, xdmf_close
+   use results_xdmf, only: xdmf_t, xdmf_open, xdmf_snapshots, xdmf_batch_close, xdmf_peak, xdmf_close
    implicit none
    private
    public :: results_file_t, results_open, results_append_history, results_state, results_flush, results_leave, &
@@ -291,7 +291,7 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=msg_len) :: why
-      integer :: c, k, j
+      integer :: c, k
       logical :: batch
 
       stat = 0
@@ -320,12 +320,8 @@ contains
             if (stat /= 0) exit fields
             call h5io_append_block(rf%snap_field(k), rf%snap_fields(k, :, :rf%nsnap), stat, why)
          end do fields
-         if (stat == 0) call xdmf_batch_open(rf%xdmf, rf%fid, stat, why)
-         xdmf_views: do j = 1, rf%nsnap
-            if (stat /= 0) exit xdmf_views
-            call xdmf_snapshot(rf%xdmf, rf%fid, nint(rf%snap(2, j)), rf%snap(1, j), rf%snap(3, j), &
-               rf%snap_fields(:, :, j), stat, why)
-         end do xdmf_views
+         if (stat == 0) call xdmf_snapshots(rf%xdmf, rf%fid, nint(rf%snap(2, :rf%nsnap)), rf%snap(1, :rf%nsnap), &
+            rf%snap(3, :rf%nsnap), rf%snap_fields(:, :, :rf%nsnap), stat, why)
          if (stat /= 0) then
             errmsg = rf%path//': /fields: '//trim(why)
             rf%broken = .true.
