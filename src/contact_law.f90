@@ -113,9 +113,9 @@ contains
       case (branch_loading)
          k_t = 1.5_dp*law%k*sqrt(alpha)
       case (branch_unloading)
-         k_t = law%q*hist%f_m*((alpha - hist%alpha_0)/span)**(law%q - 1.0_dp)/span
+         k_t = law%q*hist%f_m*curve_ratio(hist, alpha)**(law%q - 1.0_dp)/span
       case (branch_reloading)
-         k_t = 1.5_dp*hist%f_m*sqrt((alpha - hist%alpha_0)/span)/span
+         k_t = 1.5_dp*hist%f_m*sqrt(curve_ratio(hist, alpha))/span
       case default
          k_t = 0.0_dp
       end select
@@ -139,23 +139,30 @@ contains
       end if
    end function contact_branch
 
+   !> s = (alpha - alpha_0)/(alpha_m - alpha_0), the argument of the
+   !> unloading and reloading curves, eq. (11), at a trial indentation alpha
+   !> between alpha_0 and alpha_m.
+   elemental function curve_ratio(hist, alpha) result(s)
+      type(contact_history_t), intent(in) :: hist  !< committed history
+      real(dp), intent(in) :: alpha                !< trial indentation (m)
+      real(dp) :: s
+      s = (alpha - hist%alpha_0)/(hist%alpha_m - hist%alpha_0)
+   end function curve_ratio
+
    !> Contact force for the trial indentation alpha, eq. (11) and (12).
    elemental function contact_force(law, hist, alpha) result(f)
       type(contact_law_t), intent(in) :: law       !< law constants
       type(contact_history_t), intent(in) :: hist  !< committed history
       real(dp), intent(in) :: alpha                !< trial indentation (m)
       real(dp) :: f
-      real(dp) :: ratio
 
       select case (contact_branch(hist, alpha))
       case (branch_loading)
          f = law%k*alpha**1.5_dp
       case (branch_unloading)
-         ratio = (alpha - hist%alpha_0)/(hist%alpha_m - hist%alpha_0)
-         f = hist%f_m*ratio**law%q
+         f = hist%f_m*curve_ratio(hist, alpha)**law%q
       case (branch_reloading)
-         ratio = (alpha - hist%alpha_0)/(hist%alpha_m - hist%alpha_0)
-         f = hist%f_m*ratio**1.5_dp
+         f = hist%f_m*curve_ratio(hist, alpha)**1.5_dp
       case default
          f = 0.0_dp
       end select

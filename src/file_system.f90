@@ -1,5 +1,5 @@
 !> What the program asks of the file system, through the C library (ISO C
-!> binding), never through a shell: a path is only ever a name here, so
+!> binding, src/c_library.f90), never through a shell: a path is only ever a name here, so
 !> nothing in it is interpreted.
 !>
 !>  - make_directories: `mkdir -p` of a path's directories, by mkdir(2);
@@ -17,9 +17,9 @@
 !>    failed write(2) under FLUSH nor the size on disk through INQUIRE on
 !>    the unit); a probe keeps the file open, so one reading is one lseek(2).
 module file_system
-   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, c_associated, &
-      c_int64_t
+   use, intrinsic :: iso_c_binding, only: c_int, c_null_char, c_ptr, c_null_ptr, c_associated, c_int64_t
    use, intrinsic :: iso_fortran_env, only: int64
+   use c_library, only: c_mkdir, c_fopen, c_lseek, c_fclose, c_fileno, c_rename, c_truncate, c_flock
    implicit none
    private
    public :: make_directories, parent_directory, path_problem
@@ -35,60 +35,6 @@ module file_system
    type :: file_probe_t
       type(c_ptr) :: stream = c_null_ptr
    end type file_probe_t
-
-   interface
-      !> int mkdir(const char *path, mode_t mode)
-      function c_mkdir(path, mode) bind(c, name='mkdir') result(r)
-         import :: c_int, c_char
-         character(kind=c_char), intent(in) :: path(*)
-         integer(c_int), value :: mode
-         integer(c_int) :: r
-      end function c_mkdir
-      !> FILE *fopen(const char *path, const char *mode)
-      function c_fopen(path, mode) bind(c, name='fopen') result(stream)
-         import :: c_char, c_ptr
-         character(kind=c_char), intent(in) :: path(*), mode(*)
-         type(c_ptr) :: stream
-      end function c_fopen
-      !> off_t lseek(int fd, off_t offset, int whence)  (off_t: 64 bits)
-      function c_lseek(fd, offset, whence) bind(c, name='lseek') result(r)
-         import :: c_int, c_int64_t
-         integer(c_int), value :: fd, whence
-         integer(c_int64_t), value :: offset
-         integer(c_int64_t) :: r
-      end function c_lseek
-      !> int fclose(FILE *stream)
-      function c_fclose(stream) bind(c, name='fclose') result(r)
-         import :: c_ptr, c_int
-         type(c_ptr), value :: stream
-         integer(c_int) :: r
-      end function c_fclose
-      !> int fileno(FILE *stream)
-      function c_fileno(stream) bind(c, name='fileno') result(fd)
-         import :: c_ptr, c_int
-         type(c_ptr), value :: stream
-         integer(c_int) :: fd
-      end function c_fileno
-      !> int rename(const char *old, const char *new)
-      function c_rename(old, new) bind(c, name='rename') result(r)
-         import :: c_int, c_char
-         character(kind=c_char), intent(in) :: old(*), new(*)
-         integer(c_int) :: r
-      end function c_rename
-      !> int truncate(const char *path, off_t length) (off_t: 64 bits)
-      function c_truncate(path, length) bind(c, name='truncate') result(r)
-         import :: c_int, c_char, c_int64_t
-         character(kind=c_char), intent(in) :: path(*)
-         integer(c_int64_t), value :: length
-         integer(c_int) :: r
-      end function c_truncate
-      !> int flock(int fd, int operation)
-      function c_flock(fd, operation) bind(c, name='flock') result(r)
-         import :: c_int
-         integer(c_int), value :: fd, operation
-         integer(c_int) :: r
-      end function c_flock
-   end interface
 
    !> fseek's whence: from the end of the file (<stdio.h>).
    integer(c_int), parameter :: seek_end = 2

@@ -27,19 +27,17 @@
 !> thickness-shear modes); with R = 0 (symmetric laminate) the three parts
 !> add up to 1.
 !>
-!> Results: `<prefix>_modes.dat` (one row per mode) and
-!> `<prefix>_mode_shapes.dat` (w of each mode at the nodes of the model,
-!> scaled to a largest |w| of 1).
+!> Results (written by src/other_analyses.f90): `<prefix>_modes.dat` (one
+!> row per mode) and `<prefix>_mode_shapes.dat` (w of each mode at the
+!> nodes of the model, scaled to a largest |w| of 1).
 module modal_analysis
    use kinds, only: dp, pi, msg_len
-   use deck_schema, only: deck_t
-   use plate_model, only: model_t, gather_element
+   use plate_model, only: model_t
    use global_matrix, only: global_matvec
-   use result_files, only: open_columns
    use mesh, only: ndof_node
    implicit none
    private
-   public :: modal_result_t, modal_solve, run_modes
+   public :: modal_result_t, modal_solve
 
    !> Natural frequencies and modes.
    type :: modal_result_t
@@ -152,81 +150,5 @@ contains
       ! columns: w, in-plane, rotation
       res%fraction = res%fraction([2, 1, 3], :)
    end subroutine modal_solve
-
-   !> The modal analysis of the deck: solution and result files; report is
-   !> a few lines for the terminal.
-   subroutine run_modes(deck, model, report, stat, errmsg)
-      type(deck_t), intent(in) :: deck              !< deck
-      type(model_t), intent(in) :: model            !< model
-      character(len=*), intent(out) :: report       !< what was done, for the terminal
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< reason on failure
-      type(modal_result_t) :: res
-      character(len=:), allocatable :: path, path2
-      character(len=16), allocatable :: names(:)
-      character(len=48), allocatable :: texts(:)
-      real(dp) :: de(ndof_node), wmax(deck%mode_count), wk
-      integer :: u, j, k
-
-      report = ''
-      call modal_solve(model, deck%mode_count, deck%mode_shapes, res, stat, errmsg)
-      if (stat /= 0) return
-
-      call open_columns(deck, '_modes.dat', 'impact: modal analysis, K_L phi = omega^2 M phi (LAPACK dsbgvx)', &
-         [character(len=18) :: 'mode', 'frequency_Hz', 'omega_rad_s', 'w_fraction', 'inplane_fraction', &
-          'rotation_fraction'], &
-         [character(len=64) :: 'mode number, ascending frequency (-)', 'natural frequency (Hz)', &
-          'circular frequency (rad/s)', 'kinetic energy share of w (-; -1: no shapes)', &
-          'kinetic energy share of u, v (-; -1: no shapes)', 'kinetic energy share of psi_x, psi_y (-; -1: no shapes)'], &
-         u, path, stat, errmsg)
-      if (stat /= 0) return
-      rows: do j = 1, res%count
-         if (deck%mode_shapes) then
-            write (u, '(i6, 2es17.8e3, 3f12.6)') j, res%freq(j), sign(sqrt(abs(res%omega2(j))), res%omega2(j)), &
-               res%fraction(:, j)
-         else
-            write (u, '(i6, 2es17.8e3, 3f12.1)') j, res%freq(j), sign(sqrt(abs(res%omega2(j))), res%omega2(j)), &
-               -1.0_dp, -1.0_dp, -1.0_dp
-         end if
-      end do rows
-      close (u)
-      if (.not. deck%mode_shapes) then
-         write (report, '(a,i0,a,es13.6,a,es13.6,a)') 'modes: ', res%count, ' frequencies from ', res%freq(1), &
-            ' to ', res%freq(res%count), ' Hz (no shapes: &modes shapes = .false.)' // new_line('a') // &
-            'results: ' // trim(path)
-         return
-      end if
-
-      ! -- mode shapes: w at the nodes, each mode scaled to max |w| = 1
-      allocate (names(2 + res%count), texts(2 + res%count))
-      names(1) = 'x_mm';  texts(1) = 'x from the plate centre (mm)'
-      names(2) = 'y_mm';  texts(2) = 'y from the plate centre (mm)'
-      do j = 1, res%count
-         write (names(2 + j), '(a,i0)') 'w_mode_', j
-         write (texts(2 + j), '(a,i0,a)') 'w of mode ', j, ', largest |w| = 1 (-)'
-         wmax(j) = 0.0_dp
-         do k = 1, model%msh%nnode
-            call gather_element(model%msh%eq(:, k), res%shapes(:, j), de)
-            wmax(j) = max(wmax(j), abs(de(3)))
-         end do
-         if (wmax(j) == 0.0_dp) wmax(j) = 1.0_dp
-      end do
-      call open_columns(deck, '_mode_shapes.dat', 'impact: modal analysis, mode shapes (modelled domain)', &
-         names, texts, u, path2, stat, errmsg)
-      if (stat /= 0) return
-      nodes: do k = 1, model%msh%nnode
-         write (u, '(2f12.4)', advance='no') model%msh%coords(:, k)*1.0e3_dp
-         do j = 1, res%count
-            call gather_element(model%msh%eq(:, k), res%shapes(:, j), de)
-            wk = de(3)/wmax(j)
-            write (u, '(f11.6)', advance='no') wk
-         end do
-         write (u, '(a)') ''
-      end do nodes
-      close (u)
-
-      write (report, '(a,i0,a,es13.6,a,es13.6,a)') 'modes: ', res%count, ' frequencies from ', res%freq(1), &
-         ' to ', res%freq(res%count), ' Hz' // new_line('a') // 'results: ' // trim(path) // ', ' // trim(path2)
-   end subroutine run_modes
 
 end module modal_analysis

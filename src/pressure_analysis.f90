@@ -17,23 +17,21 @@
 !> rounding; for the von Karman theory to within the eq. (18) tolerance and
 !> O(dt^2).
 !>
-!> Results: `<prefix>_pressure_history.dat`, one row per output step
-!> (`&output every`).
+!> Results (written by src/other_analyses.f90):
+!> `<prefix>_pressure_history.dat`, one row per output step (`&output
+!> every`).
 module pressure_analysis
    use number_text, only: int_str
-   use kinds, only: dp, msg_len
-   use deck_schema, only: deck_t
+   use kinds, only: dp
    use plate_model, only: model_t, centre_deflection, plate_kinetic_energy, &
       plate_strain_energy
    use newmark, only: newmark_t, newmark_init, newmark_predictor, newmark_update
    use global_matrix, only: global_matrix_t, global_copy, global_factor, global_solve, global_matvec
-   use analysis_support, only: assemble_load
-   use result_files, only: open_columns
    use plate_solver, only: solver_t, solver_init, plate_solve
    use mesh, only: describe_equation
    implicit none
    private
-   public :: pressure_result_t, pressure_solve, run_pressure
+   public :: pressure_result_t, pressure_solve
 
    !> Response history (index 0: t = 0).
    type :: pressure_result_t
@@ -114,55 +112,5 @@ contains
          end if
       end do time_steps
    end subroutine pressure_solve
-
-   !> The transient analysis of the deck: load, time integration, history
-   !> file; report is a few lines for the terminal.
-   subroutine run_pressure(deck, model, report, stat, errmsg)
-      type(deck_t), intent(in) :: deck              !< deck
-      type(model_t), intent(in) :: model            !< model
-      character(len=*), intent(out) :: report       !< what was done, for the terminal
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< reason on failure
-      type(pressure_result_t) :: res
-      real(dp), allocatable :: f(:)
-      character(len=msg_len) :: warning
-      character(len=:), allocatable :: path
-      integer :: u, step, nstep, peak
-
-      report = ''
-      allocate (f(model%msh%neq))
-      call assemble_load(deck, model, f, stat, errmsg)
-      if (stat /= 0) return
-      nstep = nint(deck%t_end/deck%dt)
-      call pressure_solve(model, f, deck%dt, nstep, deck%every, res, stat, errmsg)
-      if (stat /= 0) return
-
-      call open_columns(deck, '_pressure_history.dat', &
-         'impact: transient response to a load applied at t = 0 and held', &
-         [character(len=16) :: 'time_us', 'w_centre_mm', 'ke_plate_J', 'strain_energy_J', 'work_J', &
-          'energy_error_J', 'plate_solves'], &
-         [character(len=64) :: 'time (us)', 'deflection at the plate centre (mm)', &
-          'plate kinetic energy, whole plate (J)', 'plate strain energy, whole plate (J)', &
-          'work of the load F . D, whole plate (J)', 'work - kinetic - strain energy (J)', &
-          'plate solutions of the step, eq. (18)-(19) (-)'], u, path, stat, errmsg)
-      if (stat /= 0) return
-      rows: do step = 0, res%nstep
-         if (mod(step, deck%every) /= 0 .and. step /= res%nstep) cycle rows
-         write (u, '(f14.4, 5es16.7e3, i6)') res%t(step)*1.0e6_dp, res%w_centre(step)*1.0e3_dp, &
-            res%kinetic(step), res%strain(step), res%work(step), &
-            res%work(step) - res%kinetic(step) - res%strain(step), res%iterations(step)
-      end do rows
-      close (u)
-
-      peak = maxloc(abs(res%w_centre), dim=1) - 1
-      write (report, '(a,i0,a,es12.5,a,f12.3,a)') 'pressure: ', res%nstep, ' steps; largest centre deflection ', &
-         res%w_centre(peak)*1.0e3_dp, ' mm at ', res%t(peak)*1.0e6_dp, ' us' // new_line('a') // &
-         'results: ' // trim(path)
-      if (res%unconverged > 0) then
-         write (warning, '(a,i0,a)') 'warning: ', res%unconverged, &
-            ' steps did not meet eq. (18) within max_nonlinear_iter'
-         report = trim(report) // new_line('a') // trim(warning)
-      end if
-   end subroutine run_pressure
 
 end module pressure_analysis

@@ -41,8 +41,8 @@ module result_files
       character(len=4) :: unit         !< SI unit in the .h5
       character(len=4) :: file_unit    !< unit in the file
       real(dp) :: scale                !< value in the file = SI value * scale
-      logical :: whole                 !< an integer (written as one)
       character(len=72) :: meaning     !< what it is
+      logical :: whole = .false.       !< an integer (written as one)
       logical :: strength = .false.    !< only with &strength (ply stresses), after the others
    end type column_t
 
@@ -55,35 +55,35 @@ module result_files
       col_contact_iter = 15, col_solves = 16, nhist = 16, col_failure_index = 17, col_failure_mode = 18, &
       nhist_strength = 18
    type(column_t), parameter :: history_columns(nhist_strength) = [ &
-      column_t('time', 'time_us', 's', 'us', 1.0e6_dp, .false., 'time'), &
-      column_t('force', 'force_N', 'N', 'N', 1.0_dp, .false., 'contact force on the whole plate F'), &
-      column_t('indentation', 'indentation_mm', 'm', 'mm', 1.0e3_dp, .false., &
+      column_t('time', 'time_us', 's', 'us', 1.0e6_dp, 'time'), &
+      column_t('force', 'force_N', 'N', 'N', 1.0_dp, 'contact force on the whole plate F'), &
+      column_t('indentation', 'indentation_mm', 'm', 'mm', 1.0e3_dp, &
          'indentation alpha = w_impactor - w_plate, eq. (13)'), &
-      column_t('w_plate', 'w_plate_mm', 'm', 'mm', 1.0e3_dp, .false., &
+      column_t('w_plate', 'w_plate_mm', 'm', 'mm', 1.0e3_dp, &
          'plate deflection under the impactor (pressure-weighted mean)'), &
-      column_t('w_impactor', 'w_impactor_mm', 'm', 'mm', 1.0e3_dp, .false., 'impactor displacement since first touch'), &
-      column_t('v_impactor', 'v_impactor_m_s', 'm/s', 'm/s', 1.0_dp, .false., &
+      column_t('w_impactor', 'w_impactor_mm', 'm', 'mm', 1.0e3_dp, 'impactor displacement since first touch'), &
+      column_t('v_impactor', 'v_impactor_m_s', 'm/s', 'm/s', 1.0_dp, &
          'impactor velocity, positive towards the plate'), &
-      column_t('strain_y_back', 'strain_y_back', '-', '-', 1.0_dp, .false., &
+      column_t('strain_y_back', 'strain_y_back', '-', '-', 1.0_dp, &
          'in-plane y strain on the back face at the gauge (Fig. 9b, 10b)'), &
-      column_t('ke_impactor', 'ke_impactor_J', 'J', 'J', 1.0_dp, .false., 'impactor kinetic energy'), &
-      column_t('ke_plate', 'ke_plate_J', 'J', 'J', 1.0_dp, .false., 'plate kinetic energy, whole plate'), &
-      column_t('strain_energy', 'strain_energy_J', 'J', 'J', 1.0_dp, .false., 'plate strain energy, whole plate'), &
-      column_t('contact_work', 'contact_work_J', 'J', 'J', 1.0_dp, .false., &
+      column_t('ke_impactor', 'ke_impactor_J', 'J', 'J', 1.0_dp, 'impactor kinetic energy'), &
+      column_t('ke_plate', 'ke_plate_J', 'J', 'J', 1.0_dp, 'plate kinetic energy, whole plate'), &
+      column_t('strain_energy', 'strain_energy_J', 'J', 'J', 1.0_dp, 'plate strain energy, whole plate'), &
+      column_t('contact_work', 'contact_work_J', 'J', 'J', 1.0_dp, &
          'work of the contact force on the plate, int F p^T dD'), &
-      column_t('indentation_energy', 'indentation_energy_J', 'J', 'J', 1.0_dp, .false., &
+      column_t('indentation_energy', 'indentation_energy_J', 'J', 'J', 1.0_dp, &
          'energy the contact took: the impactor''s work less contact_work'), &
-      column_t('energy_error', 'energy_error_J', 'J', 'J', 1.0_dp, .false., &
+      column_t('energy_error', 'energy_error_J', 'J', 'J', 1.0_dp, &
          'E0 - (ke_impactor + ke_plate + strain_energy + indentation_energy)'), &
-      column_t('branch', 'branch', '-', '-', 1.0_dp, .true., &
-         'contact law branch: 0 none, 1 loading, 2 unloading, 3 reloading'), &
-      column_t('contact_iter', 'contact_iter', '-', '-', 1.0_dp, .true., &
-         'contact-force iterations of the step, eq. (17)'), &
-      column_t('nonlinear_iter', 'nonlinear_iter', '-', '-', 1.0_dp, .true., 'plate solutions of the step, eq. (19)'), &
-      column_t('failure_index', 'failure_index', '-', '-', 1.0_dp, .false., &
+      column_t('branch', 'branch', '-', '-', 1.0_dp, &
+         'contact law branch: 0 none, 1 loading, 2 unloading, 3 reloading', whole=.true.), &
+      column_t('contact_iter', 'contact_iter', '-', '-', 1.0_dp, &
+         'contact-force iterations of the step, eq. (17)', whole=.true.), &
+      column_t('nonlinear_iter', 'nonlinear_iter', '-', '-', 1.0_dp, 'plate solutions of the step, eq. (19)', whole=.true.), &
+      column_t('failure_index', 'failure_index', '-', '-', 1.0_dp, &
          'largest ply failure index of the step (&strength criterion)', strength=.true.), &
-      column_t('failure_mode', 'failure_mode', '-', '-', 1.0_dp, .true., &
-         'its mode: 1/2 fibre t/c, 3/4 matrix t/c, 5 shear 12-13, 6 shear 23', strength=.true.) ]
+      column_t('failure_mode', 'failure_mode', '-', '-', 1.0_dp, &
+         'its mode: 1/2 fibre t/c, 3/4 matrix t/c, 5 shear 12-13, 6 shear 23', whole=.true., strength=.true.) ]
 
    !> A run's hold on its result files (claim_results).
    type :: results_claim_t

@@ -68,7 +68,7 @@ module results_hdf5
    use hdf5_io, only: h5io_start, h5io_create, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
       h5io_write, h5io_rewrite, h5io_create_series, h5io_create_columns, h5io_append_block, &
       h5io_close_dataset, h5io_real, h5io_integer
-   use results_xdmf, only: xdmf_t, xdmf_open, xdmf_batch_open, xdmf_snapshot, xdmf_batch_close, xdmf_peak, xdmf_close
+   use results_xdmf, only: xdmf_t, xdmf_open, xdmf_snapshots, xdmf_batch_close, xdmf_peak, xdmf_close
    implicit none
    private
    public :: results_file_t, results_open, results_append_history, results_state, results_flush, results_leave, &
@@ -291,70 +291,62 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=msg_len) :: why
-      integer :: c, k, j
+      character(len=:), allocatable :: part
+      integer :: c, k
       logical :: batch
 
       stat = 0
       if (.not. rf%active) return
       why = ''
       batch = rf%nsnap > 0
-      columns: do c = 1, rf%ncol
-         if (rf%nrow == 0 .or. stat /= 0) exit columns
-         if (history_columns(c)%whole) then
-            call h5io_append_block(rf%hist(c), nint(rf%rows(c, :rf%nrow)), stat, why)
-         else
-            call h5io_append_block(rf%hist(c), rf%rows(c, :rf%nrow), stat, why)
+      ! a failure ends the flush; the message names the part being written
+      parts: block
+         part = '/history: '
+         columns: do c = 1, rf%ncol
+            if (rf%nrow == 0 .or. stat /= 0) exit columns
+            if (history_columns(c)%whole) then
+               call h5io_append_block(rf%hist(c), nint(rf%rows(c, :rf%nrow)), stat, why)
+            else
+               call h5io_append_block(rf%hist(c), rf%rows(c, :rf%nrow), stat, why)
+            end if
+         end do columns
+         if (stat /= 0) exit parts
+         rf%nrow = 0
+         if (rf%nsnap > 0) then
+            part = '/fields: '
+            call h5io_append_block(rf%snap_time, rf%snap(1, :rf%nsnap), stat, why)
+            if (stat == 0) call h5io_append_block(rf%snap_step, nint(rf%snap(2, :rf%nsnap)), stat, why)
+            if (stat == 0) call h5io_append_block(rf%snap_force, rf%snap(3, :rf%nsnap), stat, why)
+            fields: do k = 1, ndof_node
+               if (stat /= 0) exit fields
+               call h5io_append_block(rf%snap_field(k), rf%snap_fields(k, :, :rf%nsnap), stat, why)
+            end do fields
+            if (stat == 0) call xdmf_snapshots(rf%xdmf, rf%fid, nint(rf%snap(2, :rf%nsnap)), rf%snap(1, :rf%nsnap), &
+               rf%snap(3, :rf%nsnap), rf%snap_fields(:, :, :rf%nsnap), stat, why)
+            if (stat /= 0) exit parts
+            rf%nsnap = 0
          end if
-      end do columns
-      if (stat /= 0) then
-         errmsg = rf%path//': /history: '//trim(why)
-         rf%broken = .true.
-         return
-      end if
-      rf%nrow = 0
-      if (rf%nsnap > 0) then
-         call h5io_append_block(rf%snap_time, rf%snap(1, :rf%nsnap), stat, why)
-         if (stat == 0) call h5io_append_block(rf%snap_step, nint(rf%snap(2, :rf%nsnap)), stat, why)
-         if (stat == 0) call h5io_append_block(rf%snap_force, rf%snap(3, :rf%nsnap), stat, why)
-         fields: do k = 1, ndof_node
-            if (stat /= 0) exit fields
-            call h5io_append_block(rf%snap_field(k), rf%snap_fields(k, :, :rf%nsnap), stat, why)
-         end do fields
-         if (stat == 0) call xdmf_batch_open(rf%xdmf, rf%fid, stat, why)
-         xdmf_views: do j = 1, rf%nsnap
-            if (stat /= 0) exit xdmf_views
-            call xdmf_snapshot(rf%xdmf, rf%fid, nint(rf%snap(2, j)), rf%snap(1, j), rf%snap(3, j), &
-               rf%snap_fields(:, :, j), stat, why)
-         end do xdmf_views
-         if (stat /= 0) then
-            errmsg = rf%path//': /fields: '//trim(why)
-            rf%broken = .true.
-            return
+         if (rf%peak_waiting) then
+            part = '/peak: '
+            peak_fields: do k = 1, ndof_node
+               call h5io_rewrite(rf%fid, 'peak/'//trim(freedom_name(k)), rf%peak_fields(k, :), stat, why)
+               if (stat /= 0) exit peak_fields
+            end do peak_fields
+            if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'step', rf%peak_step, stat, why)
+            if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'time', rf%peak_time, stat, why)
+            if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'force', rf%peak_force, stat, why)
+            if (stat == 0) call xdmf_peak(rf%xdmf, rf%fid, rf%peak_fields, stat, why)
+            if (stat /= 0) exit parts
+            rf%peak_waiting = .false.
          end if
-         rf%nsnap = 0
-      end if
-      if (rf%peak_waiting) then
-         peak_fields: do k = 1, ndof_node
-            call h5io_rewrite(rf%fid, 'peak/'//trim(freedom_name(k)), rf%peak_fields(k, :), stat, why)
-            if (stat /= 0) exit peak_fields
-         end do peak_fields
-         if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'step', rf%peak_step, stat, why)
-         if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'time', rf%peak_time, stat, why)
-         if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'force', rf%peak_force, stat, why)
-         if (stat == 0) call xdmf_peak(rf%xdmf, rf%fid, rf%peak_fields, stat, why)
-         if (stat /= 0) then
-            errmsg = rf%path//': /peak: '//trim(why)
-            rf%broken = .true.
-            return
-         end if
-         rf%peak_waiting = .false.
-      end if
-      call h5io_flush(rf%fid, stat, why)
-      ! the XML last, naming only what this flush has written (src/results_xdmf.f90)
-      if (stat == 0 .and. batch) call xdmf_batch_close(rf%xdmf, rf%fid, stat, why)
-      if (stat /= 0) errmsg = rf%path//': '//trim(why)
+         part = ''
+         call h5io_flush(rf%fid, stat, why)
+         ! the XML last, naming only what this flush has written (src/results_xdmf.f90)
+         if (stat == 0 .and. batch) call xdmf_batch_close(rf%xdmf, rf%fid, stat, why)
+         call system_clock(rf%flushed_at)
+      end block parts
+      if (stat /= 0) errmsg = rf%path//': '//part//trim(why)
       rf%broken = stat /= 0
-      call system_clock(rf%flushed_at)
    end subroutine results_flush
 
    !> Another of the run's writes failed (the history: a full disk, the

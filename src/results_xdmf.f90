@@ -59,8 +59,8 @@
 !> outside SWMR mode, which allows no new object once started.)
 !>
 !> Usage (src/results_hdf5.f90): xdmf_open after /mesh is written; for each
-!> batch of snapshots appended to /fields, xdmf_batch_open, xdmf_snapshot
-!> for each, xdmf_batch_close; xdmf_peak after /peak is rewritten;
+!> batch of snapshots appended to /fields, xdmf_snapshots, then
+!> xdmf_batch_close; xdmf_peak after /peak is rewritten;
 !> xdmf_close before the file is closed.
 module results_xdmf
    use, intrinsic :: iso_fortran_env, only: int64
@@ -74,7 +74,7 @@ module results_xdmf
    use file_system, only: rename_file
    implicit none
    private
-   public :: xdmf_t, xdmf_open, xdmf_batch_open, xdmf_snapshot, xdmf_batch_close, xdmf_peak, xdmf_close
+   public :: xdmf_t, xdmf_open, xdmf_snapshots, xdmf_batch_close, xdmf_peak, xdmf_close
 
    !> Longest number as text (src/number_text.f90, real_str).
    integer, parameter :: text_len = 32
@@ -163,14 +163,18 @@ contains
       call write_xml(x, fid, stat, errmsg)
    end subroutine xdmf_open
 
-   !> Starts a batch of snapshots: the group /xdmf/fields/<b> and its groups
-   !> of the fields.
-   subroutine xdmf_batch_open(x, fid, stat, errmsg)
+   !> A batch of snapshots, just appended to /fields: the group
+   !> /xdmf/fields/<b>, its groups of the fields, and each snapshot's views
+   !> (or, for the whole plate, its mirrored fields).
+   subroutine xdmf_snapshots(x, fid, step, time, force, f, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file
       integer(hid_t), intent(in) :: fid             !< the open results file
+      integer, intent(in) :: step(:)                !< each snapshot's time step
+      real(dp), intent(in) :: time(:), force(:)     !< their times (s) and contact forces (N)
+      real(dp), intent(in) :: f(:,:,:)              !< (ndof_node, nnode, snapshot) their nodal values, modelled domain
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
-      integer :: k
+      integer :: k, j
       stat = 0
       if (.not. x%active) return
       x%nbatch = x%nbatch + 1
@@ -178,7 +182,11 @@ contains
       do k = 1, ndof_node
          if (stat == 0) call h5io_group(fid, batch_group(x%nbatch) // '/' // trim(freedom_name(k)), stat, errmsg)
       end do
-   end subroutine xdmf_batch_open
+      snapshots: do j = 1, size(step)
+         if (stat /= 0) exit snapshots
+         call add_snapshot(x, fid, step(j), time(j), force(j), f(:, :, j), stat, errmsg)
+      end do snapshots
+   end subroutine xdmf_snapshots
 
    !> Ends a batch: the XML rewritten when due (module header).
    subroutine xdmf_batch_close(x, fid, stat, errmsg)
@@ -197,7 +205,7 @@ contains
    !> Snapshot number x%nsnap + 1, just appended to /fields, in the open
    !> batch b: its views (or, for the whole plate, its mirrored fields)
    !> /xdmf/fields/<b>/<f>/<k>.
-   subroutine xdmf_snapshot(x, fid, step, time, force, f, stat, errmsg)
+   subroutine add_snapshot(x, fid, step, time, force, f, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file
       integer(hid_t), intent(in) :: fid             !< the open results file
       integer, intent(in) :: step                   !< the snapshot's time step
@@ -208,7 +216,6 @@ contains
       integer :: k
 
       stat = 0
-      if (.not. x%active) return
       x%nsnap = x%nsnap + 1
       x%time = [x%time, real_str(time)]
       x%force = [x%force, real_str(force)]
@@ -223,7 +230,7 @@ contains
                x%nsnap, stat, errmsg)
          end if
       end do fields
-   end subroutine xdmf_snapshot
+   end subroutine add_snapshot
 
    !> The group of batch b.
    pure function batch_group(b) result(path)

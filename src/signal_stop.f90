@@ -24,6 +24,7 @@
 !> changes outside the normal flow of the program.
 module signal_stop
    use, intrinsic :: iso_c_binding, only: c_int, c_funptr, c_funloc, c_intptr_t
+   use c_library, only: c_signal
    implicit none
    private
    public :: catch_stop_signals, stop_signal_caught, keep_file_size_errors
@@ -37,16 +38,6 @@ module signal_stop
 
    !> The signal caught so far (0: none). Set by on_signal only.
    integer(c_int), volatile, save :: caught = 0_c_int
-
-   interface
-      !> C library: sighandler_t signal(int signum, sighandler_t handler).
-      function c_signal(signum, handler) bind(c, name='signal') result(previous)
-         import :: c_int, c_funptr
-         integer(c_int), value :: signum
-         type(c_funptr), value :: handler
-         type(c_funptr) :: previous
-      end function c_signal
-   end interface
 
 contains
 

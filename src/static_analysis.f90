@@ -22,22 +22,20 @@
 !> converges there, quadratically, for the price of a factorisation of K_T
 !> per iteration (band storage, cheap next to the time loop of an impact).
 !>
-!> Results: `<prefix>_static.dat`, one row per load increment, and
-!> `<prefix>_deflection.dat`, the nodal displacements at the full load.
+!> Results (written by src/other_analyses.f90): `<prefix>_static.dat`, one
+!> row per load increment, and `<prefix>_deflection.dat`, the nodal
+!> displacements at the full load.
 module static_analysis
    use number_text, only: int_str, real_str
-   use kinds, only: dp, msg_len
-   use deck_schema, only: deck_t
+   use kinds, only: dp
    use plate_model, only: model_t, nonlinear_force, centre_deflection, gather_element
    use element_matrices, only: element_tangent_stiffness
    use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, global_copy, &
       global_matvec, global_factor, global_solve
-   use mesh, only: nfe, ndof_node, describe_equation
-   use analysis_support, only: assemble_load
-   use result_files, only: open_columns
+   use mesh, only: nfe, describe_equation
    implicit none
    private
-   public :: static_result_t, static_solve, run_static
+   public :: static_result_t, static_solve
 
    !> The load-deflection path of a static analysis.
    type :: static_result_t
@@ -173,69 +171,5 @@ contains
       if (stat /= 0 .and. bad_eq > 0) errmsg = 'the tangent stiffness is not positive definite ' // &
          '(buckling, or a mechanism: check &boundary): pivot of ' // trim(describe_equation(model%msh, bad_eq))
    end subroutine tangent_stiffness
-
-   !> The static analysis of the deck: load, solution, result files.
-   !> report is a line for the terminal.
-   subroutine run_static(deck, model, report, stat, errmsg)
-      type(deck_t), intent(in) :: deck              !< deck
-      type(model_t), intent(in) :: model            !< model
-      character(len=*), intent(out) :: report       !< what was done, for the terminal
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< reason on failure
-      type(static_result_t) :: res
-      real(dp), allocatable :: f(:)
-      character(len=msg_len) :: load_unit, solve_msg
-      character(len=:), allocatable :: path, path2
-      integer :: u, inc, n, solve_stat, k
-      real(dp) :: de(ndof_node)
-
-      report = ''
-      allocate (f(model%msh%neq))
-      call assemble_load(deck, model, f, stat, errmsg)
-      if (stat /= 0) return
-      n = deck%load_increments
-      if (.not. model%nonlinear) n = 1
-      solve_msg = ''
-      call static_solve(model, f, n, res, solve_stat, solve_msg)
-
-      load_unit = 'Pa'
-      if (deck%load_kind == 'central_force') load_unit = 'N'
-      call open_columns(deck, '_static.dat', 'impact: static analysis, load-deflection path', &
-         [character(len=16) :: 'increment', 'load_factor', 'load', 'w_centre_mm', 'w_centre_h', &
-          'iterations', 'residual'], &
-         [character(len=80) :: 'load increment (-)', 'load factor lambda (-)', &
-          'pressure q0 (Pa) or central force (N): lambda * &load magnitude, in '//trim(load_unit), &
-          'deflection at the plate centre (mm)', 'centre deflection / thickness (-)', &
-          'Newton iterations (linear: 1 solve) (-)', '|lambda F - f_int| / |lambda F| at the end (-)'], &
-         u, path, stat, errmsg)
-      if (stat /= 0) return
-      rows: do inc = 0, res%increments
-         write (u, '(i6, f12.6, 3es16.7e3, i6, es12.3e3)') inc, res%load_factor(inc), &
-            res%load_factor(inc)*deck%load_magnitude, res%w_centre(inc)*1.0e3_dp, &
-            res%w_centre(inc)/deck%h, res%iterations(inc), res%residual(inc)
-      end do rows
-      close (u)
-
-      call open_columns(deck, '_deflection.dat', 'impact: static analysis, nodal displacements ' // &
-         'at the last load reached (modelled domain)', &
-         [character(len=12) :: 'node', 'x_mm', 'y_mm', 'u_mm', 'v_mm', 'w_mm', 'psi_x_rad', 'psi_y_rad'], &
-         [character(len=40) :: 'node (-)', 'x from the plate centre (mm)', 'y from the plate centre (mm)', &
-          'in-plane displacement u (mm)', 'in-plane displacement v (mm)', 'deflection w (mm)', &
-          'rotation psi_x (rad)', 'rotation psi_y (rad)'], u, path2, stat, errmsg)
-      if (stat /= 0) return
-      nodes: do k = 1, model%msh%nnode
-         call gather_element(model%msh%eq(:, k), res%d, de)
-         write (u, '(i6, 2f12.4, 5es16.7e3)') k, model%msh%coords(:, k)*1.0e3_dp, de(1:3)*1.0e3_dp, de(4:5)
-      end do nodes
-      close (u)
-
-      write (report, '(a,es12.5,a,a,a,es12.5,a,f9.4,a)') 'static: load ', &
-         res%load_factor(res%increments)*deck%load_magnitude, ' ', trim(load_unit), &
-         ': centre deflection ', res%w_centre(res%increments)*1.0e3_dp, ' mm (w/h = ', &
-         res%w_centre(res%increments)/deck%h, ')' // new_line('a') // 'results: ' // trim(path) // &
-         ', ' // trim(path2)
-      stat = solve_stat
-      if (stat /= 0) errmsg = solve_msg
-   end subroutine run_static
 
 end module static_analysis

@@ -1,4 +1,5 @@
-!> What the machine offers a run, asked of the C library (ISO C binding):
+!> What the machine offers a run, asked of the C library (ISO C binding,
+!> src/c_library.f90):
 !> the physical memory (sysconf(3)), the free space of the file system a
 !> path is on (statvfs(3)) and the largest file the process may write
 !> (getrlimit(2), RLIMIT_FSIZE). The deck's checks compare what a scene would
@@ -6,48 +7,13 @@
 !> "Stability, bad input, nothing lost"). Either answer is -1 when the
 !> system does not tell, or sets no limit; the check is then skipped.
 module system_limits
-   use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_null_char
+   use, intrinsic :: iso_c_binding, only: c_int, c_long, c_null_char
    use kinds, only: dp
    use file_system, only: parent_directory
+   use c_library, only: statvfs_t, rlimit_t, c_sysconf, c_statvfs, c_getrlimit
    implicit none
    private
    public :: physical_memory, free_disk_space, file_size_limit
-
-   !> struct statvfs of Linux on a 64-bit machine (glibc, <sys/statvfs.h>):
-   !> eleven unsigned longs (read as signed: sizes below 2^63) and six ints.
-   type, bind(c) :: statvfs_t
-      integer(c_long) :: f_bsize, f_frsize, f_blocks, f_bfree, f_bavail, f_files, f_ffree, f_favail, &
-                         f_fsid, f_flag, f_namemax
-      integer(c_int) :: f_spare(6)
-   end type statvfs_t
-
-   !> struct rlimit (<sys/resource.h>): two rlim_t, unsigned long on Linux.
-   type, bind(c) :: rlimit_t
-      integer(c_long) :: rlim_cur, rlim_max
-   end type rlimit_t
-
-   interface
-      !> int getrlimit(int resource, struct rlimit *rlim)
-      function c_getrlimit(resource, rlim) bind(c, name='getrlimit') result(r)
-         import :: c_int, rlimit_t
-         integer(c_int), value :: resource
-         type(rlimit_t), intent(out) :: rlim
-         integer(c_int) :: r
-      end function c_getrlimit
-      !> long sysconf(int name)
-      function c_sysconf(name) bind(c, name='sysconf') result(r)
-         import :: c_int, c_long
-         integer(c_int), value :: name
-         integer(c_long) :: r
-      end function c_sysconf
-      !> int statvfs(const char *path, struct statvfs *buf)
-      function c_statvfs(path, buf) bind(c, name='statvfs') result(r)
-         import :: c_int, c_char, statvfs_t
-         character(kind=c_char), intent(in) :: path(*)
-         type(statvfs_t), intent(out) :: buf
-         integer(c_int) :: r
-      end function c_statvfs
-   end interface
 
    !> sysconf names (Linux, <unistd.h>): _SC_PAGESIZE, _SC_PHYS_PAGES.
    integer(c_int), parameter :: sc_pagesize = 30, sc_phys_pages = 85

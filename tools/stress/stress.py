@@ -61,80 +61,95 @@ BASE = {
 }
 
 
-def scene(name, group, what, changes, beyond=False):
-    """A scene: its name, its row group in the table, what it tests, and
-    the deck variables it changes ({'group': {'variable': 'value'}})."""
-    return {'name': name, 'group': group, 'what': what, 'changes': changes, 'beyond': beyond}
+def scene(name, what, changes):
+    """A scene: its name, what it tests, and the deck variables it changes
+    ({'group': {'variable': 'value'}})."""
+    return {'name': name, 'what': what, 'changes': changes}
+
+
+def group(title, *scenes, beyond=False):
+    """The scenes of one row group of the table, under its title; beyond:
+    they combine extremes on purpose, past what the model covers."""
+    return [dict(sc, group=title, beyond=beyond) for sc in scenes]
 
 
 SCENES = [
-    scene('paper', 'reference', "the paper's clamped plate (Fig. 10)", {}),
+    *group('reference',
+           scene('paper', "the paper's clamped plate (Fig. 10)", {})),
     # -- time steps
-    scene('dt_0.05us', 'time step', 'dt = 0.05 us (4000 steps to 0.2 ms)',
-          {'analysis': {'dt': '5.0e-8', 't_end': '2.0e-4'}, 'output': {'every': '20'}}),
-    scene('dt_0.25us', 'time step', 'dt = 0.25 us (4000 steps to 1 ms)',
-          {'analysis': {'dt': '2.5e-7', 't_end': '1.0e-3'}, 'output': {'every': '20'}}),
-    scene('dt_10us', 'time step', 'dt = 10 us', {'analysis': {'dt': '1.0e-5'}}),
-    scene('dt_20us', 'time step', 'dt = 20 us', {'analysis': {'dt': '2.0e-5'}}),
-    scene('dt_20us_fixed_point', 'time step', "dt = 20 us, force_update = 'fixed_point'",
-          {'analysis': {'dt': '2.0e-5', 'force_update': "'fixed_point'"}}),
-    scene('dt_20us_fast', 'time step', "dt = 20 us, scheme = 'fast'",
-          {'analysis': {'dt': '2.0e-5', 'scheme': "'fast'"}}),
+    *group('time step',
+           scene('dt_0.05us', 'dt = 0.05 us (4000 steps to 0.2 ms)',
+                 {'analysis': {'dt': '5.0e-8', 't_end': '2.0e-4'}, 'output': {'every': '20'}}),
+           scene('dt_0.25us', 'dt = 0.25 us (4000 steps to 1 ms)',
+                 {'analysis': {'dt': '2.5e-7', 't_end': '1.0e-3'}, 'output': {'every': '20'}}),
+           scene('dt_10us', 'dt = 10 us', {'analysis': {'dt': '1.0e-5'}}),
+           scene('dt_20us', 'dt = 20 us', {'analysis': {'dt': '2.0e-5'}}),
+           scene('dt_20us_fixed_point', "dt = 20 us, force_update = 'fixed_point'",
+                 {'analysis': {'dt': '2.0e-5', 'force_update': "'fixed_point'"}}),
+           scene('dt_20us_fast', "dt = 20 us, scheme = 'fast'",
+                 {'analysis': {'dt': '2.0e-5', 'scheme': "'fast'"}})),
     # -- impactor velocity and mass
-    scene('v_0.05', 'impactor', 'v0 = 0.05 m/s', {'impactor': {'velocity': '0.05'}}),
-    scene('v_50', 'impactor', 'v0 = 50 m/s', {'impactor': {'velocity': '50.0'}, 'analysis': {'t_end': '1.0e-3'}}),
-    scene('m_1g', 'impactor', 'm = 1 g', {'impactor': {'mass': '0.001'}, 'analysis': {'t_end': '1.0e-3'}}),
-    scene('m_20kg', 'impactor', 'm = 20 kg (10 ms)',
-          {'impactor': {'mass': '20.0'}, 'analysis': {'t_end': '1.0e-2'}, 'output': {'every': '4'}}),
+    *group('impactor',
+           scene('v_0.05', 'v0 = 0.05 m/s', {'impactor': {'velocity': '0.05'}}),
+           scene('v_50', 'v0 = 50 m/s', {'impactor': {'velocity': '50.0'}, 'analysis': {'t_end': '1.0e-3'}}),
+           scene('m_1g', 'm = 1 g', {'impactor': {'mass': '0.001'}, 'analysis': {'t_end': '1.0e-3'}}),
+           scene('m_20kg', 'm = 20 kg (10 ms)',
+                 {'impactor': {'mass': '20.0'}, 'analysis': {'t_end': '1.0e-2'}, 'output': {'every': '4'}})),
     # -- meshes
-    scene('mesh_1x1', 'mesh', 'quarter 1 x 1 (one element)', {'mesh': {'nx': '1', 'ny': '1'}}),
-    scene('mesh_72x48', 'mesh', "quarter 72 x 48 (the paper's 8 x 12 refined 6 times; 68640 equations), 10 steps",
-          {'mesh': {'nx': '72', 'ny': '48'}, 'analysis': {'t_end': '2.5e-5', 'scheme': "'fast'"}}),
-    scene('full_skyline', 'mesh', "full plate 18 x 12, skyline storage",
-          {'mesh': {'nx': '18', 'ny': '12', 'domain': "'full'"},
-           'analysis': {'storage': "'skyline'", 't_end': '1.0e-3'}}),
+    *group('mesh',
+           scene('mesh_1x1', 'quarter 1 x 1 (one element)', {'mesh': {'nx': '1', 'ny': '1'}}),
+           scene('mesh_72x48', "quarter 72 x 48 (the paper's 8 x 12 refined 6 times; 68640 equations), 10 steps",
+                 {'mesh': {'nx': '72', 'ny': '48'}, 'analysis': {'t_end': '2.5e-5', 'scheme': "'fast'"}}),
+           scene('full_skyline', "full plate 18 x 12, skyline storage",
+                 {'mesh': {'nx': '18', 'ny': '12', 'domain': "'full'"},
+                  'analysis': {'storage': "'skyline'", 't_end': '1.0e-3'}})),
     # -- plates
-    scene('thin_a_h_1000', 'plate', 'a/h = 1000 (h = 0.15 mm)', {'plate': {'h': '1.5e-4'}, 'analysis': {'t_end': '1.0e-3'}}),
-    scene('thick_a_h_5', 'plate', 'a/h = 5 (h = 30 mm)', {'plate': {'h': '0.03'}, 'analysis': {'t_end': '1.0e-3'}}),
-    scene('e1_e2_100', 'plate', 'E1/E2 = 100 (E2 = 1.2 GPa)', {'lamina': {'e2': '1.2e9'}}),
+    *group('plate',
+           scene('thin_a_h_1000', 'a/h = 1000 (h = 0.15 mm)', {'plate': {'h': '1.5e-4'}, 'analysis': {'t_end': '1.0e-3'}}),
+           scene('thick_a_h_5', 'a/h = 5 (h = 30 mm)', {'plate': {'h': '0.03'}, 'analysis': {'t_end': '1.0e-3'}}),
+           scene('e1_e2_100', 'E1/E2 = 100 (E2 = 1.2 GPa)', {'lamina': {'e2': '1.2e9'}})),
     # -- edges and theory
-    scene('free', 'edges, theory', 'free edges', {'boundary': {'edges': "'free'"}}),
-    scene('ss_immovable', 'edges, theory', 'simply supported, immovable in-plane',
-          {'boundary': {'edges': "'simply_supported'", 'inplane': "'immovable'"}}),
-    scene('ss_movable', 'edges, theory', 'simply supported, movable in-plane',
-          {'boundary': {'edges': "'simply_supported'", 'inplane': "'movable'"}}),
-    scene('linear', 'edges, theory', 'linear theory', {'analysis': {'theory': "'linear'"}}),
-    scene('fast', 'edges, theory', "scheme = 'fast'", {'analysis': {'scheme': "'fast'"}}),
+    *group('edges, theory',
+           scene('free', 'free edges', {'boundary': {'edges': "'free'"}}),
+           scene('ss_immovable', 'simply supported, immovable in-plane',
+                 {'boundary': {'edges': "'simply_supported'", 'inplane': "'immovable'"}}),
+           scene('ss_movable', 'simply supported, movable in-plane',
+                 {'boundary': {'edges': "'simply_supported'", 'inplane': "'movable'"}}),
+           scene('linear', 'linear theory', {'analysis': {'theory': "'linear'"}}),
+           scene('fast', "scheme = 'fast'", {'analysis': {'scheme': "'fast'"}})),
     # -- repeated contacts
-    scene('free_heavy_20kg', 'contacts', 'free plate, 20 kg impactor (10 ms)',
-          {'boundary': {'edges': "'free'"}, 'impactor': {'mass': '20.0'},
-           'analysis': {'t_end': '1.0e-2'}, 'output': {'every': '4'}}),
-    scene('free_light_20g', 'contacts', 'free plate, 20 g impactor, dt = 1 us (6 ms)',
-          {'boundary': {'edges': "'free'"}, 'impactor': {'mass': '0.02'},
-           'analysis': {'dt': '1.0e-6', 't_end': '6.0e-3'}, 'output': {'every': '4'}}),
-    scene('ss_100g', 'contacts', 'simply supported, 100 g impactor, dt = 1 us (6 ms)',
-          {'boundary': {'edges': "'simply_supported'"}, 'impactor': {'mass': '0.1'},
-           'analysis': {'dt': '1.0e-6', 't_end': '6.0e-3'}, 'output': {'every': '4'}}),
+    *group('contacts',
+           scene('free_heavy_20kg', 'free plate, 20 kg impactor (10 ms)',
+                 {'boundary': {'edges': "'free'"}, 'impactor': {'mass': '20.0'},
+                  'analysis': {'t_end': '1.0e-2'}, 'output': {'every': '4'}}),
+           scene('free_light_20g', 'free plate, 20 g impactor, dt = 1 us (6 ms)',
+                 {'boundary': {'edges': "'free'"}, 'impactor': {'mass': '0.02'},
+                  'analysis': {'dt': '1.0e-6', 't_end': '6.0e-3'}, 'output': {'every': '4'}}),
+           scene('ss_100g', 'simply supported, 100 g impactor, dt = 1 us (6 ms)',
+                 {'boundary': {'edges': "'simply_supported'"}, 'impactor': {'mass': '0.1'},
+                  'analysis': {'dt': '1.0e-6', 't_end': '6.0e-3'}, 'output': {'every': '4'}})),
     # -- the paper's Fig. 6(a): a 4 x 6 mesh and time steps from 10 us down
-    scene('fig6a_dt10us', 'Fig. 6(a)', '4 x 6, dt = 10 us', {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '1.0e-5'}}),
-    scene('fig6a_dt1us', 'Fig. 6(a)', '4 x 6, dt = 1 us', {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '1.0e-6'}}),
-    scene('fig6a_dt0.25us', 'Fig. 6(a)', '4 x 6, dt = 0.25 us',
-          {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '2.5e-7'}, 'output': {'every': '4'}}),
-    scene('fig6a_dt10us_fp', 'Fig. 6(a)', "4 x 6, dt = 10 us, force_update = 'fixed_point'",
-          {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '1.0e-5', 'force_update': "'fixed_point'"}}),
-    scene('fig6a_dt1us_fp', 'Fig. 6(a)', "4 x 6, dt = 1 us, force_update = 'fixed_point'",
-          {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '1.0e-6', 'force_update': "'fixed_point'"}}),
-    scene('fig6a_dt0.25us_fp', 'Fig. 6(a)', "4 x 6, dt = 0.25 us, force_update = 'fixed_point'",
-          {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '2.5e-7', 'force_update': "'fixed_point'"},
-           'output': {'every': '4'}}),
+    *group('Fig. 6(a)',
+           scene('fig6a_dt10us', '4 x 6, dt = 10 us', {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '1.0e-5'}}),
+           scene('fig6a_dt1us', '4 x 6, dt = 1 us', {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '1.0e-6'}}),
+           scene('fig6a_dt0.25us', '4 x 6, dt = 0.25 us',
+                 {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '2.5e-7'}, 'output': {'every': '4'}}),
+           scene('fig6a_dt10us_fp', "4 x 6, dt = 10 us, force_update = 'fixed_point'",
+                 {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '1.0e-5', 'force_update': "'fixed_point'"}}),
+           scene('fig6a_dt1us_fp', "4 x 6, dt = 1 us, force_update = 'fixed_point'",
+                 {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '1.0e-6', 'force_update': "'fixed_point'"}}),
+           scene('fig6a_dt0.25us_fp', "4 x 6, dt = 0.25 us, force_update = 'fixed_point'",
+                 {'mesh': {'nx': '6', 'ny': '4'}, 'analysis': {'dt': '2.5e-7', 'force_update': "'fixed_point'"},
+                  'output': {'every': '4'}})),
     # -- beyond: extremes combined, on purpose past what the model covers
-    scene('beyond_thin_50', 'beyond', 'a/h = 1000 at 50 m/s (w/h ~ 100)',
-          {'plate': {'h': '1.5e-4'}, 'impactor': {'velocity': '50.0'}, 'analysis': {'t_end': '1.0e-3'}}, beyond=True),
-    scene('beyond_thin_50_fast', 'beyond', "a/h = 1000 at 50 m/s, scheme = 'fast'",
-          {'plate': {'h': '1.5e-4'}, 'impactor': {'velocity': '50.0'},
-           'analysis': {'t_end': '1.0e-3', 'scheme': "'fast'"}}, beyond=True),
-    scene('beyond_dt20_v50', 'beyond', 'dt = 20 us at 50 m/s',
-          {'analysis': {'dt': '2.0e-5'}, 'impactor': {'velocity': '50.0'}}, beyond=True),
+    *group('beyond',
+           scene('beyond_thin_50', 'a/h = 1000 at 50 m/s (w/h ~ 100)',
+                 {'plate': {'h': '1.5e-4'}, 'impactor': {'velocity': '50.0'}, 'analysis': {'t_end': '1.0e-3'}}),
+           scene('beyond_thin_50_fast', "a/h = 1000 at 50 m/s, scheme = 'fast'",
+                 {'plate': {'h': '1.5e-4'}, 'impactor': {'velocity': '50.0'},
+                  'analysis': {'t_end': '1.0e-3', 'scheme': "'fast'"}}),
+           scene('beyond_dt20_v50', 'dt = 20 us at 50 m/s',
+                 {'analysis': {'dt': '2.0e-5'}, 'impactor': {'velocity': '50.0'}}), beyond=True),
 ]
 
 
