@@ -59,12 +59,17 @@ module run_recorder
 
    !> Kinds of warning, each given once (later ones are counted).
    integer, parameter :: warn_mixing = 1, warn_contact = 2, warn_deflection = 3, warn_unconverged = 4, &
-                         warn_energy = 5, warn_indentation = 6, warn_drift = 7, nwarn = 7
+                         warn_energy = 5, warn_indentation = 6, warn_drift = 7, warn_energy_lost = 8, nwarn = 8
    !> Energy the integration may create before it is warned, as a fraction
    !> of E0 (docs/STABILITY.md, "The energy bound"): the average acceleration
    !> rule conserves energy, so created energy is the time step's error in
    !> the contacts and the nonlinear terms, not rounding.
    real(dp), parameter :: energy_created_bound = 1.0e-3_dp
+   !> Energy the integration may lose before it is warned, as a fraction of
+   !> E0 (docs/STABILITY.md, "The energy bound"): the tolerances of eq. (17)
+   !> and (18) and the time step's error in the contacts take a little at
+   !> every step; more than this and the answer is no longer an impact's.
+   real(dp), parameter :: energy_lost_bound = 1.0e-2_dp
 
    !> What a run has recorded so far.
    type :: record_t
@@ -94,7 +99,8 @@ module run_recorder
       integer :: contact_fallback_steps = 0, warnings = 0, mixed_seen = 0, solves_before = 0
       logical :: in_contact = .false.
       real(dp) :: peak_force = 0, time_of_peak = 0, first_contact_start = -1, first_contact_end = -1
-      real(dp) :: max_deflection = 0, max_strain_y = 0, max_energy_error = 0, energy_created = 0, max_w_over_h = 0
+      real(dp) :: max_deflection = 0, max_strain_y = 0, max_energy_error = 0, energy_created = 0, energy_lost = 0
+      real(dp) :: max_w_over_h = 0
       real(dp) :: w_bend_max = 0, diverged_at = -1
       real(dp) :: c_plate = -1, c_impactor = 0, max_slope = 0
       logical :: warned(nwarn) = .false.
@@ -255,6 +261,7 @@ contains
          end if
          rec%max_energy_error = nan_max(rec%max_energy_error, abs(row(col_energy_error)))
          rec%energy_created = nan_max(rec%energy_created, -row(col_energy_error))
+         rec%energy_lost = nan_max(rec%energy_lost, row(col_energy_error))
          call write_row(rec, row, stat, errmsg)
          if (stat /= 0) return
          if (row(col_energy_error) < -rec%e0) call stop_here('diverged at step ' // int_str(step), &
@@ -294,6 +301,10 @@ contains
          // 'created ' // real_short(rec%energy_created/rec%e0) // ' E0 of energy (more than ' &
          // real_short(energy_created_bound) // ' E0): the time step is too long for this scene''s contacts; ' &
          // 'halve dt until max_energy_created_J settles (docs/STABILITY.md)')
+      if (rec%energy_lost > energy_lost_bound*rec%e0) call warn(warn_energy_lost, 'the integration has ' &
+         // 'lost ' // real_short(rec%energy_lost/rec%e0) // ' E0 of energy (more than ' &
+         // real_short(energy_lost_bound) // ' E0): the time step is too long for this scene''s contacts, ' &
+         // 'or C_r1, C_r2 too loose; halve dt until max_energy_lost_J settles (docs/STABILITY.md)')
       if (cit%alpha > rec%h) call warn(warn_indentation, 'the indentation (' // real_short(cit%alpha*1.0e3_dp) &
          // ' mm) exceeds the plate thickness (' // real_short(rec%h*1.0e3_dp) // ' mm): the impactor is ' &
          // 'going through the plate, beyond the contact law (eq. 11-12) and the plate theory')
@@ -400,6 +411,7 @@ contains
       call summary_real(s, 'initial_energy_J', 'initial_energy', 'J', rec%e0, 1.0_dp)
       call summary_real(s, 'max_energy_error_J', 'max_energy_error', 'J', rec%max_energy_error, 1.0_dp)
       call summary_real(s, 'max_energy_created_J', 'max_energy_created', 'J', rec%energy_created, 1.0_dp)
+      call summary_real(s, 'max_energy_lost_J', 'max_energy_lost', 'J', rec%energy_lost, 1.0_dp)
       call summary_integer(s, 'steps', rec%steps)
       call summary_integer(s, 'plate_solves', solver%solves + solver%response_solves)
       call summary_integer(s, 'response_solves', solver%response_solves)

@@ -233,14 +233,18 @@ def run_scene(sc, impact):
     else:
         r['problems'].append('exit status %s without the diagnostic of a step: %s'
                              % (status, (stderr.strip().splitlines() or [''])[-1][:200]))
-    if not (r['lost'] <= ENERGY_LOST):
-        r['problems'].append('energy lost %.3g E0 > %.3g E0' % (r['lost'], ENERGY_LOST))
-    # energy created beyond the bound is a problem unless the run said so itself
-    # (a warning, and max_energy_created_J in the summary: ./impact's own bound)
-    created_told = s.get('max_energy_created_J')
-    r['energy_warned'] = isinstance(created_told, float) and isinstance(e0, float) and e0 > 0 \
-        and created_told / e0 > ENERGY_CREATED
-    if not (r['created'] <= ENERGY_CREATED) and not r['energy_warned']:
+    # energy lost or created beyond the bound is a problem unless the run said
+    # so itself (a warning, and max_energy_lost_J / max_energy_created_J in
+    # the summary: ./impact's own bounds, the same as these)
+    def told(key, bound):
+        v = s.get(key)
+        return isinstance(v, float) and isinstance(e0, float) and e0 > 0 and v / e0 > bound
+    lost_warned = told('max_energy_lost_J', ENERGY_LOST)
+    created_warned = told('max_energy_created_J', ENERGY_CREATED)
+    r['energy_warned'] = lost_warned or created_warned
+    if not (r['lost'] <= ENERGY_LOST) and not lost_warned:
+        r['problems'].append('energy lost %.3g E0 > %.3g E0, not warned' % (r['lost'], ENERGY_LOST))
+    if not (r['created'] <= ENERGY_CREATED) and not created_warned:
         r['problems'].append('energy created %.3g E0 > %.3g E0, not warned' % (r['created'], ENERGY_CREATED))
     if status == 0 and r['energy_warned']:
         r['outcome'] = 'completed, energy warned'
