@@ -36,7 +36,6 @@
 !> such as an unrestrained rigid-body mode.
 module band_matrix
    use kinds, only: dp, msg_len
-   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use, intrinsic :: iso_fortran_env, only: int64
    implicit none
    private

@@ -68,7 +68,7 @@ contains
    !> plate did not react, w_plate staying at its value at t and the impactor
    !> moving on under the force of t alone; and its contact area.
    subroutine contact_start(cit, model, hist, imp, w_plate, dt, update)
-      type(contact_iteration_t), intent(out) :: cit  !< the step's iteration
+      type(contact_iteration_t), intent(inout) :: cit  !< the step's iteration (its pattern kept: a cache)
       type(model_t), intent(in) :: model             !< model (law, contact load)
       type(contact_history_t), intent(in) :: hist    !< committed contact history
       type(impactor_state_t), intent(in) :: imp      !< impactor at t
@@ -76,7 +76,12 @@ contains
       real(dp), intent(in) :: dt                     !< time step (s)
       character(len=*), intent(in) :: update         !< &analysis force_update
       real(dp) :: w_new, v_new
+      ! a fresh iteration but for the pattern, whose polynomials serve while the
+      ! contact radius stays in their interval (src/contact_load.f90)
       cit%update = update
+      cit%f_cont = 0.0_dp;  cit%alpha = 0.0_dp
+      cit%br = force_bracket_t()
+      cit%fell_back = .false.;  cit%cut = .false.
       call impactor_advance(model%impactor_mass, dt, imp%w, imp%v, imp%f, 0.0_dp, w_new, v_new)
       cit%f_assum = contact_force(model%law, hist, w_new - w_plate)
       call contact_area(model, hist, cit%f_assum, cit%pattern)

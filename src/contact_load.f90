@@ -54,11 +54,10 @@ module contact_load
    implicit none
    private
    public :: contact_load_t, load_pattern_t, contact_load_init, load_pattern, pattern_mean, &
-             pattern_add, pattern_load, load_point, load_hertz, load_kind_names
+             pattern_add, pattern_load, load_point, load_hertz
 
-   !> Kinds of load, by code, and their names in the deck (&contact load).
+   !> Kinds of load, by code (&contact load = 'point', 'hertz').
    integer, parameter :: load_point = 1, load_hertz = 2
-   character(len=5), parameter :: load_kind_names(2) = [character(len=5) :: 'point', 'hertz']
    !> Points of the disc quadrature (module header): radial, angular.
    integer, parameter :: n_radial = 8, n_angular = 48
 

@@ -59,7 +59,7 @@ module fast_scheme
    use contact_iteration, only: contact_iteration_t, contact_area
    use contact_law, only: contact_history_t, solve_contact_equation
    use contact_load, only: pattern_mean, load_point
-   use newmark, only: impactor_state_t
+   use newmark, only: impactor_state_t, impactor_advance, impactor_compliance
    use fixed_point, only: fp_start
    implicit none
    private
@@ -104,14 +104,14 @@ contains
       logical, intent(out) :: converged                !< eq. (18) met
       integer, intent(out) :: stat                     !< 0 unless the solver failed
       character(len=*), intent(inout) :: errmsg        !< reason on failure
-      integer, parameter :: max_passes = 50
-      real(dp), parameter :: pass_tol = 1.0e-12_dp
-      real(dp) :: rhs(size(d)), w_r0, compliance, f, f_new, alpha, d_first(size(d)), f_first, alpha_first
+      integer, parameter :: max_passes = 50             ! contact passes (Hertz's area) of one iteration
+      real(dp), parameter :: pass_tol = 1.0e-12_dp      ! relative change of the root that ends them
+      real(dp) :: rhs(size(d)), w_r0, v_r0, compliance, f, f_new, alpha, d_first(size(d)), f_first, alpha_first
       integer :: pass
       logical :: done, probing
 
-      ! impactor position at t+dt if the new force were zero
-      w_r0 = imp%w + imp%v*dt - imp%f*dt**2/(4.0_dp*model%impactor_mass)
+      ! impactor position at t+dt (m) if the new force were zero, eq. (21)
+      call impactor_advance(model%impactor_mass, dt, imp%w, imp%v, imp%f, 0.0_dp, w_r0, v_r0)
       converged = .false.
       solver%iterations = 0
       f = max(cit%f_assum, 0.0_dp)
@@ -129,7 +129,8 @@ contains
             call contact_area(model, hist, f, cit%pattern)
             call contact_response(solver, cit%pattern, stat, errmsg)
             if (stat /= 0) return
-            compliance = dt**2/(4.0_dp*model%impactor_mass) + pattern_compliance(solver, cit%pattern)
+            ! the compliance of the contact equation (m/N): impactor, eq. (21), and plate under the pattern
+            compliance = impactor_compliance(model%impactor_mass, dt) + pattern_compliance(solver, cit%pattern)
             call solve_contact_equation(model%law, hist, w_r0 - pattern_mean(cit%pattern, rhs), compliance, &
                                         f_new, alpha)
             done = abs(f_new - f) <= pass_tol*max(f_new, f) .or. model%cload%kind == load_point

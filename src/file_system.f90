@@ -36,7 +36,7 @@ module file_system
       type(c_ptr) :: stream = c_null_ptr
    end type file_probe_t
 
-   !> fseek's whence: from the end of the file (<stdio.h>).
+   !> lseek's whence SEEK_END: from the end of the file (<unistd.h>).
    integer(c_int), parameter :: seek_end = 2
    !> flock(2) operations (Linux, <sys/file.h>): exclusive, do not wait.
    integer(c_int), parameter :: lock_ex = 2, lock_nb = 4

@@ -26,22 +26,20 @@
 !> file (tools/h5export.f90, the tests) have the read half,
 !> tools/hdf5_read.f90, over the same messages (h5io_check, h5io_fail).
 module hdf5_io
-   use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_f_pointer, c_char, c_null_char, c_bool, c_int, c_int64_t
-   use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, h5fclose_f, &
-      h5fflush_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, H5F_SCOPE_GLOBAL_F, h5gcreate_f, h5gclose_f, &
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char, c_bool, c_int, c_int64_t
+   use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fclose_f, &
+      h5fflush_f, H5F_ACC_TRUNC_F, H5F_SCOPE_GLOBAL_F, h5gcreate_f, h5gclose_f, &
       h5screate_f, h5screate_simple_f, h5sclose_f, h5sselect_hyperslab_f, h5sget_simple_extent_dims_f, &
       H5S_SCALAR_F, H5S_UNLIMITED_F, H5S_SELECT_SET_F, &
-      h5acreate_by_name_f, h5aopen_by_name_f, h5awrite_f, h5aread_f, h5aclose_f, h5aexists_by_name_f, &
-      h5adelete_by_name_f, h5aget_type_f, h5aget_space_f, &
-      h5tcopy_f, h5tset_size_f, h5tget_size_f, h5tset_cset_f, h5tclose_f, h5tis_variable_str_f, &
+      h5acreate_by_name_f, h5awrite_f, h5aclose_f, h5aexists_by_name_f, h5adelete_by_name_f, &
+      h5tcopy_f, h5tset_size_f, h5tset_cset_f, h5tclose_f, &
       H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5T_FORTRAN_S1, H5T_CSET_UTF8_F, h5tset_strpad_f, &
       H5T_STR_NULLTERM_F, &
-      h5pcreate_f, h5pset_chunk_f, h5pset_virtual_f, h5pclose_f, H5P_DATASET_CREATE_F, H5P_DEFAULT_F, &
+      h5pcreate_f, h5pset_chunk_f, h5pset_virtual_f, h5pclose_f, H5P_DATASET_CREATE_F, &
       H5P_FILE_ACCESS_F, &
-      h5dcreate_f, h5dopen_f, h5dclose_f, h5dwrite_f, h5dset_extent_f, h5dget_space_f, h5dvlen_reclaim_f
-   use h5lt, only: h5ltmake_dataset_double_f, h5ltmake_dataset_int_f, h5ltread_dataset_double_f, &
-      h5ltread_dataset_int_f, h5ltget_dataset_ndims_f, h5ltget_dataset_info_f
-   use kinds, only: dp, msg_len
+      h5dcreate_f, h5dopen_f, h5dclose_f, h5dwrite_f, h5dset_extent_f, h5dget_space_f
+   use h5lt, only: h5ltmake_dataset_double_f, h5ltmake_dataset_int_f
+   use kinds, only: dp
    implicit none
    private
    public :: h5io_start, h5io_create, h5io_close, h5io_flush, h5io_group

@@ -23,9 +23,9 @@ module input_deck
    use system_limits, only: physical_memory, free_disk_space, file_size_limit
    use file_system, only: path_problem
    use deck_text, only: item_t, group_text_t, read_deck_text, lower_case
-   use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, find_var, var_key, &
+   use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, find_var, &
       strength_given, words_of, words_quoted, &
-      kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names, &
+      kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, &
       max_word_len, max_path_len, max_list_len
    implicit none
    private

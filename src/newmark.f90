@@ -19,7 +19,7 @@ module newmark
    implicit none
    private
    public :: newmark_t, plate_state_t, impactor_state_t, newmark_init, newmark_predictor, newmark_update, &
-             impactor_advance, impactor_moved
+             impactor_advance, impactor_moved, impactor_compliance
 
    !> The integration constants of a time step dt.
    type :: newmark_t
@@ -99,5 +99,14 @@ contains
       call impactor_advance(mass, dt, imp%w, imp%v, imp%f, f_new, imp_new%w, imp_new%v)
       imp_new%f = f_new
    end function impactor_moved
+
+   !> The impactor's compliance over a step, dt^2/(4 m) (m/N): by eq. (21) its
+   !> position at t+dt moves back by this much per newton of the force at t+dt.
+   pure function impactor_compliance(mass, dt) result(c)
+      real(dp), intent(in) :: mass     !< impactor mass (kg)
+      real(dp), intent(in) :: dt       !< time step (s)
+      real(dp) :: c
+      c = dt**2/(4.0_dp*mass)
+   end function impactor_compliance
 
 end module newmark

@@ -22,9 +22,8 @@ module plate_solver
    use fixed_point, only: fp_guard_t, fp_start, fp_check, fp_next, fp_report, fp_converged, fp_iterating
    implicit none
    private
-   public :: solver_t, solver_init, plate_solve, solve_once, iteration_end, contact_response, pattern_response, &
-             add_pattern_response, &
-             pattern_compliance
+   public :: solver_t, solver_init, plate_solve, solve_once, iteration_end, contact_response, &
+             add_pattern_response, pattern_compliance
 
    !> The plate solver of a run.
    type :: solver_t
@@ -193,18 +192,9 @@ contains
       end do equations
    end subroutine contact_response
 
-   !> g = (K_L + 4/dt^2 M)^-1 p for the contact pattern p, from the columns of
-   !> contact_response (which must have seen the pattern).
-   pure function pattern_response(solver, pattern) result(g)
-      type(solver_t), intent(in) :: solver          !< solver with the pattern's columns
-      type(load_pattern_t), intent(in) :: pattern   !< the contact pattern
-      real(dp) :: g(size(solver%resp, 1))
-      g = 0.0_dp
-      call add_pattern_response(solver, pattern, 1.0_dp, g)
-   end function pattern_response
-
    !> x = x + f g, g = (K_L + 4/dt^2 M)^-1 p the response to the contact
-   !> pattern p (pattern_response), without forming g.
+   !> pattern p, from the columns of contact_response (which must have seen
+   !> the pattern), without forming g.
    pure subroutine add_pattern_response(solver, pattern, f, x)
       type(solver_t), intent(in) :: solver          !< solver with the pattern's columns
       type(load_pattern_t), intent(in) :: pattern   !< the contact pattern

@@ -37,10 +37,10 @@
 !> shared, elements keep the counter-clockwise order. &output xdmf = 'none'
 !> writes neither the XML nor /xdmf.
 !>
-!> Cost: a view is an HDF5 object; making the five of a snapshot takes about
-!> 2 ms (HDF5 1.10, the file flushed after every history row), which is
-!> nothing at the default fields_every and doubles the time of a small run
-!> with a snapshot every step (README, "Looking at the fields").
+!> Cost: a view is an HDF5 object, made when its batch is flushed (once a
+!> second, src/results_hdf5.f90); the views are nothing at the default
+!> fields_every and the largest part of the output of a small run with a
+!> snapshot every step (README, "Looking at the fields").
 !>
 !> As the run goes: after a batch of snapshots the HDF5 file is flushed and
 !> the XML is written to <prefix>.xdmf.tmp and renamed over <prefix>.xdmf

@@ -37,7 +37,7 @@ module run_recorder
    use contact_iteration, only: contact_iteration_t, contact_area
    use contact_law, only: contact_history_t, contact_branch, law_tangent, branch_none
    use contact_load, only: load_pattern_t, pattern_mean
-   use newmark, only: plate_state_t, impactor_state_t
+   use newmark, only: plate_state_t, impactor_state_t, impactor_compliance
    use scene_model, only: theory_warning, bending_deflection
    use result_files, only: column_t, history_columns, nhist, summary_item_t, summary_real, summary_integer, &
       summary_text, open_columns, write_history_row, reserve_summary, write_summary_file, col_time, col_force, &
@@ -51,7 +51,7 @@ module run_recorder
    use signal_stop, only: stop_signal_caught
    implicit none
    private
-   public :: record_t, record_open, record_step, record_close, von_karman_limit
+   public :: record_t, record_open, record_step, record_close
 
    !> Deflection over thickness beyond which von Karman's theory of moderately
    !> large deflections is no longer trusted (a warning, not an error).
@@ -86,7 +86,7 @@ module run_recorder
       integer :: every = 1, fields_every = 1, nstep = 0
       logical :: stop_on_warning = .false.
       real(dp) :: dt = 0, mass = 0, h = 0
-      character(len=:), allocatable :: edges, scheme
+      character(len=:), allocatable :: edges
       ! -- energies (J)
       real(dp) :: e0 = 0, contact_work = 0, contact_energy = 0
       ! -- the previous step, for the work of the contact force
@@ -131,12 +131,12 @@ contains
       rec%nstep = nint(deck%t_end/deck%dt)
       rec%stop_on_warning = deck%stop_on_warning
       rec%dt = deck%dt;  rec%mass = deck%mass;  rec%h = deck%h
-      rec%edges = deck%edges;  rec%scheme = deck%scheme
+      rec%edges = deck%edges
       rec%e0 = 0.5_dp*deck%mass*deck%velocity**2
       rec%imp_prev = imp
       rec%d_prev = [(0.0_dp, c = 1, model%msh%neq)]
       call contact_area(model, fresh, 0.0_dp, rec%pattern_prev)
-      rec%c_impactor = deck%dt**2/(4.0_dp*deck%mass)
+      rec%c_impactor = impactor_compliance(deck%mass, deck%dt)
       if (deck%scheme == 'paper') then
          call contact_response(solver, rec%pattern_prev, stat, errmsg)
          if (stat /= 0) return

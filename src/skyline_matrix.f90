@@ -41,7 +41,6 @@
 module skyline_matrix
    use kinds, only: dp, msg_len
    use band_matrix, only: pivot_rel_tol
-   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use, intrinsic :: iso_fortran_env, only: int64
    implicit none
    private
