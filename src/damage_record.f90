@@ -55,11 +55,12 @@ module damage_record
       type(ply_stack_t) :: stack                    !< the laminate's through-thickness tables
       logical :: nonlinear = .false.                !< von Karman strains
       integer :: nply = 0, npoint = 0               !< plies; Gauss points (9 per element)
-      real(dp), allocatable :: d2(:,:,:,:)          !< (3, nen, ngp, nelem) second derivatives of the shape functions
+      real(dp), allocatable :: d2(:,:,:,:)          !< (3, nen, ngp, nelem) second derivatives of the shape functions (1/m^2)
       real(dp), allocatable :: fi_max(:,:)          !< (nply, npoint) largest index over the run
       integer, allocatable :: mode_max(:,:)         !< (nply, npoint) its mode
       real(dp), allocatable :: onset_time(:,:)      !< (nply, npoint) first time the index reached 1 (s), -1 never
       real(dp) :: smax(5) = 0.0_dp                  !< largest |s11|, |s22|, |t12|, |t23|, |t13| over the run (Pa)
+      ! -- failure indices (-), times (s), forces (N), displacements (m, rad)
       ! -- the step just evaluated
       real(dp) :: step_fi = 0.0_dp
       integer :: step_mode = mode_none

@@ -309,7 +309,7 @@ contains
          e1(:nb, :) = ux(:nb, :) + 0.5_dp*wx(:nb, :)**2
          e2(:nb, :) = vy(:nb, :) + 0.5_dp*wy(:nb, :)**2
          e3(:nb, :) = uy(:nb, :) + vx(:nb, :) + wx(:nb, :)*wy(:nb, :)
-         ! -- the membrane force of eps_nl, A eps_nl, and the whole N = A eps0 + B kappa, times w j
+         ! -- the membrane force of eps_nl, A eps_nl, and the whole N = A eps0 + B kappa (eq. 2, 4), times w j
          k1(:nb, :) = 0.5_dp*wx(:nb, :)**2;  k2(:nb, :) = 0.5_dp*wy(:nb, :)**2;  k3(:nb, :) = wx(:nb, :)*wy(:nb, :)
          a1(:nb, :) = wj(:nb, :)*(a(1,1)*k1(:nb, :) + a(1,2)*k2(:nb, :) + a(1,3)*k3(:nb, :))
          a2(:nb, :) = wj(:nb, :)*(a(2,1)*k1(:nb, :) + a(2,2)*k2(:nb, :) + a(2,3)*k3(:nb, :))
@@ -381,7 +381,7 @@ contains
             e3(:nb, :) = e3(:nb, :) + wx(:nb, :)*wy(:nb, :)
          end if
          k1(:nb, :) = px_x(:nb, :);  k2(:nb, :) = py_y(:nb, :);  k3(:nb, :) = px_y(:nb, :) + py_x(:nb, :)
-         ! eps0 A eps0 + 2 eps0 B kappa + kappa D kappa, at every Gauss point
+         ! eps0 A eps0 + 2 eps0 B kappa + kappa D kappa (von Karman eps0, eq. 2; A, B, D of eq. 4), at every Gauss point
          dens(:nb, :) = quad(a, e1, e2, e3, e1, e2, e3) + 2.0_dp*quad(b, e1, e2, e3, k1, k2, k3) &
                         + quad(dd, k1, k2, k3, k1, k2, k3)
          u = u + 0.5_dp*sum(w%wj(e0:e0+nb-1, :)*dens(:nb, :))

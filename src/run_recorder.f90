@@ -25,7 +25,10 @@
 !> that; and the balance, E0 less the four, which measures what the
 !> integration lost (+) or created (-). A run whose balance goes below -E0
 !> (it created more energy than the impact brought) has diverged and stops;
-!> so does one whose state is not finite.
+!> so does one whose state is not finite. The energies are computed on the
+!> history rows only (every &output every steps: a strain energy and an
+!> M x each), so with every > 1 the summary's energy maxima, the energy
+!> warnings and the divergence stop see those rows.
 module run_recorder
    use, intrinsic :: iso_fortran_env, only: error_unit, int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -85,7 +88,7 @@ module run_recorder
       integer :: ncol = nhist                    !< history columns of the run (history_width)
       integer :: every = 1, fields_every = 1, nstep = 0
       logical :: stop_on_warning = .false.
-      real(dp) :: dt = 0, mass = 0, h = 0
+      real(dp) :: dt = 0, mass = 0, h = 0        !< time step (s), impactor mass (kg), plate thickness (m)
       character(len=:), allocatable :: edges
       ! -- energies (J)
       real(dp) :: e0 = 0, contact_work = 0, contact_energy = 0
@@ -98,10 +101,13 @@ module run_recorder
       integer :: unconverged_steps = 0, first_unconverged = 0, nonlinear_fallback_steps = 0
       integer :: contact_fallback_steps = 0, warnings = 0, mixed_seen = 0, solves_before = 0
       logical :: in_contact = .false.
+      ! forces (N), times (s), deflections (m), strain (-), energies (J), w/h (-)
       real(dp) :: peak_force = 0, time_of_peak = 0, first_contact_start = -1, first_contact_end = -1
       real(dp) :: max_deflection = 0, max_strain_y = 0, max_energy_error = 0, energy_created = 0, energy_lost = 0
       real(dp) :: max_w_over_h = 0
       real(dp) :: w_bend_max = 0, diverged_at = -1
+      ! compliances under the impactor over a step (m/N; c_plate -1: not measured), and the largest
+      ! slope (c_plate + c_impactor) dF/d alpha of the paper's fixed-point force update (-)
       real(dp) :: c_plate = -1, c_impactor = 0, max_slope = 0
       logical :: warned(nwarn) = .false.
    end type record_t
