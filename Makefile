@@ -18,13 +18,29 @@ FSTD    := -std=f2008 -Wall -fimplicit-none -ffpe-summary=none
 LAPACK  ?= -llapack -lblas
 FC_ALL   = $(FC) $(FSTD) $(FFLAGS) -J$(BUILD) -I$(BUILD)
 
-# Every src/*.f90 but the main program is a module, named after its file;
-# tools/fortran-deps writes the dependencies between them from their `use`
-# statements into $(BUILD)/deps.mk.
+# src/ holds the main program and the modules in folders by concern, from
+# the bottom of the `use` graph to its top (a folder uses only those before
+# it in this list; tools/fortran-deps stops the build otherwise):
+#   system    kinds of numbers and their text; the C library, files, limits,
+#             signals, the exit status, the build's version
+#   linalg    Gauss rules; band and skyline storage and their factorizations
+#   deck      the input deck: schema, reader, checks, echo, command line
+#   model     the paper's plate and contact: laminate, elements, mesh, scene,
+#             indentation law and load, the assembled model
+#   strength  ply stresses and failure criteria
+#   scheme    the paper's time-step scheme: Newmark, the plate's nonlinear
+#             solution, the contact iteration, the one-call 'fast' step
+#   results   result files, HDF5 and XDMF, the run's recorder and reports
+#   analyses  the static, modal and pressure analyses of the same model
+# Every file but the main program is one module named after the file; the
+# objects are flat in $(BUILD); tools/fortran-deps writes the dependencies
+# between them from their `use` statements into $(BUILD)/deps.mk.
+SRC_FOLDERS := system linalg deck model strength scheme results analyses
 MAIN    := src/impact.f90
-SOURCES := $(filter-out $(MAIN),$(sort $(wildcard src/*.f90)))
-OBJS    := $(patsubst src/%.f90,$(BUILD)/%.o,$(SOURCES))
+SOURCES := $(foreach d,$(SRC_FOLDERS),$(sort $(wildcard src/$(d)/*.f90)))
+OBJS    := $(patsubst %.f90,$(BUILD)/%.o,$(notdir $(SOURCES)))
 LIB     := $(BUILD)/libimpact.a
+vpath %.f90 $(addprefix src/,$(SRC_FOLDERS))
 
 # The validation's oracles (exact and independent solutions: Navier,
 # Hertz, the rigid target, ...) are not part of the solver: they live in
@@ -41,7 +57,7 @@ all: impact
 $(BUILD):
 	@mkdir -p $(BUILD)
 
-$(BUILD)/%.o: src/%.f90 | $(BUILD)
+$(OBJS): $(BUILD)/%.o: %.f90 | $(BUILD)
 	$(FC_ALL) -c $< -o $@
 
 # The element work of a time step is written for the vectoriser, which GCC
@@ -50,7 +66,7 @@ $(BUILD)/%.o: src/%.f90 | $(BUILD)
 $(BUILD)/element_work.o: private FC_ALL += -fvect-cost-model=dynamic
 
 $(BUILD)/deps.mk: $(SOURCES) tools/fortran-deps | $(BUILD)
-	@python3 tools/fortran-deps $(BUILD) $(SOURCES) > $@.tmp && mv $@.tmp $@
+	@python3 tools/fortran-deps $(BUILD) '$(SRC_FOLDERS)' $(SOURCES) > $@.tmp && mv $@.tmp $@
 -include $(BUILD)/deps.mk
 
 $(LIB): $(OBJS)
@@ -96,7 +112,7 @@ include tests/tests.mk
 # Further targets (figures, validation, benchmarks, ...) live in mk/*.mk.
 -include $(sort $(wildcard mk/*.mk))
 
-# The README's deck table, from the schema of src/deck_schema.f90 (between
+# The README's deck table, from the schema of src/deck/deck_schema.f90 (between
 # the markers <!-- deck:begin --> and <!-- deck:end -->).
 .PHONY: deck-table
 deck-table: impact

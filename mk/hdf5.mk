@@ -1,5 +1,5 @@
-# HDF5-Fortran for the results file <prefix>.h5 (src/hdf5_io.f90,
-# src/results_hdf5.f90), the exporter build/h5export and the shape picture.
+# HDF5-Fortran for the results file <prefix>.h5 (src/results/hdf5_io.f90,
+# src/results/results_hdf5.f90), the exporter build/h5export and the shape picture.
 #
 #   make shape [SHAPE_PREFIX=out/clamped]
 #                     the deflected shape at the peak force: build/h5export

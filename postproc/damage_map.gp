@@ -1,6 +1,6 @@
 # damage_map.gp: the damage map of a run with &strength, ply by ply: the
 # largest failure index of each ply at each Gauss point over the run
-# (/strength/damage_map of <prefix>.h5, src/damage_record.f90), one panel
+# (/strength/damage_map of <prefix>.h5, src/results/damage_record.f90), one panel
 # per ply, the impacted face's ply first; points at 1 and above have failed.
 #
 #   gnuplot -e "prefix='out/paper/strength/converged_fig10_clamped_nonlinear'" postproc/damage_map.gp

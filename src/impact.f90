@@ -106,7 +106,7 @@ program impact
    if (stat /= 0) call fail_in_run(errmsg, 'failed while opening the results')
 
    ! =====================================================================
-   ! Time integration (SIGTERM, SIGINT: stop after the step, src/signal_stop.f90)
+   ! Time integration (SIGTERM, SIGINT: stop after the step, src/system/signal_stop.f90)
    ! =====================================================================
    call catch_stop_signals()
    time_steps: do step = 1, nstep
@@ -174,7 +174,7 @@ program impact
 
 contains
 
-   !> The command line, the deck and its settings (src/command_line.f90);
+   !> The command line, the deck and its settings (src/deck/command_line.f90);
    !> an impact run claims its result files before any work.
    subroutine read_input()
       type(options_t) :: opts

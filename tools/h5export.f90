@@ -14,7 +14,7 @@
 !>                   model is mirrored about x = 0 and y = 0 into the whole
 !>                   plate (w, v, psi_y are even in x; u, psi_x odd; w, u,
 !>                   psi_x even in y; v, psi_y odd: the quarter model's
-!>                   symmetry, src/mesh.f90)
+!>                   symmetry, src/model/mesh.f90)
 !>
 !> Output: '#' lines naming the file, the snapshot (step, time, force) and
 !> the columns with their units, then x_mm y_mm <field>_mm (or _rad for the

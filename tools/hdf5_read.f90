@@ -1,4 +1,4 @@
-!> The read half of the checked HDF5 wrappers (src/hdf5_io.f90 has the
+!> The read half of the checked HDF5 wrappers (src/results/hdf5_io.f90 has the
 !> write half the program uses): what the tools that read a results file
 !> <prefix>.h5 need, tools/h5export.f90 and the tests. Every routine
 !> returns stat (0 on success) and a message naming the object.

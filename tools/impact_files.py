@@ -7,10 +7,10 @@ validation/model_choice/run.py, validation/mesh_study/run.py):
   decks       parse_deck, split_assignments, set_value, deck_text,
               fortran_value, with_settings (a deck is a list of [group,
               [[name, value], ...]], values as written; the program's own
-              reader is src/input_deck.f90)
+              reader is src/deck/input_deck.f90)
   schema      schema(impact): the deck's variables, their kind, unit,
               default, range and meaning, from `impact --schema`
-              (src/deck_schema.f90, the one list)
+              (src/deck/deck_schema.f90, the one list)
   summaries   read_keys, summary_number ('key = value' lines after the
               '#' echo; 'none' is NaN, 'true'/'false' are 1/0)
   columns     read_columns, read_history (column files: the names on the

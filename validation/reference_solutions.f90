@@ -8,7 +8,7 @@
 !>    J. N. Reddy, Mechanics of Laminated Composite Plates and Shells,
 !>    2nd ed., CRC Press 2004, section 7.3 (Navier solutions of cross-ply
 !>    plates, FSDT). Plate 0 <= x <= a, 0 <= y <= b, the "hard" simple
-!>    support w = psi_s = 0 of src/mesh.f90. With alpha = m pi/a,
+!>    support w = psi_s = 0 of src/model/mesh.f90. With alpha = m pi/a,
 !>    beta = n pi/b and
 !>        w     = sum W_mn sin(alpha x) sin(beta y)
 !>        psi_x = sum X_mn cos(alpha x) sin(beta y)
@@ -95,7 +95,7 @@
 !>        tau_yz(z) = -int zeta (Qbar66 kappa_xy,x + Qbar12 kappa_x,y + Qbar22 kappa_y,y) dzeta,
 !>    (Reddy 2004, section 7.3.3, the same recovery); it vanishes on both
 !>    faces, since N = 0. Written out here with its own rotation into the
-!>    ply axes, independent of src/ply_stress.f90.
+!>    ply axes, independent of src/strength/ply_stress.f90.
 !>
 !> 6. The isotropic plate under the same load, Kirchhoff's resultants
 !>    (Timoshenko & Woinowsky-Krieger, Art. 28): with

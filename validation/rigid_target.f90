@@ -5,7 +5,7 @@
 !> average-acceleration update (eq. 16, 21; newmark), the indentation law
 !> with its history (eq. 11-13; contact_law), and the contact-force
 !> iteration of a time step, eq. (17), with the same first guess and the
-!> same bracketed update (src/contact_iteration.f90). Its closed form is Hertz's
+!> same bracketed update (src/scheme/contact_iteration.f90). Its closed form is Hertz's
 !> (reference_solutions, hertz_impact).
 !>
 !> The run starts at first touch (alpha = 0, speed v0 towards the target)

@@ -1065,7 +1065,7 @@ contains
 
    ! ================================================================ check 9
 
-   !> The element's transverse shear (src/shear_strain.f90): the paper's 2x2
+   !> The element's transverse shear (src/model/shear_strain.f90): the paper's 2x2
    !> rule, full 3x3, the stabilized blend and MITC9 on (a) the growth of the
    !> static compliance under a point force per mesh halving, against the
    !> log rate of Mindlin's theory itself, ln 2 / (2 pi sqrt(Abar44 Abar55));
@@ -1247,7 +1247,7 @@ contains
 
    ! =============================================================== check 11
 
-   !> Ply stresses (src/ply_stress.f90) of a linear static solution at every
+   !> Ply stresses (src/strength/ply_stress.f90) of a linear static solution at every
    !> 3 x 3 Gauss point and ply face, against (a) the Navier solution of the
    !> simply supported cross-ply [0/90/90/0] under the sinusoidal load, a/h =
    !> 10 (reference_solutions item 5: exact in-plane stresses, transverse
@@ -1350,7 +1350,7 @@ contains
       call fe_static(deck, res)
       deck%analysis_kind = 'static'
       call model_of(deck, model)
-      ! the stresses of src/ply_stress.f90 through the run's record (strengths only so it is active)
+      ! the stresses of src/strength/ply_stress.f90 through the run's record (strengths only so it is active)
       deck%xt = 1.0_dp;  deck%xc = 1.0_dp;  deck%yt = 1.0_dp;  deck%yc = 1.0_dp;  deck%s12 = 1.0_dp
       deck%s23 = 1.0_dp
       call damage_open(dmg, deck, model)

@@ -114,7 +114,7 @@ def main():
     w('## 1. Shear correction factors by Whitney\'s method')
     w('')
     w('The paper\'s layup [0/45/0/-45/0]2s and lamina (Table 3), k4 and k5 not given')
-    w('(src/shear_correction.f90: cylindrical bending stress, the shear stress from')
+    w('(src/model/shear_correction.f90: cylindrical bending stress, the shear stress from')
     w('equilibrium, energy equivalence with the ply\'s shear compliance):')
     w('')
     w('| factor | Whitney, k | k squared | Table 1 | difference of k |')

@@ -1,0 +1,114 @@
+!> The command line of `impact` (impact --help prints it):
+!>
+!>   impact [options] [deck.nml]       no deck: the deck is read from standard input
+!>     --check               read, echo, build and factor; no time steps (a data check)
+!>     --overwrite           replace an earlier run's results (as &output overwrite = .true.)
+!>     --set group.var=value a deck variable, set after the deck is read and checked
+!>                           like it (repeatable)
+!>     --trace STEP[,STEP]   the teaching trace of those steps (src/results/step_trace.f90)
+!>     --schema, --deck-table, --version, --help
+!>
+!> Options may stand before or after the deck (impact deck.nml --check is
+!> a data check); one deck only: a second one, an unknown option or a
+!> missing value is an error (the caller prints the usage line).
+module command_line
+   use input_deck, only: deck_t, read_deck, read_deck_file, set_variable
+   implicit none
+   private
+   public :: options_t, parse_command_line, read_input_deck
+
+   !> What the command line asks for.
+   type :: options_t
+      character(len=16) :: action = 'run'          !< 'run', 'help', 'version', 'schema' or 'deck-table'
+      character(len=:), allocatable :: deck_path   !< the deck, '' for standard input
+      character(len=8192), allocatable :: settings(:)   !< the --set values, in order
+      character(len=:), allocatable :: trace       !< the --trace steps, '' for none
+      logical :: check = .false.                   !< --check
+      logical :: overwrite = .false.               !< --overwrite
+   end type options_t
+
+contains
+
+   !> The options of the command line; stat /= 0 and errmsg on a wrong one.
+   subroutine parse_command_line(opts, stat, errmsg)
+      type(options_t), intent(out) :: opts          !< the options
+      integer, intent(out) :: stat                  !< 0, or 1 for a wrong command line
+      character(len=*), intent(inout) :: errmsg     !< what is wrong
+      character(len=:), allocatable :: arg
+      integer :: i, n
+      allocate (opts%settings(0))
+      opts%deck_path = '';  opts%trace = ''
+      stat = 1
+      n = command_argument_count()
+      i = 0
+      options: do while (i < n)
+         i = i + 1
+         arg = argument(i)
+         select case (arg)
+         case ('--help', '-h')
+            opts%action = 'help'
+         case ('--version', '--schema', '--deck-table')
+            opts%action = arg(3:)
+         case ('--check')
+            opts%check = .true.
+         case ('--overwrite')
+            opts%overwrite = .true.
+         case ('--set', '--trace')
+            if (i == n) then
+               errmsg = arg // ' needs a value'
+               return
+            end if
+            i = i + 1
+            if (arg == '--set') then
+               opts%settings = [opts%settings, argument(i)]
+            else
+               opts%trace = argument(i)
+            end if
+         case default
+            if (arg(1:min(1, len(arg))) == '-' .and. len(arg) > 1) then
+               errmsg = 'unknown option ' // arg
+               return
+            end if
+            if (len(opts%deck_path) > 0) then
+               errmsg = 'one deck only: ''' // arg // ''' follows the deck ' // opts%deck_path
+               return
+            end if
+            opts%deck_path = arg
+         end select
+      end do options
+      stat = 0
+   end subroutine parse_command_line
+
+   !> The deck the options name (a file, or standard input), the --set
+   !> values over it, and --overwrite; every value checked.
+   subroutine read_input_deck(opts, unit, deck, stat, errmsg)
+      type(options_t), intent(in) :: opts           !< the options
+      integer, intent(in) :: unit                   !< standard input's unit
+      type(deck_t), intent(out) :: deck             !< the deck
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< the one-line message on failure
+      integer :: i
+      if (len(opts%deck_path) > 0) then
+         call read_deck_file(opts%deck_path, deck, stat, errmsg)
+      else
+         call read_deck(unit, '<stdin>', deck, stat, errmsg)
+      end if
+      if (stat /= 0) return
+      do i = 1, size(opts%settings)
+         call set_variable(deck, trim(opts%settings(i)), stat, errmsg)
+         if (stat /= 0) return
+      end do
+      if (opts%overwrite) deck%overwrite = .true.
+   end subroutine read_input_deck
+
+   !> Command-line argument i, whole.
+   function argument(i) result(arg)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: arg
+      integer :: n
+      call get_command_argument(i, length=n)
+      allocate (character(len=n) :: arg)
+      if (n > 0) call get_command_argument(i, arg)
+   end function argument
+
+end module command_line

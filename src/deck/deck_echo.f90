@@ -1,0 +1,157 @@
+!> The deck as people read it, from the one schema (src/deck/deck_schema.f90):
+!> the echo of a run's effective values (terminal, the head of every result
+!> file, /deck of <prefix>.h5), the README's deck table (make deck-table,
+!> impact --deck-table) and the tab-separated schema (impact --schema, read
+!> by tools/impact_files.py).
+module deck_echo
+   use number_text, only: real_str, int_str, list_str
+   use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, strength_given, &
+      words_quoted, kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names
+   implicit none
+   private
+   public :: echo_deck, write_deck_table, write_schema
+
+   !> Width of the echo's lines (the group column included), and of its group column.
+   integer, parameter :: echo_width = 100, group_column = 11
+
+contains
+
+   !> True when the group concerns a deck of this analysis kind (the echo
+   !> leaves the others out: &load only for static and pressure analyses,
+   !> &modes only for modes, &contact only for the impact, &strength only
+   !> when its strengths are given).
+   pure logical function group_applies(group, deck)
+      character(len=*), intent(in) :: group
+      type(deck_t), intent(in) :: deck
+      select case (trim(group))
+      case ('strength'); group_applies = strength_given(deck)
+      case default;      group_applies = group_applies_kind(group, deck%analysis_kind)
+      end select
+   end function group_applies
+
+   pure logical function group_applies_kind(group, analysis_kind)
+      character(len=*), intent(in) :: group, analysis_kind
+      select case (trim(group))
+      case ('contact');  group_applies_kind = analysis_kind == 'impact'
+      case ('load');     group_applies_kind = analysis_kind == 'static' .or. analysis_kind == 'pressure'
+      case ('modes');    group_applies_kind = analysis_kind == 'modes'
+      case default;      group_applies_kind = .true.
+      end select
+   end function group_applies_kind
+
+   !> The value of entry iv as a deck would give it ('0.15', "'clamped'",
+   !> '.true.', '0, 45, ...'), or '(not given)'.
+   function deck_value_text(deck, iv) result(text)
+      type(deck_t), intent(in) :: deck
+      integer, intent(in) :: iv
+      character(len=:), allocatable :: text
+      type(deck_t) :: copy
+      type(value_t) :: v
+      copy = deck
+      call deck_bind(copy, iv, v, .false.)
+      select case (deck_vars(iv)%kind)
+      case (kind_real)
+         text = real_str(v%r)
+         if (.not. v%given) text = '(not given)'
+      case (kind_integer)
+         text = int_str(v%i)
+      case (kind_logical)
+         text = trim(merge('.true. ', '.false.', v%l))
+      case (kind_word, kind_path)
+         text = "'" // v%s // "'"
+      case (kind_reals)
+         text = list_str(v%list, huge(1))
+      end select
+   end function deck_value_text
+
+   !> Writes the effective values of `deck`, group by group, each line
+   !> starting with `lead` ('# ' in the output files, '' on the terminal),
+   !> 'name = value unit', the reals with the fewest digits that read back to
+   !> the same double. Groups the analysis does not use are left out.
+   subroutine echo_deck(deck, unit, lead)
+      type(deck_t), intent(in) :: deck              !< the deck to echo
+      integer, intent(in) :: unit                   !< open formatted unit
+      character(len=*), intent(in) :: lead          !< text that starts every line
+      character(len=:), allocatable :: line, piece
+      character(len=group_column) :: column
+      integer :: ig, iv
+      write (unit, '(a)') lead // 'deck       source = ''' // deck%source // ''''
+      if (allocated(deck%settings)) then
+         if (len(deck%settings) > 0) write (unit, '(a)') lead // 'deck       command line: ' // deck%settings
+      end if
+      groups_loop: do ig = 1, size(deck_groups)
+         if (.not. group_applies(deck_groups(ig), deck)) cycle groups_loop
+         column = '&' // deck_groups(ig)
+         line = ''
+         vars: do iv = 1, size(deck_vars)
+            if (deck_vars(iv)%group /= deck_groups(ig)) cycle vars
+            piece = trim(deck_vars(iv)%name) // ' = ' // deck_value_text(deck, iv)
+            if (trim(deck_vars(iv)%unit) /= '-') piece = piece // ' ' // trim(deck_vars(iv)%unit)
+            if (len(line) > 0 .and. group_column + len(line) + 2 + len(piece) > echo_width) then
+               write (unit, '(a)') lead // column // line // ','
+               column = ''
+               line = ''
+            end if
+            if (len(line) > 0) line = line // ', '
+            line = line // piece
+         end do vars
+         write (unit, '(a)') lead // column // line
+      end do groups_loop
+   end subroutine echo_deck
+
+   !> The README's deck table (Markdown): group, variable, unit, default,
+   !> meaning, from the schema (make deck-table).
+   subroutine write_deck_table(unit)
+      integer, intent(in) :: unit
+      integer :: iv
+      character(len=:), allocatable :: group, meaning
+      type(deck_var_t) :: e
+      write (unit, '(a)') '| group | variable | unit | default | meaning |'
+      write (unit, '(a)') '|---|---|---|---|---|'
+      do iv = 1, size(deck_vars)
+         e = deck_vars(iv)
+         group = ''
+         if (iv == 1) then
+         group = '`&' // trim(e%group) // '`'
+         else if (deck_vars(iv - 1)%group /= e%group) then
+         group = '`&' // trim(e%group) // '`'
+         end if
+         meaning = trim(e%meaning)
+         if (e%kind == kind_word) meaning = meaning // ' (' // words_quoted(e%range) // ')'
+         if ((e%kind == kind_real .or. e%kind == kind_integer) .and. trim(e%range) /= '(-inf, inf)') &
+         meaning = meaning // '; in ' // trim(e%range)
+         write (unit, '(a)') '| ' // group // ' | `' // trim(e%name) // '` | ' // trim(e%unit) // ' | ' &
+         // default_text(e) // ' | ' // meaning // ' |'
+      end do
+   contains
+      function default_text(e) result(text)
+         type(deck_var_t), intent(in) :: e
+         character(len=:), allocatable :: text
+         if (len_trim(e%default) == 0) then
+         text = 'not given'
+         else if (e%kind == kind_word .or. e%kind == kind_path) then
+         text = "`'" // trim(e%default) // "'`"
+         else
+         text = '`' // trim(e%default) // '`'
+         end if
+      end function default_text
+   end subroutine write_deck_table
+
+   !> The schema as tab-separated lines, one per variable: group, name,
+   !> kind, unit, default, range (impact --schema; tools/impact_files.py).
+   subroutine write_schema(unit)
+      integer, intent(in) :: unit
+      integer :: iv
+      type(deck_var_t) :: e
+      character, parameter :: tab = achar(9)
+      write (unit, '(a)') '# group' // tab // 'name' // tab // 'kind' // tab // 'unit' // tab // 'default' &
+         // tab // 'range' // tab // 'meaning'
+      do iv = 1, size(deck_vars)
+         e = deck_vars(iv)
+         write (unit, '(a)') trim(e%group) // tab // trim(e%name) // tab // trim(kind_names(e%kind)) // tab &
+            // trim(e%unit) // tab // trim(e%default) // tab // trim(e%range) // tab // trim(e%meaning)
+      end do
+   end subroutine write_schema
+
+
+end module deck_echo

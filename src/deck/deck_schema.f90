@@ -1,0 +1,420 @@
+!> The deck's variables, declared once: the schema.
+!>
+!> Every variable of every namelist group has one entry in `deck_vars`
+!> below: its group, name, kind, unit, default, admissible values and
+!> meaning. Everything else is derived from that table: the reader (names,
+!> kinds, defaults), the range checks and their messages, the echo, the
+!> `/deck` attributes of `<prefix>.h5`, `impact --schema` (what tools/sweep
+!> reads) and the deck table of the README (`make deck-table`; a test keeps
+!> the two in step). The values themselves live in `deck_t`, one component
+!> per variable, where the program reads them; `deck_bind` connects each
+!> entry to its component.
+!>
+!> Adding a variable: its entry in deck_vars, its component in deck_t and
+!> its line in deck_bind (all in this file), and any check that relates it
+!> to other variables in validate_deck (src/deck/input_deck.f90).
+!>
+!> The `range` of an entry: for numbers an interval, '(0, inf)', '[1, 3]',
+!> ... (round brackets exclude the bound), checked on every value, with
+!> non-finite values refused; for words the admissible words, 'a | b | c';
+!> for texts (kind_path) the empty range (any text without control
+!> characters); for logicals none. A default '' means "not given": the
+!> variable is optional and the program decides (k4, k5: Whitney's method;
+!> the strengths of &strength: without them no ply stresses and no failure
+!> criterion are computed, strength_given).
+module deck_schema
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
+   use kinds, only: dp
+   implicit none
+   private
+   public :: deck_var_t, deck_t, value_t, deck_vars, deck_groups, deck_bind, find_var, var_key, strength_given
+   public :: kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names
+   public :: max_word_len, max_path_len, max_list_len, words_of, words_quoted
+
+   !> Kinds of variable.
+   integer, parameter :: kind_real = 1, kind_integer = 2, kind_logical = 3, kind_word = 4, &
+                         kind_path = 5, kind_reals = 6
+   character(len=8), parameter :: kind_names(6) = [character(len=8) :: 'real', 'integer', 'logical', &
+      'word', 'text', 'reals']
+   !> Longest word value (a keyword), longest text value (a path), most
+   !> values of a list (plies).
+   integer, parameter :: max_word_len = 32, max_path_len = 4096, max_list_len = 1000
+
+   !> One variable of the deck.
+   type :: deck_var_t
+      character(len=8) :: group        !< namelist group, without '&'
+      character(len=18) :: name        !< variable
+      integer :: kind                  !< kind_real, ...
+      character(len=10) :: unit        !< SI unit, '-' for none
+      character(len=72) :: default     !< as written in a deck; '' = not given (optional)
+      character(len=56) :: range       !< admissible values (module header)
+      character(len=240) :: meaning    !< what it is, one sentence
+   end type deck_var_t
+
+   !> The namelist groups, in the order of the echo and the README table.
+   character(len=8), parameter :: deck_groups(12) = [character(len=8) :: 'plate', 'lamina', 'laminate', &
+      'strength', 'impactor', 'contact', 'mesh', 'boundary', 'analysis', 'load', 'modes', 'output']
+
+   !> THE LIST. Paper's values as defaults where the paper gives one (Choi,
+   !> Hong & Lee 1991: section 2.4, Tables 1-3); SI units.
+   type(deck_var_t), parameter :: deck_vars(*) = [ &
+      deck_var_t('plate', 'a', kind_real, 'm', '0.15', '[1e-3, 100]', 'plate length along x'), &
+      deck_var_t('plate', 'b', kind_real, 'm', '0.10', '[1e-3, 100]', 'plate width along y'), &
+      deck_var_t('plate', 'h', kind_real, 'm', '0.0027', '[1e-6, 1]', 'plate thickness'), &
+      deck_var_t('lamina', 'e1', kind_real, 'Pa', '120e9', '[1e5, 1e18]', &
+         'Young''s modulus along the fibres (Table 3)'), &
+      deck_var_t('lamina', 'e2', kind_real, 'Pa', '7.9e9', '[1e5, 1e18]', 'Young''s modulus across the fibres'), &
+      deck_var_t('lamina', 'g12', kind_real, 'Pa', '5.5e9', '[1e5, 1e18]', 'in-plane shear modulus'), &
+      deck_var_t('lamina', 'g13', kind_real, 'Pa', '5.5e9', '[1e5, 1e18]', 'transverse shear modulus, 1-3 plane'), &
+      deck_var_t('lamina', 'g23', kind_real, 'Pa', '2.63e9', '[1e5, 1e18]', 'transverse shear modulus, 2-3 plane'), &
+      deck_var_t('lamina', 'nu12', kind_real, '-', '0.30', '(0, 10]', 'major Poisson ratio'), &
+      deck_var_t('lamina', 'rho', kind_real, 'kg/m^3', '1580', '[1, 1e5]', 'density'), &
+      deck_var_t('laminate', 'angles', kind_reals, 'deg', &
+         '0, 45, 0, -45, 0, 0, 45, 0, -45, 0, 0, -45, 0, 45, 0, 0, -45, 0, 45, 0', '', &
+         'ply angles from x, listed from z = -h/2 (the impacted face) to +h/2, all plies h/n thick ' &
+         // '(the default: the paper''s [0/45/0/-45/0]2s)'), &
+      deck_var_t('laminate', 'k4', kind_real, '-', '', '(0, 1.2]', 'shear correction factor of Abar44 = k4^2 ' &
+         // 'int Qbar44 dz (eq. 6, Table 1); not given: Whitney''s method from the layup'), &
+      deck_var_t('laminate', 'k5', kind_real, '-', '', '(0, 1.2]', 'shear correction factor of Abar55 = k5^2 ' &
+         // 'int Qbar55 dz; not given: Whitney''s method'), &
+      deck_var_t('laminate', 'bend_twist', kind_word, '-', 'auto', 'auto | drop | keep', 'D16, D26: ''auto'' ' &
+         // '(dropped on a quarter, half or strip, section 3.1), ''drop'' (everywhere), ''keep'' (full plate only)'), &
+      deck_var_t('strength', 'xt', kind_real, 'Pa', '', '[1e3, 1e11]', 'ply tensile strength along the fibres; ' &
+         // 'the paper gives no strengths: with all six given, ply stresses and failure indices are computed'), &
+      deck_var_t('strength', 'xc', kind_real, 'Pa', '', '[1e3, 1e11]', &
+         'ply compressive strength along the fibres (a magnitude)'), &
+      deck_var_t('strength', 'yt', kind_real, 'Pa', '', '[1e3, 1e11]', 'ply tensile strength across the fibres'), &
+      deck_var_t('strength', 'yc', kind_real, 'Pa', '', '[1e3, 1e11]', &
+         'ply compressive strength across the fibres (a magnitude)'), &
+      deck_var_t('strength', 's12', kind_real, 'Pa', '', '[1e3, 1e11]', &
+         'ply in-plane shear strength (also of tau_13)'), &
+      deck_var_t('strength', 's23', kind_real, 'Pa', '', '[1e3, 1e11]', 'ply transverse shear strength'), &
+      deck_var_t('strength', 'criterion', kind_word, '-', 'hashin', 'hashin | max_stress | tsai_wu', &
+         'failure criterion of the plies: ''hashin'' (Hashin 1980), ''max_stress'' or ''tsai_wu'' ' &
+         // '(Tsai & Wu 1971)'), &
+      deck_var_t('impactor', 'mass', kind_real, 'kg', '0.243', '[1e-6, 1e4]', 'impactor mass'), &
+      deck_var_t('impactor', 'velocity', kind_real, 'm/s', '3.0', '(0, 1e3]', 'impact velocity, towards the plate'), &
+      deck_var_t('impactor', 'diameter', kind_real, 'm', '0.0127', '[1e-5, 10]', &
+         'diameter of the hemispherical nose (the law''s k belongs to it)'), &
+      deck_var_t('impactor', 'x0', kind_real, 'm', '0', '(-inf, inf)', 'impact point along x, from the plate centre'), &
+      deck_var_t('impactor', 'y0', kind_real, 'm', '0', '(-inf, inf)', 'impact point along y, from the plate centre'), &
+      deck_var_t('contact', 'k', kind_real, 'N/m^1.5', '1.413e9', '[1e3, 1e15]', &
+         'contact stiffness, F = k alpha^1.5 (eq. 11, Table 2)'), &
+      deck_var_t('contact', 'q', kind_real, '-', '2.5', '(0, 10]', 'unloading exponent'), &
+      deck_var_t('contact', 'alpha_p', kind_real, 'm', '1.667e-5', '[0, 1e-2]', &
+         'critical indentation, beyond which it is permanent'), &
+      deck_var_t('contact', 'beta', kind_real, '-', '0.094', '[0, 1)', &
+         'permanent indentation alpha0 = beta (alpha_m - alpha_p) (eq. 12)'), &
+      deck_var_t('contact', 'load', kind_word, '-', 'hertz', 'hertz | point', 'how the force enters the plate: ' &
+         // '''hertz'' (Hertz''s pressure over the contact disc a = sqrt(R alpha)) or ''point'' (eq. 10)'), &
+      deck_var_t('mesh', 'nx', kind_integer, '-', '9', '[1, 10000]', 'elements along x of the domain (with domain ' &
+         // '''auto'': of the quarter, doubled across each centre line the domain spans)'), &
+      deck_var_t('mesh', 'ny', kind_integer, '-', '6', '[1, 10000]', 'elements along y, likewise'), &
+      deck_var_t('mesh', 'domain', kind_word, '-', 'auto', 'auto | quarter | half | full | strip', &
+         '''auto'' (the smallest domain the scene allows), ''quarter'', ''half'', ''full'' or ''strip'''), &
+      deck_var_t('mesh', 'average_bend_twist', kind_logical, '-', '.false.', '', &
+         '.true.: the paper''s averaging (section 3.1) is accepted, D16 = D26 = 0 on a quarter or half'), &
+      deck_var_t('mesh', 'grading', kind_real, '-', '1', '[1, 3]', &
+         'ratio of successive element sizes away from the impact point (1: uniform)'), &
+      deck_var_t('mesh', 'shear_rule', kind_word, '-', 'auto', 'auto | mitc9 | selective | stabilized | full', &
+         'transverse shear of the element: ''mitc9'', ''selective'' (the paper''s 2x2 rule), ''stabilized'', ' &
+         // '''full'' (3x3) or ''auto'' (mitc9)'), &
+      deck_var_t('mesh', 'stabilization', kind_real, '-', '0.01', '(0, 1]', &
+         'fraction of 3x3 shear in ''stabilized'''), &
+      deck_var_t('boundary', 'edges', kind_word, '-', 'clamped', 'free | simply_supported | clamped', &
+         'edge condition of all four edges'), &
+      deck_var_t('boundary', 'inplane', kind_word, '-', 'immovable', 'immovable | movable', &
+         'in-plane condition of simply supported edges'), &
+      deck_var_t('analysis', 'kind', kind_word, '-', 'impact', 'impact | static | modes | pressure', &
+         'the analysis: ''impact'' (the paper''s), ''static'', ''modes'' or ''pressure'' (&load held from t = 0)'), &
+      deck_var_t('analysis', 'theory', kind_word, '-', 'nonlinear', 'linear | nonlinear | auto', &
+         '''linear'', ''nonlinear'' (von Karman) or ''auto'' (from the scene''s deflection estimate)'), &
+      deck_var_t('analysis', 'dt', kind_real, 's', '2.5e-6', '[1e-10, 1e-2]', 'time step'), &
+      deck_var_t('analysis', 't_end', kind_real, 's', '3.0e-3', '(0, 10]', 'end time'), &
+      deck_var_t('analysis', 'cr1', kind_real, '-', '2.0e-3', '(0, 1)', &
+         'contact-force tolerance C_r1, eq. (17)'), &
+      deck_var_t('analysis', 'cr2', kind_real, '-', '1.0e-7', '(0, 1)', &
+         'nonlinear-iteration tolerance C_r2, eq. (18)'), &
+      deck_var_t('analysis', 'scheme', kind_word, '-', 'fast', 'fast | paper', &
+         '''fast'': the contact force solved inside each eq. (19) iteration, about one solve per step; ' &
+         // '''paper'': the flowchart''s nested iterations (Fig. 3)'), &
+      deck_var_t('analysis', 'storage', kind_word, '-', 'band', 'band | skyline', &
+         '''band'' (LAPACK dpbtrf/dpbtrs) or ''skyline'' (the code''s own LDL^T)'), &
+      deck_var_t('analysis', 'max_contact_iter', kind_integer, '-', '50', '[1, 10000]', &
+         'contact iterations per step, at most'), &
+      deck_var_t('analysis', 'max_nonlinear_iter', kind_integer, '-', '200', '[1, 100000]', &
+         'eq. (19) iterations per plate solution, at most'), &
+      deck_var_t('analysis', 'force_update', kind_word, '-', 'bracketed', 'bracketed | fixed_point | plain', &
+         'update of the assumed contact force (scheme ''paper''): ''bracketed'' (regula falsi), ''fixed_point''' &
+         // ' (F <- F_cont, falls back to bracketed) or ''plain'' (F <- F_cont, no fall-back)'), &
+      deck_var_t('analysis', 'stop_on_warning', kind_logical, '-', '.false.', '', &
+         'stop the run at the first warning instead of going on'), &
+      deck_var_t('load', 'kind', kind_word, '-', 'uniform', 'uniform | sinusoidal | central_force', &
+         'load of the static and pressure analyses: ''uniform'', ''sinusoidal'' (the single Navier term) or ' &
+         // '''central_force'''), &
+      deck_var_t('load', 'magnitude', kind_real, 'Pa or N', '1000', '(0, 1e12]', &
+         'q0, or the central force'), &
+      deck_var_t('load', 'increments', kind_integer, '-', '10', '[1, 100000]', &
+         'load increments of a von Karman static analysis'), &
+      deck_var_t('modes', 'count', kind_integer, '-', '6', '[1, 1000]', 'natural modes computed'), &
+      deck_var_t('modes', 'shapes', kind_logical, '-', '.true.', '', 'also the mode shapes'), &
+      deck_var_t('output', 'prefix', kind_path, '-', 'out/impact', '', &
+         'path prefix of the result files; its directory is created'), &
+      deck_var_t('output', 'every', kind_integer, '-', '1', '[1, inf)', 'write every N-th step to the history'), &
+      deck_var_t('output', 'overwrite', kind_logical, '-', '.false.', '', &
+         'replace the results of an earlier run with the same prefix (else the run is refused)'), &
+      deck_var_t('output', 'hdf5', kind_logical, '-', '.true.', '', 'also write the full results to <prefix>.h5'), &
+      deck_var_t('output', 'xdmf', kind_word, '-', 'modelled', 'modelled | whole | none', '<prefix>.xdmf beside ' &
+         // '<prefix>.h5, for ParaView: ''modelled'' (the domain of &mesh), ''whole'' (a quarter or half mirrored ' &
+         // 'into the whole plate; its fields then also stored in <prefix>.h5) or ''none'' (no XDMF file)'), &
+      deck_var_t('output', 'fields_every', kind_integer, '-', '40', '[1, inf)', &
+         'field snapshots in <prefix>.h5 every N-th step') ]
+
+   !> Everything the deck sets, as the program reads it (SI units). The
+   !> defaults are deck_vars' (default_deck in src/deck/input_deck.f90).
+   type :: deck_t
+      character(len=:), allocatable :: source       !< file the deck came from, or '<stdin>'
+      character(len=:), allocatable :: settings     !< the command line's --set settings over it, '' for none
+      ! &plate
+      real(dp) :: a = 0, b = 0, h = 0
+      ! &lamina
+      real(dp) :: e1 = 0, e2 = 0, g12 = 0, g13 = 0, g23 = 0, nu12 = 0, rho = 0
+      ! &laminate
+      real(dp), allocatable :: angles(:)
+      real(dp) :: k4 = 0, k5 = 0                    !< NaN: not given (Whitney's method; a deck cannot give NaN)
+      character(len=:), allocatable :: bend_twist
+      ! &strength (NaN: not given, as k4, k5)
+      real(dp) :: xt = 0, xc = 0, yt = 0, yc = 0, s12 = 0, s23 = 0
+      character(len=:), allocatable :: criterion
+      ! &impactor
+      real(dp) :: mass = 0, velocity = 0, diameter = 0, x0 = 0, y0 = 0
+      ! &contact
+      real(dp) :: k = 0, q = 0, alpha_p = 0, beta = 0
+      character(len=:), allocatable :: contact_load
+      ! &mesh
+      integer :: nx = 0, ny = 0
+      character(len=:), allocatable :: domain, shear_rule
+      logical :: average_bend_twist = .false.
+      real(dp) :: grading = 0, stabilization = 0
+      ! &boundary
+      character(len=:), allocatable :: edges, inplane
+      ! &analysis
+      character(len=:), allocatable :: analysis_kind, theory, scheme, storage, force_update
+      real(dp) :: dt = 0, t_end = 0, cr1 = 0, cr2 = 0
+      integer :: max_contact_iter = 0, max_nonlinear_iter = 0
+      logical :: stop_on_warning = .false.
+      ! &load
+      character(len=:), allocatable :: load_kind
+      real(dp) :: load_magnitude = 0
+      integer :: load_increments = 0
+      ! &modes
+      integer :: mode_count = 0
+      logical :: mode_shapes = .false.
+      ! &output
+      character(len=:), allocatable :: prefix
+      integer :: every = 0, fields_every = 0
+      logical :: overwrite = .false., hdf5 = .false.
+      character(len=:), allocatable :: xdmf
+      !> which variables the deck (or --set) gave, by entry of deck_vars
+      logical :: given(size(deck_vars)) = .false.
+   end type deck_t
+
+   !> One value on its way in or out of a deck_t (deck_bind).
+   type :: value_t
+      real(dp) :: r = 0                              !< kind_real
+      integer :: i = 0                               !< kind_integer
+      logical :: l = .false.                         !< kind_logical
+      character(len=:), allocatable :: s            !< kind_word, kind_path
+      real(dp), allocatable :: list(:)               !< kind_reals
+      logical :: given = .true.                      !< an optional variable has a value
+   end type value_t
+
+contains
+
+   !> 'group.name' of entry iv.
+   pure function var_key(iv) result(key)
+      integer, intent(in) :: iv
+      character(len=:), allocatable :: key
+      key = trim(deck_vars(iv)%group) // '.' // trim(deck_vars(iv)%name)
+   end function var_key
+
+   !> The entry of group.name, 0 when there is none.
+   pure function find_var(group, name) result(iv)
+      character(len=*), intent(in) :: group, name   !< lower case
+      integer :: iv
+      do iv = 1, size(deck_vars)
+         if (deck_vars(iv)%group == group .and. deck_vars(iv)%name == name) return
+      end do
+      iv = 0
+   end function find_var
+
+   !> True when the deck gives the six strengths of &strength: the ply
+   !> stresses and the failure criterion are then computed (src/results/damage_record.f90).
+   pure logical function strength_given(deck)
+      type(deck_t), intent(in) :: deck   !< the deck
+      strength_given = .not. any(ieee_is_nan([deck%xt, deck%xc, deck%yt, deck%yc, deck%s12, deck%s23]))
+   end function strength_given
+
+   !> Moves the value of entry iv between v and the deck's component: into
+   !> the deck when set is true, out of it otherwise.
+   subroutine deck_bind(deck, iv, v, set)
+      type(deck_t), intent(inout) :: deck   !< the deck
+      integer, intent(in) :: iv             !< entry of deck_vars
+      type(value_t), intent(inout) :: v     !< the value
+      logical, intent(in) :: set            !< direction: v -> deck
+      if (.not. set) v = value_t()
+      select case (var_key(iv))
+      case ('plate.a');                    call scalar_value(r=deck%a)
+      case ('plate.b');                    call scalar_value(r=deck%b)
+      case ('plate.h');                    call scalar_value(r=deck%h)
+      case ('lamina.e1');                  call scalar_value(r=deck%e1)
+      case ('lamina.e2');                  call scalar_value(r=deck%e2)
+      case ('lamina.g12');                 call scalar_value(r=deck%g12)
+      case ('lamina.g13');                 call scalar_value(r=deck%g13)
+      case ('lamina.g23');                 call scalar_value(r=deck%g23)
+      case ('lamina.nu12');                call scalar_value(r=deck%nu12)
+      case ('lamina.rho');                 call scalar_value(r=deck%rho)
+      case ('laminate.angles');            call list_value(deck%angles)
+      case ('laminate.k4');                call optional_value(deck%k4)
+      case ('laminate.k5');                call optional_value(deck%k5)
+      case ('laminate.bend_twist');        call text_value(deck%bend_twist)
+      case ('strength.xt');                call optional_value(deck%xt)
+      case ('strength.xc');                call optional_value(deck%xc)
+      case ('strength.yt');                call optional_value(deck%yt)
+      case ('strength.yc');                call optional_value(deck%yc)
+      case ('strength.s12');               call optional_value(deck%s12)
+      case ('strength.s23');               call optional_value(deck%s23)
+      case ('strength.criterion');         call text_value(deck%criterion)
+      case ('impactor.mass');              call scalar_value(r=deck%mass)
+      case ('impactor.velocity');          call scalar_value(r=deck%velocity)
+      case ('impactor.diameter');          call scalar_value(r=deck%diameter)
+      case ('impactor.x0');                call scalar_value(r=deck%x0)
+      case ('impactor.y0');                call scalar_value(r=deck%y0)
+      case ('contact.k');                  call scalar_value(r=deck%k)
+      case ('contact.q');                  call scalar_value(r=deck%q)
+      case ('contact.alpha_p');            call scalar_value(r=deck%alpha_p)
+      case ('contact.beta');               call scalar_value(r=deck%beta)
+      case ('contact.load');               call text_value(deck%contact_load)
+      case ('mesh.nx');                    call scalar_value(i=deck%nx)
+      case ('mesh.ny');                    call scalar_value(i=deck%ny)
+      case ('mesh.domain');                call text_value(deck%domain)
+      case ('mesh.average_bend_twist');    call scalar_value(l=deck%average_bend_twist)
+      case ('mesh.grading');               call scalar_value(r=deck%grading)
+      case ('mesh.shear_rule');            call text_value(deck%shear_rule)
+      case ('mesh.stabilization');         call scalar_value(r=deck%stabilization)
+      case ('boundary.edges');             call text_value(deck%edges)
+      case ('boundary.inplane');           call text_value(deck%inplane)
+      case ('analysis.kind');              call text_value(deck%analysis_kind)
+      case ('analysis.theory');            call text_value(deck%theory)
+      case ('analysis.dt');                call scalar_value(r=deck%dt)
+      case ('analysis.t_end');             call scalar_value(r=deck%t_end)
+      case ('analysis.cr1');               call scalar_value(r=deck%cr1)
+      case ('analysis.cr2');               call scalar_value(r=deck%cr2)
+      case ('analysis.scheme');            call text_value(deck%scheme)
+      case ('analysis.storage');           call text_value(deck%storage)
+      case ('analysis.max_contact_iter');  call scalar_value(i=deck%max_contact_iter)
+      case ('analysis.max_nonlinear_iter'); call scalar_value(i=deck%max_nonlinear_iter)
+      case ('analysis.force_update');      call text_value(deck%force_update)
+      case ('analysis.stop_on_warning');   call scalar_value(l=deck%stop_on_warning)
+      case ('load.kind');                  call text_value(deck%load_kind)
+      case ('load.magnitude');             call scalar_value(r=deck%load_magnitude)
+      case ('load.increments');            call scalar_value(i=deck%load_increments)
+      case ('modes.count');                call scalar_value(i=deck%mode_count)
+      case ('modes.shapes');               call scalar_value(l=deck%mode_shapes)
+      case ('output.prefix');              call text_value(deck%prefix)
+      case ('output.every');               call scalar_value(i=deck%every)
+      case ('output.overwrite');           call scalar_value(l=deck%overwrite)
+      case ('output.hdf5');                call scalar_value(l=deck%hdf5)
+      case ('output.xdmf');                call text_value(deck%xdmf)
+      case ('output.fields_every');        call scalar_value(i=deck%fields_every)
+      end select
+
+   contains
+
+      !> A real, integer or logical: the one of r, i, l given.
+      subroutine scalar_value(r, i, l)
+         real(dp), intent(inout), optional :: r
+         integer, intent(inout), optional :: i
+         logical, intent(inout), optional :: l
+         if (set) then
+            if (present(r)) r = v%r
+            if (present(i)) i = v%i
+            if (present(l)) l = v%l
+         else
+            if (present(r)) v%r = r
+            if (present(i)) v%i = i
+            if (present(l)) v%l = l
+         end if
+      end subroutine scalar_value
+
+      subroutine optional_value(x)
+         real(dp), intent(inout) :: x
+         if (set) then
+            x = v%r
+            if (.not. v%given) x = ieee_value(x, ieee_quiet_nan)
+         else
+            v%r = x;  v%given = .not. ieee_is_nan(x)
+         end if
+      end subroutine optional_value
+
+      subroutine text_value(s)
+         character(len=:), allocatable, intent(inout) :: s
+         if (set) then
+            s = v%s
+         else
+            if (allocated(s)) then
+               v%s = s
+            else
+               v%s = ''
+            end if
+         end if
+      end subroutine text_value
+
+      subroutine list_value(x)
+         real(dp), allocatable, intent(inout) :: x(:)
+         if (set) then
+            x = v%list
+         else
+            if (allocated(x)) then
+               v%list = x
+            else
+               allocate (v%list(0))
+            end if
+         end if
+      end subroutine list_value
+
+   end subroutine deck_bind
+
+   !> The words of a range 'a | b | c' as 'a b c'.
+   pure function words_of(range) result(words)
+      character(len=*), intent(in) :: range
+      character(len=:), allocatable :: words
+      integer :: i
+      words = trim(range)
+      do i = 1, len(words)
+         if (words(i:i) == '|') words(i:i) = ' '
+      end do
+   end function words_of
+
+
+   !> The words of a range as "'a', 'b', 'c'".
+   pure function words_quoted(range) result(text)
+      character(len=*), intent(in) :: range
+      character(len=:), allocatable :: text, rest
+      integer :: bar
+      text = ''
+      rest = trim(range)
+      do
+         bar = index(rest, '|')
+         if (len(text) > 0) text = text // ', '
+         if (bar == 0) then
+            text = text // "'" // trim(adjustl(rest)) // "'"
+            exit
+         end if
+         text = text // "'" // trim(adjustl(rest(:bar - 1))) // "'"
+         rest = rest(bar + 1:)
+      end do
+   end function words_quoted
+
+
+end module deck_schema

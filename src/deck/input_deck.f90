@@ -1,0 +1,679 @@
+!> The input deck: a namelist file, read from standard input or a path,
+!> checked against the schema of src/deck/deck_schema.f90 (every variable, its
+!> kind, unit, default and admissible values) and then as a whole.
+!>
+!> Usage: `./impact < input/clamped.nml` or `./impact input/clamped.nml`.
+!> SI units. One group per concern; a group that is absent, and a variable
+!> that is absent from its group, keep the default; names and keywords are
+!> case-insensitive (keywords are stored in lower case).
+!>
+!> Nothing in a deck is silently dropped, merged or cut: an empty deck, a
+!> group or a variable given twice, a name the schema does not know, text
+!> outside the groups, a value of the wrong kind, a list where one value is
+!> expected, a word or path longer than its variable holds, each stops the
+!> reading with one message
+!>     <deck>: &group: variable = value: what is wrong
+!> (<deck>: line N: what, for text outside any group), and so does every
+!> value outside its admissible range (the schema's `range`) and every
+!> combination the program cannot run (validate_deck).
+module input_deck
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+   use kinds, only: dp, msg_len
+   use number_text, only: real_str, real_short, int_str, list_str
+   use system_limits, only: physical_memory, free_disk_space, file_size_limit
+   use file_system, only: path_problem
+   use deck_text, only: item_t, group_text_t, read_deck_text, lower_case
+   use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, find_var, &
+      strength_given, words_of, words_quoted, &
+      kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, &
+      max_word_len, max_path_len, max_list_len
+   implicit none
+   private
+   public :: deck_t, default_deck, read_deck, read_deck_file, validate_deck, set_variable
+
+   !> Status returned on any failure.
+   integer, parameter :: failed = 1
+   !> Longest value text quoted in a message before it is cut short.
+   integer, parameter :: max_quoted = 60
+   !> Smallest contact-force tolerance C_r1: 100 eps, the rounding of the force.
+   real(dp), parameter :: min_cr1 = 100.0_dp*epsilon(1.0_dp)
+   !> Bytes in a GiB, for the messages of the size checks.
+   real(dp), parameter :: mib = 1024.0_dp**2, gib = 1024.0_dp**3
+
+contains
+
+   ! ================================================================ reading
+
+   !> The deck of the schema's defaults (the paper's values), source '<defaults>'.
+   function default_deck() result(deck)
+      type(deck_t) :: deck
+      type(value_t) :: v
+      character(len=:), allocatable :: what
+      integer :: iv, stat
+      deck%source = '<defaults>'
+      deck%settings = ''
+      do iv = 1, size(deck_vars)
+         if (len_trim(deck_vars(iv)%default) == 0) then
+            v = value_t(given=.false.)
+         else
+            call convert(iv, split_items(deck_vars(iv)%default), v, stat, what)
+            if (stat /= 0) cycle     ! never: a test reads every default (tests/test_input_deck.pf)
+         end if
+         call deck_bind(deck, iv, v, .true.)
+      end do
+   end function default_deck
+
+   !> Reads a deck from `unit`, an open formatted sequential unit (standard
+   !> input is fine: it is read once, to its end), and checks it
+   !> (validate_deck). On failure stat /= 0 and errmsg is the one-line
+   !> message of the module header; deck is then incomplete.
+   subroutine read_deck(unit, source, deck, stat, errmsg)
+      integer, intent(in) :: unit                   !< unit to read from
+      character(len=*), intent(in) :: source        !< the deck's name in messages: its path, or '<stdin>'
+      type(deck_t), intent(out) :: deck             !< defaults overridden by the deck
+      integer, intent(out) :: stat                  !< 0 when the deck was read and is valid
+      character(len=*), intent(inout) :: errmsg     !< the message on failure
+      type(group_text_t), allocatable :: groups(:)
+      character(len=:), allocatable :: what
+      integer :: line, ig, jg, ia, ja, iv
+      type(value_t) :: v
+
+      deck = default_deck()
+      deck%source = source
+      call read_deck_text(unit, groups, stat, line, what)
+      if (stat /= 0) then
+         if (line > 0) then
+            errmsg = source // ': line ' // int_str(line) // ': ' // what
+         else
+            errmsg = source // ': ' // what
+         end if
+         return
+      end if
+      if (size(groups) == 0) then
+         stat = failed
+         errmsg = source // ': the deck has no namelist group: an empty deck would run the default scene ' &
+            // '(give at least one group, e.g. &analysis kind = ''impact'' /)'
+         return
+      end if
+      groups_loop: do ig = 1, size(groups)
+         associate (g => groups(ig))
+            if (.not. any(deck_groups == g%name)) then
+               call fail('&' // g%name // ': unknown namelist group (the groups are ' // group_list() // ')')
+               return
+            end if
+            do jg = 1, ig - 1
+               if (groups(jg)%name == g%name) then
+                  call fail('&' // g%name // ': the group is given twice (lines ' // int_str(groups(jg)%line) &
+                     // ' and ' // int_str(g%line) // '); give each group once')
+                  return
+               end if
+            end do
+            assignments: do ia = 1, size(g%assignments)
+               associate (a => g%assignments(ia))
+                  iv = find_var(g%name, a%name)
+                  if (iv == 0) then
+                     call fail('&' // g%name // ': ' // a%name // ': unknown variable (the variables of &' &
+                        // g%name // ' are ' // variable_list(g%name) // ')')
+                     return
+                  end if
+                  do ja = 1, ia - 1
+                     if (g%assignments(ja)%name == a%name) then
+                        call fail('&' // g%name // ': ' // a%name // ' = ' // items_text(a%items) &
+                           // ': given twice in the group (lines ' // int_str(g%assignments(ja)%line) // ' and ' &
+                           // int_str(a%line) // '); give each variable once')
+                        return
+                     end if
+                  end do
+                  call convert(iv, a%items, v, stat, what)
+                  if (stat /= 0) then
+                     call fail('&' // g%name // ': ' // a%name // ' = ' // items_text(a%items) // ': ' // what)
+                     return
+                  end if
+                  call deck_bind(deck, iv, v, .true.)
+                  deck%given(iv) = .true.
+               end associate
+            end do assignments
+         end associate
+      end do groups_loop
+      call validate_deck(deck, stat, errmsg)
+
+   contains
+
+      subroutine fail(message)
+         character(len=*), intent(in) :: message
+         stat = failed
+         errmsg = source // ': ' // message
+      end subroutine fail
+
+   end subroutine read_deck
+
+   !> Opens the deck file `path`, reads it with read_deck and closes it. A
+   !> directory or an unreadable file is refused with the same kind of
+   !> message.
+   subroutine read_deck_file(path, deck, stat, errmsg)
+      character(len=*), intent(in) :: path          !< the deck's path
+      type(deck_t), intent(out) :: deck             !< the deck read
+      integer, intent(out) :: stat                  !< 0 when the deck was read and is valid
+      character(len=*), intent(inout) :: errmsg     !< the message on failure
+      integer :: unit, ios
+      character(len=msg_len) :: msg
+      logical :: exists
+      inquire (file=path // '/.', exist=exists)
+      if (exists) then
+         stat = failed
+         errmsg = path // ': is a directory, not a deck file'
+         return
+      end if
+      open (newunit=unit, file=path, status='old', action='read', form='formatted', &
+         access='sequential', iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         stat = failed
+         errmsg = path // ': cannot open the deck: ' // trim(msg)
+         return
+      end if
+      call read_deck(unit, path, deck, stat, errmsg)
+      close (unit, iostat=ios)
+   end subroutine read_deck_file
+
+   !> Sets one variable from its text, as a deck line would, and checks the
+   !> whole deck again: `impact --set group.var=value`. The text may be a
+   !> list ('0, 90, 90, 0'); a word need not be quoted.
+   subroutine set_variable(deck, setting, stat, errmsg)
+      type(deck_t), intent(inout) :: deck           !< the deck, changed
+      character(len=*), intent(in) :: setting       !< 'group.var=value'
+      integer, intent(out) :: stat                  !< 0 when the setting and the deck are valid
+      character(len=*), intent(inout) :: errmsg     !< the message on failure
+      character(len=:), allocatable :: what, key, group, name, text
+      integer :: eq, dot, iv
+      type(value_t) :: v
+      stat = failed
+      eq = index(setting, '=')
+      key = lower_case(adjustl(setting(:max(eq - 1, 0))))
+      dot = index(key, '.')
+      if (eq == 0 .or. dot < 2) then
+         errmsg = '--set ' // setting // ': give group.variable=value (e.g. --set analysis.dt=1e-6)'
+         return
+      end if
+      group = trim(key(:dot - 1));  name = trim(key(dot + 1:))
+      text = trim(adjustl(setting(eq + 1:)))
+      iv = find_var(group, name)
+      if (iv == 0) then
+         if (any(deck_groups == group)) then
+            errmsg = '--set: &' // group // ': ' // name // ': unknown variable (the variables of &' // group &
+               // ' are ' // variable_list(group) // ')'
+         else
+            errmsg = '--set: &' // group // ': unknown namelist group (the groups are ' // group_list() // ')'
+         end if
+         return
+      end if
+      if (len(text) == 0) then
+         errmsg = '--set: &' // group // ': ' // name // ' = (nothing): give a value'
+         return
+      end if
+      call convert(iv, split_items(text), v, stat, what)
+      if (stat /= 0) then
+         errmsg = '--set: &' // group // ': ' // name // ' = ' // quoted_cut(text) // ': ' // what
+         return
+      end if
+      call deck_bind(deck, iv, v, .true.)
+      deck%given(iv) = .true.
+      call validate_deck(deck, stat, errmsg)
+      if (stat /= 0) then
+         errmsg = '--set ' // group // '.' // name // '=' // quoted_cut(text) // ': ' // trim(errmsg)
+         return
+      end if
+      ! -- recorded as a command line would give it (the echo, /deck settings)
+      if (.not. allocated(deck%settings)) deck%settings = ''
+      if (len(deck%settings) > 0) deck%settings = deck%settings // ' '
+      if (index(text, ' ') > 0) text = "'" // text // "'"
+      deck%settings = deck%settings // '--set ' // group // '.' // name // '=' // text
+   end subroutine set_variable
+
+   !> The value of entry iv from the items of its assignment, checked for its
+   !> kind (not yet for its range: validate_deck).
+   subroutine convert(iv, items, v, stat, what)
+      integer, intent(in) :: iv
+      type(item_t), intent(in) :: items(:)
+      type(value_t), intent(out) :: v
+      integer, intent(out) :: stat
+      character(len=:), allocatable, intent(out) :: what
+      real(dp), allocatable :: list(:)
+      integer :: ios, k, n, star, rep
+      stat = failed
+      what = ''
+      if (deck_vars(iv)%kind /= kind_reals .and. size(items) /= 1) then
+         what = 'one value expected, ' // int_str(size(items)) // ' given'
+         return
+      end if
+      select case (deck_vars(iv)%kind)
+      case (kind_real)
+         if (.not. number_item(items(1))) return
+         read (items(1)%text, *, iostat=ios) v%r
+         if (ios /= 0) then
+            what = 'must be a real number (' // trim(deck_vars(iv)%unit) // ')'
+            return
+         end if
+      case (kind_integer)
+         if (.not. number_item(items(1))) return
+         read (items(1)%text, *, iostat=ios) v%i
+         if (ios /= 0 .or. verify(trim(adjustl(items(1)%text)), '+-0123456789') /= 0) then
+            what = 'must be a whole number'
+            return
+         end if
+      case (kind_logical)
+         read (items(1)%text, *, iostat=ios) v%l
+         if (ios /= 0 .or. items(1)%quoted) then
+            what = 'must be .true. or .false.'
+            return
+         end if
+      case (kind_word, kind_path)
+         v%s = trim(adjustl(items(1)%text))
+         if (deck_vars(iv)%kind == kind_word) v%s = lower_case(v%s)
+         if (deck_vars(iv)%kind == kind_word .and. len(v%s) > max_word_len) then
+            what = 'longer than ' // int_str(max_word_len) // ' characters'
+            return
+         end if
+         if (len(v%s) > max_path_len) then
+            what = 'longer than ' // int_str(max_path_len) // ' characters'
+            return
+         end if
+         do k = 1, len(v%s)
+            if (iachar(v%s(k:k)) < 32 .or. iachar(v%s(k:k)) == 127) then
+               what = 'holds a control character (code ' // int_str(iachar(v%s(k:k))) // ')'
+               return
+            end if
+         end do
+      case (kind_reals)
+         allocate (list(0))
+         items_loop: do k = 1, size(items)
+            if (.not. number_item(items(k))) return
+            star = index(items(k)%text, '*')
+            rep = 1
+            if (star > 0) then
+               read (items(k)%text(:star - 1), *, iostat=ios) rep
+               if (ios /= 0 .or. rep < 1) then
+                  what = 'item ' // int_str(k) // ', ''' // items(k)%text // ''': a repeat count r*v needs r >= 1'
+                  return
+               end if
+            end if
+            n = size(list)
+            if (n + rep > max_list_len) then
+               what = 'more than ' // int_str(max_list_len) // ' values'
+               return
+            end if
+            list = [list, spread(0.0_dp, 1, rep)]
+            read (items(k)%text(star + 1:), *, iostat=ios) list(n + 1)
+            if (ios /= 0) then
+               what = 'item ' // int_str(k) // ', ''' // items(k)%text // ''': must be a real number (' &
+                  // trim(deck_vars(iv)%unit) // ')'
+               return
+            end if
+            list(n + 2:n + rep) = list(n + 1)
+         end do items_loop
+         call move_alloc(list, v%list)
+      end select
+      stat = 0
+
+   contains
+
+      !> A number is never quoted.
+      logical function number_item(item)
+         type(item_t), intent(in) :: item
+         number_item = .not. item%quoted
+         if (.not. number_item) what = 'a number, not a quoted string, expected'
+      end function number_item
+
+   end subroutine convert
+
+   ! ============================================================= checking
+
+   !> Checks every value of `deck` against the schema's range and the
+   !> combinations the program needs; stops at the first bad one, with the
+   !> message "<deck>: &group: variable = value: what is wrong". Keywords are
+   !> normalised to lower case without blanks (a deck built in code may set
+   !> them in any case), so the deck is intent(inout).
+   subroutine validate_deck(deck, stat, errmsg)
+      type(deck_t), intent(inout) :: deck           !< the deck; its keywords come back in lower case
+      integer, intent(out) :: stat                  !< 0 when every value is acceptable
+      character(len=*), intent(inout) :: errmsg     !< the message on failure
+      type(value_t) :: v
+      integer :: iv, n, i
+
+      stat = 0
+      if (.not. allocated(deck%source)) deck%source = '<deck>'
+      ! -- each variable against its schema entry
+      entries: do iv = 1, size(deck_vars)
+         call deck_bind(deck, iv, v, .false.)
+         if (deck_vars(iv)%kind == kind_word) then
+            v%s = lower_case(trim(adjustl(v%s)))
+            call deck_bind(deck, iv, v, .true.)
+         end if
+         call check_range(iv, v)
+         if (stat /= 0) return
+      end do entries
+
+      ! -- the plate and the lamina
+      call need(deck%h < min(deck%a, deck%b), 'plate', 'h', real_str(deck%h), &
+         'the thickness must be smaller than a and b')
+      call need(deck%nu12**2 < deck%e1/deck%e2, 'lamina', 'nu12', real_str(deck%nu12), &
+         'nu12**2 must be less than e1/e2 = ' // real_str(deck%e1/deck%e2) &
+         // ' (else the lamina stiffness is not positive definite)')
+      call need(size(deck%angles) >= 1, 'laminate', 'angles', '(none)', 'give at least one ply')
+      if (stat /= 0) return
+      n = size(deck%angles)
+      do i = 1, n
+         call need(ieee_is_finite(deck%angles(i)), 'laminate', 'angles(' // int_str(i) // ')', &
+            real_str(deck%angles(i)), 'must be finite')
+      end do
+
+      ! -- the impactor on the plate
+      call need(deck%diameter < min(deck%a, deck%b), 'impactor', 'diameter', real_str(deck%diameter), &
+         'the nose must be smaller than the plate: diameter < min(a, b) = ' // real_str(min(deck%a, deck%b)) // ' m')
+      call need(abs(deck%x0) <= 0.5_dp*(deck%a - deck%diameter), 'impactor', 'x0', real_str(deck%x0), &
+         'the nose must lie on the plate: |x0| <= (a - diameter)/2 = ' // real_str(0.5_dp*(deck%a - deck%diameter)) &
+         // ' m (x0 is measured from the plate centre)')
+      call need(abs(deck%y0) <= 0.5_dp*(deck%b - deck%diameter), 'impactor', 'y0', real_str(deck%y0), &
+         'the nose must lie on the plate: |y0| <= (b - diameter)/2 = ' // real_str(0.5_dp*(deck%b - deck%diameter)) &
+         // ' m (y0 is measured from the plate centre)')
+
+      ! -- the domain and its symmetry lines
+      if (deck%domain /= 'full' .and. deck%domain /= 'auto') &
+         call need(deck%bend_twist /= 'keep', 'laminate', 'bend_twist', "'keep'", "the symmetry lines of " &
+         // "&mesh domain = '" // deck%domain // "' need D16 = D26 = 0 (section 3.1): use domain = 'full'")
+      if (deck%average_bend_twist) call need(deck%bend_twist /= 'keep', 'laminate', 'bend_twist', "'keep'", &
+         'contradicts &mesh average_bend_twist = .true., which accepts D16 = D26 = 0')
+      if (deck%domain == 'quarter' .or. deck%domain == 'strip') &
+         call need(deck%x0 == 0.0_dp .and. deck%y0 == 0.0_dp, 'mesh', 'domain', "'" // deck%domain // "'", &
+         'needs the impact point at the centre, but &impactor x0 = ' // real_str(deck%x0) // ' m, y0 = ' &
+         // real_str(deck%y0) // " m: use domain = 'auto', 'half' or 'full'")
+      if (deck%domain == 'half') call need(deck%x0 == 0.0_dp .or. deck%y0 == 0.0_dp, 'mesh', 'domain', "'half'", &
+         'needs the impact point on a centre line (x0 = 0 or y0 = 0), but &impactor x0 = ' &
+         // real_str(deck%x0) // ' m, y0 = ' // real_str(deck%y0) // " m: use domain = 'auto' or 'full'")
+      if (stat == 0 .and. (deck%domain == 'quarter' .or. deck%domain == 'strip')) then
+         symmetry: do i = 1, n/2
+            if (deck%angles(i) == deck%angles(n + 1 - i)) cycle symmetry
+            call need(.false., 'laminate', 'angles', list_str(deck%angles, max_quoted), &
+               'not symmetric about the mid-plane (ply ' // int_str(i) // ' at ' // real_str(deck%angles(i)) &
+               // ' deg, ply ' // int_str(n + 1 - i) // ' at ' // real_str(deck%angles(n + 1 - i)) &
+               // " deg), but &mesh domain = '" // deck%domain // "' assumes B = 0: use domain = 'full'")
+            exit symmetry
+         end do symmetry
+      end if
+
+      ! -- the analysis
+      if (deck%theory == 'auto') call need(deck%analysis_kind == 'impact', 'analysis', 'theory', "'auto'", &
+         "chooses from the impact's deflection estimate: give 'linear' or 'nonlinear' for kind = '" &
+         // deck%analysis_kind // "'")
+      call need(deck%dt < deck%t_end, 'analysis', 'dt', real_str(deck%dt), &
+         'must be less than t_end = ' // real_str(deck%t_end))
+      call need(deck%cr1 >= min_cr1, 'analysis', 'cr1', real_str(deck%cr1), 'must be at least ' &
+         // real_str(min_cr1) // ' (100 eps): eq. (17) cannot be met below the rounding of the force')
+      if (stat == 0) call check_needs()
+      if (deck%analysis_kind == 'modes') call need(deck%storage == 'band', 'analysis', 'storage', &
+         "'" // deck%storage // "'", "kind = 'modes' needs storage = 'band' (LAPACK's banded eigensolver dsbgvx)")
+      call need(len(deck%prefix) > 0, 'output', 'prefix', "''", 'must not be empty')
+      call check_strength()
+
+   contains
+
+      !> What the run would need, before any of it is allocated or written
+      !> (README, "Stability, bad input, nothing lost"): at most max_steps
+      !> time steps; the matrices' memory, estimated from the mesh, within
+      !> the machine's; the results' size within the free space where they
+      !> go. The estimates: nodes (2 ex + 1)(2 ey + 1) for ex x ey 9-node
+      !> elements (ex = 2 nx when the domain may be doubled across a centre
+      !> line), 5 freedoms a node, half-bandwidth 10 (2 min(ex, ey) + 1),
+      !> three band matrices (K_L, M, the factored K_L + 4/dt^2 M); a
+      !> history row of 230 bytes in the text file and 130 in <prefix>.h5,
+      !> a field snapshot of 8 bytes a freedom, and in <prefix>.h5 64 KiB
+      !> and four more snapshots for the deck, the mesh and the peak state.
+      subroutine check_needs()
+         real(dp), parameter :: max_steps = 1.0e8_dp, text_row_bytes = 230.0_dp, row_bytes = 360.0_dp, &
+                                band_matrices = 3.0_dp, h5_fixed_bytes = 65536.0_dp
+         real(dp) :: steps, ex, ey, neq, kd, memory, machine, output, room, biggest
+         steps = deck%t_end/deck%dt
+         call need(steps <= max_steps, 'analysis', 'dt', real_str(deck%dt), 'gives t_end/dt = ' &
+            // real_short(steps) // ' time steps, more than the limit of ' // real_short(max_steps) &
+            // ' (a longer dt, or a shorter t_end)')
+         if (stat /= 0) return
+         ex = real(deck%nx, dp);  ey = real(deck%ny, dp)
+         if (deck%domain == 'auto' .or. deck%domain == 'half') then
+            ex = 2.0_dp*ex;  ey = 2.0_dp*ey
+         end if
+         neq = 5.0_dp*(2.0_dp*ex + 1.0_dp)*(2.0_dp*ey + 1.0_dp)
+         kd = 10.0_dp*(2.0_dp*min(ex, ey) + 1.0_dp)
+         memory = band_matrices*neq*(kd + 1.0_dp)*8.0_dp
+         machine = physical_memory()
+         if (machine > 0.0_dp) call need(memory < machine, 'mesh', 'nx', int_str(deck%nx), 'with ny = ' &
+            // int_str(deck%ny) // ' the model would need about ' // real_short(memory/gib) // ' GiB of memory (' &
+            // real_short(neq) // ' equations), more than this machine''s ' // real_short(machine/gib) &
+            // ' GiB: a coarser mesh, or a graded one (&mesh grading)')
+         if (stat /= 0 .or. deck%analysis_kind == 'modes' .or. deck%analysis_kind == 'static') return
+         output = (steps/real(deck%every, dp) + 1.0_dp)*row_bytes
+         if (deck%hdf5 .and. deck%analysis_kind == 'impact') output = output + h5_fixed_bytes &
+            + (steps/real(deck%fields_every, dp) + 5.0_dp)*neq*8.0_dp
+         biggest = max(output - (steps/real(deck%every, dp) + 1.0_dp)*text_row_bytes, &
+                       (steps/real(deck%every, dp) + 1.0_dp)*text_row_bytes)
+         room = file_size_limit()
+         if (room > 0.0_dp) call need(biggest < room, 'output', 'every', int_str(deck%every), &
+            'with fields_every = ' // int_str(deck%fields_every) // ' a result file would reach about ' &
+            // real_short(biggest/mib) // ' MiB, more than the ' // real_short(room/mib) // ' MiB this process ' &
+            // 'may write to one file (ulimit -f): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
+         room = free_disk_space(deck%prefix)
+         if (room > 0.0_dp) call need(output < room, 'output', 'every', int_str(deck%every), 'with fields_every = ' &
+            // int_str(deck%fields_every) // ' the results would take about ' // real_short(output/gib) &
+            // ' GiB, more than the ' // real_short(room/gib) // ' GiB free where they go (prefix ''' &
+            // deck%prefix // '''): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
+      end subroutine check_needs
+
+      !> &strength: all six strengths or none; the criterion only with them;
+      !> the ply stresses belong to the impact analysis.
+      subroutine check_strength()
+         character(len=3), parameter :: names(6) = [character(len=3) :: 'xt', 'xc', 'yt', 'yc', 's12', 's23']
+         logical :: missing(6)
+         missing = ieee_is_nan([deck%xt, deck%xc, deck%yt, deck%yc, deck%s12, deck%s23])
+         if (any(missing) .and. .not. all(missing)) call need(.false., 'strength', trim(names(findloc(missing, &
+            .true., dim=1))), '(not given)', 'give all six strengths (xt, xc, yt, yc, s12, s23) or none')
+         if (deck%given(find_var('strength', 'criterion'))) call need(.not. all(missing), 'strength', 'criterion', &
+            "'" // deck%criterion // "'", 'needs the ply strengths xt, xc, yt, yc, s12, s23 (the paper gives none)')
+         if (strength_given(deck)) call need(deck%analysis_kind == 'impact', 'strength', 'xt', real_str(deck%xt), &
+            "the ply stresses and failure indices are computed by kind = 'impact' only")
+      end subroutine check_strength
+
+      !> Fails with "<deck>: &group: name = value: what" unless ok (the first failure wins).
+      subroutine need(ok, group, name, value, what)
+         logical, intent(in) :: ok
+         character(len=*), intent(in) :: group, name, value, what
+         if (stat /= 0 .or. ok) return
+         stat = failed
+         errmsg = deck%source // ': &' // group // ': ' // name // ' = ' // value // ': ' // what
+      end subroutine need
+
+      !> Entry iv's value against the schema's range.
+      subroutine check_range(iv, v)
+         integer, intent(in) :: iv
+         type(value_t), intent(in) :: v
+         type(deck_var_t) :: e
+         e = deck_vars(iv)      ! (a copy: gfortran 12 loses an associate name of a constant's element)
+         select case (e%kind)
+         case (kind_real)
+            if (v%given) call need(in_interval(v%r, e%range), trim(e%group), trim(e%name), real_str(v%r), &
+               interval_text(e%range, e%unit))
+         case (kind_integer)
+            call need(in_interval(real(v%i, dp), e%range), trim(e%group), trim(e%name), int_str(v%i), &
+               interval_text(e%range, e%unit))
+         case (kind_word)
+            call need(index(' ' // words_of(e%range) // ' ', ' ' // v%s // ' ') > 0 .and. len(v%s) > 0, &
+               trim(e%group), trim(e%name), "'" // v%s // "'", 'must be one of ' // words_quoted(e%range))
+         case (kind_path)
+            call need(len(v%s) <= max_path_len, trim(e%group), trim(e%name), quoted_cut(v%s), &
+               'longer than ' // int_str(max_path_len) // ' characters')
+            if (len(v%s) > 0) call need(len(path_problem(v%s)) == 0, trim(e%group), trim(e%name), &
+               quoted_cut(v%s), path_problem(v%s))
+         end select
+      end subroutine check_range
+
+   end subroutine validate_deck
+
+   !> x lies in the interval written as '(lo, hi)', '[lo, hi]', ... and is
+   !> finite; lo and hi may be -inf, inf.
+   pure logical function in_interval(x, range)
+      real(dp), intent(in) :: x
+      character(len=*), intent(in) :: range
+      real(dp) :: lo, hi
+      logical :: lo_open, hi_open
+      call interval(range, lo, hi, lo_open, hi_open)
+      in_interval = ieee_is_finite(x)
+      if (.not. in_interval) return
+      if (lo_open) then
+         in_interval = x > lo
+      else
+         in_interval = x >= lo
+      end if
+      if (hi_open) then
+         in_interval = in_interval .and. x < hi
+      else
+         in_interval = in_interval .and. x <= hi
+      end if
+   end function in_interval
+
+   !> The bounds of an interval text.
+   pure subroutine interval(range, lo, hi, lo_open, hi_open)
+      character(len=*), intent(in) :: range
+      real(dp), intent(out) :: lo, hi
+      logical, intent(out) :: lo_open, hi_open
+      character(len=len(range)) :: r
+      integer :: comma
+      r = adjustl(range)
+      comma = index(r, ',')
+      lo_open = r(1:1) == '('
+      hi_open = r(len_trim(r):len_trim(r)) == ')'
+      lo = bound(r(2:comma - 1))
+      hi = bound(r(comma + 1:len_trim(r) - 1))
+   contains
+      pure real(dp) function bound(text)
+         character(len=*), intent(in) :: text
+         integer :: ios
+         select case (trim(adjustl(text)))
+         case ('inf');  bound = huge(1.0_dp)
+         case ('-inf'); bound = -huge(1.0_dp)
+         case default
+            read (text, *, iostat=ios) bound
+            if (ios /= 0) bound = 0.0_dp
+         end select
+      end function bound
+   end subroutine interval
+
+   !> What the interval asks, in words: 'must be positive (m)', 'must be in [1, 3]', ...
+   pure function interval_text(range, unit) result(text)
+      character(len=*), intent(in) :: range, unit
+      character(len=:), allocatable :: text
+      real(dp) :: lo, hi
+      logical :: lo_open, hi_open
+      call interval(range, lo, hi, lo_open, hi_open)
+      if (hi == huge(1.0_dp) .and. lo == 0.0_dp .and. lo_open) then
+         text = 'must be positive'
+      else if (hi == huge(1.0_dp) .and. lo == 0.0_dp) then
+         text = 'must be zero or positive'
+      else if (hi == huge(1.0_dp) .and. lo == -huge(1.0_dp)) then
+         text = 'must be finite'
+      else if (hi == huge(1.0_dp) .and. .not. lo_open) then
+         text = 'must be at least ' // real_str(lo)
+      else
+         text = 'must be in ' // trim(adjustl(range))
+      end if
+      if (trim(unit) /= '-' .and. len_trim(unit) > 0) text = text // ' (' // trim(unit) // ')'
+   end function interval_text
+
+   ! ============================================================== helpers
+
+   !> The items of a value text split as a deck line's: '0, 45, -45' -> three
+   !> items; quotes are not interpreted (a --set word needs none).
+   function split_items(text) result(items)
+      character(len=*), intent(in) :: text
+      type(item_t), allocatable :: items(:)
+      type(item_t), allocatable :: grown(:)
+      integer :: i, from, n
+      character(len=len(text) + 1) :: t
+      allocate (items(0))
+      t = text // ','
+      from = 1
+      do i = 1, len(t)
+         if (t(i:i) == ',' .or. t(i:i) == ' ') then
+            if (i > from) then
+               n = size(items)
+               allocate (grown(n + 1))
+               grown(:n) = items
+               grown(n + 1)%text = t(from:i - 1)      ! (component by component: see deck_text)
+               grown(n + 1)%quoted = .false.
+               call move_alloc(grown, items)
+            end if
+            from = i + 1
+         end if
+      end do
+      if (size(items) == 1) then     ! a single value: keep its blanks and strip quotes
+         items(1)%text = trim(adjustl(text))
+         if (len(items(1)%text) >= 2) then
+            if (index('''"', items(1)%text(1:1)) > 0 .and. items(1)%text(len(items(1)%text):) == items(1)%text(1:1)) &
+               items(1)%text = items(1)%text(2:len(items(1)%text) - 1)
+         end if
+      end if
+   end function split_items
+
+   !> The items as they were written, for a message.
+   function items_text(items) result(text)
+      type(item_t), intent(in) :: items(:)
+      character(len=:), allocatable :: text
+      integer :: k
+      text = ''
+      do k = 1, size(items)
+         if (k > 1) text = text // ', '
+         if (items(k)%quoted) then
+            text = text // "'" // items(k)%text // "'"
+         else
+            text = text // items(k)%text
+         end if
+      end do
+      text = quoted_cut(text)
+   end function items_text
+
+   !> text, cut short after max_quoted characters, its control characters shown as '?'.
+   pure function quoted_cut(text) result(cut)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: cut
+      integer :: k
+      if (len(text) > max_quoted) then
+         cut = text(:max_quoted) // '...'
+      else
+         cut = text
+      end if
+      do k = 1, len(cut)          ! a control character would break the message's one line
+         if (iachar(cut(k:k)) < 32 .or. iachar(cut(k:k)) == 127) cut(k:k) = '?'
+      end do
+   end function quoted_cut
+
+   !> The groups as '&plate, &lamina, ...'.
+   function group_list() result(list)
+      character(len=:), allocatable :: list
+      integer :: i
+      list = '&' // trim(deck_groups(1))
+      do i = 2, size(deck_groups)
+         list = list // ', &' // trim(deck_groups(i))
+      end do
+   end function group_list
+
+   !> The variables of a group as 'a, b, h'.
+   function variable_list(group) result(list)
+      character(len=*), intent(in) :: group
+      character(len=:), allocatable :: list
+      integer :: iv
+      list = ''
+      do iv = 1, size(deck_vars)
+         if (deck_vars(iv)%group /= group) cycle
+         if (len(list) > 0) list = list // ', '
+         list = list // trim(deck_vars(iv)%name)
+      end do
+   end function variable_list
+
+
+end module input_deck

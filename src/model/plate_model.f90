@@ -1,0 +1,272 @@
+!> The plate model: the boxes "laminate stiffness", "mesh and boundary
+!> conditions" and "[M], [K_L]" of the paper's flowchart (Fig. 3), built
+!> once from the deck and then only read (intent(in) everywhere after
+!> build_model), and what is computed from it element by element: the
+!> nonlinear term K_N(D) D of eq. (19), M x, and the probes the results
+!> need (the strain gauge, the energies, the largest deflection).
+!>
+!> Units: SI throughout. The model may be a quarter or a half of the plate
+!> (src/model/scene_model.f90 chooses), in which case it carries that share of the
+!> contact force (force_share) and its energies are multiplied by
+!> mesh%sym_factor (4 or 2) to stand for the whole plate.
+module plate_model
+   use kinds, only: dp, msg_len
+   use materials, only: laminate_t, laminate_drop_bend_twist
+   use scene_model, only: scene_t, model_laminate, choose_domain, point_stiffness, energy_balance, &
+      choose_theory, impact_element_size
+   use mesh, only: mesh_t, build_mesh, apply_boundary, nfe, ndof_node
+   use shear_strain, only: shear_rule_t, shear_rule_code, shear_stabilized
+   use contact_load, only: contact_load_t, contact_load_init, load_point, load_hertz
+   use element_matrices, only: element_geometry_t, element_geometry, element_mass, element_stiffness, &
+      element_inplane_strain, element_gauss_point
+   use element_work, only: element_work_t, work_build, work_nonlinear_force, work_mass_times, work_strain_energy
+   use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble
+   use contact_law, only: contact_law_t
+   use deck_schema, only: deck_t
+   implicit none
+   private
+   public :: model_t, build_model, nonlinear_force, mass_times, gather_element, scatter_add_element, &
+             centre_deflection, back_face_strain, max_deflection, plate_kinetic_energy, plate_strain_energy
+
+   !> Everything about the plate that does not change during a run.
+   type :: model_t
+      type(mesh_t) :: msh                      !< mesh and freedoms
+      type(laminate_t) :: lmt                  !< laminate used (D16 = D26 = 0 when averaged, scene%averaged)
+      type(scene_t) :: scene                   !< the scene's choices and report (src/model/scene_model.f90)
+      type(element_geometry_t), allocatable :: geo(:)  !< per-element geometry and shear operator
+      type(element_work_t) :: work             !< the same, laid out for the element work of a step
+      type(global_matrix_t) :: mass            !< [M]
+      type(global_matrix_t) :: stiff           !< [K_L]
+      type(contact_law_t) :: law               !< eq. (11)-(12) constants
+      type(contact_load_t) :: cload            !< how the contact force enters the plate (module contact_load)
+      logical :: nonlinear = .true.            !< von Karman terms on
+      real(dp) :: impactor_mass = 0.0_dp       !< m (kg)
+      integer :: eq_impact = 0                 !< equation of w at the impact point
+      real(dp) :: force_share = 1.0_dp         !< share of a force at the impact point the model carries
+      integer :: gauge_gp = 0                  !< 3x3 Gauss point of the strain gauge in msh%impact_elem
+      real(dp) :: z_back = 0.0_dp              !< z of the back face, +h/2 (m)
+      character(len=16) :: shear_rule = ''     !< transverse shear rule used (module shear_strain)
+      integer :: max_nonlinear_iter = 200      !< limit of the eq. (19) and Newton iterations
+      real(dp) :: cr2 = 1.0e-7_dp              !< tolerance C_r2 of eq. (18)
+   end type model_t
+
+contains
+
+   !> Material (eq. 6, 9), mesh and boundary conditions (Fig. 4), element
+   !> matrices and their assembly into [M] and [K_L] (eq. 15, Appendix B).
+   subroutine build_model(deck, model, stat, errmsg)
+      type(deck_t), intent(in) :: deck          !< the input deck
+      type(model_t), intent(out) :: model       !< the model
+      integer, intent(out) :: stat              !< 0 on success
+      character(len=*), intent(inout) :: errmsg !< reason on failure
+      type(shear_rule_t) :: rule
+      real(dp) :: ke(nfe, nfe), me(nfe, nfe)
+      integer :: e
+      logical :: ok
+
+      ! -- material: lamina (Table 3), laminate (eq. 6, 9) with the deck's or
+      !    Whitney's shear correction; the domain the scene allows; D16 = D26
+      !    = 0 on a reduced domain (the paper's averaging, section 3.1) or when
+      !    the deck drops them (&laminate bend_twist = 'drop')
+      call model_laminate(deck, model%lmt, model%scene)
+      call choose_domain(deck, model%scene, stat, errmsg)
+      if (stat /= 0) return
+      if (model%scene%averaged) model%lmt = laminate_drop_bend_twist(model%lmt)
+      model%law = contact_law_t(deck%k, deck%q, deck%alpha_p, deck%beta)
+      model%impactor_mass = deck%mass
+      model%z_back = 0.5_dp*deck%h
+      model%max_nonlinear_iter = deck%max_nonlinear_iter
+      model%cr2 = deck%cr2
+
+      ! -- transverse shear of the element (module shear_strain): 'auto' is
+      !    MITC9, which neither locks nor leaves a mechanism (the paper's 2x2
+      !    rule, 'selective', leaves near-mechanisms that a point force
+      !    excites: docs/VALIDATION.md)
+      model%shear_rule = deck%shear_rule
+      if (deck%shear_rule == 'auto') model%shear_rule = 'mitc9'
+      rule = shear_rule_t(code=shear_rule_code(model%shear_rule))
+      if (rule%code == shear_stabilized) rule%eps = deck%stabilization
+
+      ! -- mesh, boundary conditions, equation numbers (Fig. 4)
+      call build_mesh(deck%a, deck%b, deck%nx, deck%ny, model%scene%domain, model%msh, stat, errmsg, &
+                      x0=deck%x0, y0=deck%y0, grading=deck%grading, quarter_counts=deck%domain == 'auto')
+      if (stat /= 0) return
+      call apply_boundary(model%msh, deck%edges, deck%inplane, stat, errmsg)
+      if (stat /= 0) return
+      model%eq_impact = model%msh%eq(3, model%msh%impact_node)
+      model%force_share = 1.0_dp/model%msh%sym_factor
+
+      ! -- the contact load: the paper's point force (eq. 10) or Hertz's
+      !    pressure over the contact area (module contact_load)
+      call contact_load_init(model%msh, merge(load_point, load_hertz, deck%contact_load == 'point'), &
+                             0.5_dp*deck%diameter, model%cload, stat)
+      if (stat /= 0) then
+         write (errmsg, '(a,i0)') 'contact load: the Gauss rule of the contact disc failed, LAPACK info = ', stat
+         return
+      end if
+
+      ! -- element geometry and shear operator, once per element
+      allocate (model%geo(model%msh%nelem))
+      geometry: do e = 1, model%msh%nelem
+         call element_geometry(model%msh%coords(:, model%msh%conn(:, e)), rule, model%geo(e), ok)
+         if (.not. ok) then
+            stat = 1
+            write (errmsg, '(a,i0,a)') 'mesh: element ', e, ' has a non-positive Jacobian'
+            return
+         end if
+      end do geometry
+      model%gauge_gp = element_gauss_point(model%geo(model%msh%impact_elem), &
+                                           model%msh%coords(:, model%msh%impact_node))
+
+      ! -- [M] and [K_L], assembled once (eq. 15)
+      call global_init(model%mass, deck%storage, model%msh%neq, model%msh%elem_eq, stat, errmsg)
+      if (stat /= 0) return
+      call global_init(model%stiff, deck%storage, model%msh%neq, model%msh%elem_eq, stat, errmsg)
+      if (stat /= 0) return
+      call global_zero(model%mass)
+      call global_zero(model%stiff)
+      elements: do e = 1, model%msh%nelem
+         call element_mass(model%lmt, model%geo(e), me)
+         call element_stiffness(model%lmt, model%geo(e), ke)
+         call global_assemble(model%mass, me, model%msh%elem_eq(:, e))
+         call global_assemble(model%stiff, ke, model%msh%elem_eq(:, e))
+      end do elements
+      call work_build(model%msh, model%lmt, model%geo, model%work)
+
+      ! -- the scene's static estimate, and the theory it calls for
+      !    (src/model/scene_model.f90)
+      call point_stiffness(model%msh, model%lmt, model%geo, model%force_share, deck%edges, &
+                           deck%storage, model%scene, stat, errmsg)
+      if (stat /= 0) return
+      call energy_balance(model%scene%energy, model%scene%stiffness, deck%k, model%scene%force, &
+                          model%scene%deflection, model%scene%indentation)
+      model%scene%contact_radius = sqrt(0.5_dp*deck%diameter*model%scene%indentation)   ! Hertz
+      model%scene%element_size = impact_element_size(model%msh)
+      model%scene%point_load = deck%contact_load == 'point'
+      call choose_theory(deck%theory, model%scene%deflection/deck%h, model%scene%theory, &
+                         model%scene%theory_reason)
+      model%nonlinear = model%scene%theory == 'nonlinear'
+   end subroutine build_model
+
+   ! ========================================================= element work
+
+   !> The nonlinear term K_N(D) D of eq. (19), assembled element by element
+   !> (zero for the linear theory; module element_work).
+   subroutine nonlinear_force(model, d, fn)
+      type(model_t), intent(in) :: model        !< model
+      real(dp), intent(in) :: d(:)              !< global displacements
+      real(dp), intent(out) :: fn(:)            !< K_N(D) D
+      if (.not. model%nonlinear) then
+         fn = 0.0_dp
+         return
+      end if
+      call work_nonlinear_force(model%work, d, fn)
+   end subroutine nonlinear_force
+
+   !> y = M x, element by element (eq. 15: M is the sum of the element mass
+   !> matrices): the product the assembled [M] gives, up to rounding, at a
+   !> cost proportional to the number of nodes instead of N kd (module
+   !> element_work).
+   subroutine mass_times(model, x, y)
+      type(model_t), intent(in) :: model        !< model
+      real(dp), intent(in) :: x(:)              !< global vector
+      real(dp), intent(out) :: y(:)             !< M x
+      call work_mass_times(model%work, model%msh, x, y)
+   end subroutine mass_times
+
+   ! =============================================================== probes
+
+   !> Deflection of the impact point, the node (m): the static and pressure
+   !> analyses' centre deflection.
+   pure function centre_deflection(model, d) result(w)
+      type(model_t), intent(in) :: model   !< model
+      real(dp), intent(in) :: d(:)         !< global displacements
+      real(dp) :: w
+      w = d(model%eq_impact)
+   end function centre_deflection
+
+   !> Plate deflection for the von Karman check (m): the largest |w| when
+   !> the edges hold w somewhere; for a free plate the spread max w - min w,
+   !> which leaves out the rigid-body translation that strains nothing.
+   pure function max_deflection(model, d) result(w_max)
+      type(model_t), intent(in) :: model   !< model
+      real(dp), intent(in) :: d(:)         !< global displacements
+      real(dp) :: w_max
+      real(dp) :: w, w_hi, w_lo
+      logical :: held
+      integer :: n
+      w_max = 0.0_dp
+      w_hi = -huge(1.0_dp);  w_lo = huge(1.0_dp)
+      held = .false.
+      nodes: do n = 1, model%msh%nnode
+         if (model%msh%eq(3, n) > 0) then
+            w = d(model%msh%eq(3, n))
+            w_max = max(w_max, abs(w))
+            w_hi = max(w_hi, w);  w_lo = min(w_lo, w)
+         else
+            held = .true.
+         end if
+      end do nodes
+      if (.not. held .and. w_hi >= w_lo) w_max = w_hi - w_lo
+   end function max_deflection
+
+   !> Kinetic energy of the whole plate, 1/2 V^T M V (J).
+   function plate_kinetic_energy(model, v) result(ek)
+      type(model_t), intent(in) :: model   !< model
+      real(dp), intent(in) :: v(:)         !< global velocities
+      real(dp) :: ek
+      real(dp) :: mv(size(v))
+      call mass_times(model, v, mv)
+      ek = 0.5_dp*dot_product(v, mv)*model%msh%sym_factor
+   end function plate_kinetic_energy
+
+   !> Strain energy of the whole plate (J), von Karman strains for the
+   !> nonlinear theory.
+   function plate_strain_energy(model, d) result(u)
+      type(model_t), intent(in) :: model   !< model
+      real(dp), intent(in) :: d(:)         !< global displacements
+      real(dp) :: u
+      u = work_strain_energy(model%work, d, model%nonlinear)*model%msh%sym_factor
+   end function plate_strain_energy
+
+   !> The paper's strain gauge (Fig. 9b): in-plane y strain on the face
+   !> opposite the impact, at the Gauss point nearest the impact point, in
+   !> the element nearest it.
+   function back_face_strain(model, d) result(eps_y)
+      type(model_t), intent(in) :: model   !< model
+      real(dp), intent(in) :: d(:)         !< global displacements
+      real(dp) :: eps_y
+      real(dp) :: de(nfe), eps(3)
+      integer :: e
+      e = model%msh%impact_elem
+      call gather_element(model%msh%elem_eq(:, e), d, de)
+      eps = element_inplane_strain(model%geo(e), de, model%gauge_gp, model%z_back, model%nonlinear)
+      eps_y = eps(2)
+   end function back_face_strain
+
+   ! ============================================================== helpers
+
+   !> Element displacements from the global vector (0 for held freedoms).
+   pure subroutine gather_element(eqs, d, de)
+      integer, intent(in) :: eqs(:)       !< equation of each element freedom, 0 held
+      real(dp), intent(in) :: d(:)        !< global vector
+      real(dp), intent(out) :: de(:)      !< element vector
+      where (eqs > 0)
+         de = d(max(eqs, 1))
+      elsewhere
+         de = 0.0_dp
+      end where
+   end subroutine gather_element
+
+   !> Adds element forces into the global vector.
+   pure subroutine scatter_add_element(eqs, fe, f)
+      integer, intent(in) :: eqs(:)       !< equation of each element freedom, 0 held
+      real(dp), intent(in) :: fe(:)       !< element vector
+      real(dp), intent(inout) :: f(:)     !< global vector
+      integer :: k
+      do k = 1, size(eqs)
+         if (eqs(k) > 0) f(eqs(k)) = f(eqs(k)) + fe(k)
+      end do
+   end subroutine scatter_add_element
+
+end module plate_model

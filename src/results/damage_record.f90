@@ -1,0 +1,362 @@
+!> Where and when damage starts: the ply stresses of the impact run at
+!> every Gauss point of every ply, their failure index, and what the run
+!> records of them. Only with &strength (the six strengths given,
+!> strength_given); without it damage_open leaves the record inactive and
+!> nothing here runs.
+!>
+!> At every step the history records (damage_step, from the run recorder;
+!> &output every, 1 by default: every step): at each 3 x 3 Gauss
+!> point of each element (those of the membrane and bending terms, where the
+!> paper's strain gauge is, Fig. 9b) the laminate strains and their
+!> gradients give the stresses on both faces of every ply
+!> (src/strength/ply_stress.f90: in-plane from eq. 2-3 with the von Karman strains in
+!> the nonlinear theory, transverse shear from equilibrium), and the
+!> criterion of &strength their failure index (src/strength/failure_criteria.f90).
+!> Kept: the step's largest index and its mode (history columns
+!> failure_index, failure_mode); the largest index of each ply at each point
+!> over the run and its mode (the damage map), and the first time it reached
+!> 1; the run's largest index, and the first step at which any index
+!> reached 1 (the onset), with its ply, mode and point. At every step
+!> (damage_peak): the displacements at the largest contact force, whose
+!> stresses are written at the end.
+!>
+!> The cost: about 10^3 floating-point operations per Gauss point and
+!> evaluation for a 20-ply laminate of three ply angles; evaluated at the
+!> history's steps only, so &output every bounds it (README, "Ply stresses
+!> and failure", gives the measured share of a run).
+!>
+!> At the end (damage_close): the summary's items (max_failure_index, the
+!> largest stresses max_abs_s11_MPa ... max_abs_t13_MPa, failure_onset_us,
+!> failure_mode, failure_ply, failure_x_mm, failure_y_mm)
+!> and, in <prefix>.h5, the group /strength (damage_write, layout there).
+module damage_record
+   use kinds, only: dp, msg_len
+   use deck_schema, only: deck_t, strength_given
+   use materials, only: lamina_t
+   use shape_functions, only: nen
+   use mesh, only: nfe
+   use plate_model, only: model_t, gather_element
+   use ply_stress, only: ply_stack_t, ply_stack_init, ply_stresses, point_strain_state, element_second_derivatives, &
+      nstate, ngp
+   use failure_criteria, only: strength_t, criterion_code, failure_index, failure_indices, mode_names, mode_none, nmode
+   use result_files, only: summary_item_t, summary_real, summary_integer, summary_text
+   use results_hdf5, only: results_file_t
+   use hdf5_io, only: h5io_group, h5io_set_attr, h5io_write
+   implicit none
+   private
+   public :: damage_t, damage_open, damage_step, damage_peak, damage_close, damage_stresses, damage_points
+
+   !> The damage record of a run (module header).
+   type :: damage_t
+      logical :: active = .false.                   !< &strength given
+      type(strength_t) :: strength                  !< the ply strengths (Pa)
+      integer :: criterion = 0                      !< failure_criteria's code
+      character(len=:), allocatable :: criterion_name
+      type(ply_stack_t) :: stack                    !< the laminate's through-thickness tables
+      logical :: nonlinear = .false.                !< von Karman strains
+      integer :: nply = 0, npoint = 0               !< plies; Gauss points (9 per element)
+      real(dp), allocatable :: d2(:,:,:,:)          !< (3, nen, ngp, nelem) second derivatives of the shape functions (1/m^2)
+      real(dp), allocatable :: fi_max(:,:)          !< (nply, npoint) largest index over the run
+      integer, allocatable :: mode_max(:,:)         !< (nply, npoint) its mode
+      real(dp), allocatable :: onset_time(:,:)      !< (nply, npoint) first time the index reached 1 (s), -1 never
+      real(dp) :: smax(5) = 0.0_dp                  !< largest |s11|, |s22|, |t12|, |t23|, |t13| over the run (Pa)
+      ! -- failure indices (-), times (s), forces (N), displacements (m, rad)
+      ! -- the step just evaluated
+      real(dp) :: step_fi = 0.0_dp
+      integer :: step_mode = mode_none
+      ! -- the run's largest index
+      real(dp) :: max_fi = 0.0_dp, max_time = 0.0_dp
+      integer :: max_mode = mode_none, max_ply = 0, max_point = 0
+      ! -- the onset: the first step with an index >= 1
+      real(dp) :: onset = -1.0_dp, onset_fi = 0.0_dp
+      integer :: onset_mode = mode_none, onset_ply = 0, onset_point = 0
+      ! -- the state at the largest contact force
+      real(dp), allocatable :: d_peak(:)
+      real(dp) :: peak_force = 0.0_dp, peak_time = 0.0_dp
+      integer :: peak_step = 0
+   end type damage_t
+
+contains
+
+   !> Sets up the record when the deck gives &strength (strength_given);
+   !> otherwise leaves it inactive.
+   subroutine damage_open(dmg, deck, model)
+      type(damage_t), intent(out) :: dmg            !< the record
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      type(model_t), intent(in) :: model            !< the model
+      integer :: e
+      if (.not. strength_given(deck)) return
+      dmg%active = .true.
+      dmg%strength = strength_t(deck%xt, deck%xc, deck%yt, deck%yc, deck%s12, deck%s23)
+      dmg%criterion = criterion_code(deck%criterion)
+      dmg%criterion_name = deck%criterion
+      call ply_stack_init(lamina_t(deck%e1, deck%e2, deck%g12, deck%g13, deck%g23, deck%nu12, deck%rho), &
+                          deck%angles, deck%h, dmg%stack)
+      dmg%nonlinear = model%nonlinear
+      dmg%nply = size(deck%angles)
+      dmg%npoint = ngp*model%msh%nelem
+      allocate (dmg%d2(3, nen, ngp, model%msh%nelem))
+      do e = 1, model%msh%nelem
+         dmg%d2(:, :, :, e) = element_second_derivatives(model%msh%coords(:, model%msh%conn(:, e)))
+      end do
+      allocate (dmg%fi_max(dmg%nply, dmg%npoint), dmg%mode_max(dmg%nply, dmg%npoint), &
+                dmg%onset_time(dmg%nply, dmg%npoint), dmg%d_peak(model%msh%neq))
+      dmg%fi_max = 0.0_dp
+      dmg%mode_max = mode_none
+      dmg%onset_time = -1.0_dp
+      dmg%d_peak = 0.0_dp
+   end subroutine damage_open
+
+   !> The failure indices of the state d at time t (module header): the
+   !> step's largest, the damage map, the onset.
+   subroutine damage_step(dmg, model, t, d)
+      type(damage_t), intent(inout) :: dmg          !< the record
+      type(model_t), intent(in) :: model            !< the model
+      real(dp), intent(in) :: t                     !< the time of the state (s)
+      real(dp), intent(in) :: d(:)                  !< plate displacements {D}
+      real(dp) :: de(nfe), e(nstate), sigma(5, 2, dmg%nply), fi(dmg%nply)
+      integer :: mode(dmg%nply), el, g, p, k, kmax
+      logical :: onset_now
+
+      if (.not. dmg%active) return
+      dmg%step_fi = -huge(1.0_dp)
+      dmg%step_mode = mode_none
+      kmax = 0
+      onset_now = .false.
+      elements: do el = 1, model%msh%nelem
+         call gather_element(model%msh%elem_eq(:, el), d, de)
+         points: do g = 1, ngp
+            p = g + ngp*(el - 1)
+            e = point_strain_state(model%geo(el)%dx3(:, :, g), dmg%d2(:, :, g, el), de, dmg%nonlinear)
+            call ply_stresses(dmg%stack, e, sigma)
+            do k = 1, 5
+               dmg%smax(k) = max(dmg%smax(k), maxval(abs(sigma(k, :, :))))
+            end do
+            call ply_indices(dmg, sigma, fi, mode)
+            plies: do k = 1, dmg%nply
+               if (fi(k) > dmg%fi_max(k, p)) then
+                  dmg%fi_max(k, p) = fi(k)
+                  dmg%mode_max(k, p) = mode(k)
+               end if
+               if (fi(k) >= 1.0_dp .and. dmg%onset_time(k, p) < 0.0_dp) dmg%onset_time(k, p) = t
+               if (fi(k) > dmg%step_fi) then
+                  dmg%step_fi = fi(k)
+                  dmg%step_mode = mode(k)
+                  kmax = k + dmg%nply*(p - 1)
+               end if
+            end do plies
+         end do points
+      end do elements
+
+      ! -- the run's largest, and the onset (the first step reaching 1)
+      if (dmg%step_fi > dmg%max_fi) then
+         dmg%max_fi = dmg%step_fi
+         dmg%max_time = t
+         dmg%max_mode = dmg%step_mode
+         dmg%max_ply = 1 + mod(kmax - 1, dmg%nply)
+         dmg%max_point = 1 + (kmax - 1)/dmg%nply
+      end if
+      if (dmg%onset < 0.0_dp .and. dmg%step_fi >= 1.0_dp) then
+         dmg%onset = t
+         dmg%onset_fi = dmg%step_fi
+         dmg%onset_mode = dmg%step_mode
+         dmg%onset_ply = 1 + mod(kmax - 1, dmg%nply)
+         dmg%onset_point = 1 + (kmax - 1)/dmg%nply
+      end if
+   end subroutine damage_step
+
+   !> Keeps the displacements of the largest contact force so far (every
+   !> step: a copy, the stresses follow at the end).
+   subroutine damage_peak(dmg, step, t, f, d)
+      type(damage_t), intent(inout) :: dmg          !< the record
+      integer, intent(in) :: step                   !< the step
+      real(dp), intent(in) :: t, f                  !< its time (s) and contact force (N)
+      real(dp), intent(in) :: d(:)                  !< plate displacements {D}
+      if (.not. dmg%active .or. .not. f > dmg%peak_force) return
+      dmg%peak_force = f
+      dmg%peak_time = t
+      dmg%peak_step = step
+      dmg%d_peak = d
+   end subroutine damage_peak
+
+   !> The failure index and mode of every ply at one point: the larger of
+   !> its two faces.
+   pure subroutine ply_indices(dmg, sigma, fi, mode)
+      type(damage_t), intent(in) :: dmg
+      real(dp), intent(in) :: sigma(:,:,:)          ! (5, 2, nply)
+      real(dp), intent(out) :: fi(:)
+      integer, intent(out) :: mode(:)
+      real(dp) :: f2(2*size(fi))
+      integer :: m2(2*size(fi)), k
+      call failure_indices(dmg%strength, dmg%criterion, reshape(sigma, [5, 2*size(fi)]), f2, m2)
+      do k = 1, size(fi)
+         if (f2(2*k) > f2(2*k-1)) then
+            fi(k) = f2(2*k);  mode(k) = m2(2*k)
+         else
+            fi(k) = f2(2*k-1);  mode(k) = m2(2*k-1)
+         end if
+      end do
+   end subroutine ply_indices
+
+   !> The stresses and failure indices of every ply face at every Gauss
+   !> point for the displacements d: sigma(5, 2, nply, npoint) (Pa, material
+   !> axes), fi(2, nply, npoint).
+   subroutine damage_stresses(dmg, model, d, sigma, fi)
+      type(damage_t), intent(in) :: dmg             !< an active record
+      type(model_t), intent(in) :: model            !< the model
+      real(dp), intent(in) :: d(:)                  !< plate displacements {D}
+      real(dp), intent(out) :: sigma(:,:,:,:)       !< (5, 2, nply, npoint) (Pa)
+      real(dp), intent(out) :: fi(:,:,:)            !< (2, nply, npoint) (-)
+      real(dp) :: de(nfe), e(nstate)
+      integer :: el, g, p, k, f, m
+      do el = 1, model%msh%nelem
+         call gather_element(model%msh%elem_eq(:, el), d, de)
+         do g = 1, ngp
+            p = g + ngp*(el - 1)
+            e = point_strain_state(model%geo(el)%dx3(:, :, g), dmg%d2(:, :, g, el), de, dmg%nonlinear)
+            call ply_stresses(dmg%stack, e, sigma(:, :, :, p))
+            do k = 1, dmg%nply
+               do f = 1, 2
+                  call failure_index(dmg%strength, dmg%criterion, sigma(:, f, k, p), fi(f, k, p), m)
+               end do
+            end do
+         end do
+      end do
+   end subroutine damage_stresses
+
+   !> The (x, y) of every Gauss point (m, from the plate centre), (2, npoint).
+   function damage_points(model) result(xy)
+      type(model_t), intent(in) :: model
+      real(dp), allocatable :: xy(:,:)
+      integer :: el
+      allocate (xy(2, ngp*model%msh%nelem))
+      do el = 1, model%msh%nelem
+         xy(:, ngp*(el - 1) + 1:ngp*el) = model%geo(el)%xy3
+      end do
+   end function damage_points
+
+   !> The summary's items (module header) and /strength in <prefix>.h5.
+   !> failure_mode, failure_ply, failure_x_mm, failure_y_mm say where
+   !> damage started (the onset) or, when no index reached 1, where the
+   !> largest one was.
+   subroutine damage_close(dmg, model, s, rf, stat, errmsg)
+      type(damage_t), intent(in) :: dmg             !< the record
+      type(model_t), intent(in) :: model            !< the model
+      type(summary_item_t), allocatable, intent(inout) :: s(:)   !< the summary, items appended
+      type(results_file_t), intent(in) :: rf        !< the results file (written when active)
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      character(len=3), parameter :: comp(5) = [character(len=3) :: 's11', 's22', 't12', 't23', 't13']
+      real(dp), allocatable :: xy(:,:)
+      integer :: ply, point, mode, c
+      stat = 0
+      if (.not. dmg%active) return
+      call summary_real(s, 'max_failure_index', 'max_failure_index', '-', dmg%max_fi, 1.0_dp)
+      do c = 1, 5
+         call summary_real(s, 'max_abs_' // trim(comp(c)) // '_MPa', 'max_abs_' // trim(comp(c)), 'Pa', &
+                           dmg%smax(c), 1.0e-6_dp)
+      end do
+      if (dmg%onset >= 0.0_dp) then
+         call summary_real(s, 'failure_onset_us', 'failure_onset', 's', dmg%onset, 1.0e6_dp)
+         ply = dmg%onset_ply;  point = dmg%onset_point;  mode = dmg%onset_mode
+      else
+         call summary_text(s, 'failure_onset_us', 'none')
+         ply = dmg%max_ply;  point = dmg%max_point;  mode = dmg%max_mode
+      end if
+      call summary_text(s, 'failure_mode', trim(mode_names(mode)))
+      call summary_integer(s, 'failure_ply', ply)
+      xy = damage_points(model)
+      if (point > 0) then
+         call summary_real(s, 'failure_x_mm', 'failure_x', 'm', xy(1, point), 1.0e3_dp)
+         call summary_real(s, 'failure_y_mm', 'failure_y', 'm', xy(2, point), 1.0e3_dp)
+      else
+         call summary_text(s, 'failure_x_mm', 'none')
+         call summary_text(s, 'failure_y_mm', 'none')
+      end if
+      if (rf%active) call damage_write(dmg, model, xy, rf, stat, errmsg)
+   end subroutine damage_close
+
+   !> /strength of <prefix>.h5 (C order, as h5py shows it):
+   !>   attributes  criterion, plies, modes (the mode codes' words), faces
+   !>   points (npoint, 2) x, y of the 3 x 3 Gauss points (m, from the plate
+   !>               centre), 9 per element in element order; point_element (npoint)
+   !>   ply_z (nply+1) interfaces (m, z = -h/2 the impacted face); ply_angle (nply) deg
+   !>   damage_map (npoint, nply) the largest failure index of each ply at
+   !>               each point over the run; damage_mode (npoint, nply) its mode;
+   !>               onset_time (npoint, nply) the first time it reached 1 (s, -1: never)
+   !>   peak/       attributes step, time, force: the step of the largest
+   !>               contact force; s11 s22 t12 t23 t13 (npoint, 2 nply) the
+   !>               stresses there (Pa, material axes; face 2k-1 the bottom of
+   !>               ply k, 2k its top), failure_index (npoint, 2 nply)
+   subroutine damage_write(dmg, model, xy, rf, stat, errmsg)
+      type(damage_t), intent(in) :: dmg
+      type(model_t), intent(in) :: model
+      real(dp), intent(in) :: xy(:,:)
+      type(results_file_t), intent(in) :: rf
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      character(len=5), parameter :: comp(5) = [character(len=5) :: 's11', 's22', 't12', 't23', 't13']
+      real(dp), allocatable :: sigma(:,:,:,:), fi(:,:,:)
+      character(len=msg_len) :: why
+      character(len=:), allocatable :: modes
+      integer :: c, m
+
+      why = ''
+      stat = 0
+      modes = ''
+      do m = 0, nmode
+         if (m > 0) modes = modes // ', '
+         modes = modes // achar(48 + m) // ' ' // trim(mode_names(m))
+      end do
+      call h5io_group(rf%fid, 'strength', stat, why)
+      call put_text('strength', 'criterion', dmg%criterion_name)
+      call put_text('strength', 'modes', modes)
+      call put_text('strength', 'faces', 'face 2k-1: bottom of ply k (towards the impacted face), 2k: its top')
+      if (stat == 0) call h5io_set_attr(rf%fid, 'strength', 'plies', dmg%nply, stat, why)
+      call put_data('strength/points', xy, 'm')
+      if (stat == 0) call h5io_write(rf%fid, 'strength/point_element', [((c - 1)/9 + 1, c = 1, dmg%npoint)], &
+                                     stat, why)
+      call put_data1('strength/ply_z', dmg%stack%z, 'm')
+      call put_data1('strength/ply_angle', dmg%stack%angle, 'deg')
+      call put_data('strength/damage_map', dmg%fi_max, '-')
+      if (stat == 0) call h5io_write(rf%fid, 'strength/damage_mode', dmg%mode_max, stat, why)
+      call put_data('strength/onset_time', dmg%onset_time, 's')
+
+      allocate (sigma(5, 2, dmg%nply, dmg%npoint), fi(2, dmg%nply, dmg%npoint))
+      call damage_stresses(dmg, model, dmg%d_peak, sigma, fi)
+      if (stat == 0) call h5io_group(rf%fid, 'strength/peak', stat, why)
+      if (stat == 0) call h5io_set_attr(rf%fid, 'strength/peak', 'step', dmg%peak_step, stat, why)
+      if (stat == 0) call h5io_set_attr(rf%fid, 'strength/peak', 'time', dmg%peak_time, stat, why)
+      call put_text('strength/peak', 'time_units', 's')
+      if (stat == 0) call h5io_set_attr(rf%fid, 'strength/peak', 'force', dmg%peak_force, stat, why)
+      call put_text('strength/peak', 'force_units', 'N')
+      do c = 1, 5
+         call put_data('strength/peak/' // trim(comp(c)), reshape(sigma(c, :, :, :), [2*dmg%nply, dmg%npoint]), 'Pa')
+      end do
+      call put_data('strength/peak/failure_index', reshape(fi, [2*dmg%nply, dmg%npoint]), '-')
+      if (stat /= 0) errmsg = rf%path // ': /strength: ' // trim(why)
+
+   contains
+
+      subroutine put_text(obj, name, value)
+         character(len=*), intent(in) :: obj, name, value
+         if (stat == 0) call h5io_set_attr(rf%fid, obj, name, value, stat, why)
+      end subroutine put_text
+
+      subroutine put_data(name, x, units)
+         character(len=*), intent(in) :: name, units
+         real(dp), intent(in) :: x(:,:)
+         if (stat == 0) call h5io_write(rf%fid, name, x, stat, why)
+         call put_text(name, 'units', units)
+      end subroutine put_data
+
+      subroutine put_data1(name, x, units)
+         character(len=*), intent(in) :: name, units
+         real(dp), intent(in) :: x(:)
+         if (stat == 0) call h5io_write(rf%fid, name, x, stat, why)
+         call put_text(name, 'units', units)
+      end subroutine put_data1
+
+   end subroutine damage_write
+
+end module damage_record

@@ -1,0 +1,69 @@
+!> What the program says on the terminal before any work: the usage
+!> (impact --help), and the echo of the run (after Bathe's STAP: every
+!> value of the deck with its symbol and unit, the derived sizes, the
+!> laminate, and the scene report of src/model/scene_model.f90).
+module run_report
+   use deck_schema, only: deck_t, deck_groups
+   use deck_echo, only: echo_deck
+   use plate_model, only: model_t
+   use global_matrix, only: global_bandwidth, global_stored_entries
+   use scene_model, only: write_scene_report
+   implicit none
+   private
+   public :: echo_model, usage, usage_line
+
+   !> The usage in one line: the first of impact --help, and what a wrong
+   !> command line gets after its message.
+   character(len=*), parameter :: usage_line = 'usage: impact [options] [deck.nml]'
+
+contains
+
+   !> The echo of the effective input and the derived sizes.
+   subroutine echo_model(deck, model, u)
+      type(deck_t), intent(in) :: deck      !< the effective deck
+      type(model_t), intent(in) :: model    !< the model built from it
+      integer, intent(in) :: u              !< open formatted unit
+      write (u, '(a)') 'impact: low-velocity impact of a composite laminate (Choi, Hong & Lee 1991)'
+      call echo_deck(deck, u, '')
+      write (u, '(a,i0,a,i0,a,i0,a,i0,a,i0)') 'model: nodes ', model%msh%nnode, ', elements ', &
+         model%msh%nelem, ', equations ', model%msh%neq, ', half-bandwidth ', &
+         global_bandwidth(model%mass), ', stored entries ', global_stored_entries(model%mass)
+      write (u, '(a)') 'model: transverse shear ' // trim(model%shear_rule) // ', contact load ' // deck%contact_load
+      write (u, '(a,3es12.4)') 'laminate: A11 A22 A66 (N/m)  ', model%lmt%a(1,1), model%lmt%a(2,2), model%lmt%a(3,3)
+      write (u, '(a,4es12.4)') 'laminate: D11 D22 D66 D16 (N m) ', model%lmt%d(1,1), model%lmt%d(2,2), &
+         model%lmt%d(3,3), model%lmt%d(1,3)
+      write (u, '(a,2es12.4)') 'laminate: Abar44 Abar55 (N/m) ', model%lmt%as(1,1), model%lmt%as(2,2)
+      write (u, '(a,3es12.4)') 'laminate: P (kg/m^2), R (kg/m), I (kg) ', model%lmt%p, model%lmt%r, model%lmt%i
+      call write_scene_report(model%scene, u)
+   end subroutine echo_model
+
+   !> impact --help: the usage, the options and the deck's groups.
+   subroutine usage(u)
+      integer, intent(in) :: u              !< open formatted unit
+      integer :: g
+      character(len=:), allocatable :: groups
+      groups = ''
+      do g = 1, size(deck_groups)
+         groups = groups // ' &' // trim(deck_groups(g))
+      end do
+      write (u, '(a)') usage_line // '      (no deck: the deck is read from standard input)'
+      write (u, '(a)') ''
+      write (u, '(a)') 'Nonlinear low-velocity impact of a composite laminate (Choi, Hong & Lee 1991).'
+      write (u, '(a)') ''
+      write (u, '(a)') 'options:'
+      write (u, '(a)') '  --check              read, echo, build and factor; stop before the time loop (a data check)'
+      write (u, '(a)') '  --overwrite          replace the results of an earlier run with the same prefix'
+      write (u, '(a)') '  --set group.var=val  set a deck variable after reading the deck (repeatable),'
+      write (u, '(a)') '                       checked like the deck: --set analysis.dt=1e-6 --set mesh.nx=18'
+      write (u, '(a)') '  --trace STEP[,STEP]  print every box of the flowchart (Fig. 3) for those time steps'
+      write (u, '(a)') '  --schema             the deck''s variables as tab-separated lines (for tools)'
+      write (u, '(a)') '  --deck-table         the deck''s variables as the README''s Markdown table'
+      write (u, '(a)') '  --version            the version this program was built from'
+      write (u, '(a)') '  --help               this text'
+      write (u, '(a)') 'options may stand before or after the deck; one deck only'
+      write (u, '(a)') ''
+      write (u, '(a)') 'deck groups:' // groups
+      write (u, '(a)') 'every variable, its unit, default and meaning: README.md, "The deck" (or impact --deck-table)'
+   end subroutine usage
+
+end module run_report

@@ -1,0 +1,117 @@
+!> The C library as the program calls it (ISO C binding), in one place:
+!> the interfaces of its functions and the layouts of the structs they
+!> fill, those of Linux on a 64-bit machine (glibc), grouped by header.
+!> What the calls mean is said where they are made: src/system/file_system.f90
+!> (files and directories), src/system/system_limits.f90 (what the machine offers
+!> a run) and src/system/signal_stop.f90 (signals). Paths go in as C strings
+!> (with a terminating c_null_char).
+module c_library
+   use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_ptr, c_funptr, c_int64_t
+   implicit none
+   private
+   public :: statvfs_t, rlimit_t
+   public :: c_fopen, c_fclose, c_fileno, c_rename, c_lseek, c_truncate, c_sysconf, c_mkdir, c_flock, &
+             c_statvfs, c_getrlimit, c_signal
+
+   !> struct statvfs (<sys/statvfs.h>): eleven unsigned longs (read as
+   !> signed: sizes below 2^63) and six ints.
+   type, bind(c) :: statvfs_t
+      integer(c_long) :: f_bsize, f_frsize, f_blocks, f_bfree, f_bavail, f_files, f_ffree, f_favail, &
+                         f_fsid, f_flag, f_namemax
+      integer(c_int) :: f_spare(6)
+   end type statvfs_t
+
+   !> struct rlimit (<sys/resource.h>): two rlim_t, unsigned long on Linux.
+   type, bind(c) :: rlimit_t
+      integer(c_long) :: rlim_cur, rlim_max
+   end type rlimit_t
+
+   interface
+      ! <stdio.h>
+      !> FILE *fopen(const char *path, const char *mode)
+      function c_fopen(path, mode) bind(c, name='fopen') result(stream)
+         import :: c_char, c_ptr
+         character(kind=c_char), intent(in) :: path(*), mode(*)
+         type(c_ptr) :: stream
+      end function c_fopen
+      !> int fclose(FILE *stream)
+      function c_fclose(stream) bind(c, name='fclose') result(r)
+         import :: c_ptr, c_int
+         type(c_ptr), value :: stream
+         integer(c_int) :: r
+      end function c_fclose
+      !> int fileno(FILE *stream)
+      function c_fileno(stream) bind(c, name='fileno') result(fd)
+         import :: c_ptr, c_int
+         type(c_ptr), value :: stream
+         integer(c_int) :: fd
+      end function c_fileno
+      !> int rename(const char *old, const char *new)
+      function c_rename(old, new) bind(c, name='rename') result(r)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: old(*), new(*)
+         integer(c_int) :: r
+      end function c_rename
+      ! <unistd.h>
+      !> off_t lseek(int fd, off_t offset, int whence)  (off_t: 64 bits)
+      function c_lseek(fd, offset, whence) bind(c, name='lseek') result(r)
+         import :: c_int, c_int64_t
+         integer(c_int), value :: fd, whence
+         integer(c_int64_t), value :: offset
+         integer(c_int64_t) :: r
+      end function c_lseek
+      !> int truncate(const char *path, off_t length) (off_t: 64 bits)
+      function c_truncate(path, length) bind(c, name='truncate') result(r)
+         import :: c_int, c_char, c_int64_t
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int64_t), value :: length
+         integer(c_int) :: r
+      end function c_truncate
+      !> long sysconf(int name)
+      function c_sysconf(name) bind(c, name='sysconf') result(r)
+         import :: c_int, c_long
+         integer(c_int), value :: name
+         integer(c_long) :: r
+      end function c_sysconf
+      ! <sys/stat.h>
+      !> int mkdir(const char *path, mode_t mode)
+      function c_mkdir(path, mode) bind(c, name='mkdir') result(r)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int), value :: mode
+         integer(c_int) :: r
+      end function c_mkdir
+      ! <sys/file.h>
+      !> int flock(int fd, int operation)
+      function c_flock(fd, operation) bind(c, name='flock') result(r)
+         import :: c_int
+         integer(c_int), value :: fd, operation
+         integer(c_int) :: r
+      end function c_flock
+      ! <sys/statvfs.h>
+      !> int statvfs(const char *path, struct statvfs *buf)
+      function c_statvfs(path, buf) bind(c, name='statvfs') result(r)
+         import :: c_int, c_char, statvfs_t
+         character(kind=c_char), intent(in) :: path(*)
+         type(statvfs_t), intent(out) :: buf
+         integer(c_int) :: r
+      end function c_statvfs
+      ! <sys/resource.h>
+      !> int getrlimit(int resource, struct rlimit *rlim)
+      function c_getrlimit(resource, rlim) bind(c, name='getrlimit') result(r)
+         import :: c_int, rlimit_t
+         integer(c_int), value :: resource
+         type(rlimit_t), intent(out) :: rlim
+         integer(c_int) :: r
+      end function c_getrlimit
+      ! <signal.h>
+      !> sighandler_t signal(int signum, sighandler_t handler)
+      function c_signal(signum, handler) bind(c, name='signal') result(previous)
+         import :: c_int, c_funptr
+         integer(c_int), value :: signum
+         type(c_funptr), value :: handler
+         type(c_funptr) :: previous
+      end function c_signal
+   end interface
+
+end module c_library
