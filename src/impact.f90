@@ -21,11 +21,11 @@ program impact
    use plate_model, only: model_t, build_model, mass_times
    use plate_solver, only: solver_t, solver_init, plate_solve
    use contact_iteration, only: contact_iteration_t, contact_area, contact_start, contact_next, contact_cut, &
-      contact_converged, contact_report
-   use contact_law, only: contact_history_t, contact_force, contact_commit
+      contact_indentation, contact_outcome, contact_report
+   use contact_law, only: contact_history_t, contact_commit
    use contact_load, only: pattern_load, pattern_mean
-   use fast_scheme, only: fast_step, predicted_displacements
-   use newmark, only: newmark_t, plate_state_t, impactor_state_t, newmark_init, newmark_predictor, &
+   use fast_scheme, only: fast_step
+   use newmark, only: newmark_t, plate_state_t, impactor_t, newmark_init, newmark_predictor, &
       newmark_update, impactor_moved
    use run_recorder, only: record_t, record_open, record_step, record_close
    use step_trace, only: trace_t, trace_parse, trace_step, trace_iteration
@@ -35,25 +35,32 @@ program impact
    use fixed_point, only: fp_report
    use other_analyses, only: run_other_analysis
    use program_exit, only: exit_program
-   use signal_stop, only: catch_stop_signals, keep_file_size_errors
+   use signal_stop, only: catch_stop_signals, stop_signal_caught, keep_file_size_errors
+   use number_text, only: int_str
    implicit none
 
-   type(deck_t) :: deck
-   type(model_t) :: model
-   type(solver_t) :: solver
-   type(newmark_t) :: nm
-   type(plate_state_t) :: plate
-   type(impactor_state_t) :: imp, imp_new
-   type(contact_history_t) :: hist
-   type(contact_iteration_t) :: cit
-   type(record_t) :: rec
-   type(trace_t) :: tr
-   type(results_claim_t) :: claim
-   real(dp), allocatable :: mb(:), d_new(:)
-   real(dp) :: t, cpu0, cpu1
-   integer :: stat, step, nstep, ic
-   logical :: ok, solved, check_only
-   character(len=msg_len) :: errmsg
+   type(deck_t) :: deck                    ! the input deck, as read and checked
+   type(model_t) :: model                  ! laminate, mesh, [M], [K_L], contact law and load
+   type(solver_t) :: solver                ! K_L + 4/dt^2 M factored, and the eq. (19) iteration's state
+   type(newmark_t) :: nm                   ! Newmark's constants: the time step dt, 4/dt^2, 4/dt
+   type(plate_state_t) :: plate            ! {D}, {V}, {A} at t
+   type(impactor_t) :: imp                 ! the impactor (mass; position, velocity, force) at t
+   type(impactor_t) :: imp_new             ! the impactor at t+dt under the assumed force
+   type(contact_history_t) :: hist         ! the contact's committed history (loading, unloading, alpha_m, F_m)
+   type(contact_iteration_t) :: cit        ! the step's contact iteration (Fig. 3, the outer loop)
+   type(record_t) :: rec                   ! the run's recorder: history rows, HDF5, summary maxima, warnings
+   type(trace_t) :: tr                     ! --trace: the steps whose iterations are printed
+   type(results_claim_t) :: claim          ! the result files this run owns (claimed before any work)
+   real(dp), allocatable :: mb(:)          ! M {b} of eq. (19)-(20), fixed within a step
+   real(dp), allocatable :: d_new(:)       ! {D} at t+dt, the iterate of eq. (19)
+   real(dp) :: t                           ! the time at the end of the step (s)
+   real(dp) :: cpu0, cpu1                  ! cpu time at the start and now (s)
+   integer :: step, nstep                  ! the time step, and their number
+   integer :: ic                           ! the contact iteration of the step
+   integer :: stat                         ! 0, or a failure of the call just made
+   logical :: ok                           ! the step's iterations converged (eq. 17, 18)
+   logical :: check_only                   ! --check: the data check, no time steps
+   character(len=msg_len) :: errmsg        ! the failure's message
 
    ! =====================================================================
    ! Input data: the deck (a file, or standard input), the command line's
@@ -83,7 +90,7 @@ program impact
    ! Newmark constants; the left-hand matrix of eq. (19), K_L + 4/dt^2 M,
    ! factored once (Akay's constant-coefficient scheme)
    ! =====================================================================
-   nm = newmark_init(deck%dt)
+   nm = newmark_init(deck%dt)          ! from here on dt lives in nm
    call solver_init(model, nm, solver, stat, errmsg)
    if (stat /= 0) call fail(errmsg)
    call cpu_time(cpu1)
@@ -99,72 +106,68 @@ program impact
    ! =====================================================================
    allocate (plate%d(model%msh%neq), plate%v(model%msh%neq), plate%a(model%msh%neq), source=0.0_dp)
    allocate (mb(model%msh%neq), d_new(model%msh%neq))
-   imp = impactor_state_t(w=0.0_dp, v=deck%velocity, f=0.0_dp)
+   imp = impactor_t(mass=deck%mass, w=0.0_dp, v=deck%velocity, f=0.0_dp)
+   cit = contact_iteration_t(update=deck%force_update, cr1=deck%cr1)
    call contact_area(model, hist, imp%f, cit%pattern)
-   nstep = nint(deck%t_end/deck%dt)
+   nstep = nint(deck%t_end/nm%dt)
    call record_open(rec, deck, model, solver, imp, stat, errmsg)
    if (stat /= 0) call fail_in_run(errmsg, 'failed while opening the results')
 
    ! =====================================================================
-   ! Time integration (SIGTERM, SIGINT: stop after the step, src/system/signal_stop.f90)
+   ! Time integration (Fig. 3), the paper's scheme first; scheme 'fast' is
+   ! its one-call alternative (src/scheme/fast_scheme.f90)
    ! =====================================================================
    call catch_stop_signals()
    time_steps: do step = 1, nstep
-      t = real(step, dp)*deck%dt
+      t = real(step, dp)*nm%dt
       call trace_step(tr, step, t, imp, .false.)
       ! -- {b} of eq. (20) and M{b}, fixed for the whole step
       call mass_times(model, newmark_predictor(nm, plate%d, plate%v, plate%a), mb)
-
-      if (deck%scheme == 'fast') then
-         ! -- the one-call alternative: the contact equation solved inside each eq. (19) iteration
-         d_new = predicted_displacements(deck%dt, plate%d, plate%v)
-         cit%f_assum = imp%f
-         call fast_step(solver, model, mb, plate%d, imp, deck%dt, hist, d_new, cit, ok, stat, errmsg)
-         call check_solver('the nonlinear iteration (eq. 19) with the contact equation')
-         imp_new = impactor_moved(deck%mass, deck%dt, imp, cit%f_assum)
-         ic = 1
-         call trace_iteration(tr, step, ic, cit, solver, imp_new, d_new, hist, deck%scheme)
-      else
-         ! -- Fig. 3: assume the contact force, the plate not reacting at first (section 2.3)
-         call contact_start(cit, model, hist, imp, pattern_mean(cit%pattern, plate%d), deck%dt, deck%force_update)
-         d_new = plate%d;  solved = .false.
+      if (deck%scheme == 'paper') then
+         ! -- assume the contact force, the plate not reacting at first (section 2.3)
+         call contact_start(cit, model, hist, nm, imp, pattern_mean(cit%pattern, plate%d))
+         d_new = plate%d
          contact_iterations: do ic = 1, deck%max_contact_iter
+            cit%iterations = ic
             ! -- the plate under the assumed force over its contact area: eq. (19) until eq. (18)
             call plate_solve(solver, model, mb + pattern_load(cit%pattern, cit%f_assum, model%msh%neq), &
-                             plate%d, d_new, ok, stat, errmsg)
+                             plate%d, d_new, cit%solved, stat, errmsg)
             if (stat /= 0) call fail_in_run('plate solution: ' // errmsg)
-            solved = ok
-            if (.not. ok) then                           ! eq. (19) failed: the force was too high
-               call contact_cut(cit, model, hist)
-               d_new = plate%d
+            if (.not. cit%solved) then                   ! eq. (19) failed: the force was too high
+               call contact_cut(cit, model, hist);  d_new = plate%d
                cycle contact_iterations
             end if
             ! -- the impactor under the same force, eq. (21)
-            imp_new = impactor_moved(deck%mass, deck%dt, imp, cit%f_assum)
-            ! -- the indentation, eq. (13), and the law's force, eq. (11)-(12)
-            cit%alpha = imp_new%w - pattern_mean(cit%pattern, d_new)
-            cit%f_cont = contact_force(model%law, hist, cit%alpha)
+            imp_new = impactor_moved(nm, imp, cit%f_assum)
+            ! -- the indentation, eq. (13), the law's force, eq. (11)-(12), and eq. (17)
+            call contact_indentation(cit, model, hist, imp_new, d_new)
             call trace_iteration(tr, step, ic, cit, solver, imp_new, d_new, hist, deck%scheme)
-            ! -- eq. (17): the forces agree, or a new assumed force
-            if (contact_converged(cit%f_assum, cit%f_cont, deck%cr1, hist%f_m)) exit contact_iterations
+            if (cit%converged) exit contact_iterations
+            ! -- a new assumed force
             if (ic < deck%max_contact_iter) call contact_next(cit, model, hist)
          end do contact_iterations
-         ok = ic <= deck%max_contact_iter
-         ic = min(ic, deck%max_contact_iter)
-         if (.not. ok .and. (deck%force_update /= 'plain' .or. .not. solved)) call fail_in_run('time step did not converge: ' &
-            // 'the contact iteration (eq. 17): ' // contact_report(cit, deck%cr1, ic))
-         if (.not. ok) imp_new%f = cit%f_cont     ! 'plain', the plate solved: F_assum <- F_cont, on to the next step
+         ! -- eq. (17) met, or 'plain' goes on with F_cont; else the run stops
+         call contact_outcome(cit, imp_new, ok)
+         if (.not. ok) call fail_in_run('time step did not converge: the contact iteration (eq. 17): ' &
+                                        // contact_report(cit))
+      else
+         ! -- scheme 'fast': the contact equation solved inside each eq. (19) iteration
+         call fast_step(solver, model, nm, mb, plate, imp, hist, d_new, imp_new, cit, ok, stat, errmsg)
+         call check_solver('the nonlinear iteration (eq. 19) with the contact equation')
+         call trace_iteration(tr, step, 1, cit, solver, imp_new, d_new, hist, deck%scheme)
       end if
-
       ! -- accept the step: Newmark update (eq. 20), the impactor, the contact history
       call newmark_update(nm, plate%d, d_new, plate%v, plate%a)
       plate%d = d_new
       imp = imp_new
-      call record_step(rec, step, model, solver, plate, imp, hist, cit, ic, ok, stat, errmsg)
+      call record_step(rec, step, model, solver, plate, imp, hist, cit, cit%iterations, cit%converged, stat, errmsg)
       if (stat /= 0) call fail_in_run(errmsg)
       call contact_commit(model%law, hist, cit%alpha)
       call trace_step(tr, step, t, imp, .true.)
+      ! -- a divergence, or a warning with stop_on_warning; a stop signal (SIGTERM, SIGINT)
       if (rec%stop) call finish(rec%stop_status, rec%exit_status)
+      if (stop_signal_caught() > 0) call finish('stopped by signal ' // int_str(stop_signal_caught()) &
+                                                // ' at step ' // int_str(step), 128 + stop_signal_caught())
    end do time_steps
 
    ! =====================================================================

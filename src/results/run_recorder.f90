@@ -40,7 +40,7 @@ module run_recorder
    use contact_iteration, only: contact_iteration_t, contact_area
    use contact_law, only: contact_history_t, contact_branch, law_tangent, branch_none
    use contact_load, only: load_pattern_t, pattern_mean
-   use newmark, only: plate_state_t, impactor_state_t, impactor_compliance
+   use newmark, only: plate_state_t, impactor_t, impactor_compliance, newmark_init
    use scene_model, only: theory_warning, bending_deflection
    use result_files, only: column_t, history_columns, nhist, summary_item_t, summary_real, summary_integer, &
       summary_text, open_columns, write_history_row, reserve_summary, write_summary_file, col_time, col_force, &
@@ -93,7 +93,7 @@ module run_recorder
       ! -- energies (J)
       real(dp) :: e0 = 0, contact_work = 0, contact_energy = 0
       ! -- the previous step, for the work of the contact force
-      type(impactor_state_t) :: imp_prev
+      type(impactor_t) :: imp_prev
       type(load_pattern_t) :: pattern_prev
       real(dp), allocatable :: d_prev(:)
       ! -- the summary's figures
@@ -123,7 +123,7 @@ contains
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(model_t), intent(in) :: model            !< the model
       type(solver_t), intent(inout) :: solver       !< the solver (one response for c_plate)
-      type(impactor_state_t), intent(in) :: imp     !< the impactor at t = 0
+      type(impactor_t), intent(in) :: imp     !< the impactor at t = 0
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(contact_history_t) :: fresh
@@ -142,7 +142,7 @@ contains
       rec%imp_prev = imp
       rec%d_prev = [(0.0_dp, c = 1, model%msh%neq)]
       call contact_area(model, fresh, 0.0_dp, rec%pattern_prev)
-      rec%c_impactor = impactor_compliance(deck%mass, deck%dt)
+      rec%c_impactor = impactor_compliance(newmark_init(deck%dt), imp)
       if (deck%scheme == 'paper') then
          call contact_response(solver, rec%pattern_prev, stat, errmsg)
          if (stat /= 0) return
@@ -189,7 +189,7 @@ contains
       type(model_t), intent(in) :: model                 !< the model
       type(solver_t), intent(in) :: solver               !< the solver (its counters)
       type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_state_t), intent(in) :: imp          !< the impactor at t + dt
+      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
       type(contact_history_t), intent(in) :: hist        !< the contact history before this step's commit
       type(contact_iteration_t), intent(in) :: cit       !< the step's contact force, indentation, area
       integer, intent(in) :: ic                          !< contact iterations of the step
@@ -378,7 +378,7 @@ contains
       type(solver_t), intent(in) :: solver          !< the solver (its counters)
       character(len=*), intent(in) :: status        !< 'completed', 'failed at step N (t = ...)', ...
       type(contact_history_t), intent(in) :: hist   !< the contact history at the end
-      type(impactor_state_t), intent(in) :: imp     !< the impactor at the end
+      type(impactor_t), intent(in) :: imp     !< the impactor at the end
       real(dp), intent(in) :: cpu_s                 !< cpu time of the run (s)
       integer, intent(in) :: unit                   !< where the last words go (standard output)
       integer, intent(out) :: stat                  !< 0 on success

@@ -11,7 +11,7 @@ module step_trace
    use contact_iteration, only: contact_iteration_t, contact_converged
    use contact_law, only: contact_history_t, contact_branch
    use contact_load, only: pattern_mean
-   use newmark, only: impactor_state_t
+   use newmark, only: impactor_t
    implicit none
    private
    public :: trace_t, trace_parse, trace_step, trace_iteration
@@ -57,7 +57,7 @@ contains
       type(trace_t), intent(in) :: tr
       integer, intent(in) :: step              !< the step
       real(dp), intent(in) :: t                !< its time t + dt (s)
-      type(impactor_state_t), intent(in) :: imp    !< the impactor at t (done false) or t + dt (true)
+      type(impactor_t), intent(in) :: imp    !< the impactor at t (done false) or t + dt (true)
       logical, intent(in) :: done
       if (.not. traced(tr, step)) return
       if (.not. done) then
@@ -76,7 +76,7 @@ contains
       integer, intent(in) :: step, ic          !< the step, the contact iteration
       type(contact_iteration_t), intent(in) :: cit   !< assumed force, area, indentation, law's force
       type(solver_t), intent(in) :: solver     !< the eq. (19) iterations of the plate solution
-      type(impactor_state_t), intent(in) :: imp_new  !< the impactor moved under the assumed force
+      type(impactor_t), intent(in) :: imp_new  !< the impactor moved under the assumed force
       real(dp), intent(in) :: d(:)             !< the plate solution
       type(contact_history_t), intent(in) :: hist    !< committed contact history
       character(len=*), intent(in) :: scheme   !< 'paper' or 'fast'

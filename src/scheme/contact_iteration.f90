@@ -22,13 +22,13 @@
 module contact_iteration
    use kinds, only: dp
    use plate_model, only: model_t
-   use newmark, only: impactor_state_t, impactor_advance
+   use newmark, only: newmark_t, impactor_t, impactor_moved
    use contact_law, only: contact_history_t, contact_force, law_indentation
-   use contact_load, only: load_pattern_t, load_pattern, load_hertz
+   use contact_load, only: load_pattern_t, load_pattern, load_hertz, pattern_mean
    implicit none
    private
    public :: contact_iteration_t, force_bracket_t, contact_start, contact_next, contact_cut, contact_area, &
-             contact_converged, contact_report, bracket_update
+             contact_indentation, contact_converged, contact_outcome, contact_report, bracket_update
 
    !> The contact iteration's knowledge of the root of r(F) = F - F_cont(F).
    type :: force_bracket_t
@@ -42,7 +42,11 @@ module contact_iteration
 
    !> One step's contact iteration.
    type :: contact_iteration_t
-      character(len=16) :: update = 'bracketed'   !< &analysis force_update
+      character(len=16) :: update = 'bracketed'   !< &analysis force_update (set once, before the steps)
+      real(dp) :: cr1 = 0.002_dp      !< C_r1 of eq. (17) (&analysis cr1; set once, before the steps)
+      integer :: iterations = 0       !< iterations made in this step (plate solutions tried)
+      logical :: solved = .false.     !< the last plate solution (eq. 19) converged
+      logical :: converged = .false.  !< eq. (17) was met
       real(dp) :: f_assum = 0.0_dp    !< the assumed contact force on the whole plate (N)
       real(dp) :: f_cont = 0.0_dp     !< the law's force at the indentation it gave (N)
       real(dp) :: alpha = 0.0_dp      !< that indentation, eq. (13) (m)
@@ -67,25 +71,52 @@ contains
    !> The first assumed force of a step (§2.3): the impactor indents as if the
    !> plate did not react, w_plate staying at its value at t and the impactor
    !> moving on under the force of t alone; and its contact area.
-   subroutine contact_start(cit, model, hist, imp, w_plate, dt, update)
+   subroutine contact_start(cit, model, hist, nm, imp, w_plate)
       type(contact_iteration_t), intent(inout) :: cit  !< the step's iteration (its pattern kept: a cache)
       type(model_t), intent(in) :: model             !< model (law, contact load)
       type(contact_history_t), intent(in) :: hist    !< committed contact history
-      type(impactor_state_t), intent(in) :: imp      !< impactor at t
+      type(newmark_t), intent(in) :: nm              !< Newmark constants (the step dt)
+      type(impactor_t), intent(in) :: imp            !< impactor at t
       real(dp), intent(in) :: w_plate                !< plate deflection under the impactor at t (m)
-      real(dp), intent(in) :: dt                     !< time step (s)
-      character(len=*), intent(in) :: update         !< &analysis force_update
-      real(dp) :: w_new, v_new
+      type(impactor_t) :: imp_free
       ! a fresh iteration but for the pattern, whose polynomials serve while the
       ! contact radius stays in their interval (src/model/contact_load.f90)
-      cit%update = update
+      cit%iterations = 0;  cit%solved = .false.;  cit%converged = .false.
       cit%f_cont = 0.0_dp;  cit%alpha = 0.0_dp
       cit%br = force_bracket_t()
       cit%fell_back = .false.;  cit%cut = .false.
-      call impactor_advance(model%impactor_mass, dt, imp%w, imp%v, imp%f, 0.0_dp, w_new, v_new)
-      cit%f_assum = contact_force(model%law, hist, w_new - w_plate)
+      imp_free = impactor_moved(nm, imp, 0.0_dp)      ! eq. (21) under the force of t alone
+      cit%f_assum = contact_force(model%law, hist, imp_free%w - w_plate)
       call contact_area(model, hist, cit%f_assum, cit%pattern)
    end subroutine contact_start
+
+   !> The indentation of the moved impactor into the plate solved under
+   !> f_assum, eq. (13), and the law's force at it, eq. (11)-(12); then the
+   !> test of eq. (17) (contact_converged) on the two forces.
+   subroutine contact_indentation(cit, model, hist, imp_new, d_new)
+      type(contact_iteration_t), intent(inout) :: cit  !< the iteration: alpha, f_cont, converged out
+      type(model_t), intent(in) :: model               !< model (law)
+      type(contact_history_t), intent(in) :: hist      !< committed contact history
+      type(impactor_t), intent(in) :: imp_new          !< the impactor at t+dt under f_assum
+      real(dp), intent(in) :: d_new(:)                 !< the plate at t+dt under f_assum
+      cit%alpha = imp_new%w - pattern_mean(cit%pattern, d_new)
+      cit%f_cont = contact_force(model%law, hist, cit%alpha)
+      cit%converged = contact_converged(cit%f_assum, cit%f_cont, cit%cr1, hist%f_m)
+   end subroutine contact_indentation
+
+   !> The step's outcome after the contact loop: accepted when eq. (17) was
+   !> met. With force_update = 'plain' (the paper's words, module header) a
+   !> step that did not meet it but whose plate was solved is accepted all
+   !> the same with the law's last force, F_assum <- F_cont, as the
+   !> impactor's force at t+dt (counted as unconverged in the summary). Any
+   !> other step is not accepted: the run stops with contact_report.
+   pure subroutine contact_outcome(cit, imp_new, accepted)
+      type(contact_iteration_t), intent(in) :: cit   !< the iteration at its end
+      type(impactor_t), intent(inout) :: imp_new     !< the impactor at t+dt: its force set for 'plain'
+      logical, intent(out) :: accepted               !< the step is accepted
+      accepted = cit%converged .or. (cit%update == 'plain' .and. cit%solved)
+      if (accepted .and. .not. cit%converged) imp_new%f = cit%f_cont
+   end subroutine contact_outcome
 
    !> The next assumed force after an iteration that did not meet eq. (17)
    !> (module header: force_update), and its contact area.
@@ -207,17 +238,15 @@ contains
 
    !> The diagnostic of a contact iteration that did not converge: the last
    !> forces, their eq. (17) residual against C_r1, and the bracket.
-   function contact_report(cit, cr1, iterations) result(text)
+   function contact_report(cit) result(text)
       type(contact_iteration_t), intent(in) :: cit  !< the iteration at its end
-      real(dp), intent(in) :: cr1                   !< tolerance C_r1 of eq. (17)
-      integer, intent(in) :: iterations             !< iterations made
       character(len=:), allocatable :: text
       character(len=320) :: buf
       real(dp), parameter :: collapsed = 1.0e-9_dp   ! relative width of a bracket that has collapsed
       write (buf, '(a,i0,a,es12.5,a,es12.5,a,es10.3,a,es10.3,a,es16.9,a,es16.9,a)') 'no convergence in ', &
-         iterations, ' iterations (max_contact_iter); F_assum = ', cit%f_assum, ' N, F_cont = ', cit%f_cont, &
+         cit%iterations, ' iterations (max_contact_iter); F_assum = ', cit%f_assum, ' N, F_cont = ', cit%f_cont, &
          ' N, |F_assum - F_cont| / F_assum = ', abs(cit%f_assum - cit%f_cont)/max(abs(cit%f_assum), tiny(1.0_dp)), &
-         ' against C_r1 = ', cr1, '; the root lies in [', cit%br%lo, ', ', min(cit%br%hi, huge(1.0_dp)), '] N'
+         ' against C_r1 = ', cit%cr1, '; the root lies in [', cit%br%lo, ', ', min(cit%br%hi, huge(1.0_dp)), '] N'
       text = trim(buf)
       if (cit%br%blind_hi) then
          text = text // '; the plate solution (eq. 19) failed under the upper end of the bracket, and the ' // &

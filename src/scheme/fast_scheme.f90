@@ -59,7 +59,7 @@ module fast_scheme
    use contact_iteration, only: contact_iteration_t, contact_area
    use contact_law, only: contact_history_t, solve_contact_equation
    use contact_load, only: pattern_mean, load_point
-   use newmark, only: impactor_state_t, impactor_advance, impactor_compliance
+   use newmark, only: newmark_t, plate_state_t, impactor_t, impactor_moved, impactor_compliance
    use fixed_point, only: fp_start
    implicit none
    private
@@ -79,42 +79,48 @@ contains
    !> dt^2/2 A_t, is left out: it extrapolates the accelerations of the modes
    !> the step does not resolve (omega dt >> 1 on fine meshes) and needs more
    !> iterations (docs/PERFORMANCE.md).
-   pure function predicted_displacements(dt, d, v) result(d_pred)
-      real(dp), intent(in) :: dt       !< time step (s)
-      real(dp), intent(in) :: d(:)     !< displacements at t (m, rad)
-      real(dp), intent(in) :: v(:)     !< velocities at t (m/s, rad/s)
+   pure function predicted_displacements(nm, d, v) result(d_pred)
+      type(newmark_t), intent(in) :: nm  !< Newmark constants (the step dt)
+      real(dp), intent(in) :: d(:)       !< displacements at t (m, rad)
+      real(dp), intent(in) :: v(:)       !< velocities at t (m/s, rad/s)
       real(dp) :: d_pred(size(d))
-      d_pred = d + dt*v
+      d_pred = d + nm%dt*v
    end function predicted_displacements
 
-   !> One time step of scheme = 'fast' (module header). cit%f_assum holds a
-   !> guess of the force on entry (the force at t) and the force at t+dt on
-   !> exit, equal to cit%f_cont; cit%alpha and cit%pattern are the step's.
-   !> The solver's contraction estimate is updated when the step measures it.
-   subroutine fast_step(solver, model, mb, d_t, imp, dt, hist, d, cit, converged, stat, errmsg)
+   !> One time step of scheme = 'fast' (module header), from the first
+   !> iterate predicted_displacements and the impactor's force at t as the
+   !> first guess. On exit imp_new is the impactor at t+dt with its force,
+   !> and cit the step's contact as the paper's iteration would leave it
+   !> after one iteration that met eq. (17): F_assum = F_cont, the
+   !> indentation alpha and the contact area. The solver's contraction
+   !> estimate is updated when the step measures it.
+   subroutine fast_step(solver, model, nm, mb, plate, imp, hist, d, imp_new, cit, converged, stat, errmsg)
       type(solver_t), intent(inout) :: solver          !< solver (counts solves, its columns grow)
       type(model_t), intent(in) :: model               !< model
+      type(newmark_t), intent(in) :: nm                !< Newmark constants (the step dt)
       real(dp), intent(in) :: mb(:)                    !< M {b} of eq. (19)-(20)
-      real(dp), intent(in) :: d_t(:)                   !< converged displacements at t
-      type(impactor_state_t), intent(in) :: imp        !< impactor at t
-      real(dp), intent(in) :: dt                       !< time step (s)
+      type(plate_state_t), intent(in) :: plate         !< the plate at t (converged)
+      type(impactor_t), intent(in) :: imp              !< impactor at t
       type(contact_history_t), intent(in) :: hist      !< committed contact history
-      real(dp), intent(inout) :: d(:)                  !< first iterate in, solution out
-      type(contact_iteration_t), intent(inout) :: cit  !< the force in and out, its indentation and area
+      real(dp), intent(out) :: d(:)                    !< the plate at t+dt
+      type(impactor_t), intent(out) :: imp_new         !< the impactor at t+dt, its force the step's
+      type(contact_iteration_t), intent(inout) :: cit  !< the step's contact (its pattern kept: a cache)
       logical, intent(out) :: converged                !< eq. (18) met
       integer, intent(out) :: stat                     !< 0 unless the solver failed
       character(len=*), intent(inout) :: errmsg        !< reason on failure
       integer, parameter :: max_passes = 50             ! contact passes (Hertz's area) of one iteration
       real(dp), parameter :: pass_tol = 1.0e-12_dp      ! relative change of the root that ends them
-      real(dp) :: rhs(size(d)), w_r0, v_r0, compliance, f, f_new, alpha, d_first(size(d)), f_first, alpha_first
+      real(dp) :: rhs(size(d)), w_r0, compliance, f, f_new, alpha, d_first(size(d)), f_first, alpha_first
       integer :: pass
       logical :: done, probing
 
+      d = predicted_displacements(nm, plate%d, plate%v)
       ! impactor position at t+dt (m) if the new force were zero, eq. (21)
-      call impactor_advance(model%impactor_mass, dt, imp%w, imp%v, imp%f, 0.0_dp, w_r0, v_r0)
+      imp_new = impactor_moved(nm, imp, 0.0_dp)
+      w_r0 = imp_new%w
       converged = .false.
       solver%iterations = 0
-      f = max(cit%f_assum, 0.0_dp)
+      f = max(imp%f, 0.0_dp)
       alpha = 0.0_dp
       f_first = f;  alpha_first = alpha
       call fp_start(solver%guard, size(d), solver%max_iter, solver%cr2)
@@ -130,7 +136,7 @@ contains
             call contact_response(solver, cit%pattern, stat, errmsg)
             if (stat /= 0) return
             ! the compliance of the contact equation (m/N): impactor, eq. (21), and plate under the pattern
-            compliance = impactor_compliance(model%impactor_mass, dt) + pattern_compliance(solver, cit%pattern)
+            compliance = impactor_compliance(nm, imp) + pattern_compliance(solver, cit%pattern)
             call solve_contact_equation(model%law, hist, w_r0 - pattern_mean(cit%pattern, rhs), compliance, &
                                         f_new, alpha)
             done = abs(f_new - f) <= pass_tol*max(f_new, f) .or. model%cload%kind == load_point
@@ -140,7 +146,7 @@ contains
          call contact_area(model, hist, f, cit%pattern)
          call add_pattern_response(solver, cit%pattern, f, rhs)
          ! -- eq. (18), also on the estimated next change (module header)
-         call iteration_end(solver, model, d_t, rhs, d, converged, done, stat, errmsg)
+         call iteration_end(solver, model, plate%d, rhs, d, converged, done, stat, errmsg)
          if (solver%iterations == 1) then
             d_first = rhs;  f_first = f;  alpha_first = alpha
          end if
@@ -152,7 +158,9 @@ contains
          if (done .or. stat /= 0) exit nonlinear_iterations
       end do nonlinear_iterations
       call measure_contraction(solver)
+      imp_new = impactor_moved(nm, imp, f)
       cit%f_assum = f;  cit%f_cont = f;  cit%alpha = alpha
+      cit%iterations = 1;  cit%solved = converged;  cit%converged = converged
    end subroutine fast_step
 
    !> theta^2 for the rate test of a step's first solution (module header):

@@ -18,10 +18,11 @@ module newmark
    use kinds, only: dp
    implicit none
    private
-   public :: newmark_t, plate_state_t, impactor_state_t, newmark_init, newmark_predictor, newmark_update, &
+   public :: newmark_t, plate_state_t, impactor_t, newmark_init, newmark_predictor, newmark_update, &
              impactor_advance, impactor_moved, impactor_compliance
 
-   !> The integration constants of a time step dt.
+   !> The integration constants of a time step dt: the one place the run's
+   !> time step lives once the deck is read.
    type :: newmark_t
       real(dp) :: dt = 0.0_dp   !< time step (s)
       real(dp) :: a0 = 0.0_dp   !< 4/dt^2 (1/s^2)
@@ -33,11 +34,14 @@ module newmark
       real(dp), allocatable :: d(:), v(:), a(:)
    end type plate_state_t
 
-   !> The rigid impactor: position (m, from first touch), velocity (m/s,
-   !> positive towards the plate) and the contact force (N) at the same time.
-   type :: impactor_state_t
-      real(dp) :: w = 0.0_dp, v = 0.0_dp, f = 0.0_dp
-   end type impactor_state_t
+   !> The rigid impactor (eq. 16, 21): its mass, and its position, velocity
+   !> and contact force at one time.
+   type :: impactor_t
+      real(dp) :: mass = 0.0_dp   !< m (kg)
+      real(dp) :: w = 0.0_dp      !< position from first touch (m), positive towards the plate
+      real(dp) :: v = 0.0_dp      !< velocity (m/s), positive towards the plate
+      real(dp) :: f = 0.0_dp      !< contact force at the same time (N)
+   end type impactor_t
 
 contains
 
@@ -90,23 +94,23 @@ contains
 
    !> The impactor at t+dt under the force f_new at t+dt, eq. (21); its force
    !> is f_new.
-   pure function impactor_moved(mass, dt, imp, f_new) result(imp_new)
-      real(dp), intent(in) :: mass                 !< impactor mass (kg)
-      real(dp), intent(in) :: dt                   !< time step (s)
-      type(impactor_state_t), intent(in) :: imp    !< the impactor at t
-      real(dp), intent(in) :: f_new                !< contact force at t+dt (N)
-      type(impactor_state_t) :: imp_new
-      call impactor_advance(mass, dt, imp%w, imp%v, imp%f, f_new, imp_new%w, imp_new%v)
+   pure function impactor_moved(nm, imp, f_new) result(imp_new)
+      type(newmark_t), intent(in) :: nm      !< constants (the step dt)
+      type(impactor_t), intent(in) :: imp    !< the impactor at t
+      real(dp), intent(in) :: f_new          !< contact force at t+dt (N)
+      type(impactor_t) :: imp_new
+      imp_new%mass = imp%mass
+      call impactor_advance(imp%mass, nm%dt, imp%w, imp%v, imp%f, f_new, imp_new%w, imp_new%v)
       imp_new%f = f_new
    end function impactor_moved
 
    !> The impactor's compliance over a step, dt^2/(4 m) (m/N): by eq. (21) its
    !> position at t+dt moves back by this much per newton of the force at t+dt.
-   pure function impactor_compliance(mass, dt) result(c)
-      real(dp), intent(in) :: mass     !< impactor mass (kg)
-      real(dp), intent(in) :: dt       !< time step (s)
+   pure function impactor_compliance(nm, imp) result(c)
+      type(newmark_t), intent(in) :: nm      !< constants (the step dt)
+      type(impactor_t), intent(in) :: imp    !< the impactor (its mass)
       real(dp) :: c
-      c = dt**2/(4.0_dp*mass)
+      c = nm%dt**2/(4.0_dp*imp%mass)
    end function impactor_compliance
 
 end module newmark
