@@ -34,8 +34,7 @@ program impact
    use result_files, only: results_claim_t, result_suffixes, claim_results, release_results
    use fixed_point, only: fp_report
    use other_analyses, only: run_other_analysis
-   use program_exit, only: exit_program
-   use signal_stop, only: catch_stop_signals, stop_signal_caught, keep_file_size_errors
+   use process_stop, only: catch_stop_signals, stop_signal_caught, keep_file_size_errors, exit_program
    use number_text, only: int_str
    implicit none
 

@@ -27,7 +27,7 @@ program h5export
    use kinds, only: dp, msg_len
    use hdf5_io, only: h5io_start, h5io_close
    use hdf5_read, only: h5io_open_read, h5io_get_attr, h5io_read
-   use program_exit, only: exit_program
+   use process_stop, only: exit_program
    implicit none
 
    !> Metres to millimetres.

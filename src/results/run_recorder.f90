@@ -11,7 +11,7 @@
 !>                 snapshots and the peak state in <prefix>.h5, warnings;
 !>                 sets rec%stop when the run must end here (a divergence,
 !>                 a warning with stop_on_warning, or a stop signal, SIGTERM
-!>                 or SIGINT, src/system/signal_stop.f90: status 'stopped by signal
+!>                 or SIGINT, src/system/process_stop.f90: status 'stopped by signal
 !>                 N at step M', exit status 128 + N)
 !>   record_close  at the end, or when a run fails: the summary, in
 !>                 <prefix>_summary.dat and /summary, with its status
@@ -51,7 +51,7 @@ module run_recorder
    use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_flush, &
       results_leave, results_finish
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
-   use signal_stop, only: stop_signal_caught
+   use process_stop, only: stop_signal_caught
    implicit none
    private
    public :: record_t, record_open, record_step, record_close

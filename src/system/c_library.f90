@@ -3,7 +3,7 @@
 !> fill, those of Linux on a 64-bit machine (glibc), grouped by header.
 !> What the calls mean is said where they are made: src/system/file_system.f90
 !> (files and directories), src/system/system_limits.f90 (what the machine offers
-!> a run) and src/system/signal_stop.f90 (signals). Paths go in as C strings
+!> a run) and src/system/process_stop.f90 (signals, the exit). Paths go in as C strings
 !> (with a terminating c_null_char).
 module c_library
    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_ptr, c_funptr, c_int64_t
@@ -11,7 +11,7 @@ module c_library
    private
    public :: statvfs_t, rlimit_t
    public :: c_fopen, c_fclose, c_fileno, c_rename, c_lseek, c_truncate, c_sysconf, c_mkdir, c_flock, &
-             c_statvfs, c_getrlimit, c_signal
+             c_statvfs, c_getrlimit, c_signal, c_exit
 
    !> struct statvfs (<sys/statvfs.h>): eleven unsigned longs (read as
    !> signed: sizes below 2^63) and six ints.
@@ -112,6 +112,12 @@ module c_library
          type(c_funptr), value :: handler
          type(c_funptr) :: previous
       end function c_signal
+      ! <unistd.h>
+      !> void _exit(int status)
+      subroutine c_exit(status) bind(c, name='_exit')
+         import :: c_int
+         integer(c_int), value :: status
+      end subroutine c_exit
    end interface
 
 end module c_library
