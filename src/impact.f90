@@ -142,8 +142,7 @@ program impact
             call contact_indentation(cit, model, hist, imp_new, d_new)
             call trace_iteration(tr, step, ic, cit, solver, imp_new, d_new, hist, deck%scheme)
             if (cit%converged) exit contact_iterations
-            ! -- a new assumed force
-            if (ic < deck%max_contact_iter) call contact_next(cit, model, hist)
+            if (ic < deck%max_contact_iter) call contact_next(cit, model, hist)   ! a new assumed force
          end do contact_iterations
          ! -- eq. (17) met, or 'plain' goes on with F_cont; else the run stops
          call contact_outcome(cit, imp_new, ok)
