@@ -21,16 +21,18 @@ contains
    !> &modes only for modes, &contact only for the impact, &strength only
    !> when its strengths are given).
    pure logical function group_applies(group, deck)
-      character(len=*), intent(in) :: group
-      type(deck_t), intent(in) :: deck
+      character(len=*), intent(in) :: group         !< the group, without '&'
+      type(deck_t), intent(in) :: deck              !< the deck
       select case (trim(group))
       case ('strength'); group_applies = strength_given(deck)
       case default;      group_applies = group_applies_kind(group, deck%analysis_kind)
       end select
    end function group_applies
 
+   !> True when the group concerns an analysis of this kind (group_applies).
    pure logical function group_applies_kind(group, analysis_kind)
-      character(len=*), intent(in) :: group, analysis_kind
+      character(len=*), intent(in) :: group         !< the group, without '&'
+      character(len=*), intent(in) :: analysis_kind !< &analysis kind
       select case (trim(group))
       case ('contact');  group_applies_kind = analysis_kind == 'impact'
       case ('load');     group_applies_kind = analysis_kind == 'static' .or. analysis_kind == 'pressure'
@@ -42,8 +44,8 @@ contains
    !> The value of entry iv as a deck would give it ('0.15', "'clamped'",
    !> '.true.', '0, 45, ...'), or '(not given)'.
    function deck_value_text(deck, iv) result(text)
-      type(deck_t), intent(in) :: deck
-      integer, intent(in) :: iv
+      type(deck_t), intent(in) :: deck              !< the deck
+      integer, intent(in) :: iv                     !< entry of deck_vars
       character(len=:), allocatable :: text
       type(deck_t) :: copy
       type(value_t) :: v
@@ -64,6 +66,15 @@ contains
       end select
    end function deck_value_text
 
+   !> 'name = value unit' of entry iv, as the echo gives it (no unit for '-').
+   function echo_piece(deck, iv) result(piece)
+      type(deck_t), intent(in) :: deck              !< the deck
+      integer, intent(in) :: iv                     !< entry of deck_vars
+      character(len=:), allocatable :: piece
+      piece = trim(deck_vars(iv)%name) // ' = ' // deck_value_text(deck, iv)
+      if (trim(deck_vars(iv)%unit) /= '-') piece = piece // ' ' // trim(deck_vars(iv)%unit)
+   end function echo_piece
+
    !> Writes the effective values of `deck`, group by group, each line
    !> starting with `lead` ('# ' in the output files, '' on the terminal),
    !> 'name = value unit', the reals with the fewest digits that read back to
@@ -72,67 +83,77 @@ contains
       type(deck_t), intent(in) :: deck              !< the deck to echo
       integer, intent(in) :: unit                   !< open formatted unit
       character(len=*), intent(in) :: lead          !< text that starts every line
-      character(len=:), allocatable :: line, piece
-      character(len=group_column) :: column
-      integer :: ig, iv
+      integer :: ig
       write (unit, '(a)') lead // 'deck       source = ''' // deck%source // ''''
       if (allocated(deck%settings)) then
          if (len(deck%settings) > 0) write (unit, '(a)') lead // 'deck       command line: ' // deck%settings
       end if
-      groups_loop: do ig = 1, size(deck_groups)
-         if (.not. group_applies(deck_groups(ig), deck)) cycle groups_loop
-         column = '&' // deck_groups(ig)
-         line = ''
-         vars: do iv = 1, size(deck_vars)
-            if (deck_vars(iv)%group /= deck_groups(ig)) cycle vars
-            piece = trim(deck_vars(iv)%name) // ' = ' // deck_value_text(deck, iv)
-            if (trim(deck_vars(iv)%unit) /= '-') piece = piece // ' ' // trim(deck_vars(iv)%unit)
-            if (len(line) > 0 .and. group_column + len(line) + 2 + len(piece) > echo_width) then
-               write (unit, '(a)') lead // column // line // ','
-               column = ''
-               line = ''
-            end if
-            if (len(line) > 0) line = line // ', '
-            line = line // piece
-         end do vars
-         write (unit, '(a)') lead // column // line
-      end do groups_loop
+      do ig = 1, size(deck_groups)
+         if (group_applies(deck_groups(ig), deck)) call echo_group(deck, deck_groups(ig), unit, lead)
+      end do
    end subroutine echo_deck
+
+   !> The echo's lines of one group: '&group' in the group column of the
+   !> first, then its variables, as many to a line as echo_width holds.
+   subroutine echo_group(deck, group, unit, lead)
+      type(deck_t), intent(in) :: deck              !< the deck to echo
+      character(len=*), intent(in) :: group         !< the group, without '&'
+      integer, intent(in) :: unit                   !< open formatted unit
+      character(len=*), intent(in) :: lead          !< text that starts every line
+      character(len=:), allocatable :: line, piece
+      character(len=group_column) :: column
+      integer :: iv
+      column = '&' // group
+      line = ''
+      piece = ''          ! (else gfortran 12 at -O2 takes its length for unset in the loop)
+      vars: do iv = 1, size(deck_vars)
+         if (deck_vars(iv)%group /= group) cycle vars
+         piece = echo_piece(deck, iv)
+         if (len(line) > 0 .and. group_column + len(line) + 2 + len(piece) > echo_width) then
+            write (unit, '(a)') lead // column // line // ','
+            column = ''
+            line = ''
+         end if
+         if (len(line) > 0) line = line // ', '
+         line = line // piece
+      end do vars
+      write (unit, '(a)') lead // column // line
+   end subroutine echo_group
 
    !> The README's deck table (Markdown): group, variable, unit, default,
    !> meaning, from the schema (make deck-table).
    subroutine write_deck_table(unit)
-      integer, intent(in) :: unit
+      integer, intent(in) :: unit                   !< open formatted unit
       integer :: iv
       character(len=:), allocatable :: group, meaning
+      character(len=len(deck_vars%group)) :: previous
       type(deck_var_t) :: e
       write (unit, '(a)') '| group | variable | unit | default | meaning |'
       write (unit, '(a)') '|---|---|---|---|---|'
+      previous = ''
       do iv = 1, size(deck_vars)
          e = deck_vars(iv)
-         group = ''
-         if (iv == 1) then
-         group = '`&' // trim(e%group) // '`'
-         else if (deck_vars(iv - 1)%group /= e%group) then
-         group = '`&' // trim(e%group) // '`'
-         end if
+         group = ''                                 ! the group on its first row only
+         if (e%group /= previous) group = '`&' // trim(e%group) // '`'
+         previous = e%group
          meaning = trim(e%meaning)
          if (e%kind == kind_word) meaning = meaning // ' (' // words_quoted(e%range) // ')'
          if ((e%kind == kind_real .or. e%kind == kind_integer) .and. trim(e%range) /= '(-inf, inf)') &
-         meaning = meaning // '; in ' // trim(e%range)
+            meaning = meaning // '; in ' // trim(e%range)
          write (unit, '(a)') '| ' // group // ' | `' // trim(e%name) // '` | ' // trim(e%unit) // ' | ' &
-         // default_text(e) // ' | ' // meaning // ' |'
+            // default_text(e) // ' | ' // meaning // ' |'
       end do
    contains
+      !> The default as the table gives it: 'not given', a quoted word or the value.
       function default_text(e) result(text)
-         type(deck_var_t), intent(in) :: e
+         type(deck_var_t), intent(in) :: e          !< the entry
          character(len=:), allocatable :: text
          if (len_trim(e%default) == 0) then
-         text = 'not given'
+            text = 'not given'
          else if (e%kind == kind_word .or. e%kind == kind_path) then
-         text = "`'" // trim(e%default) // "'`"
+            text = "`'" // trim(e%default) // "'`"
          else
-         text = '`' // trim(e%default) // '`'
+            text = '`' // trim(e%default) // '`'
          end if
       end function default_text
    end subroutine write_deck_table
@@ -140,7 +161,7 @@ contains
    !> The schema as tab-separated lines, one per variable: group, name,
    !> kind, unit, default, range (impact --schema; tools/impact_files.py).
    subroutine write_schema(unit)
-      integer, intent(in) :: unit
+      integer, intent(in) :: unit                   !< open formatted unit
       integer :: iv
       type(deck_var_t) :: e
       character, parameter :: tab = achar(9)

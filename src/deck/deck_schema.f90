@@ -12,7 +12,8 @@
 !>
 !> Adding a variable: its entry in deck_vars, its component in deck_t and
 !> its line in deck_bind (all in this file), and any check that relates it
-!> to other variables in validate_deck (src/deck/input_deck.f90).
+!> to other variables in the check_* routines that validate_deck calls
+!> (src/deck/input_deck.f90).
 !>
 !> The `range` of an entry: for numbers an interval, '(0, inf)', '[1, 3]',
 !> ... (round brackets exclude the bound), checked on every value, with
@@ -264,126 +265,153 @@ contains
       logical, intent(in) :: set            !< direction: v -> deck
       if (.not. set) v = value_t()
       select case (var_key(iv))
-      case ('plate.a');                    call scalar_value(r=deck%a)
-      case ('plate.b');                    call scalar_value(r=deck%b)
-      case ('plate.h');                    call scalar_value(r=deck%h)
-      case ('lamina.e1');                  call scalar_value(r=deck%e1)
-      case ('lamina.e2');                  call scalar_value(r=deck%e2)
-      case ('lamina.g12');                 call scalar_value(r=deck%g12)
-      case ('lamina.g13');                 call scalar_value(r=deck%g13)
-      case ('lamina.g23');                 call scalar_value(r=deck%g23)
-      case ('lamina.nu12');                call scalar_value(r=deck%nu12)
-      case ('lamina.rho');                 call scalar_value(r=deck%rho)
-      case ('laminate.angles');            call list_value(deck%angles)
-      case ('laminate.k4');                call optional_value(deck%k4)
-      case ('laminate.k5');                call optional_value(deck%k5)
-      case ('laminate.bend_twist');        call text_value(deck%bend_twist)
-      case ('strength.xt');                call optional_value(deck%xt)
-      case ('strength.xc');                call optional_value(deck%xc)
-      case ('strength.yt');                call optional_value(deck%yt)
-      case ('strength.yc');                call optional_value(deck%yc)
-      case ('strength.s12');               call optional_value(deck%s12)
-      case ('strength.s23');               call optional_value(deck%s23)
-      case ('strength.criterion');         call text_value(deck%criterion)
-      case ('impactor.mass');              call scalar_value(r=deck%mass)
-      case ('impactor.velocity');          call scalar_value(r=deck%velocity)
-      case ('impactor.diameter');          call scalar_value(r=deck%diameter)
-      case ('impactor.x0');                call scalar_value(r=deck%x0)
-      case ('impactor.y0');                call scalar_value(r=deck%y0)
-      case ('contact.k');                  call scalar_value(r=deck%k)
-      case ('contact.q');                  call scalar_value(r=deck%q)
-      case ('contact.alpha_p');            call scalar_value(r=deck%alpha_p)
-      case ('contact.beta');               call scalar_value(r=deck%beta)
-      case ('contact.load');               call text_value(deck%contact_load)
-      case ('mesh.nx');                    call scalar_value(i=deck%nx)
-      case ('mesh.ny');                    call scalar_value(i=deck%ny)
-      case ('mesh.domain');                call text_value(deck%domain)
-      case ('mesh.average_bend_twist');    call scalar_value(l=deck%average_bend_twist)
-      case ('mesh.grading');               call scalar_value(r=deck%grading)
-      case ('mesh.shear_rule');            call text_value(deck%shear_rule)
-      case ('mesh.stabilization');         call scalar_value(r=deck%stabilization)
-      case ('boundary.edges');             call text_value(deck%edges)
-      case ('boundary.inplane');           call text_value(deck%inplane)
-      case ('analysis.kind');              call text_value(deck%analysis_kind)
-      case ('analysis.theory');            call text_value(deck%theory)
-      case ('analysis.dt');                call scalar_value(r=deck%dt)
-      case ('analysis.t_end');             call scalar_value(r=deck%t_end)
-      case ('analysis.cr1');               call scalar_value(r=deck%cr1)
-      case ('analysis.cr2');               call scalar_value(r=deck%cr2)
-      case ('analysis.scheme');            call text_value(deck%scheme)
-      case ('analysis.storage');           call text_value(deck%storage)
-      case ('analysis.max_contact_iter');  call scalar_value(i=deck%max_contact_iter)
-      case ('analysis.max_nonlinear_iter'); call scalar_value(i=deck%max_nonlinear_iter)
-      case ('analysis.force_update');      call text_value(deck%force_update)
-      case ('analysis.stop_on_warning');   call scalar_value(l=deck%stop_on_warning)
-      case ('load.kind');                  call text_value(deck%load_kind)
-      case ('load.magnitude');             call scalar_value(r=deck%load_magnitude)
-      case ('load.increments');            call scalar_value(i=deck%load_increments)
-      case ('modes.count');                call scalar_value(i=deck%mode_count)
-      case ('modes.shapes');               call scalar_value(l=deck%mode_shapes)
-      case ('output.prefix');              call text_value(deck%prefix)
-      case ('output.every');               call scalar_value(i=deck%every)
-      case ('output.overwrite');           call scalar_value(l=deck%overwrite)
-      case ('output.hdf5');                call scalar_value(l=deck%hdf5)
-      case ('output.xdmf');                call text_value(deck%xdmf)
-      case ('output.fields_every');        call scalar_value(i=deck%fields_every)
+      case ('plate.a');                    call bind_real(deck%a, v, set)
+      case ('plate.b');                    call bind_real(deck%b, v, set)
+      case ('plate.h');                    call bind_real(deck%h, v, set)
+      case ('lamina.e1');                  call bind_real(deck%e1, v, set)
+      case ('lamina.e2');                  call bind_real(deck%e2, v, set)
+      case ('lamina.g12');                 call bind_real(deck%g12, v, set)
+      case ('lamina.g13');                 call bind_real(deck%g13, v, set)
+      case ('lamina.g23');                 call bind_real(deck%g23, v, set)
+      case ('lamina.nu12');                call bind_real(deck%nu12, v, set)
+      case ('lamina.rho');                 call bind_real(deck%rho, v, set)
+      case ('laminate.angles');            call bind_list(deck%angles, v, set)
+      case ('laminate.k4');                call bind_optional(deck%k4, v, set)
+      case ('laminate.k5');                call bind_optional(deck%k5, v, set)
+      case ('laminate.bend_twist');        call bind_text(deck%bend_twist, v, set)
+      case ('strength.xt');                call bind_optional(deck%xt, v, set)
+      case ('strength.xc');                call bind_optional(deck%xc, v, set)
+      case ('strength.yt');                call bind_optional(deck%yt, v, set)
+      case ('strength.yc');                call bind_optional(deck%yc, v, set)
+      case ('strength.s12');               call bind_optional(deck%s12, v, set)
+      case ('strength.s23');               call bind_optional(deck%s23, v, set)
+      case ('strength.criterion');         call bind_text(deck%criterion, v, set)
+      case ('impactor.mass');              call bind_real(deck%mass, v, set)
+      case ('impactor.velocity');          call bind_real(deck%velocity, v, set)
+      case ('impactor.diameter');          call bind_real(deck%diameter, v, set)
+      case ('impactor.x0');                call bind_real(deck%x0, v, set)
+      case ('impactor.y0');                call bind_real(deck%y0, v, set)
+      case ('contact.k');                  call bind_real(deck%k, v, set)
+      case ('contact.q');                  call bind_real(deck%q, v, set)
+      case ('contact.alpha_p');            call bind_real(deck%alpha_p, v, set)
+      case ('contact.beta');               call bind_real(deck%beta, v, set)
+      case ('contact.load');               call bind_text(deck%contact_load, v, set)
+      case ('mesh.nx');                    call bind_integer(deck%nx, v, set)
+      case ('mesh.ny');                    call bind_integer(deck%ny, v, set)
+      case ('mesh.domain');                call bind_text(deck%domain, v, set)
+      case ('mesh.average_bend_twist');    call bind_logical(deck%average_bend_twist, v, set)
+      case ('mesh.grading');               call bind_real(deck%grading, v, set)
+      case ('mesh.shear_rule');            call bind_text(deck%shear_rule, v, set)
+      case ('mesh.stabilization');         call bind_real(deck%stabilization, v, set)
+      case ('boundary.edges');             call bind_text(deck%edges, v, set)
+      case ('boundary.inplane');           call bind_text(deck%inplane, v, set)
+      case ('analysis.kind');              call bind_text(deck%analysis_kind, v, set)
+      case ('analysis.theory');            call bind_text(deck%theory, v, set)
+      case ('analysis.dt');                call bind_real(deck%dt, v, set)
+      case ('analysis.t_end');             call bind_real(deck%t_end, v, set)
+      case ('analysis.cr1');               call bind_real(deck%cr1, v, set)
+      case ('analysis.cr2');               call bind_real(deck%cr2, v, set)
+      case ('analysis.scheme');            call bind_text(deck%scheme, v, set)
+      case ('analysis.storage');           call bind_text(deck%storage, v, set)
+      case ('analysis.max_contact_iter');  call bind_integer(deck%max_contact_iter, v, set)
+      case ('analysis.max_nonlinear_iter'); call bind_integer(deck%max_nonlinear_iter, v, set)
+      case ('analysis.force_update');      call bind_text(deck%force_update, v, set)
+      case ('analysis.stop_on_warning');   call bind_logical(deck%stop_on_warning, v, set)
+      case ('load.kind');                  call bind_text(deck%load_kind, v, set)
+      case ('load.magnitude');             call bind_real(deck%load_magnitude, v, set)
+      case ('load.increments');            call bind_integer(deck%load_increments, v, set)
+      case ('modes.count');                call bind_integer(deck%mode_count, v, set)
+      case ('modes.shapes');               call bind_logical(deck%mode_shapes, v, set)
+      case ('output.prefix');              call bind_text(deck%prefix, v, set)
+      case ('output.every');               call bind_integer(deck%every, v, set)
+      case ('output.overwrite');           call bind_logical(deck%overwrite, v, set)
+      case ('output.hdf5');                call bind_logical(deck%hdf5, v, set)
+      case ('output.xdmf');                call bind_text(deck%xdmf, v, set)
+      case ('output.fields_every');        call bind_integer(deck%fields_every, v, set)
       end select
-
-   contains
-
-      !> A real, integer or logical: the one of r, i, l given.
-      subroutine scalar_value(r, i, l)
-         real(dp), intent(inout), optional :: r
-         integer, intent(inout), optional :: i
-         logical, intent(inout), optional :: l
-         if (set) then
-            if (present(r)) r = v%r
-            if (present(i)) i = v%i
-            if (present(l)) l = v%l
-         else
-            if (present(r)) v%r = r
-            if (present(i)) v%i = i
-            if (present(l)) v%l = l
-         end if
-      end subroutine scalar_value
-
-      subroutine optional_value(x)
-         real(dp), intent(inout) :: x
-         if (set) then
-            x = v%r
-            if (.not. v%given) x = ieee_value(x, ieee_quiet_nan)
-         else
-            v%r = x;  v%given = .not. ieee_is_nan(x)
-         end if
-      end subroutine optional_value
-
-      subroutine text_value(s)
-         character(len=:), allocatable, intent(inout) :: s
-         if (set) then
-            s = v%s
-         else
-            if (allocated(s)) then
-               v%s = s
-            else
-               v%s = ''
-            end if
-         end if
-      end subroutine text_value
-
-      subroutine list_value(x)
-         real(dp), allocatable, intent(inout) :: x(:)
-         if (set) then
-            x = v%list
-         else
-            if (allocated(x)) then
-               v%list = x
-            else
-               allocate (v%list(0))
-            end if
-         end if
-      end subroutine list_value
-
    end subroutine deck_bind
+
+   !> A real between v%r and the deck (deck_bind).
+   subroutine bind_real(x, v, set)
+      real(dp), intent(inout) :: x              !< the deck's component
+      type(value_t), intent(inout) :: v         !< the value
+      logical, intent(in) :: set                !< direction: v -> x
+      if (set) then
+         x = v%r
+      else
+         v%r = x
+      end if
+   end subroutine bind_real
+
+   !> An integer between v%i and the deck (deck_bind).
+   subroutine bind_integer(x, v, set)
+      integer, intent(inout) :: x               !< the deck's component
+      type(value_t), intent(inout) :: v         !< the value
+      logical, intent(in) :: set                !< direction: v -> x
+      if (set) then
+         x = v%i
+      else
+         v%i = x
+      end if
+   end subroutine bind_integer
+
+   !> A logical between v%l and the deck (deck_bind).
+   subroutine bind_logical(x, v, set)
+      logical, intent(inout) :: x               !< the deck's component
+      type(value_t), intent(inout) :: v         !< the value
+      logical, intent(in) :: set                !< direction: v -> x
+      if (set) then
+         x = v%l
+      else
+         v%l = x
+      end if
+   end subroutine bind_logical
+
+   !> An optional real between v%r, v%given and the deck, where NaN stands
+   !> for "not given" (deck_bind).
+   subroutine bind_optional(x, v, set)
+      real(dp), intent(inout) :: x              !< the deck's component
+      type(value_t), intent(inout) :: v         !< the value
+      logical, intent(in) :: set                !< direction: v -> x
+      if (set) then
+         x = v%r
+         if (.not. v%given) x = ieee_value(x, ieee_quiet_nan)
+      else
+         v%r = x;  v%given = .not. ieee_is_nan(x)
+      end if
+   end subroutine bind_optional
+
+   !> A word or a text between v%s and the deck ('' for an unset one) (deck_bind).
+   subroutine bind_text(x, v, set)
+      character(len=:), allocatable, intent(inout) :: x   !< the deck's component
+      type(value_t), intent(inout) :: v                   !< the value
+      logical, intent(in) :: set                          !< direction: v -> x
+      if (set) then
+         x = v%s
+      else
+         if (allocated(x)) then
+            v%s = x
+         else
+            v%s = ''
+         end if
+      end if
+   end subroutine bind_text
+
+   !> A list of reals between v%list and the deck (none for an unset one) (deck_bind).
+   subroutine bind_list(x, v, set)
+      real(dp), allocatable, intent(inout) :: x(:)   !< the deck's component
+      type(value_t), intent(inout) :: v              !< the value
+      logical, intent(in) :: set                     !< direction: v -> x
+      if (set) then
+         x = v%list
+      else
+         if (allocated(x)) then
+            v%list = x
+         else
+            allocate (v%list(0))
+         end if
+      end if
+   end subroutine bind_list
 
    !> The words of a range 'a | b | c' as 'a b c'.
    pure function words_of(range) result(words)

@@ -40,6 +40,14 @@ module input_deck
    !> Bytes in a GiB, for the messages of the size checks.
    real(dp), parameter :: mib = 1024.0_dp**2, gib = 1024.0_dp**3
 
+   !> The checks of a deck so far (validate_deck): the first failure wins,
+   !> the checks after it change nothing.
+   type :: checks_t
+      character(len=:), allocatable :: source       !< the deck's name in messages
+      integer :: stat = 0                           !< 0, or failed after a failure
+      character(len=:), allocatable :: message      !< the first failure's one-line message
+   end type checks_t
+
 contains
 
    ! ================================================================ reading
@@ -336,184 +344,231 @@ contains
       type(deck_t), intent(inout) :: deck           !< the deck; its keywords come back in lower case
       integer, intent(out) :: stat                  !< 0 when every value is acceptable
       character(len=*), intent(inout) :: errmsg     !< the message on failure
-      type(value_t) :: v
-      integer :: iv, n, i
+      type(checks_t) :: c
 
-      stat = 0
       if (.not. allocated(deck%source)) deck%source = '<deck>'
-      ! -- each variable against its schema entry
+      c%source = deck%source
+      call check_entries(deck, c)
+      if (c%stat == 0) call check_plate(deck, c)
+      if (c%stat == 0) call check_laminate(deck, c)
+      if (c%stat == 0) call check_impactor(deck, c)
+      if (c%stat == 0) call check_domain(deck, c)
+      if (c%stat == 0) call check_analysis(deck, c)
+      if (c%stat == 0) call need(c, len(deck%prefix) > 0, 'output', 'prefix', "''", 'must not be empty')
+      if (c%stat == 0) call check_strength(deck, c)
+      stat = c%stat
+      if (stat /= 0) errmsg = c%message
+   end subroutine validate_deck
+
+   !> Each variable against its schema entry (check_range), its keywords
+   !> first normalised to lower case without blanks.
+   subroutine check_entries(deck, c)
+      type(deck_t), intent(inout) :: deck           !< the deck; its keywords come back in lower case
+      type(checks_t), intent(inout) :: c            !< the checks so far
+      type(value_t) :: v
+      integer :: iv
       entries: do iv = 1, size(deck_vars)
          call deck_bind(deck, iv, v, .false.)
          if (deck_vars(iv)%kind == kind_word) then
             v%s = lower_case(trim(adjustl(v%s)))
             call deck_bind(deck, iv, v, .true.)
          end if
-         call check_range(iv, v)
-         if (stat /= 0) return
+         call check_range(c, iv, v)
+         if (c%stat /= 0) return
       end do entries
+   end subroutine check_entries
 
-      ! -- the plate and the lamina
-      call need(deck%h < min(deck%a, deck%b), 'plate', 'h', real_str(deck%h), &
+   !> &plate and &lamina: a thin plate, a positive definite lamina.
+   subroutine check_plate(deck, c)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(checks_t), intent(inout) :: c            !< the checks so far
+      call need(c, deck%h < min(deck%a, deck%b), 'plate', 'h', real_str(deck%h), &
          'the thickness must be smaller than a and b')
-      call need(deck%nu12**2 < deck%e1/deck%e2, 'lamina', 'nu12', real_str(deck%nu12), &
+      call need(c, deck%nu12**2 < deck%e1/deck%e2, 'lamina', 'nu12', real_str(deck%nu12), &
          'nu12**2 must be less than e1/e2 = ' // real_str(deck%e1/deck%e2) &
          // ' (else the lamina stiffness is not positive definite)')
-      call need(size(deck%angles) >= 1, 'laminate', 'angles', '(none)', 'give at least one ply')
-      if (stat /= 0) return
-      n = size(deck%angles)
-      do i = 1, n
-         call need(ieee_is_finite(deck%angles(i)), 'laminate', 'angles(' // int_str(i) // ')', &
+   end subroutine check_plate
+
+   !> &laminate: at least one ply, every angle finite.
+   subroutine check_laminate(deck, c)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(checks_t), intent(inout) :: c            !< the checks so far
+      integer :: i
+      call need(c, size(deck%angles) >= 1, 'laminate', 'angles', '(none)', 'give at least one ply')
+      if (c%stat /= 0) return
+      do i = 1, size(deck%angles)
+         call need(c, ieee_is_finite(deck%angles(i)), 'laminate', 'angles(' // int_str(i) // ')', &
             real_str(deck%angles(i)), 'must be finite')
       end do
+   end subroutine check_laminate
 
-      ! -- the impactor on the plate
-      call need(deck%diameter < min(deck%a, deck%b), 'impactor', 'diameter', real_str(deck%diameter), &
+   !> &impactor: the nose smaller than the plate and on it.
+   subroutine check_impactor(deck, c)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(checks_t), intent(inout) :: c            !< the checks so far
+      call need(c, deck%diameter < min(deck%a, deck%b), 'impactor', 'diameter', real_str(deck%diameter), &
          'the nose must be smaller than the plate: diameter < min(a, b) = ' // real_str(min(deck%a, deck%b)) // ' m')
-      call need(abs(deck%x0) <= 0.5_dp*(deck%a - deck%diameter), 'impactor', 'x0', real_str(deck%x0), &
+      call need(c, abs(deck%x0) <= 0.5_dp*(deck%a - deck%diameter), 'impactor', 'x0', real_str(deck%x0), &
          'the nose must lie on the plate: |x0| <= (a - diameter)/2 = ' // real_str(0.5_dp*(deck%a - deck%diameter)) &
          // ' m (x0 is measured from the plate centre)')
-      call need(abs(deck%y0) <= 0.5_dp*(deck%b - deck%diameter), 'impactor', 'y0', real_str(deck%y0), &
+      call need(c, abs(deck%y0) <= 0.5_dp*(deck%b - deck%diameter), 'impactor', 'y0', real_str(deck%y0), &
          'the nose must lie on the plate: |y0| <= (b - diameter)/2 = ' // real_str(0.5_dp*(deck%b - deck%diameter)) &
          // ' m (y0 is measured from the plate centre)')
+   end subroutine check_impactor
 
-      ! -- the domain and its symmetry lines
+   !> &mesh domain and its symmetry lines: D16 = D26 = 0 on them, the
+   !> impact point on them, a layup symmetric about the mid-plane for a
+   !> quarter or a strip.
+   subroutine check_domain(deck, c)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(checks_t), intent(inout) :: c            !< the checks so far
+      integer :: n, i
       if (deck%domain /= 'full' .and. deck%domain /= 'auto') &
-         call need(deck%bend_twist /= 'keep', 'laminate', 'bend_twist', "'keep'", "the symmetry lines of " &
+         call need(c, deck%bend_twist /= 'keep', 'laminate', 'bend_twist', "'keep'", "the symmetry lines of " &
          // "&mesh domain = '" // deck%domain // "' need D16 = D26 = 0 (section 3.1): use domain = 'full'")
-      if (deck%average_bend_twist) call need(deck%bend_twist /= 'keep', 'laminate', 'bend_twist', "'keep'", &
+      if (deck%average_bend_twist) call need(c, deck%bend_twist /= 'keep', 'laminate', 'bend_twist', "'keep'", &
          'contradicts &mesh average_bend_twist = .true., which accepts D16 = D26 = 0')
       if (deck%domain == 'quarter' .or. deck%domain == 'strip') &
-         call need(deck%x0 == 0.0_dp .and. deck%y0 == 0.0_dp, 'mesh', 'domain', "'" // deck%domain // "'", &
+         call need(c, deck%x0 == 0.0_dp .and. deck%y0 == 0.0_dp, 'mesh', 'domain', "'" // deck%domain // "'", &
          'needs the impact point at the centre, but &impactor x0 = ' // real_str(deck%x0) // ' m, y0 = ' &
          // real_str(deck%y0) // " m: use domain = 'auto', 'half' or 'full'")
-      if (deck%domain == 'half') call need(deck%x0 == 0.0_dp .or. deck%y0 == 0.0_dp, 'mesh', 'domain', "'half'", &
+      if (deck%domain == 'half') call need(c, deck%x0 == 0.0_dp .or. deck%y0 == 0.0_dp, 'mesh', 'domain', "'half'", &
          'needs the impact point on a centre line (x0 = 0 or y0 = 0), but &impactor x0 = ' &
          // real_str(deck%x0) // ' m, y0 = ' // real_str(deck%y0) // " m: use domain = 'auto' or 'full'")
-      if (stat == 0 .and. (deck%domain == 'quarter' .or. deck%domain == 'strip')) then
-         symmetry: do i = 1, n/2
-            if (deck%angles(i) == deck%angles(n + 1 - i)) cycle symmetry
-            call need(.false., 'laminate', 'angles', list_str(deck%angles, max_quoted), &
-               'not symmetric about the mid-plane (ply ' // int_str(i) // ' at ' // real_str(deck%angles(i)) &
-               // ' deg, ply ' // int_str(n + 1 - i) // ' at ' // real_str(deck%angles(n + 1 - i)) &
-               // " deg), but &mesh domain = '" // deck%domain // "' assumes B = 0: use domain = 'full'")
-            exit symmetry
-         end do symmetry
-      end if
+      if (c%stat /= 0 .or. .not. (deck%domain == 'quarter' .or. deck%domain == 'strip')) return
+      n = size(deck%angles)
+      symmetry: do i = 1, n/2
+         if (deck%angles(i) == deck%angles(n + 1 - i)) cycle symmetry
+         call need(c, .false., 'laminate', 'angles', list_str(deck%angles, max_quoted), &
+            'not symmetric about the mid-plane (ply ' // int_str(i) // ' at ' // real_str(deck%angles(i)) &
+            // ' deg, ply ' // int_str(n + 1 - i) // ' at ' // real_str(deck%angles(n + 1 - i)) &
+            // " deg), but &mesh domain = '" // deck%domain // "' assumes B = 0: use domain = 'full'")
+         exit symmetry
+      end do symmetry
+   end subroutine check_domain
 
-      ! -- the analysis
-      if (deck%theory == 'auto') call need(deck%analysis_kind == 'impact', 'analysis', 'theory', "'auto'", &
+   !> &analysis: a theory for the kind, dt within t_end, cr1 above the
+   !> rounding, what the run needs (check_needs), the storage of modes.
+   subroutine check_analysis(deck, c)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(checks_t), intent(inout) :: c            !< the checks so far
+      if (deck%theory == 'auto') call need(c, deck%analysis_kind == 'impact', 'analysis', 'theory', "'auto'", &
          "chooses from the impact's deflection estimate: give 'linear' or 'nonlinear' for kind = '" &
          // deck%analysis_kind // "'")
-      call need(deck%dt < deck%t_end, 'analysis', 'dt', real_str(deck%dt), &
+      call need(c, deck%dt < deck%t_end, 'analysis', 'dt', real_str(deck%dt), &
          'must be less than t_end = ' // real_str(deck%t_end))
-      call need(deck%cr1 >= min_cr1, 'analysis', 'cr1', real_str(deck%cr1), 'must be at least ' &
+      call need(c, deck%cr1 >= min_cr1, 'analysis', 'cr1', real_str(deck%cr1), 'must be at least ' &
          // real_str(min_cr1) // ' (100 eps): eq. (17) cannot be met below the rounding of the force')
-      if (stat == 0) call check_needs()
-      if (deck%analysis_kind == 'modes') call need(deck%storage == 'band', 'analysis', 'storage', &
+      if (c%stat == 0) call check_needs(deck, c)
+      if (deck%analysis_kind == 'modes') call need(c, deck%storage == 'band', 'analysis', 'storage', &
          "'" // deck%storage // "'", "kind = 'modes' needs storage = 'band' (LAPACK's banded eigensolver dsbgvx)")
-      call need(len(deck%prefix) > 0, 'output', 'prefix', "''", 'must not be empty')
-      call check_strength()
+   end subroutine check_analysis
 
-   contains
+   !> What the run would need, before any of it is allocated or written
+   !> (README, "Stability, bad input, nothing lost"): at most max_steps
+   !> time steps; the matrices' memory, estimated from the mesh, within
+   !> the machine's; the results' size within the free space where they
+   !> go. The estimates: nodes (2 ex + 1)(2 ey + 1) for ex x ey 9-node
+   !> elements (ex = 2 nx when the domain may be doubled across a centre
+   !> line), 5 freedoms a node, half-bandwidth 10 (2 min(ex, ey) + 1),
+   !> three band matrices (K_L, M, the factored K_L + 4/dt^2 M); a
+   !> history row of 230 bytes in the text file and 130 in <prefix>.h5,
+   !> a field snapshot of 8 bytes a freedom, and in <prefix>.h5 64 KiB
+   !> and four more snapshots for the deck, the mesh and the peak state.
+   subroutine check_needs(deck, c)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(checks_t), intent(inout) :: c            !< the checks so far
+      real(dp), parameter :: max_steps = 1.0e8_dp, text_row_bytes = 230.0_dp, row_bytes = 360.0_dp, &
+                             band_matrices = 3.0_dp, h5_fixed_bytes = 65536.0_dp
+      real(dp) :: steps, ex, ey, neq, kd, memory, machine, output, room, biggest
+      steps = deck%t_end/deck%dt
+      call need(c, steps <= max_steps, 'analysis', 'dt', real_str(deck%dt), 'gives t_end/dt = ' &
+         // real_short(steps) // ' time steps, more than the limit of ' // real_short(max_steps) &
+         // ' (a longer dt, or a shorter t_end)')
+      if (c%stat /= 0) return
+      ex = real(deck%nx, dp);  ey = real(deck%ny, dp)
+      if (deck%domain == 'auto' .or. deck%domain == 'half') then
+         ex = 2.0_dp*ex;  ey = 2.0_dp*ey
+      end if
+      neq = 5.0_dp*(2.0_dp*ex + 1.0_dp)*(2.0_dp*ey + 1.0_dp)
+      kd = 10.0_dp*(2.0_dp*min(ex, ey) + 1.0_dp)
+      memory = band_matrices*neq*(kd + 1.0_dp)*8.0_dp
+      machine = physical_memory()
+      if (machine > 0.0_dp) call need(c, memory < machine, 'mesh', 'nx', int_str(deck%nx), 'with ny = ' &
+         // int_str(deck%ny) // ' the model would need about ' // real_short(memory/gib) // ' GiB of memory (' &
+         // real_short(neq) // ' equations), more than this machine''s ' // real_short(machine/gib) &
+         // ' GiB: a coarser mesh, or a graded one (&mesh grading)')
+      if (c%stat /= 0 .or. deck%analysis_kind == 'modes' .or. deck%analysis_kind == 'static') return
+      output = (steps/real(deck%every, dp) + 1.0_dp)*row_bytes
+      if (deck%hdf5 .and. deck%analysis_kind == 'impact') output = output + h5_fixed_bytes &
+         + (steps/real(deck%fields_every, dp) + 5.0_dp)*neq*8.0_dp
+      biggest = max(output - (steps/real(deck%every, dp) + 1.0_dp)*text_row_bytes, &
+                    (steps/real(deck%every, dp) + 1.0_dp)*text_row_bytes)
+      room = file_size_limit()
+      if (room > 0.0_dp) call need(c, biggest < room, 'output', 'every', int_str(deck%every), &
+         'with fields_every = ' // int_str(deck%fields_every) // ' a result file would reach about ' &
+         // real_short(biggest/mib) // ' MiB, more than the ' // real_short(room/mib) // ' MiB this process ' &
+         // 'may write to one file (ulimit -f): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
+      room = free_disk_space(deck%prefix)
+      if (room > 0.0_dp) call need(c, output < room, 'output', 'every', int_str(deck%every), 'with fields_every = ' &
+         // int_str(deck%fields_every) // ' the results would take about ' // real_short(output/gib) &
+         // ' GiB, more than the ' // real_short(room/gib) // ' GiB free where they go (prefix ''' &
+         // deck%prefix // '''): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
+   end subroutine check_needs
 
-      !> What the run would need, before any of it is allocated or written
-      !> (README, "Stability, bad input, nothing lost"): at most max_steps
-      !> time steps; the matrices' memory, estimated from the mesh, within
-      !> the machine's; the results' size within the free space where they
-      !> go. The estimates: nodes (2 ex + 1)(2 ey + 1) for ex x ey 9-node
-      !> elements (ex = 2 nx when the domain may be doubled across a centre
-      !> line), 5 freedoms a node, half-bandwidth 10 (2 min(ex, ey) + 1),
-      !> three band matrices (K_L, M, the factored K_L + 4/dt^2 M); a
-      !> history row of 230 bytes in the text file and 130 in <prefix>.h5,
-      !> a field snapshot of 8 bytes a freedom, and in <prefix>.h5 64 KiB
-      !> and four more snapshots for the deck, the mesh and the peak state.
-      subroutine check_needs()
-         real(dp), parameter :: max_steps = 1.0e8_dp, text_row_bytes = 230.0_dp, row_bytes = 360.0_dp, &
-                                band_matrices = 3.0_dp, h5_fixed_bytes = 65536.0_dp
-         real(dp) :: steps, ex, ey, neq, kd, memory, machine, output, room, biggest
-         steps = deck%t_end/deck%dt
-         call need(steps <= max_steps, 'analysis', 'dt', real_str(deck%dt), 'gives t_end/dt = ' &
-            // real_short(steps) // ' time steps, more than the limit of ' // real_short(max_steps) &
-            // ' (a longer dt, or a shorter t_end)')
-         if (stat /= 0) return
-         ex = real(deck%nx, dp);  ey = real(deck%ny, dp)
-         if (deck%domain == 'auto' .or. deck%domain == 'half') then
-            ex = 2.0_dp*ex;  ey = 2.0_dp*ey
-         end if
-         neq = 5.0_dp*(2.0_dp*ex + 1.0_dp)*(2.0_dp*ey + 1.0_dp)
-         kd = 10.0_dp*(2.0_dp*min(ex, ey) + 1.0_dp)
-         memory = band_matrices*neq*(kd + 1.0_dp)*8.0_dp
-         machine = physical_memory()
-         if (machine > 0.0_dp) call need(memory < machine, 'mesh', 'nx', int_str(deck%nx), 'with ny = ' &
-            // int_str(deck%ny) // ' the model would need about ' // real_short(memory/gib) // ' GiB of memory (' &
-            // real_short(neq) // ' equations), more than this machine''s ' // real_short(machine/gib) &
-            // ' GiB: a coarser mesh, or a graded one (&mesh grading)')
-         if (stat /= 0 .or. deck%analysis_kind == 'modes' .or. deck%analysis_kind == 'static') return
-         output = (steps/real(deck%every, dp) + 1.0_dp)*row_bytes
-         if (deck%hdf5 .and. deck%analysis_kind == 'impact') output = output + h5_fixed_bytes &
-            + (steps/real(deck%fields_every, dp) + 5.0_dp)*neq*8.0_dp
-         biggest = max(output - (steps/real(deck%every, dp) + 1.0_dp)*text_row_bytes, &
-                       (steps/real(deck%every, dp) + 1.0_dp)*text_row_bytes)
-         room = file_size_limit()
-         if (room > 0.0_dp) call need(biggest < room, 'output', 'every', int_str(deck%every), &
-            'with fields_every = ' // int_str(deck%fields_every) // ' a result file would reach about ' &
-            // real_short(biggest/mib) // ' MiB, more than the ' // real_short(room/mib) // ' MiB this process ' &
-            // 'may write to one file (ulimit -f): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
-         room = free_disk_space(deck%prefix)
-         if (room > 0.0_dp) call need(output < room, 'output', 'every', int_str(deck%every), 'with fields_every = ' &
-            // int_str(deck%fields_every) // ' the results would take about ' // real_short(output/gib) &
-            // ' GiB, more than the ' // real_short(room/gib) // ' GiB free where they go (prefix ''' &
-            // deck%prefix // '''): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
-      end subroutine check_needs
+   !> &strength: all six strengths or none; the criterion only with them;
+   !> the ply stresses belong to the impact analysis.
+   subroutine check_strength(deck, c)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(checks_t), intent(inout) :: c            !< the checks so far
+      character(len=3), parameter :: names(6) = [character(len=3) :: 'xt', 'xc', 'yt', 'yc', 's12', 's23']
+      logical :: missing(6)
+      missing = ieee_is_nan([deck%xt, deck%xc, deck%yt, deck%yc, deck%s12, deck%s23])
+      if (any(missing) .and. .not. all(missing)) call need(c, .false., 'strength', trim(names(findloc(missing, &
+         .true., dim=1))), '(not given)', 'give all six strengths (xt, xc, yt, yc, s12, s23) or none')
+      if (deck%given(find_var('strength', 'criterion'))) call need(c, .not. all(missing), 'strength', 'criterion', &
+         "'" // deck%criterion // "'", 'needs the ply strengths xt, xc, yt, yc, s12, s23 (the paper gives none)')
+      if (strength_given(deck)) call need(c, deck%analysis_kind == 'impact', 'strength', 'xt', real_str(deck%xt), &
+         "the ply stresses and failure indices are computed by kind = 'impact' only")
+   end subroutine check_strength
 
-      !> &strength: all six strengths or none; the criterion only with them;
-      !> the ply stresses belong to the impact analysis.
-      subroutine check_strength()
-         character(len=3), parameter :: names(6) = [character(len=3) :: 'xt', 'xc', 'yt', 'yc', 's12', 's23']
-         logical :: missing(6)
-         missing = ieee_is_nan([deck%xt, deck%xc, deck%yt, deck%yc, deck%s12, deck%s23])
-         if (any(missing) .and. .not. all(missing)) call need(.false., 'strength', trim(names(findloc(missing, &
-            .true., dim=1))), '(not given)', 'give all six strengths (xt, xc, yt, yc, s12, s23) or none')
-         if (deck%given(find_var('strength', 'criterion'))) call need(.not. all(missing), 'strength', 'criterion', &
-            "'" // deck%criterion // "'", 'needs the ply strengths xt, xc, yt, yc, s12, s23 (the paper gives none)')
-         if (strength_given(deck)) call need(deck%analysis_kind == 'impact', 'strength', 'xt', real_str(deck%xt), &
-            "the ply stresses and failure indices are computed by kind = 'impact' only")
-      end subroutine check_strength
+   !> Entry iv's value against the schema's range.
+   subroutine check_range(c, iv, v)
+      type(checks_t), intent(inout) :: c            !< the checks so far
+      integer, intent(in) :: iv                     !< entry of deck_vars
+      type(value_t), intent(in) :: v                !< its value
+      type(deck_var_t) :: e
+      e = deck_vars(iv)      ! (a copy: gfortran 12 loses an associate name of a constant's element)
+      select case (e%kind)
+      case (kind_real)
+         if (v%given) call need(c, in_interval(v%r, e%range), trim(e%group), trim(e%name), real_str(v%r), &
+            interval_text(e%range, e%unit))
+      case (kind_integer)
+         call need(c, in_interval(real(v%i, dp), e%range), trim(e%group), trim(e%name), int_str(v%i), &
+            interval_text(e%range, e%unit))
+      case (kind_word)
+         call need(c, index(' ' // words_of(e%range) // ' ', ' ' // v%s // ' ') > 0 .and. len(v%s) > 0, &
+            trim(e%group), trim(e%name), "'" // v%s // "'", 'must be one of ' // words_quoted(e%range))
+      case (kind_path)
+         call need(c, len(v%s) <= max_path_len, trim(e%group), trim(e%name), quoted_cut(v%s), &
+            'longer than ' // int_str(max_path_len) // ' characters')
+         if (len(v%s) > 0) call need(c, len(path_problem(v%s)) == 0, trim(e%group), trim(e%name), &
+            quoted_cut(v%s), path_problem(v%s))
+      end select
+   end subroutine check_range
 
-      !> Fails with "<deck>: &group: name = value: what" unless ok (the first failure wins).
-      subroutine need(ok, group, name, value, what)
-         logical, intent(in) :: ok
-         character(len=*), intent(in) :: group, name, value, what
-         if (stat /= 0 .or. ok) return
-         stat = failed
-         errmsg = deck%source // ': &' // group // ': ' // name // ' = ' // value // ': ' // what
-      end subroutine need
-
-      !> Entry iv's value against the schema's range.
-      subroutine check_range(iv, v)
-         integer, intent(in) :: iv
-         type(value_t), intent(in) :: v
-         type(deck_var_t) :: e
-         e = deck_vars(iv)      ! (a copy: gfortran 12 loses an associate name of a constant's element)
-         select case (e%kind)
-         case (kind_real)
-            if (v%given) call need(in_interval(v%r, e%range), trim(e%group), trim(e%name), real_str(v%r), &
-               interval_text(e%range, e%unit))
-         case (kind_integer)
-            call need(in_interval(real(v%i, dp), e%range), trim(e%group), trim(e%name), int_str(v%i), &
-               interval_text(e%range, e%unit))
-         case (kind_word)
-            call need(index(' ' // words_of(e%range) // ' ', ' ' // v%s // ' ') > 0 .and. len(v%s) > 0, &
-               trim(e%group), trim(e%name), "'" // v%s // "'", 'must be one of ' // words_quoted(e%range))
-         case (kind_path)
-            call need(len(v%s) <= max_path_len, trim(e%group), trim(e%name), quoted_cut(v%s), &
-               'longer than ' // int_str(max_path_len) // ' characters')
-            if (len(v%s) > 0) call need(len(path_problem(v%s)) == 0, trim(e%group), trim(e%name), &
-               quoted_cut(v%s), path_problem(v%s))
-         end select
-      end subroutine check_range
-
-   end subroutine validate_deck
+   !> Fails with "<deck>: &group: name = value: what" unless ok (the first failure wins).
+   subroutine need(c, ok, group, name, value, what)
+      type(checks_t), intent(inout) :: c            !< the checks so far
+      logical, intent(in) :: ok                     !< the check passes
+      character(len=*), intent(in) :: group         !< the group, without '&'
+      character(len=*), intent(in) :: name          !< the variable
+      character(len=*), intent(in) :: value         !< its value, as a message shows it
+      character(len=*), intent(in) :: what          !< what is wrong
+      if (c%stat /= 0 .or. ok) return
+      c%stat = failed
+      c%message = c%source // ': &' // group // ': ' // name // ' = ' // value // ': ' // what
+   end subroutine need
 
    !> x lies in the interval written as '(lo, hi)', '[lo, hi]', ... and is
    !> finite; lo and hi may be -inf, inf.
