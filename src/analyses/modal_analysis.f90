@@ -95,8 +95,8 @@ contains
          return
       end if
       kd = model%stiff%band%kd
-      ab = model%stiff%band%ab
-      bb = model%mass%band%ab
+      allocate (ab, source=model%stiff%band%ab)
+      allocate (bb, source=model%mass%band%ab)
       ! without the vectors dsbgvx references neither Q nor Z
       jobz = merge('V', 'N', vectors)
       nq = merge(n, 1, vectors)

@@ -33,186 +33,204 @@ contains
       report = ''
       stat = 0
       select case (deck%analysis_kind)
-      case ('static');   call run_static()
-      case ('modes');    call run_modes()
-      case ('pressure'); call run_pressure()
+      case ('static');   call run_static(deck, model, report, stat, errmsg)
+      case ('modes');    call run_modes(deck, model, report, stat, errmsg)
+      case ('pressure'); call run_pressure(deck, model, report, stat, errmsg)
       end select
       if (len_trim(report) > 0) write (unit, '(a)') trim(report)
-
-   contains
-
-      !> The static analysis: load, solution (static_solve), result files;
-      !> the report is a line for the terminal.
-      subroutine run_static()
-         type(static_result_t) :: res
-         real(dp), allocatable :: f(:)
-         character(len=msg_len) :: load_unit, solve_msg
-         character(len=:), allocatable :: path, path2
-         integer :: u, inc, n, solve_stat, k
-         real(dp) :: de(ndof_node)
-
-         allocate (f(model%msh%neq))
-         call assemble_load(deck, model, f, stat, errmsg)
-         if (stat /= 0) return
-         n = deck%load_increments
-         if (.not. model%nonlinear) n = 1
-         solve_msg = ''
-         call static_solve(model, f, n, res, solve_stat, solve_msg)
-
-         load_unit = 'Pa'
-         if (deck%load_kind == 'central_force') load_unit = 'N'
-         call open_columns(deck, '_static.dat', 'impact: static analysis, load-deflection path', &
-            [character(len=16) :: 'increment', 'load_factor', 'load', 'w_centre_mm', 'w_centre_h', &
-             'iterations', 'residual'], &
-            [character(len=80) :: 'load increment (-)', 'load factor lambda (-)', &
-             'pressure q0 (Pa) or central force (N): lambda * &load magnitude, in '//trim(load_unit), &
-             'deflection at the plate centre (mm)', 'centre deflection / thickness (-)', &
-             'Newton iterations (linear: 1 solve) (-)', '|lambda F - f_int| / |lambda F| at the end (-)'], &
-            u, path, stat, errmsg)
-         if (stat /= 0) return
-         rows: do inc = 0, res%increments
-            write (u, '(i6, f12.6, 3es16.7e3, i6, es12.3e3)') inc, res%load_factor(inc), &
-               res%load_factor(inc)*deck%load_magnitude, res%w_centre(inc)*1.0e3_dp, &
-               res%w_centre(inc)/deck%h, res%iterations(inc), res%residual(inc)
-         end do rows
-         close (u)
-
-         call open_columns(deck, '_deflection.dat', 'impact: static analysis, nodal displacements ' // &
-            'at the last load reached (modelled domain)', &
-            [character(len=12) :: 'node', 'x_mm', 'y_mm', 'u_mm', 'v_mm', 'w_mm', 'psi_x_rad', 'psi_y_rad'], &
-            [character(len=40) :: 'node (-)', 'x from the plate centre (mm)', 'y from the plate centre (mm)', &
-             'in-plane displacement u (mm)', 'in-plane displacement v (mm)', 'deflection w (mm)', &
-             'rotation psi_x (rad)', 'rotation psi_y (rad)'], u, path2, stat, errmsg)
-         if (stat /= 0) return
-         nodes: do k = 1, model%msh%nnode
-            call gather_element(model%msh%eq(:, k), res%d, de)
-            write (u, '(i6, 2f12.4, 5es16.7e3)') k, model%msh%coords(:, k)*1.0e3_dp, de(1:3)*1.0e3_dp, de(4:5)
-         end do nodes
-         close (u)
-
-         write (report, '(a,es12.5,a,a,a,es12.5,a,f9.4,a)') 'static: load ', &
-            res%load_factor(res%increments)*deck%load_magnitude, ' ', trim(load_unit), &
-            ': centre deflection ', res%w_centre(res%increments)*1.0e3_dp, ' mm (w/h = ', &
-            res%w_centre(res%increments)/deck%h, ')' // new_line('a') // 'results: ' // trim(path) // &
-            ', ' // trim(path2)
-         stat = solve_stat
-         if (stat /= 0) errmsg = solve_msg
-      end subroutine run_static
-
-      !> The modal analysis: solution (modal_solve) and result files; the
-      !> report is a few lines for the terminal.
-      subroutine run_modes()
-         type(modal_result_t) :: res
-         character(len=:), allocatable :: path, path2
-         character(len=16), allocatable :: names(:)
-         character(len=48), allocatable :: texts(:)
-         real(dp) :: de(ndof_node), wmax(deck%mode_count), wk
-         integer :: u, j, k
-
-         call modal_solve(model, deck%mode_count, deck%mode_shapes, res, stat, errmsg)
-         if (stat /= 0) return
-
-         call open_columns(deck, '_modes.dat', 'impact: modal analysis, K_L phi = omega^2 M phi (LAPACK dsbgvx)', &
-            [character(len=18) :: 'mode', 'frequency_Hz', 'omega_rad_s', 'w_fraction', 'inplane_fraction', &
-             'rotation_fraction'], &
-            [character(len=64) :: 'mode number, ascending frequency (-)', 'natural frequency (Hz)', &
-             'circular frequency (rad/s)', 'kinetic energy share of w (-; -1: no shapes)', &
-             'kinetic energy share of u, v (-; -1: no shapes)', 'kinetic energy share of psi_x, psi_y (-; -1: no shapes)'], &
-            u, path, stat, errmsg)
-         if (stat /= 0) return
-         rows: do j = 1, res%count
-            if (deck%mode_shapes) then
-               write (u, '(i6, 2es17.8e3, 3f12.6)') j, res%freq(j), sign(sqrt(abs(res%omega2(j))), res%omega2(j)), &
-                  res%fraction(:, j)
-            else
-               write (u, '(i6, 2es17.8e3, 3f12.1)') j, res%freq(j), sign(sqrt(abs(res%omega2(j))), res%omega2(j)), &
-                  -1.0_dp, -1.0_dp, -1.0_dp
-            end if
-         end do rows
-         close (u)
-         if (.not. deck%mode_shapes) then
-            write (report, '(a,i0,a,es13.6,a,es13.6,a)') 'modes: ', res%count, ' frequencies from ', res%freq(1), &
-               ' to ', res%freq(res%count), ' Hz (no shapes: &modes shapes = .false.)' // new_line('a') // &
-               'results: ' // trim(path)
-            return
-         end if
-
-         ! -- mode shapes: w at the nodes, each mode scaled to max |w| = 1
-         allocate (names(2 + res%count), texts(2 + res%count))
-         names(1) = 'x_mm';  texts(1) = 'x from the plate centre (mm)'
-         names(2) = 'y_mm';  texts(2) = 'y from the plate centre (mm)'
-         do j = 1, res%count
-            write (names(2 + j), '(a,i0)') 'w_mode_', j
-            write (texts(2 + j), '(a,i0,a)') 'w of mode ', j, ', largest |w| = 1 (-)'
-            wmax(j) = 0.0_dp
-            do k = 1, model%msh%nnode
-               call gather_element(model%msh%eq(:, k), res%shapes(:, j), de)
-               wmax(j) = max(wmax(j), abs(de(3)))
-            end do
-            if (wmax(j) == 0.0_dp) wmax(j) = 1.0_dp
-         end do
-         call open_columns(deck, '_mode_shapes.dat', 'impact: modal analysis, mode shapes (modelled domain)', &
-            names, texts, u, path2, stat, errmsg)
-         if (stat /= 0) return
-         nodes: do k = 1, model%msh%nnode
-            write (u, '(2f12.4)', advance='no') model%msh%coords(:, k)*1.0e3_dp
-            do j = 1, res%count
-               call gather_element(model%msh%eq(:, k), res%shapes(:, j), de)
-               wk = de(3)/wmax(j)
-               write (u, '(f11.6)', advance='no') wk
-            end do
-            write (u, '(a)') ''
-         end do nodes
-         close (u)
-
-         write (report, '(a,i0,a,es13.6,a,es13.6,a)') 'modes: ', res%count, ' frequencies from ', res%freq(1), &
-            ' to ', res%freq(res%count), ' Hz' // new_line('a') // 'results: ' // trim(path) // ', ' // trim(path2)
-      end subroutine run_modes
-
-      !> The transient analysis: load, time integration (pressure_solve),
-      !> history file; the report is a few lines for the terminal.
-      subroutine run_pressure()
-         type(pressure_result_t) :: res
-         real(dp), allocatable :: f(:)
-         character(len=msg_len) :: warning
-         character(len=:), allocatable :: path
-         integer :: u, step, nstep, peak
-
-         allocate (f(model%msh%neq))
-         call assemble_load(deck, model, f, stat, errmsg)
-         if (stat /= 0) return
-         nstep = nint(deck%t_end/deck%dt)
-         call pressure_solve(model, f, deck%dt, nstep, deck%every, res, stat, errmsg)
-         if (stat /= 0) return
-
-         call open_columns(deck, '_pressure_history.dat', &
-            'impact: transient response to a load applied at t = 0 and held', &
-            [character(len=16) :: 'time_us', 'w_centre_mm', 'ke_plate_J', 'strain_energy_J', 'work_J', &
-             'energy_error_J', 'plate_solves'], &
-            [character(len=64) :: 'time (us)', 'deflection at the plate centre (mm)', &
-             'plate kinetic energy, whole plate (J)', 'plate strain energy, whole plate (J)', &
-             'work of the load F . D, whole plate (J)', 'work - kinetic - strain energy (J)', &
-             'plate solutions of the step, eq. (18)-(19) (-)'], u, path, stat, errmsg)
-         if (stat /= 0) return
-         rows: do step = 0, res%nstep
-            if (mod(step, deck%every) /= 0 .and. step /= res%nstep) cycle rows
-            write (u, '(f14.4, 5es16.7e3, i6)') res%t(step)*1.0e6_dp, res%w_centre(step)*1.0e3_dp, &
-               res%kinetic(step), res%strain(step), res%work(step), &
-               res%work(step) - res%kinetic(step) - res%strain(step), res%iterations(step)
-         end do rows
-         close (u)
-
-         peak = maxloc(abs(res%w_centre), dim=1) - 1
-         write (report, '(a,i0,a,es12.5,a,f12.3,a)') 'pressure: ', res%nstep, ' steps; largest centre deflection ', &
-            res%w_centre(peak)*1.0e3_dp, ' mm at ', res%t(peak)*1.0e6_dp, ' us' // new_line('a') // &
-            'results: ' // trim(path)
-         if (res%unconverged > 0) then
-            write (warning, '(a,i0,a)') 'warning: ', res%unconverged, &
-               ' steps did not meet eq. (18) within max_nonlinear_iter'
-            report = trim(report) // new_line('a') // trim(warning)
-         end if
-      end subroutine run_pressure
-
    end subroutine run_other_analysis
+
+   !> The static analysis: load, solution (static_solve), result files;
+   !> the report is a line for the terminal.
+   subroutine run_static(deck, model, report, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(model_t), intent(in) :: model            !< the model
+      character(len=*), intent(out) :: report       !< the report for the terminal ('' when none)
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      type(static_result_t) :: res
+      real(dp), allocatable :: f(:)
+      character(len=msg_len) :: load_unit, solve_msg
+      character(len=:), allocatable :: path, path2
+      integer :: u, inc, n, solve_stat, k
+      real(dp) :: de(ndof_node)
+
+      report = ''
+      stat = 0
+      allocate (f(model%msh%neq))
+      call assemble_load(deck, model, f, stat, errmsg)
+      if (stat /= 0) return
+      n = deck%load_increments
+      if (.not. model%nonlinear) n = 1
+      solve_msg = ''
+      call static_solve(model, f, n, res, solve_stat, solve_msg)
+
+      load_unit = 'Pa'
+      if (deck%load_kind == 'central_force') load_unit = 'N'
+      call open_columns(deck, '_static.dat', 'impact: static analysis, load-deflection path', &
+         [character(len=16) :: 'increment', 'load_factor', 'load', 'w_centre_mm', 'w_centre_h', &
+          'iterations', 'residual'], &
+         [character(len=80) :: 'load increment (-)', 'load factor lambda (-)', &
+          'pressure q0 (Pa) or central force (N): lambda * &load magnitude, in '//trim(load_unit), &
+          'deflection at the plate centre (mm)', 'centre deflection / thickness (-)', &
+          'Newton iterations (linear: 1 solve) (-)', '|lambda F - f_int| / |lambda F| at the end (-)'], &
+         u, path, stat, errmsg)
+      if (stat /= 0) return
+      rows: do inc = 0, res%increments
+         write (u, '(i6, f12.6, 3es16.7e3, i6, es12.3e3)') inc, res%load_factor(inc), &
+            res%load_factor(inc)*deck%load_magnitude, res%w_centre(inc)*1.0e3_dp, &
+            res%w_centre(inc)/deck%h, res%iterations(inc), res%residual(inc)
+      end do rows
+      close (u)
+
+      call open_columns(deck, '_deflection.dat', 'impact: static analysis, nodal displacements ' // &
+         'at the last load reached (modelled domain)', &
+         [character(len=12) :: 'node', 'x_mm', 'y_mm', 'u_mm', 'v_mm', 'w_mm', 'psi_x_rad', 'psi_y_rad'], &
+         [character(len=40) :: 'node (-)', 'x from the plate centre (mm)', 'y from the plate centre (mm)', &
+          'in-plane displacement u (mm)', 'in-plane displacement v (mm)', 'deflection w (mm)', &
+          'rotation psi_x (rad)', 'rotation psi_y (rad)'], u, path2, stat, errmsg)
+      if (stat /= 0) return
+      nodes: do k = 1, model%msh%nnode
+         call gather_element(model%msh%eq(:, k), res%d, de)
+         write (u, '(i6, 2f12.4, 5es16.7e3)') k, model%msh%coords(:, k)*1.0e3_dp, de(1:3)*1.0e3_dp, de(4:5)
+      end do nodes
+      close (u)
+
+      write (report, '(a,es12.5,a,a,a,es12.5,a,f9.4,a)') 'static: load ', &
+         res%load_factor(res%increments)*deck%load_magnitude, ' ', trim(load_unit), &
+         ': centre deflection ', res%w_centre(res%increments)*1.0e3_dp, ' mm (w/h = ', &
+         res%w_centre(res%increments)/deck%h, ')' // new_line('a') // 'results: ' // trim(path) // &
+         ', ' // trim(path2)
+      stat = solve_stat
+      if (stat /= 0) errmsg = solve_msg
+   end subroutine run_static
+
+   !> The modal analysis: solution (modal_solve) and result files; the
+   !> report is a few lines for the terminal.
+   subroutine run_modes(deck, model, report, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(model_t), intent(in) :: model            !< the model
+      character(len=*), intent(out) :: report       !< the report for the terminal ('' when none)
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      type(modal_result_t) :: res
+      character(len=:), allocatable :: path, path2
+      character(len=16), allocatable :: names(:)
+      character(len=48), allocatable :: texts(:)
+      real(dp) :: de(ndof_node), wmax(deck%mode_count), wk
+      integer :: u, j, k
+
+      report = ''
+      stat = 0
+      call modal_solve(model, deck%mode_count, deck%mode_shapes, res, stat, errmsg)
+      if (stat /= 0) return
+
+      call open_columns(deck, '_modes.dat', 'impact: modal analysis, K_L phi = omega^2 M phi (LAPACK dsbgvx)', &
+         [character(len=18) :: 'mode', 'frequency_Hz', 'omega_rad_s', 'w_fraction', 'inplane_fraction', &
+          'rotation_fraction'], &
+         [character(len=64) :: 'mode number, ascending frequency (-)', 'natural frequency (Hz)', &
+          'circular frequency (rad/s)', 'kinetic energy share of w (-; -1: no shapes)', &
+          'kinetic energy share of u, v (-; -1: no shapes)', 'kinetic energy share of psi_x, psi_y (-; -1: no shapes)'], &
+         u, path, stat, errmsg)
+      if (stat /= 0) return
+      rows: do j = 1, res%count
+         if (deck%mode_shapes) then
+            write (u, '(i6, 2es17.8e3, 3f12.6)') j, res%freq(j), sign(sqrt(abs(res%omega2(j))), res%omega2(j)), &
+               res%fraction(:, j)
+         else
+            write (u, '(i6, 2es17.8e3, 3f12.1)') j, res%freq(j), sign(sqrt(abs(res%omega2(j))), res%omega2(j)), &
+               -1.0_dp, -1.0_dp, -1.0_dp
+         end if
+      end do rows
+      close (u)
+      if (.not. deck%mode_shapes) then
+         write (report, '(a,i0,a,es13.6,a,es13.6,a)') 'modes: ', res%count, ' frequencies from ', res%freq(1), &
+            ' to ', res%freq(res%count), ' Hz (no shapes: &modes shapes = .false.)' // new_line('a') // &
+            'results: ' // trim(path)
+         return
+      end if
+
+      ! -- mode shapes: w at the nodes, each mode scaled to max |w| = 1
+      allocate (names(2 + res%count), texts(2 + res%count))
+      names(1) = 'x_mm';  texts(1) = 'x from the plate centre (mm)'
+      names(2) = 'y_mm';  texts(2) = 'y from the plate centre (mm)'
+      do j = 1, res%count
+         write (names(2 + j), '(a,i0)') 'w_mode_', j
+         write (texts(2 + j), '(a,i0,a)') 'w of mode ', j, ', largest |w| = 1 (-)'
+         wmax(j) = 0.0_dp
+         do k = 1, model%msh%nnode
+            call gather_element(model%msh%eq(:, k), res%shapes(:, j), de)
+            wmax(j) = max(wmax(j), abs(de(3)))
+         end do
+         if (wmax(j) == 0.0_dp) wmax(j) = 1.0_dp
+      end do
+      call open_columns(deck, '_mode_shapes.dat', 'impact: modal analysis, mode shapes (modelled domain)', &
+         names, texts, u, path2, stat, errmsg)
+      if (stat /= 0) return
+      nodes: do k = 1, model%msh%nnode
+         write (u, '(2f12.4)', advance='no') model%msh%coords(:, k)*1.0e3_dp
+         do j = 1, res%count
+            call gather_element(model%msh%eq(:, k), res%shapes(:, j), de)
+            wk = de(3)/wmax(j)
+            write (u, '(f11.6)', advance='no') wk
+         end do
+         write (u, '(a)') ''
+      end do nodes
+      close (u)
+
+      write (report, '(a,i0,a,es13.6,a,es13.6,a)') 'modes: ', res%count, ' frequencies from ', res%freq(1), &
+         ' to ', res%freq(res%count), ' Hz' // new_line('a') // 'results: ' // trim(path) // ', ' // trim(path2)
+   end subroutine run_modes
+
+   !> The transient analysis: load, time integration (pressure_solve),
+   !> history file; the report is a few lines for the terminal.
+   subroutine run_pressure(deck, model, report, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(model_t), intent(in) :: model            !< the model
+      character(len=*), intent(out) :: report       !< the report for the terminal ('' when none)
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      type(pressure_result_t) :: res
+      real(dp), allocatable :: f(:)
+      character(len=msg_len) :: warning
+      character(len=:), allocatable :: path
+      integer :: u, step, nstep, peak
+
+      report = ''
+      stat = 0
+      allocate (f(model%msh%neq))
+      call assemble_load(deck, model, f, stat, errmsg)
+      if (stat /= 0) return
+      nstep = nint(deck%t_end/deck%dt)
+      call pressure_solve(model, f, deck%dt, nstep, deck%every, res, stat, errmsg)
+      if (stat /= 0) return
+
+      call open_columns(deck, '_pressure_history.dat', &
+         'impact: transient response to a load applied at t = 0 and held', &
+         [character(len=16) :: 'time_us', 'w_centre_mm', 'ke_plate_J', 'strain_energy_J', 'work_J', &
+          'energy_error_J', 'plate_solves'], &
+         [character(len=64) :: 'time (us)', 'deflection at the plate centre (mm)', &
+          'plate kinetic energy, whole plate (J)', 'plate strain energy, whole plate (J)', &
+          'work of the load F . D, whole plate (J)', 'work - kinetic - strain energy (J)', &
+          'plate solutions of the step, eq. (18)-(19) (-)'], u, path, stat, errmsg)
+      if (stat /= 0) return
+      rows: do step = 0, res%nstep
+         if (mod(step, deck%every) /= 0 .and. step /= res%nstep) cycle rows
+         write (u, '(f14.4, 5es16.7e3, i6)') res%t(step)*1.0e6_dp, res%w_centre(step)*1.0e3_dp, &
+            res%kinetic(step), res%strain(step), res%work(step), &
+            res%work(step) - res%kinetic(step) - res%strain(step), res%iterations(step)
+      end do rows
+      close (u)
+
+      peak = maxloc(abs(res%w_centre), dim=1) - 1
+      write (report, '(a,i0,a,es12.5,a,f12.3,a)') 'pressure: ', res%nstep, ' steps; largest centre deflection ', &
+         res%w_centre(peak)*1.0e3_dp, ' mm at ', res%t(peak)*1.0e6_dp, ' us' // new_line('a') // &
+         'results: ' // trim(path)
+      if (res%unconverged > 0) then
+         write (warning, '(a,i0,a)') 'warning: ', res%unconverged, &
+            ' steps did not meet eq. (18) within max_nonlinear_iter'
+         report = trim(report) // new_line('a') // trim(warning)
+      end if
+   end subroutine run_pressure
 
 end module other_analyses

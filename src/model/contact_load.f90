@@ -143,7 +143,7 @@ contains
          return
       end if
       r = min(a, cl%nose_radius)
-      if (.not. (pat%valid(1) <= r .and. r <= pat%valid(2) .and. all(pat%built_for == load_key(cl, m)))) &
+      if (.not. (pat%valid(1) <= r .and. r <= pat%valid(2) .and. pattern_built_for(pat, cl, m))) &
          call pattern_polynomials(cl, m, r, pat)
       pat%radius = r
       do j = 1, pat%n
@@ -222,6 +222,17 @@ contains
       real(dp) :: key(6)
       key = [cl%share, cl%centre(1), cl%centre(2), cl%nose_radius, real(m%neq, dp), sum(m%xline) + pi*sum(m%yline)]
    end function load_key
+
+   !> Whether the pattern's polynomials were built for the contact load cl
+   !> and the mesh m: their key is load_key's, bit for bit (a cache key, not
+   !> a quantity; a pattern never built has the key 0, which no contact
+   !> load has: its share is positive).
+   pure logical function pattern_built_for(pat, cl, m)
+      type(load_pattern_t), intent(in) :: pat      !< the pattern
+      type(contact_load_t), intent(in) :: cl       !< the contact load
+      type(mesh_t), intent(in) :: m                !< the mesh
+      pattern_built_for = all(pat%built_for == load_key(cl, m))
+   end function pattern_built_for
 
    !> Coefficients of a^0..a^4 of the product of two quadratics in a.
    pure function product_of_quadratics(u, v) result(w)

@@ -97,7 +97,7 @@ contains
       stack%nangle = 0
       plies: do k = 1, n
          do a = 1, stack%nangle
-            if (distinct(a) == angles(k)) then
+            if (distinct(a) == angles(k)) then     ! the same number in the deck: the same tables
                stack%kind(k) = a
                cycle plies
             end if
@@ -171,7 +171,9 @@ contains
       real(dp), intent(in) :: theta_deg     !< fibre angle from x (deg)
       real(dp), intent(in) :: sxy(3)        !< (sigma_x, sigma_y, tau_xy) (Pa)
       real(dp) :: s12(3)                    !< (sigma_11, sigma_22, tau_12) (Pa)
-      s12 = matmul(stress_rotation(cos(theta_deg*pi/180.0_dp), sin(theta_deg*pi/180.0_dp)), sxy)
+      real(dp) :: t(3,3)
+      t = stress_rotation(cos(theta_deg*pi/180.0_dp), sin(theta_deg*pi/180.0_dp))
+      s12 = matmul(t, sxy)
    end function inplane_to_material
 
    !> The transverse shear stresses (t_xz, t_yz) in the axes of a ply at
@@ -187,8 +189,9 @@ contains
 
    !> The stress rotation T: (s11, s22, t12) = T (sx, sy, txy).
    pure function stress_rotation(c, s) result(t)
-      real(dp), intent(in) :: c, s
-      real(dp) :: t(3,3)
+      real(dp), intent(in) :: c             !< cos theta (-)
+      real(dp), intent(in) :: s             !< sin theta (-)
+      real(dp) :: t(3,3)                    !< the rotation (-)
       t(1, :) = [c*c, s*s, 2.0_dp*c*s]
       t(2, :) = [s*s, c*c, -2.0_dp*c*s]
       t(3, :) = [-c*s, c*s, c*c - s*s]
