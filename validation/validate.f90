@@ -37,7 +37,7 @@ program validate
    use input_deck, only: deck_t, read_deck_file, validate_deck
    use materials, only: lamina_t, laminate_t, laminate_from_layup
    use plate_model, only: model_t, build_model
-   use analysis_support, only: assemble_load
+   use analysis_load, only: assemble_load
    use static_analysis, only: static_result_t, static_solve
    use modal_analysis, only: modal_result_t, modal_solve
    use pressure_analysis, only: pressure_result_t, pressure_solve

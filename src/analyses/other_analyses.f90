@@ -10,7 +10,7 @@ module other_analyses
    use deck_schema, only: deck_t
    use plate_model, only: model_t, gather_element
    use mesh, only: ndof_node
-   use analysis_support, only: assemble_load
+   use analysis_load, only: assemble_load
    use result_files, only: open_columns
    use static_analysis, only: static_result_t, static_solve
    use modal_analysis, only: modal_result_t, modal_solve

@@ -12,7 +12,7 @@
 !> vector is the modelled part's share, and a central force enters as
 !> P / sym_factor, as the paper's point contact force does. (The result
 !> files of every analysis: src/results/result_files.f90.)
-module analysis_support
+module analysis_load
    use kinds, only: dp, pi, msg_len
    use deck_schema, only: deck_t
    use plate_model, only: model_t, scatter_add_element
@@ -56,4 +56,4 @@ contains
       end select
    end subroutine assemble_load
 
-end module analysis_support
+end module analysis_load
