@@ -129,10 +129,7 @@ contains
       !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       character(len=msg_len) :: why
-      type(column_t) :: col
-      character(len=8) :: date
-      character(len=10) :: clock
-      integer :: c, k, ecode
+      integer :: ecode
 
       stat = 0
       if (.not. deck%hdf5) return
@@ -151,57 +148,14 @@ contains
       end if
       rf%active = .true.
 
-      ! -- root: what wrote the file
-      call date_and_time(date=date, time=clock)
-      call put_string('.', 'title', 'impact: low-velocity impact of a composite laminate (Choi, Hong & Lee 1991)')
-      call put_string('.', 'code_version', code_version)
-      call put_string('.', 'created', date(1:4)//'-'//date(5:6)//'-'//date(7:8)//'T'//clock(1:2)//':'// &
-         clock(3:4)//':'//clock(5:6))
-
+      call write_root(rf%fid, stat, why)
       call write_deck(rf%fid, deck, stat, why)
       if (stat == 0) call write_mesh(rf%fid, msh, stat, why)
-
-      ! -- histories: one extendible dataset per column of the run
-      if (stat == 0) call h5io_group(rf%fid, 'history', stat, why)
-      if (stat == 0) call put_int('history', 'every', deck%every, 'steps')
-      columns: do c = 1, rf%ncol
-         if (stat /= 0) exit columns
-         col = history_columns(c)      ! (a copy, not an associate name: see src/deck/input_deck.f90)
-         call h5io_create_series(rf%fid, 'history/'//trim(col%name), &
-            merge(h5io_integer, h5io_real, col%whole), hist_chunk, rf%hist(c), stat, why)
-         call put_string('history/'//trim(col%name), 'units', col%unit)
-         call put_string('history/'//trim(col%name), 'description', col%meaning)
-      end do columns
-
-      ! -- field snapshots: extendible, one column of nnode values per snapshot
-      if (stat == 0) call h5io_group(rf%fid, 'fields', stat, why)
-      call put_int('fields', 'fields_every', deck%fields_every, 'steps')
-      if (stat == 0) call h5io_create_series(rf%fid, 'fields/time', h5io_real, 1, rf%snap_time, stat, why)
-      call put_string('fields/time', 'units', 's')
-      if (stat == 0) call h5io_create_series(rf%fid, 'fields/step', h5io_integer, 1, rf%snap_step, stat, why)
-      call put_string('fields/step', 'units', '-')
-      if (stat == 0) call h5io_create_series(rf%fid, 'fields/force', h5io_real, 1, rf%snap_force, stat, why)
-      call put_string('fields/force', 'units', 'N')
-      snapshot_fields: do k = 1, ndof_node
-         if (stat /= 0) exit snapshot_fields
-         call h5io_create_columns(rf%fid, 'fields/'//trim(freedom_name(k)), msh%nnode, rf%snap_field(k), &
-            stat, why)
-         call put_string('fields/'//trim(freedom_name(k)), 'units', field_units(k))
-      end do snapshot_fields
-
-      ! -- the peak: the state of the step of the largest force so far
-      if (stat == 0) call h5io_group(rf%fid, 'peak', stat, why)
-      call put_int('peak', 'step', 0, '-')
-      call put_real('peak', 'time', 0.0_dp, 's')
-      call put_real('peak', 'force', 0.0_dp, 'N')
-      peak_fields: do k = 1, ndof_node
-         if (stat /= 0) exit peak_fields
-         call h5io_write(rf%fid, 'peak/'//trim(freedom_name(k)), [(0.0_dp, c = 1, msh%nnode)], stat, why)
-         call put_string('peak/'//trim(freedom_name(k)), 'units', field_units(k))
-      end do peak_fields
-
+      call create_history(rf, deck%every, stat, why)
+      call create_fields(rf, deck%fields_every, msh%nnode, stat, why)
+      call create_peak(rf%fid, msh%nnode, stat, why)
       if (stat == 0) call h5io_group(rf%fid, 'summary', stat, why)
-      call put_string('summary', 'status', 'running')
+      call attr_text(rf%fid, 'summary', 'status', 'running', stat, why)
       if (stat == 0) call xdmf_open(rf%xdmf, deck, msh, rf%fid, stat, why)
       if (stat == 0) call h5io_flush(rf%fid, stat, why)
       if (stat /= 0) then
@@ -209,31 +163,134 @@ contains
          rf%broken = .true.
          call results_finish(rf, 'failed while opening', [summary_item_t ::], ecode, why)
       end if
-
-   contains
-
-      subroutine put_string(obj, name, value)
-         character(len=*), intent(in) :: obj, name, value
-         if (stat == 0) call h5io_set_attr(rf%fid, obj, name, trim(value), stat, why)
-      end subroutine put_string
-
-      subroutine put_int(obj, name, value, units)
-         character(len=*), intent(in) :: obj, name
-         integer, intent(in) :: value
-         character(len=*), intent(in) :: units
-         if (stat == 0) call h5io_set_attr(rf%fid, obj, name, value, stat, why)
-         if (stat == 0) call h5io_set_attr(rf%fid, obj, name//'_units', units, stat, why)
-      end subroutine put_int
-
-      subroutine put_real(obj, name, value, units)
-         character(len=*), intent(in) :: obj, name
-         real(dp), intent(in) :: value
-         character(len=*), intent(in) :: units
-         if (stat == 0) call h5io_set_attr(rf%fid, obj, name, value, stat, why)
-         if (stat == 0) call h5io_set_attr(rf%fid, obj, name//'_units', units, stat, why)
-      end subroutine put_real
-
    end subroutine results_open
+
+   !> The root's attributes: what wrote the file, and when.
+   subroutine write_root(fid, stat, why)
+      integer(hid_t), intent(in) :: fid             !< the open results file
+      integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
+      character(len=*), intent(inout) :: why        !< reason on failure
+      character(len=8) :: date
+      character(len=10) :: clock
+
+      call date_and_time(date=date, time=clock)
+      call attr_text(fid, '.', 'title', 'impact: low-velocity impact of a composite laminate (Choi, Hong & Lee 1991)', &
+         stat, why)
+      call attr_text(fid, '.', 'code_version', code_version, stat, why)
+      call attr_text(fid, '.', 'created', date(1:4)//'-'//date(5:6)//'-'//date(7:8)//'T'//clock(1:2)//':'// &
+         clock(3:4)//':'//clock(5:6), stat, why)
+   end subroutine write_root
+
+   !> /history: one empty extendible dataset per history column of the run,
+   !> with its units and meaning.
+   subroutine create_history(rf, every, stat, why)
+      type(results_file_t), intent(inout) :: rf     !< the results file (its history datasets on return)
+      integer, intent(in) :: every                  !< &output every (steps between rows)
+      integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
+      character(len=*), intent(inout) :: why        !< reason on failure
+      type(column_t) :: col
+      integer :: c
+
+      if (stat /= 0) return
+      call h5io_group(rf%fid, 'history', stat, why)
+      call attr_int(rf%fid, 'history', 'every', every, 'steps', stat, why)
+      columns: do c = 1, rf%ncol
+         if (stat /= 0) exit columns
+         col = history_columns(c)      ! (a copy, not an associate name: see src/deck/input_deck.f90)
+         call h5io_create_series(rf%fid, 'history/'//trim(col%name), &
+            merge(h5io_integer, h5io_real, col%whole), hist_chunk, rf%hist(c), stat, why)
+         call attr_text(rf%fid, 'history/'//trim(col%name), 'units', col%unit, stat, why)
+         call attr_text(rf%fid, 'history/'//trim(col%name), 'description', col%meaning, stat, why)
+      end do columns
+   end subroutine create_history
+
+   !> /fields: the empty extendible datasets of the snapshots, their times,
+   !> steps and forces, and one column of nnode values per snapshot of each
+   !> nodal field.
+   subroutine create_fields(rf, fields_every, nnode, stat, why)
+      type(results_file_t), intent(inout) :: rf     !< the results file (its snapshot datasets on return)
+      integer, intent(in) :: fields_every           !< &output fields_every (steps between snapshots)
+      integer, intent(in) :: nnode                  !< nodes of the mesh
+      integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
+      character(len=*), intent(inout) :: why        !< reason on failure
+      integer :: k
+
+      if (stat /= 0) return
+      call h5io_group(rf%fid, 'fields', stat, why)
+      call attr_int(rf%fid, 'fields', 'fields_every', fields_every, 'steps', stat, why)
+      if (stat == 0) call h5io_create_series(rf%fid, 'fields/time', h5io_real, 1, rf%snap_time, stat, why)
+      call attr_text(rf%fid, 'fields/time', 'units', 's', stat, why)
+      if (stat == 0) call h5io_create_series(rf%fid, 'fields/step', h5io_integer, 1, rf%snap_step, stat, why)
+      call attr_text(rf%fid, 'fields/step', 'units', '-', stat, why)
+      if (stat == 0) call h5io_create_series(rf%fid, 'fields/force', h5io_real, 1, rf%snap_force, stat, why)
+      call attr_text(rf%fid, 'fields/force', 'units', 'N', stat, why)
+      snapshot_fields: do k = 1, ndof_node
+         if (stat /= 0) exit snapshot_fields
+         call h5io_create_columns(rf%fid, 'fields/'//trim(freedom_name(k)), nnode, rf%snap_field(k), stat, why)
+         call attr_text(rf%fid, 'fields/'//trim(freedom_name(k)), 'units', field_units(k), stat, why)
+      end do snapshot_fields
+   end subroutine create_fields
+
+   !> /peak: the state of the step of the largest force so far, none yet
+   !> (step 0, time 0, force 0, the nodal fields 0).
+   subroutine create_peak(fid, nnode, stat, why)
+      integer(hid_t), intent(in) :: fid             !< the open results file
+      integer, intent(in) :: nnode                  !< nodes of the mesh
+      integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
+      character(len=*), intent(inout) :: why        !< reason on failure
+      integer :: k, n
+
+      if (stat /= 0) return
+      call h5io_group(fid, 'peak', stat, why)
+      call attr_int(fid, 'peak', 'step', 0, '-', stat, why)
+      call attr_real(fid, 'peak', 'time', 0.0_dp, 's', stat, why)
+      call attr_real(fid, 'peak', 'force', 0.0_dp, 'N', stat, why)
+      peak_fields: do k = 1, ndof_node
+         if (stat /= 0) exit peak_fields
+         call h5io_write(fid, 'peak/'//trim(freedom_name(k)), [(0.0_dp, n = 1, nnode)], stat, why)
+         call attr_text(fid, 'peak/'//trim(freedom_name(k)), 'units', field_units(k), stat, why)
+      end do peak_fields
+   end subroutine create_peak
+
+   !> Attribute `name` of obj, the text value without its trailing blanks;
+   !> nothing after an earlier failure.
+   subroutine attr_text(fid, obj, name, value, stat, why)
+      integer(hid_t), intent(in) :: fid             !< the open results file
+      character(len=*), intent(in) :: obj           !< the object ('.' for the root)
+      character(len=*), intent(in) :: name          !< the attribute
+      character(len=*), intent(in) :: value         !< its text
+      integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
+      character(len=*), intent(inout) :: why        !< reason on failure
+      if (stat == 0) call h5io_set_attr(fid, obj, name, trim(value), stat, why)
+   end subroutine attr_text
+
+   !> Integer attribute `name` of obj and its unit in `<name>_units`;
+   !> nothing after an earlier failure.
+   subroutine attr_int(fid, obj, name, value, units, stat, why)
+      integer(hid_t), intent(in) :: fid             !< the open results file
+      character(len=*), intent(in) :: obj           !< the object
+      character(len=*), intent(in) :: name          !< the attribute
+      integer, intent(in) :: value                  !< its value
+      character(len=*), intent(in) :: units         !< its unit
+      integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
+      character(len=*), intent(inout) :: why        !< reason on failure
+      if (stat == 0) call h5io_set_attr(fid, obj, name, value, stat, why)
+      if (stat == 0) call h5io_set_attr(fid, obj, name//'_units', units, stat, why)
+   end subroutine attr_int
+
+   !> Real attribute `name` of obj and its unit in `<name>_units`; nothing
+   !> after an earlier failure.
+   subroutine attr_real(fid, obj, name, value, units, stat, why)
+      integer(hid_t), intent(in) :: fid             !< the open results file
+      character(len=*), intent(in) :: obj           !< the object
+      character(len=*), intent(in) :: name          !< the attribute
+      real(dp), intent(in) :: value                 !< its value
+      character(len=*), intent(in) :: units         !< its unit
+      integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
+      character(len=*), intent(inout) :: why        !< reason on failure
+      if (stat == 0) call h5io_set_attr(fid, obj, name, value, stat, why)
+      if (stat == 0) call h5io_set_attr(fid, obj, name//'_units', units, stat, why)
+   end subroutine attr_real
 
    !> Appends one history row (SI units, in the order of history_columns)
    !> to /history: it waits in memory for the next flush (module header),

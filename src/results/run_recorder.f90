@@ -31,7 +31,7 @@
 !> warnings and the divergence stop see those rows.
 module run_recorder
    use, intrinsic :: iso_fortran_env, only: error_unit, int64
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use kinds, only: dp, msg_len
    use number_text, only: int_str, real_short
    use deck_schema, only: deck_t
@@ -111,6 +111,30 @@ module run_recorder
       real(dp) :: c_plate = -1, c_impactor = 0, max_slope = 0
       logical :: warned(nwarn) = .false.
    end type record_t
+
+   !> What record_step knows of the step it records, for its parts.
+   type :: step_figures_t
+      integer :: step = 0              !< the step
+      real(dp) :: t = 0                !< its time (s)
+      integer :: ic = 0                !< its contact iterations
+      integer :: solves = 0            !< its plate solutions, eq. (19)
+      real(dp) :: w_plate = 0          !< plate deflection under the impactor, pressure-weighted mean (m)
+      real(dp) :: strain_y = 0         !< in-plane y strain on the back face at the gauge (-)
+      real(dp) :: w_rigid = 0          !< free edges: the rigid-body part of the deflection under the impactor (m)
+   end type step_figures_t
+
+   !> Longest text of a warning in its table (step_warnings; the longest is
+   !> 230 characters, and gfortran's -Wall flags a text cut short).
+   integer, parameter :: warning_text_len = 256
+   !> A line of the warnings' table (step_warnings): a warning's kind, its
+   !> test at this step and its text, in which {1} and {2} stand for its
+   !> figures and {note} for the nonlinear iteration's report (warning_text).
+   type :: warning_check_t
+      integer :: kind                                  !< the kind (warn_*), warned once per run
+      logical :: due                                   !< its test holds at this step
+      real(dp) :: figures(2)                           !< the numbers of its text (unused: 0)
+      character(len=warning_text_len) :: text          !< its text
+   end type warning_check_t
 
 contains
 
@@ -196,16 +220,47 @@ contains
       logical, intent(in) :: converged                   !< its iterations converged
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
-      real(dp) :: t, w_plate, strain_y, work, row(nhist_strength), w_bend, w_rigid
-      integer :: solves
+      type(step_figures_t) :: fig
 
       stat = 0
-      t = real(step, dp)*rec%dt
+      fig%step = step
+      fig%t = real(step, dp)*rec%dt
+      fig%ic = ic
       rec%steps = step
-      solves = solver%solves - rec%solves_before
+      fig%solves = solver%solves - rec%solves_before
       rec%solves_before = solver%solves
 
-      ! -- energies: the contact force's work on the plate, the contact's share
+      call add_contact_work(rec, plate, imp, cit)
+      fig%w_plate = pattern_mean(cit%pattern, plate%d)
+      fig%strain_y = back_face_strain(model, plate%d)
+      call update_maxima(rec, fig, model, plate, imp, hist, cit, stat, errmsg)
+      if (stat /= 0) return
+      if (mod(step, rec%every) == 0 .or. step == rec%nstep) then
+         call history_row(rec, fig, model, plate, imp, hist, cit, stat, errmsg)
+         if (stat /= 0) return
+      end if
+      if (.not. (ieee_is_finite(fig%w_plate) .and. ieee_is_finite(imp%f) .and. ieee_is_finite(imp%w))) &
+         call stop_here(rec, fig, 'failed at step ' // int_str(step), 'the state is not finite (NaN or Inf): ' &
+         // 'the iterations reached values the model cannot hold')
+      call results_state(rec%h5, step, fig%t, imp%f, plate%d, &
+                         mod(step, rec%fields_every) == 0 .or. step == rec%nstep, stat, errmsg)
+      if (stat /= 0) return
+      call step_warnings(rec, fig, solver, cit, converged, stat, errmsg)
+      call stop_on_signal(rec, fig)
+   end subroutine record_step
+
+   !> The energies of every step: the contact force's work on the plate, by
+   !> the trapezoidal rule of the load vectors at both ends of the step,
+   !> 1/2 (F_t p_t + F_t+dt p_t+dt)^T (D_t+dt - D_t), and the energy the
+   !> contact took, the impactor's work 1/2 (F_t + F_t+dt) dw_r less that
+   !> (module header); the step's end becomes the next one's start.
+   subroutine add_contact_work(rec, plate, imp, cit)
+      type(record_t), intent(inout) :: rec               !< the record
+      type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
+      type(impactor_state_t), intent(in) :: imp          !< the impactor at t + dt
+      type(contact_iteration_t), intent(in) :: cit       !< the step's contact force and area
+      real(dp) :: work
+
       work = 0.5_dp*(rec%imp_prev%f*pattern_mean(rec%pattern_prev, plate%d - rec%d_prev) &
                      + imp%f*pattern_mean(cit%pattern, plate%d - rec%d_prev))
       rec%contact_work = rec%contact_work + work
@@ -213,159 +268,271 @@ contains
       rec%imp_prev = imp
       rec%pattern_prev = cit%pattern
       rec%d_prev = plate%d
+   end subroutine add_contact_work
 
-      ! -- the summary's figures
-      w_plate = pattern_mean(cit%pattern, plate%d)
-      strain_y = back_face_strain(model, plate%d)
+   !> The summary's running figures of every step: the peak force and its
+   !> time, the contacts and their times, the largest deflections and strain,
+   !> the iterations, the bending deflection (and with free edges the rigid-
+   !> body part of the deflection under the impactor, fig%w_rigid), the
+   !> largest slope of the fixed-point force update, the peak's ply stresses.
+   subroutine update_maxima(rec, fig, model, plate, imp, hist, cit, stat, errmsg)
+      type(record_t), intent(inout) :: rec               !< the record
+      type(step_figures_t), intent(inout) :: fig         !< the step (in); its w_rigid (out)
+      type(model_t), intent(in) :: model                 !< the model
+      type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
+      type(impactor_state_t), intent(in) :: imp          !< the impactor at t + dt
+      type(contact_history_t), intent(in) :: hist        !< the contact history before this step's commit
+      type(contact_iteration_t), intent(in) :: cit       !< the step's indentation
+      integer, intent(out) :: stat                       !< 0 on success
+      character(len=*), intent(inout) :: errmsg          !< reason on failure
+      real(dp) :: w_bend
+
       if (imp%f > rec%peak_force) then
          rec%peak_force = imp%f
-         rec%time_of_peak = t
+         rec%time_of_peak = fig%t
       end if
       if (imp%f > 0.0_dp .and. .not. rec%in_contact) then
          rec%in_contact = .true.
          rec%contacts = rec%contacts + 1
-         if (rec%contacts == 1) rec%first_contact_start = t
+         if (rec%contacts == 1) rec%first_contact_start = fig%t
       else if (imp%f <= 0.0_dp .and. rec%in_contact) then
          rec%in_contact = .false.
-         if (rec%contacts == 1) rec%first_contact_end = t
+         if (rec%contacts == 1) rec%first_contact_end = fig%t
       end if
-      rec%max_deflection = nan_max(rec%max_deflection, abs(w_plate))
-      rec%max_strain_y = nan_max(rec%max_strain_y, abs(strain_y))
-      rec%contact_iterations = rec%contact_iterations + ic
-      rec%max_contact_iter = max(rec%max_contact_iter, ic)
-      rec%max_solves = max(rec%max_solves, solves)
+      rec%max_deflection = nan_max(rec%max_deflection, abs(fig%w_plate))
+      rec%max_strain_y = nan_max(rec%max_strain_y, abs(fig%strain_y))
+      rec%contact_iterations = rec%contact_iterations + fig%ic
+      rec%max_contact_iter = max(rec%max_contact_iter, fig%ic)
+      rec%max_solves = max(rec%max_solves, fig%solves)
       rec%max_w_over_h = nan_max(rec%max_w_over_h, max_deflection(model, plate%d)/rec%h)
       call bending_deflection(model%msh, rec%edges, plate%d, w_bend, stat, errmsg)
       if (stat /= 0) return
       rec%w_bend_max = nan_max(rec%w_bend_max, abs(w_bend))
-      w_rigid = 0.0_dp     ! the rigid-body part of the deflection under the impactor (free edges)
-      if (rec%edges == 'free') w_rigid = plate%d(model%msh%eq(3, model%msh%impact_node)) - w_bend
+      fig%w_rigid = 0.0_dp
+      if (rec%edges == 'free') fig%w_rigid = plate%d(model%msh%eq(3, model%msh%impact_node)) - w_bend
       if (rec%c_plate >= 0.0_dp) rec%max_slope = max(rec%max_slope, &
          (rec%c_plate + rec%c_impactor)*law_tangent(model%law, hist, cit%alpha))
-      call damage_peak(rec%damage, step, t, imp%f, plate%d)
+      call damage_peak(rec%damage, fig%step, fig%t, imp%f, plate%d)
+   end subroutine update_maxima
 
-      ! -- the history row and the fields
-      if (mod(step, rec%every) == 0 .or. step == rec%nstep) then
-         row(col_time) = t;  row(col_force) = imp%f;  row(col_alpha) = cit%alpha
-         row(col_w_plate) = w_plate;  row(col_w_impactor) = imp%w;  row(col_v_impactor) = imp%v
-         row(col_strain_y) = strain_y
-         row(col_ke_impactor) = 0.5_dp*rec%mass*imp%v**2
-         row(col_ke_plate) = plate_kinetic_energy(model, plate%v)
-         row(col_strain_energy) = plate_strain_energy(model, plate%d)
-         row(col_contact_work) = rec%contact_work
-         row(col_contact_energy) = rec%contact_energy
-         row(col_energy_error) = rec%e0 - (row(col_ke_impactor) + row(col_ke_plate) + row(col_strain_energy) &
-                                           + rec%contact_energy)
-         row(col_branch) = contact_branch(hist, cit%alpha)
-         if (imp%f <= 0.0_dp) row(col_branch) = branch_none
-         row(col_contact_iter) = ic
-         row(col_solves) = solves
-         call damage_step(rec%damage, model, t, plate%d)
-         if (rec%damage%active) then
-            row(col_failure_index) = rec%damage%step_fi
-            row(col_failure_mode) = rec%damage%step_mode
-         end if
-         rec%max_energy_error = nan_max(rec%max_energy_error, abs(row(col_energy_error)))
-         rec%energy_created = nan_max(rec%energy_created, -row(col_energy_error))
-         rec%energy_lost = nan_max(rec%energy_lost, row(col_energy_error))
-         call write_row(rec, row, stat, errmsg)
-         if (stat /= 0) return
-         if (row(col_energy_error) < -rec%e0) call stop_here('diverged at step ' // int_str(step), &
-            'the run created more energy than the impact brought (energy balance ' &
-            // real_short(row(col_energy_error)) // ' J, E0 = ' // real_short(rec%e0) // ' J): it has diverged')
+   !> The history row of the step (every &output every steps, and the last),
+   !> to the history file and <prefix>.h5; a run whose energy balance goes
+   !> below -E0 has diverged and stops here (module header).
+   subroutine history_row(rec, fig, model, plate, imp, hist, cit, stat, errmsg)
+      type(record_t), intent(inout) :: rec               !< the record
+      type(step_figures_t), intent(in) :: fig            !< the step
+      type(model_t), intent(in) :: model                 !< the model
+      type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
+      type(impactor_state_t), intent(in) :: imp          !< the impactor at t + dt
+      type(contact_history_t), intent(in) :: hist        !< the contact history before this step's commit
+      type(contact_iteration_t), intent(in) :: cit       !< the step's indentation
+      integer, intent(out) :: stat                       !< 0 on success
+      character(len=*), intent(inout) :: errmsg          !< reason on failure
+      real(dp) :: row(nhist_strength)
+
+      row(col_time) = fig%t;  row(col_force) = imp%f;  row(col_alpha) = cit%alpha
+      row(col_w_plate) = fig%w_plate;  row(col_w_impactor) = imp%w;  row(col_v_impactor) = imp%v
+      row(col_strain_y) = fig%strain_y
+      call row_energies(rec, model, plate, imp, row)
+      row(col_branch) = contact_branch(hist, cit%alpha)
+      if (imp%f <= 0.0_dp) row(col_branch) = branch_none
+      row(col_contact_iter) = fig%ic
+      row(col_solves) = fig%solves
+      call damage_step(rec%damage, model, fig%t, plate%d)
+      if (rec%damage%active) then
+         row(col_failure_index) = rec%damage%step_fi
+         row(col_failure_mode) = rec%damage%step_mode
       end if
-      if (.not. (ieee_is_finite(w_plate) .and. ieee_is_finite(imp%f) .and. ieee_is_finite(imp%w))) &
-         call stop_here('failed at step ' // int_str(step), 'the state is not finite (NaN or Inf): ' &
-         // 'the iterations reached values the model cannot hold')
-      call results_state(rec%h5, step, t, imp%f, plate%d, mod(step, rec%fields_every) == 0 .or. step == rec%nstep, &
-                         stat, errmsg)
+      call write_row(rec, row, stat, errmsg)
       if (stat /= 0) return
+      if (row(col_energy_error) < -rec%e0) call stop_here(rec, fig, 'diverged at step ' // int_str(fig%step), &
+         'the run created more energy than the impact brought (energy balance ' &
+         // real_short(row(col_energy_error)) // ' J, E0 = ' // real_short(rec%e0) // ' J): it has diverged')
+   end subroutine history_row
 
-      ! -- warnings: fall-backs, deflections beyond von Karman's theory, a
-      !    step that did not converge and went on (force_update = 'plain')
-      if (solver%mixed_solves > rec%mixed_seen) then
+   !> The energies of a history row (J, whole plate): the impactor's and the
+   !> plate's kinetic energy, the plate's strain energy, the contact's work
+   !> and energy (add_contact_work), and the balance E0 less the four, with
+   !> the summary's largest balance, energy created (-) and energy lost (+).
+   subroutine row_energies(rec, model, plate, imp, row)
+      type(record_t), intent(inout) :: rec               !< the record
+      type(model_t), intent(in) :: model                 !< the model
+      type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
+      type(impactor_state_t), intent(in) :: imp          !< the impactor at t + dt
+      real(dp), intent(inout) :: row(nhist_strength)     !< the history row: its energy columns set
+
+      row(col_ke_impactor) = 0.5_dp*rec%mass*imp%v**2
+      row(col_ke_plate) = plate_kinetic_energy(model, plate%v)
+      row(col_strain_energy) = plate_strain_energy(model, plate%d)
+      row(col_contact_work) = rec%contact_work
+      row(col_contact_energy) = rec%contact_energy
+      row(col_energy_error) = rec%e0 - (row(col_ke_impactor) + row(col_ke_plate) + row(col_strain_energy) &
+                                        + rec%contact_energy)
+      rec%max_energy_error = nan_max(rec%max_energy_error, abs(row(col_energy_error)))
+      rec%energy_created = nan_max(rec%energy_created, -row(col_energy_error))
+      rec%energy_lost = nan_max(rec%energy_lost, row(col_energy_error))
+   end subroutine row_energies
+
+   !> The warnings of the step, from the table below (each warning's kind,
+   !> test and text, in the order they are given): fall-backs, deflections
+   !> beyond von Karman's theory, energy created or lost, an indentation
+   !> through the plate, a free plate's flight, a step that did not converge
+   !> and went on (force_update = 'plain'). Every step a test holds is
+   !> counted for the summary (count_step); each kind is warned once (warn).
+   subroutine step_warnings(rec, fig, solver, cit, converged, stat, errmsg)
+      type(record_t), intent(inout) :: rec               !< the record
+      type(step_figures_t), intent(in) :: fig            !< the step
+      type(solver_t), intent(in) :: solver               !< the solver (its fall-backs)
+      type(contact_iteration_t), intent(in) :: cit       !< the step's contact iteration
+      logical, intent(in) :: converged                   !< its iterations converged
+      integer, intent(out) :: stat                       !< 0 on success
+      character(len=*), intent(inout) :: errmsg          !< reason on failure
+      real(dp), parameter :: none(2) = 0.0_dp
+      type(warning_check_t) :: table(9)
+      integer :: k
+
+      stat = 0
+      table = [ &
+         warning_check_t(warn_mixing, solver%mixed_solves > rec%mixed_seen, none, 'the nonlinear iteration ' &
+            // '(eq. 19) fell back to Anderson mixing (later such steps are counted in the summary, ' &
+            // 'nonlinear_fallback_steps): {note}'), &
+         warning_check_t(warn_contact, cit%fell_back, none, 'the fixed-point force update stopped contracting; ' &
+            // 'the step went on with the bracketed update (later such steps are counted in the summary, ' &
+            // 'contact_fallback_steps)'), &
+         warning_check_t(warn_contact, cit%cut .and. .not. cit%fell_back, none, 'a plate solution failed under ' &
+            // 'an assumed force; the force was cut (later such steps are counted in the summary, ' &
+            // 'contact_fallback_steps)'), &
+         warning_check_t(warn_deflection, rec%max_w_over_h > von_karman_limit, [rec%max_w_over_h, &
+            von_karman_limit], 'the plate deflection is {1} times the thickness, beyond the moderately large ' &
+            // 'deflections of von Karman''s theory (w/h > {2}): the results are outside the model''s validity'), &
+         warning_check_t(warn_energy, rec%energy_created > energy_created_bound*rec%e0, [rec%energy_created/rec%e0, &
+            energy_created_bound], 'the integration has created {1} E0 of energy (more than {2} E0): the time ' &
+            // 'step is too long for this scene''s contacts; halve dt until max_energy_created_J settles ' &
+            // '(docs/STABILITY.md)'), &
+         warning_check_t(warn_energy_lost, rec%energy_lost > energy_lost_bound*rec%e0, [rec%energy_lost/rec%e0, &
+            energy_lost_bound], 'the integration has lost {1} E0 of energy (more than {2} E0): the time step is ' &
+            // 'too long for this scene''s contacts, or C_r1, C_r2 too loose; halve dt until max_energy_lost_J ' &
+            // 'settles (docs/STABILITY.md)'), &
+         warning_check_t(warn_indentation, cit%alpha > rec%h, [cit%alpha*1.0e3_dp, rec%h*1.0e3_dp], 'the ' &
+            // 'indentation ({1} mm) exceeds the plate thickness ({2} mm): the impactor is going through the ' &
+            // 'plate, beyond the contact law (eq. 11-12) and the plate theory'), &
+         warning_check_t(warn_drift, abs(fig%w_rigid) > rec%w_bend_max .and. rec%w_bend_max > 0.0_dp, &
+            [abs(fig%w_rigid)*1.0e3_dp, rec%w_bend_max*1.0e3_dp], 'the free plate has moved {1} mm as a rigid ' &
+            // 'body under the impactor, more than its largest bending deflection ({2} mm): nothing holds it, ' &
+            // 'and from here on its deflections are mostly flight, not bending'), &
+         warning_check_t(warn_unconverged, .not. converged, none, 'the contact iteration (eq. 17) did not ' &
+            // 'converge in max_contact_iter iterations; with force_update = ''plain'' the step keeps its last ' &
+            // 'assumed force and the run goes on (later such steps are counted in the summary, ' &
+            // 'unconverged_steps)') ]
+      do k = 1, size(table)
+         if (.not. table(k)%due) cycle
+         call count_step(rec, table(k)%kind, fig%step, solver)
+         if (.not. rec%warned(table(k)%kind)) &
+            call warn(rec, fig, table(k)%kind, warning_text(table(k), solver), stat, errmsg)
+      end do
+   end subroutine step_warnings
+
+   !> The summary's count of the steps of a warning's kind (the warning
+   !> itself is given once): fall-backs of the nonlinear iteration and of the
+   !> contact iteration, steps that did not converge.
+   subroutine count_step(rec, kind, step, solver)
+      type(record_t), intent(inout) :: rec               !< the record
+      integer, intent(in) :: kind                        !< the warning's kind (warn_*)
+      integer, intent(in) :: step                        !< the step
+      type(solver_t), intent(in) :: solver               !< the solver (its fall-backs so far)
+
+      select case (kind)
+      case (warn_mixing)
          rec%mixed_seen = solver%mixed_solves
          rec%nonlinear_fallback_steps = rec%nonlinear_fallback_steps + 1
-         call warn(warn_mixing, 'the nonlinear iteration (eq. 19) fell back to Anderson mixing (later such ' &
-            // 'steps are counted in the summary, nonlinear_fallback_steps): ' // solver%mixing_note)
-      end if
-      if (cit%cut .or. cit%fell_back) then
+      case (warn_contact)
          rec%contact_fallback_steps = rec%contact_fallback_steps + 1
-         if (cit%fell_back) then
-            call warn(warn_contact, 'the fixed-point force update stopped contracting; the step went on with ' &
-               // 'the bracketed update (later such steps are counted in the summary, contact_fallback_steps)')
-         else
-            call warn(warn_contact, 'a plate solution failed under an assumed force; the force was cut (later ' &
-               // 'such steps are counted in the summary, contact_fallback_steps)')
-         end if
-      end if
-      if (rec%max_w_over_h > von_karman_limit) call warn(warn_deflection, 'the plate deflection is ' &
-         // real_short(rec%max_w_over_h) // ' times the thickness, beyond the moderately large deflections of ' &
-         // 'von Karman''s theory (w/h > ' // real_short(von_karman_limit) // '): the results are outside ' &
-         // 'the model''s validity')
-      if (rec%energy_created > energy_created_bound*rec%e0) call warn(warn_energy, 'the integration has ' &
-         // 'created ' // real_short(rec%energy_created/rec%e0) // ' E0 of energy (more than ' &
-         // real_short(energy_created_bound) // ' E0): the time step is too long for this scene''s contacts; ' &
-         // 'halve dt until max_energy_created_J settles (docs/STABILITY.md)')
-      if (rec%energy_lost > energy_lost_bound*rec%e0) call warn(warn_energy_lost, 'the integration has ' &
-         // 'lost ' // real_short(rec%energy_lost/rec%e0) // ' E0 of energy (more than ' &
-         // real_short(energy_lost_bound) // ' E0): the time step is too long for this scene''s contacts, ' &
-         // 'or C_r1, C_r2 too loose; halve dt until max_energy_lost_J settles (docs/STABILITY.md)')
-      if (cit%alpha > rec%h) call warn(warn_indentation, 'the indentation (' // real_short(cit%alpha*1.0e3_dp) &
-         // ' mm) exceeds the plate thickness (' // real_short(rec%h*1.0e3_dp) // ' mm): the impactor is ' &
-         // 'going through the plate, beyond the contact law (eq. 11-12) and the plate theory')
-      if (abs(w_rigid) > rec%w_bend_max .and. rec%w_bend_max > 0.0_dp) call warn(warn_drift, 'the free ' &
-         // 'plate has moved ' // real_short(abs(w_rigid)*1.0e3_dp) // ' mm as a rigid body under the ' &
-         // 'impactor, more than its largest bending deflection (' // real_short(rec%w_bend_max*1.0e3_dp) &
-         // ' mm): nothing holds it, and from here on its deflections are mostly flight, not bending')
-      if (.not. converged) then
+      case (warn_unconverged)
          rec%unconverged_steps = rec%unconverged_steps + 1
          if (rec%first_unconverged == 0) rec%first_unconverged = step
-         call warn(warn_unconverged, 'the contact iteration (eq. 17) did not converge in max_contact_iter ' &
-            // 'iterations; with force_update = ''plain'' the step keeps its last assumed force and the run ' &
-            // 'goes on (later such steps are counted in the summary, unconverged_steps)')
-      end if
+      end select
+   end subroutine count_step
 
-      ! -- a stop signal (SIGTERM, SIGINT): the run ends after this step
+   !> The text of a warning: its table's text with {1} and {2} its figures
+   !> (real_short) and {note} the nonlinear iteration's report of its fall-back.
+   function warning_text(check, solver) result(text)
+      type(warning_check_t), intent(in) :: check         !< the warning's line of the table
+      type(solver_t), intent(in) :: solver               !< the solver (its mixing_note)
+      character(len=:), allocatable :: text              !< the text
+
+      text = trim(check%text)
+      if (index(text, '{1}') > 0) text = replaced(text, '{1}', real_short(check%figures(1)))
+      if (index(text, '{2}') > 0) text = replaced(text, '{2}', real_short(check%figures(2)))
+      if (index(text, '{note}') > 0) text = replaced(text, '{note}', solver%mixing_note)
+   end function warning_text
+
+   !> text with its first key replaced by value.
+   pure function replaced(text, key, value) result(out)
+      character(len=*), intent(in) :: text               !< the text, holding key
+      character(len=*), intent(in) :: key                !< what to replace
+      character(len=*), intent(in) :: value              !< what replaces it
+      character(len=:), allocatable :: out               !< the text with value for key
+      integer :: i
+
+      i = index(text, key)
+      out = text(:i - 1) // value // text(i + len(key):)
+   end function replaced
+
+   !> A warning on standard error naming the step and time, given once per
+   !> kind; counted in the summary. With &analysis stop_on_warning the run
+   !> stops after this step.
+   subroutine warn(rec, fig, kind, message, stat, errmsg)
+      type(record_t), intent(inout) :: rec               !< the record
+      type(step_figures_t), intent(in) :: fig            !< the step
+      integer, intent(in) :: kind                        !< the warning's kind (warn_*)
+      character(len=*), intent(in) :: message            !< its text
+      integer, intent(inout) :: stat                     !< 0 on success; the first failure is kept
+      character(len=*), intent(inout) :: errmsg          !< reason on failure
+      integer :: ios
+      character(len=msg_len) :: why
+
+      if (rec%warned(kind)) return
+      rec%warned(kind) = .true.
+      rec%warnings = rec%warnings + 1
+      write (error_unit, '(a,i0,a,es11.4,a)') 'impact: warning: step ', fig%step, ' (t = ', fig%t, ' s): ' // message
+      call results_flush(rec%h5, ios, why)      ! the results up to the warning, on disk
+      if (ios /= 0 .and. stat == 0) then
+         stat = ios
+         errmsg = why
+      end if
+      if (rec%stop_on_warning) call stop_here(rec, fig, 'stopped at step ' // int_str(fig%step) // ' by the ' &
+         // 'warning (&analysis stop_on_warning = .true.)', '')
+   end subroutine warn
+
+   !> A stop signal (SIGTERM, SIGINT; src/system/signal_stop.f90): the run
+   !> ends after this step, with exit status 128 + the signal's number.
+   subroutine stop_on_signal(rec, fig)
+      type(record_t), intent(inout) :: rec               !< the record
+      type(step_figures_t), intent(in) :: fig            !< the step
+
       if (stop_signal_caught() > 0) then
-         call stop_here('stopped by signal ' // int_str(stop_signal_caught()) // ' at step ' // int_str(step), '')
+         call stop_here(rec, fig, 'stopped by signal ' // int_str(stop_signal_caught()) // ' at step ' &
+            // int_str(fig%step), '')
          rec%exit_status = 128 + stop_signal_caught()
       end if
+   end subroutine stop_on_signal
 
-   contains
+   !> The run must end after this step (rec%stop), with this status in the
+   !> summary and exit status 1; the first reason given stays. A non-empty
+   !> message goes to standard error.
+   subroutine stop_here(rec, fig, status, message)
+      type(record_t), intent(inout) :: rec               !< the record
+      type(step_figures_t), intent(in) :: fig            !< the step
+      character(len=*), intent(in) :: status             !< the summary's status: 'diverged at step N', ...
+      character(len=*), intent(in) :: message            !< why, for standard error ('' for nothing)
 
-      !> A warning on standard error naming the step and time, given once per
-      !> kind; counted in the summary. With &analysis stop_on_warning the
-      !> run stops after this step.
-      subroutine warn(kind, message)
-         integer, intent(in) :: kind
-         character(len=*), intent(in) :: message
-         integer :: ios
-         character(len=msg_len) :: why
-         if (rec%warned(kind)) return
-         rec%warned(kind) = .true.
-         rec%warnings = rec%warnings + 1
-         write (error_unit, '(a,i0,a,es11.4,a)') 'impact: warning: step ', step, ' (t = ', t, ' s): ' // message
-         call results_flush(rec%h5, ios, why)      ! the results up to the warning, on disk
-         if (ios /= 0 .and. stat == 0) then
-            stat = ios
-            errmsg = why
-         end if
-         if (rec%stop_on_warning) call stop_here('stopped at step ' // int_str(step) // ' by the warning ' &
-            // '(&analysis stop_on_warning = .true.)', '')
-      end subroutine warn
-
-      subroutine stop_here(status, message)
-         character(len=*), intent(in) :: status, message
-         if (rec%stop) return
-         rec%stop = .true.
-         rec%stop_status = status
-         rec%exit_status = 1
-         if (status(1:min(8, len(status))) == 'diverged') rec%diverged_at = t
-         if (len(message) > 0) write (error_unit, '(a)') 'impact: error: step ' // int_str(step) // ': ' // message
-      end subroutine stop_here
-
-   end subroutine record_step
+      if (rec%stop) return
+      rec%stop = .true.
+      rec%stop_status = status
+      rec%exit_status = 1
+      if (status(1:min(8, len(status))) == 'diverged') rec%diverged_at = fig%t
+      if (len(message) > 0) write (error_unit, '(a)') 'impact: error: step ' // int_str(fig%step) // ': ' // message
+   end subroutine stop_here
 
    !> Writes the summary (<prefix>_summary.dat and /summary of <prefix>.h5)
    !> with the run's status and closes the files; after a linear run whose
@@ -385,9 +552,39 @@ contains
       character(len=*), intent(inout) :: errmsg     !< reason on failure (the first)
       type(summary_item_t), allocatable :: s(:)
       character(len=msg_len) :: text, dtext
-      real(dp) :: duration
-      logical :: ended, short
       integer :: ios, dstat
+
+      call closing_warnings(rec, model)
+      call run_summary(rec, solver, status, hist, imp, s)
+      call damage_close(rec%damage, model, s, rec%h5, dstat, dtext)
+      call summary_integer(s, 'warnings', rec%warnings)
+      call summary_real(s, 'cpu_s', 'cpu', 's', cpu_s, 1.0_dp)
+
+      if (rec%hist_unit >= 0) close (rec%hist_unit, iostat=ios)
+      rec%hist_unit = -1
+      call close_probe(rec%hist_probe)
+      if (.not. allocated(rec%hist_path)) rec%hist_path = deck%prefix // '_history.dat'
+      call write_summary_file(deck, s, stat, errmsg)
+      if (dstat /= 0 .and. stat == 0) then
+         stat = dstat
+         errmsg = dtext
+      end if
+      call results_finish(rec%h5, status, s, ios, text)
+      if (ios /= 0 .and. stat == 0) then
+         stat = ios
+         errmsg = text
+      end if
+      call last_words(rec, deck, cpu_s, unit)
+   end subroutine record_close
+
+   !> At the end of a run: the theory warning of a linear run whose
+   !> deflection needed the nonlinear theory (src/model/scene_model.f90),
+   !> counted with the others, and the count of the warnings on standard error.
+   subroutine closing_warnings(rec, model)
+      type(record_t), intent(inout) :: rec          !< the record
+      type(model_t), intent(in) :: model            !< the model (its scene)
+      character(len=msg_len) :: text
+      logical :: short
 
       call theory_warning(model%scene, rec%w_bend_max, short, text)
       if (short) then
@@ -397,6 +594,20 @@ contains
       if (rec%warnings > 0) write (error_unit, '(a)') 'impact: ' // int_str(rec%warnings) // ' warning(s) above; ' &
          // 'steps with a fall-back: nonlinear ' // int_str(rec%nonlinear_fallback_steps) // ', contact ' &
          // int_str(rec%contact_fallback_steps) // '; largest w/h ' // real_short(rec%max_w_over_h)
+   end subroutine closing_warnings
+
+   !> The summary's items of the run's figures, from its status to the
+   !> fixed-point diagnostics (those of &strength, the warnings and the cpu
+   !> time follow: record_close).
+   subroutine run_summary(rec, solver, status, hist, imp, s)
+      type(record_t), intent(in) :: rec             !< the record
+      type(solver_t), intent(in) :: solver          !< the solver (its counters)
+      character(len=*), intent(in) :: status        !< the run's status
+      type(contact_history_t), intent(in) :: hist   !< the contact history at the end
+      type(impactor_state_t), intent(in) :: imp     !< the impactor at the end
+      type(summary_item_t), allocatable, intent(out) :: s(:)   !< the items
+      real(dp) :: duration
+      logical :: ended
 
       ! -- first contact: its duration, or the time in contact so far
       ended = rec%contacts == 0 .or. rec%first_contact_end >= 0.0_dp
@@ -426,9 +637,9 @@ contains
       call summary_integer(s, 'max_contact_iter', rec%max_contact_iter)
       call summary_integer(s, 'max_nonlinear_iter', rec%max_solves)
       call summary_integer(s, 'unconverged_steps', rec%unconverged_steps)
-      call time_or_none('first_unconverged_us', 'first_unconverged', real(rec%first_unconverged, dp)*rec%dt, &
+      call summary_time(s, 'first_unconverged_us', 'first_unconverged', real(rec%first_unconverged, dp)*rec%dt, &
                         rec%first_unconverged > 0)
-      call time_or_none('diverged_at_us', 'diverged_at', rec%diverged_at, rec%diverged_at >= 0.0_dp)
+      call summary_time(s, 'diverged_at_us', 'diverged_at', rec%diverged_at, rec%diverged_at >= 0.0_dp)
       call summary_integer(s, 'nonlinear_fallback_steps', rec%nonlinear_fallback_steps)
       call summary_integer(s, 'contact_fallback_steps', rec%contact_fallback_steps)
       call summary_real(s, 'max_w_over_h', 'max_w_over_h', '-', rec%max_w_over_h, 1.0_dp)
@@ -437,54 +648,47 @@ contains
          call summary_real(s, 'impactor_compliance_m_per_N', 'impactor_compliance', 'm/N', rec%c_impactor, 1.0_dp)
          call summary_real(s, 'max_fixed_point_slope', 'max_fixed_point_slope', '-', rec%max_slope, 1.0_dp)
       end if
-      call damage_close(rec%damage, model, s, rec%h5, dstat, dtext)
-      call summary_integer(s, 'warnings', rec%warnings)
-      call summary_real(s, 'cpu_s', 'cpu', 's', cpu_s, 1.0_dp)
+   end subroutine run_summary
 
-      if (rec%hist_unit >= 0) close (rec%hist_unit, iostat=ios)
-      rec%hist_unit = -1
-      call close_probe(rec%hist_probe)
-      if (.not. allocated(rec%hist_path)) rec%hist_path = deck%prefix // '_history.dat'
-      call write_summary_file(deck, s, stat, errmsg)
-      if (dstat /= 0 .and. stat == 0) then
-         stat = dstat
-         errmsg = dtext
+   !> A time of the summary (us in the file, s in /summary), or 'none'.
+   subroutine summary_time(s, key, name, time, given)
+      type(summary_item_t), allocatable, intent(inout) :: s(:)   !< the summary's items
+      character(len=*), intent(in) :: key           !< its key in <prefix>_summary.dat
+      character(len=*), intent(in) :: name          !< its name in /summary
+      real(dp), intent(in) :: time                  !< the time (s)
+      logical, intent(in) :: given                  !< there is one (else 'none')
+
+      if (given) then
+         call summary_real(s, key, name, 's', time, 1.0e6_dp)
+      else
+         call summary_text(s, key, 'none')
       end if
-      call results_finish(rec%h5, status, s, ios, text)
-      if (ios /= 0 .and. stat == 0) then
-         stat = ios
-         errmsg = text
-      end if
+   end subroutine summary_time
+
+   !> The run's last words on standard output: where its files are, and its
+   !> peak force, contacts, largest deflection and cpu time.
+   subroutine last_words(rec, deck, cpu_s, unit)
+      type(record_t), intent(in) :: rec             !< the record
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      real(dp), intent(in) :: cpu_s                 !< cpu time of the run (s)
+      integer, intent(in) :: unit                   !< where they go (standard output)
+
       write (unit, '(a)') 'history: ' // rec%hist_path
       write (unit, '(a)') 'summary: ' // deck%prefix // '_summary.dat'
       if (deck%hdf5) write (unit, '(a)') 'results: ' // deck%prefix // '.h5'
       write (unit, '(a,es12.5,a,f9.2,a,i0,a,es12.5,a,f8.3,a)') 'peak force ', rec%peak_force, ' N at ', &
          rec%time_of_peak*1.0e6_dp, ' us; contacts ', rec%contacts, '; max deflection ', &
          rec%max_deflection*1.0e3_dp, ' mm; cpu ', cpu_s, ' s'
-
-   contains
-
-      subroutine time_or_none(key, name, time, given)
-         character(len=*), intent(in) :: key, name
-         real(dp), intent(in) :: time
-         logical, intent(in) :: given
-         if (given) then
-            call summary_real(s, key, name, 's', time, 1.0e6_dp)
-         else
-            call summary_text(s, key, 'none')
-         end if
-      end subroutine time_or_none
-
-   end subroutine record_close
+   end subroutine last_words
 
    ! ============================================================== helpers
 
    !> A history row to the file and to <prefix>.h5.
    subroutine write_row(rec, row, stat, errmsg)
-      type(record_t), intent(inout) :: rec
-      real(dp), intent(in) :: row(nhist_strength)
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
+      type(record_t), intent(inout) :: rec               !< the record
+      real(dp), intent(in) :: row(nhist_strength)        !< the row, SI (its first rec%ncol columns are written)
+      integer, intent(out) :: stat                       !< 0 on success
+      character(len=*), intent(inout) :: errmsg          !< reason on failure
       character(len=msg_len) :: iomsg
       integer :: ios
       call write_history_row(rec%hist_unit, rec%hist_probe, row(:rec%ncol), rec%hist_bytes, stat, iomsg)
@@ -504,15 +708,15 @@ contains
 
    !> max(a, b) that keeps a NaN (Fortran's max may drop it).
    pure real(dp) function nan_max(a, b)
-      real(dp), intent(in) :: a, b
-      if (a /= a) then
+      real(dp), intent(in) :: a                          !< the largest so far
+      real(dp), intent(in) :: b                          !< the new value
+      if (ieee_is_nan(a)) then
          nan_max = a
-      else if (b /= b .or. b > a) then
+      else if (ieee_is_nan(b) .or. b > a) then
          nan_max = b
       else
          nan_max = a
       end if
    end function nan_max
-
 
 end module run_recorder
