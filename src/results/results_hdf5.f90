@@ -149,7 +149,7 @@ contains
       rf%active = .true.
 
       call write_root(rf%fid, stat, why)
-      call write_deck(rf%fid, deck, stat, why)
+      if (stat == 0) call write_deck(rf%fid, deck, stat, why)
       if (stat == 0) call write_mesh(rf%fid, msh, stat, why)
       call create_history(rf, deck%every, stat, why)
       call create_fields(rf, deck%fields_every, msh%nnode, stat, why)

@@ -10,9 +10,8 @@
 !>                 history row (every &output every steps), field
 !>                 snapshots and the peak state in <prefix>.h5, warnings;
 !>                 sets rec%stop when the run must end here (a divergence,
-!>                 a warning with stop_on_warning, or a stop signal, SIGTERM
-!>                 or SIGINT, src/system/process_stop.f90: status 'stopped by signal
-!>                 N at step M', exit status 128 + N)
+!>                 or a warning with stop_on_warning; a stop signal is
+!>                 the time loop's own guard, src/impact.f90)
 !>   record_close  at the end, or when a run fails: the summary, in
 !>                 <prefix>_summary.dat and /summary, with its status
 !>
@@ -51,7 +50,6 @@ module run_recorder
    use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_flush, &
       results_leave, results_finish
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
-   use process_stop, only: stop_signal_caught
    implicit none
    private
    public :: record_t, record_open, record_step, record_close
@@ -78,7 +76,7 @@ module run_recorder
    type :: record_t
       logical :: stop = .false.                  !< the run must end after this step
       character(len=:), allocatable :: stop_status   !< why (the summary's status)
-      integer :: exit_status = 0                 !< the program's exit status then: 1, or 128 + a signal's number
+      integer :: exit_status = 0                 !< the program's exit status then (1)
       integer :: hist_unit = -1                  !< <prefix>_history.dat
       integer(int64) :: hist_bytes = 0           !< its length after the last whole row
       type(file_probe_t) :: hist_probe           !< it, open for its length on disk (write_history_row)
@@ -246,7 +244,6 @@ contains
                          mod(step, rec%fields_every) == 0 .or. step == rec%nstep, stat, errmsg)
       if (stat /= 0) return
       call step_warnings(rec, fig, solver, cit, converged, stat, errmsg)
-      call stop_on_signal(rec, fig)
    end subroutine record_step
 
    !> The energies of every step: the contact force's work on the plate, by
@@ -257,7 +254,7 @@ contains
    subroutine add_contact_work(rec, plate, imp, cit)
       type(record_t), intent(inout) :: rec               !< the record
       type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_state_t), intent(in) :: imp          !< the impactor at t + dt
+      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
       type(contact_iteration_t), intent(in) :: cit       !< the step's contact force and area
       real(dp) :: work
 
@@ -280,7 +277,7 @@ contains
       type(step_figures_t), intent(inout) :: fig         !< the step (in); its w_rigid (out)
       type(model_t), intent(in) :: model                 !< the model
       type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_state_t), intent(in) :: imp          !< the impactor at t + dt
+      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
       type(contact_history_t), intent(in) :: hist        !< the contact history before this step's commit
       type(contact_iteration_t), intent(in) :: cit       !< the step's indentation
       integer, intent(out) :: stat                       !< 0 on success
@@ -323,7 +320,7 @@ contains
       type(step_figures_t), intent(in) :: fig            !< the step
       type(model_t), intent(in) :: model                 !< the model
       type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_state_t), intent(in) :: imp          !< the impactor at t + dt
+      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
       type(contact_history_t), intent(in) :: hist        !< the contact history before this step's commit
       type(contact_iteration_t), intent(in) :: cit       !< the step's indentation
       integer, intent(out) :: stat                       !< 0 on success
@@ -358,7 +355,7 @@ contains
       type(record_t), intent(inout) :: rec               !< the record
       type(model_t), intent(in) :: model                 !< the model
       type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_state_t), intent(in) :: imp          !< the impactor at t + dt
+      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
       real(dp), intent(inout) :: row(nhist_strength)     !< the history row: its energy columns set
 
       row(col_ke_impactor) = 0.5_dp*rec%mass*imp%v**2
@@ -504,19 +501,6 @@ contains
          // 'warning (&analysis stop_on_warning = .true.)', '')
    end subroutine warn
 
-   !> A stop signal (SIGTERM, SIGINT; src/system/signal_stop.f90): the run
-   !> ends after this step, with exit status 128 + the signal's number.
-   subroutine stop_on_signal(rec, fig)
-      type(record_t), intent(inout) :: rec               !< the record
-      type(step_figures_t), intent(in) :: fig            !< the step
-
-      if (stop_signal_caught() > 0) then
-         call stop_here(rec, fig, 'stopped by signal ' // int_str(stop_signal_caught()) // ' at step ' &
-            // int_str(fig%step), '')
-         rec%exit_status = 128 + stop_signal_caught()
-      end if
-   end subroutine stop_on_signal
-
    !> The run must end after this step (rec%stop), with this status in the
    !> summary and exit status 1; the first reason given stays. A non-empty
    !> message goes to standard error.
@@ -604,7 +588,7 @@ contains
       type(solver_t), intent(in) :: solver          !< the solver (its counters)
       character(len=*), intent(in) :: status        !< the run's status
       type(contact_history_t), intent(in) :: hist   !< the contact history at the end
-      type(impactor_state_t), intent(in) :: imp     !< the impactor at the end
+      type(impactor_t), intent(in) :: imp     !< the impactor at the end
       type(summary_item_t), allocatable, intent(out) :: s(:)   !< the items
       real(dp) :: duration
       logical :: ended
