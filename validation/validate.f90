@@ -833,7 +833,7 @@ contains
       real(dp), parameter :: tol_loop = 1.0e-3_dp
       real(dp), allocatable :: h(:,:)
       real(dp) :: e0, emax(4), left, loop, closed, diss, alpha_m, alpha_0, f_m, sval(1)
-      real(dp), parameter :: k = 1.413e9_dp, q = 2.5_dp, alpha_p = 1.667e-5_dp, beta = 0.094_dp
+      real(dp), parameter :: k = 1.413e9_dp, q = 2.5_dp
       integer :: ir, stat, n, i, du
       character(len=cw) :: cells(4)
 
@@ -1355,7 +1355,7 @@ contains
       deck%s23 = 1.0_dp
       call damage_open(dmg, deck, model)
       nply = size(deck%angles)
-      xy = damage_points(model)
+      allocate (xy, source=damage_points(model))
       np = size(xy, 2)
       allocate (sig(5, 2, nply, np), fi(2, nply, np), ref(5, 2, nply, np))
       call damage_stresses(dmg, model, res%d, sig, fi)
