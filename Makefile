@@ -3,6 +3,9 @@
 #   make            build ./impact
 #   make run        install what is missing, build, run input/clamped.nml, plot it
 #   make test       install what is missing, build, run the pFUnit tests
+#   make check      the same (the GNU name)
+#   make install    under PREFIX (mk/install.mk)
+#   make version    the release number (the file VERSION)
 #   make setup      only the Debian packages (tools/setup-debian)
 #   make clean
 #
@@ -13,6 +16,14 @@ ifeq ($(FC),f77)
 FC      := gfortran
 endif
 BUILD   := build
+# The release number is kept in the file VERSION only. The build writes it,
+# with the git commit in a checkout, into $(BUILD)/code_version.inc
+# (mk/hdf5.mk): `impact --version` and the results' code_version say
+# 'impact 1.2.0 (git <commit>[-dirty])', or 'impact 1.2.0' without git.
+IMPACT_VERSION := $(shell cat VERSION 2>/dev/null)
+ifneq ($(words $(IMPACT_VERSION)),1)
+$(error VERSION: one release number expected (as 1.2.0), found '$(IMPACT_VERSION)')
+endif
 FFLAGS  ?= -O2 -g
 # Warnings: -Wall -Wextra, and none is left (CI builds with -Werror, so a new
 # one fails it). -Wno-compare-reals: the exact comparisons of reals left in
@@ -116,6 +127,12 @@ reference: impact
 
 clean:
 	rm -rf $(BUILD) impact
+
+# check: the GNU name of the tests; version: the release number, for scripts.
+.PHONY: check version
+check: test
+version:
+	@echo '$(IMPACT_VERSION)'
 
 include tests/tests.mk
 # Further targets (figures, validation, benchmarks, ...) live in mk/*.mk.

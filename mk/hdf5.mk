@@ -70,11 +70,20 @@ hdf5-config:
 	@echo 'HDF5_FFLAGS: $(HDF5_FFLAGS)'
 	@echo 'HDF5_LIBS:   $(HDF5_LIBS)'
 
-# ---- the code version written into every results file: git describe, or
-#      'unknown' outside a git checkout; rewritten only when it changes
-$(BUILD)/code_version.inc: hdf5-version | $(BUILD)
-	@v=$$(git -C '$(CURDIR)' describe --always --dirty 2>/dev/null || echo unknown); \
-	printf "   character(len=*), parameter :: code_version = 'impact %s'\n" "$$v" > $@.tmp; \
+# ---- the code version, printed by impact --version and written into every
+#      results file (src/system/build_info.f90): 'impact <VERSION> (git
+#      <commit>[-dirty])' in a git checkout of this tree, 'impact <VERSION>'
+#      without one (a source archive: git archive, a release tarball). The
+#      release number is the file VERSION's; the commit git describe's, tags
+#      left out (--exclude, git >= 2.13). Rewritten only when it changes.
+$(BUILD)/code_version.inc: VERSION hdf5-version | $(BUILD)
+	@v=$$(cat VERSION); \
+	case "$$v" in [0-9]*) case "$$v" in *[!0-9A-Za-z.+-]*) v='';; esac;; *) v='';; esac; \
+	if [ -z "$$v" ]; then echo 'VERSION: not a release number (as 1.2.0)' >&2; exit 1; fi; \
+	g=''; if [ -e '$(CURDIR)/.git' ]; then \
+	    g=$$(git -C '$(CURDIR)' describe --always --dirty --abbrev=7 --exclude='*' 2>/dev/null) || g=''; fi; \
+	{ printf "   character(len=*), parameter :: code_release = '%s'\n" "$$v"; \
+	  printf "   character(len=*), parameter :: code_version = 'impact %s%s'\n" "$$v" "$${g:+ (git $$g)}"; } > $@.tmp; \
 	if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
 $(BUILD)/build_info.o: $(BUILD)/code_version.inc
 

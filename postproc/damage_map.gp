@@ -14,7 +14,16 @@ if (!exists("python")) python = '/usr/bin/python3'
 if (!exists("cols")) cols = 5
 if (!exists("peak")) peak = 0
 data = prefix.'_damage.dat'
-system(python.' tools/damage-map '.prefix.'.h5'.(peak ? ' --peak' : '').' > '.data)
+# The reader, tools/damage-map, is found beside this script: postproc/ and
+# tools/ are siblings in the repository and in an installed tree
+# (<prefix>/share/impact/{postproc,tools}, make install); when gnuplot does
+# not say where the script is (ARG0, gnuplot >= 5.4; none on standard
+# input), tools/damage-map of the current directory. Option (-e): damage_map,
+# the reader's path.
+lastslash(s, i) = i < 1 ? 0 : (s[i:i] eq '/' ? i : lastslash(s, i - 1))
+script_dir(s) = lastslash(s, strlen(s)) > 1 ? s[1:lastslash(s, strlen(s)) - 1] : (lastslash(s, strlen(s)) == 1 ? '/' : '.')
+if (!exists("damage_map")) damage_map = (exists("ARG0") && strlen(ARG0) > 0) ? script_dir(ARG0).'/../tools/damage-map' : 'tools/damage-map'
+system(python." '".damage_map."' '".prefix.".h5'".(peak ? ' --peak' : '')." > '".data."'")
 nply = int(system("grep -c '^# ply ' ".data))
 fimax = real(system("awk '/largest index/ {print $4}' ".data))
 angles = system("awk '/^# ply / {gsub(/[()]/, \"\"); print $4}' ".data)
