@@ -6,7 +6,7 @@
 #   make check      the same (the GNU name)
 #   make install    under PREFIX (mk/install.mk)
 #   make version    the release number (the file VERSION)
-#   make setup      only the Debian packages (tools/setup-debian)
+#   make setup      only the Debian packages (tools/setup-debian; make setup-run: the run's only)
 #   make clean
 #
 # Compiler settings can be overridden: make FC=gfortran FFLAGS='-O3 ...'
@@ -71,7 +71,7 @@ ORACLE_OBJS    := $(patsubst validation/%.f90,$(BUILD)/oracles/%.o,$(ORACLE_SOUR
 # The tools' own modules (the HDF5 reader of tools/h5export and the tests).
 TOOL_OBJS      := $(BUILD)/tools/hdf5_read.o
 
-.PHONY: all run test setup clean reference
+.PHONY: all run test setup setup-run clean reference
 all: impact
 
 $(BUILD):
@@ -113,7 +113,11 @@ impact: $(MAIN) $(LIB)
 setup:
 	@sh tools/setup-debian
 
-run: setup impact
+# only what the run needs (no ParaView, no test tools)
+setup-run:
+	@sh tools/setup-debian run
+
+run: setup-run impact
 	@mkdir -p out
 	./impact < input/clamped.nml
 	gnuplot -e "prefix='out/clamped'" postproc/history.gp
