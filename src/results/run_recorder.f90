@@ -50,6 +50,7 @@ module run_recorder
    use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_flush, &
       results_leave, results_finish
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
+   use progress_line, only: progress_t, progress_start, progress_step, progress_end
    implicit none
    private
    public :: record_t, record_open, record_step, record_close
@@ -108,6 +109,7 @@ module run_recorder
       ! slope (c_plate + c_impactor) dF/d alpha of the paper's fixed-point force update (-)
       real(dp) :: c_plate = -1, c_impactor = 0, max_slope = 0
       logical :: warned(nwarn) = .false.
+      type(progress_t) :: progress               !< the progress line on standard error (src/results/progress_line.f90)
    end type record_t
 
    !> What record_step knows of the step it records, for its parts.
@@ -200,6 +202,7 @@ contains
       row(col_v_impactor) = imp%v
       row(col_ke_impactor) = rec%e0
       call write_row(rec, row, stat, errmsg)
+      call progress_start(rec%progress, rec%nstep, deck%t_end)
    end subroutine record_open
 
    !> Records the step just accepted (module header). ic is the step's
@@ -244,6 +247,7 @@ contains
                          mod(step, rec%fields_every) == 0 .or. step == rec%nstep, stat, errmsg)
       if (stat /= 0) return
       call step_warnings(rec, fig, solver, cit, converged, stat, errmsg)
+      call progress_step(rec%progress, step, fig%t)
    end subroutine record_step
 
    !> The energies of every step: the contact force's work on the plate, by
@@ -491,6 +495,7 @@ contains
       if (rec%warned(kind)) return
       rec%warned(kind) = .true.
       rec%warnings = rec%warnings + 1
+      call progress_end(rec%progress)           ! the terminal's progress line cleared first
       write (error_unit, '(a,i0,a,es11.4,a)') 'impact: warning: step ', fig%step, ' (t = ', fig%t, ' s): ' // message
       call results_flush(rec%h5, ios, why)      ! the results up to the warning, on disk
       if (ios /= 0 .and. stat == 0) then
@@ -538,6 +543,7 @@ contains
       character(len=msg_len) :: text, dtext
       integer :: ios, dstat
 
+      call progress_end(rec%progress)
       call closing_warnings(rec, model)
       call run_summary(rec, solver, status, hist, imp, s)
       call damage_close(rec%damage, model, s, rec%h5, dstat, dtext)

@@ -11,7 +11,7 @@ module c_library
    private
    public :: statvfs_t, rlimit_t
    public :: c_fopen, c_fclose, c_fileno, c_rename, c_lseek, c_truncate, c_sysconf, c_mkdir, c_flock, &
-             c_statvfs, c_getrlimit, c_signal, c_exit
+             c_statvfs, c_getrlimit, c_signal, c_exit, c_isatty
 
    !> struct statvfs (<sys/statvfs.h>): eleven unsigned longs (read as
    !> signed: sizes below 2^63) and six ints.
@@ -118,6 +118,12 @@ module c_library
          import :: c_int
          integer(c_int), value :: status
       end subroutine c_exit
+      !> int isatty(int fd)
+      function c_isatty(fd) bind(c, name='isatty') result(r)
+         import :: c_int
+         integer(c_int), value :: fd
+         integer(c_int) :: r
+      end function c_isatty
    end interface
 
 end module c_library

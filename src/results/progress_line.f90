@@ -1,0 +1,136 @@
+!> The run's progress on standard error: the step, the simulated time, the
+!> percentage and an estimate of the time left.
+!>
+!> On a terminal (isatty(2)) one line is rewritten in place ('\r'), at most
+!> `terminal_rate` times a second, and cleared when the run ends, so that
+!> the summary that follows on standard output reads as before. When
+!> standard error is not a terminal (a batch job's log, a pipe, a test) a
+!> plain line is written every `log_interval` seconds of wall time and
+!> nothing else: a short run writes none, a long one a line now and then
+!> that a log reader can follow (`tail -f slurm-*.out`).
+!>
+!> The estimate is the wall time per step so far times the steps left: the
+!> steps of an impact cost about the same (one back substitution each for
+!> scheme 'fast'), and the set-up is not counted, since the clock starts at
+!> the first step.
+module progress_line
+   use, intrinsic :: iso_fortran_env, only: error_unit, int64
+   use kinds, only: dp
+   use c_library, only: c_isatty
+   use number_text, only: int_str
+   implicit none
+   private
+   public :: progress_t, progress_start, progress_step, progress_end, progress_due, time_left_s, duration_text
+
+   !> Updates a second, at most, of the line on a terminal.
+   real(dp), parameter :: terminal_rate = 4.0_dp
+   !> Seconds between two plain lines when standard error is not a terminal.
+   real(dp), parameter :: log_interval = 30.0_dp
+
+   !> Where the run's progress stands.
+   type :: progress_t
+      logical :: terminal = .false.        !< standard error is a terminal: one line, rewritten
+      integer :: nstep = 0                 !< the run's steps
+      real(dp) :: t_end = 0                !< its end time (s)
+      real(dp) :: interval = log_interval  !< wall seconds between two updates
+      integer(int64) :: count0 = 0         !< system_clock at the first step
+      integer(int64) :: rate = 1           !< system_clock's counts per second
+      real(dp) :: last = 0                 !< wall seconds since count0 at the last update
+      logical :: shown = .false.           !< a line is on the terminal, to be cleared
+   end type progress_t
+
+contains
+
+   !> The clock starts: the run has nstep steps to t_end.
+   subroutine progress_start(prog, nstep, t_end)
+      type(progress_t), intent(out) :: prog   !< the progress
+      integer, intent(in) :: nstep            !< the run's steps
+      real(dp), intent(in) :: t_end           !< its end time (s)
+      prog%terminal = c_isatty(2) == 1
+      prog%interval = merge(1.0_dp/terminal_rate, log_interval, prog%terminal)
+      prog%nstep = nstep
+      prog%t_end = t_end
+      call system_clock(prog%count0, prog%rate)
+   end subroutine progress_start
+
+   !> After step `step`, at the simulated time t: the line, when it is due.
+   subroutine progress_step(prog, step, t)
+      type(progress_t), intent(inout) :: prog   !< the progress
+      integer, intent(in) :: step               !< the step just recorded
+      real(dp), intent(in) :: t                 !< its time (s)
+      integer(int64) :: now
+      real(dp) :: elapsed
+      if (prog%nstep <= 0) return
+      call system_clock(now)
+      elapsed = real(now - prog%count0, dp)/real(prog%rate, dp)
+      if (.not. progress_due(prog%last, elapsed, prog%interval)) return
+      prog%last = elapsed
+      if (prog%terminal) then
+         write (error_unit, '(a)', advance='no') achar(13) // progress_text(prog, step, t, elapsed) // '   '
+         prog%shown = .true.
+      else
+         write (error_unit, '(a)') progress_text(prog, step, t, elapsed)
+      end if
+      flush (error_unit)
+   end subroutine progress_step
+
+   !> The run has ended: the terminal's line is cleared.
+   subroutine progress_end(prog)
+      type(progress_t), intent(inout) :: prog   !< the progress
+      if (.not. prog%shown) return
+      write (error_unit, '(a)', advance='no') achar(13) // repeat(' ', 79) // achar(13)
+      flush (error_unit)
+      prog%shown = .false.
+   end subroutine progress_end
+
+   !> Whether an update is due at `elapsed` seconds, the last one made at
+   !> `last` (0: none yet, the first one after one interval).
+   pure logical function progress_due(last, elapsed, interval) result(due)
+      real(dp), intent(in) :: last       !< wall seconds at the last update
+      real(dp), intent(in) :: elapsed    !< wall seconds now
+      real(dp), intent(in) :: interval   !< wall seconds between updates
+      due = elapsed - last >= interval
+   end function progress_due
+
+   !> The wall time left (s) after `step` of `nstep` steps took `elapsed` s.
+   pure real(dp) function time_left_s(step, nstep, elapsed) result(left)
+      integer, intent(in) :: step, nstep   !< steps done, and in all
+      real(dp), intent(in) :: elapsed      !< wall seconds for those done
+      left = elapsed*real(nstep - step, dp)/real(max(step, 1), dp)
+   end function time_left_s
+
+   !> A wall time for people: '42 s', '3 min 05 s', '2 h 07 min'.
+   pure function duration_text(seconds) result(text)
+      real(dp), intent(in) :: seconds   !< the time (s)
+      character(len=:), allocatable :: text
+      integer :: s
+      character(len=2) :: two
+      s = nint(max(seconds, 0.0_dp))
+      if (s < 60) then
+         text = int_str(s) // ' s'
+      else if (s < 3600) then
+         write (two, '(i2.2)') mod(s, 60)
+         text = int_str(s/60) // ' min ' // two // ' s'
+      else
+         write (two, '(i2.2)') mod(s/60, 60)
+         text = int_str(s/3600) // ' h ' // two // ' min'
+      end if
+   end function duration_text
+
+   !> The progress line: 'impact: step 480/1200 (t = 1.200 ms of 3.000 ms), 40 %, 12 s left'.
+   function progress_text(prog, step, t, elapsed) result(text)
+      type(progress_t), intent(in) :: prog   !< the progress
+      integer, intent(in) :: step            !< the step
+      real(dp), intent(in) :: t              !< its time (s)
+      real(dp), intent(in) :: elapsed        !< wall seconds since the first step
+      character(len=:), allocatable :: text
+      character(len=16) :: now, end
+      write (now, '(f16.3)') t*1.0e3_dp
+      write (end, '(f16.3)') prog%t_end*1.0e3_dp
+      text = 'impact: step ' // int_str(step) // '/' // int_str(prog%nstep) // ' (t = ' // trim(adjustl(now)) &
+         // ' ms of ' // trim(adjustl(end)) // ' ms), ' &
+         // int_str(int(100.0_dp*real(step, dp)/real(prog%nstep, dp))) // ' %, ' &
+         // duration_text(time_left_s(step, prog%nstep, elapsed)) // ' left'
+   end function progress_text
+
+end module progress_line
