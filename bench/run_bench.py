@@ -12,8 +12,9 @@ steps, tolerances (cr1, cr2), iteration schemes ('paper', 'fast') and storage
   docs/performance/scenes.png    the same for the four scenes, largest error
   docs/performance/cost.png      CPU time per step against freedoms, log-log,
                                  with the fitted slope (postproc/bench_cost.gp)
-  docs/PERFORMANCE.md            the block between the bench:begin/bench:end
-                                 markers: measured figures, scheme agreement,
+  docs/PERFORMANCE.md            its block bench (between the bench:begin and
+                                 bench:end comments, impact_files.fill_file):
+                                 measured figures, scheme agreement,
                                  recommended settings per accuracy
 
 Scenes: CN clamped nonlinear (the paper's scene), CL clamped linear, SN simply
@@ -59,8 +60,8 @@ CPU times ./impact reports is kept (cpu_s of the summary: set-up and time loop;
 the set-up alone is printed on standard output); the runs only the references
 and the mesh_1991 comparison need run once, and so does the 48x72 cost run
 (its set-up, the factorization, takes most of a minute). Runs are one at a
-time. A run that stops (an iteration that cannot converge at its tolerances)
-is recorded with status 'failed'.
+time (impact_files.run_many, one job). A run that stops (an iteration that
+cannot converge at its tolerances) is recorded with status 'failed'.
 
 Scheme agreement: every pair of runs that differ only in the scheme is
 compared against the stated tolerance 3 max(cr1, sqrt(cr2)) (pair_tolerance).
@@ -96,14 +97,15 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
-import impact_files as imf  # noqa: E402  (the one reader of summaries and histories)
+import impact_files as imf  # noqa: E402  (decks, summaries, histories, runs, the doc's block)
 EXE = os.path.join(ROOT, 'impact')
 KERNELS = os.path.join(ROOT, 'build', 'bench', 'bench_kernels')
 RUN_DIR = os.path.join(ROOT, 'build', 'bench', 'runs')
 RESULTS = os.path.join(ROOT, 'bench', 'results.dat')
 FIG_DIR = os.path.join(ROOT, 'docs', 'performance')
 DOC = os.path.join(ROOT, 'docs', 'PERFORMANCE.md')
-BEGIN, END = '<!-- bench:begin -->', '<!-- bench:end -->'
+DECK_HEADER = ['make bench (bench/run_bench.py): the paper plate, quarter model; the element and the contact load',
+               'stated; every other value the default']
 
 # The paper's contact law constants (Table 2), for alpha0 of eq. (12).
 ALPHA_P = 1.667e-5     # m
@@ -245,28 +247,37 @@ def run_id(scene, s):
         s['t_end'] * 1e6, '_' + model_tag(s) if model_tag(s) else '', '_' + s['blas'] if s.get('blas') else '')
 
 
-def deck_text(scene, s, prefix, hdf5_off):
+def deck_groups(scene, s, prefix):
+    """The deck of one run (impact_files' groups): the scene, the knobs s, every
+    step written to prefix, no HDF5."""
     sc = SCENES[scene]
-    out = "&output prefix = '{}', every = 1, overwrite = .true.{} /".format(prefix, ', hdf5 = .false.' if hdf5_off else '')
-    return '\n'.join([
-        '! make bench (bench/run_bench.py): the paper plate, quarter model; the element and the contact load',
-        '! stated; every other value the default',
-        "&mesh nx = {}, ny = {}, domain = 'quarter', shear_rule = '{}' /".format(s['nx'], s['ny'], s['shear_rule']),
-        "&contact load = '{}' /".format(s['load']),
-        "&boundary edges = '{}' /".format(sc['edges']),
-        "&analysis theory = '{}', dt = {!r}, t_end = {!r}, cr1 = {!r}, cr2 = {!r}, scheme = '{}', storage = '{}' /".format(
-            sc['theory'], s['dt'], s['t_end'], s['cr1'], s['cr2'], s['scheme'], s['storage']),
-        out, ''])
+    return [['mesh', [['nx', str(s['nx'])], ['ny', str(s['ny'])], ['domain', "'quarter'"],
+                      ['shear_rule', "'{}'".format(s['shear_rule'])]]],
+            ['contact', [['load', "'{}'".format(s['load'])]]],
+            ['boundary', [['edges', "'{}'".format(sc['edges'])]]],
+            ['analysis', [['theory', "'{}'".format(sc['theory'])], ['dt', repr(s['dt'])], ['t_end', repr(s['t_end'])],
+                          ['cr1', repr(s['cr1'])], ['cr2', repr(s['cr2'])], ['scheme', "'{}'".format(s['scheme'])],
+                          ['storage', "'{}'".format(s['storage'])]]],
+            ['output', [['prefix', "'{}'".format(prefix)], ['every', '1'], ['overwrite', '.true.'],
+                        ['hdf5', '.false.']]]]
 
 
-def hdf5_switch_exists():
-    """True when the deck knows &output hdf5 (then the bench turns it off)."""
-    os.makedirs(RUN_DIR, exist_ok=True)
-    probe = os.path.join(RUN_DIR, 'probe.nml')
-    with open(probe, 'w') as f:
-        f.write("&output prefix = '{}', hdf5 = .false., overwrite = .true. /\n".format(os.path.join(RUN_DIR, 'probe')))
-    r = subprocess.run([EXE, '--check', probe], capture_output=True, text=True)
-    return r.returncode == 0
+SETUP_RE = re.compile(r'set-up \(model, matrices, factorization\): cpu\s+([0-9.Ee+-]+)')
+
+
+def timed_runs(run, count, summary):
+    """count runs of one deck, one after the other (impact_files.run_many):
+    [(result, its summary, its set-up cpu (s))], each read before the next run
+    writes over it."""
+    out = []
+
+    def done(r):
+        summ = imf.read_keys(summary) if os.path.exists(summary) else {}
+        m = SETUP_RE.search(r['stdout'])
+        out.append((r, summ, float(m.group(1)) if m else float('nan')))
+
+    imf.run_many([run] * count, jobs=1, on_done=done, impact=EXE)
+    return out
 
 
 def parabola_peak(t, y):
@@ -303,46 +314,43 @@ def measures(rows):
     return peak, duration, wmax, inside
 
 
-def run_one(scene, s, repeat, reuse, hdf5_off, env):
+def run_one(scene, s, repeat, reuse, env):
+    """One run of the grid, `repeat` times (once if it stops): its record."""
     rid = run_id(scene, s)
     prefix = os.path.join(RUN_DIR, rid)
     deck = prefix + '.nml'
     cache = prefix + '.json'
-    text = deck_text(scene, s, prefix, hdf5_off)
-    if reuse and os.path.exists(cache) and os.path.exists(deck) and open(deck).read() == text:
+    groups = deck_groups(scene, s, prefix)
+    if reuse and os.path.exists(cache) and os.path.exists(deck) \
+            and open(deck).read() == imf.deck_text(groups, DECK_HEADER):
         with open(cache) as f:
             rec = json.load(f)
         if len(rec['cpu']) >= repeat or rec.get('failed'):
             return rec
-    with open(deck, 'w') as f:
-        f.write(text)
-    cpu, setup = [], []
-    out = ''
-    for _ in range(repeat):
-        r = subprocess.run([EXE, deck], capture_output=True, text=True, env=env)
-        if r.returncode != 0:
-            # a run that stops (an iteration that cannot converge at these
-            # tolerances) is a result too: recorded with status 'failed'
-            summ = imf.read_keys(prefix + '_summary.dat') if os.path.exists(prefix + '_summary.dat') else {}
-            msg = [l for l in r.stderr.splitlines() if 'error' in l]
-            rec = dict(id=rid, scene=scene, settings=s, cpu=[float(summ.get('cpu_s', 'nan'))], setup=[float('nan')],
-                       neq=0, kd=0, stored=0, steps=int(summ.get('steps', '0') or 0),
-                       solves=int(summ.get('plate_solves', '0') or 0), factorizations=0, unconverged=0,
-                       peak=float('nan'), duration=float('nan'), wmax=float('nan'), inside=False,
-                       failed=(msg[0] if msg else 'failed')[:300])
-            print('  bench: run failed: {}: {}'.format(rid, rec['failed']))
-            with open(cache, 'w') as f:
-                json.dump(rec, f)
-            return rec
-        out = r.stdout
-        summ = imf.read_keys(prefix + '_summary.dat')
-        cpu.append(float(summ['cpu_s']))
-        m = re.search(r'set-up \(model, matrices, factorization\): cpu\s+([0-9.Ee+-]+)', out)
-        setup.append(float(m.group(1)) if m else float('nan'))
-    m = re.search(r'equations (\d+), half-bandwidth (\d+), stored entries (\d+)', out)
+    imf.write_deck(deck, groups, DECK_HEADER)
+    run = dict(deck=deck, env=env)
+    runs = timed_runs(run, 1, prefix + '_summary.dat')
+    r, summ, _ = runs[0]
+    if r['exit'] != 0:
+        # a run that stops (an iteration that cannot converge at these
+        # tolerances) is a result too: recorded with status 'failed'
+        msg = [l for l in r['stderr'].splitlines() if 'error' in l]
+        rec = dict(id=rid, scene=scene, settings=s, cpu=[float(summ.get('cpu_s', 'nan'))], setup=[float('nan')],
+                   neq=0, kd=0, stored=0, steps=int(summ.get('steps', '0') or 0),
+                   solves=int(summ.get('plate_solves', '0') or 0), factorizations=0, unconverged=0,
+                   peak=float('nan'), duration=float('nan'), wmax=float('nan'), inside=False,
+                   failed=(msg[0] if msg else 'failed')[:300])
+        print('  bench: run failed: {}: {}'.format(rid, rec['failed']))
+        with open(cache, 'w') as f:
+            json.dump(rec, f)
+        return rec
+    runs += timed_runs(run, repeat - 1, prefix + '_summary.dat')
+    r, summ, _ = runs[-1]
+    m = re.search(r'equations (\d+), half-bandwidth (\d+), stored entries (\d+)', r['stdout'])
     neq, kd, stored = (int(m.group(1)), int(m.group(2)), int(m.group(3))) if m else (0, 0, 0)
     peak, duration, wmax, inside = measures(imf.read_columns(prefix + '_history.dat')[1])
-    rec = dict(id=rid, scene=scene, settings=s, cpu=cpu, setup=setup, neq=neq, kd=kd, stored=stored,
+    rec = dict(id=rid, scene=scene, settings=s, cpu=[float(x[1]['cpu_s']) for x in runs],
+               setup=[x[2] for x in runs], neq=neq, kd=kd, stored=stored,
                steps=int(summ['steps']), solves=int(summ['plate_solves']),
                factorizations=int(summ['factorizations']), unconverged=int(summ['unconverged_steps']),
                peak=peak, duration=duration, wmax=wmax, inside=inside, failed='')
@@ -479,12 +487,7 @@ def kernels(deck, env):
     r = subprocess.run([KERNELS, deck], capture_output=True, text=True, env=env)
     if r.returncode != 0:
         sys.exit('bench: {} {} failed:\n{}'.format(KERNELS, deck, r.stderr[-2000:]))
-    d = {}
-    for line in r.stdout.splitlines():
-        if '=' in line:
-            k, v = line.split('=', 1)
-            d[k.strip()] = v.strip()
-    return d
+    return imf.keys_in(r.stdout)
 
 
 REFERENCE_BLAS = ('/usr/lib/x86_64-linux-gnu/blas', '/usr/lib/x86_64-linux-gnu/lapack')
@@ -538,18 +541,14 @@ def main_job_floor(env, repeat, blas):
     """The floor line of one BLAS (module docstring): the README's main job
     as shipped, median CPU of `repeat` runs, against steps x one solve."""
     prefix = os.path.join(RUN_DIR, 'main_job_' + blas)
-    cpu, setup, steps = [], [], 0
-    for _ in range(repeat):
-        r = subprocess.run([EXE, '--overwrite', '--set', 'output.prefix=' + prefix, os.path.join(ROOT, 'input', 'clamped.nml')],
-                           capture_output=True, text=True, env=env)
-        if r.returncode != 0:
-            return None
-        summ = imf.read_keys(prefix + '_summary.dat')
-        cpu.append(float(summ['cpu_s']))
-        steps = int(summ['steps'])
-        solves = int(summ['plate_solves'])
-        m = re.search(r'set-up \(model, matrices, factorization\): cpu\s+([0-9.Ee+-]+)', r.stdout)
-        setup.append(float(m.group(1)) if m else float('nan'))
+    runs = timed_runs(dict(deck=os.path.join(ROOT, 'input', 'clamped.nml'), options=['--overwrite'],
+                           sets=['output.prefix=' + prefix], env=env), repeat, prefix + '_summary.dat')
+    if any(r['exit'] != 0 for r, _, _ in runs):
+        return None
+    cpu = [float(summ['cpu_s']) for _, summ, _ in runs]
+    setup = [x for _, _, x in runs]
+    steps = int(runs[-1][1]['steps'])
+    solves = int(runs[-1][1]['plate_solves'])
     k = kernels(os.path.join(ROOT, 'input', 'clamped.nml'), env)
     if not k:
         return None
@@ -654,7 +653,6 @@ def main():
     os.makedirs(FIG_DIR, exist_ok=True)
     if not os.path.exists(EXE):
         sys.exit('bench: ./impact not built (make impact)')
-    hdf5_off = hdf5_switch_exists()
     env_sys = dict(os.environ)
     sys_name = blas_name(system_blas())
     alt = other_blas()
@@ -677,7 +675,7 @@ def main():
     recs = {}
     for n, (rid, (scene, s)) in enumerate(sorted(todo.items(), key=lambda kv: kv[1][1]['ny'] * kv[1][1]['nx'] / kv[1][1]['dt']), 1):
         t0 = time.time()
-        recs[rid] = run_one(scene, s, args.repeat if rid in timed else 1, args.reuse, hdf5_off, env_sys)
+        recs[rid] = run_one(scene, s, args.repeat if rid in timed else 1, args.reuse, env_sys)
         r = recs[rid]
         print('  [{:3d}/{}] {:<60s} cpu {:8.3f} s  solves {:7d}  ({:.0f} s)'.format(
             n, len(todo), rid, median(r['cpu']), r['solves'], time.time() - t0), flush=True)
@@ -693,7 +691,7 @@ def main():
         env_ob = dict(os.environ, LD_LIBRARY_PATH=ob + (':' + os.environ['LD_LIBRARY_PATH'] if os.environ.get('LD_LIBRARY_PATH') else ''))
         for scheme in ('paper', 'fast'):
             s = dict(DEFAULT, t_end=3.0e-3, scheme=scheme, blas=alt_name)
-            r = run_one('CN', s, args.repeat, args.reuse, hdf5_off, env_ob)
+            r = run_one('CN', s, args.repeat, args.reuse, env_ob)
             ob_recs.append(('paper_scene', 'CN', r))
             print('  [{}] {:<60s} cpu {:8.3f} s'.format(alt_name, r['id'], median(r['cpu'])), flush=True)
 
@@ -1063,15 +1061,8 @@ def write_doc(rows, refs, hows, pairs, tol, cost, kern, by_sweep, ob_recs, wall,
             L.append('| {} | {:.1%} | {}x{} | {:g} | {} | {:g} | {:g} | {} | {:.3f} | {:.2%} / {:.2%} / {:.2%} | {} |'.format(
                 scene, target, b[5], b[6], b[9], b[2], b[11], b[12], b[3], b[14], b[25], b[26], b[27], note))
     L.append('')
-    text = '\n'.join(L)
-    doc = open(DOC).read() if os.path.exists(DOC) else '# Performance\n\n{}\n{}\n'.format(BEGIN, END)
-    if BEGIN not in doc or END not in doc:
-        doc = doc.rstrip('\n') + '\n\n{}\n{}\n'.format(BEGIN, END)
-    a = doc.index(BEGIN) + len(BEGIN)
-    b = doc.index(END)
-    doc = doc[:a] + '\n' + text + '\n' + doc[b:]
-    with open(DOC, 'w') as f:
-        f.write(doc)
+    if 'bench' not in imf.fill_file(DOC, {'bench': '\n'.join(L)}):
+        sys.exit('bench: {}: no bench:begin / bench:end block to fill'.format(DOC))
 
 
 if __name__ == '__main__':

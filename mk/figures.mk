@@ -7,7 +7,7 @@
 #                      input/paper/update/ twice (below),
 #                      FIG_JOBS at a time (results and logs in out/paper/);
 #                      draw postproc/figNN.gp into docs/figures/; write
-#                      docs/PAPER.md from docs/PAPER.md.in (tools/paper-numbers).
+#                      the numbers of docs/PAPER.md, in place (tools/paper-numbers).
 #                      3 to 5 minutes on 2 cores (about 4.5 minutes of CPU,
 #                      half of it the 24 x 36 meshes of input/paper/ and
 #                      converged/); a rerun redoes only the runs whose deck
@@ -69,7 +69,7 @@ figures: setup impact
 	    gnuplot -e "prefix='$(FIG_OUT)/strength/converged_$${s}_nonlinear'; out='docs/figures/damage_$${s}.png'" \
 	        postproc/damage_map.gp || exit 1; \
 	done
-	python3 tools/paper-numbers --runs $(FIG_OUT) docs/PAPER.md.in docs/PAPER.md
+	python3 tools/paper-numbers --runs $(FIG_OUT) docs/PAPER.md
 
 figures-runs: $(FIG_RUNS) $(UPDATE_RUNS)
 

@@ -8,7 +8,9 @@
 #                         docs/validation/model_choice/grading.{dat,png}.
 #                         Fails (exit 1) when a check is outside its
 #                         tolerance; the report is written either way.
-#                         About 3 minutes of one core.
+#                         The runs go through impact_files.run_many on all
+#                         the CPUs this process may use (about 3 minutes of
+#                         CPU; 2 of wall time on 2 cores).
 
 PYTHON ?= python3
 

@@ -3,8 +3,8 @@
 #   make stress     build ./impact, run every scene of tools/stress/stress.py
 #                   (two at a time), check each (no NaN or Inf, converged or
 #                   stopped with a diagnostic, energy within the stated bound)
-#                   and write build/stress/results.dat and docs/STABILITY.md
-#                   from tools/stress/STABILITY.md.in. Exit status 1 when a
+#                   and write build/stress/results.dat and the generated
+#                   blocks of docs/STABILITY.md (in place). Exit status 1 when a
 #                   scene fails a check. About 3 to 4 minutes on 2 shared cores.
 #   make stress STRESS_JOBS=1   one scene at a time
 

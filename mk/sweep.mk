@@ -1,6 +1,7 @@
 # The example sweep of the README ("HDF5 results and sweeps"): 48 scenes of
-# the paper's plate (tools/sweep), run on all cores of this machine, then the
-# table and the plot of peak force against impact energy.
+# the paper's plate (tools/sweep), run on all the CPUs this process may use
+# (SWEEP_JOBS=N: N at a time), then the table and the plot of peak force
+# against impact energy.
 #
 #   make sweep-example [SWEEP_DIR=out/sweep48] [SWEEP_JOBS=N]
 #

@@ -3,8 +3,10 @@
 #   make validate    build ./impact and build/validate, run every check of
 #                    docs/VALIDATION.md (validation/validate.f90, decks in
 #                    validation/decks, results in build/validation), write
-#                    docs/VALIDATION.md from validation/VALIDATION.md.in and
-#                    draw docs/validation/*.png (validation/plots.gp).
+#                    docs/VALIDATION.md from validation/VALIDATION.md.in (its
+#                    blocks filled with the tables build/validation/NAME.md by
+#                    tools/impact_files.py fill) and draw docs/validation/*.png
+#                    (validation/plots.gp).
 #                    Fails (exit 1) when a check is outside its tolerance;
 #                    the report and the plots are written either way.
 #                    About 3 minutes of one core.
@@ -19,6 +21,7 @@ $(VALIDATE_EXE): validation/validate.f90 $(ORACLE_OBJS) $(LIB)
 validate: setup impact $(VALIDATE_EXE)
 	@mkdir -p build/validation docs/validation
 	@status=0; $(VALIDATE_EXE) || status=$$?; \
+	$(or $(PYTHON),python3) tools/impact_files.py fill docs/VALIDATION.md build/validation || status=1; \
 	gnuplot validation/plots.gp || status=1; \
 	exit $$status
 

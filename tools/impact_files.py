@@ -1,33 +1,46 @@
 """impact_files: the files of ./impact, read and written in one place.
 
 One module for every Python tool of the project (tools/sweep,
-tools/paper-numbers, tools/stress/stress.py, bench/run_bench.py,
-validation/model_choice/run.py, validation/mesh_study/run.py):
+tools/paper-numbers, tools/stress/stress.py, tools/readme-deck-table,
+bench/run_bench.py, validation/model_choice/run.py,
+validation/mesh_study/run.py):
 
   decks       parse_deck, split_assignments, set_value, deck_text,
-              fortran_value, with_settings (a deck is a list of [group,
-              [[name, value], ...]], values as written; the program's own
-              reader is src/deck/input_deck.f90)
+              fortran_value, with_settings, groups_of (a deck is a list of
+              [group, [[name, value], ...]], values as written; the
+              program's own reader is src/deck/input_deck.f90)
   schema      schema(impact): the deck's variables, their kind, unit,
               default, range and meaning, from `impact --schema`
               (src/deck/deck_schema.f90, the one list)
-  summaries   read_keys, summary_number ('key = value' lines after the
-              '#' echo; 'none' is NaN, 'true'/'false' are 1/0)
+  summaries   read_keys, keys_in, write_keys, summary_number, summary_value,
+              table_text ('key = value' lines after the '#' echo; 'none' is
+              NaN, 'true'/'false' are 1/0)
   columns     read_columns, read_history (column files: the names on the
               last '#' line before the rows; a field that is not a number
-              is NaN, or its row left out: read_columns(whole_rows=True))
-  running     run_impact: ./impact on a deck, never through a shell
+              is NaN, or its row left out: whole_rows=True)
+  running     run_impact: ./impact on a deck, never through a shell;
+              run_many: ./impact on many decks, at most `jobs` at a time
+              (cpu_count(): the CPUs this process may use); diagnostic
+  documents   fill_blocks, fill_file: the blocks between
+              <!-- name:begin --> and <!-- name:end --> of a Markdown file,
+              rewritten in place (the one template mechanism of the docs)
 
 Python 3's standard library only. Import it from a tool with
 
     sys.path.insert(0, os.path.join(ROOT, 'tools'))
     import impact_files as imf
+
+or run it: `python3 tools/impact_files.py fill DOC DIR` fills every block
+NAME of DOC with the file DIR/NAME.md (make validate).
 """
 
+import concurrent.futures
 import math
 import os
 import re
 import subprocess
+import sys
+import time
 
 FORTRAN_NUMBER = re.compile(r'^[+-]?(\d+\.?\d*|\.\d+)([eEdD][+-]?\d+)?$')
 FORTRAN_LOGICAL = re.compile(r'^\.?(true|false|t|f)\.?$', re.I)
@@ -154,15 +167,27 @@ def fortran_value(text):
     return "'" + t.replace("'", "''") + "'"
 
 
+def read_deck(path):
+    """The groups of the deck at path (parse_deck)."""
+    with open(path, encoding='utf-8') as f:
+        return parse_deck(f.read())
+
+
 def with_settings(template_path, settings, header=()):
     """The text of the deck at template_path with settings {'group.name':
     value} applied (values as written, or plain words, quoted as needed)."""
-    with open(template_path, encoding='utf-8') as f:
-        groups = parse_deck(f.read())
+    groups = read_deck(template_path)
     for key, value in settings.items():
         group, name = key.split('.', 1)
         set_value(groups, group, name, fortran_value(value))
     return deck_text(groups, header)
+
+
+def write_deck(path, groups, header=()):
+    """Writes the groups as a deck (deck_text) to path; returns path."""
+    with open(path, 'w', encoding='utf-8') as f:
+        f.write(deck_text(groups, header))
+    return path
 
 
 # ----------------------------------------------------------------- schema
@@ -184,14 +209,58 @@ def schema(impact):
 
 def read_keys(path):
     """'key = value' lines of a summary (or status) file, the '#' lines left out."""
-    values = {}
     with open(path, encoding='utf-8', errors='replace') as f:
-        for line in f:
-            if line.startswith('#') or '=' not in line:
-                continue
-            key, value = line.split('=', 1)
-            values[key.strip()] = value.strip()
+        return keys_in(f)
+
+
+def keys_in(lines):
+    """{key: value} of the 'key = value' lines among lines (text lines, or a
+    text split here); '#' lines and lines without '=' are left out."""
+    if isinstance(lines, str):
+        lines = lines.splitlines()
+    values = {}
+    for line in lines:
+        if line.startswith('#') or '=' not in line:
+            continue
+        key, value = line.split('=', 1)
+        values[key.strip()] = value.strip()
     return values
+
+
+def write_keys(path, values, comment=''):
+    """Writes {key: value} as 'key = value' lines (after '# comment') to path,
+    whole or not at all (a temporary file renamed)."""
+    tmp = path + '.tmp'
+    with open(tmp, 'w', encoding='utf-8') as f:
+        if comment:
+            f.write(f'# {comment}\n')
+        f.write(''.join(f'{key} = {value}\n' for key, value in values.items()))
+    os.replace(tmp, path)
+
+
+def overflowed(text):
+    """True for a Fortran field of '*'s (a value too wide for its format)."""
+    return bool(text) and set(text) == {'*'}
+
+
+def summary_value(text):
+    """A summary value as a float when it is a number (NaN and Infinity as
+    Fortran writes them; a field of '*'s is inf), else None ('completed',
+    'none', 'true', ...)."""
+    try:
+        return float(text)
+    except ValueError:
+        return math.inf if overflowed(text) else None
+
+
+def table_text(text):
+    """A summary value as the text of a numeric table: as written, flags as
+    1 / 0, a time that never came ('none') and a field of '*'s as NaN."""
+    if overflowed(text) or text == 'none':
+        return 'NaN'
+    if text in ('true', 'false'):
+        return '1' if text == 'true' else '0'
+    return text
 
 
 def summary_number(values, key):
@@ -243,25 +312,200 @@ def _number(text):
         return None
 
 
-def read_history(path):
-    """A history (or any column file) as {column name: [values]}."""
-    names, rows = read_columns(path)
+def read_history(path, whole_rows=False):
+    """A history (or any column file) as {column name: [values]}
+    (read_columns)."""
+    names, rows = read_columns(path, whole_rows)
     return {name: [r[i] for r in rows if i < len(r)] for i, name in enumerate(names)}
 
 
 # ---------------------------------------------------------------- running
 
-def run_impact(impact, deck, sets=(), cwd=None, timeout=None, log=None, options=()):
+def cpu_count():
+    """The CPUs this process may use: its affinity mask, or Slurm's
+    allocation (SLURM_CPUS_ON_NODE, SLURM_CPUS_PER_TASK) when that is smaller."""
+    n = len(os.sched_getaffinity(0))
+    for var in ('SLURM_CPUS_ON_NODE', 'SLURM_CPUS_PER_TASK'):
+        try:
+            given = int(os.environ.get(var, ''))
+        except ValueError:
+            continue
+        if 0 < given < n:
+            n = given
+    return max(1, n)
+
+
+def run_impact(impact, deck, sets=(), cwd=None, timeout=None, log=None, options=(), env=None,
+               log_header=''):
     """Runs `impact [options] [--set g.v=x ...] deck` (an argument list, no
-    shell; options such as '--check' or '--overwrite'); standard output and
-    error go to the file log (or are captured). Returns the
-    CompletedProcess; past the timeout the run is killed and
-    subprocess.TimeoutExpired raised."""
+    shell; options such as '--check' or '--overwrite'; standard input
+    empty); standard output and error go to the file log, after the text
+    log_header (or are captured). Returns the CompletedProcess; past the
+    timeout the run is killed and subprocess.TimeoutExpired raised."""
     args = [impact] + list(options)
     for s in sets:
         args += ['--set', s]
     args.append(deck)
     if log is None:
-        return subprocess.run(args, cwd=cwd, capture_output=True, text=True, timeout=timeout)
-    with open(log, 'w') as f:
-        return subprocess.run(args, cwd=cwd, stdout=f, stderr=subprocess.STDOUT, timeout=timeout)
+        return subprocess.run(args, cwd=cwd, capture_output=True, text=True, timeout=timeout, env=env,
+                              stdin=subprocess.DEVNULL)
+    with open(log, 'w', encoding='utf-8') as f:
+        f.write(log_header)
+        f.flush()
+        return subprocess.run(args, cwd=cwd, stdout=f, stderr=subprocess.STDOUT, timeout=timeout, env=env,
+                              stdin=subprocess.DEVNULL)
+
+
+RUN_ARGUMENTS = ('impact', 'deck', 'sets', 'cwd', 'timeout', 'log', 'options', 'env', 'log_header')
+
+
+def run_many(runs, jobs=None, on_done=None, **common):
+    """Runs ./impact on many decks, at most `jobs` at a time (default
+    cpu_count()). runs: deck paths, or dicts of run_impact's arguments
+    ('deck' and any of impact, sets, options, cwd, log, log_header, timeout,
+    env), each over `common` (impact=... is needed in one of them); a dict
+    may carry other keys of its own. Returns one result per run, in the
+    order of runs: the run's dict with
+      exit       its exit status; None when it was killed at its timeout;
+                 127 when it could not start
+      timed_out  True when it was killed at its timeout
+      stdout, stderr   what it wrote ('' when it went to its log)
+      diagnostic its error lines (diagnostic()), from stderr or the log
+      elapsed_s  its wall-clock time (s)
+    on_done(result), when given, is called in this thread as each run ends;
+    with jobs = 1 the runs are made one after the other in this thread, and
+    on_done sees each before the next one starts."""
+    runs = [dict(common, **({'deck': r} if isinstance(r, str) else r)) for r in runs]
+    jobs = max(1, jobs or cpu_count())
+    if jobs == 1 or len(runs) <= 1:
+        results = []
+        for r in runs:
+            results.append(_run_one(r))
+            if on_done:
+                on_done(results[-1])
+        return results
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = {pool.submit(_run_one, r): k for k, r in enumerate(runs)}
+        results = [None] * len(runs)
+        for future in concurrent.futures.as_completed(futures):
+            results[futures[future]] = future.result()
+            if on_done:
+                on_done(results[futures[future]])
+    return results
+
+
+def _run_one(run):
+    """One run of run_many: the run's dict with its outcome."""
+    result = dict(run, exit=None, timed_out=False, stdout='', stderr='')
+    start = time.time()
+    try:
+        p = run_impact(**{k: run[k] for k in RUN_ARGUMENTS if k in run})
+        result.update(exit=p.returncode, stdout=p.stdout or '', stderr=p.stderr or '')
+    except subprocess.TimeoutExpired as e:
+        result.update(timed_out=True, stdout=_text(e.stdout), stderr=_text(e.stderr))
+    except OSError as e:
+        result.update(exit=127, stderr=f'impact_files: cannot run {run.get("impact")}: {e}\n')
+        if run.get('log'):
+            with open(run['log'], 'a', encoding='utf-8') as f:
+                f.write(result['stderr'])
+    result['elapsed_s'] = time.time() - start
+    result['diagnostic'] = diagnostic(result['stderr'] or _log_text(run.get('log')))
+    return result
+
+
+def _text(output):
+    """Output of a killed run as text (subprocess may give bytes)."""
+    if isinstance(output, bytes):
+        return output.decode(errors='replace')
+    return output or ''
+
+
+def _log_text(path):
+    """The text of a run's log ('' without one)."""
+    if not path or not os.path.isfile(path):
+        return ''
+    with open(path, encoding='utf-8', errors='replace') as f:
+        return f.read()
+
+
+def diagnostic(text):
+    """The error of a run from its messages: its last three lines naming an
+    error (not gfortran's 'ERROR STOP'), else its last line."""
+    lines = [line.rstrip('\n') for line in text.splitlines() if line.strip()]
+    errors = [line for line in lines if 'error' in line.lower() and not re.match(r'\s*ERROR STOP', line)]
+    return ' / '.join(errors[-3:]) if errors else (lines[-1] if lines else '')
+
+
+# -------------------------------------------------------------- documents
+
+BLOCK = re.compile(r'<!-- ([\w.:+-]+):begin -->(.*?)<!-- \1:end -->', re.S)
+
+
+class TemplateError(Exception):
+    """A block of a document that nothing fills."""
+
+
+def fill_blocks(text, value):
+    """text with every block <!-- NAME:begin -->...<!-- NAME:end --> filled
+    with value(NAME) (value: a function, or a dict). A block whose begin
+    marker ends its line gets the value on lines of its own, one written
+    inline stays inline. A name value does not know (KeyError) is a
+    TemplateError. Returns (text, the names filled, in order)."""
+    lookup = value.__getitem__ if isinstance(value, dict) else value
+    names = []
+
+    def fill(m):
+        name = m.group(1)
+        try:
+            new = lookup(name)
+        except KeyError:
+            raise TemplateError(f'nothing fills the block {name}') from None
+        names.append(name)
+        if m.group(2).startswith('\n'):
+            new = '\n' + new + '\n'
+        return f'<!-- {name}:begin -->{new}<!-- {name}:end -->'
+
+    return BLOCK.sub(fill, text), names
+
+
+def fill_file(path, value):
+    """Fills the blocks of the file at path in place (fill_blocks; the file
+    is replaced whole or not at all); returns the names filled."""
+    with open(path, encoding='utf-8') as f:
+        text, names = fill_blocks(f.read(), value)
+    tmp = path + '.tmp'
+    with open(tmp, 'w', encoding='utf-8') as f:
+        f.write(text)
+    os.replace(tmp, path)
+    return names
+
+
+def file_blocks(directory):
+    """A value for fill_blocks: block NAME is the file directory/NAME.md, its
+    lines right-trimmed; a missing file says the check did not run."""
+    def value(name):
+        path = os.path.join(directory, name + '.md')
+        if not os.path.isfile(path):
+            return f'(table {name} missing: the check did not run)'
+        with open(path, encoding='utf-8', errors='replace') as f:
+            return '\n'.join(line.rstrip() for line in f.read().splitlines())
+    return value
+
+
+def main(argv):
+    """python3 tools/impact_files.py fill DOC DIR: every block NAME of DOC
+    filled with DIR/NAME.md."""
+    if len(argv) != 3 or argv[0] != 'fill':
+        print('usage: impact_files.py fill DOC DIR', file=sys.stderr)
+        return 2
+    try:
+        names = fill_file(argv[1], file_blocks(argv[2]))
+    except (OSError, TemplateError) as e:
+        print(f'impact_files: {argv[1]}: {e}', file=sys.stderr)
+        return 1
+    print(f'impact_files: {argv[1]}: {len(names)} blocks filled from {argv[2]}')
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv[1:]))

@@ -16,9 +16,10 @@ Each scene changes one thing of the paper's scene (the clamped 150 x 100 x
 except the few marked 'beyond', which combine extremes on purpose.
 
 Writes build/stress/results.dat (one row per scene, a '#' header naming
-each column and its unit) and docs/STABILITY.md from
-tools/stress/STABILITY.md.in (the table, the envelope, the worst energy
-error, the scenes that needed a fall-back). Exit status 0 when every scene
+each column and its unit) and fills the blocks of docs/STABILITY.md in place
+(<!-- name:begin --> ... <!-- name:end -->: the table, the envelope, the worst
+energy error, the scenes that needed a fall-back; impact_files.fill_file).
+The scenes run through impact_files.run_many. Exit status 0 when every scene
 passes, 1 otherwise.
 
 Usage: tools/stress/stress.py [--jobs N] [--only NAME...] [--impact PATH]
@@ -26,17 +27,14 @@ Python 3 standard library only.
 """
 
 import argparse
-import concurrent.futures
 import math
 import os
 import re
-import subprocess
 import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 WORK = os.path.join(ROOT, 'build', 'stress')
-TEMPLATE = os.path.join(ROOT, 'tools', 'stress', 'STABILITY.md.in')
 REPORT = os.path.join(ROOT, 'docs', 'STABILITY.md')
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import impact_files as imf  # noqa: E402
@@ -154,44 +152,35 @@ SCENES = [
 
 
 def scene_deck(sc, prefix):
-    """The deck of a scene: the paper's scene with the scene's changes."""
+    """The deck of a scene (its groups): the paper's scene with the scene's changes."""
     groups = [[g, [[name, value] for name, value in values.items()]] for g, values in BASE.items()]
     for g, changes in sc['changes'].items():
         for name, value in changes.items():
             imf.set_value(groups, g, name, value)
     imf.set_value(groups, 'output', 'prefix', "'%s'" % prefix)
-    return imf.deck_text(groups, ['make stress (tools/stress/stress.py), scene %s: %s' % (sc['name'], sc['what'])])
+    return groups
 
 
-def number(text):
-    """A summary value as a float, NaN and Inf included (Fortran writes NaN,
-    Infinity, -Infinity); a field of '*'s (too narrow for its value) is Inf;
-    None when the text is not a number ('completed', 'none', ...)."""
-    try:
-        return float(text)
-    except ValueError:
-        return math.inf if text and set(text) <= set('*') else None
-
-
-def run_scene(sc, impact):
-    """Runs one scene; returns its row of results (a dict)."""
-    name = sc['name']
+def prepare(sc):
+    """Writes the deck of a scene (build/stress/runs/NAME.nml) and removes its
+    old results; returns its run for impact_files.run_many."""
     d = os.path.join(WORK, 'runs')
     os.makedirs(d, exist_ok=True)
-    prefix = os.path.join(d, name)
-    deck = prefix + '.nml'
-    with open(deck, 'w') as f:
-        f.write(scene_deck(sc, prefix))
+    prefix = os.path.join(d, sc['name'])
+    imf.write_deck(prefix + '.nml', scene_deck(sc, prefix),
+                   ['make stress (tools/stress/stress.py), scene %s: %s' % (sc['name'], sc['what'])])
     for suffix in ('_history.dat', '_summary.dat'):
         if os.path.exists(prefix + suffix):
             os.remove(prefix + suffix)
-    start = time.time()
-    try:
-        p = imf.run_impact(impact, deck, cwd=ROOT, timeout=TIMEOUT_S)
-        status, stderr = p.returncode, p.stderr
-    except subprocess.TimeoutExpired as e:
-        status, stderr = 'timeout', (e.stderr or b'').decode(errors='replace') if isinstance(e.stderr, bytes) else (e.stderr or '')
-    wall = time.time() - start
+    return {'deck': prefix + '.nml', 'scene': sc, 'prefix': prefix}
+
+
+def analyse(run):
+    """The row of results of a scene (a dict) from its run (run_many)."""
+    sc, prefix, stderr = run['scene'], run['prefix'], run['stderr']
+    name = sc['name']
+    status = 'timeout' if run['timed_out'] else run['exit']
+    wall = run['elapsed_s']
     with open(prefix + '.err', 'w') as f:
         f.write(stderr)
     r = {'name': name, 'group': sc['group'], 'what': sc['what'], 'beyond': sc['beyond'],
@@ -199,9 +188,9 @@ def run_scene(sc, impact):
     hist = prefix + '_history.dat'
     summ = prefix + '_summary.dat'
     rows = imf.read_columns(hist)[1] if os.path.exists(hist) else []     # a field not a number: NaN
-    s = {}                                  # the summary: numbers as floats, the rest as text
+    s = {}                                  # the summary: numbers as floats ('*'s: inf), the rest as text
     for k, v in (imf.read_keys(summ) if os.path.exists(summ) else {}).items():
-        n = number(v)
+        n = imf.summary_value(v)
         s[k] = v if n is None else n
     r['rows'] = len(rows)
     r['nan'] = any(not math.isfinite(v) for row in rows for v in row) \
@@ -312,36 +301,37 @@ def md_table(results):
 
 
 def write_report(results, elapsed, jobs):
-    with open(TEMPLATE, encoding='utf-8') as f:
-        text = f.read()
+    """Fills the blocks of docs/STABILITY.md with the numbers of this run."""
     finite = [r for r in results if math.isfinite(r['lost'])]
     worst_lost = max(finite, key=lambda r: r['lost']) if finite else None
     worst_created = max(finite, key=lambda r: r['created']) if finite else None
     fallbacks = [r for r in results if (r['nonlinear_fallback_steps'] or 0) > 0 or (r['contact_fallback_steps'] or 0) > 0]
     stopped = [r for r in results if r['outcome'].startswith('stopped')]
     failed = [r for r in results if not r['pass']]
-    subs = {
-        '@TABLE@': md_table(results),
-        '@NSCENES@': str(len(results)),
-        '@NPASS@': str(len(results) - len(failed)),
-        '@ELAPSED@': '%.0f' % elapsed,
-        '@JOBS@': str(jobs),
-        '@ENERGY_LOST@': '%g' % ENERGY_LOST,
-        '@ENERGY_CREATED@': '%g' % ENERGY_CREATED,
-        '@WORST_LOST@': ('%.2e E0 (%s)' % (worst_lost['lost'], worst_lost['name'])) if worst_lost else 'n/a',
-        '@WORST_CREATED@': ('%.2e E0 (%s)' % (worst_created['created'], worst_created['name'])) if worst_created else 'n/a',
-        '@FALLBACKS@': '\n'.join('- `%s` (%s): %s steps fell back to Anderson mixing, %s contact steps fell back'
-                                 % (r['name'], r['what'], fmt(r['nonlinear_fallback_steps'], '{:.0f}'),
-                                    fmt(r['contact_fallback_steps'], '{:.0f}')) for r in fallbacks) or '- none',
-        '@STOPPED@': '\n'.join('- `%s` (%s): %s' % (r['name'], r['what'], r['diagnostic'].replace('impact: error: ', ''))
-                               for r in stopped) or '- none',
-        '@FAILED@': '\n'.join('- `%s`: %s' % (r['name'], '; '.join(r['problems'])) for r in failed) or '- none',
-    }
-    for k, v in subs.items():
-        text = text.replace(k, v)
-    os.makedirs(os.path.dirname(REPORT), exist_ok=True)
-    with open(REPORT, 'w', encoding='utf-8') as f:
-        f.write(text)
+    imf.fill_file(REPORT, {
+        'table': md_table(results),
+        'nscenes': str(len(results)),
+        'npass': str(len(results) - len(failed)),
+        'elapsed': '%.0f' % elapsed,
+        'jobs': str(jobs),
+        'energy_lost': '%g' % ENERGY_LOST,
+        'energy_created': '%g' % ENERGY_CREATED,
+        'worst_lost': ('%.2e E0 (%s)' % (worst_lost['lost'], worst_lost['name'])) if worst_lost else 'n/a',
+        'worst_created': ('%.2e E0 (%s)' % (worst_created['created'], worst_created['name'])) if worst_created else 'n/a',
+        'fallbacks': '\n'.join('- `%s` (%s): %s steps fell back to Anderson mixing, %s contact steps fell back'
+                                % (r['name'], r['what'], fmt(r['nonlinear_fallback_steps'], '{:.0f}'),
+                                   fmt(r['contact_fallback_steps'], '{:.0f}')) for r in fallbacks) or '- none',
+        'stopped': '\n'.join('- `%s` (%s): %s' % (r['name'], r['what'], r['diagnostic'].replace('impact: error: ', ''))
+                              for r in stopped) or '- none',
+        'failed': '\n'.join('- `%s`: %s' % (r['name'], '; '.join(r['problems'])) for r in failed) or '- none',
+    })
+
+
+def report_line(r):
+    """The line printed when a scene ends."""
+    print('stress: %-22s %-20s lost %-9s created %-9s %s' % (
+        r['name'], r['outcome'], fmt(r['lost'], '{:.2e}'), fmt(r['created'], '{:.2e}'),
+        'pass' if r['pass'] else 'FAIL: ' + '; '.join(r['problems'])), flush=True)
 
 
 def main(argv=None):
@@ -357,16 +347,15 @@ def main(argv=None):
     os.makedirs(WORK, exist_ok=True)
     start = time.time()
     results = {}
+
+    def done(run):
+        results[run['scene']['name']] = r = analyse(run)
+        report_line(r)
+
     # the largest scenes first, so that the two workers finish together
     order = sorted(scenes, key=lambda s: 0 if 'mesh_72' in s['name'] else 1)
-    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        futures = {pool.submit(run_scene, s, args.impact): s['name'] for s in order}
-        for fu in concurrent.futures.as_completed(futures):
-            r = fu.result()
-            results[r['name']] = r
-            print('stress: %-22s %-20s lost %-9s created %-9s %s' % (
-                r['name'], r['outcome'], fmt(r['lost'], '{:.2e}'), fmt(r['created'], '{:.2e}'),
-                'pass' if r['pass'] else 'FAIL: ' + '; '.join(r['problems'])), flush=True)
+    imf.run_many([prepare(s) for s in order], jobs=jobs, on_done=done, impact=args.impact, cwd=ROOT,
+                 timeout=TIMEOUT_S)
     elapsed = time.time() - start
     ordered = [results[s['name']] for s in scenes]
     write_results(ordered, os.path.join(WORK, 'results.dat'))

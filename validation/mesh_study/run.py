@@ -9,8 +9,9 @@ keeping everything of the template (plate, lamina, laminate with k4, k5, the
 243 g impactor at 3 m/s, contact, dt, t_end, domain = 'quarter') but with
 &mesh nx, ny, &analysis theory and scheme (--scheme), its own &output prefix,
 overwrite = .true., hdf5 = .false., and the --set values; it runs
-`impact deck.nml` (no shell), and reads <prefix>_summary.dat (key = value)
-and <prefix>_history.dat (columns found by name from its '#' header).
+`impact deck.nml` (impact_files.run_many, no shell), and reads
+<prefix>_summary.dat (key = value) and <prefix>_history.dat (columns found by
+name from its '#' header) through tools/impact_files.py.
 For every edge and mesh it also runs a static deck (&analysis kind =
 'static', theory = 'linear'; &load kind = 'central_force', magnitude = 1 N)
 and reads the centre deflection from <prefix>_static.dat (checked against
@@ -66,11 +67,8 @@ import argparse
 import math
 import os
 import re
-import subprocess
 import sys
-import threading
 import time
-from concurrent.futures import ThreadPoolExecutor
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
@@ -94,38 +92,29 @@ class StudyError(Exception):
 
 # ------------------------------------------------------------------ decks
 
-def make_deck(template_path, settings, extra, header):
+def make_deck(template_path, settings, extra):
     """The template's groups with settings [(group, name, value)] and then the
     --set values [(group, name, value)] applied; the blanks of an unquoted
     value written over several lines of the template are joined into one."""
-    with open(template_path, encoding='utf-8') as f:
-        try:
-            groups = imf.parse_deck(f.read())
-        except imf.DeckError as e:
-            raise StudyError('template: %s' % e)
+    try:
+        groups = imf.read_deck(template_path)
+    except imf.DeckError as e:
+        raise StudyError('template: %s' % e)
     for _, pairs in groups:
         for pair in pairs:
             if '\'' not in pair[1] and '"' not in pair[1]:
                 pair[1] = re.sub(r'\s+', ' ', pair[1])
     for g, n, v in list(settings) + list(extra):
         imf.set_value(groups, g, n, v)
-    return imf.deck_text(groups, header)
+    return groups
 
 
 # ------------------------------------------------------------------ results
 
 def read_columns(path):
-    """A column file as {name: [values]}, {} when it is missing or has no row;
-    a row that is not all numbers, or is cut short (a stopped run), is left
-    out. The names are those of the '#' line just before the rows."""
-    if not os.path.exists(path):
-        return {}
-    names, rows = imf.read_columns(path, whole_rows=True)
-    if not rows:
-        return {}
-    if len(names) != len(rows[0]) or not all(re.match(r'^[A-Za-z]\w*$', x) for x in names):
-        raise StudyError('%s: no header line naming its %d columns' % (path, len(rows[0])))
-    return {n: [r[k] for r in rows] for k, n in enumerate(names)}
+    """A column file as {name: [values]}, {} when it is missing; a row that is
+    not all numbers, or is cut short (a stopped run), is left out."""
+    return imf.read_history(path, whole_rows=True) if os.path.exists(path) else {}
 
 
 def first_dip(F, a, b):
@@ -205,35 +194,26 @@ def ival(s, key):
 
 # ------------------------------------------------------------------ runs
 
-class Runner:
-    def __init__(self, impact, runs_dir, timeout):
-        self.impact = impact
-        self.dir = runs_dir
-        self.timeout = timeout
-        self.lock = threading.Lock()
-        self.done = 0
-        self.total = 0
+def run_all(jobs, runs_dir, impact, timeout, n_jobs):
+    """Runs impact on the deck of every job (impact_files.run_many, n_jobs at
+    a time), the largest first; fills each job with rc (None: timed out),
+    timed_out, wall_s and log."""
+    order = sorted(jobs, key=lambda j: (-j['mesh'][0] * j['mesh'][1], j['kind'] != 'impact',
+                                        j['theory'] != 'nonlinear'))
+    count = [0]
 
-    def run(self, job):
-        """Runs impact on job['deck'] in the runs directory; fills job."""
-        log_path = os.path.join(self.dir, job['name'] + '.log')
-        t0 = time.time()
-        try:
-            job['rc'] = imf.run_impact(self.impact, job['name'] + '.nml', cwd=self.dir, log=log_path,
-                                       timeout=self.timeout if self.timeout > 0 else None).returncode
-            job['timed_out'] = False
-        except subprocess.TimeoutExpired:   # run_impact killed the process it started
-            job['rc'] = None
-            job['timed_out'] = True
-        job['wall_s'] = time.time() - t0
-        with open(log_path, encoding='utf-8', errors='replace') as f:
+    def done(run):
+        job = run['job']
+        job.update(rc=run['exit'], timed_out=run['timed_out'], wall_s=run['elapsed_s'])
+        with open(run['log'], encoding='utf-8', errors='replace') as f:
             job['log'] = f.read()
-        with self.lock:
-            self.done += 1
-            state = 'timed out' if job['timed_out'] else ('rc %s' % job['rc'])
-            print('[%d/%d] %-40s %s, %.1f s' % (self.done, self.total, job['name'], state,
-                                              job['wall_s']), flush=True)
-        return job
+        count[0] += 1
+        state = 'timed out' if job['timed_out'] else ('rc %s' % job['rc'])
+        print('[%d/%d] %-40s %s, %.1f s' % (count[0], len(order), job['name'], state, job['wall_s']), flush=True)
+
+    imf.run_many([dict(deck=j['name'] + '.nml', log=os.path.join(runs_dir, j['name'] + '.log'), job=j)
+                  for j in order], jobs=n_jobs, on_done=done, impact=impact, cwd=runs_dir,
+                 timeout=timeout if timeout > 0 else None)
 
 
 def analyse_impact(job):
@@ -654,11 +634,12 @@ def main(argv=None):
                                 ('analysis', 'scheme', "'%s'" % args.scheme),
                                 ('output', 'prefix', "'%s'" % name),
                                 ('output', 'overwrite', '.true.'), ('output', 'hdf5', '.false.')]
-                    text = make_deck(tpl, settings, args.set_list, [
+                    groups = make_deck(tpl, settings, args.set_list)
+                    header = [
                         'written by validation/mesh_study/run.py from %s' % tpl,
-                        'mesh %s, theory %s, scheme %s' % (mname(m), th, args.scheme)])
+                        'mesh %s, theory %s, scheme %s' % (mname(m), th, args.scheme)]
                     jobs[('impact', e, th, m)] = dict(kind='impact', edge=e, theory=th, mesh=m,
-                                                      name=name, text=text)
+                                                      name=name, groups=groups, header=header)
                 if not args.no_static:
                     name = 'static_%s_%s' % (e, mname(m))
                     settings = [('mesh', 'nx', str(m[0])), ('mesh', 'ny', str(m[1])),
@@ -668,43 +649,30 @@ def main(argv=None):
                                 ('load', 'kind', "'central_force'"), ('load', 'magnitude', '1.0'),
                                 ('output', 'prefix', "'%s'" % name),
                                 ('output', 'overwrite', '.true.'), ('output', 'hdf5', '.false.')]
-                    text = make_deck(tpl, settings, args.set_list, [
+                    groups = make_deck(tpl, settings, args.set_list)
+                    header = [
                         'written by validation/mesh_study/run.py from %s' % tpl,
-                        'static point compliance, mesh %s, 1 N at the centre' % mname(m)])
+                        'static point compliance, mesh %s, 1 N at the centre' % mname(m)]
                     jobs[('static', e, None, m)] = dict(kind='static', edge=e, theory=None, mesh=m,
-                                                        name=name, text=text, magnitude=1.0)
+                                                        name=name, groups=groups, header=header,
+                                                        magnitude=1.0)
     except StudyError as err:
         print('mesh_study: error: %s' % err, file=sys.stderr)
         return 2
     for j in jobs.values():
         j['dir'] = runs
-        with open(os.path.join(runs, j['name'] + '.nml'), 'w', encoding='utf-8') as f:
-            f.write(j['text'])
-    runner = Runner(args.impact, runs, args.timeout)
-    runner.total = len(jobs)
-    # the largest runs first, so that the last ones to finish are short
-    order = sorted(jobs.values(), key=lambda j: (-j['mesh'][0] * j['mesh'][1],
-                                                 j['kind'] != 'impact', j['theory'] != 'nonlinear'))
+        imf.write_deck(os.path.join(runs, j['name'] + '.nml'), j['groups'], j['header'])
     started = time.strftime('%Y-%m-%d %H:%M:%S')
     t0 = time.time()
     print('mesh_study: %d runs, %d at a time, in %s' % (len(jobs), args.jobs, runs), flush=True)
-    with ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        list(pool.map(runner.run, order))
+    # the largest runs first, so that the last ones to finish are short
+    run_all(jobs.values(), runs, args.impact, args.timeout, args.jobs)
     elapsed = time.time() - t0
     for j in jobs.values():
-        try:
-            if j['kind'] == 'impact':
-                analyse_impact(j)
-            else:
-                analyse_static(j)
-        except StudyError as err:
-            j['summary'] = j.get('summary', {})
-            j['log'] += '\nerror: mesh_study: %s' % err
-            j['rc'] = j['rc'] if j['rc'] else -1
-            j.setdefault('split', 'none')
-            for k in ('F1_N', 't1_us', 'end_us', 'start_us', 'Fmin_N', 'wP', 'wP_node', 'last_time_us'):
-                j.setdefault(k, math.nan)
-            j.setdefault('ended', None)
+        if j['kind'] == 'impact':
+            analyse_impact(j)
+        else:
+            analyse_static(j)
         j['status'] = status_of(j)
     rep, dat = write_report(os.path.abspath(args.report), args, jobs, args.mesh_list,
                             template_dir, started, elapsed)

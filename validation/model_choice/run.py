@@ -17,13 +17,16 @@ deflection against the number of equations.
 Checks with tolerances (the script exits 1 if one fails, after writing the
 report): Whitney within 1.5e-3 of Table 1; the domains as expected; the
 symmetric cases equal to 1e-6 of the peak force and deflection.
-Usage: python3 validation/model_choice/run.py   (from the repository root)
+Every deck of the report (plan()) is written first and run through
+impact_files.run_many, --jobs at a time (default: the CPUs this process may
+use); then the report is written from their outputs.
+Usage: python3 validation/model_choice/run.py [--jobs N]   (from the repository root)
 """
+import argparse
 import os
 import re
 import subprocess
 import sys
-import time
 
 ROOT = os.getcwd()
 IMPACT = os.path.join(ROOT, 'impact')
@@ -44,30 +47,106 @@ SYM_TOL = 1.0e-6
 
 failures = []
 
+# The scenes of the report: section 2 (label, angles, x0, y0, average_bend_twist,
+# the domain expected), section 3 (name, label, domain, nx, ny, x0, angles; the
+# averaged quarter against the full plate), section 4 (impactor masses of one
+# energy; velocities of theory = 'auto'), section 5 (family, grading, (nx, ny)).
+DOMAIN_SCENES = [
+    ('paper', PAPER, 0, 0, False, 'full'),
+    ('paper, averaged', PAPER, 0, 0, True, 'quarter'),
+    ('paper, averaged, off-centre', PAPER, 0.03, 0, True, 'half'),
+    ('cross-ply [0/90/0/90]s', CROSS, 0, 0, False, 'quarter'),
+    ('cross-ply', CROSS, 0.03, 0, False, 'half'),
+    ('cross-ply', CROSS, 0, 0.02, False, 'half'),
+    ('cross-ply', CROSS, 0.03, 0.02, False, 'full'),
+    ('angle-ply [45/-45]2', ANGLE, 0, 0, True, 'full'),
+]
+SYM_CASES = [
+    ('cross_quarter', 'cross-ply, centre', 'quarter', 9, 6, 0.0, CROSS),
+    ('cross_half', 'cross-ply, centre', 'half', 18, 6, 0.0, CROSS),
+    ('cross_full', 'cross-ply, centre', 'full', 18, 12, 0.0, CROSS),
+    ('cross_off_half', 'cross-ply, x0 = 0.03 m', 'half', 18, 6, 0.03, CROSS),
+    ('cross_off_full', 'cross-ply, x0 = 0.03 m', 'full', 18, 12, 0.03, CROSS),
+]
+AVG_MODELS = (('quarter averaged', "nx = 9, ny = 6, domain = 'quarter'"),
+              ('full, D16 and D26 kept', "nx = 18, ny = 12, domain = 'full'"))
+EST_MASSES = (0.0243, 0.0608, 0.243, 0.972)
+AUTO_VELOCITIES = (0.3, 0.6, 1.0, 3.0)
+GRADING = ([('uniform', 1.0, n) for n in ((3, 2), (4, 3), (6, 4), (9, 6), (12, 8), (18, 12))]
+           + [('graded 1.25', 1.25, n) for n in ((3, 2), (4, 3), (6, 4), (9, 6), (12, 8))]
+           + [('graded 1.5', 1.5, n) for n in ((3, 2), (4, 3), (6, 4), (9, 6))])
+
 
 def deck(name, groups):
     """Writes build/validation/model_choice/<name>.nml; groups: {group: 'name = value, ...'}."""
-    path = os.path.join(WORK, name + '.nml')
     g = [[group, imf.split_assignments(body)] for group, body in groups.items()]
     if 'output' not in groups:
         g.append(['output', [['prefix', "'%s'" % os.path.join(WORK, name)], ['overwrite', '.true.']]])
-    with open(path, 'w') as f:
-        f.write(imf.deck_text(g, ['written by validation/model_choice/run.py']))
-    return path
+    return imf.write_deck(os.path.join(WORK, name + '.nml'), g, ['written by validation/model_choice/run.py'])
 
 
-def run(name, groups, check=False):
-    """Runs ./impact [--check] on a deck; returns (stdout+stderr, summary dict, wall s)."""
-    path = deck(name, groups)
-    t0 = time.time()
-    p = imf.run_impact(IMPACT, path, options=['--check'] if check else [])
-    wall = time.time() - t0
-    out = p.stdout + p.stderr
-    if p.returncode != 0:
-        sys.exit('validate-model: %s failed:\n%s' % (name, out))
-    sp = os.path.join(WORK, name + '_summary.dat')
-    summ = imf.read_keys(sp) if not check and os.path.exists(sp) else {}
-    return out, summ, wall
+def est_velocity(m):
+    """The velocity of an impactor of mass m (kg) with the paper's energy 1.0935 J."""
+    return (2 * 1.0935 / m) ** 0.5
+
+
+def plan():
+    """Every run of the report: [(name, groups, check)] (check: ./impact --check)."""
+    p = [('whitney', {'laminate': 'angles = %s' % PAPER}, True)]
+    for i, (label, ang, x0, y0, avg, expect) in enumerate(DOMAIN_SCENES):
+        p.append(('domain_%d' % i, {'laminate': 'angles = %s' % ang, 'impactor': 'x0 = %g, y0 = %g' % (x0, y0),
+                                    'mesh': 'average_bend_twist = %s' % ('.true.' if avg else '.false.')}, True))
+    for name, label, dom, nx, ny, x0, ang in SYM_CASES:
+        p.append(('sym_' + name, clamped("nx = %d, ny = %d, domain = '%s'" % (nx, ny, dom),
+                                         {'impactor': 'x0 = %g' % x0}, laminate='angles = %s' % ang)
+                  | {'analysis': "theory = 'nonlinear', scheme = 'fast', cr2 = 1.0e-20, t_end = 1.6e-3"}, False))
+    for theory in ('linear', 'nonlinear'):
+        for name, mesh in AVG_MODELS:
+            p.append((avg_name(theory, name), clamped(mesh, theory=theory), False))
+    for m in EST_MASSES:
+        for theory in ('linear', 'nonlinear'):
+            p.append(('est_%g_%s' % (m, theory), clamped(
+                "nx = 9, ny = 6, domain = 'quarter'",
+                {'impactor': 'mass = %g, velocity = %.6g' % (m, est_velocity(m))},
+                theory=theory, t_end='%g' % max(1.6e-3, 1.6e-3 * (m / 0.243) ** 0.5)), False))
+    for v in AUTO_VELOCITIES:
+        for theory in ('auto', 'linear', 'nonlinear'):
+            p.append(('auto_%g_%s' % (v, theory), clamped(
+                "nx = 9, ny = 6, domain = 'quarter'", {'impactor': 'velocity = %g' % v}, theory=theory,
+                t_end='2.0e-3'), theory == 'auto'))
+    p.append(('grade_ref', clamped("nx = 24, ny = 16, domain = 'quarter'"), False))
+    for fam, g, (nx, ny) in GRADING:
+        p.append((grade_name(fam, nx, ny),
+                  clamped("nx = %d, ny = %d, domain = 'quarter', grading = %g" % (nx, ny, g)), False))
+    return p
+
+
+def avg_name(theory, model):
+    """The run of section 3's averaged quarter or full plate."""
+    return 'avg_%s_%s' % (theory, model.split()[0].rstrip(','))
+
+
+def grade_name(fam, nx, ny):
+    """The run of section 5's mesh of a family."""
+    return 'grade_%s_%d_%d' % (fam.replace(' ', '_'), nx, ny)
+
+
+def run_all(runs, jobs):
+    """Writes and runs every deck of runs (plan()), jobs at a time; returns
+    {name: (stdout+stderr, summary dict)}; exits naming the first run (in
+    the order of runs) that failed."""
+    results = imf.run_many([dict(deck=deck(name, groups), options=['--check'] if check else [], name=name,
+                                 check=check) for name, groups, check in runs], jobs=jobs, impact=IMPACT,
+                           on_done=lambda r: print('validate-model: %-28s %.1f s' % (r['name'], r['elapsed_s']),
+                                                   flush=True))
+    out = {}
+    for r in results:
+        text = r['stdout'] + r['stderr']
+        if r['exit'] != 0:
+            sys.exit('validate-model: %s failed:\n%s' % (r['name'], text))
+        sp = os.path.join(WORK, r['name'] + '_summary.dat')
+        out[r['name']] = (text, imf.read_keys(sp) if not r['check'] and os.path.exists(sp) else {})
+    return out
 
 
 def scene_value(out, pattern):
@@ -93,8 +172,12 @@ def clamped(extra_mesh, extra=None, laminate="angles = %s" % PAPER, theory='nonl
 
 
 def main():
+    ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    ap.add_argument('--jobs', type=int, default=0, help='runs at a time (default: the CPUs this process may use)')
+    args = ap.parse_args()
     os.makedirs(WORK, exist_ok=True)
     os.makedirs(FIGS, exist_ok=True)
+    R = run_all(plan(), args.jobs or None)
     md = []
     w = md.append
     w('# Model choices: Whitney factors, domains, symmetry, scene estimate, graded meshes')
@@ -105,7 +188,7 @@ def main():
     w('')
 
     # ------------------------------------------------------------ 1 Whitney
-    out, _, _ = run('whitney', {'laminate': 'angles = %s' % PAPER}, check=True)
+    out, _ = R['whitney']
     k4 = float(scene_value(out, r'k4 =\s*([0-9.]+)'))
     k5 = float(scene_value(out, r'k5 =\s*([0-9.]+)'))
     ok = abs(k4 - TABLE1[0]) <= TABLE1_TOL and abs(k5 - TABLE1[1]) <= TABLE1_TOL
@@ -135,21 +218,8 @@ def main():
     w('')
     w('| layup | impact point (m) | average_bend_twist | domain | reason |')
     w('|---|---|---|---|---|')
-    scenes = [
-        ('paper', PAPER, 0, 0, False, 'full'),
-        ('paper, averaged', PAPER, 0, 0, True, 'quarter'),
-        ('paper, averaged, off-centre', PAPER, 0.03, 0, True, 'half'),
-        ('cross-ply [0/90/0/90]s', CROSS, 0, 0, False, 'quarter'),
-        ('cross-ply', CROSS, 0.03, 0, False, 'half'),
-        ('cross-ply', CROSS, 0, 0.02, False, 'half'),
-        ('cross-ply', CROSS, 0.03, 0.02, False, 'full'),
-        ('angle-ply [45/-45]2', ANGLE, 0, 0, True, 'full'),
-    ]
-    for i, (label, ang, x0, y0, avg, expect) in enumerate(scenes):
-        out, _, _ = run('domain_%d' % i, {'laminate': 'angles = %s' % ang,
-                                          'impactor': 'x0 = %g, y0 = %g' % (x0, y0),
-                                          'mesh': 'average_bend_twist = %s' % ('.true.' if avg else '.false.')},
-                        check=True)
+    for i, (label, ang, x0, y0, avg, expect) in enumerate(DOMAIN_SCENES):
+        out, _ = R['domain_%d' % i]
         reason = scene_value(out, r'scene: domain\s+(.*)')
         got = reason.split(':')[0].split(',')[0].strip()
         if got != expect:
@@ -168,17 +238,8 @@ def main():
     w('| case | domain | equations | peak force (N) | time of peak (us) | max deflection (mm) | max back-face strain | cpu (s) |')
     w('|---|---|---|---|---|---|---|---|')
     sym = {}
-    cases = [
-        ('cross_quarter', 'cross-ply, centre', 'quarter', 9, 6, 0.0, CROSS),
-        ('cross_half', 'cross-ply, centre', 'half', 18, 6, 0.0, CROSS),
-        ('cross_full', 'cross-ply, centre', 'full', 18, 12, 0.0, CROSS),
-        ('cross_off_half', 'cross-ply, x0 = 0.03 m', 'half', 18, 6, 0.03, CROSS),
-        ('cross_off_full', 'cross-ply, x0 = 0.03 m', 'full', 18, 12, 0.03, CROSS),
-    ]
-    for name, label, dom, nx, ny, x0, ang in cases:
-        out, s, _ = run('sym_' + name, clamped("nx = %d, ny = %d, domain = '%s'" % (nx, ny, dom),
-                                               {'impactor': 'x0 = %g' % x0}, laminate='angles = %s' % ang)
-                        | {'analysis': "theory = 'nonlinear', scheme = 'fast', cr2 = 1.0e-20, t_end = 1.6e-3"})
+    for name, label, dom, nx, ny, x0, ang in SYM_CASES:
+        out, s = R['sym_' + name]
         sym[name] = s
         w('| %s | %s | %d | %.3f | %.1f | %.5f | %.5e | %.2f |' % (
             label, dom, equations(out), num(s, 'peak_force_N'), num(s, 'time_of_peak_us'),
@@ -203,9 +264,8 @@ def main():
     w('|---|---|---|---|---|---|---|---|')
     for theory in ('linear', 'nonlinear'):
         res = {}
-        for name, mesh in (('quarter averaged', "nx = 9, ny = 6, domain = 'quarter'"),
-                           ('full, D16 and D26 kept', "nx = 18, ny = 12, domain = 'full'")):
-            out, s, _ = run('avg_%s_%s' % (theory, name.split()[0].rstrip(',')), clamped(mesh, theory=theory))
+        for name, mesh in AVG_MODELS:
+            out, s = R[avg_name(theory, name)]
             res[name] = s
             w('| %s | %s | %d | %.2f | %.1f | %.4f | %.4e | %.2f |' % (
                 theory, name, equations(out), num(s, 'peak_force_N'), num(s, 'time_of_peak_us'),
@@ -227,13 +287,11 @@ def main():
     w('| impactor (kg) | velocity (m/s) | mass ratio | estimated w/h | linear run w/h | nonlinear run w/h | estimated F (N) | linear run F (N) | nonlinear run F (N) |')
     w('|---|---|---|---|---|---|---|---|---|')
     h = 0.0027
-    for m in (0.0243, 0.0608, 0.243, 0.972):
-        v = (2 * 1.0935 / m) ** 0.5
+    for m in EST_MASSES:
+        v = est_velocity(m)
         row = {}
         for theory in ('linear', 'nonlinear'):
-            out, s, _ = run('est_%g_%s' % (m, theory), clamped(
-                "nx = 9, ny = 6, domain = 'quarter'", {'impactor': 'mass = %g, velocity = %.6g' % (m, v)},
-                theory=theory, t_end='%g' % max(1.6e-3, 1.6e-3 * (m / 0.243) ** 0.5)))
+            out, s = R['est_%g_%s' % (m, theory)]
             row[theory] = s
             est_wh = float(scene_value(out, r'w/h =\s*([0-9.]+)'))
             est_f = float(scene_value(out, r'energy balance\s+F =\s*([0-9.E+-]+)'))
@@ -248,13 +306,8 @@ def main():
     w('')
     w('| velocity (m/s) | estimated w/h | auto chose | linear: peak F (N), w max (mm) | nonlinear: peak F (N), w max (mm) | difference of F, w |')
     w('|---|---|---|---|---|---|')
-    for v in (0.3, 0.6, 1.0, 3.0):
-        res = {}
-        for theory in ('auto', 'linear', 'nonlinear'):
-            out, s, _ = run('auto_%g_%s' % (v, theory), clamped(
-                "nx = 9, ny = 6, domain = 'quarter'", {'impactor': 'velocity = %g' % v}, theory=theory,
-                t_end='2.0e-3'), check=(theory == 'auto'))
-            res[theory] = (out, s)
+    for v in AUTO_VELOCITIES:
+        res = {theory: R['auto_%g_%s' % (v, theory)] for theory in ('auto', 'linear', 'nonlinear')}
         out = res['auto'][0]
         chose = scene_value(out, r'scene: theory\s+(\w+)')
         est_wh = float(scene_value(out, r'w/h =\s*([0-9.]+)'))
@@ -278,10 +331,7 @@ def main():
     w('Errors of the peak force and of the largest deflection against the number of')
     w('equations; figure: docs/validation/model_choice/grading.png.')
     w('')
-    meshes = [('uniform', 1.0, n) for n in ((3, 2), (4, 3), (6, 4), (9, 6), (12, 8), (18, 12))]
-    meshes += [('graded 1.25', 1.25, n) for n in ((3, 2), (4, 3), (6, 4), (9, 6), (12, 8))]
-    meshes += [('graded 1.5', 1.5, n) for n in ((3, 2), (4, 3), (6, 4), (9, 6))]
-    out, ref, _ = run('grade_ref', clamped("nx = 24, ny = 16, domain = 'quarter'"))
+    out, ref = R['grade_ref']
     fref, wref = num(ref, 'peak_force_N'), num(ref, 'max_deflection_mm')
     neq_ref = equations(out)
     w('| mesh | nx x ny | grading | equations | element at the impact point (mm) | a/element | peak force (N) | error | max deflection (mm) | error | max eq. (19) iterations | unconverged steps | cpu (s) |')
@@ -294,9 +344,8 @@ def main():
     dat = ['# family grading nx ny equations peak_force_N max_deflection_mm force_error_pct deflection_error_pct '
            'converged(1/0)']
     results = []
-    for fam, g, (nx, ny) in meshes:
-        name = 'grade_%s_%d_%d' % (fam.replace(' ', '_'), nx, ny)
-        out, s, _ = run(name, clamped("nx = %d, ny = %d, domain = 'quarter', grading = %g" % (nx, ny, g)))
+    for fam, g, (nx, ny) in GRADING:
+        out, s = R[grade_name(fam, nx, ny)]
         neq = equations(out)
         f, wm = num(s, 'peak_force_N'), num(s, 'max_deflection_mm')
         ef, ew = 100 * (f / fref - 1), 100 * (wm / wref - 1)
