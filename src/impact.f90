@@ -11,6 +11,15 @@
 !> the assumed and computed forces agree (eq. 17). Each box is one call;
 !> the file of each is named after it (README, "From the paper to the code").
 !>
+!> The deck is Fortran namelist text, read by the project's own reader
+!> (src/deck/deck_text.f90) and not by `read (unit, nml=...)`: gfortran's
+!> namelist read names neither the group, the variable nor the line of a
+!> bad value, passes over a misspelt group or a repeated one without a
+!> word, merges array elements into the defaults, and cannot tell a value
+!> given from its default; a deck's every mistake must come back as one
+!> line naming the deck, the group and the variable (the measured details
+!> are in that file's header).
+!>
 !> Usage: impact [options] [deck.nml]     (no deck: standard input; --help)
 program impact
    use, intrinsic :: iso_fortran_env, only: input_unit, output_unit, error_unit
