@@ -142,8 +142,8 @@ include tests/tests.mk
 # Further targets (figures, validation, benchmarks, ...) live in mk/*.mk.
 -include $(sort $(wildcard mk/*.mk))
 
-# The README's deck table, from the schema of src/deck/deck_schema.f90 (between
+# The deck table of docs/DECK.md, from the schema of src/deck/deck_schema.f90 (between
 # the markers <!-- deck:begin --> and <!-- deck:end -->).
 .PHONY: deck-table
 deck-table: impact
-	@python3 tools/readme-deck-table README.md ./impact
+	@python3 tools/readme-deck-table docs/DECK.md ./impact

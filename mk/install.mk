@@ -74,6 +74,8 @@ install: impact $(H5EXPORT) $(MAN_PAGE)
 	    > '$(install_modulefile).tmp' && mv '$(install_modulefile).tmp' '$(install_modulefile)'
 	chmod 644 '$(install_modulefile)'
 	$(INSTALL) -m 644 README.md LICENSE CITATION.cff CHANGELOG.md '$(install_doc)/'
+	$(INSTALL) -d '$(install_doc)/docs'
+	$(INSTALL) -m 644 $(wildcard docs/*.md) '$(install_doc)/docs/'
 	@echo 'make install: impact $(IMPACT_VERSION) in $(PREFIX): bin/impact, bin/impact-sweep, bin/h5export,' \
 	    'bin/impact-damage-map, share/impact, share/man/man1/impact.1,' \
 	    'share/modulefiles/impact/$(IMPACT_VERSION)$(if $(DESTDIR), (staged under $(DESTDIR)))'

@@ -1,4 +1,4 @@
-# The example sweep of the README ("HDF5 results and sweeps"): 48 scenes of
+# The example sweep of the docs/SWEEPS.md: 48 scenes of
 # the paper's plate (tools/sweep), run on all the CPUs this process may use
 # (SWEEP_JOBS=N: N at a time), then the table and the plot of peak force
 # against impact energy.

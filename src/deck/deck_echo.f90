@@ -1,6 +1,6 @@
 !> The deck as people read it, from the one schema (src/deck/deck_schema.f90):
 !> the echo of a run's effective values (terminal, the head of every result
-!> file, /deck of <prefix>.h5), the README's deck table (make deck-table,
+!> file, /deck of <prefix>.h5), the deck table of docs/DECK.md (make deck-table,
 !> impact --deck-table) and the tab-separated schema (impact --schema, read
 !> by tools/impact_files.py).
 module deck_echo
@@ -120,7 +120,7 @@ contains
       write (unit, '(a)') lead // column // line
    end subroutine echo_group
 
-   !> The README's deck table (Markdown): group, variable, unit, default,
+   !> The deck table of docs/DECK.md (Markdown): group, variable, unit, default,
    !> meaning, from the schema (make deck-table).
    subroutine write_deck_table(unit)
       integer, intent(in) :: unit                   !< open formatted unit

@@ -5,7 +5,7 @@
 !> meaning. Everything else is derived from that table: the reader (names,
 !> kinds, defaults), the range checks and their messages, the echo, the
 !> `/deck` attributes of `<prefix>.h5`, `impact --schema` (what tools/sweep
-!> reads) and the deck table of the README (`make deck-table`; a test keeps
+!> reads) and the deck table of the docs/DECK.md (`make deck-table`; a test keeps
 !> the two in step). The values themselves live in `deck_t`, one component
 !> per variable, where the program reads them; `deck_bind` connects each
 !> entry to its component.
@@ -52,7 +52,7 @@ module deck_schema
       character(len=240) :: meaning    !< what it is, one sentence
    end type deck_var_t
 
-   !> The namelist groups, in the order of the echo and the README table.
+   !> The namelist groups, in the order of the echo and the table of docs/DECK.md.
    character(len=8), parameter :: deck_groups(12) = [character(len=8) :: 'plate', 'lamina', 'laminate', &
       'strength', 'impactor', 'contact', 'mesh', 'boundary', 'analysis', 'load', 'modes', 'output']
 

@@ -465,7 +465,7 @@ contains
    end subroutine check_analysis
 
    !> What the run would need, before any of it is allocated or written
-   !> (README, "Stability, bad input, nothing lost"): at most max_steps
+   !> (docs/ROBUSTNESS.md): at most max_steps
    !> time steps; the matrices' memory, estimated from the mesh, within
    !> the machine's; the results' size within the free space where they
    !> go. The estimates: nodes (2 ex + 1)(2 ey + 1) for ex x ey 9-node

@@ -45,7 +45,7 @@
 !> 0 where the freedom is held; equations follow the node numbering.
 !>
 !> Boundary conditions (section 2.4; the in-plane condition of "simply
-!> supported" and the tangential rotation the paper leaves open, README
+!> supported" and the tangential rotation the paper leaves open, docs/MODEL.md,
 !> "Choices the paper leaves open"):
 !>  - 'clamped':          u = v = w = psi_x = psi_y = 0;
 !>  - 'simply_supported': w = 0 and the rotation along the edge psi_s = 0

@@ -1,7 +1,7 @@
 !> Model only what the scene requires: the choices the code makes before a
 !> run (the modelled domain, the theory, the shear correction factors) and
 !> the scene report that shows how far the scene is from each
-!> simplification. The README's "How the code decides" is the user's view.
+!> simplification. The docs/MODEL.md, "How the code decides", is the user's view.
 !>
 !> Domain. A mirror image about the centre line x = 0 maps the plate onto
 !> itself (the plate is centred, all its edges are alike) and maps the

@@ -22,7 +22,7 @@
 !>
 !> The cost: about 10^3 floating-point operations per Gauss point and
 !> evaluation for a 20-ply laminate of three ply angles; evaluated at the
-!> history's steps only, so &output every bounds it (README, "Ply stresses
+!> history's steps only, so &output every bounds it (docs/STRENGTH.md, "Ply stresses
 !> and failure", gives the measured share of a run).
 !>
 !> At the end (damage_close): the summary's items (max_failure_index, the

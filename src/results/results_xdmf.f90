@@ -1,6 +1,6 @@
 !> <prefix>.xdmf beside <prefix>.h5: an XDMF 3 description of the results
 !> file's mesh and nodal fields, so that ParaView, VisIt and meshio open a
-!> run (README, "Looking at the fields"). The XML holds no numbers of its
+!> run (docs/OUTPUT.md, "Looking at the fields"). The XML holds no numbers of its
 !> own: every array is a dataset of <prefix>.h5, named by its path.
 !>
 !>   mesh        9-node quadrilaterals (XDMF Quadrilateral_9, VTK's
@@ -40,7 +40,7 @@
 !> Cost: a view is an HDF5 object, made when its batch is flushed (once a
 !> second, src/results/results_hdf5.f90); the views are nothing at the default
 !> fields_every and the largest part of the output of a small run with a
-!> snapshot every step (README, "Looking at the fields").
+!> snapshot every step (docs/OUTPUT.md, "Looking at the fields").
 !>
 !> As the run goes: after a batch of snapshots the HDF5 file is flushed and
 !> the XML is written to <prefix>.xdmf.tmp and renamed over <prefix>.xdmf

@@ -57,13 +57,13 @@ contains
       write (u, '(a)') '                       checked like the deck: --set analysis.dt=1e-6 --set mesh.nx=18'
       write (u, '(a)') '  --trace STEP[,STEP]  print every box of the flowchart (Fig. 3) for those time steps'
       write (u, '(a)') '  --schema             the deck''s variables as tab-separated lines (for tools)'
-      write (u, '(a)') '  --deck-table         the deck''s variables as the README''s Markdown table'
+      write (u, '(a)') '  --deck-table         the deck''s variables as the Markdown table of docs/DECK.md'
       write (u, '(a)') '  --version            the version this program was built from'
       write (u, '(a)') '  --help               this text'
       write (u, '(a)') 'options may stand before or after the deck; one deck only'
       write (u, '(a)') ''
       write (u, '(a)') 'deck groups:' // groups
-      write (u, '(a)') 'every variable, its unit, default and meaning: README.md, "The deck" (or impact --deck-table)'
+      write (u, '(a)') 'every variable, its unit, default and meaning: docs/DECK.md, "The deck" (or impact --deck-table)'
    end subroutine usage
 
 end module run_report

@@ -28,7 +28,7 @@
 !>
 !> The exit status. Fortran 2008's `error stop 1` prints "ERROR STOP 1" after the program's
 !> own message, and gfortran adds a note on the floating-point flags; a
-!> failed run must say one line (README, "Stability, bad input, nothing
+!> failed run must say one line (docs/ROBUSTNESS.md, "Stability, bad input, nothing
 !> lost"). exit_program flushes standard output and error and ends the
 !> process at once, through the C library's _exit(2): no exit handler runs,
 !> in particular not HDF5's, which would try to close a results file a

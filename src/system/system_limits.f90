@@ -3,7 +3,7 @@
 !> the physical memory (sysconf(3)), the free space of the file system a
 !> path is on (statvfs(3)) and the largest file the process may write
 !> (getrlimit(2), RLIMIT_FSIZE). The deck's checks compare what a scene would
-!> need against them before any work (src/deck/input_deck.f90, README
+!> need against them before any work (src/deck/input_deck.f90, docs/ROBUSTNESS.md,
 !> "Stability, bad input, nothing lost"). Either answer is -1 when the
 !> system does not tell, or sets no limit; the check is then skipped.
 module system_limits

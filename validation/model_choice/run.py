@@ -184,7 +184,7 @@ def main():
     w('')
     w('Written by `make validate-model` (validation/model_choice/run.py); the decks and')
     w('outputs are in build/validation/model_choice/. Issue 8: model only what a scene')
-    w('requires. The README section "How the code decides" explains the rules.')
+    w('requires. The section "How the code decides" of docs/MODEL.md explains the rules.')
     w('')
 
     # ------------------------------------------------------------ 1 Whitney
