@@ -46,7 +46,7 @@ plots:
 render:
 	$(call render_need,$(PREFIX_RUN).xdmf)
 	@command -v xvfb-run > /dev/null || { echo 'make render: xvfb-run not found (Debian: apt-get install xvfb xauth; make setup)' >&2; exit 1; }
-	xvfb-run -a $(PVPYTHON) postproc/render.py '$(PREFIX_RUN)' --size $(RENDER_SIZE)
+	sh postproc/xvfb-render $(PVPYTHON) postproc/render.py '$(PREFIX_RUN)' --size $(RENDER_SIZE)
 
 pictures: plots render
 
