@@ -20,6 +20,11 @@
 !> line naming the deck, the group and the variable (the measured details
 !> are in that file's header).
 !>
+!> A stop signal ends the set-up at once, leaving no result, and the run
+!> after its step, every result written (src/system/process_stop.f90);
+!> restart points let impact --restart continue a stopped or killed run
+!> where it stopped (src/results/restart_point.f90).
+!>
 !> Usage: impact [options] [deck.nml]     (no deck: standard input; --help)
 program impact
    use, intrinsic :: iso_fortran_env, only: input_unit, output_unit, error_unit
@@ -43,7 +48,9 @@ program impact
    use result_files, only: results_claim_t, result_suffixes, claim_results, release_results
    use fixed_point, only: fp_report
    use other_analyses, only: run_other_analysis
-   use process_stop, only: catch_stop_signals, stop_signal_caught, keep_file_size_errors, exit_program
+   use process_stop, only: catch_stop_signals, remove_on_stop, stop_after_step, stop_signal_caught, &
+      keep_file_size_errors, exit_program
+   use restart_point, only: restart_file, restart_save, restart_check, restart_resume, restart_discard
    use number_text, only: int_str
    implicit none
 
@@ -64,16 +71,19 @@ program impact
    real(dp) :: t                           ! the time at the end of the step (s)
    real(dp) :: cpu0, cpu1                  ! cpu time at the start and now (s)
    integer :: step, nstep                  ! the time step, and their number
+   integer :: first_step                   ! the step the time loop starts after (0, or a restart point's)
    integer :: ic                           ! the contact iteration of the step
    integer :: stat                         ! 0, or a failure of the call just made
    logical :: ok                           ! the step's iterations converged (eq. 17, 18)
    logical :: check_only                   ! --check: the data check, no time steps
+   logical :: restarting                   ! --restart with a restart point: the run continues from it
    character(len=msg_len) :: errmsg        ! the failure's message
 
    ! =====================================================================
    ! Input data: the deck (a file, or standard input), the command line's
    ! settings over it; checked against the schema and echoed
    ! =====================================================================
+   call catch_stop_signals()          ! from the first instruction: a stop signal ends the set-up at once
    call keep_file_size_errors()       ! past ulimit -f a write fails and the run says so
    call read_input()
    call cpu_time(cpu0)
@@ -110,23 +120,34 @@ program impact
 
    ! =====================================================================
    ! Initial conditions: the plate at rest, the impactor touching it at its
-   ! impact velocity
+   ! impact velocity; or, with --restart, the run where it stopped
    ! =====================================================================
-   allocate (plate%d(model%msh%neq), plate%v(model%msh%neq), plate%a(model%msh%neq), source=0.0_dp)
-   allocate (mb(model%msh%neq), d_new(model%msh%neq))
-   imp = impactor_t(mass=deck%mass, w=0.0_dp, v=deck%velocity, f=0.0_dp)
    cit = contact_iteration_t(update=deck%force_update, cr1=deck%cr1)
-   call contact_area(model, hist, imp%f, cit%pattern)
    nstep = nint(deck%t_end/nm%dt)
-   call record_open(rec, deck, model, solver, imp, stat, errmsg)
-   if (stat /= 0) call fail_in_run(errmsg, 'failed while opening the results')
+   call stop_after_step()             ! from here a stop signal ends the run after its step, results written
+   if (restarting) then
+      call restart_resume(deck, model, nstep, solver, plate, imp, hist, cit, rec, first_step, cpu1, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+      cpu0 = cpu0 - cpu1                 ! the cpu time of the run before it stopped counts
+      write (output_unit, '(a)') 'restart: the run continues after step ' // int_str(first_step) // ' (' &
+         // restart_file(deck) // ')'
+   else
+      allocate (plate%d(model%msh%neq), plate%v(model%msh%neq), plate%a(model%msh%neq), source=0.0_dp)
+      imp = impactor_t(mass=deck%mass, w=0.0_dp, v=deck%velocity, f=0.0_dp)
+      call contact_area(model, hist, imp%f, cit%pattern)
+      step = 0;  t = 0.0_dp
+      call record_open(rec, deck, model, solver, imp, stat, errmsg)
+      if (stat /= 0) call fail_in_run(errmsg, 'failed while opening the results')
+      first_step = 0
+      call save_restart_point(first_step)
+   end if
+   allocate (mb(model%msh%neq), d_new(model%msh%neq))
 
    ! =====================================================================
    ! Time integration (Fig. 3), the paper's scheme first; scheme 'fast' is
    ! its one-call alternative (src/scheme/fast_scheme.f90)
    ! =====================================================================
-   call catch_stop_signals()
-   time_steps: do step = 1, nstep
+   time_steps: do step = first_step + 1, nstep
       t = real(step, dp)*nm%dt
       call trace_step(tr, step, t, imp, .false.)
       ! -- {b} of eq. (20) and M{b}, fixed for the whole step
@@ -171,10 +192,10 @@ program impact
       if (stat /= 0) call fail_in_run(errmsg)
       call contact_commit(model%law, hist, cit%alpha)
       call trace_step(tr, step, t, imp, .true.)
-      ! -- a divergence, or a warning with stop_on_warning; a stop signal (SIGTERM, SIGINT)
+      ! -- a divergence, or a warning with stop_on_warning; a stop signal; a restart point once a second
       if (rec%stop) call finish(rec%stop_status, rec%exit_status)
-      if (stop_signal_caught() > 0) call finish('stopped by signal ' // int_str(stop_signal_caught()) &
-                                                // ' at step ' // int_str(step), 128 + stop_signal_caught())
+      if (stop_signal_caught() > 0) call stop_on_signal()
+      if (rec%restart_due) call save_restart_point(step)
    end do time_steps
 
    ! =====================================================================
@@ -188,6 +209,7 @@ contains
    !> an impact run claims its result files before any work.
    subroutine read_input()
       type(options_t) :: opts
+      type(deck_t) :: claimed
       call parse_command_line(opts, stat, errmsg)
       if (stat /= 0) call bad_usage(errmsg)
       select case (opts%action)
@@ -198,15 +220,23 @@ contains
       end select
       if (opts%action /= 'run') stop
       check_only = opts%check
+      restarting = opts%restart .and. .not. check_only
       call trace_parse(opts%trace, tr, stat)
       if (stat /= 0) call bad_usage('--trace ' // opts%trace // ': give time steps, e.g. --trace 120,121')
       call read_input_deck(opts, input_unit, deck, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
       tr%unit = output_unit;  tr%cr1 = deck%cr1;  tr%cr2 = deck%cr2
-      if (.not. check_only) then
-         call claim_results(deck, result_suffixes(deck%analysis_kind), claim, stat, errmsg)
-         if (stat /= 0) call fail(errmsg)
-      end if
+      if (restarting) call restart_check(deck, restarting, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+      if (opts%restart .and. .not. (restarting .or. check_only)) write (output_unit, '(a)') &
+         'restart: no restart point ' // restart_file(deck) // ': the run starts at step 0'
+      if (check_only) return
+      claimed = deck
+      claimed%overwrite = deck%overwrite .or. restarting     ! a restart continues the run's own files
+      call claim_results(claimed, result_suffixes(deck%analysis_kind), claim, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+      call remove_on_stop(claim%first)                      ! a stop in the set-up leaves it only if written
+      if (.not. restarting) call restart_discard(deck)      ! an earlier run's restart point
    end subroutine read_input
 
    !> A solver failure or an unconverged step of scheme 'fast' stops the run.
@@ -216,17 +246,36 @@ contains
       if (.not. ok) call fail_in_run('time step did not converge: ' // what // ': ' // fp_report(solver%guard))
    end subroutine check_solver
 
-   !> The end of a run: the summary with its status, the last words.
+   !> The end of a run: the summary with its status, the last words; a run
+   !> that completed or was stopped by a signal leaves its restart point.
    subroutine finish(status, exit_code)
       character(len=*), intent(in) :: status
       integer, intent(in) :: exit_code
       call cpu_time(cpu1)
       call record_close(rec, deck, model, solver, status, hist, imp, cpu1 - cpu0, output_unit, stat, errmsg)
+      if (stat == 0 .and. (exit_code == 0 .or. exit_code > 128)) &
+         call restart_save(deck, rec%steps, cpu1 - cpu0, plate, imp, hist, cit, solver, rec, stat, errmsg)
       if (stat /= 0) write (error_unit, '(a)') 'impact: error: ' // trim(errmsg)
       call release_results(claim, discard=.false.)
       if (exit_code /= 0 .or. stat /= 0) call exit_program(merge(exit_code, 1, exit_code > 128))  ! a signal: 128 + N
       stop
    end subroutine finish
+
+   !> A stop signal caught during the step: the run ends here, its results
+   !> written (exit status 128 + the signal's number).
+   subroutine stop_on_signal()
+      call finish('stopped by signal ' // int_str(stop_signal_caught()) // ' at step ' // int_str(step), &
+                  128 + stop_signal_caught())
+   end subroutine stop_on_signal
+
+   !> A restart point after step `at` (src/results/restart_point.f90): the
+   !> files were just flushed.
+   subroutine save_restart_point(at)
+      integer, intent(in) :: at
+      call cpu_time(cpu1)
+      call restart_save(deck, at, cpu1 - cpu0, plate, imp, hist, cit, solver, rec, stat, errmsg)
+      if (stat /= 0) call fail_in_run(errmsg)
+   end subroutine save_restart_point
 
    !> Stops during the run, keeping what was computed: the history is on
    !> disk, the summary says how far the run got.

@@ -28,7 +28,10 @@ module hdf5_read
 
 contains
 
-   !> Opens the existing file `path` read-only.
+   !> Opens the existing file `path` read-only; a file its writer left
+   !> marked as open for writing (a run killed while it wrote, in SWMR mode:
+   !> src/results/results_hdf5.f90) is opened as a SWMR reader, which such a file
+   !> admits.
    subroutine h5io_open_read(path, fid, stat, errmsg)
       !> File path.
       character(len=*), intent(in) :: path
@@ -39,7 +42,10 @@ contains
       !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       integer :: err
+      !> H5F_ACC_SWMR_READ (<H5Fpublic.h>, 0x0040), not in the HDF5 1.10 Fortran module
+      integer, parameter :: acc_swmr_read = 64
       call h5fopen_f(path, H5F_ACC_RDONLY_F, fid, err)
+      if (err /= 0) call h5fopen_f(path, ior(H5F_ACC_RDONLY_F, acc_swmr_read), fid, err)
       call h5io_check(err, 'cannot open the HDF5 file', path, stat, errmsg)
    end subroutine h5io_open_read
 

@@ -3,6 +3,8 @@
 !>   impact [options] [deck.nml]       no deck: the deck is read from standard input
 !>     --check               read, echo, build and factor; no time steps (a data check)
 !>     --overwrite           replace an earlier run's results (as &output overwrite = .true.)
+!>     --restart             continue the run at the deck's prefix from its restart point
+!>                           (src/results/restart_point.f90)
 !>     --set group.var=value a deck variable, set after the deck is read and checked
 !>                           like it (repeatable)
 !>     --trace STEP[,STEP]   the teaching trace of those steps (src/results/step_trace.f90)
@@ -25,6 +27,7 @@ module command_line
       character(len=:), allocatable :: trace       !< the --trace steps, '' for none
       logical :: check = .false.                   !< --check
       logical :: overwrite = .false.               !< --overwrite
+      logical :: restart = .false.                 !< --restart
    end type options_t
 
 contains
@@ -53,6 +56,8 @@ contains
             opts%check = .true.
          case ('--overwrite')
             opts%overwrite = .true.
+         case ('--restart')
+            opts%restart = .true.
          case ('--set', '--trace')
             if (i == n) then
                errmsg = arg // ' needs a value'

@@ -1,5 +1,6 @@
-!> Thin checked wrappers over HDF5-Fortran for the results file
-!> (src/results/results_hdf5.f90) and the tools that read it (tools/h5export.f90).
+!> Thin checked wrappers over HDF5-Fortran for the results files
+!> (src/results/results_hdf5.f90, src/results/results_xdmf.f90) and the tools that
+!> read them (tools/h5export.f90).
 !>
 !> Every routine returns `stat` (0 on success) and, on failure, `errmsg`, a
 !> message naming the operation and the object; the library's own error
@@ -12,7 +13,11 @@
 !>  - attributes are scalars (dataspace SCALAR: h5py gives a number or a
 !>    str, not a one-element array), or 1-D arrays (h5io_set_attr with an
 !>    array); strings are variable-length UTF-8 (h5py gives str);
-!>  - fixed datasets are written whole with the high-level H5LT calls;
+!>  - every dataset is chunked and checksummed (HDF5's Fletcher32 filter):
+!>    raw data damaged on disk is reported when it is read ("checksum
+!>    failure"), not handed out; the metadata of the latest file format
+!>    (h5io_create with latest) carries its own checksums;
+!>  - fixed datasets are written whole, one chunk each;
 !>  - series are extendible chunked datasets that grow by a block of
 !>    entries per h5io_append_block: rank 1
 !>    (n) for a history column, rank 2 (nrow, n) in
@@ -21,31 +26,46 @@
 !> Arrays keep Fortran order on disk: a Fortran x(m, n) reads as x[n, m] in
 !> h5py and h5dump (C order).
 !>
+!> Files. h5io_create makes a file (the latest file format when asked: what
+!> HDF5's single-writer/multiple-reader mode, SWMR, needs); h5io_open opens
+!> it again for writing, with `swmr` in SWMR mode: then only existing
+!> datasets and attributes may change (datasets grow, values are
+!> rewritten; no object or attribute is created), and HDF5 writes its
+!> metadata in an order that keeps the file consistent on disk at every
+!> instant, whatever kills the process (src/results/results_hdf5.f90).
+!> Neither takes HDF5's own file lock (a reader holding the file must not
+!> make the run fail; runs are kept apart by their claim,
+!> src/results/result_files.f90), and h5io_open clears the marks a killed
+!> writer leaves in the superblock (what `h5clear -s` does).
+!>
 !> Nothing is cached here: the caller holds the file and dataset ids. This
-!> is the write half, what the program needs; the tools that read a results
+!> is the write half, what the program needs, with the reads the program
+!> itself makes (h5io_read_series: a restart); the tools that read a results
 !> file (tools/h5export.f90, the tests) have the read half,
 !> tools/hdf5_read.f90, over the same messages (h5io_check, h5io_fail).
 module hdf5_io
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char, c_bool, c_int, c_int64_t
-   use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fclose_f, &
-      h5fflush_f, H5F_ACC_TRUNC_F, H5F_SCOPE_GLOBAL_F, h5gcreate_f, h5gclose_f, &
+   use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, h5fclose_f, &
+      h5fflush_f, H5F_ACC_TRUNC_F, H5F_ACC_RDWR_F, H5F_SCOPE_GLOBAL_F, H5F_LIBVER_LATEST_F, h5gcreate_f, &
+      h5gclose_f, h5ldelete_f, h5lexists_f, h5oopen_f, h5oclose_f, &
       h5screate_f, h5screate_simple_f, h5sclose_f, h5sselect_hyperslab_f, h5sget_simple_extent_dims_f, &
       H5S_SCALAR_F, H5S_UNLIMITED_F, H5S_SELECT_SET_F, &
-      h5acreate_by_name_f, h5awrite_f, h5aclose_f, h5aexists_by_name_f, h5adelete_by_name_f, &
+      h5acreate_by_name_f, h5aopen_f, h5awrite_f, h5aclose_f, h5aexists_by_name_f, &
+      h5adelete_by_name_f, &
       h5tcopy_f, h5tset_size_f, h5tset_cset_f, h5tclose_f, &
       H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5T_FORTRAN_S1, H5T_CSET_UTF8_F, h5tset_strpad_f, &
       H5T_STR_NULLTERM_F, &
-      h5pcreate_f, h5pset_chunk_f, h5pset_virtual_f, h5pclose_f, H5P_DATASET_CREATE_F, &
-      H5P_FILE_ACCESS_F, &
-      h5dcreate_f, h5dopen_f, h5dclose_f, h5dwrite_f, h5dset_extent_f, h5dget_space_f
-   use h5lt, only: h5ltmake_dataset_double_f, h5ltmake_dataset_int_f
+      h5pcreate_f, h5pset_chunk_f, h5pset_fletcher32_f, h5pset_virtual_f, h5pset_libver_bounds_f, &
+      h5pset_file_locking_f, h5pclose_f, H5P_DATASET_CREATE_F, H5P_FILE_ACCESS_F, &
+      h5dcreate_f, h5dopen_f, h5dclose_f, h5dwrite_f, h5dread_f, h5dset_extent_f, h5dget_space_f
    use kinds, only: dp
    implicit none
    private
-   public :: h5io_start, h5io_create, h5io_close, h5io_flush, h5io_group
-   public :: h5io_set_attr, h5io_write, h5io_rewrite
+   public :: h5io_start, h5io_create, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_exists, h5io_delete
+   public :: h5io_set_attr, h5io_update_attr, h5io_write, h5io_rewrite
    public :: h5io_check, h5io_fail, h5io_attr_path, h5io_vlen_string_type
-   public :: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_close_dataset
+   public :: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_open_dataset, h5io_series_length, &
+             h5io_cut_series, h5io_read_series, h5io_close_dataset
    public :: h5io_view_column
    public :: h5io_real, h5io_integer
 
@@ -56,6 +76,9 @@ module hdf5_io
    !> The size of a variable-length string type: HDF5's H5T_VARIABLE,
    !> (size_t)(-1) in C, which the HDF5 1.10 Fortran module does not define.
    integer(size_t), parameter :: variable_length = -1_size_t
+   !> H5F_ACC_SWMR_WRITE (<H5Fpublic.h>, 0x0020), which the HDF5 1.10 Fortran
+   !> module does not define; h5fopen_f hands its flags to H5Fopen as they are.
+   integer, parameter :: acc_swmr_write = 32
 
    !> Writes an attribute: a real(dp), integer or string scalar, or a real(dp)
    !> or integer 1-D array.
@@ -63,7 +86,8 @@ module hdf5_io
       module procedure set_attr_scalar, set_attr_array
    end interface h5io_set_attr
 
-   !> Writes a whole dataset (H5LT): real(dp) or integer, rank 1 or 2.
+   !> Writes a whole dataset, one checksummed chunk: real(dp) or integer,
+   !> rank 1 or 2.
    interface h5io_write
       module procedure write_1d, write_2d
    end interface h5io_write
@@ -74,6 +98,11 @@ module hdf5_io
    interface h5io_append_block
       module procedure append_reals, append_integers, append_columns
    end interface h5io_append_block
+
+   !> Reads a whole rank-1 series (a restart): reals or integers.
+   interface h5io_read_series
+      module procedure read_reals, read_integers
+   end interface h5io_read_series
 
 contains
 
@@ -91,18 +120,59 @@ contains
    end subroutine h5io_start
 
    !> Creates (or truncates) the file `path` for writing; fid is its id.
-   !> The file evicts an object's metadata from HDF5's cache when the object
-   !> is closed (H5Pset_evict_on_close, HDF5 >= 1.10.1; no Fortran wrapper
-   !> in 1.10, so through its C interface): the views of src/results/results_xdmf.f90,
-   !> made and closed by the thousand, would otherwise fill the cache, which
-   !> every flush walks.
-   subroutine h5io_create(path, fid, stat, errmsg)
+   !> With `latest`, in the latest file format (HDF5 1.10's: what SWMR needs,
+   !> with checksummed metadata; older HDF5 libraries do not read it).
+   subroutine h5io_create(path, latest, fid, stat, errmsg)
       character(len=*), intent(in) :: path
+      logical, intent(in) :: latest
       integer(hid_t), intent(out) :: fid
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer :: err
       integer(hid_t) :: fapl
+      fid = -1
+      call file_access(latest, .false., fapl, err)
+      call h5io_check(err, 'cannot set up the access to the HDF5 file', path, stat, errmsg)
+      if (stat /= 0) return
+      call h5fcreate_f(path, H5F_ACC_TRUNC_F, fid, err, access_prp=fapl)
+      call h5io_check(err, 'cannot create the HDF5 file', path, stat, errmsg)
+      call h5pclose_f(fapl, err)
+   end subroutine h5io_create
+
+   !> Opens the existing file `path` (made by h5io_create with latest) for
+   !> writing; with `swmr` in SWMR mode (module header). The marks a killed
+   !> writer left in its superblock are cleared.
+   subroutine h5io_open(path, swmr, fid, stat, errmsg)
+      character(len=*), intent(in) :: path
+      logical, intent(in) :: swmr
+      integer(hid_t), intent(out) :: fid
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer :: err
+      integer(hid_t) :: fapl
+      fid = -1
+      call file_access(.true., .true., fapl, err)
+      call h5io_check(err, 'cannot set up the access to the HDF5 file', path, stat, errmsg)
+      if (stat /= 0) return
+      call h5fopen_f(path, merge(ior(H5F_ACC_RDWR_F, acc_swmr_write), H5F_ACC_RDWR_F, swmr), fid, err, &
+         access_prp=fapl)
+      call h5io_check(err, 'cannot open the HDF5 file for writing', path, stat, errmsg)
+      call h5pclose_f(fapl, err)
+   end subroutine h5io_open
+
+   !> The file access of the results files: no HDF5 file lock (module
+   !> header); objects' metadata evicted from HDF5's cache when they are
+   !> closed (H5Pset_evict_on_close, HDF5 >= 1.10.1, no Fortran wrapper in
+   !> 1.10: the views of src/results/results_xdmf.f90, made and closed by the thousand,
+   !> would otherwise fill the cache, which every flush walks); with
+   !> `latest` the latest file format, with `clear` the superblock's marks
+   !> of a killed writer cleared on opening (the library's private property
+   !> "clear_status_flags", h5clear's way, set through H5Pset).
+   subroutine file_access(latest, clear, fapl, err)
+      logical, intent(in) :: latest, clear
+      integer(hid_t), intent(out) :: fapl
+      integer, intent(out) :: err
+      logical(c_bool), target :: yes
       interface
          !> herr_t H5Pset_evict_on_close(hid_t fapl_id, hbool_t evict_on_close); hbool_t is C's bool
          function c_h5pset_evict_on_close(fapl_id, evict) bind(c, name='H5Pset_evict_on_close') result(r)
@@ -111,15 +181,23 @@ contains
             logical(c_bool), value :: evict
             integer(c_int) :: r
          end function c_h5pset_evict_on_close
+         !> herr_t H5Pset(hid_t plist_id, const char *name, const void *value)
+         function c_h5pset(plist_id, name, value) bind(c, name='H5Pset') result(r)
+            import :: c_int64_t, c_char, c_ptr, c_int
+            integer(c_int64_t), value :: plist_id
+            character(kind=c_char), intent(in) :: name(*)
+            type(c_ptr), value :: value
+            integer(c_int) :: r
+         end function c_h5pset
       end interface
+      yes = .true.
       call h5pcreate_f(H5P_FILE_ACCESS_F, fapl, err)
-      if (err == 0) err = int(c_h5pset_evict_on_close(int(fapl, c_int64_t), .true._c_bool))
-      call h5io_check(err, 'cannot set evict-on-close for the HDF5 file', path, stat, errmsg)
-      if (stat /= 0) return
-      call h5fcreate_f(path, H5F_ACC_TRUNC_F, fid, err, access_prp=fapl)
-      call h5io_check(err, 'cannot create the HDF5 file', path, stat, errmsg)
-      call h5pclose_f(fapl, err)
-   end subroutine h5io_create
+      if (err == 0) err = int(c_h5pset_evict_on_close(int(fapl, c_int64_t), yes))
+      if (err == 0) call h5pset_file_locking_f(fapl, .false., .true., err)
+      if (err == 0 .and. latest) call h5pset_libver_bounds_f(fapl, H5F_LIBVER_LATEST_F, H5F_LIBVER_LATEST_F, err)
+      if (err == 0 .and. clear) err = int(c_h5pset(int(fapl, c_int64_t), 'clear_status_flags' // c_null_char, &
+         c_loc(yes)))
+   end subroutine file_access
 
    !> Closes the file fid.
    subroutine h5io_close(fid, stat, errmsg)
@@ -156,6 +234,26 @@ contains
       call h5gclose_f(gid, err)
       call h5io_check(err, 'cannot close the group', name, stat, errmsg)
    end subroutine h5io_group
+
+   !> True when the link `name` exists (its parent must).
+   logical function h5io_exists(loc, name) result(there)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name
+      integer :: err
+      call h5lexists_f(loc, name, there, err)
+      there = there .and. err == 0
+   end function h5io_exists
+
+   !> Removes the link `name` (the object goes with its last link).
+   subroutine h5io_delete(loc, name, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer :: err
+      call h5ldelete_f(loc, name, err)
+      call h5io_check(err, 'cannot remove', name, stat, errmsg)
+   end subroutine h5io_delete
 
    ! ------------------------------------------------------------ attributes
 
@@ -211,6 +309,38 @@ contains
          call h5io_fail('an array attribute is real(dp) or integer', h5io_attr_path(obj, name), stat, errmsg)
       end select
    end subroutine set_attr_array
+
+   !> Rewrites the existing scalar attribute `name` of object `obj` in place,
+   !> a real(dp) or an integer of the type it was made with: what SWMR mode
+   !> allows (no attribute is created or removed).
+   subroutine h5io_update_attr(loc, obj, name, x, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: obj, name
+      class(*), intent(in), target :: x
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer(hid_t) :: oid, aid
+      integer :: err
+      ! the object held open while its attribute is written (with evict-on-close
+      ! HDF5 drops the header of an object that H5Aopen_by_name opened and closed)
+      call h5oopen_f(loc, obj, oid, err)
+      if (err == 0) call h5aopen_f(oid, name, aid, err)
+      call h5io_check(err, 'cannot open the attribute', h5io_attr_path(obj, name), stat, errmsg)
+      if (stat /= 0) then
+         call h5oclose_f(oid, err)
+         return
+      end if
+      err = -1
+      select type (x)
+      type is (real(dp))
+         call h5awrite_f(aid, H5T_NATIVE_DOUBLE, c_loc(x), err)
+      type is (integer)
+         call h5awrite_f(aid, H5T_NATIVE_INTEGER, c_loc(x), err)
+      end select
+      call h5io_check(err, 'cannot rewrite the attribute', h5io_attr_path(obj, name), stat, errmsg)
+      call h5aclose_f(aid, err)
+      call h5oclose_f(oid, err)
+   end subroutine h5io_update_attr
 
    !> Creates (replacing one of the same name) and writes an attribute of
    !> type tid from the address buf: a scalar when n = 0, else n values.
@@ -292,7 +422,8 @@ contains
    end subroutine write_2d
 
    !> Writes the dataset `name` of shape dims (Fortran order) from the
-   !> values x, in array element order: real(dp) or integer.
+   !> values x, in array element order: real(dp) or integer, one checksummed
+   !> chunk (an empty dataset: none).
    subroutine make_dataset(loc, name, dims, x, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
@@ -300,15 +431,24 @@ contains
       class(*), intent(in) :: x(:)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
+      real(dp), allocatable, target :: r(:)
+      integer, allocatable, target :: i(:)
+      integer(hid_t) :: did
       integer :: err
-      err = -1
+      stat = failed
       select type (x)
       type is (real(dp))
-         call h5ltmake_dataset_double_f(loc, name, size(dims), dims, x, err)
+         call create_dataset(loc, name, H5T_NATIVE_DOUBLE, dims, dims, max(dims, 1_hsize_t), did, stat, errmsg)
+         r = x
+         if (stat == 0) call h5dwrite_f(did, H5T_NATIVE_DOUBLE, c_loc(r), err)
       type is (integer)
-         call h5ltmake_dataset_int_f(loc, name, size(dims), dims, x, err)
+         call create_dataset(loc, name, H5T_NATIVE_INTEGER, dims, dims, max(dims, 1_hsize_t), did, stat, errmsg)
+         i = x
+         if (stat == 0) call h5dwrite_f(did, H5T_NATIVE_INTEGER, c_loc(i), err)
       end select
+      if (stat /= 0) return
       call h5io_check(err, 'cannot write the dataset', name, stat, errmsg)
+      call h5dclose_f(did, err)
    end subroutine make_dataset
 
    !> Overwrites the whole existing real dataset `name` with x(:), which must
@@ -347,17 +487,18 @@ contains
    end subroutine h5io_create_series
 
    !> Creates the empty extendible real dataset `name` of shape (nrow, 0),
-   !> growing by whole columns of nrow values (one chunk each), and returns
-   !> it open as did.
-   subroutine h5io_create_columns(loc, name, nrow, did, stat, errmsg)
+   !> growing by whole columns of nrow values, stored in chunks of as many
+   !> columns as hold `chunk_values` values (one at least), and returns it
+   !> open as did.
+   subroutine h5io_create_columns(loc, name, nrow, chunk_values, did, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
-      integer, intent(in) :: nrow
+      integer, intent(in) :: nrow, chunk_values
       integer(hid_t), intent(out) :: did
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       call create_extendible(loc, name, H5T_NATIVE_DOUBLE, [int(nrow, hsize_t), 0_hsize_t], &
-         [int(nrow, hsize_t), 1_hsize_t], did, stat, errmsg)
+         [int(nrow, hsize_t), int(max(1, chunk_values/max(nrow, 1)), hsize_t)], did, stat, errmsg)
    end subroutine h5io_create_columns
 
    !> Creates a chunked dataset of element type tid, initial shape dims and
@@ -370,26 +511,132 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer(hsize_t) :: maxdims(size(dims))
-      integer(hid_t) :: sid, plist
-      integer :: err, rank
-
-      rank = size(dims)
       maxdims = dims
-      maxdims(rank) = H5S_UNLIMITED_F
+      maxdims(size(dims)) = H5S_UNLIMITED_F
+      call create_dataset(loc, name, tid, dims, maxdims, chunk, did, stat, errmsg)
+   end subroutine create_extendible
+
+   !> Creates the dataset `name` of element type tid, shape dims (largest
+   !> maxdims), stored in chunks of shape chunk, each checksummed (HDF5's
+   !> Fletcher32 filter), and returns it open as did.
+   subroutine create_dataset(loc, name, tid, dims, maxdims, chunk, did, stat, errmsg)
+      integer(hid_t), intent(in) :: loc, tid
+      character(len=*), intent(in) :: name
+      integer(hsize_t), intent(in) :: dims(:), maxdims(:), chunk(:)
+      integer(hid_t), intent(out) :: did
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer(hid_t) :: sid, plist
+      integer :: err
+
       did = -1
-      call h5screate_simple_f(rank, dims, sid, err, maxdims)
+      call h5screate_simple_f(size(dims), dims, sid, err, maxdims)
       call h5io_check(err, 'cannot make the dataspace of the dataset', name, stat, errmsg)
       if (stat /= 0) return
       call h5pcreate_f(H5P_DATASET_CREATE_F, plist, err)
-      if (err == 0) call h5pset_chunk_f(plist, rank, chunk, err)
-      call h5io_check(err, 'cannot set the chunks of the dataset', name, stat, errmsg)
+      if (err == 0) call h5pset_chunk_f(plist, size(chunk), chunk, err)
+      if (err == 0) call h5pset_fletcher32_f(plist, err)
+      call h5io_check(err, 'cannot set the chunks and checksums of the dataset', name, stat, errmsg)
       if (stat == 0) then
          call h5dcreate_f(loc, name, tid, sid, did, err, dcpl_id=plist)
          call h5io_check(err, 'cannot create the dataset', name, stat, errmsg)
       end if
       call h5pclose_f(plist, err)
       call h5sclose_f(sid, err)
-   end subroutine create_extendible
+   end subroutine create_dataset
+
+   !> Opens the existing dataset `name` (close with h5io_close_dataset).
+   subroutine h5io_open_dataset(loc, name, did, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name
+      integer(hid_t), intent(out) :: did
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer :: err
+      call h5dopen_f(loc, name, did, err)
+      call h5io_check(err, 'cannot open the dataset', name, stat, errmsg)
+      if (stat /= 0) did = -1
+   end subroutine h5io_open_dataset
+
+   !> The entries of the series did (its last dimension), -1 on failure.
+   integer function h5io_series_length(did) result(n)
+      integer(hid_t), intent(in) :: did
+      integer(hsize_t) :: dims(2), maxdims(2)
+      integer(hid_t) :: fspace
+      integer :: err, rank
+      n = -1
+      call h5dget_space_f(did, fspace, err)
+      if (err /= 0) return
+      call h5sget_simple_extent_dims_f(fspace, dims, maxdims, rank)
+      call h5sclose_f(fspace, err)
+      if (rank >= 1 .and. rank <= 2) n = int(dims(rank))
+   end function h5io_series_length
+
+   !> Cuts the series did, which must hold at least n entries, to its first
+   !> n (a restart: what a killed run wrote after its restart point goes).
+   subroutine h5io_cut_series(did, n, stat, errmsg)
+      integer(hid_t), intent(in) :: did
+      integer, intent(in) :: n
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer(hsize_t) :: dims(2), maxdims(2)
+      integer(hid_t) :: fspace
+      integer :: err, rank
+      call h5dget_space_f(did, fspace, err)
+      if (err == 0) call h5sget_simple_extent_dims_f(fspace, dims, maxdims, rank)
+      if (err == 0) call h5sclose_f(fspace, err)
+      call h5io_check(merge(0, 1, err == 0 .and. rank >= 1 .and. rank <= 2), &
+         'cannot read the extent of a series', '', stat, errmsg)
+      if (stat /= 0) return
+      if (dims(rank) < int(n, hsize_t)) then
+         call h5io_fail('a series holds fewer entries than it must', '', stat, errmsg)
+         return
+      end if
+      if (dims(rank) == int(n, hsize_t)) return
+      dims(rank) = int(n, hsize_t)
+      call h5dset_extent_f(did, dims(:rank), err)
+      call h5io_check(err, 'cannot cut a series', '', stat, errmsg)
+   end subroutine h5io_cut_series
+
+   !> The reals of the rank-1 series `name`.
+   subroutine read_reals(loc, name, x, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name
+      real(dp), allocatable, target, intent(out) :: x(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer(hid_t) :: did
+      type(c_ptr) :: buf
+      integer :: err
+      call h5io_open_dataset(loc, name, did, stat, errmsg)
+      if (stat /= 0) return
+      allocate (x(max(0, h5io_series_length(did))))
+      err = 0
+      buf = c_loc(x)
+      if (size(x) > 0) call h5dread_f(did, H5T_NATIVE_DOUBLE, buf, err)
+      call h5io_check(err, 'cannot read the dataset', name, stat, errmsg)
+      call h5dclose_f(did, err)
+   end subroutine read_reals
+
+   !> The integers of the rank-1 series `name`.
+   subroutine read_integers(loc, name, x, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name
+      integer, allocatable, target, intent(out) :: x(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer(hid_t) :: did
+      type(c_ptr) :: buf
+      integer :: err
+      call h5io_open_dataset(loc, name, did, stat, errmsg)
+      if (stat /= 0) return
+      allocate (x(max(0, h5io_series_length(did))))
+      err = 0
+      buf = c_loc(x)
+      if (size(x) > 0) call h5dread_f(did, H5T_NATIVE_INTEGER, buf, err)
+      call h5io_check(err, 'cannot read the dataset', name, stat, errmsg)
+      call h5dclose_f(did, err)
+   end subroutine read_integers
 
    !> Appends the reals x(:) to the rank-1 series did.
    subroutine append_reals(did, x, stat, errmsg)
@@ -472,19 +719,18 @@ contains
 
    !> Creates `name`, a virtual dataset (HDF5 1.10's VDS) of nrow reals
    !> that shows column `column` (from 1) of the rank-2 series `source`
-   !> (h5io_create_columns) of the same file: a view, no copy. A reader sees
-   !> a plain 1-D dataset (h5py, h5dump, XDMF readers); `source` needs at
-   !> least `column` columns when the view is read.
-   subroutine h5io_view_column(loc, name, source, nrow, column, stat, errmsg)
+   !> (h5io_create_columns) of the file `source_file` ('.': the same file;
+   !> a name without a directory: the file beside this one): a view, no
+   !> copy. A reader sees a plain 1-D dataset (h5py, h5dump, XDMF readers);
+   !> `source` needs at least `column` columns when the view is read.
+   subroutine h5io_view_column(loc, name, source_file, source, nrow, column, stat, errmsg)
       integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name, source
+      character(len=*), intent(in) :: name, source_file, source
       integer, intent(in) :: nrow, column
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer(hid_t) :: vspace, sspace, plist, did
       integer :: err
-      !> The file a virtual dataset's source is in: '.', the same file.
-      character(len=*), parameter :: same_file = '.'
 
       call h5screate_simple_f(1, [int(nrow, hsize_t)], vspace, err)
       call h5io_check(err, 'cannot make the dataspace of the view', name, stat, errmsg)
@@ -494,7 +740,7 @@ contains
       if (err == 0) call h5sselect_hyperslab_f(sspace, H5S_SELECT_SET_F, [0_hsize_t, int(column - 1, hsize_t)], &
          [int(nrow, hsize_t), 1_hsize_t], err)
       if (err == 0) call h5pcreate_f(H5P_DATASET_CREATE_F, plist, err)
-      if (err == 0) call h5pset_virtual_f(plist, vspace, same_file, source, sspace, err)
+      if (err == 0) call h5pset_virtual_f(plist, vspace, source_file, source, sspace, err)
       call h5io_check(err, 'cannot map the view onto '//source, name, stat, errmsg)
       if (stat == 0) then
          call h5dcreate_f(loc, name, H5T_NATIVE_DOUBLE, vspace, did, err, dcpl_id=plist)

@@ -15,8 +15,11 @@
 !>   /mesh/connectivity      (nelem, 9)    nodes of each element, numbered from 1
 !>   /mesh/freedom_map       (nnode, 5)    equation of u, v, w, psi_x, psi_y; 0 = held
 !>   /mesh/grid              (2ny+1, 2nx+1) node at grid point (j, i), i along x
+!>   /history                every, rows: the rows every column holds whole (a
+!>                           killed run's columns may hold a block more)
 !>   /history/<column>       (nrow)        one extendible dataset per history column,
 !>                           appended block by block (see the flushes below)
+!>   /fields                 fields_every, snapshots: those every dataset holds whole
 !>   /fields/time, step, force  (nsnap)    snapshot times (s), steps, contact force (N)
 !>   /fields/u, v, w, psi_x, psi_y  (nsnap, nnode)  nodal values (m, m, m, rad, rad),
 !>                           every fields_every steps and at the last step
@@ -36,62 +39,96 @@
 !> The fields are those of the modelled domain (a quarter of the plate when
 !> &mesh domain = 'quarter'); held freedoms are 0.
 !>
+!> The file is in HDF5 1.10's format (older libraries do not read it) and
+!> every dataset is checksummed (Fletcher32, src/results/hdf5_io.f90): damaged
+!> data is reported when read, never handed out.
+!>
+!> A file that opens at every instant. results_open makes the file under a
+!> temporary name, <prefix>.h5.tmp, writes all but what grows (the deck,
+!> the mesh, the empty series, /peak, /summary status = 'running'), closes
+!> it and renames it into place; from then on the file is open only while
+!> it is written, once a second, and written then in HDF5's SWMR mode
+!> (single writer, multiple readers), which changes existing datasets and
+!> attributes only and orders the writes of HDF5's metadata so that the
+!> file on disk is consistent at every instant: a run killed (SIGKILL,
+!> OOM, a node lost) leaves a <prefix>.h5 that opens and reads, with every
+!> step up to its last flush (all but the last second) and /summary status
+!> = 'running'; another process reads it while the run goes (h5py with
+!> swmr=True at any time; any reader between the writes). A kill in the
+!> middle of a write (a few ms in the second) leaves the file consistent
+!> too, but marked as open for writing: SWMR readers (h5py's swmr=True,
+!> tools/hdf5_read.f90) open it, others after `h5clear -s <prefix>.h5`, and
+!> impact --restart clears the mark. The XDMF views, objects that SWMR mode
+!> cannot create, are in their own file (src/results/results_xdmf.f90). The
+!> end of a run writes /summary (results_finish), attributes SWMR mode
+!> cannot make, with the file open as usual, a few ms.
+!>
 !> Output that costs little and loses nothing: the history rows, the
-!> snapshots and the peak state wait in memory and are written in blocks,
-!> and the file is flushed (H5Fflush), by results_flush: once flush_seconds
-!> of wall time have passed since the last flush (checked at every row), when
-!> flush_rows rows or flush_snapshots snapshots are waiting, on a warning
-!> (src/results/run_recorder.f90), and at the end, whatever the end (results_finish:
-!> completed, failed, stopped by a signal). Between two flushes the library
-!> is not called, so a run that is killed (SIGKILL) leaves a file that
-!> opens, holds every step up to its last flush (all but the last second)
-!> and says /summary status = 'running'; the datasets are chunked and
-!> extendible. Writing a row costs a copy into memory; a flush of a second's
-!> rows costs one write per dataset (docs/PERFORMANCE.md, "What the output
-!> costs").
+!> snapshots and the peak state wait in memory and are written in blocks by
+!> results_flush: at the end of a step once flush_seconds of wall time have
+!> passed since the last flush (results_tick, which then says a restart
+!> point is due: src/results/restart_point.f90), when the buffers are full
+!> (flush_rows rows, or buffer_bytes of snapshots), on a warning
+!> (src/results/run_recorder.f90), and at the end, whatever the end
+!> (completed, failed, stopped by a signal). Writing a row costs a copy
+!> into memory; a flush costs an opening of the file and one write per
+!> dataset (docs/PERFORMANCE.md, "What the output costs").
 !>
 !> Usage (src/results/run_recorder.f90): results_open after the history file is
-!> open, results_append_history after every history row, results_state after
-!> every step (a snapshot every fields_every steps), results_flush when the
-!> file must be up to date now, results_finish at the end (also after a
-!> failure). With hdf5 = .false. they all do nothing.
+!> open (or results_reopen for a restart), results_append_history after
+!> every history row, results_state after every step (a snapshot every
+!> fields_every steps), results_tick at the end of every step,
+!> results_flush when the file must be up to date now, results_closing and
+!> results_finish at the end (also after a failure). With hdf5 = .false.
+!> they write nothing.
 module results_hdf5
    use, intrinsic :: iso_fortran_env, only: int64
+   use, intrinsic :: iso_c_binding, only: c_int, c_null_char
    use hdf5, only: hid_t
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t, deck_vars, deck_groups, value_t, deck_bind, strength_given, kind_real, kind_integer, &
       kind_logical, kind_word, kind_path, kind_reals
    use deck_echo, only: echo_deck
    use build_info, only: code_version
+   use c_library, only: c_unlink
+   use file_system, only: rename_file
    use mesh, only: mesh_t, ndof_node, freedom_name
    use result_files, only: column_t, history_columns, nhist_strength, history_width, summary_item_t
-   use hdf5_io, only: h5io_start, h5io_create, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
-      h5io_write, h5io_rewrite, h5io_create_series, h5io_create_columns, h5io_append_block, &
-      h5io_close_dataset, h5io_real, h5io_integer
-   use results_xdmf, only: xdmf_t, xdmf_open, xdmf_snapshots, xdmf_batch_close, xdmf_peak, xdmf_close
+   use hdf5_io, only: h5io_start, h5io_create, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
+      h5io_update_attr, h5io_write, h5io_rewrite, h5io_create_series, h5io_create_columns, h5io_append_block, &
+      h5io_open_dataset, h5io_cut_series, h5io_read_series, h5io_close_dataset, h5io_exists, h5io_delete, h5io_real, &
+      h5io_integer
+   use results_xdmf, only: xdmf_t, xdmf_open, xdmf_start, xdmf_resume, xdmf_snapshots, xdmf_batch_close, &
+      xdmf_grow, xdmf_cut, xdmf_peak, xdmf_close
    implicit none
    private
-   public :: results_file_t, results_open, results_append_history, results_state, results_flush, results_leave, &
-             results_finish, nodal_values, field_units
-
+   public :: results_file_t, results_open, results_reopen, results_append_history, results_state, results_tick, &
+             results_flush, results_leave, results_closing, results_finish, nodal_values, field_units
 
    integer, parameter :: units_len = 8
    !> Units of the nodal fields u, v, w, psi_x, psi_y.
    character(len=units_len), parameter :: field_units(ndof_node) = [character(len=units_len) :: &
       'm', 'm', 'm', 'rad', 'rad']
-   !> History entries per chunk (1 KiB per column).
-   integer, parameter :: hist_chunk = 128
+   !> Values per chunk of a series (4 KiB): the history's columns and the
+   !> snapshots' times hold this many entries a chunk, their fields as many
+   !> whole snapshots as fit (one at least). A chunk costs its checksum and
+   !> an entry of the dataset's index: a second of a fast run's rows in
+   !> chunks of 128 took twice the time to write.
+   integer, parameter :: hist_chunk = 512
    !> Wall time between two flushes (s): a killed run loses at most this.
    real(dp), parameter :: flush_seconds = 1.0_dp
-   !> Rows and snapshots that may wait in memory before a flush (bounds the
-   !> memory: 4096 rows of 16 numbers are 0.5 MB).
-   integer, parameter :: flush_rows = 4096, flush_snapshots = 16
+   !> Rows that may wait in memory before a flush (65536 rows of 18 numbers
+   !> are 9 MB), and the memory the waiting snapshots may take (at least
+   !> min_snapshots of them): a flush costs an opening of the file, so a
+   !> fast run should make one a second, not one per block.
+   integer, parameter :: flush_rows = 65536, min_snapshots = 16
+   integer(int64), parameter :: buffer_bytes = 8*1024*1024
    !> An open results file and the ids of its growing datasets.
    type :: results_file_t
-      logical :: active = .false.                       !< a file is open (&output hdf5)
+      logical :: active = .false.                       !< a file is being written (&output hdf5)
       logical :: broken = .false.                       !< a write failed: the file is left as at its last flush
       character(len=:), allocatable :: path             !< <prefix>.h5
-      integer(hid_t) :: fid = -1                        !< the file
+      integer(hid_t) :: fid = -1                        !< the file while it is open (a flush, the end)
       integer(hid_t) :: hist(nhist_strength) = -1       !< /history/<column> (result_files: history_columns)
       integer :: ncol = 0                               !< the run's columns (history_width)
       integer(hid_t) :: snap_time = -1, snap_step = -1, snap_force = -1   !< /fields/time, step, force
@@ -99,12 +136,14 @@ module results_hdf5
       integer, allocatable :: eq(:,:)                   !< (ndof_node, nnode) equation numbers, 0 held
       real(dp) :: peak_force = 0.0_dp                   !< largest contact force so far (N)
       type(xdmf_t) :: xdmf                              !< <prefix>.xdmf, for ParaView (src/results/results_xdmf.f90)
+      integer :: rows_written = 0                       !< history rows in the file
+      integer :: snaps_written = 0                      !< snapshots in the file
       !> what waits for the next flush (module header)
       integer :: nrow = 0                               !< history rows waiting
       real(dp), allocatable :: rows(:,:)                !< (ncol, flush_rows) the rows, SI
       integer :: nsnap = 0                              !< snapshots waiting
-      real(dp), allocatable :: snap(:,:)                !< (3, flush_snapshots) time, step, force
-      real(dp), allocatable :: snap_fields(:,:,:)       !< (ndof_node, nnode, flush_snapshots) their fields
+      real(dp), allocatable :: snap(:,:)                !< (3, snapshots held) time, step, force
+      real(dp), allocatable :: snap_fields(:,:,:)       !< (ndof_node, nnode, snapshots held) their fields
       logical :: peak_waiting = .false.                 !< the peak below is newer than the file's
       integer :: peak_step = 0                          !< step of the largest force
       real(dp) :: peak_time = 0.0_dp                    !< its time (s)
@@ -115,39 +154,53 @@ module results_hdf5
 
 contains
 
+   !> What results_open and results_reopen share: the path, the buffers, the
+   !> clock (results_file_t); nothing is opened.
+   subroutine prepare(deck, msh, rf)
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      type(mesh_t), intent(in) :: msh               !< the mesh with its equation numbers
+      type(results_file_t), intent(inout) :: rf     !< the results file, not yet active
+      integer :: held
+      rf%path = deck%prefix//'.h5'
+      rf%eq = msh%eq
+      rf%ncol = history_width(strength_given(deck))
+      held = int(max(int(min_snapshots, int64), buffer_bytes/(8_int64*ndof_node*msh%nnode)))
+      allocate (rf%rows(rf%ncol, flush_rows), rf%snap(3, held), rf%snap_fields(ndof_node, msh%nnode, held), &
+                rf%peak_fields(ndof_node, msh%nnode))
+      rf%peak_fields = 0.0_dp
+   end subroutine prepare
+
    !> Creates <prefix>.h5 (when deck%hdf5) and writes the deck, the mesh, the
-   !> code version and the empty growing datasets; the summary says 'running'.
+   !> code version and the empty growing datasets; the summary says
+   !> 'running'. Made under a temporary name and renamed into place once
+   !> whole (module header): a failure leaves no <prefix>.h5.
    subroutine results_open(deck, msh, rf, stat, errmsg)
       !> The effective deck.
       type(deck_t), intent(in) :: deck
       !> The mesh with its equation numbers.
       type(mesh_t), intent(in) :: msh
-      !> The results file, open on return when deck%hdf5.
+      !> The results file, active on return when deck%hdf5.
       type(results_file_t), intent(out) :: rf
       !> 0 on success.
       integer, intent(out) :: stat
       !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
       character(len=msg_len) :: why
-      integer :: ecode
+      integer(c_int) :: gone
+      integer :: ios
 
       stat = 0
+      call system_clock(rf%flushed_at, rf%clock_rate)   ! (results_tick: restart points without HDF5 too)
       if (.not. deck%hdf5) return
-      rf%path = deck%prefix//'.h5'
-      rf%eq = msh%eq
-      rf%ncol = history_width(strength_given(deck))
-      allocate (rf%rows(rf%ncol, flush_rows), rf%snap(3, flush_snapshots), &
-                rf%snap_fields(ndof_node, msh%nnode, flush_snapshots), rf%peak_fields(ndof_node, msh%nnode))
-      call system_clock(rf%flushed_at, rf%clock_rate)
+      call prepare(deck, msh, rf)
       why = ''
+      gone = c_unlink(rf%path // c_null_char)       ! an earlier run's (the claim allowed it)
       call h5io_start(stat, why)
-      if (stat == 0) call h5io_create(trim(rf%path), rf%fid, stat, why)
+      if (stat == 0) call h5io_create(rf%path // '.tmp', .true., rf%fid, stat, why)
       if (stat /= 0) then
          errmsg = '&output: prefix = "'//trim(deck%prefix)//'": '//trim(why)
          return
       end if
-      rf%active = .true.
-
       call write_root(rf%fid, stat, why)
       if (stat == 0) call write_deck(rf%fid, deck, stat, why)
       if (stat == 0) call write_mesh(rf%fid, msh, stat, why)
@@ -157,13 +210,391 @@ contains
       if (stat == 0) call h5io_group(rf%fid, 'summary', stat, why)
       call attr_text(rf%fid, 'summary', 'status', 'running', stat, why)
       if (stat == 0) call xdmf_open(rf%xdmf, deck, msh, rf%fid, stat, why)
-      if (stat == 0) call h5io_flush(rf%fid, stat, why)
+      call close_window(rf, stat, why)
+      if (stat == 0) call rename_file(rf%path // '.tmp', rf%path, stat, why)
+      if (stat == 0) call xdmf_start(rf%xdmf, stat, why)
       if (stat /= 0) then
          errmsg = rf%path//': '//trim(why)
-         rf%broken = .true.
-         call results_finish(rf, 'failed while opening', [summary_item_t ::], ecode, why)
+         if (rf%fid >= 0) call h5io_close(rf%fid, ios, why)
+         rf%fid = -1
+         gone = c_unlink(rf%path // '.tmp' // c_null_char)
+         return
       end if
+      rf%active = .true.
    end subroutine results_open
+
+   !> A restart (src/results/restart_point.f90): opens the run's <prefix>.h5
+   !> again and cuts it back to its restart point, `rows` history rows and
+   !> `snaps` snapshots, with the peak of that point (what a killed run
+   !> wrote after it goes; a stopped run's /summary goes back to 'running',
+   !> its /strength, written at its end, goes);
+   !> the XDMF views are made anew (src/results/results_xdmf.f90).
+   subroutine results_reopen(deck, msh, rows, snaps, peak_step, peak_time, peak_force, peak_fields, rf, &
+                             stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      type(mesh_t), intent(in) :: msh               !< the mesh with its equation numbers
+      integer, intent(in) :: rows, snaps            !< history rows and snapshots at the restart point
+      integer, intent(in) :: peak_step              !< the peak there: its step,
+      real(dp), intent(in) :: peak_time, peak_force !< time (s), force (N)
+      real(dp), intent(in) :: peak_fields(:,:)      !< and nodal fields (ndof_node, nnode)
+      type(results_file_t), intent(out) :: rf       !< the results file, active on return when deck%hdf5
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      character(len=msg_len) :: why
+      real(dp), allocatable :: time(:), force(:)
+      integer, allocatable :: step(:)
+      integer :: c, k
+
+      stat = 0
+      call system_clock(rf%flushed_at, rf%clock_rate)
+      if (.not. deck%hdf5) return
+      call prepare(deck, msh, rf)
+      rf%peak_step = peak_step;  rf%peak_time = peak_time;  rf%peak_force = peak_force
+      rf%peak_fields = peak_fields
+      why = ''
+      call h5io_start(stat, why)
+      if (stat == 0) call h5io_open(rf%path, .false., rf%fid, stat, why)
+      do c = 1, rf%ncol
+         call cut(rf%hist(c), 'history/' // trim(history_columns(c)%name), rows)
+      end do
+      call cut(rf%snap_time, 'fields/time', snaps)
+      call cut(rf%snap_step, 'fields/step', snaps)
+      call cut(rf%snap_force, 'fields/force', snaps)
+      do k = 1, ndof_node
+         call cut(rf%snap_field(k), 'fields/' // trim(freedom_name(k)), snaps)
+      end do
+      if (stat == 0) call xdmf_cut(rf%xdmf, deck, msh, rf%fid, snaps, stat, why)
+      if (stat == 0) call h5io_update_attr(rf%fid, 'history', 'rows', rows, stat, why)
+      if (stat == 0) call h5io_update_attr(rf%fid, 'fields', 'snapshots', snaps, stat, why)
+      if (stat == 0) call write_peak(rf, stat, why)
+      if (stat == 0) then
+         if (h5io_exists(rf%fid, 'strength')) call h5io_delete(rf%fid, 'strength', stat, why)
+      end if
+      if (stat == 0) call h5io_delete(rf%fid, 'summary', stat, why)
+      if (stat == 0) call h5io_group(rf%fid, 'summary', stat, why)
+      call attr_text(rf%fid, 'summary', 'status', 'running', stat, why)
+      if (stat == 0) call h5io_read_series(rf%fid, 'fields/time', time, stat, why)
+      if (stat == 0) call h5io_read_series(rf%fid, 'fields/step', step, stat, why)
+      if (stat == 0) call h5io_read_series(rf%fid, 'fields/force', force, stat, why)
+      call close_window(rf, stat, why)
+      if (stat == 0) call xdmf_resume(rf%xdmf, time, step, force, stat, why)
+      if (stat /= 0) then
+         errmsg = rf%path // ': ' // trim(why)
+         return
+      end if
+      rf%rows_written = rows;  rf%snaps_written = snaps
+      rf%active = .true.
+
+   contains
+
+      !> The series `name` opened (did) and cut to n entries.
+      subroutine cut(did, name, n)
+         integer(hid_t), intent(inout) :: did
+         character(len=*), intent(in) :: name
+         integer, intent(in) :: n
+         if (stat == 0) call h5io_open_dataset(rf%fid, name, did, stat, why)
+         if (stat == 0) call h5io_cut_series(did, n, stat, why)
+         if (stat /= 0 .and. index(why, "'") == 0) why = trim(why) // " '" // name // "'"
+      end subroutine cut
+
+   end subroutine results_reopen
+
+   !> Appends one history row (SI units, in the order of history_columns)
+   !> to /history: it waits in memory for the next flush (module header),
+   !> made now when the rows fill their buffer.
+   subroutine results_append_history(rf, row, stat, errmsg)
+      type(results_file_t), intent(inout) :: rf     !< the results file
+      real(dp), intent(in) :: row(:)                !< the row just written to the history file, SI (rf%ncol)
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      stat = 0
+      if (.not. rf%active) return
+      if (rf%nrow == size(rf%rows, 2)) call results_flush(rf, stat, errmsg)
+      if (stat /= 0) return
+      rf%nrow = rf%nrow + 1
+      rf%rows(:, rf%nrow) = row
+   end subroutine results_append_history
+
+   !> The nodal fields u, v, w, psi_x, psi_y of the state at the end of a
+   !> step: a snapshot for /fields when `snapshot` is true, and the state of
+   !> /peak when the contact force exceeds the largest so far; both wait in
+   !> memory for the next flush.
+   subroutine results_state(rf, step, time, force, d, snapshot, stat, errmsg)
+      type(results_file_t), intent(inout) :: rf     !< the results file
+      integer, intent(in) :: step                   !< time step of the state
+      real(dp), intent(in) :: time, force           !< its time (s) and contact force (N)
+      real(dp), intent(in) :: d(:)                  !< plate displacements {D} by equation
+      logical, intent(in) :: snapshot               !< append it to /fields
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+
+      stat = 0
+      if (.not. rf%active) return
+      if (snapshot) then
+         if (rf%nsnap == size(rf%snap, 2)) call results_flush(rf, stat, errmsg)
+         if (stat /= 0) return
+         rf%nsnap = rf%nsnap + 1
+         rf%snap(:, rf%nsnap) = [time, real(step, dp), force]
+         rf%snap_fields(:, :, rf%nsnap) = nodal_values(rf%eq, d)
+      end if
+      if (.not. force > rf%peak_force) return
+      rf%peak_force = force
+      rf%peak_step = step
+      rf%peak_time = time
+      rf%peak_fields = nodal_values(rf%eq, d)
+      rf%peak_waiting = .true.
+   end subroutine results_state
+
+   !> The end of a step: once flush_seconds have passed since the last
+   !> flush, the file is flushed and `due` says that a restart point is due
+   !> (module header); the same clock runs without an HDF5 file.
+   subroutine results_tick(rf, due, stat, errmsg)
+      type(results_file_t), intent(inout) :: rf     !< the results file
+      logical, intent(out) :: due                   !< a flush was made: the files hold every step so far
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      integer(int64) :: now
+      stat = 0
+      call system_clock(now)
+      due = real(now - rf%flushed_at, dp) >= flush_seconds*real(rf%clock_rate, dp)
+      if (.not. due) return
+      call results_flush(rf, stat, errmsg)
+      rf%flushed_at = now
+   end subroutine results_tick
+
+   !> Writes what waits in memory (history rows, snapshots, the peak) in one
+   !> opening of the file in SWMR mode (module header): on return the file
+   !> on disk holds every row given so far, and /history rows and /fields
+   !> snapshots say so; then the XDMF views of the new snapshots.
+   subroutine results_flush(rf, stat, errmsg)
+      type(results_file_t), intent(inout) :: rf     !< the results file
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      character(len=msg_len) :: why
+      character(len=:), allocatable :: part
+      integer :: batch
+
+      stat = 0
+      if (.not. rf%active .or. rf%broken) return
+      call system_clock(rf%flushed_at)
+      if (rf%nrow == 0 .and. rf%nsnap == 0 .and. .not. rf%peak_waiting) return
+      why = ''
+      batch = rf%nsnap
+      part = ''
+      call h5io_open(rf%path, .true., rf%fid, stat, why)
+      if (stat == 0) part = '/history: '
+      if (stat == 0) call write_rows(rf, stat, why)
+      if (stat == 0) part = '/fields: '
+      if (stat == 0) call write_snapshots(rf, stat, why)
+      if (stat == 0) part = '/peak: '
+      if (stat == 0 .and. rf%peak_waiting) call write_peak(rf, stat, why)
+      if (stat == 0) part = ''
+      ! all of it on disk, then the counts that say so (a kill between leaves the old counts)
+      if (stat == 0) call h5io_flush(rf%fid, stat, why)
+      if (stat == 0) call h5io_update_attr(rf%fid, 'history', 'rows', rf%rows_written + rf%nrow, stat, why)
+      if (stat == 0) call h5io_update_attr(rf%fid, 'fields', 'snapshots', rf%snaps_written + rf%nsnap, stat, why)
+      call close_window(rf, stat, why)
+      if (stat == 0) then
+         rf%rows_written = rf%rows_written + rf%nrow
+         rf%snaps_written = rf%snaps_written + rf%nsnap
+         rf%nrow = 0;  rf%nsnap = 0;  rf%peak_waiting = .false.
+      end if
+      ! the XML last, naming only what this flush has written (src/results/results_xdmf.f90)
+      if (stat == 0 .and. batch > 0) then
+         part = rf%xdmf%views_path // ': '
+         call xdmf_snapshots(rf%xdmf, rf%snaps_written - batch, nint(rf%snap(2, :batch)), rf%snap(1, :batch), &
+                             rf%snap(3, :batch), stat, why)
+         if (stat == 0) call xdmf_batch_close(rf%xdmf, stat, why)
+      end if
+      if (stat /= 0) errmsg = rf%path//': '//part//trim(why)
+      rf%broken = stat /= 0
+   end subroutine results_flush
+
+   !> The waiting rows appended to /history, a block per column.
+   subroutine write_rows(rf, stat, why)
+      type(results_file_t), intent(inout) :: rf     !< the results file, open
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: why        !< reason on failure
+      integer :: c
+      stat = 0
+      columns: do c = 1, rf%ncol
+         if (rf%nrow == 0 .or. stat /= 0) exit columns
+         call h5io_open_dataset(rf%fid, 'history/' // trim(history_columns(c)%name), rf%hist(c), stat, why)
+         if (stat /= 0) exit columns
+         if (history_columns(c)%whole) then
+            call h5io_append_block(rf%hist(c), nint(rf%rows(c, :rf%nrow)), stat, why)
+         else
+            call h5io_append_block(rf%hist(c), rf%rows(c, :rf%nrow), stat, why)
+         end if
+      end do columns
+   end subroutine write_rows
+
+   !> The waiting snapshots appended to /fields (and, for the XDMF's whole
+   !> plate, their mirror: src/results/results_xdmf.f90).
+   subroutine write_snapshots(rf, stat, why)
+      type(results_file_t), intent(inout) :: rf     !< the results file, open
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: why        !< reason on failure
+      integer :: k, n
+      stat = 0
+      n = rf%nsnap
+      if (n == 0) return
+      call h5io_open_dataset(rf%fid, 'fields/time', rf%snap_time, stat, why)
+      if (stat == 0) call h5io_append_block(rf%snap_time, rf%snap(1, :n), stat, why)
+      if (stat == 0) call h5io_open_dataset(rf%fid, 'fields/step', rf%snap_step, stat, why)
+      if (stat == 0) call h5io_append_block(rf%snap_step, nint(rf%snap(2, :n)), stat, why)
+      if (stat == 0) call h5io_open_dataset(rf%fid, 'fields/force', rf%snap_force, stat, why)
+      if (stat == 0) call h5io_append_block(rf%snap_force, rf%snap(3, :n), stat, why)
+      fields: do k = 1, ndof_node
+         if (stat /= 0) exit fields
+         call h5io_open_dataset(rf%fid, 'fields/' // trim(freedom_name(k)), rf%snap_field(k), stat, why)
+         if (stat == 0) call h5io_append_block(rf%snap_field(k), rf%snap_fields(k, :, :n), stat, why)
+      end do fields
+      if (stat == 0) call xdmf_grow(rf%xdmf, rf%fid, rf%snap_fields(:, :, :n), stat, why)
+   end subroutine write_snapshots
+
+   !> /peak (its fields and step, time, force, rewritten in place) and the
+   !> XDMF's mirror of it.
+   subroutine write_peak(rf, stat, why)
+      type(results_file_t), intent(inout) :: rf     !< the results file, open
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: why        !< reason on failure
+      integer :: k
+      stat = 0
+      peak_fields: do k = 1, ndof_node
+         call h5io_rewrite(rf%fid, 'peak/'//trim(freedom_name(k)), rf%peak_fields(k, :), stat, why)
+         if (stat /= 0) exit peak_fields
+      end do peak_fields
+      if (stat == 0) call h5io_update_attr(rf%fid, 'peak', 'step', rf%peak_step, stat, why)
+      if (stat == 0) call h5io_update_attr(rf%fid, 'peak', 'time', rf%peak_time, stat, why)
+      if (stat == 0) call h5io_update_attr(rf%fid, 'peak', 'force', rf%peak_force, stat, why)
+      if (stat == 0) call xdmf_peak(rf%xdmf, rf%fid, rf%peak_fields, stat, why)
+   end subroutine write_peak
+
+   !> Closes the series open in the file and the file itself (its data and
+   !> metadata written, SWMR's mark cleared), keeping the first failure;
+   !> also after a failure, so that the file is left closed.
+   subroutine close_window(rf, stat, why)
+      type(results_file_t), intent(inout) :: rf     !< the results file
+      integer, intent(inout) :: stat                !< 0 on success; the first failure is kept
+      character(len=*), intent(inout) :: why        !< reason on failure
+      character(len=msg_len) :: text
+      integer :: c, k, ios
+      do c = 1, size(rf%hist)
+         call close_one(rf%hist(c))
+      end do
+      call close_one(rf%snap_time)
+      call close_one(rf%snap_step)
+      call close_one(rf%snap_force)
+      do k = 1, ndof_node
+         call close_one(rf%snap_field(k))
+      end do
+      if (rf%fid < 0) return
+      call h5io_close(rf%fid, ios, text)
+      rf%fid = -1
+      if (ios /= 0 .and. stat == 0) then
+         stat = ios
+         why = text
+      end if
+
+   contains
+
+      subroutine close_one(did)
+         integer(hid_t), intent(inout) :: did
+         if (did < 0) return
+         call h5io_close_dataset(did, ios, text)
+         did = -1
+         if (ios /= 0 .and. stat == 0) then
+            stat = ios
+            why = text
+         end if
+      end subroutine close_one
+
+   end subroutine close_window
+
+   !> Another of the run's writes failed (the history: a full disk, the
+   !> file-size limit): the file is written no more and left as it was at its
+   !> last flush, which opens; writing the summary into it now could leave
+   !> its metadata half written.
+   subroutine results_leave(rf)
+      type(results_file_t), intent(inout) :: rf     !< the results file
+      rf%broken = rf%active
+   end subroutine results_leave
+
+   !> The end of a run, before its last words (/summary, /strength): what
+   !> waits is written, and the file is opened as usual (not SWMR) for
+   !> them, until results_finish. A file a write failed in is left alone.
+   subroutine results_closing(rf)
+      type(results_file_t), intent(inout) :: rf     !< the results file
+      character(len=msg_len) :: why
+      integer :: stat
+      if (.not. rf%active .or. rf%fid >= 0) return
+      if (.not. rf%broken) call results_flush(rf, stat, why)
+      if (.not. rf%broken) call h5io_open(rf%path, .false., rf%fid, stat, why)
+      if (.not. rf%broken) rf%broken = stat /= 0
+      if (rf%broken) rf%active = .false.            ! (nothing more is written into it)
+   end subroutine results_closing
+
+   !> Writes /summary (the items of <prefix>_summary.dat, SI units, and the
+   !> status) and closes the file, and the XDMF's last XML. A file a write
+   !> failed in is left as it was at its last flush (stat 1).
+   subroutine results_finish(rf, status, items, stat, errmsg)
+      type(results_file_t), intent(inout) :: rf     !< the results file; inactive on return
+      character(len=*), intent(in) :: status        !< 'completed', 'failed at step N', ...
+      type(summary_item_t), intent(in) :: items(:)  !< the summary (result_files)
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure (the first)
+      character(len=msg_len) :: why
+      integer :: k, ios
+
+      stat = 0
+      call results_closing(rf)
+      if (rf%broken) then
+         ! a write failed (a full disk, the file-size limit): writing more would
+         ! write the file's metadata for data that is not there
+         stat = 1
+         errmsg = rf%path//': a write failed; the file is left as it was at its last flush, unfinished'
+         rf%active = .false.
+         return
+      end if
+      if (.not. rf%active) return
+      why = ''
+      call put_string('status', status)
+      summary_items: do k = 1, size(items)
+         if (items(k)%key == 'status') cycle summary_items
+         select case (items(k)%kind)
+         case (1)
+            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name, items(k)%si, stat, why)
+            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name//'_units', items(k)%unit, stat, why)
+         case (2)
+            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name, nint(items(k)%si), stat, why)
+            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name//'_units', '-', stat, why)
+         case default
+            call put_string(items(k)%name, items(k)%text)
+         end select
+      end do summary_items
+      if (stat /= 0) errmsg = rf%path//': /summary: '//trim(why)
+      ios = 0
+      call close_window(rf, ios, why)
+      if (ios /= 0 .and. stat == 0) then
+         stat = ios
+         errmsg = rf%path//': '//trim(why)
+      end if
+      call xdmf_close(rf%xdmf, status, ios, why)
+      if (ios /= 0 .and. stat == 0) then
+         stat = ios
+         errmsg = rf%xdmf%path//': '//trim(why)
+      end if
+      rf%active = .false.
+
+   contains
+
+      subroutine put_string(name, value)
+         character(len=*), intent(in) :: name, value
+         if (stat == 0) call h5io_set_attr(rf%fid, 'summary', name, trim(value), stat, why)
+      end subroutine put_string
+
+   end subroutine results_finish
 
    !> The root's attributes: what wrote the file, and when.
    subroutine write_root(fid, stat, why)
@@ -194,6 +625,7 @@ contains
       if (stat /= 0) return
       call h5io_group(rf%fid, 'history', stat, why)
       call attr_int(rf%fid, 'history', 'every', every, 'steps', stat, why)
+      call attr_int(rf%fid, 'history', 'rows', 0, '-', stat, why)
       columns: do c = 1, rf%ncol
          if (stat /= 0) exit columns
          col = history_columns(c)      ! (a copy, not an associate name: see src/deck/input_deck.f90)
@@ -218,15 +650,19 @@ contains
       if (stat /= 0) return
       call h5io_group(rf%fid, 'fields', stat, why)
       call attr_int(rf%fid, 'fields', 'fields_every', fields_every, 'steps', stat, why)
-      if (stat == 0) call h5io_create_series(rf%fid, 'fields/time', h5io_real, 1, rf%snap_time, stat, why)
+      call attr_int(rf%fid, 'fields', 'snapshots', 0, '-', stat, why)
+      if (stat == 0) call h5io_create_series(rf%fid, 'fields/time', h5io_real, hist_chunk, rf%snap_time, stat, why)
       call attr_text(rf%fid, 'fields/time', 'units', 's', stat, why)
-      if (stat == 0) call h5io_create_series(rf%fid, 'fields/step', h5io_integer, 1, rf%snap_step, stat, why)
+      if (stat == 0) call h5io_create_series(rf%fid, 'fields/step', h5io_integer, hist_chunk, rf%snap_step, &
+         stat, why)
       call attr_text(rf%fid, 'fields/step', 'units', '-', stat, why)
-      if (stat == 0) call h5io_create_series(rf%fid, 'fields/force', h5io_real, 1, rf%snap_force, stat, why)
+      if (stat == 0) call h5io_create_series(rf%fid, 'fields/force', h5io_real, hist_chunk, rf%snap_force, &
+         stat, why)
       call attr_text(rf%fid, 'fields/force', 'units', 'N', stat, why)
       snapshot_fields: do k = 1, ndof_node
          if (stat /= 0) exit snapshot_fields
-         call h5io_create_columns(rf%fid, 'fields/'//trim(freedom_name(k)), nnode, rf%snap_field(k), stat, why)
+         call h5io_create_columns(rf%fid, 'fields/'//trim(freedom_name(k)), nnode, hist_chunk, rf%snap_field(k), &
+            stat, why)
          call attr_text(rf%fid, 'fields/'//trim(freedom_name(k)), 'units', field_units(k), stat, why)
       end do snapshot_fields
    end subroutine create_fields
@@ -291,211 +727,6 @@ contains
       if (stat == 0) call h5io_set_attr(fid, obj, name, value, stat, why)
       if (stat == 0) call h5io_set_attr(fid, obj, name//'_units', units, stat, why)
    end subroutine attr_real
-
-   !> Appends one history row (SI units, in the order of history_columns)
-   !> to /history: it waits in memory for the next flush (module header),
-   !> which this call makes when it is due.
-   subroutine results_append_history(rf, row, stat, errmsg)
-      type(results_file_t), intent(inout) :: rf     !< the results file
-      real(dp), intent(in) :: row(:)                !< the row just written to the history file, SI (rf%ncol)
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< reason on failure
-      integer(int64) :: now
-      stat = 0
-      if (.not. rf%active) return
-      rf%nrow = rf%nrow + 1
-      rf%rows(:, rf%nrow) = row
-      call system_clock(now)
-      if (rf%nrow == flush_rows .or. real(now - rf%flushed_at, dp) >= flush_seconds*real(rf%clock_rate, dp)) &
-         call results_flush(rf, stat, errmsg)
-   end subroutine results_append_history
-
-   !> The nodal fields u, v, w, psi_x, psi_y of the state at the end of a
-   !> step: a snapshot for /fields when `snapshot` is true, and the state of
-   !> /peak when the contact force exceeds the largest so far; both wait in
-   !> memory for the next flush.
-   subroutine results_state(rf, step, time, force, d, snapshot, stat, errmsg)
-      type(results_file_t), intent(inout) :: rf     !< the results file
-      integer, intent(in) :: step                   !< time step of the state
-      real(dp), intent(in) :: time, force           !< its time (s) and contact force (N)
-      real(dp), intent(in) :: d(:)                  !< plate displacements {D} by equation
-      logical, intent(in) :: snapshot               !< append it to /fields
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< reason on failure
-
-      stat = 0
-      if (.not. rf%active) return
-      if (snapshot) then
-         if (rf%nsnap == flush_snapshots) call results_flush(rf, stat, errmsg)
-         if (stat /= 0) return
-         rf%nsnap = rf%nsnap + 1
-         rf%snap(:, rf%nsnap) = [time, real(step, dp), force]
-         rf%snap_fields(:, :, rf%nsnap) = nodal_values(rf%eq, d)
-      end if
-      if (.not. force > rf%peak_force) return
-      rf%peak_force = force
-      rf%peak_step = step
-      rf%peak_time = time
-      rf%peak_fields = nodal_values(rf%eq, d)
-      rf%peak_waiting = .true.
-   end subroutine results_state
-
-   !> Writes what waits in memory (history rows, snapshots, the peak) and
-   !> flushes the file (H5Fflush): on return the file on disk holds every
-   !> row given so far.
-   subroutine results_flush(rf, stat, errmsg)
-      type(results_file_t), intent(inout) :: rf     !< the results file
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< reason on failure
-      character(len=msg_len) :: why
-      character(len=:), allocatable :: part
-      integer :: c, k
-      logical :: batch
-
-      stat = 0
-      if (.not. rf%active) return
-      why = ''
-      batch = rf%nsnap > 0
-      ! a failure ends the flush; the message names the part being written
-      parts: block
-         part = '/history: '
-         columns: do c = 1, rf%ncol
-            if (rf%nrow == 0 .or. stat /= 0) exit columns
-            if (history_columns(c)%whole) then
-               call h5io_append_block(rf%hist(c), nint(rf%rows(c, :rf%nrow)), stat, why)
-            else
-               call h5io_append_block(rf%hist(c), rf%rows(c, :rf%nrow), stat, why)
-            end if
-         end do columns
-         if (stat /= 0) exit parts
-         rf%nrow = 0
-         if (rf%nsnap > 0) then
-            part = '/fields: '
-            call h5io_append_block(rf%snap_time, rf%snap(1, :rf%nsnap), stat, why)
-            if (stat == 0) call h5io_append_block(rf%snap_step, nint(rf%snap(2, :rf%nsnap)), stat, why)
-            if (stat == 0) call h5io_append_block(rf%snap_force, rf%snap(3, :rf%nsnap), stat, why)
-            fields: do k = 1, ndof_node
-               if (stat /= 0) exit fields
-               call h5io_append_block(rf%snap_field(k), rf%snap_fields(k, :, :rf%nsnap), stat, why)
-            end do fields
-            if (stat == 0) call xdmf_snapshots(rf%xdmf, rf%fid, nint(rf%snap(2, :rf%nsnap)), rf%snap(1, :rf%nsnap), &
-               rf%snap(3, :rf%nsnap), rf%snap_fields(:, :, :rf%nsnap), stat, why)
-            if (stat /= 0) exit parts
-            rf%nsnap = 0
-         end if
-         if (rf%peak_waiting) then
-            part = '/peak: '
-            peak_fields: do k = 1, ndof_node
-               call h5io_rewrite(rf%fid, 'peak/'//trim(freedom_name(k)), rf%peak_fields(k, :), stat, why)
-               if (stat /= 0) exit peak_fields
-            end do peak_fields
-            if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'step', rf%peak_step, stat, why)
-            if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'time', rf%peak_time, stat, why)
-            if (stat == 0) call h5io_set_attr(rf%fid, 'peak', 'force', rf%peak_force, stat, why)
-            if (stat == 0) call xdmf_peak(rf%xdmf, rf%fid, rf%peak_fields, stat, why)
-            if (stat /= 0) exit parts
-            rf%peak_waiting = .false.
-         end if
-         part = ''
-         call h5io_flush(rf%fid, stat, why)
-         ! the XML last, naming only what this flush has written (src/results/results_xdmf.f90)
-         if (stat == 0 .and. batch) call xdmf_batch_close(rf%xdmf, rf%fid, stat, why)
-         call system_clock(rf%flushed_at)
-      end block parts
-      if (stat /= 0) errmsg = rf%path//': '//part//trim(why)
-      rf%broken = stat /= 0
-   end subroutine results_flush
-
-   !> Another of the run's writes failed (the history: a full disk, the
-   !> file-size limit): the file is written no more and left as it was at its
-   !> last flush, which opens; writing the summary into it now could leave
-   !> its metadata half written.
-   subroutine results_leave(rf)
-      type(results_file_t), intent(inout) :: rf     !< the results file
-      rf%broken = rf%active
-   end subroutine results_leave
-
-   !> Writes /summary (the items of <prefix>_summary.dat, SI units, and the
-   !> status) and closes the file. Closes what it can even after a failure.
-   subroutine results_finish(rf, status, items, stat, errmsg)
-      type(results_file_t), intent(inout) :: rf     !< the results file; inactive on return
-      character(len=*), intent(in) :: status        !< 'completed', 'failed at step N', ...
-      type(summary_item_t), intent(in) :: items(:)  !< the summary (result_files)
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< reason on failure (the first)
-      character(len=msg_len) :: why
-      integer :: c, k, ios
-
-      stat = 0
-      if (.not. rf%active) return
-      if (.not. rf%broken) call results_flush(rf, stat, errmsg)      ! what waits, whatever the end
-      if (rf%broken) then
-         ! a write failed (a full disk, the file-size limit): writing more, even
-         ! closing, would rewrite the file's metadata for data that is not there;
-         ! left alone it opens as it was at its last flush
-         stat = 1
-         errmsg = rf%path//': a write failed; the file is left as it was at its last flush, unfinished'
-         rf%active = .false.
-         return
-      end if
-      why = ''
-      call put_string('status', status)
-      summary_items: do k = 1, size(items)
-         if (items(k)%key == 'status') cycle summary_items
-         select case (items(k)%kind)
-         case (1)
-            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name, items(k)%si, stat, why)
-            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name//'_units', items(k)%unit, stat, why)
-         case (2)
-            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name, nint(items(k)%si), stat, why)
-            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name//'_units', '-', stat, why)
-         case default
-            call put_string(items(k)%name, items(k)%text)
-         end select
-      end do summary_items
-      if (stat /= 0) errmsg = rf%path//': /summary: '//trim(why)
-      call xdmf_close(rf%xdmf, rf%fid, status, ios, why)
-      if (ios /= 0 .and. stat == 0) then
-         stat = ios
-         errmsg = rf%xdmf%path//': '//trim(why)
-      end if
-
-      ! -- close everything, keeping the first failure
-      do c = 1, size(rf%hist)
-         call close_one(rf%hist(c))
-      end do
-      call close_one(rf%snap_time)
-      call close_one(rf%snap_step)
-      call close_one(rf%snap_force)
-      do k = 1, ndof_node
-         call close_one(rf%snap_field(k))
-      end do
-      call h5io_close(rf%fid, ios, why)
-      if (ios /= 0 .and. stat == 0) then
-         stat = ios
-         errmsg = rf%path//': '//trim(why)
-      end if
-      rf%active = .false.
-
-   contains
-
-      subroutine close_one(did)
-         integer(hid_t), intent(inout) :: did
-         if (did < 0) return
-         call h5io_close_dataset(did, ios, why)
-         if (ios /= 0 .and. stat == 0) then
-            stat = ios
-            errmsg = rf%path//': '//trim(why)
-         end if
-         did = -1
-      end subroutine close_one
-
-      subroutine put_string(name, value)
-         character(len=*), intent(in) :: name, value
-         if (stat == 0) call h5io_set_attr(rf%fid, 'summary', name, trim(value), stat, why)
-      end subroutine put_string
-
-   end subroutine results_finish
 
    !> The nodal values of the freedoms: f(k, n) = d(eq(k, n)), 0 where the
    !> freedom is held (eq = 0).

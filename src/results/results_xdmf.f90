@@ -1,7 +1,8 @@
 !> <prefix>.xdmf beside <prefix>.h5: an XDMF 3 description of the results
 !> file's mesh and nodal fields, so that ParaView, VisIt and meshio open a
 !> run (docs/OUTPUT.md, "Looking at the fields"). The XML holds no numbers of its
-!> own: every array is a dataset of <prefix>.h5, named by its path.
+!> own: every array is a dataset of <prefix>.h5 or <prefix>.xdmf.h5, named
+!> by its path.
 !>
 !>   mesh        9-node quadrilaterals (XDMF Quadrilateral_9, VTK's
 !>               biquadratic quad: the node order of src/model/shape_functions.f90,
@@ -15,57 +16,63 @@
 !>               laminate, a temporal collection before the fields' one
 !>               (src/results/xdmf_plies.f90, written into /xdmf/plies)
 !>
-!> What XDMF readers need that <prefix>.h5 did not have, in its group /xdmf:
+!> What XDMF readers need that <prefix>.h5 did not have: in its group /xdmf,
 !>
 !>   /xdmf/cells          (nelem, 9)   element nodes numbered from 0 (XDMF
 !>                                     counts from 0, /mesh/connectivity from 1)
-!>   /xdmf/fields/<b>/<f>/<k> (nnode)  field f of snapshot k: a virtual dataset
-!>                                     (HDF5 1.10) showing row k of /fields/<f>,
-!>                                     no copy; readers see a plain dataset. b
-!>                                     numbers the batch of snapshots the
-!>                                     results file wrote in one flush
+!>
+!> and, in a file of its own, <prefix>.xdmf.h5,
+!>
+!>   /fields/<b>/<f>/<k>  (nnode)      field f of snapshot k: a virtual dataset
+!>                                     (HDF5 1.10) showing row k of
+!>                                     <prefix>.h5's /fields/<f>, no copy;
+!>                                     readers see a plain dataset. b numbers
+!>                                     the batch of snapshots the results
+!>                                     file wrote in one flush
 !>                                     (src/results/results_hdf5.f90): a group that is
 !>                                     complete before the XML names it and
 !>                                     never changed after
 !>
-!> Debian 12's ParaView (5.11) does not apply the XDMF hyperslabs and
-!> functions of an Attribute, and meshio reads only whole datasets; a plain
-!> dataset per snapshot is what every reader takes, hence the views.
+!> A view is an object, made when its snapshot is written: <prefix>.h5 is
+!> written in HDF5's SWMR mode, which makes no object (src/results/results_hdf5.f90),
+!> hence their file of their own, which names <prefix>.h5 without its
+!> directory (HDF5 finds it beside itself). Debian 12's ParaView (5.11)
+!> does not apply the XDMF hyperslabs and functions of an Attribute, and
+!> meshio reads only whole datasets; a plain dataset per snapshot is what
+!> every reader takes, hence the views.
 !>
 !> &output xdmf = 'whole' mirrors a quarter or half into the whole
 !> plate (about x = 0 and y = 0, src/model/mesh.f90): u, psi_x change sign across
 !> x = 0 and v, psi_y across y = 0, which no view can do, so the whole
-!> plate's fields are written as data: /xdmf/coordinates (nnode_whole, 2),
-!> /xdmf/cells, /xdmf/fields/<b>/<f>/<k> and /xdmf/peak/<f>, about 4 (quarter)
-!> or 2 (half) times the modelled fields. Nodes on the symmetry lines are
-!> shared, elements keep the counter-clockwise order. &output xdmf = 'none'
-!> writes neither the XML nor /xdmf.
+!> plate's fields are written as data, in <prefix>.h5: /xdmf/coordinates
+!> (nnode_whole, 2), /xdmf/cells, /xdmf/fields/<f> (nsnap, nnode_whole)
+!> growing with /fields, and /xdmf/peak/<f>, about 4 (quarter) or 2 (half)
+!> times the modelled fields; the views show rows of /xdmf/fields/<f>.
+!> Nodes on the symmetry lines are shared, elements keep the
+!> counter-clockwise order. &output xdmf = 'none' writes neither the XML,
+!> nor /xdmf, nor the views.
 !>
-!> Cost: a view is an HDF5 object, made when its batch is flushed (once a
-!> second, src/results/results_hdf5.f90); the views are nothing at the default
-!> fields_every and the largest part of the output of a small run with a
-!> snapshot every step (docs/OUTPUT.md, "Looking at the fields").
+!> Cost: the views are nothing at the default fields_every and the largest
+!> part of the output of a small run with a snapshot every step (docs/OUTPUT.md,
+!> "Looking at the fields").
 !>
-!> As the run goes: after a batch of snapshots the HDF5 file is flushed and
-!> the XML is written to <prefix>.xdmf.tmp and renamed over <prefix>.xdmf
-!> (one step: a reader sees the old file or the new one), after the first
-!> batch and then at most once per xdmf_rewrite_interval of wall-clock time
-!> (the XML grows with every snapshot; rewriting it each time would cost the
-!> square of their number), and at the end. A killed run's XDMF opens, with
-!> the snapshots up to its last rewrite and status 'running': the views it
-!> names sit in batch groups that later writes leave alone. (A kill while
-!> HDF5 flushes can still leave the file's newest structures half written:
-!> one link of /xdmf/fields per batch, the growing datasets' chunk indices;
-!> before the batches, every view was a link of one shared group per field,
-!> rewritten 500 times a second by a fast run, and 1 killed run in 10 left
-!> an XDMF that ParaView could not open.) (A run still
-!> going: HDF5 1.10 does not let another process read the file it writes,
-!> outside SWMR mode, which allows no new object once started.)
+!> As the run goes: after a batch of snapshots <prefix>.xdmf.h5 is flushed
+!> and the XML is written to <prefix>.xdmf.tmp and renamed over
+!> <prefix>.xdmf (one step: a reader sees the old file or the new one),
+!> after the first batch and then at most once per xdmf_rewrite_interval of
+!> wall-clock time (the XML grows with every snapshot; rewriting it each
+!> time would cost the square of their number), and at the end. A killed
+!> run's XDMF opens, with the snapshots up to its last rewrite and status
+!> 'running': the views it names sit in batch groups that later writes
+!> leave alone. (A kill while HDF5 flushes <prefix>.xdmf.h5 can still
+!> leave its newest structures half written: a run restarted
+!> (src/results/restart_point.f90) makes the file anew.)
 !>
-!> Usage (src/results/results_hdf5.f90): xdmf_open after /mesh is written; for each
-!> batch of snapshots appended to /fields, xdmf_snapshots, then
-!> xdmf_batch_close; xdmf_peak after /peak is rewritten;
-!> xdmf_close before the file is closed.
+!> Usage (src/results/results_hdf5.f90): xdmf_open while <prefix>.h5 is made, then
+!> xdmf_start; for each batch of snapshots appended to /fields, xdmf_grow
+!> in the same writing, then xdmf_snapshots and xdmf_batch_close;
+!> xdmf_peak when /peak is rewritten; xdmf_close at the end. A restart:
+!> xdmf_cut while <prefix>.h5 is cut back, then xdmf_resume.
 module results_xdmf
    use, intrinsic :: iso_fortran_env, only: int64
    use hdf5, only: hid_t
@@ -74,15 +81,20 @@ module results_xdmf
    use deck_schema, only: deck_t
    use mesh, only: mesh_t, ndof_node, freedom_name
    use shape_functions, only: nen
-   use hdf5_io, only: h5io_group, h5io_write, h5io_rewrite, h5io_view_column, h5io_flush, h5io_set_attr
+   use hdf5_io, only: h5io_create, h5io_close, h5io_group, h5io_write, h5io_rewrite, h5io_view_column, h5io_flush, &
+      h5io_set_attr, h5io_create_columns, h5io_open_dataset, h5io_append_block, h5io_cut_series, h5io_close_dataset
    use file_system, only: rename_file
    use xdmf_plies, only: xdmf_plies_t, plies_collection
    implicit none
    private
-   public :: xdmf_t, xdmf_open, xdmf_snapshots, xdmf_batch_close, xdmf_peak, xdmf_close
+   public :: xdmf_t, xdmf_open, xdmf_start, xdmf_cut, xdmf_resume, xdmf_grow, xdmf_snapshots, xdmf_batch_close, &
+             xdmf_peak, xdmf_close
 
    !> Longest number as text (src/system/number_text.f90, real_str).
    integer, parameter :: text_len = 32
+   !> Values per chunk of the whole plate's growing fields (as
+   !> src/results/results_hdf5.f90's series).
+   integer, parameter :: chunk_values = 512
    !> Least wall-clock time between two rewrites of the XML during a run (s).
    real(dp), parameter :: xdmf_rewrite_interval = 1.0_dp
    !> Fields odd across x = 0 (u, psi_x) and across y = 0 (v, psi_y), by freedom.
@@ -100,12 +112,15 @@ module results_xdmf
       logical :: whole = .false.                    !< the mirrored whole plate (else the modelled domain)
       character(len=:), allocatable :: path         !< <prefix>.xdmf
       character(len=:), allocatable :: h5_name      !< <prefix>.h5 as the XML names it: its file name
+      character(len=:), allocatable :: views_path   !< <prefix>.xdmf.h5, the views
+      character(len=:), allocatable :: views_name   !< its file name
       character(len=:), allocatable :: status       !< 'running', then the run's status
+      integer(hid_t) :: vid = -1                    !< <prefix>.xdmf.h5, open
       integer :: nnode = 0, nelem = 0               !< nodes and elements shown
       integer :: nsnap = 0                          !< snapshots so far
       character(len=text_len), allocatable :: time(:), force(:)  !< of each snapshot (s, N), as the XML gives them
       integer, allocatable :: step(:)               !< of each snapshot
-      integer, allocatable :: batch(:)              !< of each snapshot: its group /xdmf/fields/<batch>
+      integer, allocatable :: batch(:)              !< of each snapshot: its group /fields/<batch>
       integer :: nbatch = 0                         !< batches so far
       integer, allocatable :: source(:)             !< whole: the modelled node of each node shown
       real(dp), allocatable :: parity(:,:)          !< whole: (ndof_node, nnode) sign of each field there
@@ -115,137 +130,224 @@ module results_xdmf
 
 contains
 
-   !> Starts <prefix>.xdmf for the results file fid (open, /mesh written):
-   !> /xdmf (the cells numbered from 0; the whole plate's mesh and peak when
-   !> &output xdmf = 'whole') and the XML without a snapshot; nothing for
-   !> xdmf = 'none'.
-   subroutine xdmf_open(x, deck, msh, fid, stat, errmsg)
-      type(xdmf_t), intent(out) :: x                !< the XDMF file, active on return
+   !> The XDMF of a run (nothing for xdmf = 'none'): its names, and for the
+   !> whole plate its points and cells (xy, cells numbered from 1), the
+   !> modelled node of each point and the sign of each field there.
+   subroutine setup(x, deck, msh, xy, cells)
+      type(xdmf_t), intent(out) :: x                !< the XDMF file, not yet active
       type(deck_t), intent(in) :: deck              !< the effective deck (prefix, xdmf)
       type(mesh_t), intent(in) :: msh               !< the modelled mesh
-      integer(hid_t), intent(in) :: fid             !< the open results file
+      real(dp), allocatable, intent(out) :: xy(:,:) !< (2, nnode) the points shown (m)
+      integer, allocatable, intent(out) :: cells(:,:)   !< (nen, nelem) the cells shown, from 1
+      integer :: slash
+
+      x%path = deck%prefix // '.xdmf'
+      x%views_path = deck%prefix // '.xdmf.h5'
+      slash = index(deck%prefix, '/', back=.true.)
+      x%h5_name = deck%prefix(slash + 1:) // '.h5'
+      x%views_name = deck%prefix(slash + 1:) // '.xdmf.h5'
+      x%status = 'running'
+      x%whole = deck%xdmf == 'whole' .and. (msh%sym_x .or. msh%sym_y)
+      allocate (x%time(0), x%force(0), x%step(0), x%batch(0))
+      if (x%whole) then
+         call whole_plate(msh, xy, cells, x%source, x%parity)
+      else
+         xy = msh%coords
+         cells = msh%conn
+      end if
+      x%nnode = size(xy, 2)
+      x%nelem = size(cells, 2)
+   end subroutine setup
+
+   !> Writes /xdmf into <prefix>.h5 while it is made (fid, /mesh written):
+   !> the cells numbered from 0; for the whole plate its points, /peak and
+   !> the empty growing fields (module header); nothing for xdmf = 'none'.
+   subroutine xdmf_open(x, deck, msh, fid, stat, errmsg)
+      type(xdmf_t), intent(out) :: x                !< the XDMF file, ready for xdmf_start on return
+      type(deck_t), intent(in) :: deck              !< the effective deck (prefix, xdmf)
+      type(mesh_t), intent(in) :: msh               !< the modelled mesh
+      integer(hid_t), intent(in) :: fid             !< <prefix>.h5, being made
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       real(dp), allocatable :: xy(:,:)
       integer, allocatable :: cells(:,:)
-      integer :: slash, k, n
+      integer(hid_t) :: did
+      integer :: k, n
 
       stat = 0
       if (deck%xdmf == 'none') return
-      x%path = deck%prefix // '.xdmf'
-      slash = index(deck%prefix, '/', back=.true.)
-      x%h5_name = deck%prefix(slash + 1:) // '.h5'
-      x%status = 'running'
-      x%whole = deck%xdmf == 'whole' .and. (msh%sym_x .or. msh%sym_y)
-      allocate (x%time(0), x%force(0), x%step(0), x%batch(0))
-      call system_clock(x%written_at)
-
+      call setup(x, deck, msh, xy, cells)
       call h5io_group(fid, 'xdmf', stat, errmsg)
       if (stat == 0) call h5io_set_attr(fid, 'xdmf', 'domain', trim(merge('whole   ', 'modelled', x%whole)), &
          stat, errmsg)
       if (stat == 0) call h5io_set_attr(fid, 'xdmf', 'description', 'what ' // x%h5_name(:len(x%h5_name) - 3) &
-         // '.xdmf shows (src/results/results_xdmf.f90): cells numbered from 0, fields/<b>/<f>/<k>: field f of ' &
-         // 'snapshot k, written in batch b', stat, errmsg)
-      if (stat == 0) call h5io_group(fid, 'xdmf/fields', stat, errmsg)
-      if (stat /= 0) return
-      if (x%whole) then
-         call whole_plate(msh, xy, cells, x%source, x%parity)
-         x%nnode = size(xy, 2)
-         x%nelem = size(cells, 2)
-         call h5io_write(fid, 'xdmf/coordinates', xy, stat, errmsg)
-         if (stat == 0) call h5io_group(fid, 'xdmf/peak', stat, errmsg)
-         do k = 1, ndof_node
-            if (stat == 0) call h5io_write(fid, 'xdmf/peak/' // trim(freedom_name(k)), &
-               [(0.0_dp, n = 1, x%nnode)], stat, errmsg)
-         end do
-      else
-         x%nnode = msh%nnode
-         x%nelem = msh%nelem
-         cells = msh%conn
-      end if
+         // '.xdmf shows (src/results/results_xdmf.f90): cells numbered from 0; the views of the snapshots are in ' &
+         // x%views_name, stat, errmsg)
       if (stat == 0) call h5io_write(fid, 'xdmf/cells', cells - 1, stat, errmsg)
-      if (stat /= 0) return
-      x%active = .true.
-      call write_xml(x, fid, stat, errmsg)
+      if (stat /= 0 .or. .not. x%whole) return
+      call h5io_write(fid, 'xdmf/coordinates', xy, stat, errmsg)
+      if (stat == 0) call h5io_group(fid, 'xdmf/peak', stat, errmsg)
+      if (stat == 0) call h5io_group(fid, 'xdmf/fields', stat, errmsg)
+      fields: do k = 1, ndof_node
+         if (stat /= 0) exit fields
+         call h5io_write(fid, 'xdmf/peak/' // trim(freedom_name(k)), [(0.0_dp, n = 1, x%nnode)], stat, errmsg)
+         if (stat == 0) call h5io_create_columns(fid, 'xdmf/fields/' // trim(freedom_name(k)), x%nnode, &
+            chunk_values, did, stat, errmsg)
+         if (stat == 0) call h5io_close_dataset(did, stat, errmsg)
+      end do fields
    end subroutine xdmf_open
 
-   !> A batch of snapshots, just appended to /fields: the group
-   !> /xdmf/fields/<b>, its groups of the fields, and each snapshot's views
-   !> (or, for the whole plate, its mirrored fields).
-   subroutine xdmf_snapshots(x, fid, step, time, force, f, stat, errmsg)
-      type(xdmf_t), intent(inout) :: x              !< the XDMF file
-      integer(hid_t), intent(in) :: fid             !< the open results file
-      integer, intent(in) :: step(:)                !< each snapshot's time step
-      real(dp), intent(in) :: time(:), force(:)     !< their times (s) and contact forces (N)
+   !> Starts <prefix>.xdmf.h5 (no view yet) and the XML without a
+   !> snapshot, once <prefix>.h5 is in place; x active on return.
+   subroutine xdmf_start(x, stat, errmsg)
+      type(xdmf_t), intent(inout) :: x              !< the XDMF file (xdmf_open, or xdmf_cut)
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      stat = 0
+      if (.not. allocated(x%path)) return           ! xdmf = 'none'
+      call system_clock(x%written_at)
+      call h5io_create(x%views_path, .false., x%vid, stat, errmsg)
+      if (stat == 0) call h5io_group(x%vid, 'fields', stat, errmsg)
+      if (stat /= 0) then
+         errmsg = x%views_path // ': ' // trim(errmsg)
+         return
+      end if
+      x%active = .true.
+      call write_xml(x, stat, errmsg)
+   end subroutine xdmf_start
+
+   !> A restart, while <prefix>.h5 is cut back to `snaps` snapshots (fid
+   !> open): the XDMF's names, and the whole plate's fields cut alike.
+   subroutine xdmf_cut(x, deck, msh, fid, snaps, stat, errmsg)
+      type(xdmf_t), intent(out) :: x                !< the XDMF file, ready for xdmf_resume on return
+      type(deck_t), intent(in) :: deck              !< the effective deck (prefix, xdmf)
+      type(mesh_t), intent(in) :: msh               !< the modelled mesh
+      integer(hid_t), intent(in) :: fid             !< <prefix>.h5, open
+      integer, intent(in) :: snaps                  !< snapshots kept
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      real(dp), allocatable :: xy(:,:)
+      integer, allocatable :: cells(:,:)
+      integer(hid_t) :: did
+      integer :: k, ios
+
+      stat = 0
+      if (deck%xdmf == 'none') return
+      call setup(x, deck, msh, xy, cells)
+      fields: do k = 1, ndof_node
+         if (stat /= 0 .or. .not. x%whole) exit fields
+         call h5io_open_dataset(fid, 'xdmf/fields/' // trim(freedom_name(k)), did, stat, errmsg)
+         if (stat /= 0) exit fields
+         call h5io_cut_series(did, snaps, stat, errmsg)
+         call h5io_close_dataset(did, ios, errmsg)
+      end do fields
+   end subroutine xdmf_cut
+
+   !> A restart: the XDMF of the snapshots kept in <prefix>.h5 (their
+   !> times, steps, forces), <prefix>.xdmf.h5 made anew with their views in
+   !> one batch, and the XML.
+   subroutine xdmf_resume(x, time, step, force, stat, errmsg)
+      type(xdmf_t), intent(inout) :: x              !< the XDMF file (xdmf_cut), active on return
+      real(dp), intent(in) :: time(:), force(:)     !< the snapshots' times (s) and contact forces (N)
+      integer, intent(in) :: step(:)                !< their steps
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      stat = 0
+      if (.not. allocated(x%path)) return           ! xdmf = 'none'
+      call xdmf_start(x, stat, errmsg)
+      if (stat == 0 .and. size(step) > 0) call xdmf_snapshots(x, 0, step, time, force, stat, errmsg)
+      if (stat == 0) call h5io_flush(x%vid, stat, errmsg)
+      if (stat == 0) call write_xml(x, stat, errmsg)
+   end subroutine xdmf_resume
+
+   !> The whole plate: the mirror of the snapshots f just appended to
+   !> /fields, appended to /xdmf/fields/<f> of <prefix>.h5 (fid, open).
+   subroutine xdmf_grow(x, fid, f, stat, errmsg)
+      type(xdmf_t), intent(in) :: x                 !< the XDMF file
+      integer(hid_t), intent(in) :: fid             !< <prefix>.h5, open
       real(dp), intent(in) :: f(:,:,:)              !< (ndof_node, nnode, snapshot) their nodal values, modelled domain
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
+      real(dp), allocatable :: mirrored(:,:)
+      integer(hid_t) :: did
+      integer :: k, j, ios
+      stat = 0
+      if (.not. (x%active .and. x%whole)) return
+      allocate (mirrored(x%nnode, size(f, 3)))
+      fields: do k = 1, ndof_node
+         do j = 1, size(f, 3)
+            mirrored(:, j) = x%parity(k, :)*f(k, x%source, j)
+         end do
+         call h5io_open_dataset(fid, 'xdmf/fields/' // trim(freedom_name(k)), did, stat, errmsg)
+         if (stat /= 0) exit fields
+         call h5io_append_block(did, mirrored, stat, errmsg)
+         call h5io_close_dataset(did, ios, errmsg)
+         if (stat /= 0) exit fields
+      end do fields
+   end subroutine xdmf_grow
+
+   !> A batch of snapshots, just written to <prefix>.h5 after its first
+   !> `before`: the group /fields/<b> of <prefix>.xdmf.h5, its groups of the
+   !> fields, and each snapshot's views.
+   subroutine xdmf_snapshots(x, before, step, time, force, stat, errmsg)
+      type(xdmf_t), intent(inout) :: x              !< the XDMF file
+      integer, intent(in) :: before                 !< snapshots in <prefix>.h5 before the batch
+      integer, intent(in) :: step(:)                !< each snapshot's time step
+      real(dp), intent(in) :: time(:), force(:)     !< their times (s) and contact forces (N)
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      character(len=:), allocatable :: source
       integer :: k, j
       stat = 0
       if (.not. x%active) return
+      x%nsnap = before
+      x%time = x%time(:before);  x%force = x%force(:before)
+      x%step = x%step(:before);  x%batch = x%batch(:before)
       x%nbatch = x%nbatch + 1
-      call h5io_group(fid, batch_group(x%nbatch), stat, errmsg)
+      call h5io_group(x%vid, batch_group(x%nbatch), stat, errmsg)
       do k = 1, ndof_node
-         if (stat == 0) call h5io_group(fid, batch_group(x%nbatch) // '/' // trim(freedom_name(k)), stat, errmsg)
+         if (stat == 0) call h5io_group(x%vid, batch_group(x%nbatch) // '/' // trim(freedom_name(k)), stat, errmsg)
       end do
       snapshots: do j = 1, size(step)
          if (stat /= 0) exit snapshots
-         call add_snapshot(x, fid, step(j), time(j), force(j), f(:, :, j), stat, errmsg)
+         x%nsnap = x%nsnap + 1
+         x%time = [x%time, real_str(time(j))]
+         x%force = [x%force, real_str(force(j))]
+         x%step = [x%step, step(j)]
+         x%batch = [x%batch, x%nbatch]
+         fields: do k = 1, ndof_node
+            source = merge('xdmf/fields/', 'fields/     ', x%whole)
+            call h5io_view_column(x%vid, view_path(x, k, x%nsnap), x%h5_name, trim(source) // trim(freedom_name(k)), &
+               x%nnode, x%nsnap, stat, errmsg)
+            if (stat /= 0) exit snapshots
+         end do fields
       end do snapshots
    end subroutine xdmf_snapshots
 
-   !> Ends a batch: the XML rewritten when due (module header).
-   subroutine xdmf_batch_close(x, fid, stat, errmsg)
+   !> Ends a batch: <prefix>.xdmf.h5 flushed, the XML rewritten when due
+   !> (module header).
+   subroutine xdmf_batch_close(x, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file
-      integer(hid_t), intent(in) :: fid             !< the open results file
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       integer(int64) :: now, rate
       stat = 0
       if (.not. x%active) return
+      call h5io_flush(x%vid, stat, errmsg)
+      if (stat /= 0) return
       call system_clock(now, rate)
       if (x%nbatch == 1 .or. real(now - x%written_at, dp) >= xdmf_rewrite_interval*real(rate, dp)) &
-         call write_xml(x, fid, stat, errmsg)
+         call write_xml(x, stat, errmsg)
    end subroutine xdmf_batch_close
-
-   !> Snapshot number x%nsnap + 1, just appended to /fields, in the open
-   !> batch b: its views (or, for the whole plate, its mirrored fields)
-   !> /xdmf/fields/<b>/<f>/<k>.
-   subroutine add_snapshot(x, fid, step, time, force, f, stat, errmsg)
-      type(xdmf_t), intent(inout) :: x              !< the XDMF file
-      integer(hid_t), intent(in) :: fid             !< the open results file
-      integer, intent(in) :: step                   !< the snapshot's time step
-      real(dp), intent(in) :: time, force           !< its time (s) and contact force (N)
-      real(dp), intent(in) :: f(:,:)                !< (ndof_node, nnode) its nodal values, modelled domain
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< reason on failure
-      integer :: k
-
-      stat = 0
-      x%nsnap = x%nsnap + 1
-      x%time = [x%time, real_str(time)]
-      x%force = [x%force, real_str(force)]
-      x%step = [x%step, step]
-      x%batch = [x%batch, x%nbatch]
-      fields: do k = 1, ndof_node
-         if (stat /= 0) exit fields
-         if (x%whole) then
-            call h5io_write(fid, view_path(x, k, x%nsnap), x%parity(k, :)*f(k, x%source), stat, errmsg)
-         else
-            call h5io_view_column(fid, view_path(x, k, x%nsnap), 'fields/' // trim(freedom_name(k)), size(f, 2), &
-               x%nsnap, stat, errmsg)
-         end if
-      end do fields
-   end subroutine add_snapshot
 
    !> The group of batch b.
    pure function batch_group(b) result(path)
       integer, intent(in) :: b                      !< batch number
       character(len=:), allocatable :: path
-      path = 'xdmf/fields/' // int_str(b)
+      path = 'fields/' // int_str(b)
    end function batch_group
 
-   !> Where field k of snapshot s is: /xdmf/fields/<b>/<f>/<s>.
+   !> Where field k of snapshot s is in <prefix>.xdmf.h5: /fields/<b>/<f>/<s>.
    pure function view_path(x, k, s) result(path)
       type(xdmf_t), intent(in) :: x                 !< the XDMF file
       integer, intent(in) :: k, s                   !< freedom, snapshot
@@ -254,52 +356,59 @@ contains
    end function view_path
 
    !> The peak state just rewritten in /peak: for the whole plate, mirrored
-   !> into /xdmf/peak (the modelled domain's XML shows /peak itself).
+   !> into /xdmf/peak of <prefix>.h5 (fid, open; the modelled domain's XML
+   !> shows /peak itself).
    subroutine xdmf_peak(x, fid, f, stat, errmsg)
       type(xdmf_t), intent(in) :: x                 !< the XDMF file
-      integer(hid_t), intent(in) :: fid             !< the open results file
+      integer(hid_t), intent(in) :: fid             !< <prefix>.h5, open
       real(dp), intent(in) :: f(:,:)                !< (ndof_node, nnode) the peak's nodal values, modelled domain
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       integer :: k
       stat = 0
-      if (.not. (x%active .and. x%whole)) return
+      if (.not. (allocated(x%path) .and. x%whole)) return
       do k = 1, ndof_node
          if (stat == 0) call h5io_rewrite(fid, 'xdmf/peak/' // trim(freedom_name(k)), &
             x%parity(k, :)*f(k, x%source), stat, errmsg)
       end do
    end subroutine xdmf_peak
 
-   !> The last XML, with every snapshot and the run's status; x inactive after.
-   subroutine xdmf_close(x, fid, status, stat, errmsg)
+   !> The last XML, with every snapshot and the run's status, and
+   !> <prefix>.xdmf.h5 closed; x inactive after.
+   subroutine xdmf_close(x, status, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file
-      integer(hid_t), intent(in) :: fid             !< the open results file
       character(len=*), intent(in) :: status        !< the run's status ('completed', 'failed at step N', ...)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
+      integer :: ios
+      character(len=msg_len) :: why
       stat = 0
       if (.not. x%active) return
       x%status = status
-      call write_xml(x, fid, stat, errmsg)
+      call write_xml(x, stat, errmsg)
+      call h5io_close(x%vid, ios, why)
+      x%vid = -1
+      if (ios /= 0 .and. stat == 0) then
+         stat = ios
+         errmsg = x%views_path // ': ' // trim(why)
+      end if
       x%active = .false.
    end subroutine xdmf_close
 
    ! ============================================================== the XML
 
-   !> Flushes the results file, writes the XML to <prefix>.xdmf.tmp and
-   !> renames it over <prefix>.xdmf.
-   subroutine write_xml(x, fid, stat, errmsg)
+   !> Writes the XML to <prefix>.xdmf.tmp and renames it over <prefix>.xdmf
+   !> (the views it names flushed before).
+   subroutine write_xml(x, stat, errmsg)
       type(xdmf_t), intent(inout) :: x
-      integer(hid_t), intent(in) :: fid
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       character(len=msg_len) :: iomsg
-      character(len=:), allocatable :: tmp, h5, mesh_points, peak
+      character(len=:), allocatable :: tmp, h5, views, mesh_points, peak
       integer :: u, k, s
 
-      call h5io_flush(fid, stat, errmsg)
-      if (stat /= 0) return
       h5 = xml_escaped(x%h5_name) // ':/'
+      views = xml_escaped(x%views_name) // ':/'
       mesh_points = 'mesh/coordinates'
       peak = 'peak/'
       if (x%whole) then
@@ -337,10 +446,10 @@ contains
          write (u, '(a)') '        <Information Name="step" Value="' // int_str(x%step(s)) // '"/>'
          write (u, '(a)') '        <Information Name="force_N" Value="' // trim(x%force(s)) // '"/>'
          do k = 1, ndof_node
-            call attribute(trim(freedom_name(k)), view_path(x, k, s))
+            call attribute(trim(freedom_name(k)), views // view_path(x, k, s))
          end do
          do k = 1, ndof_node
-            call attribute('peak_' // trim(freedom_name(k)), peak // trim(freedom_name(k)))
+            call attribute('peak_' // trim(freedom_name(k)), h5 // peak // trim(freedom_name(k)))
          end do
          write (u, '(a)') '      </Grid>'
       end do snapshots
@@ -361,7 +470,7 @@ contains
       subroutine attribute(name, path)
          character(len=*), intent(in) :: name, path
          write (u, '(a)') '        <Attribute Name="' // name // '" AttributeType="Scalar" Center="Node">'
-         write (u, '(a)') '          ' // data_item('Float', 8, int_str(x%nnode), h5 // path)
+         write (u, '(a)') '          ' // data_item('Float', 8, int_str(x%nnode), path)
          write (u, '(a)') '        </Attribute>'
       end subroutine attribute
 

@@ -47,13 +47,15 @@ module run_recorder
       col_strain_energy, col_contact_work, col_contact_energy, col_energy_error, col_branch, col_contact_iter, &
       col_solves, nhist_strength, history_width, history_slot, col_failure_index, col_failure_mode
    use file_system, only: truncate_file, file_probe_t, open_probe, probe_size, close_probe
-   use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_flush, &
-      results_leave, results_finish
+   use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_tick, &
+      results_flush, results_leave, results_closing, results_finish
+   use restart_io, only: put_tag, take_tag, put_real, take_real, put_int, take_int, put_flag, take_flag, put_reals, &
+      take_reals, put_ints, take_ints, put_impactor, take_impactor, put_pattern, take_pattern
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
    use progress_line, only: progress_t, progress_start, progress_step, progress_end
    implicit none
    private
-   public :: record_t, record_open, record_step, record_close
+   public :: record_t, record_open, record_step, record_close, record_save_state, record_load_state
 
    !> Deflection over thickness beyond which von Karman's theory of moderately
    !> large deflections is no longer trusted (a warning, not an error).
@@ -76,6 +78,7 @@ module run_recorder
    !> What a run has recorded so far.
    type :: record_t
       logical :: stop = .false.                  !< the run must end after this step
+      logical :: restart_due = .false.           !< the step ended with the files flushed: a restart point is due
       character(len=:), allocatable :: stop_status   !< why (the summary's status)
       integer :: exit_status = 0                 !< the program's exit status then (1)
       integer :: hist_unit = -1                  !< <prefix>_history.dat
@@ -110,6 +113,8 @@ module run_recorder
       real(dp) :: c_plate = -1, c_impactor = 0, max_slope = 0
       logical :: warned(nwarn) = .false.
       type(progress_t) :: progress               !< the progress line on standard error (src/results/progress_line.f90)
+      ! (a figure added here that a run carries from step to step is saved and
+      ! restored by record_save_state and record_load_state: a restart)
    end type record_t
 
    !> What record_step knows of the step it records, for its parts.
@@ -157,11 +162,7 @@ contains
       type(column_t) :: col
       integer :: c
 
-      rec%every = deck%every;  rec%fields_every = deck%fields_every
-      rec%nstep = nint(deck%t_end/deck%dt)
-      rec%stop_on_warning = deck%stop_on_warning
-      rec%dt = deck%dt;  rec%mass = deck%mass;  rec%h = deck%h
-      rec%edges = deck%edges
+      call take_settings(rec, deck)
       rec%e0 = 0.5_dp*deck%mass*deck%velocity**2
       rec%imp_prev = imp
       rec%d_prev = [(0.0_dp, c = 1, model%msh%neq)]
@@ -203,7 +204,19 @@ contains
       row(col_ke_impactor) = rec%e0
       call write_row(rec, row, stat, errmsg)
       call progress_start(rec%progress, rec%nstep, deck%t_end)
+      if (stat == 0) call results_flush(rec%h5, stat, errmsg)     ! row 0 in every file: the first restart point
    end subroutine record_open
+
+   !> The deck's settings the record keeps.
+   subroutine take_settings(rec, deck)
+      type(record_t), intent(inout) :: rec          !< the record
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      rec%every = deck%every;  rec%fields_every = deck%fields_every
+      rec%nstep = nint(deck%t_end/deck%dt)
+      rec%stop_on_warning = deck%stop_on_warning
+      rec%dt = deck%dt;  rec%mass = deck%mass;  rec%h = deck%h
+      rec%edges = deck%edges
+   end subroutine take_settings
 
    !> Records the step just accepted (module header). ic is the step's
    !> contact iterations, converged whether its iterations met eq. (17)
@@ -224,6 +237,7 @@ contains
       type(step_figures_t) :: fig
 
       stat = 0
+      rec%restart_due = .false.
       fig%step = step
       fig%t = real(step, dp)*rec%dt
       fig%ic = ic
@@ -248,6 +262,8 @@ contains
       if (stat /= 0) return
       call step_warnings(rec, fig, solver, cit, converged, stat, errmsg)
       call progress_step(rec%progress, step, fig%t)
+      ! once a second the files are flushed: a restart point is due (src/results/restart_point.f90)
+      if (stat == 0) call results_tick(rec%h5, rec%restart_due, stat, errmsg)
    end subroutine record_step
 
    !> The energies of every step: the contact force's work on the plate, by
@@ -546,6 +562,7 @@ contains
       call progress_end(rec%progress)
       call closing_warnings(rec, model)
       call run_summary(rec, solver, status, hist, imp, s)
+      call results_closing(rec%h5)                  ! <prefix>.h5 open for its last words
       call damage_close(rec%damage, model, s, rec%h5, dstat, dtext)
       call summary_integer(s, 'warnings', rec%warnings)
       call summary_real(s, 'cpu_s', 'cpu', 's', cpu_s, 1.0_dp)
@@ -670,6 +687,104 @@ contains
          rec%time_of_peak*1.0e6_dp, ' us; contacts ', rec%contacts, '; max deflection ', &
          rec%max_deflection*1.0e3_dp, ' mm; cpu ', cpu_s, ' s'
    end subroutine last_words
+
+
+   ! ============================================================== restart
+
+   !> Writes what the record carries from step to step (a restart point,
+   !> src/results/restart_point.f90): the energies, the previous step's
+   !> impactor, pattern and plate, the summary's running figures and
+   !> maxima, the warnings given, the history file's length, and with
+   !> &strength the damage record's maps and maxima.
+   subroutine record_save_state(rec, u, stat)
+      type(record_t), intent(in) :: rec             !< the record
+      integer, intent(in) :: u                      !< the restart file, an open stream
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      call put_tag(u, 'record', stat)
+      call put_reals(u, [rec%e0, rec%contact_work, rec%contact_energy, rec%peak_force, rec%time_of_peak, &
+         rec%first_contact_start, rec%first_contact_end, rec%max_deflection, rec%max_strain_y, &
+         rec%max_energy_error, rec%energy_created, rec%energy_lost, rec%max_w_over_h, rec%w_bend_max, &
+         rec%diverged_at, rec%c_plate, rec%c_impactor, rec%max_slope], stat)
+      call put_ints(u, [rec%steps, rec%contacts, rec%contact_iterations, rec%max_contact_iter, rec%max_solves, &
+         rec%unconverged_steps, rec%first_unconverged, rec%nonlinear_fallback_steps, rec%contact_fallback_steps, &
+         rec%warnings, rec%mixed_seen, rec%solves_before, merge(1, 0, rec%in_contact), merge(1, 0, rec%warned)], stat)
+      call put_real(u, real(rec%hist_bytes, dp), stat)
+      call put_impactor(u, rec%imp_prev, stat)
+      call put_pattern(u, rec%pattern_prev, stat)
+      call put_reals(u, rec%d_prev, stat)
+      call put_flag(u, rec%damage%active, stat)
+      if (.not. rec%damage%active) return
+      call put_reals(u, [rec%damage%smax, rec%damage%step_fi, rec%damage%max_fi, rec%damage%max_time, &
+         rec%damage%onset, rec%damage%onset_fi, rec%damage%peak_force, rec%damage%peak_time], stat)
+      call put_ints(u, [rec%damage%step_mode, rec%damage%max_mode, rec%damage%max_ply, rec%damage%max_point, &
+         rec%damage%onset_mode, rec%damage%onset_ply, rec%damage%onset_point, rec%damage%peak_step], stat)
+      call put_reals(u, reshape(rec%damage%fi_max, [size(rec%damage%fi_max)]), stat)
+      call put_ints(u, reshape(rec%damage%mode_max, [size(rec%damage%mode_max)]), stat)
+      call put_reals(u, reshape(rec%damage%onset_time, [size(rec%damage%onset_time)]), stat)
+      call put_reals(u, rec%damage%d_peak, stat)
+   end subroutine record_save_state
+
+   !> A restart: the record of the deck and model (record_open's settings)
+   !> with the figures record_save_state wrote; its files are opened again
+   !> by the caller (src/results/restart_point.f90).
+   subroutine record_load_state(rec, deck, model, u, stat)
+      type(record_t), intent(out) :: rec            !< the record
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      type(model_t), intent(in) :: model            !< the model
+      integer, intent(in) :: u                      !< the restart file, an open stream at the record's part
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      real(dp), allocatable :: r(:)
+      integer, allocatable :: i(:)
+      real(dp) :: bytes
+      logical :: active
+
+      call take_settings(rec, deck)
+      call damage_open(rec%damage, deck, model)
+      rec%ncol = history_width(rec%damage%active)
+      call take_tag(u, 'record', stat)
+      call take_reals(u, r, stat, 18)
+      call take_ints(u, i, stat)
+      if (stat == 0 .and. size(i) /= 13 + nwarn) stat = 1
+      if (stat /= 0) return
+      rec%e0 = r(1);  rec%contact_work = r(2);  rec%contact_energy = r(3);  rec%peak_force = r(4)
+      rec%time_of_peak = r(5);  rec%first_contact_start = r(6);  rec%first_contact_end = r(7)
+      rec%max_deflection = r(8);  rec%max_strain_y = r(9);  rec%max_energy_error = r(10)
+      rec%energy_created = r(11);  rec%energy_lost = r(12);  rec%max_w_over_h = r(13);  rec%w_bend_max = r(14)
+      rec%diverged_at = r(15);  rec%c_plate = r(16);  rec%c_impactor = r(17);  rec%max_slope = r(18)
+      rec%steps = i(1);  rec%contacts = i(2);  rec%contact_iterations = i(3);  rec%max_contact_iter = i(4)
+      rec%max_solves = i(5);  rec%unconverged_steps = i(6);  rec%first_unconverged = i(7)
+      rec%nonlinear_fallback_steps = i(8);  rec%contact_fallback_steps = i(9);  rec%warnings = i(10)
+      rec%mixed_seen = i(11);  rec%solves_before = i(12);  rec%in_contact = i(13) /= 0
+      rec%warned = i(14:) /= 0
+      bytes = 0.0_dp
+      call take_real(u, bytes, stat)
+      rec%hist_bytes = nint(bytes, int64)
+      call take_impactor(u, rec%imp_prev, stat)
+      call take_pattern(u, rec%pattern_prev, stat)
+      call take_reals(u, rec%d_prev, stat, model%msh%neq)
+      active = .false.
+      call take_flag(u, active, stat)
+      if (stat == 0 .and. active .neqv. rec%damage%active) stat = 1
+      if (stat /= 0 .or. .not. active) return
+      call take_reals(u, r, stat, 12)
+      call take_ints(u, i, stat)
+      if (stat == 0 .and. size(i) /= 8) stat = 1
+      if (stat /= 0) return
+      rec%damage%smax = r(1:5);  rec%damage%step_fi = r(6);  rec%damage%max_fi = r(7)
+      rec%damage%max_time = r(8);  rec%damage%onset = r(9);  rec%damage%onset_fi = r(10)
+      rec%damage%peak_force = r(11);  rec%damage%peak_time = r(12)
+      rec%damage%step_mode = i(1);  rec%damage%max_mode = i(2);  rec%damage%max_ply = i(3)
+      rec%damage%max_point = i(4);  rec%damage%onset_mode = i(5);  rec%damage%onset_ply = i(6)
+      rec%damage%onset_point = i(7);  rec%damage%peak_step = i(8)
+      call take_reals(u, r, stat, size(rec%damage%fi_max))
+      if (stat == 0) rec%damage%fi_max = reshape(r, shape(rec%damage%fi_max))
+      call take_ints(u, i, stat)
+      if (stat == 0 .and. size(i) /= size(rec%damage%mode_max)) stat = 1
+      if (stat == 0) rec%damage%mode_max = reshape(i, shape(rec%damage%mode_max))
+      call take_reals(u, r, stat, size(rec%damage%onset_time))
+      if (stat == 0) rec%damage%onset_time = reshape(r, shape(rec%damage%onset_time))
+      call take_reals(u, rec%damage%d_peak, stat, model%msh%neq)
+   end subroutine record_load_state
 
    ! ============================================================== helpers
 

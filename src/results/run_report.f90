@@ -53,6 +53,7 @@ contains
       write (u, '(a)') 'options:'
       write (u, '(a)') '  --check              read, echo, build and factor; stop before the time loop (a data check)'
       write (u, '(a)') '  --overwrite          replace the results of an earlier run with the same prefix'
+      write (u, '(a)') '  --restart            continue the run at the deck''s prefix from its last restart point'
       write (u, '(a)') '  --set group.var=val  set a deck variable after reading the deck (repeatable),'
       write (u, '(a)') '                       checked like the deck: --set analysis.dt=1e-6 --set mesh.nx=18'
       write (u, '(a)') '  --trace STEP[,STEP]  print every box of the flowchart (Fig. 3) for those time steps'

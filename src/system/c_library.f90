@@ -6,12 +6,13 @@
 !> a run) and src/system/process_stop.f90 (signals, the exit). Paths go in as C strings
 !> (with a terminating c_null_char).
 module c_library
-   use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_ptr, c_funptr, c_int64_t
+   use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_ptr, c_funptr, c_int64_t, c_size_t
    implicit none
    private
    public :: statvfs_t, rlimit_t
    public :: c_fopen, c_fclose, c_fileno, c_rename, c_lseek, c_truncate, c_sysconf, c_mkdir, c_flock, &
              c_statvfs, c_getrlimit, c_signal, c_exit, c_isatty
+   public :: c_open, c_close, c_fsync, c_unlink, c_write
 
    !> struct statvfs (<sys/statvfs.h>): eleven unsigned longs (read as
    !> signed: sizes below 2^63) and six ints.
@@ -124,6 +125,41 @@ module c_library
          integer(c_int), value :: fd
          integer(c_int) :: r
       end function c_isatty
+      ! <fcntl.h>, <unistd.h>: the raw file calls, async-signal-safe (a signal
+      ! handler may make them: src/system/process_stop.f90)
+      !> int open(const char *path, int flags)  (no O_CREAT: no third argument)
+      function c_open(path, flags) bind(c, name='open') result(fd)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int), value :: flags
+         integer(c_int) :: fd
+      end function c_open
+      !> int close(int fd)
+      function c_close(fd) bind(c, name='close') result(r)
+         import :: c_int
+         integer(c_int), value :: fd
+         integer(c_int) :: r
+      end function c_close
+      !> int fsync(int fd)
+      function c_fsync(fd) bind(c, name='fsync') result(r)
+         import :: c_int
+         integer(c_int), value :: fd
+         integer(c_int) :: r
+      end function c_fsync
+      !> int unlink(const char *path)
+      function c_unlink(path) bind(c, name='unlink') result(r)
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int) :: r
+      end function c_unlink
+      !> ssize_t write(int fd, const void *buf, size_t count)  (ssize_t: long)
+      function c_write(fd, buf, count) bind(c, name='write') result(r)
+         import :: c_int, c_char, c_size_t, c_long
+         integer(c_int), value :: fd
+         character(kind=c_char), intent(in) :: buf(*)
+         integer(c_size_t), value :: count
+         integer(c_long) :: r
+      end function c_write
    end interface
 
 end module c_library

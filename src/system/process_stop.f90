@@ -1,19 +1,32 @@
-!> How the process stops: after the step on a stop signal, or at once with
-!> an exit status.
+!> How the process stops: on a stop signal, at once during the set-up and
+!> after the step during the run; or at once with an exit status.
 !>
-!> Stop signals. A run that is asked to stop (SIGTERM: a batch system's time limit, e.g.
-!> Slurm's; SIGINT: Ctrl-C) ends at the end of the step it is in, with its
-!> results written and the summary saying so (src/impact.f90), instead
-!> of dying mid-write.
+!> Stop signals: SIGTERM (a batch system's time limit, e.g. Slurm's), SIGINT
+!> (Ctrl-C), SIGHUP (the terminal gone), SIGUSR1 and SIGUSR2 (what batch
+!> systems send before a limit: Slurm's --signal, PBS, LSF). The program
+!> catches them from its first instruction (catch_stop_signals) through the
+!> C library's signal(); the handler, on_signal, stays installed, and what
+!> it does depends on the phase:
 !>
-!> catch_stop_signals installs a handler for both through the C library's
-!> signal(); the handler only records the signal's number (an assignment is
-!> all a handler may safely do) and stays installed: the same signal often
-!> comes twice (timeout(1) sends it to the program and to its process
-!> group; Slurm to every process of the job), and the second must not kill
-!> the run while it writes its results. The time loop (src/impact.f90) asks
-!> stop_signal_caught() after every step (SIGKILL or SIGQUIT still end a
-!> step that hangs).
+!>  - the set-up (reading the deck, building the model, factoring the
+!>    matrix: 23 s on a 72 x 48 full plate, in LAPACK's dpbtrf, which no
+!>    flag reaches): nothing is computed that must be kept, so the handler
+!>    ends the process itself, at once: it removes the result files the run
+!>    has claimed and not yet written (remove_on_stop: still empty), writes
+!>    'impact: stopped by signal N during set-up' on standard error and
+!>    exits with status 128 + N. It uses only calls that POSIX allows in a
+!>    handler (open, lseek, close, unlink, write, _exit), on texts prepared
+!>    before (no allocation, no Fortran I/O). A job stopped in its set-up
+!>    leaves nothing behind, so the same job requeued starts afresh.
+!>  - the run (stop_after_step, called before the first result is written):
+!>    the handler only records the signal's number (an assignment is all a
+!>    handler may safely do while the program writes); the time loop
+!>    (src/impact.f90) asks stop_signal_caught() after every step and ends
+!>    the run there, its results written and a restart point saved, exit
+!>    status 128 + N. The same signal often comes twice (timeout(1) sends it
+!>    to the program and to its process group; Slurm to every process of
+!>    the job): the second must not kill the run while it writes. SIGKILL
+!>    still ends a step that hangs.
 !>
 !> keep_file_size_errors ignores SIGXFSZ: a write past the process's
 !> file-size limit (ulimit -f) then fails with EFBIG, which the writer
@@ -21,10 +34,10 @@
 !> files half written.
 !>
 !> Module state, the one exception in this code to "no saved hidden state":
-!> the number of the signal caught. A signal
-!> handler receives nothing but the signal's number and can reach nothing
-!> but global data, so the flag must live here; it is volatile because it
-!> changes outside the normal flow of the program.
+!> the phase, the signal caught and the set-up's files and message. A
+!> signal handler receives nothing but the signal's number and can reach
+!> nothing but global data, so they must live here; the phase and the signal
+!> are volatile because they change outside the normal flow of the program.
 !>
 !> The exit status. Fortran 2008's `error stop 1` prints "ERROR STOP 1" after the program's
 !> own message, and gfortran adds a note on the floating-point flags; a
@@ -36,43 +49,119 @@
 !> there (src/results/results_hdf5.f90), or crash in the attempt. So the caller
 !> closes its own files first; every path of src/impact.f90 does.
 module process_stop
-   use, intrinsic :: iso_c_binding, only: c_int, c_funptr, c_funloc, c_intptr_t
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_funptr, c_funloc, c_intptr_t, c_size_t, c_long, &
+      c_int64_t, c_null_char
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-   use c_library, only: c_signal, c_exit
+   use c_library, only: c_signal, c_exit, c_open, c_close, c_lseek, c_unlink, c_write
    implicit none
    private
-   public :: catch_stop_signals, stop_signal_caught, keep_file_size_errors, exit_program
+   public :: catch_stop_signals, remove_on_stop, stop_after_step, stop_signal_caught, keep_file_size_errors, &
+             exit_program
 
-   !> The signals caught, by their POSIX numbers (the same on Linux, the BSDs
-   !> and macOS).
-   integer, parameter :: sigint = 2, sigterm = 15
+   !> The stop signals, by their numbers on Linux (<signal.h>): SIGHUP,
+   !> SIGINT, SIGUSR1, SIGUSR2, SIGTERM.
+   integer(c_int), parameter :: stop_signals(5) = [1_c_int, 2_c_int, 10_c_int, 12_c_int, 15_c_int]
    !> SIGXFSZ (Linux, <signal.h>) and SIG_IGN, the handler that ignores a signal.
    integer(c_int), parameter :: sigxfsz = 25
    integer(c_intptr_t), parameter :: sig_ign = 1
+   !> The phases (module header): a signal ends the set-up at once; it
+   !> ends the run after its step.
+   integer(c_int), parameter :: at_once = 0, after_step = 1
+   !> open(2)'s O_RDONLY, lseek(2)'s SEEK_END, standard error's descriptor.
+   integer(c_int), parameter :: o_rdonly = 0, seek_end = 2, stderr_fd = 2
+   !> Files the set-up may leave (claimed, empty) and the longest path held.
+   integer, parameter :: max_files = 4, max_path = 4096
+   !> The set-up's last words, before and after the signal's number.
+   character(len=*), parameter :: words_before = 'impact: stopped by signal ', &
+      words_after = ' during set-up: no results written' // achar(10)
 
-   !> The signal caught so far (0: none). Set by on_signal only.
+   !> The phase, and the signal caught so far in the run (0: none); set by
+   !> on_signal and stop_after_step only.
+   integer(c_int), volatile, save :: phase = at_once
    integer(c_int), volatile, save :: caught = 0_c_int
+   !> The files to remove when a signal ends the set-up while they are
+   !> empty: C strings, null-terminated.
+   integer, save :: nfiles = 0
+   character(kind=c_char), save :: files(max_path + 1, max_files) = c_null_char
+   !> The set-up's last words, filled in by the handler.
+   character(kind=c_char), save :: words(len(words_before) + 3 + len(words_after)) = ' '
 
 contains
 
-   !> From now on SIGINT and SIGTERM are recorded instead of ending the
-   !> program.
+   !> From now on a stop signal (module header) ends the set-up at once; to
+   !> be called first.
    subroutine catch_stop_signals()
       type(c_funptr) :: previous
+      integer :: k
+      phase = at_once
       caught = 0_c_int
-      previous = c_signal(int(sigint, c_int), c_funloc(on_signal))
-      previous = c_signal(int(sigterm, c_int), c_funloc(on_signal))
+      do k = 1, size(stop_signals)
+         previous = c_signal(stop_signals(k), c_funloc(on_signal))
+      end do
    end subroutine catch_stop_signals
 
-   !> The number of the stop signal received so far, 0 if none.
+   !> The file `path`, which the run created empty (its claim), is removed
+   !> when a stop signal ends the set-up and it is still empty; ignored
+   !> beyond max_files files or max_path characters (then it stays).
+   subroutine remove_on_stop(path)
+      character(len=*), intent(in) :: path   !< the file
+      integer :: k
+      if (nfiles == max_files .or. len(path) > max_path) return
+      do k = 1, len(path)
+         files(k, nfiles + 1) = path(k:k)
+      end do
+      files(len(path) + 1, nfiles + 1) = c_null_char
+      nfiles = nfiles + 1
+   end subroutine remove_on_stop
+
+   !> From now on a stop signal is recorded and ends the run after its step
+   !> (stop_signal_caught); to be called before the first result is written.
+   subroutine stop_after_step()
+      phase = after_step
+   end subroutine stop_after_step
+
+   !> The number of the stop signal received during the run so far, 0 if none.
    integer function stop_signal_caught() result(signum)
       signum = int(caught)
    end function stop_signal_caught
 
-   !> The handler: records the signal, nothing else.
+   !> The handler (module header): in the run it records the signal; in the
+   !> set-up it removes the empty claimed files, says so and ends the process.
    subroutine on_signal(signum) bind(c)
       integer(c_int), value :: signum   !< the signal received
-      caught = signum
+      integer(c_int) :: fd, r
+      integer(c_int64_t) :: bytes
+      integer(c_long) :: written
+      integer :: k, n
+
+      if (phase == after_step) then
+         caught = signum
+         return
+      end if
+      do k = 1, nfiles
+         fd = c_open(files(:, k), o_rdonly)
+         if (fd < 0) cycle
+         bytes = c_lseek(fd, 0_c_int64_t, seek_end)
+         r = c_close(fd)
+         if (bytes == 0) r = c_unlink(files(:, k))
+      end do
+      n = 0
+      do k = 1, len(words_before)
+         n = n + 1
+         words(n) = words_before(k:k)
+      end do
+      if (signum >= 10) then
+         n = n + 1
+         words(n) = achar(48 + signum/10)
+      end if
+      n = n + 1
+      words(n) = achar(48 + mod(signum, 10))
+      do k = 1, len(words_after)
+         n = n + 1
+         words(n) = words_after(k:k)
+      end do
+      written = c_write(stderr_fd, words, int(n, c_size_t))
+      call c_exit(128 + signum)
    end subroutine on_signal
 
    !> From now on a write past the file-size limit fails (EFBIG) instead of

@@ -1,0 +1,254 @@
+!> The pieces of a restart file (src/results/restart_point.f90): a stream of
+!> unformatted records (access = 'stream', the machine's own layout), each
+!> part behind an eight-character tag that the reader checks, so that a
+!> file of another layout is refused, not misread. Every routine keeps the
+!> first failure in `stat` (the iostat; nothing is read or written after
+!> it), so a part is a list of calls and one test at its end.
+!>
+!> What is written: texts (their length, then their characters), reals and
+!> integers (one, or a vector with its size), logicals (as 0 or 1), an
+!> impactor (eq. 16, 21) and a contact load pattern (src/model/contact_load.f90:
+!> its equations and coefficients, and the polynomials it keeps as a cache,
+!> which a restarted run must find as they were to give the same bits).
+module restart_io
+   use kinds, only: dp
+   use newmark, only: impactor_t
+   use contact_load, only: load_pattern_t
+   implicit none
+   private
+   public :: tag_len, put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, &
+             put_flag, take_flag, put_reals, take_reals, put_ints, take_ints, put_impactor, take_impactor, &
+             put_pattern, take_pattern
+
+   !> Characters of a tag.
+   integer, parameter :: tag_len = 8
+   !> stat when a tag is not the one expected.
+   integer, parameter :: wrong_tag = -100
+
+contains
+
+   !> Writes the tag of a part.
+   subroutine put_tag(u, tag, stat)
+      integer, intent(in) :: u                      !< the open stream
+      character(len=*), intent(in) :: tag           !< the part's name (tag_len characters at most)
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      character(len=tag_len) :: t
+      if (stat /= 0) return
+      t = tag
+      write (u, iostat=stat) t
+   end subroutine put_tag
+
+   !> Reads a tag: stat /= 0 unless it is `tag`.
+   subroutine take_tag(u, tag, stat)
+      integer, intent(in) :: u                      !< the open stream
+      character(len=*), intent(in) :: tag           !< the part expected
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      character(len=tag_len) :: t
+      if (stat /= 0) return
+      read (u, iostat=stat) t
+      if (stat == 0 .and. t /= tag) stat = wrong_tag
+   end subroutine take_tag
+
+   !> A text: its length, then its characters.
+   subroutine put_text(u, text, stat)
+      integer, intent(in) :: u                      !< the open stream
+      character(len=*), intent(in) :: text          !< the text
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      if (stat /= 0) return
+      write (u, iostat=stat) len(text)
+      if (stat == 0 .and. len(text) > 0) write (u, iostat=stat) text
+   end subroutine put_text
+
+   !> Reads a text written by put_text.
+   subroutine take_text(u, text, stat)
+      integer, intent(in) :: u                      !< the open stream
+      character(len=:), allocatable, intent(out) :: text   !< the text
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      integer :: n
+      text = ''
+      if (stat /= 0) return
+      read (u, iostat=stat) n
+      if (stat /= 0) return
+      if (n < 0 .or. n > 10**7) then
+         stat = wrong_tag
+         return
+      end if
+      text = repeat(' ', n)
+      if (n > 0) read (u, iostat=stat) text
+   end subroutine take_text
+
+   !> One real.
+   subroutine put_real(u, x, stat)
+      integer, intent(in) :: u                      !< the open stream
+      real(dp), intent(in) :: x                     !< the value
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      if (stat == 0) write (u, iostat=stat) x
+   end subroutine put_real
+
+   !> Reads one real.
+   subroutine take_real(u, x, stat)
+      integer, intent(in) :: u                      !< the open stream
+      real(dp), intent(inout) :: x                  !< the value (unchanged after a failure)
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      if (stat == 0) read (u, iostat=stat) x
+   end subroutine take_real
+
+   !> One integer.
+   subroutine put_int(u, i, stat)
+      integer, intent(in) :: u                      !< the open stream
+      integer, intent(in) :: i                      !< the value
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      if (stat == 0) write (u, iostat=stat) i
+   end subroutine put_int
+
+   !> Reads one integer.
+   subroutine take_int(u, i, stat)
+      integer, intent(in) :: u                      !< the open stream
+      integer, intent(inout) :: i                   !< the value (unchanged after a failure)
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      if (stat == 0) read (u, iostat=stat) i
+   end subroutine take_int
+
+   !> One logical, as 0 or 1.
+   subroutine put_flag(u, l, stat)
+      integer, intent(in) :: u                      !< the open stream
+      logical, intent(in) :: l                      !< the value
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      call put_int(u, merge(1, 0, l), stat)
+   end subroutine put_flag
+
+   !> Reads one logical.
+   subroutine take_flag(u, l, stat)
+      integer, intent(in) :: u                      !< the open stream
+      logical, intent(inout) :: l                   !< the value (unchanged after a failure)
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      integer :: i
+      i = merge(1, 0, l)
+      call take_int(u, i, stat)
+      l = i /= 0
+   end subroutine take_flag
+
+   !> A vector of reals: its size, then its values.
+   subroutine put_reals(u, x, stat)
+      integer, intent(in) :: u                      !< the open stream
+      real(dp), intent(in) :: x(:)                  !< the values
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      call put_int(u, size(x), stat)
+      if (stat == 0 .and. size(x) > 0) write (u, iostat=stat) x
+   end subroutine put_reals
+
+   !> Reads a vector written by put_reals; with `n`, its size must be n.
+   subroutine take_reals(u, x, stat, n)
+      integer, intent(in) :: u                      !< the open stream
+      real(dp), allocatable, intent(inout) :: x(:)  !< the values
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      integer, intent(in), optional :: n            !< the size expected
+      integer :: m
+      m = -1
+      call take_int(u, m, stat)
+      if (stat /= 0) return
+      if (m < 0 .or. m > 10**9) stat = wrong_tag
+      if (present(n)) then
+         if (m /= n) stat = wrong_tag
+      end if
+      if (stat /= 0) return
+      if (allocated(x)) deallocate (x)
+      allocate (x(m))
+      if (m > 0) read (u, iostat=stat) x
+   end subroutine take_reals
+
+   !> A vector of integers: its size, then its values.
+   subroutine put_ints(u, i, stat)
+      integer, intent(in) :: u                      !< the open stream
+      integer, intent(in) :: i(:)                   !< the values
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      call put_int(u, size(i), stat)
+      if (stat == 0 .and. size(i) > 0) write (u, iostat=stat) i
+   end subroutine put_ints
+
+   !> Reads a vector written by put_ints.
+   subroutine take_ints(u, i, stat)
+      integer, intent(in) :: u                      !< the open stream
+      integer, allocatable, intent(inout) :: i(:)   !< the values
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      integer :: m
+      m = -1
+      call take_int(u, m, stat)
+      if (stat /= 0) return
+      if (m < 0 .or. m > 10**9) then
+         stat = wrong_tag
+         return
+      end if
+      if (allocated(i)) deallocate (i)
+      allocate (i(m))
+      if (m > 0) read (u, iostat=stat) i
+   end subroutine take_ints
+
+   !> An impactor: mass, position, velocity, force.
+   subroutine put_impactor(u, imp, stat)
+      integer, intent(in) :: u                      !< the open stream
+      type(impactor_t), intent(in) :: imp           !< the impactor
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      call put_reals(u, [imp%mass, imp%w, imp%v, imp%f], stat)
+   end subroutine put_impactor
+
+   !> Reads an impactor written by put_impactor.
+   subroutine take_impactor(u, imp, stat)
+      integer, intent(in) :: u                      !< the open stream
+      type(impactor_t), intent(inout) :: imp        !< the impactor
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      real(dp), allocatable :: x(:)
+      call take_reals(u, x, stat, 4)
+      if (stat == 0) imp = impactor_t(mass=x(1), w=x(2), v=x(3), f=x(4))
+   end subroutine take_impactor
+
+   !> A contact load pattern, whole: radius, share, equations and
+   !> coefficients, the polynomials' interval, key and coefficients.
+   subroutine put_pattern(u, p, stat)
+      integer, intent(in) :: u                      !< the open stream
+      type(load_pattern_t), intent(in) :: p         !< the pattern
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      logical :: has_poly
+      call put_reals(u, [p%radius, p%total, p%valid, p%built_for], stat)
+      call put_int(u, p%n, stat)
+      if (p%n > 0) call put_ints(u, p%eq(:p%n), stat)
+      if (p%n > 0) call put_reals(u, p%c(:p%n), stat)
+      has_poly = allocated(p%poly)
+      if (has_poly) has_poly = p%n > 0 .and. size(p%poly, 2) >= p%n
+      call put_flag(u, has_poly, stat)
+      if (has_poly) call put_reals(u, reshape(p%poly(:, :p%n), [5*p%n]), stat)
+   end subroutine put_pattern
+
+   !> Reads a pattern written by put_pattern.
+   subroutine take_pattern(u, p, stat)
+      integer, intent(in) :: u                      !< the open stream
+      type(load_pattern_t), intent(inout) :: p      !< the pattern
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      real(dp), allocatable :: x(:)
+      integer, allocatable :: eq(:)
+      logical :: has_poly
+      call take_reals(u, x, stat, 10)
+      if (stat /= 0) return
+      p%radius = x(1);  p%total = x(2);  p%valid = x(3:4);  p%built_for = x(5:10)
+      call take_int(u, p%n, stat)
+      if (stat /= 0) return
+      if (p%n > 0) then
+         call take_ints(u, eq, stat)
+         call take_reals(u, x, stat, p%n)
+         if (stat /= 0) return
+         p%eq = eq
+         p%c = x
+      else
+         p%eq = [integer ::]
+         p%c = [real(dp) ::]
+      end if
+      has_poly = .false.
+      call take_flag(u, has_poly, stat)
+      if (has_poly) call take_reals(u, x, stat, 5*p%n)
+      if (.not. has_poly .or. stat /= 0) return
+      if (allocated(p%poly)) deallocate (p%poly)
+      allocate (p%poly(0:4, p%n))             ! (lower bound 0: the power of the radius)
+      p%poly(:, :) = reshape(x, [5, p%n])
+   end subroutine take_pattern
+
+end module restart_io

@@ -1,0 +1,497 @@
+!> Restart points: `impact --restart deck.nml` continues the run recorded
+!> at the deck's prefix from its last restart point, appending to the same
+!> files, and ends as the run would have ended had it never stopped: the
+!> same history rows, bit for bit, and the same summary.
+!>
+!> A restart point is <prefix>.restart, written when the files are flushed
+!> (once a second at the end of a step, src/results/results_hdf5.f90's
+!> results_tick), at the first step (step 0, so that a run that has
+!> written anything has one) and at the end of a run that completed or was
+!> stopped by a signal (src/impact.f90). It holds everything the time loop
+!> carries from one step to the next:
+!>
+!>   the deck        every variable as text (the fewest digits that read
+!>                   back to the same double), to refuse a restart with
+!>                   another deck: only &analysis t_end may change (and
+!>                   &output overwrite, which a restart sets)
+!>   the state       the step, the cpu time so far, the plate's {D}, {V},
+!>                   {A}, the impactor, the contact's history (alpha_m, F_m,
+!>                   alpha_0), the contact pattern with the polynomials it
+!>                   keeps (src/model/contact_load.f90)
+!>   the solver      its counters, the contraction estimates of scheme
+!>                   'fast' (src/scheme/fast_scheme.f90: without them the
+!>                   restarted run would probe at other steps and differ)
+!>                   and the equations of its response columns, which a
+!>                   restart computes again (the same back substitutions of
+!>                   the same factors: the same bits)
+!>   the record      the summary's running figures and maxima, the
+!>                   energies, the warnings given, the history file's
+!>                   length, the damage maps (src/results/run_recorder.f90,
+!>                   record_save_state)
+!>   the results     the rows and snapshots <prefix>.h5 holds, and its peak
+!>
+!> It is written whole to <prefix>.restart.tmp, forced to the disk
+!> (fsync) and renamed over <prefix>.restart, then the directory is forced
+!> too: the file is the previous restart point or the new one, never a
+!> part. A restart cuts the history file back to its length at the restart
+!> point and <prefix>.h5 to its rows and snapshots (a run killed after its
+!> last restart point wrote more), and makes the XDMF views anew.
+!>
+!> The file is a stream of tagged parts (src/results/restart_io.f90) in the
+!> machine's own layout: a restart continues a run on the machine and with
+!> the build that made it (a restart point of another layout is refused).
+module restart_point
+   use, intrinsic :: iso_fortran_env, only: int64
+   use, intrinsic :: iso_c_binding, only: c_int, c_null_char
+   use kinds, only: dp, msg_len
+   use number_text, only: int_str, real_str
+   use deck_schema, only: deck_t, deck_vars, value_t, deck_bind, var_key, kind_real, kind_integer, kind_logical, &
+      kind_word, kind_path, kind_reals
+   use c_library, only: c_open, c_close, c_fsync, c_unlink
+   use file_system, only: rename_file, truncate_file, file_size, open_probe, parent_directory
+   use mesh, only: ndof_node
+   use plate_model, only: model_t
+   use plate_solver, only: solver_t, contact_response
+   use contact_law, only: contact_history_t
+   use contact_load, only: load_pattern_t
+   use contact_iteration, only: contact_iteration_t
+   use newmark, only: plate_state_t, impactor_t
+   use result_files, only: reserve_summary
+   use results_hdf5, only: results_reopen
+   use run_recorder, only: record_t, record_save_state, record_load_state
+   use restart_io, only: put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, put_flag, &
+      take_flag, put_reals, take_reals, put_ints, take_ints, put_impactor, take_impactor, put_pattern, take_pattern
+   implicit none
+   private
+   public :: restart_file, restart_save, restart_check, restart_resume, restart_discard
+
+   !> The layout of the file; a restart point of another is refused.
+   integer, parameter :: layout = 1
+   !> The deck's variables a restart may change.
+   character(len=*), parameter :: free_vars(2) = [character(len=24) :: 'analysis.t_end', 'output.overwrite']
+   !> open(2)'s O_RDONLY.
+   integer(c_int), parameter :: o_rdonly = 0
+
+contains
+
+   !> <prefix>.restart, the run's restart point.
+   pure function restart_file(deck) result(path)
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      character(len=:), allocatable :: path
+      path = deck%prefix // '.restart'
+   end function restart_file
+
+   !> A run that starts afresh removes an earlier run's restart point, which
+   !> its files no longer match.
+   subroutine restart_discard(deck)
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      integer(c_int) :: r
+      r = c_unlink(restart_file(deck) // c_null_char)
+      r = c_unlink(restart_file(deck) // '.tmp' // c_null_char)
+   end subroutine restart_discard
+
+   !> Writes the restart point after step `step` (module header): the files
+   !> hold every step to it (they were just flushed).
+   subroutine restart_save(deck, step, cpu_s, plate, imp, hist, cit, solver, rec, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      integer, intent(in) :: step                   !< the last step made
+      real(dp), intent(in) :: cpu_s                 !< cpu time of the run so far (s)
+      type(plate_state_t), intent(in) :: plate      !< {D}, {V}, {A} after it
+      type(impactor_t), intent(in) :: imp           !< the impactor after it
+      type(contact_history_t), intent(in) :: hist   !< the contact history, committed
+      type(contact_iteration_t), intent(in) :: cit  !< the contact iteration (its pattern)
+      type(solver_t), intent(in) :: solver          !< the plate solver
+      type(record_t), intent(in) :: rec             !< the run's record
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure, naming the file
+      character(len=:), allocatable :: path
+      character(len=msg_len) :: iomsg
+      integer :: u, ios
+
+      path = restart_file(deck)
+      open (newunit=u, file=path // '.tmp', access='stream', form='unformatted', status='replace', &
+            action='write', iostat=stat, iomsg=iomsg)
+      if (stat /= 0) then
+         errmsg = path // '.tmp: ' // trim(iomsg)
+         return
+      end if
+      call put_tag(u, 'impactRS', stat)
+      call put_int(u, layout, stat)
+      call put_deck(u, deck, stat)
+      call put_tag(u, 'state', stat)
+      call put_int(u, step, stat)
+      call put_real(u, cpu_s, stat)
+      call put_reals(u, plate%d, stat)
+      call put_reals(u, plate%v, stat)
+      call put_reals(u, plate%a, stat)
+      call put_impactor(u, imp, stat)
+      call put_reals(u, [hist%f_m, hist%alpha_m, hist%alpha_0], stat)
+      call put_flag(u, hist%separated, stat)
+      call put_pattern(u, cit%pattern, stat)
+      call put_solver(u, solver, stat)
+      call record_save_state(rec, u, stat)
+      call put_results(u, rec, stat)
+      call put_tag(u, 'end', stat)
+      close (u, iostat=ios)
+      if (stat == 0) stat = ios
+      if (stat == 0) call force_to_disk(path // '.tmp', stat)
+      if (stat == 0) call rename_file(path // '.tmp', path, stat, iomsg)
+      if (stat == 0) call force_to_disk(directory_of(path), stat)
+      if (stat /= 0) errmsg = path // ': cannot write the restart point'
+   end subroutine restart_save
+
+   !> A restart's first look at the run's restart point: whether there is
+   !> one, and that it was written with this deck (module header) by this
+   !> layout; stat /= 0 with the differences named otherwise.
+   subroutine restart_check(deck, found, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      logical, intent(out) :: found                 !< there is a restart point
+      integer, intent(out) :: stat                  !< 0 when the run may continue from it
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      character(len=:), allocatable :: path, changed
+      integer :: u
+
+      stat = 0
+      path = restart_file(deck)
+      inquire (file=path, exist=found)
+      if (.not. found) return
+      call open_point(path, u, stat, errmsg)
+      if (stat /= 0) return
+      call compare_deck(u, deck, changed, stat)
+      close (u)
+      if (stat /= 0) then
+         errmsg = path // ': not a restart point of this build of impact (or damaged)'
+      else if (len(changed) > 0) then
+         stat = 1
+         errmsg = deck%source // ': --restart: the deck differs from the one of the run at its restart point (' &
+            // path // '): ' // changed // '; only &analysis t_end may change'
+      end if
+   end subroutine restart_check
+
+   !> Continues the run from its restart point: the state, the solver, the
+   !> record and the files as they were there (module header); `step` is
+   !> the last step made, cpu_s the cpu time spent before.
+   subroutine restart_resume(deck, model, last_step, solver, plate, imp, hist, cit, rec, step, cpu_s, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      type(model_t), intent(in) :: model            !< the model
+      integer, intent(in) :: last_step              !< the run's last step (t_end/dt)
+      type(solver_t), intent(inout) :: solver       !< the plate solver, factored
+      type(plate_state_t), intent(out) :: plate     !< {D}, {V}, {A}
+      type(impactor_t), intent(out) :: imp          !< the impactor
+      type(contact_history_t), intent(out) :: hist  !< the contact history
+      type(contact_iteration_t), intent(inout) :: cit   !< the contact iteration: its pattern
+      type(record_t), intent(out) :: rec            !< the run's record, its files open again
+      integer, intent(out) :: step                  !< the last step made
+      real(dp), intent(out) :: cpu_s                !< cpu time spent before (s)
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      character(len=:), allocatable :: path, changed
+      real(dp), allocatable :: x(:)
+      integer, allocatable :: columns(:)
+      integer :: u, rows, snaps, peak_step
+      real(dp) :: peak(2)
+      real(dp), allocatable :: peak_fields(:)
+      logical :: h5
+
+      path = restart_file(deck)
+      step = 0;  cpu_s = 0.0_dp
+      call open_point(path, u, stat, errmsg)
+      if (stat /= 0) return
+      call compare_deck(u, deck, changed, stat)
+      call take_tag(u, 'state', stat)
+      call take_int(u, step, stat)
+      call take_real(u, cpu_s, stat)
+      call take_reals(u, plate%d, stat, model%msh%neq)
+      call take_reals(u, plate%v, stat, model%msh%neq)
+      call take_reals(u, plate%a, stat, model%msh%neq)
+      call take_impactor(u, imp, stat)
+      call take_reals(u, x, stat, 3)
+      if (stat == 0) hist = contact_history_t(f_m=x(1), alpha_m=x(2), alpha_0=x(3))
+      call take_flag(u, hist%separated, stat)
+      call take_pattern(u, cit%pattern, stat)
+      call take_solver(u, solver, columns, stat)
+      call record_load_state(rec, deck, model, u, stat)
+      h5 = .false.;  rows = 0;  snaps = 0;  peak_step = 0;  peak = 0.0_dp
+      call take_results(u, h5, rows, snaps, peak_step, peak, peak_fields, stat)
+      call take_tag(u, 'end', stat)
+      close (u)
+      if (stat == 0 .and. h5) then
+         if (size(peak_fields) /= ndof_node*model%msh%nnode) stat = 1
+      end if
+      if (stat /= 0) then
+         stat = 1
+         errmsg = path // ': not a restart point of this run (or damaged)'
+         return
+      end if
+      if (step > last_step) then
+         stat = 1
+         errmsg = deck%source // ': &analysis t_end = ' // real_str(deck%t_end) // ' s ends at step ' &
+            // int_str(last_step) // ', before the restart point''s step ' // int_str(step)
+         return
+      end if
+      call response_columns(solver, columns, stat, errmsg)
+      if (stat == 0) call reopen_history(deck, rec, stat, errmsg)
+      if (stat == 0) call reserve_summary(deck, stat, errmsg)
+      if (stat == 0 .and. h5 .neqv. deck%hdf5) then
+         stat = 1
+         errmsg = path // ': its run had &output hdf5 = ' // trim(merge('.true. ', '.false.', h5))
+      end if
+      if (stat == 0 .and. h5) call results_reopen(deck, model%msh, rows, snaps, peak_step, peak(1), peak(2), &
+         reshape(peak_fields, [ndof_node, model%msh%nnode]), rec%h5, stat, errmsg)
+   end subroutine restart_resume
+
+   ! ============================================================== parts
+
+   !> Opens a restart point for reading and checks its tag and layout.
+   subroutine open_point(path, u, stat, errmsg)
+      character(len=*), intent(in) :: path          !< <prefix>.restart
+      integer, intent(out) :: u                     !< the open stream, at the deck's part
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      character(len=msg_len) :: iomsg
+      integer :: version
+      open (newunit=u, file=path, access='stream', form='unformatted', status='old', action='read', &
+            iostat=stat, iomsg=iomsg)
+      if (stat /= 0) then
+         errmsg = path // ': ' // trim(iomsg)
+         return
+      end if
+      version = -1
+      call take_tag(u, 'impactRS', stat)
+      call take_int(u, version, stat)
+      if (stat == 0 .and. version /= layout) stat = 1
+      if (stat /= 0) then
+         close (u)
+         errmsg = path // ': not a restart point of this build of impact'
+      end if
+   end subroutine open_point
+
+   !> The deck's variables as 'group.name' and the text of their value.
+   subroutine put_deck(u, deck, stat)
+      integer, intent(in) :: u                      !< the restart file
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      integer :: iv
+      call put_tag(u, 'deck', stat)
+      call put_int(u, size(deck_vars), stat)
+      do iv = 1, size(deck_vars)
+         call put_text(u, var_key(iv), stat)
+         call put_text(u, value_text(deck, iv), stat)
+      end do
+   end subroutine put_deck
+
+   !> Reads the deck's part and names the variables whose values differ
+   !> from `deck`'s, but for free_vars ('' when none).
+   subroutine compare_deck(u, deck, changed, stat)
+      integer, intent(in) :: u                      !< the restart file, at the deck's part
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      character(len=:), allocatable, intent(out) :: changed   !< '&group name = value (was value), ...'
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      character(len=:), allocatable :: key, then, now
+      integer :: n, k, iv, dot
+
+      changed = ''
+      now = ''            ! (else gfortran 12 at -O2 takes its length for unset in the loop)
+      n = -1
+      call take_tag(u, 'deck', stat)
+      call take_int(u, n, stat)
+      if (stat == 0 .and. n /= size(deck_vars)) stat = 1
+      variables: do k = 1, max(n, 0)
+         call take_text(u, key, stat)
+         call take_text(u, then, stat)
+         if (stat /= 0) exit variables
+         iv = k
+         if (var_key(iv) /= key) stat = 1               ! another schema: another build
+         if (stat /= 0) exit variables
+         if (any(free_vars == key)) cycle variables
+         now = value_text(deck, iv)
+         if (now == then) cycle variables
+         dot = index(key, '.')
+         if (len(changed) > 0) changed = changed // ', '
+         changed = changed // '&' // key(:dot - 1) // ' ' // key(dot + 1:) // ' = ' // now // ' (was ' // then // ')'
+      end do variables
+   end subroutine compare_deck
+
+   !> The value of variable iv of the deck as text: reals with the fewest
+   !> digits that read back to the same double (so texts are equal exactly
+   !> when values are).
+   function value_text(deck, iv) result(text)
+      type(deck_t), intent(in) :: deck              !< the deck
+      integer, intent(in) :: iv                     !< entry of deck_vars
+      character(len=:), allocatable :: text
+      type(deck_t) :: copy
+      type(value_t) :: v
+      integer :: k
+      copy = deck
+      call deck_bind(copy, iv, v, .false.)
+      select case (deck_vars(iv)%kind)
+      case (kind_real)
+         text = real_str(v%r)
+         if (.not. v%given) text = '(not given)'
+      case (kind_integer)
+         text = int_str(v%i)
+      case (kind_logical)
+         text = trim(merge('.true. ', '.false.', v%l))
+      case (kind_word, kind_path)
+         text = "'" // v%s // "'"
+      case (kind_reals)
+         text = ''
+         do k = 1, size(v%list)
+            if (k > 1) text = text // ', '
+            text = text // real_str(v%list(k))
+         end do
+      case default
+         text = '?'
+      end select
+   end function value_text
+
+   !> The solver's state that carries from step to step (module header).
+   subroutine put_solver(u, solver, stat)
+      integer, intent(in) :: u                      !< the restart file
+      type(solver_t), intent(in) :: solver          !< the plate solver
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      call put_tag(u, 'solver', stat)
+      call put_reals(u, solver%contraction, stat)
+      call put_ints(u, [solver%since_measured, solver%solves, solver%response_solves, solver%factorizations, &
+         solver%mixed_solves], stat)
+      if (allocated(solver%mixing_note)) then
+         call put_text(u, solver%mixing_note, stat)
+      else
+         call put_text(u, '', stat)
+      end if
+      call put_ints(u, solver%resp_eq(:solver%nresp), stat)
+   end subroutine put_solver
+
+   !> Reads the solver's state; `columns` are the equations of its response
+   !> columns (response_columns).
+   subroutine take_solver(u, solver, columns, stat)
+      integer, intent(in) :: u                      !< the restart file, at the solver's part
+      type(solver_t), intent(inout) :: solver       !< the plate solver, factored
+      integer, allocatable, intent(out) :: columns(:)   !< the equations of its columns
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      real(dp), allocatable :: x(:)
+      integer, allocatable :: i(:)
+      character(len=:), allocatable :: note
+      allocate (columns(0))
+      call take_tag(u, 'solver', stat)
+      call take_reals(u, x, stat, 2)
+      call take_ints(u, i, stat)
+      if (stat == 0 .and. size(i) /= 5) stat = 1
+      call take_text(u, note, stat)
+      call take_ints(u, columns, stat)
+      if (stat /= 0) return
+      solver%contraction = x
+      solver%since_measured = i(1);  solver%solves = i(2);  solver%response_solves = i(3)
+      solver%factorizations = i(4);  solver%mixed_solves = i(5)
+      if (len(note) > 0) solver%mixing_note = note
+   end subroutine take_solver
+
+   !> The solver's response columns on the equations `columns`, computed
+   !> again in their order (the same back substitutions on the same factors:
+   !> the same values); its count of back substitutions kept.
+   subroutine response_columns(solver, columns, stat, errmsg)
+      type(solver_t), intent(inout) :: solver       !< the plate solver, factored
+      integer, intent(in) :: columns(:)             !< the equations
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      type(load_pattern_t) :: all
+      integer :: counted
+      counted = solver%response_solves
+      all%n = size(columns)
+      all%eq = columns
+      allocate (all%c(all%n), source=1.0_dp)
+      call contact_response(solver, all, stat, errmsg)
+      solver%response_solves = counted
+   end subroutine response_columns
+
+   !> What <prefix>.h5 holds at the restart point: its rows and snapshots
+   !> and its peak.
+   subroutine put_results(u, rec, stat)
+      integer, intent(in) :: u                      !< the restart file
+      type(record_t), intent(in) :: rec             !< the run's record
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      call put_tag(u, 'results', stat)
+      call put_flag(u, allocated(rec%h5%path), stat)
+      if (.not. allocated(rec%h5%path)) return
+      call put_ints(u, [rec%h5%rows_written + rec%h5%nrow, rec%h5%snaps_written + rec%h5%nsnap, rec%h5%peak_step], &
+         stat)
+      call put_reals(u, [rec%h5%peak_time, rec%h5%peak_force], stat)
+      call put_reals(u, reshape(rec%h5%peak_fields, [size(rec%h5%peak_fields)]), stat)
+   end subroutine put_results
+
+   !> Reads what put_results wrote.
+   subroutine take_results(u, h5, rows, snaps, peak_step, peak, peak_fields, stat)
+      integer, intent(in) :: u                      !< the restart file, at the results' part
+      logical, intent(out) :: h5                    !< the run wrote <prefix>.h5
+      integer, intent(out) :: rows, snaps           !< the rows and snapshots it holds
+      integer, intent(out) :: peak_step             !< its peak: step,
+      real(dp), intent(out) :: peak(2)              !< time (s) and force (N),
+      real(dp), allocatable, intent(out) :: peak_fields(:)   !< and fields
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      real(dp), allocatable :: x(:)
+      integer, allocatable :: i(:)
+      h5 = .false.;  rows = 0;  snaps = 0;  peak_step = 0;  peak = 0.0_dp
+      call take_tag(u, 'results', stat)
+      call take_flag(u, h5, stat)
+      if (stat /= 0 .or. .not. h5) return
+      call take_ints(u, i, stat)
+      call take_reals(u, x, stat, 2)
+      call take_reals(u, peak_fields, stat)
+      if (stat == 0 .and. size(i) /= 3) stat = 1
+      if (stat /= 0) return
+      rows = i(1);  snaps = i(2);  peak_step = i(3);  peak = x
+   end subroutine take_results
+
+   !> The history file cut back to its length at the restart point and
+   !> opened for appending (src/results/run_recorder.f90's rows).
+   subroutine reopen_history(deck, rec, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      type(record_t), intent(inout) :: rec          !< the record: its history file
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      character(len=msg_len) :: iomsg
+      integer(int64) :: bytes
+      rec%hist_path = deck%prefix // '_history.dat'
+      bytes = file_size(rec%hist_path)
+      if (bytes < rec%hist_bytes) then
+         stat = 1
+         errmsg = rec%hist_path // ': holds ' // int_str(int(max(bytes, -1_int64))) // ' bytes, fewer than at ' &
+            // 'the restart point (' // int_str(int(rec%hist_bytes)) // '): it is not this run''s history'
+         return
+      end if
+      call truncate_file(rec%hist_path, rec%hist_bytes, stat)
+      if (stat == 0) open (newunit=rec%hist_unit, file=rec%hist_path, status='old', action='write', &
+                           position='append', iostat=stat, iomsg=iomsg)
+      if (stat /= 0) then
+         errmsg = rec%hist_path // ': cannot open it again: ' // trim(iomsg)
+         return
+      end if
+      call open_probe(rec%hist_path, rec%hist_probe, stat)
+      if (stat /= 0) errmsg = rec%hist_path // ': cannot open it to read its length'
+   end subroutine reopen_history
+
+   ! ============================================================== the disk
+
+   !> The directory of `path` ('.' or '/' when it has none).
+   pure function directory_of(path) result(dir)
+      character(len=*), intent(in) :: path          !< a file
+      character(len=:), allocatable :: dir
+      dir = parent_directory(path)
+      if (len(dir) == 0) dir = merge('/', '.', path(1:min(1, len(path))) == '/')
+   end function directory_of
+
+   !> fsync(2) of the file or directory `path`: what the kernel holds of it
+   !> is on the disk on return.
+   subroutine force_to_disk(path, stat)
+      character(len=*), intent(in) :: path          !< the file or directory
+      integer, intent(out) :: stat                  !< 0 on success
+      integer(c_int) :: fd, r
+      stat = 1
+      fd = c_open(path // c_null_char, o_rdonly)
+      if (fd < 0) return
+      r = c_fsync(fd)
+      stat = merge(0, 1, r == 0)
+      r = c_close(fd)
+   end subroutine force_to_disk
+
+end module restart_point
