@@ -38,12 +38,27 @@ endif
 LAPACK  ?= -llapack -lblas
 FC_ALL   = $(FC) $(FSTD) $(FFLAGS) -J$(BUILD) -I$(BUILD)
 
+# CHOLMOD (SuiteSparse; Debian: libsuitesparse-dev) for &analysis storage =
+# 'sparse' (and 'auto' on large meshes). src/linalg/cholmod_shim.c is compiled
+# against the installed cholmod.h (why C there: its header); the libraries
+# go before LAPACK on every link line (each uses $(LAPACK)).
+CC      ?= cc
+CFLAGS  ?= -O2 -g
+CSTD    := -std=c99 -Wall -Wextra -pedantic
+ifeq ($(CI),true)
+CSTD    += -Werror
+endif
+CHOLMOD_CFLAGS ?= $(shell pkg-config --cflags cholmod 2>/dev/null || echo -I/usr/include/suitesparse)
+CHOLMOD_LIBS   ?= -lcholmod -lsuitesparseconfig
+override LAPACK := $(CHOLMOD_LIBS) $(LAPACK)
+
 # src/ holds the main program and the modules in folders by concern, from
 # the bottom of the `use` graph to its top (a folder uses only those before
 # it in this list; tools/fortran-deps stops the build otherwise):
 #   system    kinds of numbers and their text; the C library, files, limits,
 #             signals, the exit status, the build's version
-#   linalg    Gauss rules; band and skyline storage and their factorizations
+#   linalg    Gauss rules; band, skyline and sparse storage and their
+#             factorizations (sparse: CHOLMOD through a C shim, the one C file)
 #   deck      the input deck: schema, reader, checks, echo, command line
 #   model     the paper's plate and contact: laminate, elements, mesh, scene,
 #             indentation law and load, the assembled model
@@ -59,8 +74,11 @@ SRC_FOLDERS := system linalg deck model strength scheme results analyses
 MAIN    := src/impact.f90
 SOURCES := $(foreach d,$(SRC_FOLDERS),$(sort $(wildcard src/$(d)/*.f90)))
 OBJS    := $(patsubst %.f90,$(BUILD)/%.o,$(notdir $(SOURCES)))
+C_SOURCES := $(foreach d,$(SRC_FOLDERS),$(sort $(wildcard src/$(d)/*.c)))
+C_OBJS  := $(patsubst %.c,$(BUILD)/%.o,$(notdir $(C_SOURCES)))
 LIB     := $(BUILD)/libimpact.a
 vpath %.f90 $(addprefix src/,$(SRC_FOLDERS))
+vpath %.c $(addprefix src/,$(SRC_FOLDERS))
 
 # The validation's oracles (exact and independent solutions: Navier,
 # Hertz, the rigid target, ...) are not part of the solver: they live in
@@ -80,6 +98,9 @@ $(BUILD):
 $(OBJS): $(BUILD)/%.o: %.f90 | $(BUILD)
 	$(FC_ALL) -c $< -o $@
 
+$(C_OBJS): $(BUILD)/%.o: %.c | $(BUILD)
+	$(CC) $(CSTD) $(CFLAGS) $(CHOLMOD_CFLAGS) -c $< -o $@
+
 # The element work of a time step is written for the vectoriser, which GCC
 # applies at -O2 only to loops whose trip count it knows: let it weigh the
 # others too (docs/PERFORMANCE.md, "The element work of a step").
@@ -89,7 +110,7 @@ $(BUILD)/deps.mk: $(SOURCES) tools/fortran-deps | $(BUILD)
 	@python3 tools/fortran-deps $(BUILD) '$(SRC_FOLDERS)' $(SOURCES) > $@.tmp && mv $@.tmp $@
 -include $(BUILD)/deps.mk
 
-$(LIB): $(OBJS)
+$(LIB): $(OBJS) $(C_OBJS)
 	ar rcs $@ $^
 
 $(BUILD)/tools/%.o: tools/%.f90 $(LIB)

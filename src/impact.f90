@@ -32,7 +32,7 @@ program impact
    use deck_schema, only: deck_t
    use deck_echo, only: write_schema, write_deck_table
    use command_line, only: options_t, parse_command_line, read_input_deck
-   use plate_model, only: model_t, build_model, mass_times
+   use plate_model, only: model_t, build_model, release_assembled, mass_times
    use plate_solver, only: solver_t, solver_init, plate_solve
    use contact_iteration, only: contact_iteration_t, contact_area, contact_start, contact_next, contact_cut, &
       contact_indentation, contact_outcome, contact_report
@@ -111,6 +111,7 @@ program impact
    nm = newmark_init(deck%dt)          ! from here on dt lives in nm
    call solver_init(model, nm, solver, stat, errmsg)
    if (stat /= 0) call fail(errmsg)
+   call release_assembled(model)      ! the steps need the factor; M x and K_N D are element by element
    call cpu_time(cpu1)
    write (output_unit, '(a,f10.3,a)') 'set-up (model, matrices, factorization): cpu ', cpu1 - cpu0, ' s'
    if (check_only) then

@@ -26,7 +26,7 @@ module pressure_analysis
    use plate_model, only: model_t, centre_deflection, plate_kinetic_energy, &
       plate_strain_energy
    use newmark, only: newmark_t, newmark_init, newmark_predictor, newmark_update
-   use global_matrix, only: global_matrix_t, global_copy, global_factor, global_solve, global_matvec
+   use global_matrix, only: global_matrix_t, global_copy, global_factor, global_solve, global_matvec, global_release
    use plate_solver, only: solver_t, solver_init, plate_solve
    use mesh, only: describe_equation
    implicit none
@@ -81,6 +81,7 @@ contains
       end if
       d = 0.0_dp;  v = 0.0_dp;  a = f
       call global_solve(mfac, a, stat, errmsg)
+      call global_release(mfac)       ! M's factor is not needed again (sparse: C memory)
       if (stat /= 0) return
 
       ! -- K_L + 4/dt^2 M, factored once (eq. 19)

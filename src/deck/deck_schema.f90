@@ -139,8 +139,9 @@ module deck_schema
       deck_var_t('analysis', 'scheme', kind_word, '-', 'fast', 'fast | paper', &
          '''fast'': the contact force solved inside each eq. (19) iteration, about one solve per step; ' &
          // '''paper'': the flowchart''s nested iterations (Fig. 3)'), &
-      deck_var_t('analysis', 'storage', kind_word, '-', 'band', 'band | skyline', &
-         '''band'' (LAPACK dpbtrf/dpbtrs) or ''skyline'' (the code''s own LDL^T)'), &
+      deck_var_t('analysis', 'storage', kind_word, '-', 'auto', 'auto | band | skyline | sparse', &
+         '''band'' (LAPACK dpbtrf/dpbtrs), ''skyline'' (the code''s own LDL^T), ''sparse'' (CHOLMOD) or ' &
+         // '''auto'' (band below 3000 equations, sparse from there; modes: band)'), &
       deck_var_t('analysis', 'max_contact_iter', kind_integer, '-', '50', '[1, 10000]', &
          'contact iterations per step, at most'), &
       deck_var_t('analysis', 'max_nonlinear_iter', kind_integer, '-', '200', '[1, 100000]', &

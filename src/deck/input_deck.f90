@@ -21,6 +21,7 @@ module input_deck
    use kinds, only: dp, msg_len
    use number_text, only: real_str, real_short, int_str, list_str
    use system_limits, only: physical_memory, free_disk_space, file_size_limit
+   use storage_choice, only: resolve_storage, matrices_memory
    use file_system, only: path_problem
    use deck_text, only: item_t, group_text_t, read_deck_text, lower_case
    use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, find_var, &
@@ -460,8 +461,9 @@ contains
       call need(c, deck%cr1 >= min_cr1, 'analysis', 'cr1', real_str(deck%cr1), 'must be at least ' &
          // real_str(min_cr1) // ' (100 eps): eq. (17) cannot be met below the rounding of the force')
       if (c%stat == 0) call check_needs(deck, c)
-      if (deck%analysis_kind == 'modes') call need(c, deck%storage == 'band', 'analysis', 'storage', &
-         "'" // deck%storage // "'", "kind = 'modes' needs storage = 'band' (LAPACK's banded eigensolver dsbgvx)")
+      if (deck%analysis_kind == 'modes') call need(c, deck%storage == 'band' .or. deck%storage == 'auto', 'analysis', &
+         'storage', "'" // deck%storage // "'", "kind = 'modes' needs storage = 'band' or 'auto' (LAPACK's banded " &
+         // "eigensolver dsbgvx)")
    end subroutine check_analysis
 
    !> What the run would need, before any of it is allocated or written
@@ -471,7 +473,7 @@ contains
    !> go. The estimates: nodes (2 ex + 1)(2 ey + 1) for ex x ey 9-node
    !> elements (ex = 2 nx when the domain may be doubled across a centre
    !> line), 5 freedoms a node, half-bandwidth 10 (2 min(ex, ey) + 1),
-   !> three band matrices (K_L, M, the factored K_L + 4/dt^2 M); a
+   !> the run's matrices in the storage it takes (src/linalg/storage_choice.f90); a
    !> history row of 230 bytes in the text file and 130 in <prefix>.h5,
    !> a field snapshot of 8 bytes a freedom, and in <prefix>.h5 64 KiB
    !> and four more snapshots for the deck, the mesh and the peak state.
@@ -479,7 +481,7 @@ contains
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
       real(dp), parameter :: max_steps = 1.0e8_dp, text_row_bytes = 230.0_dp, row_bytes = 360.0_dp, &
-                             band_matrices = 3.0_dp, h5_fixed_bytes = 65536.0_dp
+                             h5_fixed_bytes = 65536.0_dp
       real(dp) :: steps, ex, ey, neq, kd, memory, machine, output, room, biggest
       steps = deck%t_end/deck%dt
       call need(c, steps <= max_steps, 'analysis', 'dt', real_str(deck%dt), 'gives t_end/dt = ' &
@@ -492,7 +494,8 @@ contains
       end if
       neq = 5.0_dp*(2.0_dp*ex + 1.0_dp)*(2.0_dp*ey + 1.0_dp)
       kd = 10.0_dp*(2.0_dp*min(ex, ey) + 1.0_dp)
-      memory = band_matrices*neq*(kd + 1.0_dp)*8.0_dp
+      memory = matrices_memory(resolve_storage(deck%storage, nint(min(neq, 1.0e9_dp)), deck%analysis_kind == 'modes'), &
+                               neq, kd)
       machine = physical_memory()
       if (machine > 0.0_dp) call need(c, memory < machine, 'mesh', 'nx', int_str(deck%nx), 'with ny = ' &
          // int_str(deck%ny) // ' the model would need about ' // real_short(memory/gib) // ' GiB of memory (' &

@@ -1,13 +1,26 @@
 !> The global (structure) matrices of the model, in a storage chosen at run
-!> time: 'band' (module band_matrix, LAPACK band Cholesky) or 'skyline'
-!> (module skyline_matrix, COLSOL's active-column L D L^T). Each storage
-!> scheme is documented in the header of its own module.
+!> time: 'band' (module band_matrix, LAPACK band Cholesky), 'skyline'
+!> (module skyline_matrix, COLSOL's active-column L D L^T) or 'sparse'
+!> (module sparse_matrix: compressed sparse columns of the upper triangle,
+!> CHOLMOD's supernodal Cholesky after a fill-reducing ordering); 'auto'
+!> picks band or sparse by the number of equations (module storage_choice).
+!> Each storage scheme is documented in the header of its own module.
 !>
 !> The structure is found from the element freedom table elem_eq(nfe,nelem)
 !> (global equation number of each element freedom, 0 = constrained): for
 !> band storage the half-bandwidth kd = max over elements of (largest -
 !> smallest equation), for skyline storage the first row of each column
-!> m_j = min over the elements that hold j of their smallest equation.
+!> m_j = min over the elements that hold j of their smallest equation, for
+!> sparse storage the pattern itself: the pairs of equations that an element
+!> couples (the rows i <= j of each column j).
+!>
+!> What stays after global_factor: band and skyline overwrite A with its
+!> factor in place; sparse keeps CHOLMOD's factor and the pattern and
+!> releases the values of A (a factored matrix is only solved with).
+!> CHOLMOD's factor is C memory, released by global_release (and by
+!> global_init), not at the end of a scope: a local sparse matrix that was
+!> factored is released before it goes (band and skyline need nothing). A
+!> copy by global_copy has its own factor; an assignment shares it.
 !>
 !> Typical use (Newmark, constant effective stiffness):
 !>     global_init(K, ...); global_init(M, ...)       same storage, same elem_eq
@@ -33,24 +46,26 @@ module global_matrix
                              skyline_in_profile, skyline_add, skyline_get, &
                              skyline_half_bandwidth, skyline_matvec, &
                              skyline_factor, skyline_solve, skyline_axpy
+   use sparse_matrix, only: sparse_matrix_t, sparse_init, sparse_zero, sparse_in_pattern, sparse_add, &
+                            sparse_get, sparse_matvec, sparse_axpy, sparse_factor, sparse_solve, &
+                            sparse_half_bandwidth, sparse_entries, sparse_release, sparse_copy_factor
+   use storage_choice, only: storage_len => storage_name_len, resolve_storage
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    implicit none
    private
    public :: global_matrix_t
    public :: global_init, global_zero, global_assemble, global_axpy_matrix, &
              global_copy, global_matvec, global_factor, global_solve, &
-             global_bandwidth, global_stored_entries, global_entry
-
-   !> Length of the storage name ('band', 'skyline').
-   integer, parameter :: storage_len = 8
+             global_bandwidth, global_stored_entries, global_entry, global_release
 
    !> A global matrix in the storage named by `storage`; only that one of
-   !> `band` and `sky` is allocated.
+   !> `band`, `sky` and `sparse` is allocated.
    type :: global_matrix_t
-      character(len=storage_len) :: storage = ''  !< 'band' or 'skyline' ('' before global_init).
+      character(len=storage_len) :: storage = ''  !< 'band', 'skyline' or 'sparse' ('' before global_init).
       integer :: neq = 0  !< number of equations.
       type(band_matrix_t) :: band  !< the matrix when storage = 'band'.
       type(skyline_matrix_t) :: sky  !< the matrix when storage = 'skyline'.
+      type(sparse_matrix_t) :: sparse  !< the matrix when storage = 'sparse'.
       !> First error of an assembly or addition called without stat
       !> ('' = none); reported by global_factor and global_solve.
       character(len=msg_len) :: deferred_error = ''
@@ -59,19 +74,20 @@ module global_matrix
 contains
 
    !> Find the structure from the element freedom table and allocate a
-   !> zero matrix in the chosen storage.
+   !> zero matrix in the chosen storage (what g held before is released).
    subroutine global_init(g, storage, neq, elem_eq, stat, errmsg)
-      type(global_matrix_t), intent(out) :: g  !< the matrix, (re)defined here.
-      character(len=*), intent(in) :: storage  !< 'band' or 'skyline' (case and surrounding blanks ignored).
+      type(global_matrix_t), intent(inout) :: g  !< the matrix, released and (re)defined here.
+      character(len=*), intent(in) :: storage  !< 'band', 'skyline', 'sparse' or 'auto' (by neq; case and blanks ignored).
       integer, intent(in) :: neq  !< number of equations, >= 1.
       integer, intent(in) :: elem_eq(:,:)  !< elem_eq(k, e): equation of freedom k of element e, 0 = constrained.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
-      character(len=len(storage)) :: name
+      character(len=storage_len) :: name
       integer, allocatable :: first_row(:)
       integer :: e, k, eq, lo, hi, kd
 
+      call global_release(g)
       stat = 0
       if (neq < 1) then
          write (msg, '(a,i0)') 'global_init: number of equations must be >= 1, got ', neq
@@ -93,7 +109,7 @@ contains
          end do
       end do
 
-      name = lower(adjustl(storage))
+      name = resolve_storage(lower(trim(adjustl(storage))), neq, .false.)
       select case (trim(name))
       case ('band')
          ! kd = max over elements of (largest - smallest equation).
@@ -122,10 +138,13 @@ contains
          end do
          call skyline_init(g%sky, neq, first_row, stat, errmsg)
          if (stat /= 0) return
+      case ('sparse')
+         call sparse_init(g%sparse, neq, elem_eq, stat, errmsg)
+         if (stat /= 0) return
       case default
          stat = 1
          errmsg = "global_init: unknown storage '" // trim(storage) // &
-                   "' (expected 'band' or 'skyline')"
+                   "' (expected 'band', 'skyline', 'sparse' or 'auto')"
          return
       end select
       g%storage = trim(name)
@@ -142,6 +161,8 @@ contains
          call band_zero(g%band)
       case ('skyline')
          call skyline_zero(g%sky)
+      case ('sparse')
+         call sparse_zero(g%sparse)
       end select
       g%deferred_error = ''
    end subroutine global_zero
@@ -161,7 +182,6 @@ contains
       character(len=*), intent(inout), optional :: errmsg  !< reason for the failure (optional, set only on failure).
       character(len=msg_len) :: msg
       integer :: p, q, ip, iq
-      logical :: banded
 
       if (present(stat)) stat = 0
       msg = ''
@@ -193,18 +213,20 @@ contains
          return
       end if
 
-      banded = g%storage == 'band'
       columns: do q = 1, size(eqs)
          iq = eqs(q)
          if (iq == 0) cycle columns
          do p = 1, size(eqs)
             ip = eqs(p)
             if (ip == 0 .or. ip > iq) cycle
-            if (banded) then
+            select case (g%storage)
+            case ('band')
                call band_add(g%band, ip, iq, ke(p, q))
-            else
+            case ('skyline')
                call skyline_add(g%sky, ip, iq, ke(p, q))
-            end if
+            case default
+               call sparse_add(g%sparse, ip, iq, ke(p, q))
+            end select
          end do
       end do columns
    end subroutine global_assemble
@@ -232,6 +254,8 @@ contains
             call band_axpy(g%band, alpha, other%band, ierr, msg)
          case ('skyline')
             call skyline_axpy(g%sky, alpha, other%sky, ierr, msg)
+         case ('sparse')
+            call sparse_axpy(g%sparse, alpha, other%sparse, ierr, msg)
          end select
       end if
       if (len_trim(msg) > 0) then
@@ -242,13 +266,31 @@ contains
       if (len_trim(g%deferred_error) == 0) g%deferred_error = other%deferred_error
    end subroutine global_axpy_matrix
 
-   !> dst = src (storage, structure, values, factorisation).
+   !> dst = src (storage, structure, values, factorisation; a sparse factor
+   !> is copied, not shared; what dst held before is released). A failed
+   !> copy of the factor (no memory) is recorded in dst (deferred_error).
    subroutine global_copy(dst, src)
-      type(global_matrix_t), intent(out) :: dst  !< the copy.
+      type(global_matrix_t), intent(inout) :: dst  !< the copy.
       type(global_matrix_t), intent(in) :: src  !< the matrix copied.
+      character(len=msg_len) :: msg
+      integer :: stat
 
+      call global_release(dst)
       dst = src
+      if (src%storage /= 'sparse') return
+      msg = ''
+      call sparse_copy_factor(src%sparse, dst%sparse, stat, msg)
+      if (stat /= 0) call report(dst, 'global_copy: ' // trim(msg))
    end subroutine global_copy
+
+   !> Release everything g holds (CHOLMOD's factor included); g is then as
+   !> before global_init.
+   subroutine global_release(g)
+      type(global_matrix_t), intent(inout) :: g  !< the matrix.
+
+      if (g%storage == 'sparse') call sparse_release(g%sparse)
+      g = global_matrix_t()
+   end subroutine global_release
 
    !> y = A x with the unfactored matrix.
    !>
@@ -275,8 +317,10 @@ contains
             // ' but neq = ' // int_str(g%neq)
       else if (g%storage == 'band') then
          call band_matvec(g%band, x, y)
-      else
+      else if (g%storage == 'skyline') then
          call skyline_matvec(g%sky, x, y)
+      else
+         call sparse_matvec(g%sparse, x, y)
       end if
       if (len_trim(msg) > 0) then
          y = ieee_value(1.0_dp, ieee_quiet_nan)
@@ -285,11 +329,12 @@ contains
       end if
    end subroutine global_matvec
 
-   !> Factor in place (band: Cholesky, skyline: L D L^T).
+   !> Factor (band: Cholesky in place, skyline: L D L^T in place, sparse:
+   !> CHOLMOD's supernodal Cholesky, the values of A released).
    !>
    !> A failed pivot gives stat = 1, bad_eq = its equation and errmsg
    !> "matrix not positive definite at equation N (...)"; the caller names
-   !> the node and freedom. Both storages use the same pivot rule.
+   !> the node and freedom. All storages use the same pivot rule.
    subroutine global_factor(g, stat, errmsg, bad_eq)
       type(global_matrix_t), intent(inout) :: g  !< the matrix, overwritten by its factors.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
@@ -298,11 +343,14 @@ contains
 
       bad_eq = 0
       if (.not. usable(g, 'global_factor', stat, errmsg)) return
-      if (g%storage == 'band') then
+      select case (g%storage)
+      case ('band')
          call band_factor(g%band, stat, errmsg, bad_eq)
-      else
+      case ('skyline')
          call skyline_factor(g%sky, stat, errmsg, bad_eq)
-      end if
+      case default
+         call sparse_factor(g%sparse, stat, errmsg, bad_eq)
+      end select
    end subroutine global_factor
 
    !> Solve A x = b with the factored matrix; b is overwritten by x.
@@ -313,11 +361,14 @@ contains
       character(len=*), intent(inout) :: errmsg     !< reason for the failure (set only on failure)
 
       if (.not. usable(g, 'global_solve', stat, errmsg)) return
-      if (g%storage == 'band') then
+      select case (g%storage)
+      case ('band')
          call band_solve(g%band, b, stat, errmsg)
-      else
+      case ('skyline')
          call skyline_solve(g%sky, b, stat, errmsg)
-      end if
+      case default
+         call sparse_solve(g%sparse, b, stat, errmsg)
+      end select
    end subroutine global_solve
 
    !> True when g can be used: initialised and without a deferred error
@@ -331,7 +382,7 @@ contains
       if (len_trim(g%deferred_error) > 0) then
          stat = 1
          errmsg = g%deferred_error
-      else if (g%storage /= 'band' .and. g%storage /= 'skyline') then
+      else if (g%storage /= 'band' .and. g%storage /= 'skyline' .and. g%storage /= 'sparse') then
          stat = 1
          errmsg = caller // ': the matrix was never initialised'
       end if
@@ -339,7 +390,8 @@ contains
    end function usable
 
    !> Half-bandwidth: kd for band storage, the largest column height
-   !> max_j (j - m_j) for skyline storage; 0 before global_init.
+   !> max_j (j - m_j) for skyline storage, the largest j - i of a stored
+   !> entry for sparse storage; 0 before global_init.
    pure integer function global_bandwidth(g)
       type(global_matrix_t), intent(in) :: g  !< the matrix.
 
@@ -348,12 +400,16 @@ contains
          global_bandwidth = g%band%kd
       case ('skyline')
          global_bandwidth = skyline_half_bandwidth(g%sky)
+      case ('sparse')
+         global_bandwidth = sparse_half_bandwidth(g%sparse)
       case default
          global_bandwidth = 0
       end select
    end function global_bandwidth
 
-   !> Number of stored reals: (kd+1)*neq for band, nwk for skyline.
+   !> Number of stored reals: (kd+1)*neq for band, nwk for skyline, the
+   !> entries of the upper triangle's pattern for sparse (of A: the factor's
+   !> are CHOLMOD's, g%sparse%factor_entries once analysed).
    pure integer function global_stored_entries(g)
       type(global_matrix_t), intent(in) :: g  !< the matrix.
 
@@ -362,6 +418,8 @@ contains
          global_stored_entries = size(g%band%ab)
       case ('skyline')
          global_stored_entries = size(g%sky%a)
+      case ('sparse')
+         global_stored_entries = int(sparse_entries(g%sparse))
       case default
          global_stored_entries = 0
       end select
@@ -377,6 +435,8 @@ contains
          global_entry = band_get(g%band, i, j)
       case ('skyline')
          global_entry = skyline_get(g%sky, i, j)
+      case ('sparse')
+         global_entry = sparse_get(g%sparse, i, j)
       case default
          global_entry = 0.0_dp
       end select
@@ -394,6 +454,8 @@ contains
          in_structure = band_in_band(g%band, i, j)
       case ('skyline')
          in_structure = skyline_in_profile(g%sky, i, j)
+      case ('sparse')
+         in_structure = sparse_in_pattern(g%sparse, i, j)
       case default
          in_structure = .false.
       end select
@@ -403,7 +465,7 @@ contains
    pure logical function is_factored(g)
       type(global_matrix_t), intent(in) :: g  !< the matrix.
 
-      is_factored = g%band%factored .or. g%sky%factored
+      is_factored = g%band%factored .or. g%sky%factored .or. g%sparse%factored
    end function is_factored
 
    !> Hand a failure to the caller's stat/errmsg, or record it in g.

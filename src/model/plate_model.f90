@@ -13,20 +13,21 @@ module plate_model
    use kinds, only: dp, msg_len
    use materials, only: laminate_t, laminate_drop_bend_twist
    use scene_model, only: scene_t, model_laminate, choose_domain, point_stiffness, energy_balance, &
-      choose_theory, impact_element_size
+      choose_theory, impact_element_size, choose_storage
    use mesh, only: mesh_t, build_mesh, apply_boundary, nfe, ndof_node
    use shear_strain, only: shear_rule_t, shear_rule_code, shear_stabilized
    use contact_load, only: contact_load_t, contact_load_init, load_point, load_hertz
    use element_matrices, only: element_geometry_t, element_geometry, element_mass, element_stiffness, &
       element_inplane_strain, element_gauss_point
    use element_work, only: element_work_t, work_build, work_nonlinear_force, work_mass_times, work_strain_energy
-   use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble
+   use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, global_release
    use contact_law, only: contact_law_t
    use deck_schema, only: deck_t
    implicit none
    private
-   public :: model_t, build_model, nonlinear_force, mass_times, gather_element, scatter_add_element, &
-             centre_deflection, back_face_strain, max_deflection, plate_kinetic_energy, plate_strain_energy
+   public :: model_t, build_model, release_assembled, nonlinear_force, mass_times, gather_element, &
+             scatter_add_element, centre_deflection, back_face_strain, max_deflection, plate_kinetic_energy, &
+             plate_strain_energy
 
    !> Everything about the plate that does not change during a run.
    type :: model_t
@@ -118,10 +119,12 @@ contains
       model%gauge_gp = element_gauss_point(model%geo(model%msh%impact_elem), &
                                            model%msh%coords(:, model%msh%impact_node))
 
-      ! -- [M] and [K_L], assembled once (eq. 15)
-      call global_init(model%mass, deck%storage, model%msh%neq, model%msh%elem_eq, stat, errmsg)
+      ! -- [M] and [K_L], assembled once (eq. 15), in the deck's storage or
+      !    the one 'auto' picks for this many equations (src/model/scene_model.f90)
+      call choose_storage(deck%storage, model%msh%neq, deck%analysis_kind == 'modes', model%scene)
+      call global_init(model%mass, model%scene%storage, model%msh%neq, model%msh%elem_eq, stat, errmsg)
       if (stat /= 0) return
-      call global_init(model%stiff, deck%storage, model%msh%neq, model%msh%elem_eq, stat, errmsg)
+      call global_init(model%stiff, model%scene%storage, model%msh%neq, model%msh%elem_eq, stat, errmsg)
       if (stat /= 0) return
       call global_zero(model%mass)
       call global_zero(model%stiff)
@@ -136,7 +139,7 @@ contains
       ! -- the scene's static estimate, and the theory it calls for
       !    (src/model/scene_model.f90)
       call point_stiffness(model%msh, model%lmt, model%geo, model%force_share, deck%edges, &
-                           deck%storage, model%scene, stat, errmsg)
+                           model%scene%storage, model%scene, stat, errmsg)
       if (stat /= 0) return
       call energy_balance(model%scene%energy, model%scene%stiffness, deck%k, model%scene%force, &
                           model%scene%deflection, model%scene%indentation)
@@ -147,6 +150,17 @@ contains
                          model%scene%theory_reason)
       model%nonlinear = model%scene%theory == 'nonlinear'
    end subroutine build_model
+
+   !> Release the assembled [M] and [K_L] once the impact's left-hand matrix
+   !> K_L + 4/dt^2 M is factored: its time steps form M x and K_N(D) D
+   !> element by element (mass_times, nonlinear_force), so what stays is the
+   !> factor and the element work (the other analyses keep them: static and
+   !> pressure multiply with them).
+   subroutine release_assembled(model)
+      type(model_t), intent(inout) :: model     !< the model; mass and stiff released
+      call global_release(model%mass)
+      call global_release(model%stiff)
+   end subroutine release_assembled
 
    ! ========================================================= element work
 

@@ -85,13 +85,14 @@ module scene_model
    use mesh, only: mesh_t, apply_boundary, nfe
    use element_matrices, only: element_geometry_t, element_stiffness
    use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, global_factor, &
-      global_solve
+      global_solve, global_release
+   use storage_choice, only: resolve_storage, sparse_crossover
    implicit none
    private
    public :: scene_t, ncouplings, coupling_names, coupling_tol, wh_nonlinear, &
              model_laminate, laminate_couplings, choose_domain, energy_balance, &
              choose_theory, write_scene_report, theory_warning, point_stiffness, &
-             impact_element_size, bending_deflection
+             impact_element_size, bending_deflection, choose_storage
 
    !> Couplings below this fraction of the diagonal terms are rounding (-).
    real(dp), parameter :: coupling_tol = 1.0e-9_dp
@@ -148,6 +149,8 @@ module scene_model
       real(dp) :: plate_mass = 0.0_dp               !< rho h a b, the whole plate (kg)
       character(len=word_len) :: theory = ''        !< 'linear' or 'nonlinear'
       character(len=msg_len) :: theory_reason = ''  !< why that theory
+      character(len=word_len) :: storage = ''       !< storage of the matrices: 'band', 'skyline' or 'sparse'
+      character(len=msg_len) :: storage_reason = '' !< why that storage
    end type scene_t
 
 contains
@@ -351,6 +354,32 @@ contains
       end if
    end subroutine choose_theory
 
+   !> The storage of the matrices: the deck's, or with 'auto' band below
+   !> sparse_crossover equations and sparse from there on, band for the
+   !> modal analysis (src/linalg/storage_choice.f90 says why).
+   subroutine choose_storage(requested, neq, band_only, scene)
+      character(len=*), intent(in) :: requested   !< &analysis storage
+      integer, intent(in) :: neq                  !< number of equations of the model
+      logical, intent(in) :: band_only            !< the analysis needs band storage (kind = 'modes')
+      type(scene_t), intent(inout) :: scene       !< storage and storage_reason set
+      character(len=12) :: n, limit
+
+      write (n, '(i0)') neq
+      write (limit, '(i0)') sparse_crossover
+      scene%storage = resolve_storage(requested, neq, band_only)
+      if (requested /= 'auto') then
+         scene%storage_reason = trim(scene%storage) // ' (&analysis storage); ' // trim(n) // ' equations'
+      else if (band_only) then
+         scene%storage_reason = "band (auto): the modal analysis needs band storage (LAPACK's dsbgvx)"
+      else if (scene%storage == 'band') then
+         scene%storage_reason = 'band (auto): ' // trim(n) // ' equations < ' // trim(limit) &
+            // ', where band is as fast as sparse (LAPACK)'
+      else
+         scene%storage_reason = 'sparse (auto): ' // trim(n) // ' equations >= ' // trim(limit) &
+            // ', where sparse is faster and smaller than band (CHOLMOD)'
+      end if
+   end subroutine choose_storage
+
    !> After a linear run: true, with a message, when the largest deflection
    !> met needed the nonlinear theory (w/h > wh_nonlinear).
    pure subroutine theory_warning(scene, w_max, warn, text)
@@ -394,6 +423,8 @@ contains
          scene%deflection, ' m, w/h = ', scene%deflection/scene%h, &
          ' (1/2 m v^2 = F^2/2K + 2/5 F^5/3 / k^2/3, no plate inertia)'
       write (unit, '(a)') lead // 'theory            ' // trim(scene%theory_reason)
+      if (len_trim(scene%storage_reason) > 0) write (unit, '(a)') lead // 'storage           ' &
+         // trim(scene%storage_reason)
       write (unit, '(a,es10.3,a,es10.3,a,es10.3,a,es10.3,a,f7.3)') lead // 'contact radius    a = ', &
          scene%contact_radius, ' m (Hertz, alpha = ', scene%indentation, ' m); element at the impact point ', &
          scene%element_size(1), ' x ', scene%element_size(2), ' m; a/element = ', &
@@ -434,7 +465,7 @@ contains
       type(element_geometry_t), intent(in) :: geo(:)     !< per-element geometry
       real(dp), intent(in) :: force_share                !< share of the force the domain carries (-)
       character(len=*), intent(in) :: edges              !< &boundary edges
-      character(len=*), intent(in) :: storage            !< 'band' or 'skyline'
+      character(len=*), intent(in) :: storage            !< 'band', 'skyline' or 'sparse'
       type(scene_t), intent(inout) :: scene              !< stiffness and stiffness_note set
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
@@ -468,6 +499,7 @@ contains
       call global_factor(k, stat, errmsg, bad_eq)
       if (stat /= 0) then
          errmsg = 'scene: static stiffness: ' // trim(errmsg)
+         call global_release(k)
          return
       end if
       ieq = m%eq(3, m%impact_node)
@@ -475,6 +507,7 @@ contains
       rhs = 0.0_dp
       rhs(ieq) = force_share
       call global_solve(k, rhs, stat, errmsg)
+      call global_release(k)          ! before the run's own factorization (sparse: C memory)
       if (stat /= 0) return
       scene%stiffness = 1.0_dp/rhs(ieq)
    end subroutine point_stiffness

@@ -1,0 +1,265 @@
+!> CHOLMOD (SuiteSparse's sparse Cholesky) as the sparse storage calls it:
+!> Fortran interfaces (bind(c)) to the flat C functions of
+!> src/linalg/cholmod_shim.c, and a handle type that owns one factorization.
+!>
+!> Why a C shim and not interfaces to cholmod_l_* themselves: CHOLMOD is
+!> driven through structs declared in its header (cholmod_common has some
+!> 300 fields, whose layout changes between SuiteSparse releases and build
+!> options); a Fortran mirror of them would break silently on another
+!> machine. The shim is compiled against the installed cholmod.h, so only
+!> integers, doubles and arrays cross the language boundary (the shim's
+!> header says more, and lists its return codes, the codes below).
+!>
+!> Ownership: a cholmod_handle_t holds only the key of its factorization
+!> in the shim's table, and the factorization lives until chol_release
+!> (the owner's explicit release: global_release, global_init). An
+!> assignment copies the key, not the factorization (chol_copy copies
+!> that); releasing is idempotent, and a key whose factorization is gone is
+!> refused by every call (code no_handle), never followed, so a stale copy
+!> fails with a message instead of touching freed memory.
+!>
+!> Why not a final procedure and a defined assignment, which would make
+!> the release automatic: gfortran 12 (Debian 12's) finalizes temporaries
+!> of the right-hand side of an intrinsic assignment (which would release
+!> the original's factorization) and skips the default initialization of
+!> an intent(out) argument whose type has a finalizable component
+!> (measured here); so the release is explicit, as for a C resource.
+module cholmod_binding
+   use, intrinsic :: iso_c_binding, only: c_int, c_long_long, c_double
+   use kinds, only: dp
+   implicit none
+   private
+   public :: cholmod_handle_t, cholmod_live_handles, chol_set_matrix, chol_analyze, chol_factorize, &
+             chol_diagonal, chol_solve, chol_copy, chol_release, chol_failure
+
+   !> Return codes of the shim (src/linalg/cholmod_shim.c).
+   integer(c_int), parameter :: code_ok = 0, no_handle = 1, no_memory = 2, too_large = 3, invalid = 4, &
+                                failed = 5
+
+   !> One factorization (symbolic, then numeric) in the shim's table.
+   type :: cholmod_handle_t
+      integer(c_long_long) :: key = 0  !< key in the shim's table, 0 = none.
+   end type cholmod_handle_t
+
+   interface
+      !> A new, empty handle; 0 when out of memory.
+      function impact_cholmod_new() bind(c, name='impact_cholmod_new') result(key)
+         import :: c_long_long
+         integer(c_long_long) :: key
+      end function impact_cholmod_new
+      !> Release a handle and all it holds (a key not in the table is ignored).
+      subroutine impact_cholmod_free(key) bind(c, name='impact_cholmod_free')
+         import :: c_long_long
+         integer(c_long_long), value :: key  !< the handle.
+      end subroutine impact_cholmod_free
+      !> Number of live handles.
+      function impact_cholmod_live() bind(c, name='impact_cholmod_live') result(n)
+         import :: c_long_long
+         integer(c_long_long) :: n
+      end function impact_cholmod_live
+      !> CHOLMOD's status of the last failure.
+      function impact_cholmod_status() bind(c, name='impact_cholmod_status') result(status)
+         import :: c_int
+         integer(c_int) :: status
+      end function impact_cholmod_status
+      !> A new handle with a copy of key's factor (copy = 0: key holds none).
+      function impact_cholmod_copy(key, copy) bind(c, name='impact_cholmod_copy') result(code)
+         import :: c_long_long, c_int
+         integer(c_long_long), value :: key  !< the handle copied.
+         integer(c_long_long), intent(out) :: copy  !< the new handle.
+         integer(c_int) :: code
+      end function impact_cholmod_copy
+      !> Hand over the upper triangle, compressed columns, 1-based.
+      function impact_cholmod_set_matrix(key, n, colptr, rowind, values, with_values) &
+            bind(c, name='impact_cholmod_set_matrix') result(code)
+         import :: c_long_long, c_int, c_double
+         integer(c_long_long), value :: key  !< the handle.
+         integer(c_long_long), value :: n  !< order.
+         integer(c_long_long), intent(in) :: colptr(*)  !< column starts (n+1).
+         integer(c_int), intent(in) :: rowind(*)  !< rows, ascending in each column.
+         real(c_double), intent(in) :: values(*)  !< values (read when with_values /= 0).
+         integer(c_int), value :: with_values  !< 0: the pattern alone.
+         integer(c_int) :: code
+      end function impact_cholmod_set_matrix
+      !> Symbolic factorization: nonzeros of L, flops, bytes of the factor.
+      function impact_cholmod_analyze(key, lnz, flops, bytes) bind(c, name='impact_cholmod_analyze') result(code)
+         import :: c_long_long, c_int, c_double
+         integer(c_long_long), value :: key  !< the handle.
+         real(c_double), intent(out) :: lnz, flops, bytes  !< nnz(L), flops, bytes of the numeric factor.
+         integer(c_int) :: code
+      end function impact_cholmod_analyze
+      !> Numeric factorization; minor = failed column (elimination order), n+1 if none.
+      function impact_cholmod_factorize(key, minor) bind(c, name='impact_cholmod_factorize') result(code)
+         import :: c_long_long, c_int
+         integer(c_long_long), value :: key  !< the handle.
+         integer(c_long_long), intent(out) :: minor  !< 1-based failed column, n+1 if none.
+         integer(c_int) :: code
+      end function impact_cholmod_factorize
+      !> Diagonal of L and the permutation, in the order of elimination.
+      function impact_cholmod_diagonal(key, n, diag, perm) bind(c, name='impact_cholmod_diagonal') result(code)
+         import :: c_long_long, c_int, c_double
+         integer(c_long_long), value :: key  !< the handle.
+         integer(c_long_long), value :: n  !< order.
+         real(c_double), intent(out) :: diag(*)  !< L(k,k), k in elimination order.
+         integer(c_long_long), intent(out) :: perm(*)  !< equation eliminated k-th (1-based).
+         integer(c_int) :: code
+      end function impact_cholmod_diagonal
+      !> Solve A x = b in place.
+      function impact_cholmod_solve(key, n, b) bind(c, name='impact_cholmod_solve') result(code)
+         import :: c_long_long, c_int, c_double
+         integer(c_long_long), value :: key  !< the handle.
+         integer(c_long_long), value :: n  !< order.
+         real(c_double), intent(inout) :: b(*)  !< right-hand side in, solution out.
+         integer(c_int) :: code
+      end function impact_cholmod_solve
+   end interface
+
+contains
+
+   !> Number of factorizations alive in the shim's table (the tests check
+   !> that the matrices release theirs).
+   integer function cholmod_live_handles()
+      cholmod_live_handles = int(impact_cholmod_live())
+   end function cholmod_live_handles
+
+   !> Hand the matrix (upper triangle, compressed columns, 1-based; rows
+   !> ascending in each column) to the handle, which is made when it has
+   !> none. Without values, the pattern alone (for chol_analyze).
+   subroutine chol_set_matrix(h, colptr, rowind, stat, errmsg, values)
+      type(cholmod_handle_t), intent(inout) :: h  !< the handle.
+      integer(c_long_long), intent(in) :: colptr(:)  !< column starts, n+1 of them, colptr(1) = 1.
+      integer(c_int), intent(in) :: rowind(:)  !< rows of the entries, colptr(n+1) - 1 of them.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+      real(dp), intent(in), optional :: values(:)  !< values of the entries, as rowind.
+      real(c_double) :: none(1)
+      integer(c_int) :: code
+
+      stat = 0
+      if (h%key == 0) h%key = impact_cholmod_new()
+      if (h%key == 0) then
+         code = no_memory
+      else if (present(values)) then
+         code = impact_cholmod_set_matrix(h%key, size(colptr, kind=c_long_long) - 1, colptr, rowind, values, 1_c_int)
+      else
+         none = 0.0_c_double
+         code = impact_cholmod_set_matrix(h%key, size(colptr, kind=c_long_long) - 1, colptr, rowind, none, 0_c_int)
+      end if
+      call check(code, 'handing the matrix over', stat, errmsg)
+   end subroutine chol_set_matrix
+
+   !> The symbolic factorization of the matrix handed over (fill-reducing
+   !> ordering and the structure of L), before any number is computed.
+   subroutine chol_analyze(h, lnz, flops, bytes, stat, errmsg)
+      type(cholmod_handle_t), intent(in) :: h  !< the handle, with a matrix handed over.
+      real(dp), intent(out) :: lnz  !< nonzeros of the factor L.
+      real(dp), intent(out) :: flops  !< floating-point operations of the numeric factorization.
+      real(dp), intent(out) :: bytes  !< memory of the numeric factor (bytes).
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+
+      call check(impact_cholmod_analyze(h%key, lnz, flops, bytes), 'the analysis', stat, errmsg)
+   end subroutine chol_analyze
+
+   !> The numeric factorization (supernodal L L^T) of the matrix handed
+   !> over, which is released afterwards. minor: the column, in the order of
+   !> elimination, at which the matrix was found not positive definite; n+1
+   !> when it was not.
+   subroutine chol_factorize(h, minor, stat, errmsg)
+      type(cholmod_handle_t), intent(in) :: h  !< the handle, analysed, with a matrix handed over.
+      integer, intent(out) :: minor  !< failed column in elimination order, n+1 if none.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+      integer(c_long_long) :: m
+
+      call check(impact_cholmod_factorize(h%key, m), 'the factorization', stat, errmsg)
+      minor = int(m)
+   end subroutine chol_factorize
+
+   !> The diagonal of L, diag(k) = L(k,k), and the equation perm(k)
+   !> eliminated k-th, k in the order of elimination.
+   subroutine chol_diagonal(h, diag, perm, stat, errmsg)
+      type(cholmod_handle_t), intent(in) :: h  !< the handle, factored (columns before minor).
+      real(dp), intent(out) :: diag(:)  !< L(k,k), size n.
+      integer, intent(out) :: perm(:)  !< equation eliminated k-th, size n.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+      integer(c_long_long) :: p(size(perm))
+
+      call check(impact_cholmod_diagonal(h%key, size(diag, kind=c_long_long), diag, p), 'the diagonal', &
+                 stat, errmsg)
+      perm = int(p)
+   end subroutine chol_diagonal
+
+   !> Solve A x = b with the numeric factor; b is overwritten by x.
+   subroutine chol_solve(h, b, stat, errmsg)
+      type(cholmod_handle_t), intent(in) :: h  !< the handle, factored.
+      real(dp), intent(inout) :: b(:)  !< right-hand side on entry, solution on return.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+
+      call check(impact_cholmod_solve(h%key, size(b, kind=c_long_long), b), 'the solve', stat, errmsg)
+   end subroutine chol_solve
+
+   !> dst holds a copy of src's factorization (symbolic and numeric), under
+   !> a key of its own; none when src holds none.
+   subroutine chol_copy(src, dst, stat, errmsg)
+      type(cholmod_handle_t), intent(in) :: src  !< the handle copied.
+      type(cholmod_handle_t), intent(out) :: dst  !< the copy (a handle it held before is not released).
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+      integer(c_long_long) :: copy
+
+      stat = 0
+      if (src%key == 0) return
+      call check(impact_cholmod_copy(src%key, copy), 'copying the factorization', stat, errmsg)
+      dst%key = copy
+   end subroutine chol_copy
+
+   !> Release the factorization the handle holds (none afterwards).
+   subroutine chol_release(h)
+      type(cholmod_handle_t), intent(inout) :: h  !< the handle.
+
+      call impact_cholmod_free(h%key)
+      h%key = 0
+   end subroutine chol_release
+
+   !> What a return code of the shim means.
+   function chol_failure(code) result(text)
+      integer(c_int), intent(in) :: code  !< a return code of the shim.
+      character(len=:), allocatable :: text
+      character(len=12) :: status
+
+      write (status, '(i0)') impact_cholmod_status()
+      select case (code)
+      case (code_ok)
+         text = 'no failure'
+      case (no_handle)
+         text = 'the factorization was released (an assigned copy used after the original''s release?)'
+      case (no_memory)
+         text = 'out of memory'
+      case (too_large)
+         text = 'the problem is too large for CHOLMOD''s integers'
+      case (invalid)
+         text = 'invalid input (no matrix handed over, or not analysed)'
+      case default
+         text = 'CHOLMOD failed with status ' // trim(status)
+      end select
+   end function chol_failure
+
+   ! ---- private ---------------------------------------------------------------
+
+   !> stat and errmsg from a return code of the shim.
+   subroutine check(code, what, stat, errmsg)
+      integer(c_int), intent(in) :: code  !< the return code.
+      character(len=*), intent(in) :: what  !< the step, for the message.
+      integer, intent(out) :: stat  !< 0 for code_ok, 1 otherwise.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+
+      stat = 0
+      if (code == code_ok) return
+      stat = 1
+      errmsg = 'sparse (CHOLMOD): ' // what // ' failed: ' // chol_failure(code)
+   end subroutine check
+
+end module cholmod_binding

@@ -1,0 +1,488 @@
+!> Symmetric positive definite matrix in compressed sparse columns, factored
+!> by CHOLMOD's supernodal Cholesky with a fill-reducing ordering
+!> (SuiteSparse, through src/linalg/cholmod_binding.f90).
+!>
+!> Storage scheme (the only place it is documented)
+!> ------------------------------------------------
+!> Only the upper triangle is kept, and in it only the pairs (i, j), i <= j,
+!> that some element couples (both equations are freedoms of one element;
+!> the diagonal always). Column j holds its rows ascending, the diagonal
+!> last, in the packed arrays rowind and val:
+!>
+!>     val(p) = A(rowind(p), j)    for  colptr(j) <= p < colptr(j+1)
+!>     nnz = colptr(n+1) - 1       (stored reals)
+!>
+!> Example, n = 5, elements holding equations {1, 2, 4} and {3, 4, 5}:
+!>
+!>          col:  1    2    3    4    5
+!>     row 1  | a11  a12   .   a14   .  |      colptr = 1, 2, 4, 5, 9, 12
+!>     row 2  |      a22   .   a24   .  |      rowind = 1 | 1 2 | 3 | 1 2 3 4 | 3 4 5
+!>     row 3  |           a33  a34  a35 |      val    = a11 | a12 a22 | a33 |
+!>     row 4  |                a44  a45 |               a14 a24 a34 a44 | a35 a45 a55
+!>     row 5  | sym                 a55 |
+!>
+!> The pattern comes from the element freedom table alone (sparse_init),
+!> so M, K_L and K_L + 4/dt^2 M of one model share it. A(i,j) and A(j,i) are
+!> one stored number (sparse_add mirrors i > j). For a plate this keeps
+!> about 40 reals per equation where band storage keeps kd + 1 (hundreds to
+!> thousands).
+!>
+!> Factorization: CHOLMOD orders the equations to reduce the fill (its
+!> default: AMD, and METIS' nested dissection when AMD leaves much fill),
+!> finds the structure of the factor (the symbolic factorization, done once
+!> per matrix and kept, so that a refactorization after sparse_zero costs
+!> only the numbers; another matrix of a pattern seen last reuses its
+!> ordering, src/linalg/cholmod_shim.c), and computes P A P^T = L L^T supernode by supernode
+!> with dense BLAS. Before the numeric factorization the analysis gives the
+!> factor's size, which is checked against the machine's memory. The
+!> factored matrix keeps the factor and the pattern, not the values of A
+!> (released: the steps need only the factor), until sparse_zero.
+!>
+!> The factorization lives in CHOLMOD's memory until sparse_release: the
+!> matrix holds its key (module cholmod_binding says why the release is
+!> explicit). An assignment b = a shares it; sparse_copy_factor gives b its
+!> own copy.
+!>
+!> Pivot rule (the one of band_matrix and skyline_matrix): equation j fails
+!> when its pivot d_j = L(k,k)**2 (k its place in the order of elimination)
+!> is not greater than pivot_rel_tol * |A(j,j)|; the first failure in the
+!> order of elimination is reported, or the column at which CHOLMOD found a
+!> pivot <= 0, whichever comes first. The elimination order is not that of
+!> band storage, so for a singular matrix (a mechanism) the equation named
+!> may be another of the same mechanism; a matrix with one bad equation is
+!> named alike by all storages.
+module sparse_matrix
+   use, intrinsic :: iso_c_binding, only: c_long_long
+   use, intrinsic :: iso_fortran_env, only: int64
+   use kinds, only: dp, msg_len
+   use band_matrix, only: pivot_rel_tol
+   use cholmod_binding, only: cholmod_handle_t, chol_set_matrix, chol_analyze, chol_factorize, chol_diagonal, &
+                              chol_solve, chol_copy, chol_release
+   use system_limits, only: physical_memory
+   implicit none
+   private
+   public :: sparse_matrix_t
+   public :: sparse_init, sparse_zero, sparse_in_pattern, sparse_add, sparse_get, sparse_matvec, &
+             sparse_axpy, sparse_factor, sparse_solve, sparse_half_bandwidth, sparse_entries, sparse_release, &
+             sparse_copy_factor
+
+   !> Bytes in a GiB, for the messages.
+   real(dp), parameter :: gib = 1024.0_dp**3
+
+   !> Symmetric matrix in compressed sparse columns (see module header).
+   type :: sparse_matrix_t
+      integer :: n = 0  !< order of the matrix (number of equations).
+      integer(c_long_long), allocatable :: colptr(:)  !< start of column j in rowind and val, colptr(n+1) = nnz + 1.
+      integer, allocatable :: rowind(:)  !< rows of the stored entries, ascending in each column.
+      real(dp), allocatable :: val(:)  !< values, val(p) = A(rowind(p), j); released once factored.
+      logical :: factored = .false.  !< true once the handle holds the numeric factor (and val is gone).
+      logical :: analysed = .false.  !< true once the handle holds the symbolic factorization of the pattern.
+      real(dp) :: factor_entries = 0.0_dp  !< nonzeros of L, from the analysis.
+      real(dp) :: factor_bytes = 0.0_dp  !< memory of the numeric factor, from the analysis (bytes).
+      type(cholmod_handle_t) :: chol  !< CHOLMOD's factorization (symbolic, then numeric).
+   end type sparse_matrix_t
+
+contains
+
+   !> The pattern of the element freedom table (module header) and a zero
+   !> matrix on it.
+   subroutine sparse_init(a, n, elem_eq, stat, errmsg)
+      type(sparse_matrix_t), intent(out) :: a  !< the matrix, (re)defined here.
+      integer, intent(in) :: n  !< order of the matrix, n >= 1.
+      integer, intent(in) :: elem_eq(:,:)  !< elem_eq(k, e): equation of freedom k of element e, 0 = none; in 0..n.
+      integer, intent(out) :: stat  !< 0 on success, 1 on a failed allocation.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+      integer, allocatable :: first(:), elems(:)
+      integer(c_long_long), allocatable :: next(:)
+      character(len=msg_len) :: msg
+      integer :: j
+
+      call equation_elements(n, elem_eq, first, elems)
+      allocate (a%colptr(n + 1), next(n), stat=stat, errmsg=msg)
+      if (stat == 0) then
+         ! pass 1: entries per column; pass 2: their rows, ascending because
+         ! the rows are visited in order
+         call visit_pattern(n, elem_eq, first, elems, next)
+         a%colptr(1) = 1
+         do j = 1, n
+            a%colptr(j + 1) = a%colptr(j) + next(j)
+         end do
+         allocate (a%rowind(a%colptr(n + 1) - 1), a%val(a%colptr(n + 1) - 1), stat=stat, errmsg=msg)
+      end if
+      if (stat /= 0) then
+         stat = 1
+         errmsg = 'sparse_init: allocation of the pattern failed: ' // trim(msg)
+         return
+      end if
+      next = a%colptr(:n)
+      call visit_pattern(n, elem_eq, first, elems, next, a%rowind)
+      a%val = 0.0_dp
+      a%n = n
+   end subroutine sparse_init
+
+   !> Every pair (i, j), i <= j, that an element couples (and every
+   !> diagonal), row by row: without rowind counted in next(j); with it, its
+   !> row stored at rowind(next(j)), next(j) advanced.
+   subroutine visit_pattern(n, elem_eq, first, elems, next, rowind)
+      integer, intent(in) :: n  !< number of equations.
+      integer, intent(in) :: elem_eq(:,:)  !< element freedom table, entries in 0..n.
+      integer, intent(in) :: first(:)  !< (n+1) start of each equation's elements in elems.
+      integer, intent(in) :: elems(:)  !< the elements of each equation.
+      integer(c_long_long), intent(inout) :: next(:)  !< (n) count, or next free place, of each column.
+      integer, intent(inout), optional :: rowind(:)  !< the rows, stored when present.
+      integer, allocatable :: mark(:)
+      integer :: i, j, k, p
+
+      allocate (mark(n))
+      mark = 0
+      if (.not. present(rowind)) next = 0
+      rows: do i = 1, n
+         call visit(i)               ! the diagonal, even of a freedom no element holds
+         do p = first(i), first(i + 1) - 1
+            do k = 1, size(elem_eq, 1)
+               j = elem_eq(k, elems(p))
+               if (j >= i) call visit(j)
+            end do
+         end do
+      end do rows
+
+   contains
+
+      !> The pair (i, j), once.
+      subroutine visit(col)
+         integer, intent(in) :: col  !< its column j.
+         if (mark(col) == i) return
+         mark(col) = i
+         if (present(rowind)) rowind(next(col)) = i
+         next(col) = next(col) + 1
+      end subroutine visit
+
+   end subroutine visit_pattern
+
+   !> The elements of each equation: elems(first(i) : first(i+1) - 1).
+   subroutine equation_elements(n, elem_eq, first, elems)
+      integer, intent(in) :: n  !< number of equations.
+      integer, intent(in) :: elem_eq(:,:)  !< element freedom table, entries in 0..n.
+      integer, allocatable, intent(out) :: first(:)  !< (n+1) start of each equation's elements.
+      integer, allocatable, intent(out) :: elems(:)  !< the elements, equation by equation.
+      integer, allocatable :: fill(:)
+      integer :: e, k, eq
+
+      allocate (first(n + 1))
+      first = 0
+      do e = 1, size(elem_eq, 2)
+         do k = 1, size(elem_eq, 1)
+            eq = elem_eq(k, e)
+            if (eq > 0) first(eq + 1) = first(eq + 1) + 1
+         end do
+      end do
+      first(1) = 1
+      do eq = 1, n
+         first(eq + 1) = first(eq + 1) + first(eq)
+      end do
+      allocate (elems(first(n + 1) - 1))
+      fill = first(:n)
+      do e = 1, size(elem_eq, 2)
+         do k = 1, size(elem_eq, 1)
+            eq = elem_eq(k, e)
+            if (eq == 0) cycle
+            elems(fill(eq)) = e
+            fill(eq) = fill(eq) + 1
+         end do
+      end do
+   end subroutine equation_elements
+
+   !> Set every entry to zero and forget the numeric factor; the pattern and
+   !> its symbolic factorization are kept (the next factorization reuses
+   !> them).
+   subroutine sparse_zero(a)
+      type(sparse_matrix_t), intent(inout) :: a  !< the matrix.
+
+      if (.not. allocated(a%colptr)) return
+      if (.not. allocated(a%val)) allocate (a%val(a%colptr(a%n + 1) - 1))
+      a%val = 0.0_dp
+      a%factored = .false.
+   end subroutine sparse_zero
+
+   !> Release CHOLMOD's factorization (numeric and symbolic); the matrix
+   !> keeps its pattern and, unless it was factored, its values.
+   subroutine sparse_release(a)
+      type(sparse_matrix_t), intent(inout) :: a  !< the matrix.
+
+      call chol_release(a%chol)
+      a%analysed = .false.
+      a%factored = .false.
+   end subroutine sparse_release
+
+   !> After b = a (which shares a's factorization): b's own copy of it.
+   !> On failure (no memory) b holds none and is neither analysed nor
+   !> factored.
+   subroutine sparse_copy_factor(a, b, stat, errmsg)
+      type(sparse_matrix_t), intent(in) :: a  !< the matrix copied.
+      type(sparse_matrix_t), intent(inout) :: b  !< the copy, b = a done.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+
+      call chol_copy(a%chol, b%chol, stat, errmsg)
+      if (stat /= 0) then
+         b%analysed = .false.
+         b%factored = .false.
+      end if
+   end subroutine sparse_copy_factor
+
+   !> Position of A(i,j) in rowind and val, 0 when the pattern lacks it.
+   pure integer(int64) function locate(a, i, j) result(pos)
+      type(sparse_matrix_t), intent(in) :: a  !< the matrix.
+      integer, intent(in) :: i, j  !< row and column indices.
+      integer(int64) :: lo, hi, mid
+      integer :: r, c
+
+      pos = 0
+      if (min(i, j) < 1 .or. max(i, j) > a%n) return
+      r = min(i, j)
+      c = max(i, j)
+      lo = a%colptr(c)
+      hi = a%colptr(c + 1) - 1
+      do while (lo <= hi)
+         mid = (lo + hi) / 2
+         if (a%rowind(mid) == r) then
+            pos = mid
+            return
+         else if (a%rowind(mid) < r) then
+            lo = mid + 1
+         else
+            hi = mid - 1
+         end if
+      end do
+   end function locate
+
+   !> True when the pattern holds A(i,j).
+   pure logical function sparse_in_pattern(a, i, j)
+      type(sparse_matrix_t), intent(in) :: a  !< the matrix.
+      integer, intent(in) :: i, j  !< row and column indices.
+
+      sparse_in_pattern = locate(a, i, j) > 0
+   end function sparse_in_pattern
+
+   !> Add value to A(i,j) (= A(j,i), one stored entry).
+   !>
+   !> Caller's duty: sparse_in_pattern(a, i, j) is true and a is not
+   !> factored (global_matrix checks both); a pair outside the pattern is
+   !> not stored.
+   subroutine sparse_add(a, i, j, value)
+      type(sparse_matrix_t), intent(inout) :: a  !< the matrix, added into.
+      integer, intent(in) :: i, j  !< row and column indices.
+      real(dp), intent(in) :: value  !< value added to A(i,j).
+      integer(int64) :: p
+
+      p = locate(a, i, j)
+      if (p > 0) a%val(p) = a%val(p) + value
+   end subroutine sparse_add
+
+   !> Entry A(i,j) of the unfactored matrix; zero outside the pattern (and
+   !> once factored).
+   pure real(dp) function sparse_get(a, i, j)
+      type(sparse_matrix_t), intent(in) :: a  !< the matrix.
+      integer, intent(in) :: i, j  !< row and column indices.
+      integer(int64) :: p
+
+      sparse_get = 0.0_dp
+      if (.not. allocated(a%val)) return
+      p = locate(a, i, j)
+      if (p > 0) sparse_get = a%val(p)
+   end function sparse_get
+
+   !> y = A x, a not factored and x, y of its size (global_matvec, the one
+   !> caller, checks both).
+   subroutine sparse_matvec(a, x, y)
+      type(sparse_matrix_t), intent(in) :: a  !< the matrix, not factored.
+      real(dp), intent(in) :: x(:)  !< vector of length n.
+      real(dp), intent(out) :: y(:)  !< result A x, length n.
+      integer(int64) :: p
+      integer :: i, j
+      real(dp) :: xj, yj
+
+      y = 0.0_dp
+      do j = 1, a%n
+         xj = x(j)
+         yj = 0.0_dp
+         do p = a%colptr(j), a%colptr(j + 1) - 2        ! above the diagonal
+            i = a%rowind(p)
+            y(i) = y(i) + a%val(p) * xj
+            yj = yj + a%val(p) * x(i)
+         end do
+         p = a%colptr(j + 1) - 1                          ! the diagonal, last
+         y(j) = y(j) + yj + a%val(p) * xj
+      end do
+   end subroutine sparse_matvec
+
+   !> a = a + alpha*b for two unfactored matrices of the same pattern.
+   subroutine sparse_axpy(a, alpha, b, stat, errmsg)
+      type(sparse_matrix_t), intent(inout) :: a  !< the matrix added into.
+      real(dp), intent(in) :: alpha  !< scalar multiplying b.
+      type(sparse_matrix_t), intent(in) :: b  !< the matrix added, same pattern as a.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure (a unchanged).
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+
+      stat = 0
+      if (a%factored .or. b%factored .or. .not. allocated(a%val) .or. .not. allocated(b%val)) then
+         stat = 1
+         errmsg = 'sparse_axpy: a factored matrix cannot be added to or from'
+      else if (a%n /= b%n .or. size(a%rowind) /= size(b%rowind)) then
+         stat = 1
+         errmsg = 'sparse_axpy: patterns differ (orders or numbers of entries)'
+      else if (any(a%colptr /= b%colptr) .or. any(a%rowind /= b%rowind)) then
+         stat = 1
+         errmsg = 'sparse_axpy: patterns differ'
+      else
+         a%val = a%val + alpha * b%val
+      end if
+   end subroutine sparse_axpy
+
+   !> Cholesky factorization by CHOLMOD (module header): the analysis once
+   !> per pattern, the memory check, then the numbers; the values of A are
+   !> released.
+   !>
+   !> On a failed pivot (module header) stat = 1, bad_eq is the equation and
+   !> errmsg says "matrix not positive definite at equation N"; the matrix
+   !> is then left unusable (not flagged factored) until sparse_zero.
+   subroutine sparse_factor(a, stat, errmsg, bad_eq)
+      type(sparse_matrix_t), intent(inout) :: a  !< the matrix, replaced by its factor.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+      integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
+      real(dp), allocatable :: diag(:)
+      integer :: minor, j
+
+      stat = 0
+      bad_eq = 0
+      if (.not. allocated(a%val) .or. a%factored) then
+         stat = 1
+         errmsg = 'sparse_factor: the matrix is not initialised, or is already factored'
+         return
+      end if
+      allocate (diag(a%n))
+      do j = 1, a%n
+         diag(j) = a%val(a%colptr(j + 1) - 1)
+      end do
+      call chol_set_matrix(a%chol, a%colptr, a%rowind, stat, errmsg, a%val)
+      if (stat /= 0) return
+      if (.not. a%analysed) then
+         call sparse_analyse(a, stat, errmsg)
+         if (stat /= 0) return
+      end if
+      deallocate (a%val)        ! CHOLMOD holds the matrix now
+      call chol_factorize(a%chol, minor, stat, errmsg)
+      if (stat /= 0) return
+      call check_pivots(a, diag, minor, stat, errmsg, bad_eq)
+      a%factored = stat == 0
+   end subroutine sparse_factor
+
+   !> The symbolic factorization of the matrix handed over, and the check of
+   !> the factor's size against the machine's memory.
+   subroutine sparse_analyse(a, stat, errmsg)
+      type(sparse_matrix_t), intent(inout) :: a  !< the matrix, handed over to its handle.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+      real(dp) :: flops, machine
+      character(len=msg_len) :: msg
+
+      call chol_analyze(a%chol, a%factor_entries, flops, a%factor_bytes, stat, errmsg)
+      if (stat /= 0) return
+      machine = physical_memory()
+      if (machine > 0.0_dp .and. a%factor_bytes > machine) then
+         stat = 1
+         write (msg, '(a,i0,a,f0.2,a,es9.2,a,f0.2,a)') 'sparse: the factor of the ', a%n, &
+            ' equations would take ', a%factor_bytes / gib, ' GiB (CHOLMOD''s analysis: ', &
+            a%factor_entries, ' nonzeros), more than this machine''s ', machine / gib, &
+            ' GiB: a coarser mesh, or a graded one (&mesh grading)'
+         errmsg = msg
+         call chol_release(a%chol)
+         return
+      end if
+      a%analysed = .true.
+   end subroutine sparse_analyse
+
+   !> The pivot rule of the module header on the factor's diagonal, in the
+   !> order of elimination, up to the column at which CHOLMOD stopped.
+   subroutine check_pivots(a, diag, minor, stat, errmsg, bad_eq)
+      type(sparse_matrix_t), intent(in) :: a  !< the matrix, numerically factored.
+      real(dp), intent(in) :: diag(:)  !< A(j,j) before the factorization, by equation.
+      integer, intent(in) :: minor  !< column (elimination order) where CHOLMOD stopped, n+1 if none.
+      integer, intent(out) :: stat  !< 0 when every pivot passes, 1 otherwise.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+      integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
+      real(dp), allocatable :: ldiag(:)
+      integer, allocatable :: perm(:)
+      real(dp) :: pivot
+      integer :: k, j
+      character(len=msg_len) :: msg
+
+      bad_eq = 0
+      allocate (ldiag(a%n), perm(a%n))
+      call chol_diagonal(a%chol, ldiag, perm, stat, errmsg)
+      if (stat /= 0) return
+      do k = 1, min(minor - 1, a%n)
+         j = perm(k)
+         pivot = ldiag(k)**2
+         if (.not. (pivot > pivot_rel_tol * abs(diag(j)))) then
+            stat = 1
+            bad_eq = j
+            write (msg, '(a,i0,a,es10.3,a,es9.2,a,es10.3,a)') &
+               'matrix not positive definite at equation ', j, ' (pivot ', pivot, &
+               ' <= ', pivot_rel_tol, ' x diagonal ', diag(j), ')'
+            errmsg = msg
+            return
+         end if
+      end do
+      if (minor <= a%n) then
+         stat = 1
+         bad_eq = perm(minor)
+         write (msg, '(a,i0,a,es10.3,a)') 'matrix not positive definite at equation ', &
+            bad_eq, ' (pivot <= 0, diagonal ', diag(bad_eq), ')'
+         errmsg = msg
+      end if
+   end subroutine check_pivots
+
+   !> Solve A x = b with the factor; b is overwritten by x.
+   subroutine sparse_solve(a, b, stat, errmsg)
+      type(sparse_matrix_t), intent(in) :: a  !< the factored matrix.
+      real(dp), intent(inout) :: b(:)  !< right-hand side on entry, solution on return, length n.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
+      character(len=msg_len) :: msg
+
+      stat = 0
+      if (.not. a%factored) then
+         stat = 1
+         errmsg = 'sparse_solve: the matrix is not factored (call sparse_factor first)'
+      else if (size(b) /= a%n) then
+         stat = 1
+         write (msg, '(a,i0,a,i0)') 'sparse_solve: right-hand side has length ', size(b), ' but n = ', a%n
+         errmsg = msg
+      else
+         call chol_solve(a%chol, b, stat, errmsg)
+      end if
+   end subroutine sparse_solve
+
+   !> Largest distance of a stored entry from the diagonal, max (j - i).
+   pure integer function sparse_half_bandwidth(a)
+      type(sparse_matrix_t), intent(in) :: a  !< the matrix.
+      integer :: j
+
+      sparse_half_bandwidth = 0
+      if (.not. allocated(a%colptr)) return
+      do j = 1, a%n
+         sparse_half_bandwidth = max(sparse_half_bandwidth, j - a%rowind(a%colptr(j)))
+      end do
+   end function sparse_half_bandwidth
+
+   !> Number of stored entries of A (the upper triangle's pattern).
+   pure integer(int64) function sparse_entries(a)
+      type(sparse_matrix_t), intent(in) :: a  !< the matrix.
+
+      sparse_entries = 0
+      if (allocated(a%colptr)) sparse_entries = a%colptr(a%n + 1) - 1
+   end function sparse_entries
+
+end module sparse_matrix
