@@ -28,7 +28,9 @@
 !> At the end (damage_close): the summary's items (max_failure_index, the
 !> largest stresses max_abs_s11_MPa ... max_abs_t13_MPa, failure_onset_us,
 !> failure_mode, failure_ply, failure_x_mm, failure_y_mm)
-!> and, in <prefix>.h5, the group /strength (damage_write, layout there).
+!> and, in <prefix>.h5, the group /strength (damage_write, layout there);
+!> with <prefix>.xdmf, the same on a grid of the laminate, which ParaView
+!> and meshio show (/xdmf/plies, src/results/xdmf_plies.f90).
 module damage_record
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t, strength_given
@@ -42,6 +44,7 @@ module damage_record
    use result_files, only: summary_item_t, summary_real, summary_integer, summary_text
    use results_hdf5, only: results_file_t
    use hdf5_io, only: h5io_group, h5io_set_attr, h5io_write
+   use xdmf_plies, only: plies_write
    implicit none
    private
    public :: damage_t, damage_open, damage_step, damage_peak, damage_close, damage_stresses, damage_points
@@ -243,7 +246,8 @@ contains
       type(damage_t), intent(in) :: dmg             !< the record
       type(model_t), intent(in) :: model            !< the model
       type(summary_item_t), allocatable, intent(inout) :: s(:)   !< the summary, items appended
-      type(results_file_t), intent(in) :: rf        !< the results file (written when active)
+      type(results_file_t), intent(inout) :: rf     !< the results file (written when active; its XDMF file
+                                                    !< then shows the ply fields, src/results/xdmf_plies.f90)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=3), parameter :: comp(5) = [character(len=3) :: 's11', 's22', 't12', 't23', 't13']
@@ -292,7 +296,7 @@ contains
       type(damage_t), intent(in) :: dmg
       type(model_t), intent(in) :: model
       real(dp), intent(in) :: xy(:,:)
-      type(results_file_t), intent(in) :: rf
+      type(results_file_t), intent(inout) :: rf
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       character(len=5), parameter :: comp(5) = [character(len=5) :: 's11', 's22', 't12', 't23', 't13']
@@ -334,7 +338,14 @@ contains
          call put_data('strength/peak/' // trim(comp(c)), reshape(sigma(c, :, :, :), [2*dmg%nply, dmg%npoint]), 'Pa')
       end do
       call put_data('strength/peak/failure_index', reshape(fi, [2*dmg%nply, dmg%npoint]), '-')
-      if (stat /= 0) errmsg = rf%path // ': /strength: ' // trim(why)
+      if (stat /= 0) then
+         errmsg = rf%path // ': /strength: ' // trim(why)
+         return
+      end if
+      ! -- the same on the laminate's grid of <prefix>.xdmf (src/results/xdmf_plies.f90)
+      if (rf%xdmf%active) call plies_write(rf%xdmf%plies, rf%fid, model%msh, dmg%stack%z, dmg%stack%angle, &
+         dmg%fi_max, dmg%mode_max, dmg%onset_time, sigma, fi, modes, stat, why)
+      if (stat /= 0) errmsg = rf%path // ': /xdmf/plies: ' // trim(why)
 
    contains
 

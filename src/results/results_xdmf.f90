@@ -10,6 +10,10 @@
 !>               s): the nodal fields u, v, w (m), psi_x, psi_y (rad), and
 !>               peak_u ... peak_psi_y, the state of the step of the largest
 !>               contact force so far (/peak)
+!>   plies       with &strength, at the end of the run: the damage map and
+!>               the ply stresses at the peak force on a grid of the
+!>               laminate, a temporal collection before the fields' one
+!>               (src/results/xdmf_plies.f90, written into /xdmf/plies)
 !>
 !> What XDMF readers need that <prefix>.h5 did not have, in its group /xdmf:
 !>
@@ -72,6 +76,7 @@ module results_xdmf
    use shape_functions, only: nen
    use hdf5_io, only: h5io_group, h5io_write, h5io_rewrite, h5io_view_column, h5io_flush, h5io_set_attr
    use file_system, only: rename_file
+   use xdmf_plies, only: xdmf_plies_t, plies_collection
    implicit none
    private
    public :: xdmf_t, xdmf_open, xdmf_snapshots, xdmf_batch_close, xdmf_peak, xdmf_close
@@ -105,6 +110,7 @@ module results_xdmf
       integer, allocatable :: source(:)             !< whole: the modelled node of each node shown
       real(dp), allocatable :: parity(:,:)          !< whole: (ndof_node, nnode) sign of each field there
       integer(int64) :: written_at = 0              !< system_clock count of the last rewrite
+      type(xdmf_plies_t) :: plies                   !< with &strength, the laminate's ply fields (src/results/xdmf_plies.f90)
    end type xdmf_t
 
 contains
@@ -321,6 +327,7 @@ contains
       write (u, '(a)') '        ' // data_item('Float', 8, int_str(x%nnode) // ' 2', h5 // mesh_points)
       write (u, '(a)') '      </Geometry>'
       write (u, '(a)') '    </Grid>'
+      call plies_collection(x%plies, u, h5, x%time(:x%nsnap))
       write (u, '(a)') '    <Grid Name="fields" GridType="Collection" CollectionType="Temporal">'
       snapshots: do s = 1, x%nsnap
          write (u, '(a)') '      <Grid Name="step ' // int_str(x%step(s)) // '" GridType="Uniform">'

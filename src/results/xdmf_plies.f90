@@ -1,0 +1,271 @@
+!> The ply fields of a run with &strength as a grid of <prefix>.xdmf, so
+!> that ParaView, VisIt and meshio show the damage map and the ply stresses
+!> at the peak force beside the nodal fields (README, "Looking at the
+!> fields"; the values are those of /strength, src/results/damage_record.f90).
+!>
+!> The grid, the laminate: one hexahedron per Gauss point, ply and ply face.
+!> In the plane, the cell of a 3 x 3 Gauss point is the part of its element
+!> that the point's weight stands for: xi, eta cut at -1, -4/9, 4/9, 1 (the
+!> weights 5/9, 8/9, 5/9), mapped by the element's shape functions, so the
+!> cells tile the modelled domain and each holds its point. Through the
+!> thickness, ply k is cut at its middle: the lower half holds the values of
+!> its face towards the impacted face (face 2k-1 of /strength/peak), the
+!> upper half those of the other face (2k). z is the plate's thickness
+!> coordinate turned over (z_view = -z, m): the nodal grid's w points the way
+!> the impactor moves, towards -z in ParaView (Warp By Scalar, normal 0 0 -1),
+!> so the impacted face, ply 1, is on top at z = +h/2.
+!>
+!> Cell c = 2 nply (p - 1) + 2 (k - 1) + f of point p, ply k, face f holds
+!> (XDMF cell attributes; each name carries its unit):
+!>
+!>   ply, face, ply_angle (deg)       where the cell is (face 1: towards the
+!>                                    impacted face, 2: away from it)
+!>   damage_map (-)                   the largest failure index of the ply at
+!>                                    the point over the run, damage_mode its
+!>                                    mode (the codes of failure_criteria),
+!>                                    onset_time (s) the first time it reached
+!>                                    1 (-1 never): /strength/damage_map, ...
+!>   peak_sigma_11 (Pa), peak_sigma_22 (Pa), peak_tau_12 (Pa),
+!>   peak_tau_23 (Pa), peak_tau_13 (Pa), peak_failure_index (-)
+!>                                    at the step of the largest contact force,
+!>                                    material axes: /strength/peak
+!>
+!> In <prefix>.h5, /xdmf/plies: points (npts, 3) m, cells (ncell, 8) numbered
+!> from 0 (VTK's hexahedron order), and one dataset (ncell) per attribute,
+!> copies in cell order (a reader takes one value per cell; meshio does not
+!> reshape). On the paper's 6 x 9 quarter and 20 plies, 19 440 cells, about
+!> 4 MB. The grid covers the modelled domain, also with &output xdmf =
+!> 'whole' (a quarter's ply stresses do not mirror into the whole plate:
+!> a +45 ply mirrors into a -45 one).
+!>
+!> In the XML (plies_collection, called by src/results/results_xdmf.f90 when
+!> it writes the file), a temporal collection "plies" before the nodal
+!> fields' "fields", with the same times: the values do not change with
+!> time, but ParaView's XDMF 3 readers read the top-level temporal
+!> collections only, and meshio's time-series reader takes the last
+!> collection of the file, which stays "fields". ParaView shows two blocks,
+!> the laminate (first) and the plate.
+module xdmf_plies
+   use hdf5, only: hid_t
+   use kinds, only: dp
+   use number_text, only: int_str
+   use mesh, only: mesh_t
+   use shape_functions, only: nen, shape9
+   use hdf5_io, only: h5io_group, h5io_write
+   implicit none
+   private
+   public :: xdmf_plies_t, plies_write, plies_collection
+
+   !> Where the cells of the 3 x 3 Gauss points are cut, along xi and eta.
+   real(dp), parameter :: plies_cut(4) = [-1.0_dp, -4.0_dp/9.0_dp, 4.0_dp/9.0_dp, 1.0_dp]
+   !> The group of the grid's datasets in <prefix>.h5.
+   character(len=*), parameter :: group = 'xdmf/plies'
+   !> Points of the lattice of an element's cut lines (4 x 4).
+   integer, parameter :: nen_lattice = 16
+   !> Number of real and integer cell attributes, their names in the XML and datasets.
+   integer, parameter :: nreals = 9, nints = 3, name_len = 24
+   character(len=name_len), parameter :: real_names(nreals) = [character(len=name_len) :: &
+      'ply_angle (deg)', 'damage_map (-)', 'onset_time (s)', 'peak_sigma_11 (Pa)', 'peak_sigma_22 (Pa)', &
+      'peak_tau_12 (Pa)', 'peak_tau_23 (Pa)', 'peak_tau_13 (Pa)', 'peak_failure_index (-)']
+   character(len=name_len), parameter :: real_sets(nreals) = [character(len=name_len) :: &
+      'ply_angle', 'damage_map', 'onset_time', 'peak_sigma_11', 'peak_sigma_22', &
+      'peak_tau_12', 'peak_tau_23', 'peak_tau_13', 'peak_failure_index']
+   character(len=name_len), parameter :: int_names(nints) = [character(len=name_len) :: 'ply', 'face', 'damage_mode']
+
+   !> The laminate grid of a results file.
+   type :: xdmf_plies_t
+      logical :: active = .false.                   !< /xdmf/plies written: the XML shows it
+      integer :: nply = 0, npoint = 0               !< plies, Gauss points
+      integer :: ncell = 0, npts = 0                !< hexahedra, their points
+      character(len=:), allocatable :: modes        !< the mode codes' words ('0 none, 1 fibre_tension, ...')
+   end type xdmf_plies_t
+
+contains
+
+   !> Writes /xdmf/plies into the open results file fid (module header) and
+   !> makes p active. z(0:nply) the ply interfaces (m, z(0) = -h/2 the
+   !> impacted face), angle the ply angles (deg); the damage map fi_max,
+   !> mode_max, onset (nply, npoint); at the peak force sigma (5, 2, nply,
+   !> npoint) (Pa, s11 s22 t12 t23 t13, material axes) and fi (2, nply,
+   !> npoint); points in element order, 9 per element (ply_stress's order:
+   !> xi fastest).
+   subroutine plies_write(p, fid, msh, z, angle, fi_max, mode_max, onset, sigma, fi, modes, stat, errmsg)
+      type(xdmf_plies_t), intent(out) :: p          !< the grid, active on success
+      integer(hid_t), intent(in) :: fid             !< the open results file
+      type(mesh_t), intent(in) :: msh               !< the modelled mesh
+      real(dp), intent(in) :: z(0:)                 !< (0:nply) ply interfaces (m)
+      real(dp), intent(in) :: angle(:)              !< (nply) ply angles (deg)
+      real(dp), intent(in) :: fi_max(:,:)           !< (nply, npoint) largest failure index over the run (-)
+      integer, intent(in) :: mode_max(:,:)          !< (nply, npoint) its mode
+      real(dp), intent(in) :: onset(:,:)            !< (nply, npoint) first time it reached 1 (s, -1 never)
+      real(dp), intent(in) :: sigma(:,:,:,:)        !< (5, 2, nply, npoint) stresses at the peak force (Pa)
+      real(dp), intent(in) :: fi(:,:,:)             !< (2, nply, npoint) failure indices there (-)
+      character(len=*), intent(in) :: modes         !< the mode codes' words
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      real(dp), allocatable :: xyz(:,:), v(:)
+      integer, allocatable :: cells(:,:), iv(:)
+      integer :: nply, npoint, ncell, c, k
+
+      nply = size(angle)
+      npoint = size(fi_max, 2)
+      ncell = 2*nply*npoint
+      call laminate_grid(msh, z, xyz, cells)
+      call h5io_group(fid, group, stat, errmsg)
+      if (stat == 0) call h5io_write(fid, group // '/points', xyz, stat, errmsg)
+      if (stat == 0) call h5io_write(fid, group // '/cells', cells, stat, errmsg)
+      deallocate (xyz, cells)
+
+      ! -- where each cell is
+      iv = reshape(spread(spread([(k, k = 1, nply)], 1, 2), 3, npoint), [ncell])
+      if (stat == 0) call h5io_write(fid, group // '/ply', iv, stat, errmsg)
+      iv = reshape(spread(spread([1, 2], 2, nply), 3, npoint), [ncell])
+      if (stat == 0) call h5io_write(fid, group // '/face', iv, stat, errmsg)
+      v = reshape(spread(spread(angle, 1, 2), 3, npoint), [ncell])
+      call put_real(1)
+      ! -- the damage map, the same on both faces of a ply
+      v = reshape(spread(fi_max, 1, 2), [ncell])
+      call put_real(2)
+      v = reshape(spread(onset, 1, 2), [ncell])
+      call put_real(3)
+      iv = reshape(spread(mode_max, 1, 2), [ncell])
+      if (stat == 0) call h5io_write(fid, group // '/damage_mode', iv, stat, errmsg)
+      ! -- the peak force's stresses and indices, face by face
+      do c = 1, 5
+         v = reshape(sigma(c, :, :, :), [ncell])
+         call put_real(3 + c)
+      end do
+      v = reshape(fi, [ncell])
+      call put_real(9)
+      if (stat /= 0) return
+      p%active = .true.
+      p%nply = nply
+      p%npoint = npoint
+      p%ncell = ncell
+      p%npts = nen_lattice*msh%nelem*(2*nply + 1)
+      p%modes = modes
+
+   contains
+
+      subroutine put_real(j)
+         integer, intent(in) :: j
+         if (stat == 0) call h5io_write(fid, group // '/' // trim(real_sets(j)), v, stat, errmsg)
+      end subroutine put_real
+
+   end subroutine plies_write
+
+   !> The laminate's points xyz (3, npts) (m) and hexahedra cells (8, ncell)
+   !> numbered from 0 (module header): per element a 4 x 4 lattice of the
+   !> cut lines (plies_cut) at 2 nply + 1 levels (the ply interfaces and
+   !> middles, from the impacted face); per Gauss point, ply and face a
+   !> hexahedron, its lower face first, counter-clockwise seen from above.
+   subroutine laminate_grid(msh, z, xyz, cells)
+      type(mesh_t), intent(in) :: msh
+      real(dp), intent(in) :: z(0:)
+      real(dp), allocatable, intent(out) :: xyz(:,:)
+      integer, allocatable, intent(out) :: cells(:,:)
+      real(dp) :: xe(2, nen), xy(2), zl(0:2*(size(z) - 1))
+      integer :: nply, nl, e, a, b, l, i, j, k, f, c, lo, n0, quad(4)
+
+      nply = size(z) - 1
+      nl = 2*nply + 1
+      ! -- the levels from the impacted face, z turned over (module header)
+      do k = 1, nply
+         zl(2*k - 2) = -z(k - 1)
+         zl(2*k - 1) = -0.5_dp*(z(k - 1) + z(k))
+      end do
+      zl(2*nply) = -z(nply)
+      allocate (xyz(3, nen_lattice*nl*msh%nelem), cells(8, 18*nply*msh%nelem))
+      c = 0
+      elements: do e = 1, msh%nelem
+         xe = msh%coords(:, msh%conn(:, e))
+         n0 = nen_lattice*nl*(e - 1)
+         lattice: do b = 0, 3
+            do a = 0, 3
+               xy = matmul(xe, shape9(plies_cut(a + 1), plies_cut(b + 1)))
+               do l = 0, nl - 1
+                  xyz(:, n0 + lattice_point(a, b, l) + 1) = [xy, zl(l)]
+               end do
+            end do
+         end do lattice
+         ! -- the Gauss points, xi fastest; plies from the impacted face
+         points_j: do j = 1, 3
+            points_i: do i = 1, 3
+               quad = [lattice_point(i - 1, j - 1, 0), lattice_point(i, j - 1, 0), lattice_point(i, j, 0), &
+                       lattice_point(i - 1, j, 0)]
+               do k = 1, nply
+                  do f = 1, 2
+                     c = c + 1
+                     lo = 2*(k - 1) + f                ! the deeper level (lower in z_view)
+                     cells(:, c) = n0 + [quad + lo, quad + lo - 1]
+                  end do
+               end do
+            end do points_i
+         end do points_j
+      end do elements
+
+   contains
+
+      !> Point (from 0, in the element) of lattice corner (a, b) at level l.
+      pure integer function lattice_point(a, b, l)
+         integer, intent(in) :: a, b, l
+         lattice_point = (4*b + a)*nl + l
+      end function lattice_point
+
+   end subroutine laminate_grid
+
+   !> The temporal collection "plies" of the XML on unit u: at each of the
+   !> times (the nodal fields' snapshot times, as the XML gives them), the
+   !> laminate with its cell attributes (module header). h5 is the results
+   !> file as the XML names it, with ':/' appended.
+   subroutine plies_collection(p, u, h5, times)
+      type(xdmf_plies_t), intent(in) :: p           !< the grid (active)
+      integer, intent(in) :: u                      !< the XML file
+      character(len=*), intent(in) :: h5            !< '<file>.h5:/'
+      character(len=*), intent(in) :: times(:)      !< the times (s), as text
+      character(len=:), allocatable :: cells
+      integer :: s, j
+
+      if (.not. p%active) return
+      cells = int_str(p%ncell)
+      write (u, '(a)') '    <Grid Name="plies" GridType="Collection" CollectionType="Temporal">'
+      steps: do s = 1, size(times)
+         write (u, '(a)') '      <Grid Name="plies ' // int_str(s) // '" GridType="Uniform">'
+         write (u, '(a)') '        <Time Value="' // trim(times(s)) // '"/>'
+         write (u, '(a)') '        <Information Name="damage_mode" Value="' // p%modes // '"/>'
+         write (u, '(a)') '        <Topology TopologyType="Hexahedron" NumberOfElements="' // cells // '">'
+         write (u, '(a)') '          ' // data_item('Int', cells // ' 8', h5 // group // '/cells')
+         write (u, '(a)') '        </Topology>'
+         write (u, '(a)') '        <Geometry GeometryType="XYZ">'
+         write (u, '(a)') '          ' // data_item('Float', int_str(p%npts) // ' 3', h5 // group // '/points')
+         write (u, '(a)') '        </Geometry>'
+         do j = 1, nints
+            call attribute(trim(int_names(j)), 'Int', trim(int_names(j)))
+         end do
+         do j = 1, nreals
+            call attribute(trim(real_names(j)), 'Float', trim(real_sets(j)))
+         end do
+         write (u, '(a)') '      </Grid>'
+      end do steps
+      write (u, '(a)') '    </Grid>'
+
+   contains
+
+      subroutine attribute(name, number_type, dataset)
+         character(len=*), intent(in) :: name, number_type, dataset
+         write (u, '(a)') '        <Attribute Name="' // name // '" AttributeType="Scalar" Center="Cell">'
+         write (u, '(a)') '          ' // data_item(number_type, cells, h5 // group // '/' // dataset)
+         write (u, '(a)') '        </Attribute>'
+      end subroutine attribute
+
+   end subroutine plies_collection
+
+   !> An HDF DataItem of 4-byte integers or 8-byte reals.
+   pure function data_item(number_type, dims, where) result(text)
+      character(len=*), intent(in) :: number_type, dims, where
+      character(len=:), allocatable :: text
+      text = '<DataItem Format="HDF" DataType="' // number_type // '" Precision="' &
+         // merge('4', '8', number_type == 'Int') // '" Dimensions="' // dims // '">' // where // '</DataItem>'
+   end function data_item
+
+end module xdmf_plies
