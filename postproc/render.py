@@ -1,7 +1,7 @@
 #!/usr/bin/env pvpython
 """render.py: pictures of a run drawn by ParaView from its <prefix>.xdmf.
 
-    xvfb-run -a pvpython postproc/render.py out/clamped [--size 1600x900]
+    sh postproc/xvfb-render pvpython postproc/render.py out/clamped [--size 1600x900]
     make render PREFIX_RUN=out/clamped          (the same: mk/render.mk)
 
 Opens <prefix>.xdmf as a user does (paraview.simple.OpenDataFile) and writes
@@ -27,7 +27,8 @@ and the peak force and its time from <prefix>_summary.dat.
 
 Debian 12's ParaView (5.11) aborts on a render without an X display, its
 offscreen mode too: run it under xvfb-run (Debian: xvfb; tools/setup-debian
-installs it with the tests' packages). pvpython or Debian's /usr/bin/python3
+installs it with the tests' packages), with the X server's -noreset
+(postproc/xvfb-render says why). pvpython or Debian's /usr/bin/python3
 (python3-paraview). Exit status 0; 1 with a message on an error.
 """
 import argparse
