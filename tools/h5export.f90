@@ -20,14 +20,20 @@
 !> the columns with their units, then x_mm y_mm <field>_mm (or _rad for the
 !> rotations), one grid line of constant x per block, blocks separated by a
 !> blank line: gnuplot's grid format for `splot ... with pm3d`.
-!> Build: make h5export (mk/hdf5.mk). Exit status 1 with a message on error.
+!> Build: make h5export (mk/hdf5.mk). Exit status 1 with a message on
+!> error: every read is checked (a dataset whose checksum, HDF5's
+!> Fletcher32 filter, does not match its data is a read error; so is
+!> anything else HDF5 reports, tools/hdf5_read.f90), and every write of
+!> the table, its flush and its close (a full disk), so that a damaged
+!> file or a table cut short never passes for an export.
 program h5export
-   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
    use hdf5, only: hid_t
    use kinds, only: dp, msg_len
    use hdf5_io, only: h5io_start, h5io_close
    use hdf5_read, only: h5io_open_read, h5io_get_attr, h5io_read
-   use process_stop, only: exit_program
+   use process_stop, only: exit_program, keep_file_size_errors
+   use file_system, only: path_kind, path_regular, file_size
    implicit none
 
    !> Metres to millimetres.
@@ -47,7 +53,9 @@ program h5export
    integer, allocatable :: grid(:,:), steps(:)
    real(dp), allocatable :: xy(:,:), values(:), all_values(:,:), times(:), forces(:)
    real(dp) :: time, force, scale, sx, sy
+   integer(int64) :: bytes
 
+   call keep_file_size_errors()       ! past ulimit -f a write fails and is reported
    ! -- arguments
    path = '';  out_path = '';  field = 'w';  snapshot = 'peak';  mirror = .true.
    iarg = 1
@@ -115,7 +123,10 @@ program h5export
       step = steps(k);  time = times(k);  force = forces(k)
    end if
    call h5io_close(fid, stat, errmsg)
+   if (stat /= 0) call fail(trim(path)//': '//errmsg)
    if (size(values) /= size(xy, 2)) call fail(trim(path)//': the field and /mesh/coordinates differ in size')
+   if (any(grid < 1 .or. grid > size(xy, 2))) &
+      call fail(trim(path)//': /mesh/grid names nodes that /mesh/coordinates does not hold (a damaged file)')
 
    ! -- the table, scan line by scan line (constant x)
    if (ifield >= 4) then
@@ -136,37 +147,74 @@ program h5export
    else
       out = output_unit
    end if
-   write (out, '(a)') '# h5export: '//trim(field)//' from '//trim(path)
-   if (snapshot == 'peak') then
-      write (out, '(a,i0,a,es14.6,a,es14.6,a)') '# snapshot: peak force, step ', step, ', time ', time*us_per_s, &
-         ' us, force ', force, ' N'
-   else
-      write (out, '(a,i0,a,i0,a,es14.6,a,es14.6,a)') '# snapshot ', k, ': step ', step, ', time ', &
-         time*us_per_s, ' us, force ', force, ' N'
+   bytes = 0
+   call write_table(ios, errmsg)
+   if (ios == 0) flush (out, iostat=ios, iomsg=errmsg)
+   if (ios == 0 .and. out /= output_unit) close (out, iostat=ios, iomsg=errmsg)
+   if (ios /= 0) then
+      if (len_trim(out_path) == 0) out_path = '(standard output)'
+      call fail('cannot write '//trim(out_path)//': '//errmsg)
    end if
-   if (mirror) then
-      write (out, '(a)') '# the quarter model mirrored about x = 0 and y = 0 into the whole plate'
-   else
-      write (out, '(a)') "# the modelled domain ('"//domain//"')"
+   ! gfortran 12 reports no failed write(2) (a full disk, ulimit -f): the length on disk does
+   if (len_trim(out_path) > 0) then
+      if (path_kind(trim(out_path)) == path_regular) then
+         if (file_size(trim(out_path)) /= bytes) call fail('cannot write '//trim(out_path)// &
+            ': the table did not reach the disk whole (a full disk, or the file-size limit)')
+      end if
    end if
-   write (out, '(a)') '# columns: x_mm (mm), y_mm (mm), '//trim(field)//'_'//unit_name//' ('//unit_name//')'
-   write (out, '(a)') '# x_mm y_mm '//trim(field)//'_'//unit_name
-   scan_lines: do i = istart, nxg
-      do j = jstart, nyg
-         ii = abs(i);  jj = abs(j)
-         sx = 1.0_dp;  sy = 1.0_dp
-         if (i < 0) sx = -1.0_dp
-         if (j < 0) sy = -1.0_dp
-         associate (n => grid(ii + 1, jj + 1))
-            write (out, '(3es16.7e3)') sx*xy(1, n)*mm_per_m, sy*xy(2, n)*mm_per_m, &
-               merge(parity_x(ifield), 1.0_dp, i < 0)*merge(parity_y(ifield), 1.0_dp, j < 0)*values(n)*scale
-         end associate
-      end do
-      write (out, '(a)') ''
-   end do scan_lines
-   if (out /= output_unit) close (out)
 
 contains
+
+   !> The table on unit `out`: the '#' header, then one grid line of
+   !> constant x per block; ios /= 0 and iomsg at the first write that
+   !> fails. bytes counts what was written (put).
+   subroutine write_table(ios, iomsg)
+      integer, intent(out) :: ios
+      character(len=*), intent(inout) :: iomsg
+      character(len=256) :: line
+      call put('# h5export: '//trim(field)//' from '//trim(path), ios, iomsg)
+      if (snapshot == 'peak') then
+         write (line, '(a,i0,a,es14.6,a,es14.6,a)') '# snapshot: peak force, step ', step, ', time ', time*us_per_s, &
+            ' us, force ', force, ' N'
+      else
+         write (line, '(a,i0,a,i0,a,es14.6,a,es14.6,a)') '# snapshot ', k, ': step ', step, ', time ', &
+            time*us_per_s, ' us, force ', force, ' N'
+      end if
+      if (ios == 0) call put(trim(line), ios, iomsg)
+      if (mirror) then
+         line = '# the quarter model mirrored about x = 0 and y = 0 into the whole plate'
+      else
+         line = "# the modelled domain ('"//domain//"')"
+      end if
+      if (ios == 0) call put(trim(line), ios, iomsg)
+      if (ios == 0) call put('# columns: x_mm (mm), y_mm (mm), '//trim(field)//'_'//unit_name//' ('//unit_name//')', &
+         ios, iomsg)
+      if (ios == 0) call put('# x_mm y_mm '//trim(field)//'_'//unit_name, ios, iomsg)
+      scan_lines: do i = istart, nxg
+         do j = jstart, nyg
+            ii = abs(i);  jj = abs(j)
+            sx = 1.0_dp;  sy = 1.0_dp
+            if (i < 0) sx = -1.0_dp
+            if (j < 0) sy = -1.0_dp
+            associate (n => grid(ii + 1, jj + 1))
+               write (line(:48), '(3es16.7e3)') sx*xy(1, n)*mm_per_m, sy*xy(2, n)*mm_per_m, &
+                  merge(parity_x(ifield), 1.0_dp, i < 0)*merge(parity_y(ifield), 1.0_dp, j < 0)*values(n)*scale
+            end associate
+            if (ios == 0) call put(line(:48), ios, iomsg)
+         end do
+         if (ios == 0) call put('', ios, iomsg)
+         if (ios /= 0) exit scan_lines
+      end do scan_lines
+   end subroutine write_table
+
+   !> One line of the table, its length and end of line added to bytes.
+   subroutine put(text, ios, iomsg)
+      character(len=*), intent(in) :: text
+      integer, intent(out) :: ios
+      character(len=*), intent(inout) :: iomsg
+      write (out, '(a)', iostat=ios, iomsg=iomsg) text
+      bytes = bytes + len(text) + 1
+   end subroutine put
 
    subroutine fail(message)
       character(len=*), intent(in) :: message

@@ -21,6 +21,11 @@ module hdf5_read
       module procedure get_attr_real, get_attr_int, get_attr_string
    end interface h5io_get_attr
 
+   !> What a failed read of a dataset says: HDF5 checks the Fletcher32
+   !> checksum of a dataset written with one, and the structure of the file.
+   character(len=*), parameter :: read_error = 'HDF5 reports an error reading the data (a checksum that does not ' &
+      // 'match, or a damaged file) of the dataset'
+
    !> Reads a whole dataset: real or integer, rank 1 or 2.
    interface h5io_read
       module procedure read_real_1d, read_real_2d, read_int_1d, read_int_2d
@@ -201,7 +206,7 @@ contains
       allocate (x(dims(1)))
       if (size(x) == 0) return
       call h5ltread_dataset_double_f(loc, name, x, dims, err)
-      call h5io_check(err, 'cannot read the dataset', name, stat, errmsg)
+      call h5io_check(err, read_error, name, stat, errmsg)
    end subroutine read_real_1d
 
    !> Reads the rank-2 real dataset `name` (Fortran shape: C order reversed).
@@ -223,7 +228,7 @@ contains
       allocate (x(dims(1), dims(2)))
       if (size(x) == 0) return
       call h5ltread_dataset_double_f(loc, name, x, dims, err)
-      call h5io_check(err, 'cannot read the dataset', name, stat, errmsg)
+      call h5io_check(err, read_error, name, stat, errmsg)
    end subroutine read_real_2d
 
    !> Reads the rank-1 integer dataset `name`.
@@ -245,7 +250,7 @@ contains
       allocate (i(dims(1)))
       if (size(i) == 0) return
       call h5ltread_dataset_int_f(loc, name, i, dims, err)
-      call h5io_check(err, 'cannot read the dataset', name, stat, errmsg)
+      call h5io_check(err, read_error, name, stat, errmsg)
    end subroutine read_int_1d
 
    !> Reads the rank-2 integer dataset `name` (Fortran shape: C order reversed).
@@ -267,7 +272,7 @@ contains
       allocate (i(dims(1), dims(2)))
       if (size(i) == 0) return
       call h5ltread_dataset_int_f(loc, name, i, dims, err)
-      call h5io_check(err, 'cannot read the dataset', name, stat, errmsg)
+      call h5io_check(err, read_error, name, stat, errmsg)
    end subroutine read_int_2d
 
    !> The dimensions (Fortran order) of dataset `name`, which must have rank size(dims).

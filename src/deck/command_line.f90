@@ -15,6 +15,7 @@
 !> missing value is an error (the caller prints the usage line).
 module command_line
    use input_deck, only: deck_t, read_deck, read_deck_file, set_variable
+   use number_text, only: int_str
    implicit none
    private
    public :: options_t, parse_command_line, read_input_deck
@@ -65,6 +66,10 @@ contains
             end if
             i = i + 1
             if (arg == '--set') then
+               if (len(argument(i)) > len(opts%settings)) then      ! it would be cut
+                  errmsg = '--set: longer than ' // int_str(len(opts%settings)) // ' characters'
+                  return
+               end if
                opts%settings = [opts%settings, argument(i)]
             else
                opts%trace = argument(i)

@@ -19,16 +19,40 @@
 !> ... (round brackets exclude the bound), checked on every value, with
 !> non-finite values refused; for words the admissible words, 'a | b | c';
 !> for texts (kind_path) the empty range (any text without control
-!> characters); for logicals none. A default '' means "not given": the
-!> variable is optional and the program decides (k4, k5: Whitney's method;
-!> the strengths of &strength: without them no ply stresses and no failure
-!> criterion are computed, strength_given).
+!> characters); for logicals none; for a list of reals (kind_reals) an
+!> interval every value must lie in ('[-360, 360]' for the ply angles).
+!> Every number a reader produces is finite: NaN, Inf and numbers beyond
+!> the range of a double (1e400) are refused in every real, of a deck and
+!> of --set, before any range is looked at; so are integers beyond
+!> +-huge(0) (src/deck/input_deck.f90, convert).
+!>
+!> "Not given". A default '' makes a variable optional: until the deck (or
+!> --set) gives it, it has no value and the program decides (k4, k5:
+!> Whitney's method; the six strengths of &strength: without them no ply
+!> stresses and no failure criterion, strength_given). "Not given" is kept
+!> in the variable's component as a value no reader produces, so that no
+!> value a deck can write means it: NaN for a real (not_given_real()),
+!> not_given_integer (-huge(0) - 1) for an integer. Ask whether a variable
+!> has a value with is_given(deck, 'group', 'name') (or a named function
+!> built on it, strength_given); compare with the sentinel nowhere else.
+!> The range checks and the /deck attributes of <prefix>.h5 skip a
+!> variable that is not given (value_t%given), and the echo shows it as
+!> '(not given)'.
+!>
+!> Making a real or an integer optional (e.g. &analysis dt, &mesh nx):
+!> its default '' in deck_vars, nothing else here (deck_bind keeps the
+!> sentinel of every optional real and integer); then every reader
+!> of the value asks is_given first, and a deck_t made in code without
+!> default_deck sets the sentinel itself. deck_t%given tells a different
+!> thing: which variables the deck or --set wrote (a default written out
+!> counts: criterion = 'hashin' needs the strengths).
 module deck_schema
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
    use kinds, only: dp
    implicit none
    private
    public :: deck_var_t, deck_t, value_t, deck_vars, deck_groups, deck_bind, find_var, var_key, strength_given
+   public :: is_given, not_given_real, not_given_integer
    public :: kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names
    public :: max_word_len, max_path_len, max_list_len, words_of, words_quoted
 
@@ -40,6 +64,8 @@ module deck_schema
    !> Longest word value (a keyword), longest text value (a path), most
    !> values of a list (plies).
    integer, parameter :: max_word_len = 32, max_path_len = 4096, max_list_len = 1000
+   !> "Not given" of an optional integer: a value no reader produces (module header).
+   integer, parameter :: not_given_integer = -huge(0) - 1
 
    !> One variable of the deck.
    type :: deck_var_t
@@ -71,9 +97,9 @@ module deck_schema
       deck_var_t('lamina', 'nu12', kind_real, '-', '0.30', '(0, 10]', 'major Poisson ratio'), &
       deck_var_t('lamina', 'rho', kind_real, 'kg/m^3', '1580', '[1, 1e5]', 'density'), &
       deck_var_t('laminate', 'angles', kind_reals, 'deg', &
-         '0, 45, 0, -45, 0, 0, 45, 0, -45, 0, 0, -45, 0, 45, 0, 0, -45, 0, 45, 0', '', &
+         '0, 45, 0, -45, 0, 0, 45, 0, -45, 0, 0, -45, 0, 45, 0, 0, -45, 0, 45, 0', '[-360, 360]', &
          'ply angles from x, listed from z = -h/2 (the impacted face) to +h/2, all plies h/n thick ' &
-         // '(the default: the paper''s [0/45/0/-45/0]2s)'), &
+         // '(the default: the paper''s [0/45/0/-45/0]2s); each in [-360, 360]'), &
       deck_var_t('laminate', 'k4', kind_real, '-', '', '(0, 1.2]', 'shear correction factor of Abar44 = k4^2 ' &
          // 'int Qbar44 dz (eq. 6, Table 1); not given: Whitney''s method from the layup'), &
       deck_var_t('laminate', 'k5', kind_real, '-', '', '(0, 1.2]', 'shear correction factor of Abar55 = k5^2 ' &
@@ -183,9 +209,9 @@ module deck_schema
       real(dp) :: e1 = 0, e2 = 0, g12 = 0, g13 = 0, g23 = 0, nu12 = 0, rho = 0
       ! &laminate
       real(dp), allocatable :: angles(:)
-      real(dp) :: k4 = 0, k5 = 0                    !< NaN: not given (Whitney's method; a deck cannot give NaN)
+      real(dp) :: k4 = 0, k5 = 0                    !< NaN: not given (Whitney's method; module header, is_given)
       character(len=:), allocatable :: bend_twist
-      ! &strength (NaN: not given, as k4, k5)
+      ! &strength (NaN: not given, as k4, k5: strength_given)
       real(dp) :: xt = 0, xc = 0, yt = 0, yc = 0, s12 = 0, s23 = 0
       character(len=:), allocatable :: criterion
       ! &impactor
@@ -254,17 +280,52 @@ contains
    !> stresses and the failure criterion are then computed (src/results/damage_record.f90).
    pure logical function strength_given(deck)
       type(deck_t), intent(in) :: deck   !< the deck
-      strength_given = .not. any(ieee_is_nan([deck%xt, deck%xc, deck%yt, deck%yc, deck%s12, deck%s23]))
+      strength_given = is_given(deck, 'strength', 'xt') .and. is_given(deck, 'strength', 'xc') &
+         .and. is_given(deck, 'strength', 'yt') .and. is_given(deck, 'strength', 'yc') &
+         .and. is_given(deck, 'strength', 's12') .and. is_given(deck, 'strength', 's23')
    end function strength_given
 
+   !> True when the variable group.name has a value: always for one with a
+   !> default; for an optional one (default '') when the deck, --set or the
+   !> program gave it one (module header, "Not given"). False for a name the
+   !> schema does not know.
+   pure logical function is_given(deck, group, name)
+      type(deck_t), intent(in) :: deck              !< the deck
+      character(len=*), intent(in) :: group, name   !< the variable, lower case
+      type(deck_t) :: copy
+      type(value_t) :: v
+      integer :: iv
+      iv = find_var(group, name)
+      is_given = iv > 0
+      if (iv == 0) return
+      if (len_trim(deck_vars(iv)%default) > 0) return
+      copy = deck                        ! (deck_bind moves values both ways: a copy keeps deck intent(in))
+      call deck_bind(copy, iv, v, .false.)
+      is_given = v%given
+   end function is_given
+
+   !> "Not given" of an optional real: NaN, a value no reader produces
+   !> (module header).
+   pure function not_given_real() result(x)
+      real(dp) :: x
+      x = ieee_value(x, ieee_quiet_nan)
+   end function not_given_real
+
    !> Moves the value of entry iv between v and the deck's component: into
-   !> the deck when set is true, out of it otherwise.
-   subroutine deck_bind(deck, iv, v, set)
+   !> the deck when set is true, out of it otherwise. An optional real or
+   !> integer (default '') without a value (v%given false) goes in as its
+   !> sentinel and comes out with v%given false (module header, "Not
+   !> given").
+   pure subroutine deck_bind(deck, iv, v, set)
       type(deck_t), intent(inout) :: deck   !< the deck
       integer, intent(in) :: iv             !< entry of deck_vars
       type(value_t), intent(inout) :: v     !< the value
       logical, intent(in) :: set            !< direction: v -> deck
       if (.not. set) v = value_t()
+      if (set .and. .not. v%given) then     ! an optional variable without a value: its sentinel
+         v%r = not_given_real()
+         v%i = not_given_integer
+      end if
       select case (var_key(iv))
       case ('plate.a');                    call bind_real(deck%a, v, set)
       case ('plate.b');                    call bind_real(deck%b, v, set)
@@ -277,15 +338,15 @@ contains
       case ('lamina.nu12');                call bind_real(deck%nu12, v, set)
       case ('lamina.rho');                 call bind_real(deck%rho, v, set)
       case ('laminate.angles');            call bind_list(deck%angles, v, set)
-      case ('laminate.k4');                call bind_optional(deck%k4, v, set)
-      case ('laminate.k5');                call bind_optional(deck%k5, v, set)
+      case ('laminate.k4');                call bind_real(deck%k4, v, set)
+      case ('laminate.k5');                call bind_real(deck%k5, v, set)
       case ('laminate.bend_twist');        call bind_text(deck%bend_twist, v, set)
-      case ('strength.xt');                call bind_optional(deck%xt, v, set)
-      case ('strength.xc');                call bind_optional(deck%xc, v, set)
-      case ('strength.yt');                call bind_optional(deck%yt, v, set)
-      case ('strength.yc');                call bind_optional(deck%yc, v, set)
-      case ('strength.s12');               call bind_optional(deck%s12, v, set)
-      case ('strength.s23');               call bind_optional(deck%s23, v, set)
+      case ('strength.xt');                call bind_real(deck%xt, v, set)
+      case ('strength.xc');                call bind_real(deck%xc, v, set)
+      case ('strength.yt');                call bind_real(deck%yt, v, set)
+      case ('strength.yc');                call bind_real(deck%yc, v, set)
+      case ('strength.s12');               call bind_real(deck%s12, v, set)
+      case ('strength.s23');               call bind_real(deck%s23, v, set)
       case ('strength.criterion');         call bind_text(deck%criterion, v, set)
       case ('impactor.mass');              call bind_real(deck%mass, v, set)
       case ('impactor.velocity');          call bind_real(deck%velocity, v, set)
@@ -330,10 +391,16 @@ contains
       case ('output.xdmf');                call bind_text(deck%xdmf, v, set)
       case ('output.fields_every');        call bind_integer(deck%fields_every, v, set)
       end select
+      if (.not. set .and. len_trim(deck_vars(iv)%default) == 0) then
+         select case (deck_vars(iv)%kind)
+         case (kind_real);    v%given = .not. ieee_is_nan(v%r)
+         case (kind_integer); v%given = v%i /= not_given_integer
+         end select
+      end if
    end subroutine deck_bind
 
    !> A real between v%r and the deck (deck_bind).
-   subroutine bind_real(x, v, set)
+   pure subroutine bind_real(x, v, set)
       real(dp), intent(inout) :: x              !< the deck's component
       type(value_t), intent(inout) :: v         !< the value
       logical, intent(in) :: set                !< direction: v -> x
@@ -345,7 +412,7 @@ contains
    end subroutine bind_real
 
    !> An integer between v%i and the deck (deck_bind).
-   subroutine bind_integer(x, v, set)
+   pure subroutine bind_integer(x, v, set)
       integer, intent(inout) :: x               !< the deck's component
       type(value_t), intent(inout) :: v         !< the value
       logical, intent(in) :: set                !< direction: v -> x
@@ -357,7 +424,7 @@ contains
    end subroutine bind_integer
 
    !> A logical between v%l and the deck (deck_bind).
-   subroutine bind_logical(x, v, set)
+   pure subroutine bind_logical(x, v, set)
       logical, intent(inout) :: x               !< the deck's component
       type(value_t), intent(inout) :: v         !< the value
       logical, intent(in) :: set                !< direction: v -> x
@@ -368,22 +435,8 @@ contains
       end if
    end subroutine bind_logical
 
-   !> An optional real between v%r, v%given and the deck, where NaN stands
-   !> for "not given" (deck_bind).
-   subroutine bind_optional(x, v, set)
-      real(dp), intent(inout) :: x              !< the deck's component
-      type(value_t), intent(inout) :: v         !< the value
-      logical, intent(in) :: set                !< direction: v -> x
-      if (set) then
-         x = v%r
-         if (.not. v%given) x = ieee_value(x, ieee_quiet_nan)
-      else
-         v%r = x;  v%given = .not. ieee_is_nan(x)
-      end if
-   end subroutine bind_optional
-
    !> A word or a text between v%s and the deck ('' for an unset one) (deck_bind).
-   subroutine bind_text(x, v, set)
+   pure subroutine bind_text(x, v, set)
       character(len=:), allocatable, intent(inout) :: x   !< the deck's component
       type(value_t), intent(inout) :: v                   !< the value
       logical, intent(in) :: set                          !< direction: v -> x
@@ -399,7 +452,7 @@ contains
    end subroutine bind_text
 
    !> A list of reals between v%list and the deck (none for an unset one) (deck_bind).
-   subroutine bind_list(x, v, set)
+   pure subroutine bind_list(x, v, set)
       real(dp), allocatable, intent(inout) :: x(:)   !< the deck's component
       type(value_t), intent(inout) :: v              !< the value
       logical, intent(in) :: set                     !< direction: v -> x

@@ -11,15 +11,28 @@
 !> A group starts at '&name' and ends at '/' (or '&end'); names are
 !> case-insensitive; values are separated by commas or blanks and may run
 !> over several lines; strings are quoted with ' or " (a doubled quote
-!> stands for itself); '!' outside a string starts a comment. An item r*v
-!> is the value v repeated r times.
+!> stands for itself); '!' outside a string starts a comment. A repeat
+!> count is Fortran's: r*c is r copies of the value c (r*'text' of a
+!> string), r a whole number from 1; an item_t keeps c once with its count
+!> (the reader of values expands it, src/deck/input_deck.f90), so that a scalar
+!> given 2*0.01 is two values and refused, and angles = 10*0, 4*45 is 14
+!> plies. A UTF-8 byte-order mark at the start of the deck is passed over.
 !>
 !> Stricter than a compiler's namelist reader, so that nothing in a deck is
 !> silently ignored or merged: outside the groups only blank lines and
 !> comments (text after a group's '/' is an error, not a comment); each
 !> assignment names one variable (no array elements, name(3) = ...) and has
-!> at least one value, no empty one between commas; a string ends on its
-!> line. An error comes back as the line it is on and what is wrong.
+!> at least one value, no empty one between commas and no null value r*
+!> (Fortran's "leave it as it was"); a string ends on its line; a deck is
+!> at most max_deck_bytes (1 MiB) long, so that a wrong file (/dev/zero, a
+!> binary) ends the reading at once. An error comes back as the line it is
+!> on and what is wrong; the deck's text in it is shown by shown_text, its
+!> control bytes and bytes that are not UTF-8 escaped (\x00), so that the
+!> message stays one readable line.
+!>
+!> The reading takes time in proportion to the deck's length (the lines,
+!> the strings, the tokens, the groups and the assignments grow by
+!> doubling), whatever the deck holds.
 !>
 !> Why a reader of our own and not `read (unit, nml=...)`: gfortran's
 !> namelist read (tried with gfortran 12) answers a bad value, `a = abc`,
@@ -40,17 +53,29 @@
 !> the groups start and end; the group builder (begin_group, end_group,
 !> build_assignments and the routines under it) makes the groups and, at
 !> each group's end, turns its tokens into its assignments. The first
-!> error stops both.
+!> error stops both. split_value_text reads the value of a command line's
+!> --set group.name=value by the same rules (quotes, commas, repeat counts).
 module deck_text
    use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor
    implicit none
    private
-   public :: item_t, group_text_t, read_deck_text, lower_case
+   public :: item_t, group_text_t, read_deck_text, split_value_text, lower_case, shown_text
+   public :: max_deck_bytes, max_shown
 
-   !> One value as written: its text (without quotes) and whether it was quoted.
+   !> The longest deck (bytes): 1 MiB. A deck is a few kilobytes; this
+   !> bounds the reading of a wrong file (README, "Stability, bad input,
+   !> nothing lost").
+   integer, parameter :: max_deck_bytes = 1048576
+   !> Bytes of the deck's text a message shows before it is cut ('...').
+   integer, parameter :: max_shown = 60
+
+   !> One value as written: its text (without quotes), whether it was
+   !> quoted, and its repeat count (r*c: the value c, r times).
    type :: item_t
       character(len=:), allocatable :: text
       logical :: quoted = .false.
+      integer :: repeat = 1                     !< r of r*c; 1 when no count is written
+      logical :: counted = .false.              !< written with a repeat count r*
    end type item_t
 
    !> name = item, item, ...
@@ -74,12 +99,17 @@ module deck_text
    integer, parameter :: chunk_len = 256
    !> Characters that end a word (besides the end of the line).
    character(len=*), parameter :: word_ends = ' ,=/!''"' // achar(9)
+   !> Digits a repeat count may have: up to 999999999.
+   integer, parameter :: max_count_digits = 9
+   !> UTF-8's byte-order mark, EF BB BF.
+   character(len=*), parameter :: byte_order_mark = char(239) // char(187) // char(191)
 
    !> One token of a group: a word, a string, '=' or ','.
    type :: token_t
       integer :: kind = 0                       !< tok_word, ...
       character(len=:), allocatable :: text     !< as written; a string without its quotes
       integer :: line = 0                       !< line it is on
+      logical :: glued = .false.                !< a string right after a word's '*' (r*'text')
    end type token_t
 
    !> The first error of the reading.
@@ -92,7 +122,8 @@ module deck_text
    !> The reading so far: the groups found, the tokens of the open group
    !> (the last one, while it has no '/'), the first error.
    type :: reader_t
-      type(group_text_t), allocatable :: groups(:)   !< the groups, in order
+      type(group_text_t), allocatable :: groups(:)   !< the groups, in order, groups(:ngroup)
+      integer :: ngroup = 0                          !< groups in groups
       type(token_t), allocatable :: toks(:)          !< tokens of the open group, toks(:ntok)
       integer :: ntok = 0                            !< tokens in toks
       type(text_error_t) :: err                      !< the first error
@@ -113,29 +144,95 @@ contains
       type(reader_t) :: r
       character(len=:), allocatable :: text
       character(len=256) :: msg
-      integer :: ios, nline
+      integer :: ios, nline, bytes
+      logical :: over
 
-      allocate (r%groups(0), r%toks(0))
+      allocate (r%groups(8), r%toks(64))
       r%err%what = ''
       nline = 0
+      bytes = 0
       lines_loop: do
-         call read_line(unit, text, ios, msg)
+         call read_line(unit, max_deck_bytes - bytes, text, ios, msg, over)
          if (ios == iostat_end) exit lines_loop
          nline = nline + 1
+         if (over) then
+            call fail(r%err, 0, 'longer than ' // size_text(max_deck_bytes) // ', the most a deck may be (a deck ' &
+               // 'is a few kilobytes of text: is this the deck?)')
+            exit lines_loop
+         end if
          if (ios /= 0) then
             call fail(r%err, nline, 'cannot read the line: ' // trim(msg))
             exit lines_loop
          end if
+         bytes = bytes + len(text) + 1
+         if (nline == 1 .and. index(text, byte_order_mark) == 1) text = text(len(byte_order_mark) + 1:)
          call scan_line(r, text, nline)
          if (r%err%stat /= 0) exit lines_loop
       end do lines_loop
-      if (r%err%stat == 0 .and. group_open(r)) call fail(r%err, r%groups(size(r%groups))%line, &
+      if (r%err%stat == 0 .and. group_open(r)) call fail(r%err, r%groups(r%ngroup)%line, &
          open_group_name(r) // ": no closing '/' (the group runs to the end of the deck)")
-      call move_alloc(r%groups, groups)
+      groups = r%groups(:r%ngroup)
       stat = r%err%stat
       line = r%err%line
       what = r%err%what
    end subroutine read_deck_text
+
+   !> The values of a text written as a deck writes them after 'name =':
+   !> values separated by commas or blanks, strings quoted with ' or "
+   !> (a doubled quote standing for itself), repeat counts r*c; any other
+   !> character belongs to a word ('out/run' needs no quotes). For the
+   !> value of impact --set group.name=value (src/deck/input_deck.f90).
+   subroutine split_value_text(text, items, stat, what)
+      character(len=*), intent(in) :: text                 !< the value text
+      type(item_t), allocatable, intent(out) :: items(:)   !< its values
+      integer, intent(out) :: stat                         !< 0, or 1 on an error
+      character(len=:), allocatable, intent(out) :: what   !< what is wrong
+      type(token_t), allocatable :: toks(:)
+      type(text_error_t) :: err
+      integer :: i, j, ntok
+      character(len=:), allocatable :: body
+      logical :: ok
+
+      allocate (toks(len(text) + 1))
+      ntok = 0
+      i = 1
+      chars: do while (i <= len(text))
+         select case (text(i:i))
+         case (' ', achar(9))
+            i = i + 1
+         case (',')
+            ntok = ntok + 1
+            toks(ntok) = token_t(tok_comma, ',', 1)
+            i = i + 1
+         case ('''', '"')
+            call scan_quoted(text, i, body, ok)
+            if (.not. ok) then
+               call fail(err, 1, 'a string has no closing ' // text(i:i))
+               exit chars
+            end if
+            ntok = ntok + 1
+            toks(ntok)%kind = tok_string
+            toks(ntok)%text = body
+            toks(ntok)%line = 1
+            toks(ntok)%glued = glued_to_count(text, i, toks(:ntok - 1))
+            i = i + 2 + len(body) + count_quotes(body, text(i:i))
+         case default
+            j = i
+            do while (j < len(text))
+               if (index(' ,''"' // achar(9), text(j+1:j+1)) > 0) exit
+               j = j + 1
+            end do
+            ntok = ntok + 1
+            toks(ntok) = token_t(tok_word, text(i:j), 1)
+            i = j + 1
+         end select
+      end do chars
+      if (err%stat == 0) call make_items(toks(:ntok), 'the value', items, err)
+      if (.not. allocated(items)) allocate (items(0))
+      stat = err%stat
+      what = ''
+      if (err%stat /= 0) what = err%what
+   end subroutine split_value_text
 
    ! ============================================================ tokenizer
 
@@ -179,11 +276,11 @@ contains
             return
          end if
       end if
-      if (size(r%groups) > 0) then
-         call fail(r%err, ln, "text after the closing '/' of " // open_group_name(r) // ": '" // trim(s(i:)) &
-            // "' (outside the groups only comments, after '!')")
+      if (r%ngroup > 0) then
+         call fail(r%err, ln, "text after the closing '/' of " // open_group_name(r) // ": '" &
+            // shown_text(trim(s(i:))) // "' (outside the groups only comments, after '!')")
       else
-         call fail(r%err, ln, "text outside a namelist group: '" // trim(s(i:)) &
+         call fail(r%err, ln, "text outside a namelist group: '" // shown_text(trim(s(i:))) &
             // "' (a group starts with &name; comments start with '!')")
       end if
    end subroutine scan_group_start
@@ -209,7 +306,8 @@ contains
                return
             end if
          end if
-         call fail(r%err, ln, open_group_name(r) // ": no closing '/' before the next group " // trim(s(i:j)))
+         call fail(r%err, ln, open_group_name(r) // ": no closing '/' before the next group " &
+            // shown_text(s(i:max(i, j))))
       case ('''', '"')
          call scan_string(r, s, i, ln)
       case ('=')
@@ -236,33 +334,79 @@ contains
       character(len=*), intent(in) :: s         !< the line
       integer, intent(inout) :: i               !< where its quote is; past its closing quote
       integer, intent(in) :: ln                 !< the line's number
-      character :: q
       character(len=:), allocatable :: body
-      integer :: j
-      q = s(i:i)
-      body = ''
-      j = i + 1
-      do
-         if (j > len(s)) then
-            call fail(r%err, ln, open_group_name(r) // ': a string has no closing ' // q // ' on its line')
-            return
-         end if
-         if (s(j:j) == q) then
-            if (j < len(s)) then
-               if (s(j+1:j+1) == q) then
-                  body = body // q
-                  j = j + 2
-                  cycle
-               end if
-            end if
-            exit
-         end if
-         body = body // s(j:j)
-         j = j + 1
-      end do
+      logical :: ok, glued
+      call scan_quoted(s, i, body, ok)
+      if (.not. ok) then
+         call fail(r%err, ln, open_group_name(r) // ': a string has no closing ' // s(i:i) // ' on its line')
+         return
+      end if
+      glued = glued_to_count(s, i, r%toks(:r%ntok))
       call push(r, tok_string, body, ln)
-      i = j + 1
+      r%toks(r%ntok)%glued = glued
+      i = i + 2 + len(body) + count_quotes(body, s(i:i))
    end subroutine scan_string
+
+   !> The body of the string whose opening quote is s(i:i), its doubled
+   !> quotes made single; ok is false when it has no closing quote. Time in
+   !> proportion to its length.
+   pure subroutine scan_quoted(s, i, body, ok)
+      character(len=*), intent(in) :: s                    !< the text
+      integer, intent(in) :: i                             !< where the opening quote is
+      character(len=:), allocatable, intent(out) :: body   !< the string, without its quotes
+      logical, intent(out) :: ok                           !< a closing quote was found
+      character(len=:), allocatable :: buf
+      character :: q
+      integer :: j, n, next
+      allocate (character(len=len(s)) :: buf)
+      q = s(i:i)
+      n = 0
+      j = i + 1
+      ok = .false.
+      do while (j <= len(s))
+         next = index(s(j:), q)
+         if (next == 0) exit
+         buf(n + 1:n + next - 1) = s(j:j + next - 2)
+         n = n + next - 1
+         j = j + next                             ! past the quote
+         if (j <= len(s)) then
+            if (s(j:j) == q) then                 ! a doubled quote
+               n = n + 1
+               buf(n:n) = q
+               j = j + 1
+               cycle
+            end if
+         end if
+         ok = .true.
+         exit
+      end do
+      body = buf(:n)
+   end subroutine scan_quoted
+
+   !> How many quote characters q the body holds (each was written doubled).
+   pure integer function count_quotes(body, q)
+      character(len=*), intent(in) :: body      !< a string's body
+      character, intent(in) :: q                !< its quote
+      integer :: k
+      count_quotes = 0
+      do k = 1, len(body)
+         if (body(k:k) == q) count_quotes = count_quotes + 1
+      end do
+   end function count_quotes
+
+   !> The string whose quote is s(i:i) follows, without a blank, a word
+   !> token that ends in '*' (a repeat count, r*'text').
+   pure logical function glued_to_count(s, i, toks)
+      character(len=*), intent(in) :: s         !< the line
+      integer, intent(in) :: i                  !< where the string's quote is
+      type(token_t), intent(in) :: toks(:)      !< the tokens before it
+      integer :: n
+      glued_to_count = .false.
+      n = size(toks)
+      if (i < 2 .or. n == 0) return
+      if (s(i-1:i-1) /= '*' .or. toks(n)%kind /= tok_word) return
+      glued_to_count = toks(n)%text(len(toks(n)%text):) == '*'
+   end function glued_to_count
 
    !> Appends a token to the open group's.
    subroutine push(r, kind, text, ln)
@@ -289,13 +433,18 @@ contains
       integer, intent(in) :: ln                 !< line of '&name'
       type(group_text_t), allocatable :: grown(:)
       integer :: g
-      g = size(r%groups)
-      allocate (grown(g + 1))
-      grown(:g) = r%groups
-      grown(g + 1)%name = name
-      grown(g + 1)%line = ln
-      allocate (grown(g + 1)%assignments(0))
-      call move_alloc(grown, r%groups)
+      g = r%ngroup
+      if (g == size(r%groups)) then
+         allocate (grown(2*g + 8))
+         grown(:g) = r%groups(:g)
+         call move_alloc(grown, r%groups)
+      end if
+      g = g + 1
+      r%ngroup = g
+      r%groups(g)%name = name
+      r%groups(g)%line = ln
+      r%groups(g)%closed = .false.
+      allocate (r%groups(g)%assignments(0))
       r%ntok = 0
    end subroutine begin_group
 
@@ -303,7 +452,7 @@ contains
    subroutine end_group(r)
       type(reader_t), intent(inout) :: r        !< the reading
       integer :: g
-      g = size(r%groups)
+      g = r%ngroup
       r%groups(g)%closed = .true.
       call build_assignments(r%toks(:r%ntok), r%groups(g)%name, r%groups(g)%assignments, r%err)
       r%ntok = 0
@@ -314,21 +463,40 @@ contains
    subroutine build_assignments(toks, group, assignments, err)
       type(token_t), intent(in) :: toks(:)                          !< the group's tokens
       character(len=*), intent(in) :: group                         !< its name, for messages
-      type(assignment_t), allocatable, intent(inout) :: assignments(:) !< the group's, added to
+      type(assignment_t), allocatable, intent(inout) :: assignments(:) !< the group's
       type(text_error_t), intent(inout) :: err                      !< the first error
+      type(assignment_t), allocatable :: list(:), grown(:)
       type(assignment_t) :: a
-      integer :: k
+      integer :: k, n
+      allocate (list(8))
+      n = 0
       k = 1
       do while (k <= size(toks))
          if (toks(k)%kind == tok_comma) then
             k = k + 1
          else
             call next_assignment(toks, k, group, a, err)
-            if (err%stat /= 0) return
-            assignments = [assignments, a]
+            if (err%stat /= 0) exit
+            if (n == size(list)) then
+               allocate (grown(2*n))
+               grown(:n) = list(:n)
+               call move_alloc(grown, list)
+            end if
+            n = n + 1
+            call move_assignment(a, list(n))
          end if
       end do
+      assignments = list(:n)
    end subroutine build_assignments
+
+   !> Moves an assignment's components (no copy of its items).
+   subroutine move_assignment(from, to)
+      type(assignment_t), intent(inout) :: from  !< left undefined
+      type(assignment_t), intent(inout) :: to    !< the assignment
+      call move_alloc(from%name, to%name)
+      call move_alloc(from%items, to%items)
+      to%line = from%line
+   end subroutine move_assignment
 
    !> The assignment that starts at toks(k): its name, '=' and its values,
    !> up to the next 'name =' or the group's end; k moves past it.
@@ -338,13 +506,14 @@ contains
       character(len=*), intent(in) :: group     !< the group's name, for messages
       type(assignment_t), intent(out) :: a      !< the assignment
       type(text_error_t), intent(inout) :: err  !< the first error
-      integer :: first, last, n, j
+      integer :: first, last, n
       if (.not. starts_assignment(toks, k)) then
-         call fail(err, toks(k)%line, '&' // group // ": '" // toks(k)%text // "' is not an assignment 'name = value'")
+         call fail(err, toks(k)%line, '&' // group // ": '" // shown_text(toks(k)%text) &
+            // "' is not an assignment 'name = value'")
          return
       end if
       if (name_end(toks(k)%text, 1) /= len(toks(k)%text)) then
-         call fail(err, toks(k)%line, '&' // group // ': ' // toks(k)%text &
+         call fail(err, toks(k)%line, '&' // group // ': ' // shown_text(toks(k)%text) &
             // ': not a variable name (give a whole variable, not an element name(i) = ...)')
          return
       end if
@@ -357,17 +526,87 @@ contains
          call fail(err, a%line, '&' // group // ': ' // a%name // ' = (nothing): give a value')
          return
       end if
-      allocate (a%items(n))
-      n = 0
-      do j = first, last
-         if (toks(j)%kind == tok_word .or. toks(j)%kind == tok_string) then
-            n = n + 1
-            a%items(n)%text = toks(j)%text          ! (not a constructor: gfortran 12 drops the text)
-            a%items(n)%quoted = toks(j)%kind == tok_string
-         end if
-      end do
+      call make_items(toks(first:last), '&' // group // ': ' // a%name, a%items, err)
       k = last + 1
    end subroutine next_assignment
+
+   !> The items of an assignment's value tokens (words, strings and the
+   !> commas between them): a word r*c is c with its repeat count r, a word
+   !> r* glued to a string is that string r times; a word r* alone is r
+   !> null values, an error.
+   subroutine make_items(toks, where, items, err)
+      type(token_t), intent(in) :: toks(:)                 !< the value tokens
+      character(len=*), intent(in) :: where                !< '&group: name', for messages
+      type(item_t), allocatable, intent(out) :: items(:)   !< the values
+      type(text_error_t), intent(inout) :: err             !< the first error
+      character(len=:), allocatable :: rest, why
+      integer :: j, n, r
+      allocate (items(size(toks)))
+      n = 0
+      j = 1
+      tokens: do while (j <= size(toks))
+         select case (toks(j)%kind)
+         case (tok_string)
+            n = n + 1
+            items(n)%text = toks(j)%text             ! (not a constructor: gfortran 12 drops the text)
+            items(n)%quoted = .true.
+         case (tok_word)
+            n = n + 1
+            call repeat_count(toks(j)%text, r, rest, why)
+            if (len(why) > 0) then
+               call fail(err, toks(j)%line, where // ' = ' // shown_text(toks(j)%text) // ': ' // why)
+               exit tokens
+            end if
+            items(n)%text = rest
+            items(n)%repeat = r
+            items(n)%counted = r > 0 .and. len(rest) < len(toks(j)%text)
+            if (items(n)%counted .and. len(rest) == 0) then
+               if (j < size(toks)) then
+                  if (toks(j + 1)%glued) then      ! r*'text'
+                     j = j + 1
+                     items(n)%text = toks(j)%text
+                     items(n)%quoted = .true.
+                     j = j + 1
+                     cycle tokens
+                  end if
+               end if
+               call fail(err, toks(j)%line, where // ' = ' // shown_text(toks(j)%text) // ': ' &
+                  // 'r* with no value after it is r null values, which leave the values as they were: ' &
+                  // 'give the values')
+               exit tokens
+            end if
+         end select
+         j = j + 1
+      end do tokens
+      items = items(:n)
+   end subroutine make_items
+
+   !> The repeat count of a word r*c: r and c (r = 1 and the whole word when
+   !> it has no count; r > 1 or r = 1 with c shorter than the word when it
+   !> has). why is '' or what is wrong with the count.
+   pure subroutine repeat_count(word, r, rest, why)
+      character(len=*), intent(in) :: word                 !< the word
+      integer, intent(out) :: r                            !< the count
+      character(len=:), allocatable, intent(out) :: rest   !< the value after 'r*'
+      character(len=:), allocatable, intent(out) :: why    !< '' or what is wrong
+      integer :: star, k
+      r = 1
+      rest = word
+      why = ''
+      star = index(word, '*')
+      if (star < 2) return
+      if (verify(word(:star - 1), '0123456789') /= 0) return
+      if (star - 1 > max_count_digits) then
+         why = 'a repeat count r*c of more than ' // int_text(max_count_digits) // ' digits'
+         return
+      end if
+      r = 0
+      do k = 1, star - 1
+         r = 10*r + (ichar(word(k:k)) - ichar('0'))
+      end do
+      if (r < 1) why = 'a repeat count r*c needs r >= 1'
+      rest = word(star + 1:)
+   end subroutine repeat_count
 
    !> The values of an assignment, from toks(first) to toks(last), the token
    !> before the next 'name =' or the group's last; n of them are values
@@ -420,14 +659,14 @@ contains
    pure logical function group_open(r)
       type(reader_t), intent(in) :: r           !< the reading
       group_open = .false.
-      if (size(r%groups) > 0) group_open = .not. r%groups(size(r%groups))%closed
+      if (r%ngroup > 0) group_open = .not. r%groups(r%ngroup)%closed
    end function group_open
 
    !> '&name' of the last group, for messages.
    pure function open_group_name(r) result(name)
       type(reader_t), intent(in) :: r           !< the reading, with a group
       character(len=:), allocatable :: name
-      name = '&' // r%groups(size(r%groups))%name
+      name = '&' // r%groups(r%ngroup)%name
    end function open_group_name
 
    !> Records the first error: stat 1, its line and what is wrong.
@@ -440,30 +679,42 @@ contains
       err%what = message
    end subroutine fail
 
-   !> One line of any length; ios = iostat_end at the end of the file.
-   subroutine read_line(unit, line, ios, msg)
+   !> One line of any length, read in chunks into a buffer that doubles;
+   !> ios = iostat_end at the end of the file. over is true (and the
+   !> reading stops) when the line is longer than `budget` bytes.
+   subroutine read_line(unit, budget, line, ios, msg, over)
       integer, intent(in) :: unit                          !< the deck's unit
+      integer, intent(in) :: budget                        !< bytes the line may have
       character(len=:), allocatable, intent(out) :: line   !< the line, without its end of line
       integer, intent(out) :: ios                          !< 0, iostat_end, or the read's error
       character(len=*), intent(inout) :: msg               !< the read's message on an error
+      logical, intent(out) :: over                         !< the line is longer than budget
       character(len=chunk_len) :: chunk
-      integer :: nread
-      line = ''
+      character(len=:), allocatable :: buf, grown
+      integer :: nread, n
+      allocate (character(len=chunk_len) :: buf)
+      n = 0
+      over = .false.
       do
+         nread = 0
          read (unit, '(a)', advance='no', iostat=ios, iomsg=msg, size=nread) chunk
-         if (ios == 0) then
-            line = line // chunk
-         else if (ios == iostat_eor) then
-            line = line // chunk(:nread)
-            ios = 0
-            return
-         else if (ios == iostat_end) then
-            if (len(line) > 0) ios = 0    ! a last line without its end of line
-            return
+         if (ios == 0 .or. ios == iostat_eor) then
+            if (n + nread > len(buf)) then
+               allocate (character(len=2*len(buf)) :: grown)
+               grown(:n) = buf(:n)
+               call move_alloc(grown, buf)
+            end if
+            buf(n + 1:n + nread) = chunk(:nread)
+            n = n + nread
+            over = n > budget
+            if (ios == iostat_eor .or. over) exit
          else
-            return
+            if (ios == iostat_end .and. n > 0) ios = 0    ! a last line without its end of line
+            exit
          end if
       end do
+      if (ios == iostat_eor) ios = 0
+      line = buf(:n)
    end subroutine read_line
 
    !> Index of the last character of the name that starts at s(first:), or
@@ -493,6 +744,97 @@ contains
          if (lge(s(i:i), 'A') .and. lle(s(i:i), 'Z')) lower(i:i) = achar(iachar(s(i:i)) + shift)
       end do
    end function lower_case
+
+   !> s as a message shows it, on one readable line: printable ASCII and
+   !> whole UTF-8 characters as they are; control bytes, DEL, bytes that are
+   !> not UTF-8, C1 controls and the byte-order mark as \xNN; cut after
+   !> max_len bytes (default max_shown) with '...'.
+   pure function shown_text(s, max_len) result(shown)
+      character(len=*), intent(in) :: s             !< the text, as the deck holds it
+      integer, intent(in), optional :: max_len      !< bytes shown at most
+      character(len=:), allocatable :: shown
+      character(len=:), allocatable :: buf
+      character(len=*), parameter :: hex = '0123456789ABCDEF'
+      integer :: i, n, m, code, limit
+      limit = len(s)
+      if (present(max_len)) then
+         limit = min(limit, max_len)
+      else
+         limit = min(limit, max_shown)
+      end if
+      allocate (character(len=4*limit + 8) :: buf)
+      n = 0
+      i = 1
+      do while (i <= limit)
+         code = ichar(s(i:i))
+         m = 1
+         if (code >= 128) m = utf8_length(s, i)
+         if (code >= 32 .and. code /= 127 .and. m > 0) then
+            buf(n + 1:n + m) = s(i:i + m - 1)
+            n = n + m
+            i = i + m
+         else
+            buf(n + 1:n + 4) = '\x' // hex(code/16 + 1:code/16 + 1) // hex(mod(code, 16) + 1:mod(code, 16) + 1)
+            n = n + 4
+            i = i + 1
+         end if
+      end do
+      if (limit < len(s) .and. i <= len(s)) then
+         shown = buf(:n) // '...'
+      else
+         shown = buf(:n)
+      end if
+   end function shown_text
+
+   !> Bytes of the whole UTF-8 character that starts at s(i:i) (a byte of
+   !> 128 or more), 0 when none does (a stray or cut byte, an overlong or
+   !> surrogate form) or when it is one a message must not show as it is:
+   !> a C1 control (U+0080 to U+009F) or the byte-order mark (U+FEFF).
+   pure integer function utf8_length(s, i) result(m)
+      character(len=*), intent(in) :: s         !< the text
+      integer, intent(in) :: i                  !< where the character starts
+      integer :: b0, b1, k, lo, hi
+      b0 = ichar(s(i:i))
+      m = 0
+      select case (b0)
+      case (194:223); m = 2
+      case (224:239); m = 3
+      case (240:244); m = 4
+      case default;   return
+      end select
+      if (i + m - 1 > len(s)) then
+         m = 0
+         return
+      end if
+      lo = 128;  hi = 191
+      if (b0 == 224) lo = 160
+      if (b0 == 237) hi = 159
+      if (b0 == 240) lo = 144
+      if (b0 == 244) hi = 143
+      b1 = ichar(s(i+1:i+1))
+      if (b1 < lo .or. b1 > hi) m = 0
+      do k = i + 2, i + m - 1
+         if (ichar(s(k:k)) < 128 .or. ichar(s(k:k)) > 191) m = 0
+      end do
+      if (m == 2 .and. b0 == 194 .and. b1 <= 159) m = 0                 ! C1 controls
+      if (m == 3 .and. s(i:i + 2) == byte_order_mark) m = 0
+   end function utf8_length
+
+   !> n in decimal.
+   pure function int_text(n) result(text)
+      integer, intent(in) :: n                  !< the number
+      character(len=:), allocatable :: text
+      character(len=12) :: buf
+      write (buf, '(i0)') n
+      text = trim(buf)
+   end function int_text
+
+   !> A size in bytes as '1 MiB (1048576 bytes)'.
+   pure function size_text(bytes) result(text)
+      integer, intent(in) :: bytes              !< the size
+      character(len=:), allocatable :: text
+      text = int_text(bytes/1048576) // ' MiB (' // int_text(bytes) // ' bytes)'
+   end function size_text
 
    !> c is a letter, A-Z or a-z.
    pure logical function is_letter(c)

@@ -10,22 +10,26 @@
 !> Nothing in a deck is silently dropped, merged or cut: an empty deck, a
 !> group or a variable given twice, a name the schema does not know, text
 !> outside the groups, a value of the wrong kind, a list where one value is
-!> expected, a word or path longer than its variable holds, each stops the
-!> reading with one message
+!> expected (2*0.01 is two values: Fortran's repeat count), a word or path
+!> longer than its variable holds, NaN, Inf or a number beyond a double in
+!> any real (NaN is the "not given" of src/deck/deck_schema.f90, which no
+!> deck can write), a deck longer than 1 MiB, each stops the reading with
+!> one message
 !>     <deck>: &group: variable = value: what is wrong
 !> (<deck>: line N: what, for text outside any group), and so does every
 !> value outside its admissible range (the schema's `range`) and every
 !> combination the program cannot run (validate_deck).
 module input_deck
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
    use number_text, only: real_str, real_short, int_str, list_str
-   use system_limits, only: physical_memory, free_disk_space, file_size_limit
+   use system_limits, only: physical_memory, memory_room, free_disk_space, file_size_limit, read_only_file_system
    use storage_choice, only: resolve_storage, matrices_memory
-   use file_system, only: path_problem
-   use deck_text, only: item_t, group_text_t, read_deck_text, lower_case
+   use file_system, only: path_problem, prefix_problem, nearest_directory
+   use deck_text, only: item_t, group_text_t, read_deck_text, split_value_text, lower_case, shown_text
    use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, find_var, &
-      strength_given, words_of, words_quoted, &
+      strength_given, is_given, words_of, words_quoted, &
       kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, &
       max_word_len, max_path_len, max_list_len
    implicit none
@@ -40,6 +44,12 @@ module input_deck
    real(dp), parameter :: min_cr1 = 100.0_dp*epsilon(1.0_dp)
    !> Bytes in a GiB, for the messages of the size checks.
    real(dp), parameter :: mib = 1024.0_dp**2, gib = 1024.0_dp**3
+   !> What a run takes beside its three band matrices, for the check
+   !> against the process's memory limit (ulimit -v): a tenth more for the
+   !> rest of the model, and the libraries' own address space (measured:
+   !> about 135 MiB on 2 cores, most of it OpenBLAS's buffers; OpenBLAS
+   !> waits for ever, or crashes, when it cannot get them).
+   real(dp), parameter :: model_share = 1.1_dp, library_bytes = 160.0_dp*mib
 
    !> The checks of a deck so far (validate_deck): the first failure wins,
    !> the checks after it change nothing.
@@ -57,6 +67,7 @@ contains
    function default_deck() result(deck)
       type(deck_t) :: deck
       type(value_t) :: v
+      type(item_t), allocatable :: items(:)
       character(len=:), allocatable :: what
       integer :: iv, stat
       deck%source = '<defaults>'
@@ -65,7 +76,8 @@ contains
          if (len_trim(deck_vars(iv)%default) == 0) then
             v = value_t(given=.false.)
          else
-            call convert(iv, split_items(deck_vars(iv)%default), v, stat, what)
+            call split_value_text(trim(deck_vars(iv)%default), items, stat, what)
+            if (stat == 0) call convert(iv, items, v, stat, what)
             if (stat /= 0) cycle     ! never: a test reads every default (tests/test_input_deck.pf)
          end if
          call deck_bind(deck, iv, v, .true.)
@@ -185,14 +197,17 @@ contains
    end subroutine read_deck_file
 
    !> Sets one variable from its text, as a deck line would, and checks the
-   !> whole deck again: `impact --set group.var=value`. The text may be a
-   !> list ('0, 90, 90, 0'); a word need not be quoted.
+   !> whole deck again: `impact --set group.var=value`. The text is read as
+   !> a deck's value (src/deck/deck_text.f90, split_value_text): a list ('0,
+   !> 90, 90, 0', '10*0'), a string quoted or not ('a b' quoted, out/run
+   !> without quotes).
    subroutine set_variable(deck, setting, stat, errmsg)
       type(deck_t), intent(inout) :: deck           !< the deck, changed
       character(len=*), intent(in) :: setting       !< 'group.var=value'
       integer, intent(out) :: stat                  !< 0 when the setting and the deck are valid
       character(len=*), intent(inout) :: errmsg     !< the message on failure
       character(len=:), allocatable :: what, key, group, name, text
+      type(item_t), allocatable :: items(:)
       integer :: eq, dot, iv
       type(value_t) :: v
       stat = failed
@@ -219,7 +234,8 @@ contains
          errmsg = '--set: &' // group // ': ' // name // ' = (nothing): give a value'
          return
       end if
-      call convert(iv, split_items(text), v, stat, what)
+      call split_value_text(text, items, stat, what)
+      if (stat == 0) call convert(iv, items, v, stat, what)
       if (stat /= 0) then
          errmsg = '--set: &' // group // ': ' // name // ' = ' // quoted_cut(text) // ': ' // what
          return
@@ -234,92 +250,63 @@ contains
       ! -- recorded as a command line would give it (the echo, /deck settings)
       if (.not. allocated(deck%settings)) deck%settings = ''
       if (len(deck%settings) > 0) deck%settings = deck%settings // ' '
-      if (index(text, ' ') > 0) text = "'" // text // "'"
+      if (index(text, ' ') > 0 .and. index('''"', text(1:1)) == 0) text = "'" // text // "'"
       deck%settings = deck%settings // '--set ' // group // '.' // name // '=' // text
    end subroutine set_variable
 
    !> The value of entry iv from the items of its assignment, checked for its
-   !> kind (not yet for its range: validate_deck).
+   !> kind (not yet for its range: validate_deck). Repeat counts are
+   !> Fortran's: r*c is r values (a scalar given 2*0.01 is given two); every
+   !> real must be a finite number (NaN, Inf and 1e400 are refused: NaN is
+   !> the "not given" of deck_schema's header, which no deck can write),
+   !> every integer within +-huge(0).
    subroutine convert(iv, items, v, stat, what)
-      integer, intent(in) :: iv
-      type(item_t), intent(in) :: items(:)
-      type(value_t), intent(out) :: v
-      integer, intent(out) :: stat
-      character(len=:), allocatable, intent(out) :: what
-      real(dp), allocatable :: list(:)
-      integer :: ios, k, n, star, rep
+      integer, intent(in) :: iv                          !< entry of deck_vars
+      type(item_t), intent(in) :: items(:)               !< the values as written
+      type(value_t), intent(out) :: v                    !< the value
+      integer, intent(out) :: stat                       !< 0, or failed
+      character(len=:), allocatable, intent(out) :: what !< what is wrong
+      integer(int64) :: count
+      integer :: k, ios
       stat = failed
       what = ''
-      if (deck_vars(iv)%kind /= kind_reals .and. size(items) /= 1) then
-         what = 'one value expected, ' // int_str(size(items)) // ' given'
+      count = 0
+      do k = 1, size(items)
+         count = count + items(k)%repeat
+      end do
+      if (deck_vars(iv)%kind /= kind_reals .and. count /= 1) then
+         what = 'one value expected, ' // int_str(int(min(count, int(huge(k), int64)))) // ' given'
+         if (any(items%counted)) what = what // ' (a repeat count r*c gives r values)'
          return
       end if
       select case (deck_vars(iv)%kind)
       case (kind_real)
          if (.not. number_item(items(1))) return
-         read (items(1)%text, *, iostat=ios) v%r
-         if (ios /= 0) then
-            what = 'must be a real number (' // trim(deck_vars(iv)%unit) // ')'
-            return
-         end if
+         call read_real(items(1)%text, trim(deck_vars(iv)%unit), len_trim(deck_vars(iv)%default) == 0, v%r, what)
+         if (len(what) > 0) return
       case (kind_integer)
          if (.not. number_item(items(1))) return
          read (items(1)%text, *, iostat=ios) v%i
-         if (ios /= 0 .or. verify(trim(adjustl(items(1)%text)), '+-0123456789') /= 0) then
-            what = 'must be a whole number'
+         if (ios /= 0 .or. verify(trim(adjustl(items(1)%text)), '+-0123456789') /= 0 .or. v%i < -huge(v%i)) then
+            what = 'must be a whole number (from ' // int_str(-huge(v%i)) // ' to ' // int_str(huge(v%i)) // ')'
             return
          end if
       case (kind_logical)
          read (items(1)%text, *, iostat=ios) v%l
-         if (ios /= 0 .or. items(1)%quoted) then
+         if (ios /= 0 .or. items(1)%quoted .or. index(items(1)%text, '/') > 0) then
             what = 'must be .true. or .false.'
             return
          end if
       case (kind_word, kind_path)
-         v%s = trim(adjustl(items(1)%text))
-         if (deck_vars(iv)%kind == kind_word) v%s = lower_case(v%s)
-         if (deck_vars(iv)%kind == kind_word .and. len(v%s) > max_word_len) then
-            what = 'longer than ' // int_str(max_word_len) // ' characters'
-            return
-         end if
-         if (len(v%s) > max_path_len) then
-            what = 'longer than ' // int_str(max_path_len) // ' characters'
-            return
-         end if
-         do k = 1, len(v%s)
-            if (iachar(v%s(k:k)) < 32 .or. iachar(v%s(k:k)) == 127) then
-               what = 'holds a control character (code ' // int_str(iachar(v%s(k:k))) // ')'
-               return
-            end if
-         end do
+         call convert_text(deck_vars(iv)%kind, items(1)%text, v%s, what)
+         if (len(what) > 0) return
       case (kind_reals)
-         allocate (list(0))
-         items_loop: do k = 1, size(items)
-            if (.not. number_item(items(k))) return
-            star = index(items(k)%text, '*')
-            rep = 1
-            if (star > 0) then
-               read (items(k)%text(:star - 1), *, iostat=ios) rep
-               if (ios /= 0 .or. rep < 1) then
-                  what = 'item ' // int_str(k) // ', ''' // items(k)%text // ''': a repeat count r*v needs r >= 1'
-                  return
-               end if
-            end if
-            n = size(list)
-            if (n + rep > max_list_len) then
-               what = 'more than ' // int_str(max_list_len) // ' values'
-               return
-            end if
-            list = [list, spread(0.0_dp, 1, rep)]
-            read (items(k)%text(star + 1:), *, iostat=ios) list(n + 1)
-            if (ios /= 0) then
-               what = 'item ' // int_str(k) // ', ''' // items(k)%text // ''': must be a real number (' &
-                  // trim(deck_vars(iv)%unit) // ')'
-               return
-            end if
-            list(n + 2:n + rep) = list(n + 1)
-         end do items_loop
-         call move_alloc(list, v%list)
+         if (count > max_list_len) then
+            what = 'more than ' // int_str(max_list_len) // ' values'
+            return
+         end if
+         call convert_list(items, trim(deck_vars(iv)%unit), v%list, what)
+         if (len(what) > 0) return
       end select
       stat = 0
 
@@ -333,6 +320,85 @@ contains
       end function number_item
 
    end subroutine convert
+
+   !> A real from its text: what is '' when it is a finite number, else
+   !> what is wrong (not a number; NaN, Inf or beyond a double's range).
+   subroutine read_real(text, unit, optional, x, what)
+      character(len=*), intent(in) :: text               !< the value as written
+      character(len=*), intent(in) :: unit               !< its unit, for the message
+      logical, intent(in) :: optional                    !< the variable may be left out ("not given")
+      real(dp), intent(out) :: x                         !< the number
+      character(len=:), allocatable, intent(out) :: what !< '' or what is wrong
+      integer :: ios
+      logical :: digits
+      what = ''
+      x = 0.0_dp
+      read (text, *, iostat=ios) x
+      digits = verify(text, '+-.0123456789eEdD') == 0
+      if (ios == 0 .and. digits .and. ieee_is_finite(x)) return
+      what = 'must be a real number'
+      if (unit /= '-' .and. len(unit) > 0) what = what // ' (' // unit // ')'
+      if (ios == 0 .and. digits) then
+         what = what // ' within the range of a double (magnitude below 1.8e308)'
+      else if (ios == 0 .and. .not. ieee_is_finite(x)) then
+         what = what // ': NaN and Inf are not values'
+         if (optional) what = what // ' (leave the variable out for "not given")'
+      end if
+   end subroutine read_real
+
+   !> A word (kind_word: lower case, max_word_len characters at most) or a
+   !> text (kind_path: max_path_len) from its text: what is '' or what is
+   !> wrong (too long, a control character).
+   subroutine convert_text(kind, text, s, what)
+      integer, intent(in) :: kind                        !< kind_word or kind_path
+      character(len=*), intent(in) :: text               !< the value as written
+      character(len=:), allocatable, intent(out) :: s    !< the value
+      character(len=:), allocatable, intent(out) :: what !< '' or what is wrong
+      integer :: k
+      what = ''
+      s = trim(adjustl(text))
+      if (kind == kind_word) s = lower_case(s)
+      if (kind == kind_word .and. len(s) > max_word_len) then
+         what = 'longer than ' // int_str(max_word_len) // ' characters'
+      else if (len(s) > max_path_len) then
+         what = 'longer than ' // int_str(max_path_len) // ' characters'
+      else
+         do k = 1, len(s)
+            if (iachar(s(k:k)) < 32 .or. iachar(s(k:k)) == 127) then
+               what = 'holds a control character (code ' // int_str(iachar(s(k:k))) // ')'
+               return
+            end if
+         end do
+      end if
+   end subroutine convert_text
+
+   !> A list of reals from its items, each r*c expanded to r copies of c
+   !> (at most max_list_len values: the caller counted them).
+   subroutine convert_list(items, unit, list, what)
+      type(item_t), intent(in) :: items(:)               !< the values as written
+      character(len=*), intent(in) :: unit               !< their unit, for messages
+      real(dp), allocatable, intent(out) :: list(:)      !< the values
+      character(len=:), allocatable, intent(out) :: what !< '' or what is wrong
+      integer :: k, n
+      real(dp) :: x
+      n = 0
+      do k = 1, size(items)
+         n = n + items(k)%repeat
+      end do
+      allocate (list(n))
+      n = 0
+      do k = 1, size(items)
+         what = ''
+         if (items(k)%quoted) what = 'a number, not a quoted string, expected'
+         if (len(what) == 0) call read_real(items(k)%text, unit, .false., x, what)
+         if (len(what) > 0) then
+            what = 'item ' // int_str(k) // ', ''' // shown_text(item_written(items(k))) // ''': ' // what
+            return
+         end if
+         list(n + 1:n + items(k)%repeat) = x
+         n = n + items(k)%repeat
+      end do
+   end subroutine convert_list
 
    ! ============================================================= checking
 
@@ -355,7 +421,7 @@ contains
       if (c%stat == 0) call check_impactor(deck, c)
       if (c%stat == 0) call check_domain(deck, c)
       if (c%stat == 0) call check_analysis(deck, c)
-      if (c%stat == 0) call need(c, len(deck%prefix) > 0, 'output', 'prefix', "''", 'must not be empty')
+      if (c%stat == 0) call check_prefix(deck, c)
       if (c%stat == 0) call check_strength(deck, c)
       stat = c%stat
       if (stat /= 0) errmsg = c%message
@@ -390,18 +456,27 @@ contains
          // ' (else the lamina stiffness is not positive definite)')
    end subroutine check_plate
 
-   !> &laminate: at least one ply, every angle finite.
+   !> &laminate: at least one ply (each angle is checked against the
+   !> schema's range, check_range).
    subroutine check_laminate(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
-      integer :: i
       call need(c, size(deck%angles) >= 1, 'laminate', 'angles', '(none)', 'give at least one ply')
-      if (c%stat /= 0) return
-      do i = 1, size(deck%angles)
-         call need(c, ieee_is_finite(deck%angles(i)), 'laminate', 'angles(' // int_str(i) // ')', &
-            real_str(deck%angles(i)), 'must be finite')
-      end do
    end subroutine check_laminate
+
+   !> &output prefix: a name for the result files, not a directory (no
+   !> hidden files, out/_history.dat), on a file system that can be written.
+   subroutine check_prefix(deck, c)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(checks_t), intent(inout) :: c            !< the checks so far
+      character(len=:), allocatable :: why
+      why = prefix_problem(deck%prefix)
+      call need(c, len(why) == 0, 'output', 'prefix', "'" // quoted_cut(deck%prefix) // "'", why)
+      if (c%stat /= 0) return
+      call need(c, .not. read_only_file_system(deck%prefix), 'output', 'prefix', "'" // quoted_cut(deck%prefix) &
+         // "'", 'is on a read-only file system (' // quoted_cut(nearest_directory(deck%prefix)) &
+         // ' is mounted read-only): choose a prefix where the results can be written')
+   end subroutine check_prefix
 
    !> &impactor: the nose smaller than the plate and on it.
    subroutine check_impactor(deck, c)
@@ -501,6 +576,12 @@ contains
          // int_str(deck%ny) // ' the model would need about ' // real_short(memory/gib) // ' GiB of memory (' &
          // real_short(neq) // ' equations), more than this machine''s ' // real_short(machine/gib) &
          // ' GiB: a coarser mesh, or a graded one (&mesh grading)')
+      room = memory_room()
+      if (room >= 0.0_dp) call need(c, model_share*memory + library_bytes < room, 'mesh', 'nx', int_str(deck%nx), &
+         'with ny = ' // int_str(deck%ny) // ' the model would need about ' &
+         // real_short((model_share*memory + library_bytes)/mib) // ' MiB of memory (' // real_short(neq) &
+         // ' equations), more than the ' // real_short(room/mib) // ' MiB this process may still take ' &
+         // '(its limit, ulimit -v or -d): a coarser mesh, or a higher limit')
       if (c%stat /= 0 .or. deck%analysis_kind == 'modes' .or. deck%analysis_kind == 'static') return
       output = (steps/real(deck%every, dp) + 1.0_dp)*row_bytes
       if (deck%hdf5 .and. deck%analysis_kind == 'impact') output = output + h5_fixed_bytes &
@@ -526,7 +607,8 @@ contains
       type(checks_t), intent(inout) :: c            !< the checks so far
       character(len=3), parameter :: names(6) = [character(len=3) :: 'xt', 'xc', 'yt', 'yc', 's12', 's23']
       logical :: missing(6)
-      missing = ieee_is_nan([deck%xt, deck%xc, deck%yt, deck%yc, deck%s12, deck%s23])
+      integer :: k
+      missing = [(.not. is_given(deck, 'strength', trim(names(k))), k = 1, size(names))]
       if (any(missing) .and. .not. all(missing)) call need(c, .false., 'strength', trim(names(findloc(missing, &
          .true., dim=1))), '(not given)', 'give all six strengths (xt, xc, yt, yc, s12, s23) or none')
       if (deck%given(find_var('strength', 'criterion'))) call need(c, .not. all(missing), 'strength', 'criterion', &
@@ -541,14 +623,23 @@ contains
       integer, intent(in) :: iv                     !< entry of deck_vars
       type(value_t), intent(in) :: v                !< its value
       type(deck_var_t) :: e
+      integer :: k
       e = deck_vars(iv)      ! (a copy: gfortran 12 loses an associate name of a constant's element)
       select case (e%kind)
       case (kind_real)
          if (v%given) call need(c, in_interval(v%r, e%range), trim(e%group), trim(e%name), real_str(v%r), &
             interval_text(e%range, e%unit))
       case (kind_integer)
-         call need(c, in_interval(real(v%i, dp), e%range), trim(e%group), trim(e%name), int_str(v%i), &
+         if (v%given) call need(c, in_interval(real(v%i, dp), e%range), trim(e%group), trim(e%name), int_str(v%i), &
             interval_text(e%range, e%unit))
+      case (kind_reals)
+         if (len_trim(e%range) == 0) return
+         do k = 1, size(v%list)
+            if (in_interval(v%list(k), e%range)) cycle
+            call need(c, .false., trim(e%group), trim(e%name) // '(' // int_str(k) // ')', real_str(v%list(k)), &
+               interval_text(e%range, e%unit))
+            return
+         end do
       case (kind_word)
          call need(c, index(' ' // words_of(e%range) // ' ', ' ' // v%s // ' ') > 0 .and. len(v%s) > 0, &
             trim(e%group), trim(e%name), "'" // v%s // "'", 'must be one of ' // words_quoted(e%range))
@@ -645,40 +736,8 @@ contains
 
    ! ============================================================== helpers
 
-   !> The items of a value text split as a deck line's: '0, 45, -45' -> three
-   !> items; quotes are not interpreted (a --set word needs none).
-   function split_items(text) result(items)
-      character(len=*), intent(in) :: text
-      type(item_t), allocatable :: items(:)
-      type(item_t), allocatable :: grown(:)
-      integer :: i, from, n
-      character(len=len(text) + 1) :: t
-      allocate (items(0))
-      t = text // ','
-      from = 1
-      do i = 1, len(t)
-         if (t(i:i) == ',' .or. t(i:i) == ' ') then
-            if (i > from) then
-               n = size(items)
-               allocate (grown(n + 1))
-               grown(:n) = items
-               grown(n + 1)%text = t(from:i - 1)      ! (component by component: see deck_text)
-               grown(n + 1)%quoted = .false.
-               call move_alloc(grown, items)
-            end if
-            from = i + 1
-         end if
-      end do
-      if (size(items) == 1) then     ! a single value: keep its blanks and strip quotes
-         items(1)%text = trim(adjustl(text))
-         if (len(items(1)%text) >= 2) then
-            if (index('''"', items(1)%text(1:1)) > 0 .and. items(1)%text(len(items(1)%text):) == items(1)%text(1:1)) &
-               items(1)%text = items(1)%text(2:len(items(1)%text) - 1)
-         end if
-      end if
-   end function split_items
-
-   !> The items as they were written, for a message.
+   !> The items as they were written, for a message (cut short after
+   !> max_quoted characters: the time does not grow with the deck).
    function items_text(items) result(text)
       type(item_t), intent(in) :: items(:)
       character(len=:), allocatable :: text
@@ -686,28 +745,27 @@ contains
       text = ''
       do k = 1, size(items)
          if (k > 1) text = text // ', '
-         if (items(k)%quoted) then
-            text = text // "'" // items(k)%text // "'"
-         else
-            text = text // items(k)%text
-         end if
+         text = text // item_written(items(k))
+         if (len(text) > max_quoted) exit
       end do
       text = quoted_cut(text)
    end function items_text
 
-   !> text, cut short after max_quoted characters, its control characters shown as '?'.
+   !> An item as it was written: r*c, a string in quotes.
+   function item_written(item) result(text)
+      type(item_t), intent(in) :: item
+      character(len=:), allocatable :: text
+      text = item%text(:min(len(item%text), max_quoted + 1))
+      if (item%quoted) text = "'" // text // "'"
+      if (item%counted) text = int_str(item%repeat) // '*' // text
+   end function item_written
+
+   !> text as a message shows it: cut short after max_quoted characters,
+   !> its control bytes and bytes that are not UTF-8 escaped (\x00).
    pure function quoted_cut(text) result(cut)
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: cut
-      integer :: k
-      if (len(text) > max_quoted) then
-         cut = text(:max_quoted) // '...'
-      else
-         cut = text
-      end if
-      do k = 1, len(cut)          ! a control character would break the message's one line
-         if (iachar(cut(k:k)) < 32 .or. iachar(cut(k:k)) == 127) cut(k:k) = '?'
-      end do
+      cut = shown_text(text, max_quoted)
    end function quoted_cut
 
    !> The groups as '&plate, &lamina, ...'.

@@ -117,10 +117,12 @@ contains
          errmsg = msg
          return
       end if
-      allocate (a%ab(kd + 1, n), stat=stat, errmsg=msg)
-      if (stat /= 0) then
+      allocate (a%ab(kd + 1, n), stat=stat)
+      if (stat /= 0) then       ! (gfortran 12's errmsg= says "Attempt to allocate an allocated object")
+         write (msg, '(a,i0,a,i0,a,i0,a)') 'band_init: out of memory: the band matrix of ', kd + 1, ' x ', n, &
+            ' reals (', (int(kd + 1, int64)*int(n, int64)*8_int64)/1048576_int64, ' MiB) cannot be allocated'
          stat = 1
-         errmsg = 'band_init: allocation of the band failed: ' // trim(msg)
+         errmsg = msg
          return
       end if
       a%n = n

@@ -10,20 +10,29 @@
 !> in the key's name (peak_force_N).
 !>
 !> Nothing lost: before any work a run claims its files (claim_results,
-!> the list of each analysis in result_suffixes): it creates the prefix's
+!> the list of each analysis in result_suffixes): it checks their names
+!> against the file system's NAME_MAX and PATH_MAX, creates the prefix's
 !> directories (by the C library, no shell), refuses to start when one of
 !> its files exists, the results of another run, unless &output overwrite
-!> = .true. (or impact --overwrite), creates its first file exclusively
-!> (of two runs started together with one prefix, one wins, the other
-!> stops before it writes anything) and holds a lock on it until it ends
-!> (two runs that both overwrite cannot write at once either).
+!> = .true. (or impact --overwrite), and whenever one of them, or the
+!> temporary name it is written under, is a symbolic link (a write would
+!> change the file the link points to, with overwrite or, for a dangling
+!> link, even without) or no regular file; creates its first file
+!> exclusively (of two runs started together with one prefix, one wins,
+!> the other stops before it writes anything) and holds a lock on it until
+!> it ends (two runs that both overwrite cannot write at once either).
+!> The files are then opened by name (a Fortran unit, HDF5), each checked
+!> again just before (open_columns) or written under a temporary name,
+!> created exclusively, and renamed into place (the summary).
 module result_files
    use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t
    use deck_echo, only: echo_deck
-   use file_system, only: make_directories, parent_directory, path_problem, file_lock_t, lock_file, unlock_file, &
-      rename_file, file_size, file_probe_t, probe_size
+   use file_system, only: make_directories, parent_directory, prefix_problem, name_problem, short_path, &
+      path_kind, path_missing, path_regular, path_link, path_directory, path_other, create_new_file, remove_file, &
+      file_lock_t, lock_file, unlock_file, rename_file, file_size, file_probe_t, probe_size
+   use system_limits, only: name_max, path_max, read_only_file_system
    implicit none
    private
    public :: column_t, history_columns, nhist, nhist_strength, history_width
@@ -92,6 +101,10 @@ module result_files
       logical :: created = .false.                 !< the claim created it (empty)
    end type results_claim_t
 
+   !> What a file's temporary name adds to it: a file replaced in one step
+   !> is written under <file>.tmp, then renamed (the summary, the XDMF file).
+   character(len=*), parameter :: temporary = '.tmp'
+
    !> Bytes reserved for the summary before a run (reserve_summary): it is
    !> a few kilobytes.
    integer, parameter :: summary_reserve = 65536
@@ -138,61 +151,115 @@ contains
       end select
    end function result_suffixes
 
-   !> Before any work: the prefix is a usable path, its directories exist
-   !> (created), no result file of this run exists unless the deck says
-   !> &output overwrite = .true.; then the first file is created (exclusively
-   !> when it must not exist) and locked for the run. Messages name the
-   !> deck, &output and prefix.
+   !> Before any work: the prefix is a usable path, its names fit the file
+   !> system (NAME_MAX, PATH_MAX), its directories exist (created), no
+   !> result file of this run exists unless the deck says &output overwrite
+   !> = .true., and none, nor the temporary name it is written under
+   !> (<file>.tmp), is a symbolic link or anything but a regular file (no
+   !> write goes through a link, not even with overwrite); then the first
+   !> file is created exclusively when it does not exist and locked for the
+   !> run. Messages name the deck, &output, the prefix and the file.
    subroutine claim_results(deck, suffixes, claim, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< effective deck (prefix, overwrite)
       character(len=*), intent(in) :: suffixes(:)   !< the run's file names after the prefix
       type(results_claim_t), intent(out) :: claim   !< the claim, held until release_results
       integer, intent(out) :: stat                  !< 0 when the run may write its results
       character(len=*), intent(inout) :: errmsg     !< reason on failure
-      character(len=:), allocatable :: head, path, why
+      character(len=:), allocatable :: head, why
       character(len=msg_len) :: iomsg
-      integer :: i, u
-      logical :: exists
 
-      head = deck%source // ": &output: prefix = '" // deck%prefix // "': "
-      why = path_problem(deck%prefix)
+      head = deck%source // ": &output: prefix = '" // short_path(deck%prefix) // "': "
+      stat = 1
+      why = prefix_problem(deck%prefix)
+      if (len(why) == 0) why = names_problem(deck%prefix, suffixes)
       if (len(why) > 0) then
-         stat = 1
          errmsg = head // why
          return
       end if
       call make_directories(parent_directory(deck%prefix), stat, iomsg)
       if (stat /= 0) then
-         errmsg = head // trim(iomsg)
+         errmsg = head // trim(iomsg) // read_only_note(deck%prefix)
          return
       end if
-      files: do i = 1, size(suffixes)
-         path = deck%prefix // trim(suffixes(i))
-         inquire (file=path, exist=exists)
-         if (exists .and. .not. deck%overwrite) then
-            stat = 1
-            errmsg = head // path // ' exists, the results of another run: choose another prefix, or set ' &
-               // 'overwrite = .true. in &output (or run impact --overwrite) to replace them'
-            return
-         end if
-      end do files
+      why = files_problem(deck%prefix, suffixes, deck%overwrite)
+      if (len(why) > 0) then
+         stat = 1
+         errmsg = head // why
+         return
+      end if
       claim%first = deck%prefix // trim(suffixes(1))
-      if (.not. deck%overwrite) then
-         ! status = 'new' creates the file exclusively (O_EXCL): of two runs, one does
-         open (newunit=u, file=claim%first, status='new', action='write', iostat=stat, iomsg=iomsg)
+      if (path_kind(claim%first) == path_missing) then
+         ! created exclusively (O_CREAT | O_EXCL): of two runs, one does
+         call create_new_file(claim%first, stat, iomsg)
          if (stat /= 0) then
-            inquire (file=claim%first, exist=exists)
-            errmsg = head // 'cannot write ' // claim%first // ': ' // trim(iomsg)
-            if (exists) errmsg = head // claim%first // ' was just created by another run with the same ' &
-               // 'prefix: choose another prefix'
+            errmsg = head // 'cannot write ' // short_path(claim%first) // ': ' // trim(iomsg) &
+               // read_only_note(deck%prefix)
+            if (path_kind(claim%first) /= path_missing) errmsg = head // short_path(claim%first) &
+               // ' was just created by another run with the same prefix: choose another prefix'
             return
          end if
-         close (u)
          claim%created = .true.
       end if
       call lock_file(claim%first, claim%lock, stat, iomsg)
       if (stat /= 0) errmsg = head // trim(iomsg) // ': choose another prefix, or wait for that run to end'
    end subroutine claim_results
+
+   !> Why the run's file names cannot be made on the file system the prefix
+   !> is on, '' when they can: a part of the prefix or a file's name
+   !> (with .tmp, the longest) longer than NAME_MAX, a path longer than
+   !> PATH_MAX.
+   function names_problem(prefix, suffixes) result(why)
+      character(len=*), intent(in) :: prefix        !< the prefix
+      character(len=*), intent(in) :: suffixes(:)   !< the file names after it
+      character(len=:), allocatable :: why
+      integer :: i, longest
+      longest = 1
+      do i = 2, size(suffixes)
+         if (len_trim(suffixes(i)) > len_trim(suffixes(longest))) longest = i
+      end do
+      why = name_problem(prefix // trim(suffixes(longest)) // temporary, name_max(prefix), path_max)
+   end function names_problem
+
+   !> Why the run cannot write its files, '' when it can: one of them, or
+   !> the temporary name it is written under, is a symbolic link (even a
+   !> dangling one), a directory or another kind of file; one exists and
+   !> overwrite is false (the results of another run).
+   function files_problem(prefix, suffixes, overwrite) result(why)
+      character(len=*), intent(in) :: prefix        !< the prefix
+      character(len=*), intent(in) :: suffixes(:)   !< the file names after it
+      logical, intent(in) :: overwrite              !< &output overwrite (or --overwrite)
+      character(len=:), allocatable :: why
+      character(len=:), allocatable :: path
+      integer :: i, k
+      why = ''
+      files: do i = 1, size(suffixes)
+         do k = 1, 2
+            path = prefix // trim(suffixes(i))
+            if (k == 2) path = path // temporary
+            select case (path_kind(path))
+            case (path_link)
+               why = short_path(path) // ' is a symbolic link: a run writes no file through a link (it would ' &
+                  // 'change the file it points to): remove the link, or choose another prefix'
+            case (path_directory, path_other)
+               why = short_path(path) // ' exists and is not a regular file: choose another prefix'
+            case (path_regular)
+               if (k == 1 .and. .not. overwrite) why = short_path(path) // ' exists, the results of another ' &
+                  // 'run: choose another prefix, or set overwrite = .true. in &output (or run impact ' &
+                  // '--overwrite) to replace them'
+            end select
+            if (len(why) > 0) return
+         end do
+      end do files
+   end function files_problem
+
+   !> ' (the file system is read-only)' when the prefix is on one, '' else:
+   !> for the message of a file that could not be made.
+   function read_only_note(prefix) result(note)
+      character(len=*), intent(in) :: prefix        !< the prefix
+      character(len=:), allocatable :: note
+      note = ''
+      if (read_only_file_system(prefix)) note = ' (the file system is read-only)'
+   end function read_only_note
 
    !> Ends a claim: the lock is released; with `discard`, the first file is
    !> removed when the claim created it and nothing has been written to it
@@ -200,13 +267,10 @@ contains
    subroutine release_results(claim, discard)
       type(results_claim_t), intent(inout) :: claim  !< the claim
       logical, intent(in) :: discard                 !< remove the first file if still as created
-      integer :: u, ios
-      integer(int64) :: bytes
+      integer :: ios
       if (discard .and. claim%created) then
-         inquire (file=claim%first, size=bytes)
-         if (bytes == 0) then
-            open (newunit=u, file=claim%first, status='old', iostat=ios)
-            if (ios == 0) close (u, status='delete')
+         if (path_kind(claim%first) == path_regular) then
+            if (file_size(claim%first) == 0) call remove_file(claim%first, ios)
          end if
       end if
       call unlock_file(claim%lock)
@@ -231,10 +295,16 @@ contains
       character(len=msg_len) :: iomsg
       integer :: pad
       path = deck%prefix // suffix
+      if (path_kind(path) == path_link) then
+         stat = 1
+         errmsg = deck%source // ": &output: prefix = '" // short_path(deck%prefix) // "': " // short_path(path) &
+            // ' is a symbolic link: a run writes no file through a link'
+         return
+      end if
       open (newunit=unit, file=path, status='replace', action='write', iostat=stat, iomsg=iomsg)
       if (stat /= 0) then
-         errmsg = deck%source // ": &output: prefix = '" // deck%prefix // "': cannot write " // path &
-            // ': ' // trim(iomsg)
+         errmsg = deck%source // ": &output: prefix = '" // short_path(deck%prefix) // "': cannot write " &
+            // short_path(path) // ': ' // trim(iomsg)
          return
       end if
       call write_header(0)
@@ -388,23 +458,29 @@ contains
       character(len=msg_len) :: iomsg
       character(len=:), allocatable :: path
       integer :: u, i
-      path = deck%prefix // '_summary.dat.tmp'
-      open (newunit=u, file=path, status='replace', action='write', iostat=stat, iomsg=iomsg)
+      path = deck%prefix // '_summary.dat' // temporary
+      call remove_file(path, i)        ! one a killed run left (a link itself, never what it points to)
+      open (newunit=u, file=path, status='new', action='write', iostat=stat, iomsg=iomsg)
+      if (stat /= 0) then              ! (u is undefined: no close, which could close standard error)
+         errmsg = short_path(path) // ': ' // trim(iomsg)
+         return
+      end if
       do i = 1, lines
-         if (stat /= 0) exit
          write (u, '(a)', iostat=stat, iomsg=iomsg) '#' // repeat(' ', line_len - 1)
+         if (stat /= 0) exit
       end do
       if (stat == 0) then
          close (u, iostat=stat, iomsg=iomsg)
       else
          close (u, status='delete', iostat=i)
       end if
-      if (stat /= 0) errmsg = path // ': ' // trim(iomsg)
+      if (stat /= 0) errmsg = short_path(path) // ': ' // trim(iomsg)
    end subroutine reserve_summary
 
    !> Writes <prefix>_summary.dat: title, deck echo, 'key = value' lines.
-   !> It is written whole to <prefix>_summary.dat.tmp and renamed into
-   !> place, so the file is either the previous one or complete.
+   !> It is written whole to <prefix>_summary.dat.tmp (the space
+   !> reserve_summary reserved, or a file created exclusively) and renamed
+   !> into place, so the file is either the previous one or complete.
    subroutine write_summary_file(deck, items, stat, errmsg)
       type(deck_t), intent(in) :: deck                  !< effective deck
       type(summary_item_t), intent(in) :: items(:)      !< the summary
@@ -413,16 +489,19 @@ contains
       character(len=msg_len) :: iomsg
       character(len=:), allocatable :: path
       integer :: u, i
-      logical :: reserved
       path = deck%prefix // '_summary.dat'
-      inquire (file=path // '.tmp', exist=reserved)
-      if (reserved) then         ! written over the reserved space, then cut to its length
-         open (newunit=u, file=path // '.tmp', status='old', action='readwrite', position='rewind', &
+      if (path_kind(path // temporary) == path_regular) then    ! written over the reserved space, then cut
+         open (newunit=u, file=path // temporary, status='old', action='readwrite', position='rewind', &
                iostat=stat, iomsg=iomsg)
       else
-         open (newunit=u, file=path // '.tmp', status='replace', action='write', iostat=stat, iomsg=iomsg)
+         call remove_file(path // temporary, i)
+         open (newunit=u, file=path // temporary, status='new', action='write', iostat=stat, iomsg=iomsg)
       end if
-      if (stat == 0) write (u, '(a)', iostat=stat, iomsg=iomsg) &
+      if (stat /= 0) then              ! (u is undefined: no close, which could close standard error)
+         errmsg = short_path(path) // ': ' // trim(iomsg)
+         return
+      end if
+      write (u, '(a)', iostat=stat, iomsg=iomsg) &
          '# impact: summary (key = value; units in the key names)'
       if (stat == 0) call echo_deck(deck, u, '# ')
       do i = 1, size(items)
@@ -435,8 +514,8 @@ contains
       else
          close (u, iostat=i)
       end if
-      if (stat == 0) call rename_file(path // '.tmp', path, stat, iomsg)
-      if (stat /= 0) errmsg = path // ': ' // trim(iomsg)
+      if (stat == 0) call rename_file(path // temporary, path, stat, iomsg)
+      if (stat /= 0) errmsg = short_path(path) // ': ' // trim(iomsg)
    end subroutine write_summary_file
 
 

@@ -7,12 +7,14 @@
 !> (with a terminating c_null_char).
 module c_library
    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_ptr, c_funptr, c_int64_t, c_size_t
+   use, intrinsic :: iso_c_binding, only: c_int32_t, c_int16_t
    implicit none
    private
    public :: statvfs_t, rlimit_t
    public :: c_fopen, c_fclose, c_fileno, c_rename, c_lseek, c_truncate, c_sysconf, c_mkdir, c_flock, &
              c_statvfs, c_getrlimit, c_signal, c_exit, c_isatty
    public :: c_open, c_close, c_fsync, c_unlink, c_write
+   public :: statx_t, c_statx
 
    !> struct statvfs (<sys/statvfs.h>): eleven unsigned longs (read as
    !> signed: sizes below 2^63) and six ints.
@@ -160,6 +162,33 @@ module c_library
          integer(c_size_t), value :: count
          integer(c_long) :: r
       end function c_write
+   end interface
+
+   !> struct statx (<linux/stat.h>, Linux 4.11, glibc 2.28): the same layout
+   !> on every architecture, unlike struct stat. The times are four
+   !> struct statx_timestamp (a 64-bit second, a 32-bit nanosecond, 32 bits
+   !> reserved), read here as pairs of 64-bit words.
+   type, bind(c) :: statx_t
+      integer(c_int32_t) :: stx_mask, stx_blksize
+      integer(c_int64_t) :: stx_attributes
+      integer(c_int32_t) :: stx_nlink, stx_uid, stx_gid
+      integer(c_int16_t) :: stx_mode, stx_spare0     !< stx_mode: unsigned, read as signed
+      integer(c_int64_t) :: stx_ino, stx_size, stx_blocks, stx_attributes_mask
+      integer(c_int64_t) :: stx_times(8)
+      integer(c_int32_t) :: stx_rdev_major, stx_rdev_minor, stx_dev_major, stx_dev_minor
+      integer(c_int64_t) :: stx_spare2(14)
+   end type statx_t
+
+   interface
+      ! <sys/stat.h> (glibc 2.28)
+      !> int statx(int dirfd, const char *path, int flags, unsigned int mask, struct statx *buf)
+      function c_statx(dirfd, path, flags, mask, buf) bind(c, name='statx') result(r)
+         import :: c_int, c_char, statx_t
+         integer(c_int), value :: dirfd, flags, mask
+         character(kind=c_char), intent(in) :: path(*)
+         type(statx_t), intent(out) :: buf
+         integer(c_int) :: r
+      end function c_statx
    end interface
 
 end module c_library

@@ -5,9 +5,10 @@
 !>  - make_directories: `mkdir -p` of a path's directories, by mkdir(2);
 !>  - path_problem: a path the program refuses to use (empty, control
 !>    characters);
-!>  - lock_file / unlock_file: an exclusive advisory lock (flock(2)) on a
-!>    file, held until unlocked or the process ends (the kernel releases it
-!>    then, even after a kill), so that two runs never write one file;
+!>  - lock_file / unlock_file: an exclusive advisory lock (flock(2)) on an
+!>    existing file, held until unlocked or the process ends (the kernel
+!>    releases it then, even after a kill), so that two runs never write
+!>    one file;
 !>  - rename_file: rename(2), which replaces a file by another in one step;
 !>  - truncate_file: truncate(2), which cuts a file to a length (a row
 !>    half written when the disk filled up);
@@ -15,14 +16,31 @@
 !>    read it often: the length of a file as it is on disk, whatever a
 !>    Fortran unit still holds in its buffer (gfortran 12 reports neither a
 !>    failed write(2) under FLUSH nor the size on disk through INQUIRE on
-!>    the unit); a probe keeps the file open, so one reading is one lseek(2).
+!>    the unit); a probe keeps the file open, so one reading is one lseek(2);
+!>  - path_kind: what a name is, the name itself and not what a link points
+!>    to (statx(2) with AT_SYMLINK_NOFOLLOW): missing, a regular file, a
+!>    symbolic link, a directory or something else;
+!>  - prefix_problem, name_problem: a results prefix that names a directory
+!>    ('out/', '.', 'out/..': the files would be hidden, out/_history.dat),
+!>    a name longer than the file system takes (NAME_MAX, PATH_MAX);
+!>  - create_new_file: creates a file exclusively (O_CREAT | O_EXCL, which
+!>    also refuses a symbolic link, even a dangling one), remove_file:
+!>    unlink(2), which removes a link itself and never what it points to.
+!>
+!> No write through a symbolic link: the result files are created
+!> exclusively or replaced by rename(2), their names checked with path_kind
+!> before (src/results/result_files.f90), and a lock is taken on the file
+!> the name holds, never on what a link points to (lock_file).
 module file_system
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char, c_ptr, c_null_ptr, c_associated, c_int64_t
    use, intrinsic :: iso_fortran_env, only: int64
    use c_library, only: c_mkdir, c_fopen, c_lseek, c_fclose, c_fileno, c_rename, c_truncate, c_flock
+   use c_library, only: statx_t, c_statx, c_unlink
    implicit none
    private
-   public :: make_directories, parent_directory, path_problem
+   public :: make_directories, parent_directory, nearest_directory, path_problem, prefix_problem, name_problem
+   public :: short_path, path_kind, path_missing, path_regular, path_link, path_directory, path_other
+   public :: create_new_file, remove_file
    public :: file_lock_t, lock_file, unlock_file, rename_file, truncate_file, file_size
    public :: file_probe_t, open_probe, probe_size, close_probe
 
@@ -43,6 +61,18 @@ module file_system
 
    !> Permissions of a directory created here, before the umask: rwxrwxrwx.
    integer(c_int), parameter :: dir_mode = int(o'777', c_int)
+
+   !> What a name is (path_kind).
+   integer, parameter :: path_missing = 0, path_regular = 1, path_link = 2, path_directory = 3, path_other = 4
+   !> statx(2) (<fcntl.h>, <linux/stat.h>): the working directory, do not
+   !> follow a last link, the descriptor itself; the type and inode wanted.
+   integer(c_int), parameter :: at_fdcwd = -100, at_symlink_nofollow = int(z'100'), at_empty_path = int(z'1000')
+   integer(c_int), parameter :: statx_type = 1, statx_ino = int(z'100')
+   !> File types of stx_mode (<sys/stat.h>).
+   integer, parameter :: s_ifmt = int(o'170000'), s_iflnk = int(o'120000'), s_ifreg = int(o'100000'), &
+                         s_ifdir = int(o'040000')
+   !> Characters of a path a message shows before it is cut in the middle.
+   integer, parameter :: shown_path_len = 120
 
 contains
 
@@ -105,9 +135,136 @@ contains
       end do
    end function path_problem
 
-   !> Takes an exclusive lock on the file `path` (created empty if missing,
-   !> never truncated) without waiting: stat = 1 when another process holds
-   !> it (or the file cannot be opened), with the file named.
+   !> Why a results prefix cannot be used, '' when it can: path_problem's
+   !> reasons, and a prefix whose last part is no name ('out/', '.',
+   !> 'out/..'), which would make hidden files in a directory
+   !> (out/_history.dat, out/.h5).
+   pure function prefix_problem(prefix) result(why)
+      character(len=*), intent(in) :: prefix
+      character(len=:), allocatable :: why
+      character(len=:), allocatable :: last
+      why = path_problem(prefix)
+      if (len(why) > 0) return
+      last = prefix(index(prefix, '/', back=.true.) + 1:)
+      if (len(last) == 0) then
+         why = "ends with '/': it names a directory, and the result files would be hidden files in it " &
+            // "(" // short_path(prefix) // "_history.dat): end it with a name, e.g. '" // short_path(prefix) // "run'"
+      else if (last == '.' .or. last == '..') then
+         why = "ends with '" // last // "': it names a directory, and the result files would be hidden files " &
+            // "(" // short_path(prefix) // "_history.dat): end it with a name, e.g. '" // short_path(prefix) // "/run'"
+      end if
+   end function prefix_problem
+
+   !> Why `path` cannot be a file's name on a file system whose names have
+   !> at most name_max bytes and whose paths at most path_max - 1 (NAME_MAX,
+   !> PATH_MAX), '' when it can: the first part between slashes that is too
+   !> long, or the whole path.
+   pure function name_problem(path, name_max, path_max) result(why)
+      character(len=*), intent(in) :: path          !< the file's path
+      integer, intent(in) :: name_max               !< NAME_MAX (255 on Linux's file systems)
+      integer, intent(in) :: path_max               !< PATH_MAX (4096 on Linux), with the final NUL
+      character(len=:), allocatable :: why
+      integer :: from, slash
+      why = ''
+      if (len(path) >= path_max) then
+         why = 'the path ' // short_path(path) // ' has ' // decimal(len(path)) // ' bytes, more than the ' &
+            // decimal(path_max - 1) // ' a path may have (PATH_MAX)'
+         return
+      end if
+      from = 1
+      do while (from <= len(path))
+         slash = index(path(from:), '/')
+         if (slash == 0) slash = len(path) - from + 2
+         if (slash - 1 > name_max) then
+            why = 'the name ' // short_path(path(from:from + slash - 2)) // ' has ' // decimal(slash - 1) &
+               // ' bytes, more than the ' // decimal(name_max) // ' a file name may have on this file system ' &
+               // '(NAME_MAX): a shorter prefix'
+            return
+         end if
+         from = from + slash
+      end do
+   end function name_problem
+
+   !> A path as a message shows it: whole up to shown_path_len characters,
+   !> else its start and its end (where the file's own name is) around '...'.
+   pure function short_path(path) result(shown)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: shown
+      integer, parameter :: head = shown_path_len/2 - 3
+      if (len(path) <= shown_path_len) then
+         shown = path
+      else
+         shown = path(:head) // '...' // path(len(path) - (shown_path_len - head - 3) + 1:)
+      end if
+   end function short_path
+
+   !> The nearest existing directory above a path, the one its file is or
+   !> would be in: its parents in turn, then '.' (or '/' for an absolute
+   !> path).
+   function nearest_directory(path) result(dir)
+      character(len=*), intent(in) :: path   !< a file's path, existing or not
+      character(len=:), allocatable :: dir
+      logical :: exists
+      dir = path
+      do
+         dir = parent_directory(dir)
+         if (len(dir) == 0) then
+            dir = '.'
+            if (path(1:min(1, len(path))) == '/') dir = '/'
+            return
+         end if
+         inquire (file=dir // '/.', exist=exists)
+         if (exists) return
+      end do
+   end function nearest_directory
+
+   !> What the name `path` is, itself (a symbolic link is path_link, not
+   !> what it points to): path_missing, path_regular, path_link,
+   !> path_directory or path_other (a device, a pipe, a socket).
+   function path_kind(path) result(kind)
+      character(len=*), intent(in) :: path
+      integer :: kind
+      type(statx_t) :: buf
+      logical :: exists
+      if (c_statx(at_fdcwd, path // c_null_char, at_symlink_nofollow, statx_type, buf) /= 0) then
+         inquire (file=path, exist=exists)     ! no statx (Linux before 4.11): what the run-time says
+         kind = merge(path_regular, path_missing, exists)
+         return
+      end if
+      select case (iand(int(buf%stx_mode), s_ifmt))
+      case (s_iflnk); kind = path_link
+      case (s_ifreg); kind = path_regular
+      case (s_ifdir); kind = path_directory
+      case default;   kind = path_other
+      end select
+   end function path_kind
+
+   !> Creates the file `path`, empty, exclusively: stat /= 0 when a file,
+   !> a directory or a symbolic link (even a dangling one) has that name
+   !> (O_CREAT | O_EXCL: Fortran's status = 'new'), or it cannot be made.
+   subroutine create_new_file(path, stat, errmsg)
+      character(len=*), intent(in) :: path          !< the file
+      integer, intent(out) :: stat                  !< 0 when it was created
+      character(len=*), intent(inout) :: errmsg     !< the run-time's reason on failure
+      integer :: u, ios
+      open (newunit=u, file=path, status='new', action='write', iostat=stat, iomsg=errmsg)
+      if (stat == 0) close (u, iostat=ios)
+   end subroutine create_new_file
+
+   !> Removes the name `path` (unlink(2): a symbolic link itself, never what
+   !> it points to); stat /= 0 when it cannot (or there is none).
+   subroutine remove_file(path, stat)
+      character(len=*), intent(in) :: path          !< the name
+      integer, intent(out) :: stat                  !< 0 when removed
+      stat = int(c_unlink(path // c_null_char))
+   end subroutine remove_file
+
+   !> Takes an exclusive lock on the existing file `path` without waiting
+   !> (flock(2) on the file opened for reading: the lock changes nothing in
+   !> it). stat = 1 when another process holds it, when the file cannot be
+   !> opened, or when the name no longer holds the file the lock is on (a
+   !> symbolic link put in its place, or another run's file renamed over
+   !> it), with the file named.
    subroutine lock_file(path, lock, stat, errmsg)
       character(len=*), intent(in) :: path          !< the file
       type(file_lock_t), intent(out) :: lock        !< the lock, held until unlock_file
@@ -115,19 +272,40 @@ contains
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       integer(c_int) :: r
       stat = 1
-      lock%stream = c_fopen(path // c_null_char, 'a' // c_null_char)
+      lock%stream = c_fopen(path // c_null_char, 're' // c_null_char)
       if (.not. c_associated(lock%stream)) then
-         errmsg = 'cannot open ' // path
+         errmsg = 'cannot open ' // short_path(path)
          return
       end if
       r = c_flock(c_fileno(lock%stream), ior(lock_ex, lock_nb))
       if (r /= 0) then
-         errmsg = path // ' is being written by another run now (it is locked)'
+         errmsg = short_path(path) // ' is being written by another run now (it is locked)'
+         call close_stream(lock%stream)
+         return
+      end if
+      if (.not. name_holds(path, c_fileno(lock%stream))) then
+         errmsg = short_path(path) // ' was replaced while this run claimed it (by another run with the same ' &
+            // 'prefix, or a symbolic link)'
          call close_stream(lock%stream)
          return
       end if
       stat = 0
    end subroutine lock_file
+
+   !> The name `path`, itself a regular file and no link, is the file open
+   !> on descriptor fd (the same device and inode); true when statx is
+   !> missing (Linux before 4.11) and it cannot be told.
+   logical function name_holds(path, fd)
+      character(len=*), intent(in) :: path          !< the name
+      integer(c_int), intent(in) :: fd              !< an open descriptor
+      type(statx_t) :: by_name, by_fd
+      name_holds = .true.
+      if (c_statx(fd, c_null_char, at_empty_path, ior(statx_type, statx_ino), by_fd) /= 0) return
+      name_holds = .false.
+      if (c_statx(at_fdcwd, path // c_null_char, at_symlink_nofollow, ior(statx_type, statx_ino), by_name) /= 0) return
+      name_holds = iand(int(by_name%stx_mode), s_ifmt) == s_ifreg .and. by_name%stx_ino == by_fd%stx_ino &
+         .and. by_name%stx_dev_major == by_fd%stx_dev_major .and. by_name%stx_dev_minor == by_fd%stx_dev_minor
+   end function name_holds
 
    !> Releases a lock taken by lock_file (nothing when none is held).
    subroutine unlock_file(lock)
@@ -197,5 +375,14 @@ contains
       if (c_associated(stream)) r = c_fclose(stream)
       stream = c_null_ptr
    end subroutine close_stream
+
+   !> n in decimal.
+   pure function decimal(n) result(text)
+      integer, intent(in) :: n
+      character(len=:), allocatable :: text
+      character(len=12) :: buf
+      write (buf, '(i0)') n
+      text = trim(buf)
+   end function decimal
 
 end module file_system

@@ -1,24 +1,35 @@
 !> What the machine offers a run, asked of the C library (ISO C binding,
 !> src/system/c_library.f90):
-!> the physical memory (sysconf(3)), the free space of the file system a
-!> path is on (statvfs(3)) and the largest file the process may write
-!> (getrlimit(2), RLIMIT_FSIZE). The deck's checks compare what a scene would
-!> need against them before any work (src/deck/input_deck.f90, docs/ROBUSTNESS.md,
-!> "Stability, bad input, nothing lost"). Either answer is -1 when the
-!> system does not tell, or sets no limit; the check is then skipped.
+!> the physical memory (sysconf(3)) and the memory this process may still
+!> take (getrlimit(2), RLIMIT_AS and RLIMIT_DATA: ulimit -v, ulimit -d,
+!> less what it holds now, /proc/self/statm); the free space of the file
+!> system a path is on, whether it is mounted read-only and the longest
+!> name it takes (statvfs(3): f_bavail, ST_RDONLY, f_namemax); and the
+!> largest file the process may write (getrlimit(2), RLIMIT_FSIZE). The
+!> deck's checks and the claim of the result files compare what a scene
+!> would need against them before any work (src/deck/input_deck.f90,
+!> src/results/result_files.f90, docs/ROBUSTNESS.md). A size is -1 when the system does not tell, or sets no limit;
+!> the check is then skipped.
 module system_limits
    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_null_char
    use kinds, only: dp
-   use file_system, only: parent_directory
+   use file_system, only: nearest_directory
    use c_library, only: statvfs_t, rlimit_t, c_sysconf, c_statvfs, c_getrlimit
    implicit none
    private
-   public :: physical_memory, free_disk_space, file_size_limit
+   public :: physical_memory, memory_room, free_disk_space, file_size_limit, read_only_file_system, name_max, &
+      path_max
 
    !> sysconf names (Linux, <unistd.h>): _SC_PAGESIZE, _SC_PHYS_PAGES.
    integer(c_int), parameter :: sc_pagesize = 30, sc_phys_pages = 85
-   !> getrlimit resource RLIMIT_FSIZE (Linux); RLIM_INFINITY reads as -1.
-   integer(c_int), parameter :: rlimit_fsize = 1
+   !> getrlimit resources (Linux): RLIMIT_FSIZE, RLIMIT_DATA, RLIMIT_AS;
+   !> RLIM_INFINITY reads as -1.
+   integer(c_int), parameter :: rlimit_fsize = 1, rlimit_data = 2, rlimit_as = 9
+   !> statvfs's f_flag of a file system mounted read-only (<sys/statvfs.h>).
+   integer(c_long), parameter :: st_rdonly = 1
+   !> The longest name when the file system does not tell (POSIX's NAME_MAX
+   !> on Linux), and the longest path with its final NUL (PATH_MAX).
+   integer, parameter :: default_name_max = 255, path_max = 4096
 
 contains
 
@@ -32,29 +43,93 @@ contains
       if (pages > 0 .and. page > 0) bytes = real(pages, dp)*real(page, dp)
    end function physical_memory
 
+   !> The memory this process may still allocate under its limits (bytes):
+   !> the address space (RLIMIT_AS, ulimit -v) less what it has mapped now,
+   !> the data segment (RLIMIT_DATA, ulimit -d) less its data now, the
+   !> smaller of the two; -1 when neither is limited. The mapped sizes are
+   !> Linux's /proc/self/statm; without it the limits are taken whole.
+   function memory_room() result(bytes)
+      real(dp) :: bytes
+      real(dp) :: mapped, data
+      bytes = -1.0_dp
+      call memory_in_use(mapped, data)
+      call take(rlimit_as, mapped)
+      call take(rlimit_data, data)
+
+   contains
+
+      !> bytes: the smaller of itself and the room under resource's limit.
+      subroutine take(resource, used)
+         integer(c_int), intent(in) :: resource    !< RLIMIT_AS or RLIMIT_DATA
+         real(dp), intent(in) :: used              !< what counts against it now (bytes)
+         type(rlimit_t) :: lim
+         real(dp) :: room
+         if (c_getrlimit(resource, lim) /= 0) return
+         if (lim%rlim_cur <= 0) return             ! RLIM_INFINITY
+         room = max(real(lim%rlim_cur, dp) - used, 0.0_dp)
+         if (bytes < 0.0_dp) then
+            bytes = room
+         else
+            bytes = min(bytes, room)
+         end if
+      end subroutine take
+
+   end function memory_room
+
+   !> The process's mapped address space and data segment now (bytes), 0
+   !> when unknown (/proc/self/statm: size, resident, shared, text, lib,
+   !> data, in pages).
+   subroutine memory_in_use(mapped, data)
+      real(dp), intent(out) :: mapped               !< the address space (VmSize)
+      real(dp), intent(out) :: data                 !< data and stack (VmData + VmStk)
+      integer(c_long) :: page
+      integer :: u, ios
+      real(dp) :: pages(6)
+      mapped = 0.0_dp
+      data = 0.0_dp
+      page = c_sysconf(sc_pagesize)
+      open (newunit=u, file='/proc/self/statm', status='old', action='read', iostat=ios)
+      if (ios /= 0) return
+      read (u, *, iostat=ios) pages
+      close (u)
+      if (ios /= 0 .or. page <= 0) return
+      mapped = pages(1)*real(page, dp)
+      data = pages(6)*real(page, dp)
+   end subroutine memory_in_use
+
    !> The space free to an unprivileged user (bytes) on the file system that
-   !> holds `path`, or its nearest existing parent directory; -1 when unknown.
+   !> holds `path`, or would (its nearest existing parent directory); -1 when unknown.
    function free_disk_space(path) result(bytes)
       character(len=*), intent(in) :: path   !< a file or directory path, existing or not
       real(dp) :: bytes
       type(statvfs_t) :: buf
-      character(len=:), allocatable :: dir
-      logical :: exists
       bytes = -1.0_dp
-      dir = path
-      nearest: do
-         dir = parent_directory(dir)
-         if (len(dir) == 0) then
-            dir = '.'
-            if (path(1:min(1, len(path))) == '/') dir = '/'
-            exit nearest
-         end if
-         inquire (file=dir // '/.', exist=exists)
-         if (exists) exit nearest
-      end do nearest
-      if (c_statvfs(dir // c_null_char, buf) /= 0) return
+      if (c_statvfs(nearest_directory(path) // c_null_char, buf) /= 0) return
       bytes = real(buf%f_bavail, dp)*real(buf%f_frsize, dp)
    end function free_disk_space
+
+   !> True when the file system that holds `path` (or its nearest existing
+   !> parent directory) is mounted read-only; false when it cannot be told.
+   function read_only_file_system(path) result(read_only)
+      character(len=*), intent(in) :: path   !< a file or directory path, existing or not
+      logical :: read_only
+      type(statvfs_t) :: buf
+      read_only = .false.
+      if (c_statvfs(nearest_directory(path) // c_null_char, buf) /= 0) return
+      read_only = iand(buf%f_flag, st_rdonly) /= 0
+   end function read_only_file_system
+
+   !> The longest file name (bytes) the file system that holds `path` (or
+   !> its nearest existing parent directory) takes: its f_namemax, 255
+   !> when it does not tell.
+   function name_max(path) result(bytes)
+      character(len=*), intent(in) :: path   !< a file or directory path, existing or not
+      integer :: bytes
+      type(statvfs_t) :: buf
+      bytes = default_name_max
+      if (c_statvfs(nearest_directory(path) // c_null_char, buf) /= 0) return
+      if (buf%f_namemax > 0 .and. buf%f_namemax < huge(bytes)) bytes = int(buf%f_namemax)
+   end function name_max
 
    !> The largest file this process may write (bytes; ulimit -f), -1 when
    !> there is no limit or it is unknown.
