@@ -220,6 +220,7 @@ contains
       character(len=*), intent(inout) :: errmsg     !< what failed
       integer :: k, j, i
       logical :: found, more
+      character(len=224) :: why
 
       out%target = deck%accuracy_target
       call targeted_results(deck, out%targeted, stat, errmsg)
@@ -257,14 +258,14 @@ contains
          if (found) then
             call plan(runs, deck, la, k, j)
          else
-            call refine(deck, la, runs, tx, mx, out, more)
+            call refine(deck, la, runs, tx, mx, out, more, why)
             if (.not. more) then
-               out%status = 'not met: dt and the mesh cannot be refined further (the ladder''s limits)'
+               out%status = 'not met: ' // why
                exit
             end if
          end if
       end do
-      if (.not. out%met) call choose_run(runs, la, tx, mx, out%target, out%targeted, k, j, found)
+      if (.not. out%met) call choose_run(runs, la, tx, mx, out%target, out%targeted, k, j, found, done_only=.true.)
       out%chosen = ladder_run(runs, k, j)
       out%jd = judge_run(runs, tx, mx, k, j, out%target, out%targeted)
    end subroutine climb
@@ -337,30 +338,36 @@ contains
    !> No run meets the target: refine the axis whose part of the error of
    !> the finest run (k, j) is more than half the target for some result
    !> (the larger part when neither is); more is false when neither axis
-   !> can be refined.
-   subroutine refine(deck, la, runs, tx, mx, out, more)
+   !> can be refined, or when the mesh would be refined only for a time
+   !> read off the steps whose mesh part is its step dt0, which no mesh
+   !> lowers (why says so: a smaller dt in the deck would).
+   subroutine refine(deck, la, runs, tx, mx, out, more, why)
       type(deck_t), intent(in) :: deck             !< the deck
       type(launcher_t), intent(in) :: la           !< the launcher (the element at the impact point)
       type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
       type(axis_t), intent(in) :: tx, mx           !< the axes
       type(accuracy_outcome_t), intent(in) :: out  !< the target, the results estimated
       logical, intent(out) :: more                 !< a level was planned
+      character(len=*), intent(out) :: why         !< when not: why
       type(judged_t) :: jd
-      logical :: time, mesh, can_time, can_mesh
+      logical :: time, mesh, can_time, can_mesh, step_bound(nq)
       real(dp) :: allowed
       integer :: iq
 
       jd = judge_run(runs, tx, mx, tx%levels - 1, mx%levels - 1, out%target, out%targeted)
-      time = .false.;  mesh = .false.
+      time = .false.;  mesh = .false.;  step_bound = .false.
+      why = 'dt and the mesh cannot be refined further (the ladder''s limits)'
       do iq = 1, nq
          if (.not. out%targeted(iq)) cycle
          allowed = out%target*abs(jd%value(iq))
          if (jd%err(iq) <= allowed) cycle
          if (jd%err_time(iq) > 0.5_dp*allowed) time = .true.
-         if (jd%err_mesh(iq) > 0.5_dp*allowed) mesh = .true.
+         ! a time read off the steps whose mesh part is the mesh axis's step
+         step_bound(iq) = mx%finest(iq)%floor > 0.5_dp*allowed
+         if (jd%err_mesh(iq) > 0.5_dp*allowed .and. .not. step_bound(iq)) mesh = .true.
          if (jd%err_time(iq) <= 0.5_dp*allowed .and. jd%err_mesh(iq) <= 0.5_dp*allowed) then
             time = time .or. jd%err_time(iq) >= jd%err_mesh(iq)
-            mesh = mesh .or. jd%err_mesh(iq) > jd%err_time(iq)
+            mesh = mesh .or. (jd%err_mesh(iq) > jd%err_time(iq) .and. .not. step_bound(iq))
          end if
       end do
       can_time = tx%levels < max_time_levels .and. deck%dt/2.0_dp**tx%levels >= min_dt
@@ -376,6 +383,9 @@ contains
       if (time) call plan(runs, deck, la, tx%levels, 0)
       if (mesh) call plan(runs, deck, la, 0, mx%levels)
       more = time .or. mesh
+      if (.not. more .and. any(step_bound)) why = trim(result_keys(findloc(step_bound, .true., dim=1))) // &
+         ' is read off the time steps: the meshes, all run at the deck''s dt = ' // real_short(deck%dt*1.0e6_dp) // &
+         ' us, cannot show it to the target; give a smaller dt in the deck'
    end subroutine refine
 
    !> Step 4 of the module header: the other theory and the other

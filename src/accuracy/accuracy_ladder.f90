@@ -22,8 +22,11 @@
 !>
 !> On the mesh axis, while the element at the impact point is larger than
 !> the Hertz contact radius at the peak force (a = sqrt(R alpha), alpha =
-!> (F/k)^(2/3)), the error is at least the change still to come (log_tail
-!> of src/accuracy/error_estimate.f90).
+!> (F/k)^(2/3)), the results change like ln(1/h), and the change still to
+!> come (log_tail of src/accuracy/error_estimate.f90) is their error when
+!> the ladder's rule gives less; the rule's estimate of a result that
+!> shows no order there (an observed order below the range: the log's
+!> constant differences) is the tail alone.
 !>
 !> The error of a run (k, j) is its time level's error plus its mesh
 !> level's plus the interaction of the two, |q(k,j) - q(k,0) - q(0,j) +
@@ -32,7 +35,7 @@
 !> done (cost 0) or to come, whose every error is within the target.
 module accuracy_ladder
    use kinds, only: dp
-   use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail
+   use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor
    use accuracy_runs, only: run_t, launcher_t, nq, state_done, relative_cost
    implicit none
    private
@@ -116,8 +119,9 @@ contains
                                          order_high(which), floor)
          if (which == axis_mesh) then
             tail = log_tail(ax%h, runs(ax%run)%q(iq), runs(ax%run(l))%h_impact/runs(ax%run(l))%contact_radius)
-            if (tail + floor > ax%finest(iq)%error) then
-               ax%finest(iq)%error = tail + floor
+            if (tail > 0.0_dp .and. (tail + floor > ax%finest(iq)%error .or. &
+                (ax%finest(iq)%order >= 0.0_dp .and. ax%finest(iq)%order < order_low(which)))) then
+               ax%finest(iq)%error = max(tail, safe_factor*last_difference(runs(ax%run)%q(iq))) + floor
                ax%finest(iq)%how = 'contact disc unresolved: ln tail'
             end if
          end if
@@ -126,6 +130,16 @@ contains
          end do
       end do
    end subroutine build_axis
+
+   !> The larger of the last two differences of a ladder.
+   pure real(dp) function last_difference(q)
+      real(dp), intent(in) :: q(:)                !< the result at each level
+      integer :: n
+      n = size(q)
+      last_difference = 0.0_dp
+      if (n >= 2) last_difference = abs(q(n - 1) - q(n))
+      if (n >= 3) last_difference = max(last_difference, abs(q(n - 2) - q(n - 1)))
+   end function last_difference
 
    !> True when every time (us) is a whole number of its run's step (s):
    !> a time read off the steps.
@@ -197,8 +211,9 @@ contains
    !> The cheapest run (k, j) of the axes whose results all meet the
    !> target: a run done costs nothing, one to come its predicted cost.
    !> found is false when none meets it; (k, j) is then the run done with
-   !> the smallest worst ratio (the best there is).
-   subroutine choose_run(runs, la, tx, mx, target, active, k, j, found)
+   !> the smallest worst ratio (the best there is). With done_only, only
+   !> the runs done are candidates.
+   subroutine choose_run(runs, la, tx, mx, target, active, k, j, found, done_only)
       type(run_t), intent(in) :: runs(:)          !< the runs
       type(launcher_t), intent(in) :: la          !< the launcher (its cost model)
       type(axis_t), intent(in) :: tx, mx          !< the axes
@@ -206,6 +221,7 @@ contains
       logical, intent(in) :: active(nq)           !< the results estimated
       integer, intent(out) :: k, j                !< the run chosen
       logical, intent(out) :: found               !< it meets the target
+      logical, intent(in), optional :: done_only  !< only the runs done (the final choice)
       type(judged_t) :: jd
       type(run_t) :: probe
       real(dp) :: cost, best_cost, best_worst
@@ -221,6 +237,9 @@ contains
             i = ladder_run(runs, kk, jj)
             done = i > 0
             if (done) done = runs(i)%state == state_done
+            if (present(done_only)) then
+               if (done_only .and. .not. done) cycle
+            end if
             probe = runs(tx%run(kk + 1))
             probe%nx = runs(mx%run(jj + 1))%nx;  probe%ny = runs(mx%run(jj + 1))%ny
             cost = merge(0.0_dp, max(la%c_base, 0.0_dp)*relative_cost(probe, la), done)

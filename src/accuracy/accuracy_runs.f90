@@ -5,7 +5,8 @@
 !>    impact [the user's --set ...] --set accuracy.target=0
 !>           --set output.prefix='<prefix>_acc/<run>' --set output.overwrite=.true.
 !>           --set output.hdf5=.false. --set analysis.dt=... --set mesh.nx=...
-!>           --set mesh.ny=... --set analysis.theory=... [the variant's] deck.nml
+!>           --set mesh.ny=... --set mesh.grading=... --set analysis.theory=...
+!>           [the variant's] deck.nml
 !>
 !> its terminal output in <prefix>_acc/<run>.log, its results read back
 !> from <prefix>_acc/<run>_summary.dat (src/accuracy/summary_reader.f90).
@@ -218,6 +219,7 @@ contains
       call add('analysis.dt=' // real_str(run%dt))
       call add('mesh.nx=' // int_str(run%nx))
       call add('mesh.ny=' // int_str(run%ny))
+      call add('mesh.grading=' // real_str(run%grading))
       call add('analysis.theory=' // quoted(trim(la%theory)))
       do i = 1, max_variant
          if (len_trim(run%variant(i)) > 0) call add(trim(run%variant(i)))

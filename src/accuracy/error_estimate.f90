@@ -15,9 +15,12 @@
 !>    trusted), times richardson_safety (Roache's factor of safety of the
 !>    grid convergence index for three grids, 1.25).
 !>  - Monotone but slower than order_low: the larger of Richardson's error
-!>    with the observed order (which grows without bound as p -> 0: a
-!>    result that converges slowly is not near its limit) and the safe
-!>    bound below.
+!>    with the observed order (a result that converges slowly is not near
+!>    its limit) and the safe bound below; Richardson's error, which grows
+!>    without bound as p -> 0, taken at most slow_cap times the larger
+!>    difference: an order near 0 over three levels is mostly noise (an
+!>    iteration's tolerance, a time read off the steps) or the log tail
+!>    below, which has its own bound.
 !>  - Otherwise (the differences change sign: a rippled, oscillating or
 !>    noisy result; or the order is above order_high, as when the error
 !>    crosses zero between levels): the safe bound, safe_factor times the
@@ -33,8 +36,9 @@
 !> and the force and strains with it, change like ln(1/h) as the mesh is
 !> refined, without an algebraic order) keeps changing by about its last
 !> difference per level until s = a: log_tail, the larger of the last two
-!> differences times the levels still to go, ln(s/a)/ln(h_{n-1}/h_n), is
-!> then the least error the mesh axis may claim. A coarser level i of the
+!> differences times the levels still to go, ln(s/a)/ln(h_{n-1}/h_n), and
+!> one more (the change does not stop at once where s = a), is then the
+!> least error the mesh axis may claim. A coarser level i of the
 !> same ladder has the error |q_i - q_n| plus the finest level's
 !> (level_error): the triangle inequality, no model.
 module error_estimate
@@ -42,10 +46,11 @@ module error_estimate
    implicit none
    private
    public :: estimate_t, ladder_estimate, observed_order, level_error, log_tail
-   public :: richardson_safety, safe_factor, two_level_factor
+   public :: richardson_safety, safe_factor, two_level_factor, slow_cap
 
    !> Factors of safety (module header) (-).
-   real(dp), parameter :: richardson_safety = 1.25_dp, safe_factor = 1.5_dp, two_level_factor = 3.0_dp
+   real(dp), parameter :: richardson_safety = 1.25_dp, safe_factor = 1.5_dp, two_level_factor = 3.0_dp, &
+      slow_cap = 5.0_dp
    !> Orders the bisection of observed_order looks within (-).
    real(dp), parameter :: order_min = 0.05_dp, order_max = 12.0_dp
 
@@ -55,6 +60,7 @@ module error_estimate
       real(dp) :: order = -1.0_dp          !< observed order, -1 when there is none
       logical :: asymptotic = .false.      !< the order is in the asymptotic range
       character(len=40) :: how = ''        !< which rule gave the error
+      real(dp) :: floor = 0.0_dp           !< of which the resolution floor
    end type estimate_t
 
 contains
@@ -72,6 +78,7 @@ contains
       integer :: n
 
       n = size(q)
+      e%floor = floor
       if (n < 2) then
          e%how = 'one level: no estimate'
          return
@@ -98,7 +105,7 @@ contains
             e%error = richardson_safety*richardson(min(p, order_theory)) + floor
             e%how = 'Richardson, order in range'
          else if (p < order_low) then
-            e%error = max(richardson_safety*richardson(p), safe) + floor
+            e%error = max(min(richardson_safety*richardson(p), slow_cap*max(abs(d1), abs(d2))), safe) + floor
             e%how = 'slow: Richardson at observed order'
          else
             e%error = safe + floor
@@ -177,7 +184,7 @@ contains
       if (n < 2 .or. size_ratio <= 1.0_dp) return
       d = abs(q(n - 1) - q(n))
       if (n >= 3) d = max(d, abs(q(n - 2) - q(n - 1)))
-      log_tail = d*log(size_ratio)/log(h(n - 1)/h(n))
+      log_tail = d*(log(size_ratio)/log(h(n - 1)/h(n)) + 1.0_dp)
    end function log_tail
 
    !> The error of level i of a ladder whose finest level n has the error
