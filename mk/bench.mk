@@ -6,14 +6,23 @@
 #   make bench BENCH_ARGS=--quick   a small grid, to check the machinery
 #   make bench-kernels           build only the kernel timer
 #
+#   make bench-accuracy          the cost of impact --accuracy 0.05, 0.01, 0.002 on the
+#                                paper's scenes (bench/accuracy_bench.py): bench/accuracy.dat
+#                                and the bench-accuracy block of docs/PERFORMANCE.md;
+#                                BENCH_ACCURACY_ARGS='--cap 300' sets the cap of each run
+#
 # Runs one job at a time (timings); BENCH_REPEAT=N sets the repeats (3).
 # BENCH_OPENBLAS=<dir> adds runs with OpenBLAS (LD_LIBRARY_PATH).
 BENCH_BUILD := $(BUILD)/bench
 BENCH_ARGS ?=
 
-.PHONY: bench bench-kernels
+.PHONY: bench bench-kernels bench-accuracy
 bench: impact $(BENCH_BUILD)/bench_kernels
 	$(PYTHON) bench/run_bench.py $(BENCH_ARGS)
+
+BENCH_ACCURACY_ARGS ?=
+bench-accuracy: impact
+	$(PYTHON) bench/accuracy_bench.py $(BENCH_ACCURACY_ARGS)
 
 bench-kernels: $(BENCH_BUILD)/bench_kernels
 

@@ -52,6 +52,7 @@ program impact
       keep_file_size_errors, exit_program
    use restart_point, only: restart_file, restart_save, restart_check, restart_resume, restart_discard
    use number_text, only: int_str
+   use accuracy_driver, only: run_accuracy
    implicit none
 
    type(deck_t) :: deck                    ! the input deck, as read and checked
@@ -207,10 +208,12 @@ program impact
 contains
 
    !> The command line, the deck and its settings (src/deck/command_line.f90);
-   !> an impact run claims its result files before any work.
+   !> an accuracy run (&accuracy target > 0) hands over to its driver and
+   !> ends there; an impact run claims its result files before any work.
    subroutine read_input()
       type(options_t) :: opts
       type(deck_t) :: claimed
+      integer :: accuracy_exit            ! the exit status of an accuracy run
       call parse_command_line(opts, stat, errmsg)
       if (stat /= 0) call bad_usage(errmsg)
       select case (opts%action)
@@ -226,6 +229,11 @@ contains
       if (stat /= 0) call bad_usage('--trace ' // opts%trace // ': give time steps, e.g. --trace 120,121')
       call read_input_deck(opts, input_unit, deck, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
+      if (deck%accuracy_target > 0 .and. .not. check_only) then     ! a ladder of runs (src/accuracy/)
+         call run_accuracy(opts, deck, output_unit, accuracy_exit, stat, errmsg)
+         if (stat /= 0) call fail(errmsg)
+         call exit_program(accuracy_exit)
+      end if
       tr%unit = output_unit;  tr%cr1 = deck%cr1;  tr%cr2 = deck%cr2
       if (restarting) call restart_check(deck, restarting, stat, errmsg)
       if (stat /= 0) call fail(errmsg)

@@ -8,6 +8,8 @@
 !>     --set group.var=value a deck variable, set after the deck is read and checked
 !>                           like it (repeatable)
 !>     --trace STEP[,STEP]   the teaching trace of those steps (src/results/step_trace.f90)
+!>     --accuracy TOL        every result to a relative error TOL: a ladder of runs
+!>                           (as &accuracy target = TOL; src/accuracy/accuracy_driver.f90)
 !>     --schema, --deck-table, --version, --help
 !>
 !> Options may stand before or after the deck (impact deck.nml --check is
@@ -26,6 +28,7 @@ module command_line
       character(len=:), allocatable :: deck_path   !< the deck, '' for standard input
       character(len=8192), allocatable :: settings(:)   !< the --set values, in order
       character(len=:), allocatable :: trace       !< the --trace steps, '' for none
+      character(len=:), allocatable :: accuracy    !< the --accuracy value, '' for none
       logical :: check = .false.                   !< --check
       logical :: overwrite = .false.               !< --overwrite
       logical :: restart = .false.                 !< --restart
@@ -41,7 +44,7 @@ contains
       character(len=:), allocatable :: arg
       integer :: i, n
       allocate (opts%settings(0))
-      opts%deck_path = '';  opts%trace = ''
+      opts%deck_path = '';  opts%trace = '';  opts%accuracy = ''
       stat = 1
       n = command_argument_count()
       i = 0
@@ -59,21 +62,24 @@ contains
             opts%overwrite = .true.
          case ('--restart')
             opts%restart = .true.
-         case ('--set', '--trace')
+         case ('--set', '--trace', '--accuracy')
             if (i == n) then
                errmsg = arg // ' needs a value'
                return
             end if
             i = i + 1
-            if (arg == '--set') then
+            select case (arg)
+            case ('--set')
                if (len(argument(i)) > len(opts%settings)) then      ! it would be cut
                   errmsg = '--set: longer than ' // int_str(len(opts%settings)) // ' characters'
                   return
                end if
                opts%settings = [opts%settings, argument(i)]
-            else
+            case ('--trace')
                opts%trace = argument(i)
-            end if
+            case default
+               opts%accuracy = argument(i)
+            end select
          case default
             if (arg(1:min(1, len(arg))) == '-' .and. len(arg) > 1) then
                errmsg = 'unknown option ' // arg
@@ -90,7 +96,8 @@ contains
    end subroutine parse_command_line
 
    !> The deck the options name (a file, or standard input), the --set
-   !> values over it, and --overwrite; every value checked.
+   !> values over it, --accuracy (as &accuracy target) and --overwrite;
+   !> every value checked.
    subroutine read_input_deck(opts, unit, deck, stat, errmsg)
       type(options_t), intent(in) :: opts           !< the options
       integer, intent(in) :: unit                   !< standard input's unit
@@ -108,6 +115,13 @@ contains
          call set_variable(deck, trim(opts%settings(i)), stat, errmsg)
          if (stat /= 0) return
       end do
+      if (len(opts%accuracy) > 0) then
+         call set_variable(deck, 'accuracy.target=' // opts%accuracy, stat, errmsg)
+         if (stat /= 0) then
+            errmsg = '--accuracy ' // opts%accuracy // ': ' // trim(errmsg)
+            return
+         end if
+      end if
       if (opts%overwrite) deck%overwrite = .true.
    end subroutine read_input_deck
 

@@ -19,12 +19,13 @@ contains
    !> True when the group concerns a deck of this analysis kind (the echo
    !> leaves the others out: &load only for static and pressure analyses,
    !> &modes only for modes, &contact only for the impact, &strength only
-   !> when its strengths are given).
+   !> when its strengths are given, &accuracy only for an accuracy run).
    pure logical function group_applies(group, deck)
       character(len=*), intent(in) :: group         !< the group, without '&'
       type(deck_t), intent(in) :: deck              !< the deck
       select case (trim(group))
       case ('strength'); group_applies = strength_given(deck)
+      case ('accuracy'); group_applies = deck%accuracy_target > 0
       case default;      group_applies = group_applies_kind(group, deck%analysis_kind)
       end select
    end function group_applies

@@ -79,8 +79,8 @@ module deck_schema
    end type deck_var_t
 
    !> The namelist groups, in the order of the echo and the table of docs/DECK.md.
-   character(len=8), parameter :: deck_groups(12) = [character(len=8) :: 'plate', 'lamina', 'laminate', &
-      'strength', 'impactor', 'contact', 'mesh', 'boundary', 'analysis', 'load', 'modes', 'output']
+   character(len=8), parameter :: deck_groups(13) = [character(len=8) :: 'plate', 'lamina', 'laminate', &
+      'strength', 'impactor', 'contact', 'mesh', 'boundary', 'analysis', 'load', 'modes', 'output', 'accuracy']
 
    !> THE LIST. Paper's values as defaults where the paper gives one (Choi,
    !> Hong & Lee 1991: section 2.4, Tables 1-3); SI units.
@@ -196,7 +196,17 @@ module deck_schema
          // '<prefix>.h5, for ParaView: ''modelled'' (the domain of &mesh), ''whole'' (a quarter or half mirrored ' &
          // 'into the whole plate; its fields then also stored in <prefix>.h5) or ''none'' (no XDMF file)'), &
       deck_var_t('output', 'fields_every', kind_integer, '-', '40', '[1, inf)', &
-         'field snapshots in <prefix>.h5 every N-th step') ]
+         'field snapshots in <prefix>.h5 every N-th step'), &
+      deck_var_t('accuracy', 'target', kind_real, '-', '0', '[0, 0.5]', 'relative error every result must ' &
+         // 'reach: the run refines dt and the mesh on a ladder of runs until it estimates so (impact ' &
+         // '--accuracy TOL; src/accuracy/); 0: one plain run, no estimate'), &
+      deck_var_t('accuracy', 'max_cpu_s', kind_real, 's', '3600', '(0, inf)', &
+         'cpu time all the runs of an accuracy run may take together; reached: the run says so'), &
+      deck_var_t('accuracy', 'mesh_factor', kind_real, '-', '1.5', '[1.2, 2]', &
+         'ratio of the element counts of successive meshes of the accuracy ladder'), &
+      deck_var_t('accuracy', 'results', kind_path, '-', 'all', '', 'the results that must meet the target, ' &
+         // 'their summary keys joined by + or blanks (peak_force_N, max_deflection_mm, contact_duration_us, ' &
+         // 'time_of_peak_us, max_strain_y_back, max_failure_index) or ''all''; each gets its error') ]
 
    !> Everything the deck sets, as the program reads it (SI units). The
    !> defaults are deck_vars' (default_deck in src/deck/input_deck.f90).
@@ -243,6 +253,9 @@ module deck_schema
       integer :: every = 0, fields_every = 0
       logical :: overwrite = .false., hdf5 = .false.
       character(len=:), allocatable :: xdmf
+      ! &accuracy
+      real(dp) :: accuracy_target = 0, accuracy_max_cpu_s = 0, accuracy_mesh_factor = 0
+      character(len=:), allocatable :: accuracy_results
       !> which variables the deck (or --set) gave, by entry of deck_vars
       logical :: given(size(deck_vars)) = .false.
    end type deck_t
@@ -390,6 +403,10 @@ contains
       case ('output.hdf5');                call bind_logical(deck%hdf5, v, set)
       case ('output.xdmf');                call bind_text(deck%xdmf, v, set)
       case ('output.fields_every');        call bind_integer(deck%fields_every, v, set)
+      case ('accuracy.target');            call bind_real(deck%accuracy_target, v, set)
+      case ('accuracy.max_cpu_s');         call bind_real(deck%accuracy_max_cpu_s, v, set)
+      case ('accuracy.mesh_factor');       call bind_real(deck%accuracy_mesh_factor, v, set)
+      case ('accuracy.results');           call bind_text(deck%accuracy_results, v, set)
       end select
       if (.not. set .and. len_trim(deck_vars(iv)%default) == 0) then
          select case (deck_vars(iv)%kind)

@@ -3,8 +3,9 @@
 !> fill, those of Linux on a 64-bit machine (glibc), grouped by header.
 !> What the calls mean is said where they are made: src/system/file_system.f90
 !> (files and directories), src/system/system_limits.f90 (what the machine offers
-!> a run) and src/system/process_stop.f90 (signals, the exit). Paths go in as C strings
-!> (with a terminating c_null_char).
+!> a run), src/system/process_stop.f90 (signals, the exit) and
+!> src/accuracy/child_process.f90 (child processes, the CPUs the process may
+!> use). Paths go in as C strings (with a terminating c_null_char).
 module c_library
    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_ptr, c_funptr, c_int64_t, c_size_t
    use, intrinsic :: iso_c_binding, only: c_int32_t, c_int16_t
@@ -15,6 +16,9 @@ module c_library
              c_statvfs, c_getrlimit, c_signal, c_exit, c_isatty
    public :: c_open, c_close, c_fsync, c_unlink, c_write
    public :: statx_t, c_statx
+   public :: spawn_actions_t, cpu_set_t, c_environ, c_posix_spawn, c_spawn_actions_init, c_spawn_actions_destroy, &
+             c_spawn_actions_addopen, c_spawn_actions_adddup2, c_waitpid, c_readlink, c_sched_getaffinity, &
+             o_wronly, o_creat, o_trunc
 
    !> struct statvfs (<sys/statvfs.h>): eleven unsigned longs (read as
    !> signed: sizes below 2^63) and six ints.
@@ -28,6 +32,23 @@ module c_library
    type, bind(c) :: rlimit_t
       integer(c_long) :: rlim_cur, rlim_max
    end type rlimit_t
+
+   !> posix_spawn_file_actions_t (<spawn.h>): opaque, 80 bytes in glibc;
+   !> 128 reserved here.
+   type, bind(c) :: spawn_actions_t
+      integer(c_int64_t) :: opaque(16) = 0
+   end type spawn_actions_t
+
+   !> cpu_set_t (<sched.h>): a mask of 1024 CPUs, one bit each.
+   type, bind(c) :: cpu_set_t
+      integer(c_int64_t) :: bits(16) = 0
+   end type cpu_set_t
+
+   !> open(2) flags (Linux, <fcntl.h>): write only, create, truncate.
+   integer(c_int), parameter :: o_wronly = 1, o_creat = int(o'100', c_int), o_trunc = int(o'1000', c_int)
+
+   !> char **environ (<unistd.h>): the process's environment, passed on to a child.
+   type(c_ptr), bind(c, name='environ') :: c_environ
 
    interface
       ! <stdio.h>
@@ -189,6 +210,74 @@ module c_library
          type(statx_t), intent(out) :: buf
          integer(c_int) :: r
       end function c_statx
+      !> ssize_t readlink(const char *path, char *buf, size_t bufsiz)  (ssize_t: long)
+      function c_readlink(path, buf, bufsiz) bind(c, name='readlink') result(r)
+         import :: c_char, c_size_t, c_long
+         character(kind=c_char), intent(in) :: path(*)
+         character(kind=c_char), intent(out) :: buf(*)
+         integer(c_size_t), value :: bufsiz
+         integer(c_long) :: r
+      end function c_readlink
+      ! <spawn.h>
+      !> int posix_spawn(pid_t *pid, const char *path, const posix_spawn_file_actions_t *actions,
+      !>                 const posix_spawnattr_t *attr, char *const argv[], char *const envp[])
+      function c_posix_spawn(pid, path, actions, attr, argv, envp) bind(c, name='posix_spawn') result(r)
+         import :: c_int, c_char, c_ptr, spawn_actions_t
+         integer(c_int), intent(out) :: pid
+         character(kind=c_char), intent(in) :: path(*)
+         type(spawn_actions_t), intent(in) :: actions
+         type(c_ptr), value :: attr
+         type(c_ptr), intent(in) :: argv(*)
+         type(c_ptr), value :: envp
+         integer(c_int) :: r
+      end function c_posix_spawn
+      !> int posix_spawn_file_actions_init(posix_spawn_file_actions_t *actions)
+      function c_spawn_actions_init(actions) bind(c, name='posix_spawn_file_actions_init') result(r)
+         import :: c_int, spawn_actions_t
+         type(spawn_actions_t), intent(inout) :: actions
+         integer(c_int) :: r
+      end function c_spawn_actions_init
+      !> int posix_spawn_file_actions_destroy(posix_spawn_file_actions_t *actions)
+      function c_spawn_actions_destroy(actions) bind(c, name='posix_spawn_file_actions_destroy') result(r)
+         import :: c_int, spawn_actions_t
+         type(spawn_actions_t), intent(inout) :: actions
+         integer(c_int) :: r
+      end function c_spawn_actions_destroy
+      !> int posix_spawn_file_actions_addopen(posix_spawn_file_actions_t *actions, int fd,
+      !>                                      const char *path, int oflag, mode_t mode)
+      function c_spawn_actions_addopen(actions, fd, path, oflag, mode) &
+            bind(c, name='posix_spawn_file_actions_addopen') result(r)
+         import :: c_int, c_char, spawn_actions_t
+         type(spawn_actions_t), intent(inout) :: actions
+         integer(c_int), value :: fd, oflag, mode
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int) :: r
+      end function c_spawn_actions_addopen
+      !> int posix_spawn_file_actions_adddup2(posix_spawn_file_actions_t *actions, int fd, int newfd)
+      function c_spawn_actions_adddup2(actions, fd, newfd) bind(c, name='posix_spawn_file_actions_adddup2') &
+            result(r)
+         import :: c_int, spawn_actions_t
+         type(spawn_actions_t), intent(inout) :: actions
+         integer(c_int), value :: fd, newfd
+         integer(c_int) :: r
+      end function c_spawn_actions_adddup2
+      ! <sys/wait.h>
+      !> pid_t waitpid(pid_t pid, int *status, int options)
+      function c_waitpid(pid, status, options) bind(c, name='waitpid') result(r)
+         import :: c_int
+         integer(c_int), value :: pid, options
+         integer(c_int), intent(out) :: status
+         integer(c_int) :: r
+      end function c_waitpid
+      ! <sched.h>
+      !> int sched_getaffinity(pid_t pid, size_t cpusetsize, cpu_set_t *mask)
+      function c_sched_getaffinity(pid, size, mask) bind(c, name='sched_getaffinity') result(r)
+         import :: c_int, c_size_t, cpu_set_t
+         integer(c_int), value :: pid
+         integer(c_size_t), value :: size
+         type(cpu_set_t), intent(out) :: mask
+         integer(c_int) :: r
+      end function c_sched_getaffinity
    end interface
 
 end module c_library

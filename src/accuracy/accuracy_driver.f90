@@ -1,0 +1,492 @@
+!> An accuracy run: `impact --accuracy TOL deck.nml`, or a deck with
+!> &accuracy target = TOL. Every result of the impact (the peak force, the
+!> largest deflection, the first contact's duration, the time of the peak,
+!> the largest back-face strain, with &strength the largest failure index)
+!> is given with an estimate of its discretisation error, and the run
+!> refines dt and the mesh the cheapest way until every estimated relative
+!> error is at most TOL, or the cpu time of all its runs would pass
+!> &accuracy max_cpu_s.
+!>
+!> How (docs: README, "Accuracy"):
+!>  1. The ladder (src/accuracy/accuracy_ladder.f90): the deck's dt and
+!>     mesh are level 0; the time axis halves dt on mesh 0 (dt, dt/2,
+!>     dt/4), the mesh axis multiplies nx, ny by &accuracy mesh_factor at
+!>     dt (three meshes); the runs that do not depend on each other run at
+!>     the same time, one per CPU the process may use
+!>     (src/accuracy/accuracy_runs.f90). Each is the program itself, a
+!>     child process with --set settings (no shell; nothing from the deck
+!>     reaches one), its results read from its summary.
+!>  2. Each axis gives the error of each level with the observed order
+!>     checked against the asymptotic range, else a safe bound
+!>     (src/accuracy/error_estimate.f90).
+!>  3. The run chosen is the cheapest (k, j) whose time error, mesh error
+!>     and their interaction meet the target for every result: a run done,
+!>     or one to make (then made, and its interaction measured). When none
+!>     does, the axis whose part of the error exceeds half the target is
+!>     refined by one level (both, when both do), and 3 again.
+!>  4. At the chosen settings, one run with the other theory (linear
+!>     against von Karman) and, when the laminate has D16, D26, one with
+!>     the other bend-twist model (the paper's averaged reduced plate
+!>     against the full plate that keeps them): their relative changes say
+!>     which model the scene requires.
+!>  5. <prefix>_summary.dat and <prefix>_accuracy.dat
+!>     (src/accuracy/accuracy_report.f90); the runs stay in <prefix>_acc/.
+!> Exit status 0 when the target is met, exit_not_met (3) when the cap or
+!> the ladder's limits stopped it first (the results then carry the errors
+!> reached), 1 on an error.
+module accuracy_driver
+   use, intrinsic :: iso_fortran_env, only: int64
+   use kinds, only: dp, msg_len
+   use deck_schema, only: deck_t, strength_given
+   use command_line, only: options_t
+   use number_text, only: int_str, real_short
+   use materials, only: laminate_t
+   use scene_model, only: scene_t, model_laminate, choose_domain, coupling_tol
+   use plate_model, only: model_t, build_model
+   use file_system, only: make_directories
+   use result_files, only: results_claim_t, claim_results, release_results
+   use child_process, only: program_path, usable_cpus
+   use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, state_failed
+   use accuracy_ladder, only: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, axis_time, axis_mesh
+   use accuracy_report, only: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
+      report_terminal
+   implicit none
+   private
+   public :: run_accuracy, exit_not_met
+
+   !> Exit status of an accuracy run that did not meet its target.
+   integer, parameter :: exit_not_met = 3
+   !> The ladder's limits: time levels (dt0/2^10), mesh levels, the smallest
+   !> dt and the largest element count of the deck's schema.
+   integer, parameter :: max_time_levels = 11, max_mesh_levels = 12, max_elements = 10000
+   real(dp), parameter :: min_dt = 1.0e-10_dp
+   !> Levels of each axis at the start.
+   integer, parameter :: first_levels = 3
+
+contains
+
+   !> The accuracy run of the deck (module header). stat /= 0 with errmsg
+   !> on an error (bad use, a run that failed); exit_code 0 when the target
+   !> was met, exit_not_met otherwise.
+   subroutine run_accuracy(opts, deck, unit, exit_code, stat, errmsg)
+      type(options_t), intent(in) :: opts           !< the command line (the deck's path, the --set values)
+      type(deck_t), intent(in) :: deck              !< the deck, as read and checked
+      integer, intent(in) :: unit                   !< standard output
+      integer, intent(out) :: exit_code             !< 0: target met; exit_not_met
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< what failed
+      type(results_claim_t) :: claim
+      type(launcher_t) :: la
+      type(scene_t) :: scene
+      type(run_t), allocatable :: runs(:)
+      type(axis_t) :: tx, mx
+      type(accuracy_outcome_t) :: out
+      type(comparison_t) :: cmp(2)
+      integer(int64) :: wall0, wall1, rate
+
+      exit_code = 1
+      call system_clock(wall0, rate)
+      if (deck%analysis_kind /= 'impact') then
+         stat = 1
+         errmsg = deck%source // ": &accuracy: target needs &analysis kind = 'impact'"
+         return
+      end if
+      if (len(opts%deck_path) == 0) then
+         stat = 1
+         errmsg = '--accuracy: give the deck as a file (its runs read it again), not on standard input'
+         return
+      end if
+      call claim_results(deck, [character(len=16) :: '_accuracy.dat', '_summary.dat'], claim, stat, errmsg)
+      if (stat /= 0) return
+      call set_up(opts, deck, unit, la, scene, runs, stat, errmsg)
+      if (stat == 0) call climb(deck, la, runs, tx, mx, out, stat, errmsg)
+      if (stat == 0) call compare_models(deck, scene, la, runs, out, cmp, stat, errmsg)
+      call system_clock(wall1)
+      out%wall_s = real(wall1 - wall0, dp)/real(rate, dp)
+      if (stat == 0) call write_accuracy_table(deck, runs, tx, mx, out, stat, errmsg)
+      if (stat == 0) call write_accuracy_summary(deck, la, runs, out, cmp, stat, errmsg)
+      if (stat == 0) call report_terminal(unit, la, runs, out, cmp)
+      call release_results(claim, discard=stat /= 0)
+      if (stat == 0) exit_code = merge(0, exit_not_met, out%met)
+   end subroutine run_accuracy
+
+   !> The launcher (the program, the CPUs, the cap, the theory of every
+   !> run), the scene of the deck's model (its domain, D16 and D26), and
+   !> the first levels of both axes planned.
+   subroutine set_up(opts, deck, unit, la, scene, runs, stat, errmsg)
+      type(options_t), intent(in) :: opts           !< the command line
+      type(deck_t), intent(in) :: deck              !< the deck
+      integer, intent(in) :: unit                   !< standard output
+      type(launcher_t), intent(out) :: la           !< the launcher
+      type(scene_t), intent(out) :: scene           !< the scene of the deck's model
+      type(run_t), allocatable, intent(out) :: runs(:)   !< the runs planned
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< what failed
+      type(model_t) :: model
+      character(len=msg_len) :: iomsg
+      integer :: l
+
+      ! -- the model of the deck's settings: the theory 'auto' picks, pinned for every run
+      call build_model(deck, model, stat, errmsg)
+      if (stat /= 0) return
+      scene = model%scene
+      la%exe = program_path()
+      la%deck_path = opts%deck_path
+      la%user_settings = opts%settings
+      la%dir = deck%prefix // '_acc/'
+      la%theory = scene%theory
+      la%every_step = strength_given(deck)
+      la%cpus = usable_cpus()
+      la%cap = deck%accuracy_max_cpu_s
+      la%n0 = deck%nx*deck%ny
+      la%impact_element = scene%element_size
+      la%unit = unit
+      call make_directories(la%dir(:len(la%dir) - 1), stat, iomsg)
+      if (stat /= 0) then
+         errmsg = deck%source // ": &output: prefix = '" // deck%prefix // "': " // trim(iomsg)
+         return
+      end if
+      write (unit, '(a)') 'accuracy: target ' // real_short(deck%accuracy_target) // ' (relative), cap ' // &
+         real_short(la%cap) // ' s of cpu, ' // int_str(la%cpus) // ' runs at a time; theory ' // &
+         trim(la%theory) // ', domain ' // trim(scene%domain) // '; runs in ' // la%dir
+      allocate (runs(0))
+      do l = 0, first_levels - 1
+         call plan(runs, deck, la, l, 0)
+         if (l > 0) call plan(runs, deck, la, 0, l)
+      end do
+   end subroutine set_up
+
+   !> Adds the ladder run (k, j) to the runs (unless it is there). A graded
+   !> mesh is refined as one family: the grading g0^(nx0/nx), so that the
+   !> ratio of the largest element to the smallest stays, and every
+   !> element shrinks by about the factor of the counts.
+   subroutine plan(runs, deck, la, k, j)
+      type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
+      type(deck_t), intent(in) :: deck              !< the deck (level 0)
+      type(launcher_t), intent(in) :: la            !< the launcher (the element at the impact point, level 0)
+      integer, intent(in) :: k, j                   !< time and mesh level
+      type(run_t) :: r
+      if (ladder_run(runs, k, j) > 0) return
+      r%k = k;  r%j = j
+      r%name = 't' // int_str(k) // '_m' // int_str(j)
+      r%role = 'combined'
+      if (j == 0) r%role = 'time'
+      if (k == 0 .and. j > 0) r%role = 'mesh'
+      r%dt = deck%dt/2.0_dp**k
+      r%nx = mesh_count(deck%nx, deck%accuracy_mesh_factor, j)
+      r%ny = mesh_count(deck%ny, deck%accuracy_mesh_factor, j)
+      r%grading = deck%grading**(real(deck%nx, dp)/real(r%nx, dp))
+      r%h_impact = max(la%impact_element(1)*first_size(r%nx, r%grading)/first_size(deck%nx, deck%grading), &
+                       la%impact_element(2)*first_size(r%ny, r%grading)/first_size(deck%ny, deck%grading))
+      runs = [runs, r]
+   end subroutine plan
+
+   !> The size of the first of n elements graded by g (s, g s, g^2 s, ...)
+   !> over a unit length (src/model/mesh.f90, graded_offsets).
+   pure real(dp) function first_size(n, g) result(s)
+      integer, intent(in) :: n                      !< elements
+      real(dp), intent(in) :: g                     !< ratio of successive sizes
+      if (g <= 1.0_dp) then
+         s = 1.0_dp/real(n, dp)
+      else
+         s = (g - 1.0_dp)/(g**n - 1.0_dp)
+      end if
+   end function first_size
+
+   !> Elements along one side at mesh level j: n0 factor^j rounded, each
+   !> level at least one more than the last.
+   pure integer function mesh_count(n0, factor, j) result(n)
+      integer, intent(in) :: n0                     !< level 0's count
+      real(dp), intent(in) :: factor                !< &accuracy mesh_factor
+      integer, intent(in) :: j                      !< the level
+      integer :: l
+      n = n0
+      do l = 1, j
+         n = max(n + 1, nint(real(n0, dp)*factor**l))
+      end do
+   end function mesh_count
+
+   !> Steps 1-3 of the module header: runs the planned runs, estimates,
+   !> chooses, refines, until the target is met, the cap is reached or the
+   !> ladder cannot be refined; the outcome names the run whose results
+   !> are given.
+   subroutine climb(deck, la, runs, tx, mx, out, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(launcher_t), intent(inout) :: la         !< the launcher
+      type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
+      type(axis_t), intent(out) :: tx, mx           !< the axes at the end
+      type(accuracy_outcome_t), intent(out) :: out  !< the outcome
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< what failed
+      integer :: k, j, i
+      logical :: found, more
+      character(len=224) :: why
+
+      out%target = deck%accuracy_target
+      call targeted_results(deck, out%targeted, stat, errmsg)
+      if (stat /= 0) return
+      do
+         call run_planned(runs, la, stat, errmsg)
+         if (stat /= 0) return
+         call check_failures(runs, la, stat, errmsg)
+         if (stat /= 0) return
+         if (runs(1)%state /= state_done) then
+            stat = 1
+            errmsg = 'accuracy: the first run did not finish within &accuracy max_cpu_s = ' // real_short(la%cap) // ' s'
+            return
+         end if
+         call contact_radii(deck, runs)
+         out%estimated = runs(1)%has
+         out%estimated(nq) = out%estimated(nq) .and. strength_given(deck)
+         out%targeted = out%targeted .and. out%estimated
+         call build_axis(runs, axis_time, out%estimated, tx)
+         call build_axis(runs, axis_mesh, out%estimated, mx)
+         call choose_run(runs, la, tx, mx, out%target, out%targeted, k, j, found)
+         i = ladder_run(runs, k, j)
+         if (found .and. i > 0) then
+            if (runs(i)%state == state_done) then
+               out%met = .true.
+               out%status = 'met'
+               exit
+            end if
+         end if
+         if (la%cap_reached) then
+            out%status = 'cap reached: the next run would take the cpu time of all runs past &accuracy ' // &
+                         'max_cpu_s = ' // real_short(la%cap) // ' s; the results carry the errors reached'
+            exit
+         end if
+         if (found) then
+            call plan(runs, deck, la, k, j)
+         else
+            call refine(deck, la, runs, tx, mx, out, more, why)
+            if (.not. more) then
+               out%status = 'not met: ' // why
+               exit
+            end if
+         end if
+      end do
+      if (.not. out%met) call choose_run(runs, la, tx, mx, out%target, out%targeted, k, j, found, done_only=.true.)
+      out%chosen = ladder_run(runs, k, j)
+      out%jd = judge_run(runs, tx, mx, k, j, out%target, out%targeted)
+   end subroutine climb
+
+   !> The results that must meet the target: &accuracy results, 'all' (or
+   !> nothing) or summary keys separated by blanks, commas or '+' (on the
+   !> command line: --set accuracy.results=peak_force_N+max_deflection_mm).
+   subroutine targeted_results(deck, targeted, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< the deck
+      logical, intent(out) :: targeted(nq)          !< which of result_keys
+      integer, intent(out) :: stat                  !< 0, or 1 for an unknown key
+      character(len=*), intent(inout) :: errmsg     !< the unknown key
+      character(len=:), allocatable :: rest
+      integer :: cut, iq
+      stat = 0
+      rest = deck%accuracy_results
+      do cut = 1, len(rest)
+         if (rest(cut:cut) == ',' .or. rest(cut:cut) == '+') rest(cut:cut) = ' '
+      end do
+      targeted = trim(adjustl(rest)) == 'all' .or. len_trim(rest) == 0
+      if (all(targeted)) return
+      do
+         rest = trim(adjustl(rest))
+         if (len(rest) == 0) exit
+         cut = index(rest, ' ')
+         if (cut == 0) cut = len(rest) + 1
+         do iq = nq, 1, -1
+            if (trim(result_keys(iq)) == rest(:cut - 1)) exit
+         end do
+         if (iq == 0) then
+            stat = 1
+            errmsg = deck%source // ': &accuracy: results: ' // rest(:cut - 1) // ' is not one of all ' // &
+               'peak_force_N max_deflection_mm contact_duration_us time_of_peak_us max_strain_y_back max_failure_index'
+            return
+         end if
+         targeted(iq) = .true.
+         rest = rest(cut:)
+      end do
+   end subroutine targeted_results
+
+   !> The Hertz contact radius at each run's peak force, a = sqrt(R alpha),
+   !> alpha = (F/k)^(2/3) (the loading law, eq. 11).
+   pure subroutine contact_radii(deck, runs)
+      type(deck_t), intent(in) :: deck              !< the deck (k, the nose's diameter)
+      type(run_t), intent(inout) :: runs(:)         !< the runs
+      integer :: i
+      do i = 1, size(runs)
+         if (runs(i)%state /= state_done .or. .not. runs(i)%has(1)) cycle
+         runs(i)%contact_radius = sqrt(0.5_dp*deck%diameter*(max(runs(i)%q(1), 0.0_dp)/deck%k)**(2.0_dp/3.0_dp))
+      end do
+   end subroutine contact_radii
+
+   !> A ladder run that failed (diverged, ...) stops the accuracy run:
+   !> its status and its log are named.
+   subroutine check_failures(runs, la, stat, errmsg)
+      type(run_t), intent(in) :: runs(:)            !< the runs
+      type(launcher_t), intent(in) :: la            !< the launcher
+      integer, intent(out) :: stat                  !< 0 when none failed
+      character(len=*), intent(inout) :: errmsg     !< the first failure
+      integer :: i
+      stat = 0
+      i = findloc(runs%state, state_failed, dim=1)
+      if (i == 0) return
+      stat = 1
+      errmsg = 'accuracy: the run ' // trim(runs(i)%name) // ' (dt ' // real_short(runs(i)%dt) // ' s, mesh ' // &
+         int_str(runs(i)%nx) // ' x ' // int_str(runs(i)%ny) // ') failed, exit status ' // &
+         int_str(runs(i)%exit_code) // ': ' // trim(runs(i)%status) // '; see ' // la%dir // trim(runs(i)%name) // '.log'
+   end subroutine check_failures
+
+   !> No run meets the target: refine the axis whose part of the error of
+   !> the finest run (k, j) is more than half the target for some result
+   !> (the larger part when neither is); more is false when neither axis
+   !> can be refined, or when the mesh would be refined only for a time
+   !> read off the steps whose mesh part is its step dt0, which no mesh
+   !> lowers (why says so: a smaller dt in the deck would).
+   subroutine refine(deck, la, runs, tx, mx, out, more, why)
+      type(deck_t), intent(in) :: deck             !< the deck
+      type(launcher_t), intent(in) :: la           !< the launcher (the element at the impact point)
+      type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
+      type(axis_t), intent(in) :: tx, mx           !< the axes
+      type(accuracy_outcome_t), intent(in) :: out  !< the target, the results estimated
+      logical, intent(out) :: more                 !< a level was planned
+      character(len=*), intent(out) :: why         !< when not: why
+      type(judged_t) :: jd
+      logical :: time, mesh, can_time, can_mesh, step_bound(nq)
+      real(dp) :: allowed
+      integer :: iq
+
+      jd = judge_run(runs, tx, mx, tx%levels - 1, mx%levels - 1, out%target, out%targeted)
+      time = .false.;  mesh = .false.;  step_bound = .false.
+      why = 'dt and the mesh cannot be refined further (the ladder''s limits)'
+      do iq = 1, nq
+         if (.not. out%targeted(iq)) cycle
+         allowed = out%target*abs(jd%value(iq))
+         if (jd%err(iq) <= allowed) cycle
+         if (jd%err_time(iq) > 0.5_dp*allowed) time = .true.
+         ! a time read off the steps whose mesh part is the mesh axis's step
+         step_bound(iq) = mx%finest(iq)%floor > 0.5_dp*allowed
+         if (jd%err_mesh(iq) > 0.5_dp*allowed .and. .not. step_bound(iq)) mesh = .true.
+         if (jd%err_time(iq) <= 0.5_dp*allowed .and. jd%err_mesh(iq) <= 0.5_dp*allowed) then
+            time = time .or. jd%err_time(iq) >= jd%err_mesh(iq)
+            mesh = mesh .or. (jd%err_mesh(iq) > jd%err_time(iq) .and. .not. step_bound(iq))
+         end if
+      end do
+      can_time = tx%levels < max_time_levels .and. deck%dt/2.0_dp**tx%levels >= min_dt
+      can_mesh = mx%levels < max_mesh_levels .and. &
+                 max(mesh_count(deck%nx, deck%accuracy_mesh_factor, mx%levels), &
+                     mesh_count(deck%ny, deck%accuracy_mesh_factor, mx%levels)) <= max_elements
+      if (time .and. .not. can_time) then
+         time = .false.;  mesh = can_mesh
+      end if
+      if (mesh .and. .not. can_mesh) then
+         mesh = .false.;  time = can_time .and. (time .or. .not. mesh)
+      end if
+      if (time) call plan(runs, deck, la, tx%levels, 0)
+      if (mesh) call plan(runs, deck, la, 0, mx%levels)
+      more = time .or. mesh
+      if (.not. more .and. any(step_bound)) why = trim(result_keys(findloc(step_bound, .true., dim=1))) // &
+         ' is read off the time steps: the meshes, all run at the deck''s dt = ' // real_short(deck%dt*1.0e6_dp) // &
+         ' us, cannot show it to the target; give a smaller dt in the deck'
+   end subroutine refine
+
+   !> Step 4 of the module header: the other theory and the other
+   !> bend-twist model at the chosen settings, run together.
+   subroutine compare_models(deck, scene, la, runs, out, cmp, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(scene_t), intent(in) :: scene            !< the scene of the deck's model
+      type(launcher_t), intent(inout) :: la         !< the launcher
+      type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
+      type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the run chosen)
+      type(comparison_t), intent(out) :: cmp(2)     !< the two comparisons
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< what failed
+      type(run_t) :: r
+      character(len=16) :: other
+
+      r = runs(out%chosen)
+      r%state = state_planned;  r%cpu_s = 0.0_dp;  r%has = .false.;  r%variant = '';  r%status = ''
+      r%exit_code = 0;  r%pid = -1
+      ! -- the theory
+      other = merge('nonlinear', 'linear   ', la%theory == 'linear')
+      cmp(1)%what = 'theory'
+      cmp(1)%compared = trim(other) // ' instead of ' // trim(la%theory)
+      r%role = 'theory'
+      r%name = trim(runs(out%chosen)%name) // '_' // trim(other)
+      r%variant(1) = "analysis.theory='" // trim(other) // "'"
+      runs = [runs, r]
+      cmp(1)%run = size(runs)
+      ! -- D16, D26
+      cmp(2)%what = 'bend_twist'
+      call bend_twist_variant(deck, scene, runs(out%chosen), r, cmp(2))
+      if (len_trim(cmp(2)%note) == 0) then
+         runs = [runs, r]
+         cmp(2)%run = size(runs)
+      end if
+      call run_planned(runs, la, stat, errmsg)
+   end subroutine compare_models
+
+   !> The run of the other bend-twist model at the settings of run c
+   !> (module header, step 4), or a note why there is none.
+   subroutine bend_twist_variant(deck, scene, c, r, cmp)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(scene_t), intent(in) :: scene            !< the scene of the deck's model
+      type(run_t), intent(in) :: c                  !< the run chosen
+      type(run_t), intent(inout) :: r               !< the variant (c's settings in)
+      type(comparison_t), intent(inout) :: cmp      !< what it compares, or the note
+      real(dp) :: quarters
+      integer :: fx, fy
+
+      r%role = 'bend_twist';  r%variant = ''
+      if (all(scene%couplings(1:2) <= coupling_tol)) then
+         cmp%note = 'the laminate has D16 = D26 = 0'
+         return
+      end if
+      if (scene%domain == 'strip') then
+         cmp%note = 'a strip (cylindrical bending) has no full plate to compare with'
+         return
+      end if
+      quarters = merge(1.0_dp, merge(2.0_dp, 4.0_dp, scene%domain == 'half'), scene%domain == 'quarter')
+      if (scene%averaged) then
+         ! the full plate that keeps D16, D26: its counts, those of the domain mirrored
+         fx = 2;  fy = 2
+         if (deck%domain /= 'auto' .and. scene%domain == 'half') then
+            fx = merge(1, 2, deck%y0 == 0.0_dp);  fy = merge(2, 1, deck%y0 == 0.0_dp)
+         end if
+         if (deck%domain == 'full') then
+            fx = 1;  fy = 1
+         end if
+         r%nx = c%nx*fx;  r%ny = c%ny*fy
+         r%variant(1) = "mesh.domain='full'"
+         r%variant(2) = 'mesh.average_bend_twist=.false.'
+         r%variant(3) = "laminate.bend_twist='keep'"
+         r%cost_factor = 4.0_dp/quarters
+         r%name = trim(c%name) // '_bend_twist_keep'
+         cmp%compared = 'the full plate with D16, D26 kept instead of D16 = D26 = 0 (' // trim(scene%domain) // ')'
+      else
+         ! the paper's averaging: D16 = D26 = 0, on the smallest domain that allows
+         r%variant(1) = "laminate.bend_twist='drop'"
+         r%cost_factor = reduced_quarters(deck)/quarters
+         r%name = trim(c%name) // '_bend_twist_drop'
+         cmp%compared = 'D16 = D26 = 0 (the paper''s averaging, section 3.1) instead of D16, D26 kept'
+      end if
+   end subroutine bend_twist_variant
+
+   !> The quarters of the domain 'auto' picks for the deck once D16 and
+   !> D26 are dropped (1 quarter, 2 half, 4 full).
+   real(dp) function reduced_quarters(deck) result(quarters)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(deck_t) :: d
+      type(scene_t) :: s
+      type(laminate_t) :: lmt
+      integer :: stat
+      character(len=msg_len) :: errmsg
+      d = deck
+      d%bend_twist = 'drop'
+      call model_laminate(d, lmt, s)
+      call choose_domain(d, s, stat, errmsg)
+      quarters = 4.0_dp
+      if (stat /= 0) return
+      if (s%domain == 'quarter') quarters = 1.0_dp
+      if (s%domain == 'half') quarters = 2.0_dp
+   end function reduced_quarters
+
+end module accuracy_driver

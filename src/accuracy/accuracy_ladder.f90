@@ -1,0 +1,257 @@
+!> The ladder of an accuracy run (src/accuracy/accuracy_driver.f90): two
+!> axes of runs from the deck's settings (time level 0, mesh level 0),
+!>
+!>   time axis: dt0, dt0/2, dt0/4, ... on mesh level 0 (runs (k, 0)),
+!>   mesh axis: nx, ny times mesh_factor^j, at dt0        (runs (0, j)),
+!>
+!> and the runs that combine them, (k, j). Each axis gives the error of
+!> every level (src/accuracy/error_estimate.f90): the time axis with the
+!> order of Newmark's average acceleration rule, 2 (the asymptotic range
+!> taken as observed orders in [1.5, 2.7]); the mesh axis with an order
+!> no larger than 2 trusted, in range between 1 and 2.5 (the element size
+!> h = 1/sqrt(nx ny); a faster observed order is taken for what it mostly
+!> is on these meshes, a coarse mesh's error falling before the slow
+!> tail): the peak force on a mesh that does not resolve the
+!> Hertz contact disc is a rippled plateau, whose differences change sign
+!> and get the safe bound, or converges slowly (under a disc much smaller
+!> than the element the plate sees a point force, whose deflection grows
+!> like ln(1/h)), which the observed order shows. A time read off the
+!> steps (the contact's duration, the time of the peak, when every value
+!> of the axis is a whole number of its steps) cannot show a change below
+!> the step: the step of the axis's finest level is added to its error.
+!>
+!> On the mesh axis, while the element at the impact point is larger than
+!> the Hertz contact radius at the peak force (a = sqrt(R alpha), alpha =
+!> (F/k)^(2/3)), the results change like ln(1/h), and the change still to
+!> come (log_tail of src/accuracy/error_estimate.f90) is their error when
+!> the ladder's rule gives less; the rule's estimate of a result that
+!> shows no order there (an observed order below the range: the log's
+!> constant differences) is the tail alone.
+!>
+!> The error of a run (k, j) is its time level's error plus its mesh
+!> level's plus the interaction of the two, |q(k,j) - q(k,0) - q(0,j) +
+!> q(0,0)|: measured for a run done, for one to come the largest measured
+!> (0 until one is). judge_run gives them; choose_run the cheapest run,
+!> done (cost 0) or to come, whose every error is within the target.
+module accuracy_ladder
+   use kinds, only: dp
+   use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor
+   use accuracy_runs, only: run_t, launcher_t, nq, state_done, relative_cost
+   implicit none
+   private
+   public :: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, axis_time, axis_mesh, time_results
+
+   !> The two axes.
+   integer, parameter :: axis_time = 1, axis_mesh = 2
+   !> The results that are times read off the steps (result_keys of
+   !> src/accuracy/accuracy_runs.f90): the contact's duration, the time of the peak.
+   logical, parameter :: time_results(nq) = [.false., .false., .true., .true., .false., .false.]
+   !> Orders: the method's, and the asymptotic range, of each axis.
+   real(dp), parameter :: order_theory(2) = [2.0_dp, 2.0_dp], order_low(2) = [1.5_dp, 1.0_dp], &
+      order_high(2) = [2.7_dp, 2.5_dp]
+
+   !> One axis: its levels done (from 0, without a gap) and their errors.
+   type :: axis_t
+      integer :: levels = 0                       !< levels done
+      integer, allocatable :: run(:)              !< the run of each level (index into runs)
+      real(dp), allocatable :: h(:)               !< its size: dt (s), or 1/sqrt(nx ny)
+      real(dp), allocatable :: err(:, :)          !< (level, result): the error of each level
+      type(estimate_t) :: finest(nq)              !< the estimate of the finest level
+   end type axis_t
+
+   !> A run's results with their errors (the results' units).
+   type :: judged_t
+      real(dp) :: value(nq) = 0.0_dp              !< the results (predicted for a run to come)
+      real(dp) :: err_time(nq) = 0.0_dp           !< time part of the error
+      real(dp) :: err_mesh(nq) = 0.0_dp           !< mesh part
+      real(dp) :: err_cross(nq) = 0.0_dp          !< the interaction of the two
+      real(dp) :: err(nq) = 0.0_dp                !< the sum: the error of the run's results
+      real(dp) :: worst = huge(1.0_dp)            !< largest err / (target |value|)
+      logical :: meets = .false.                  !< every error within the target
+   end type judged_t
+
+contains
+
+   !> The run (k, j) of the ladder (not a model variant), 0 when there is none.
+   pure integer function ladder_run(runs, k, j) result(i)
+      type(run_t), intent(in) :: runs(:)          !< the runs
+      integer, intent(in) :: k, j                 !< time and mesh level
+      do i = 1, size(runs)
+         if (runs(i)%k == k .and. runs(i)%j == j .and. runs(i)%role /= 'theory' .and. &
+             runs(i)%role /= 'bend_twist') return
+      end do
+      i = 0
+   end function ladder_run
+
+   !> The axis (axis_time or axis_mesh) from the runs done, with the error
+   !> of each level of each active result.
+   subroutine build_axis(runs, which, active, ax)
+      type(run_t), intent(in) :: runs(:)          !< the runs
+      integer, intent(in) :: which                !< axis_time or axis_mesh
+      logical, intent(in) :: active(nq)           !< the results estimated
+      type(axis_t), intent(out) :: ax             !< the axis
+      integer :: l, i, iq
+      real(dp) :: floor, tail
+      allocate (ax%run(0), ax%h(0))
+      l = 0
+      do
+         i = ladder_run(runs, merge(l, 0, which == axis_time), merge(0, l, which == axis_time))
+         if (i == 0) exit
+         if (runs(i)%state /= state_done) exit
+         ax%run = [ax%run, i]
+         if (which == axis_time) then
+            ax%h = [ax%h, runs(i)%dt]
+         else
+            ax%h = [ax%h, 1.0_dp/sqrt(real(runs(i)%nx, dp)*real(runs(i)%ny, dp))]
+         end if
+         l = l + 1
+      end do
+      ax%levels = l
+      allocate (ax%err(l, nq), source=huge(1.0_dp))
+      if (l == 0) return
+      do iq = 1, nq
+         if (.not. active(iq)) cycle
+         floor = 0.0_dp
+         if (time_results(iq)) then
+            if (on_steps(runs(ax%run)%q(iq), runs(ax%run)%dt)) floor = runs(ax%run(l))%dt*1.0e6_dp   ! in us
+         end if
+         ax%finest(iq) = ladder_estimate(ax%h, runs(ax%run)%q(iq), order_theory(which), order_low(which), &
+                                         order_high(which), floor)
+         if (which == axis_mesh) then
+            tail = log_tail(ax%h, runs(ax%run)%q(iq), runs(ax%run(l))%h_impact/runs(ax%run(l))%contact_radius)
+            if (tail > 0.0_dp .and. (tail + floor > ax%finest(iq)%error .or. &
+                (ax%finest(iq)%order >= 0.0_dp .and. ax%finest(iq)%order < order_low(which)))) then
+               ax%finest(iq)%error = max(tail, safe_factor*last_difference(runs(ax%run)%q(iq))) + floor
+               ax%finest(iq)%how = 'contact disc unresolved: ln tail'
+            end if
+         end if
+         do i = 1, l
+            ax%err(i, iq) = level_error(runs(ax%run)%q(iq), i, ax%finest(iq)%error)
+         end do
+      end do
+   end subroutine build_axis
+
+   !> The larger of the last two differences of a ladder.
+   pure real(dp) function last_difference(q)
+      real(dp), intent(in) :: q(:)                !< the result at each level
+      integer :: n
+      n = size(q)
+      last_difference = 0.0_dp
+      if (n >= 2) last_difference = abs(q(n - 1) - q(n))
+      if (n >= 3) last_difference = max(last_difference, abs(q(n - 2) - q(n - 1)))
+   end function last_difference
+
+   !> True when every time (us) is a whole number of its run's step (s):
+   !> a time read off the steps.
+   pure logical function on_steps(t_us, dt)
+      real(dp), intent(in) :: t_us(:)             !< the times (us)
+      real(dp), intent(in) :: dt(:)               !< the steps of their runs (s)
+      real(dp) :: steps(size(t_us))
+      steps = t_us/(dt*1.0e6_dp)
+      on_steps = all(abs(steps - anint(steps)) <= 1.0e-6_dp*max(1.0_dp, abs(steps)))
+   end function on_steps
+
+   !> The results of run (k, j) and their errors; for a run not done, its
+   !> results predicted as q(k,0) + q(0,j) - q(0,0) and the interaction as
+   !> the largest measured.
+   function judge_run(runs, tx, mx, k, j, target, active) result(jd)
+      type(run_t), intent(in) :: runs(:)          !< the runs
+      type(axis_t), intent(in) :: tx, mx          !< the time and mesh axes
+      integer, intent(in) :: k, j                 !< the levels (k < tx%levels, j < mx%levels)
+      real(dp), intent(in) :: target              !< the relative error asked for
+      logical, intent(in) :: active(nq)           !< the results estimated
+      type(judged_t) :: jd
+      integer :: i, i0, ik, ij
+      real(dp) :: scale
+
+      i0 = tx%run(1);  ik = tx%run(k + 1);  ij = mx%run(j + 1)
+      i = ladder_run(runs, k, j)
+      if (i > 0) then
+         if (runs(i)%state /= state_done) i = 0
+      end if
+      if (i > 0) then
+         jd%value = runs(i)%q
+         jd%err_cross = abs(runs(i)%q - runs(ik)%q - runs(ij)%q + runs(i0)%q)
+      else
+         jd%value = runs(ik)%q + runs(ij)%q - runs(i0)%q
+         jd%err_cross = largest_cross(runs, tx, mx)
+      end if
+      jd%err_time = tx%err(k + 1, :)
+      jd%err_mesh = mx%err(j + 1, :)
+      jd%err = jd%err_time + jd%err_mesh + jd%err_cross
+      jd%worst = 0.0_dp
+      do i = 1, nq
+         if (.not. active(i)) cycle
+         scale = target*abs(jd%value(i))
+         if (scale > 0.0_dp) then
+            jd%worst = max(jd%worst, jd%err(i)/scale)
+         else if (jd%err(i) > 0.0_dp) then
+            jd%worst = huge(1.0_dp)
+         end if
+      end do
+      jd%meets = jd%worst <= 1.0_dp
+   end function judge_run
+
+   !> The largest interaction |q(k,j) - q(k,0) - q(0,j) + q(0,0)| of the
+   !> combined runs done (0 when there is none).
+   function largest_cross(runs, tx, mx) result(c)
+      type(run_t), intent(in) :: runs(:)          !< the runs
+      type(axis_t), intent(in) :: tx, mx          !< the axes
+      real(dp) :: c(nq)
+      integer :: i
+      c = 0.0_dp
+      do i = 1, size(runs)
+         if (runs(i)%state /= state_done .or. runs(i)%role /= 'combined') cycle
+         if (runs(i)%k >= tx%levels .or. runs(i)%j >= mx%levels) cycle
+         c = max(c, abs(runs(i)%q - runs(tx%run(runs(i)%k + 1))%q - runs(mx%run(runs(i)%j + 1))%q &
+                        + runs(tx%run(1))%q))
+      end do
+   end function largest_cross
+
+   !> The cheapest run (k, j) of the axes whose results all meet the
+   !> target: a run done costs nothing, one to come its predicted cost.
+   !> found is false when none meets it; (k, j) is then the run done with
+   !> the smallest worst ratio (the best there is). With done_only, only
+   !> the runs done are candidates.
+   subroutine choose_run(runs, la, tx, mx, target, active, k, j, found, done_only)
+      type(run_t), intent(in) :: runs(:)          !< the runs
+      type(launcher_t), intent(in) :: la          !< the launcher (its cost model)
+      type(axis_t), intent(in) :: tx, mx          !< the axes
+      real(dp), intent(in) :: target              !< the relative error asked for
+      logical, intent(in) :: active(nq)           !< the results estimated
+      integer, intent(out) :: k, j                !< the run chosen
+      logical, intent(out) :: found               !< it meets the target
+      logical, intent(in), optional :: done_only  !< only the runs done (the final choice)
+      type(judged_t) :: jd
+      type(run_t) :: probe
+      real(dp) :: cost, best_cost, best_worst
+      integer :: kk, jj, i
+      logical :: done
+
+      found = .false.
+      k = 0;  j = 0
+      best_cost = huge(1.0_dp);  best_worst = huge(1.0_dp)
+      do kk = 0, tx%levels - 1
+         do jj = 0, mx%levels - 1
+            jd = judge_run(runs, tx, mx, kk, jj, target, active)
+            i = ladder_run(runs, kk, jj)
+            done = i > 0
+            if (done) done = runs(i)%state == state_done
+            if (present(done_only)) then
+               if (done_only .and. .not. done) cycle
+            end if
+            probe = runs(tx%run(kk + 1))
+            probe%nx = runs(mx%run(jj + 1))%nx;  probe%ny = runs(mx%run(jj + 1))%ny
+            cost = merge(0.0_dp, max(la%c_base, 0.0_dp)*relative_cost(probe, la), done)
+            if (jd%meets) then
+               if (.not. found .or. cost < best_cost .or. (cost == best_cost .and. jd%worst < best_worst)) then
+                  found = .true.;  k = kk;  j = jj;  best_cost = cost;  best_worst = jd%worst
+               end if
+            else if (.not. found .and. done .and. jd%worst < best_worst) then
+               k = kk;  j = jj;  best_worst = jd%worst
+            end if
+         end do
+      end do
+   end subroutine choose_run
+
+end module accuracy_ladder

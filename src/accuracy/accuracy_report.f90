@@ -1,0 +1,340 @@
+!> What an accuracy run (src/accuracy/accuracy_driver.f90) writes:
+!>
+!>  - <prefix>_summary.dat: the summary of the run chosen, as a plain
+!>    run writes it (its items copied, the accuracy run's deck echoed),
+!>    then the accuracy's keys: the target and whether it was met, the run
+!>    chosen and its settings, for every result its error `<key>_error`
+!>    (the result's unit; `_error_dt`, `_error_mesh` the two parts) and
+!>    the relative changes the simpler or fuller models make
+!>    (`<key>_change_theory`, `<key>_change_bend_twist`), the runs and
+!>    their total cpu time;
+!>  - <prefix>_accuracy.dat: one row per run, its settings, cpu time,
+!>    results and their errors (a '#' header names each column and its
+!>    unit), then the estimates of each axis as '#' lines
+!>    (postproc/accuracy.gp draws it);
+!>  - on standard output, the same in a few lines.
+module accuracy_report
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use kinds, only: dp, msg_len
+   use deck_schema, only: deck_t
+   use deck_echo, only: echo_deck
+   use number_text, only: int_str, real_short
+   use result_files, only: summary_item_t, summary_real, summary_integer, summary_text, write_summary_file, &
+      write_column_block
+   use summary_reader, only: summary_t, read_summary
+   use accuracy_runs, only: run_t, launcher_t, nq, result_keys, result_units, state_done, state_failed, &
+      state_skipped
+   use accuracy_ladder, only: axis_t, judged_t, judge_run
+   implicit none
+   private
+   public :: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, report_terminal
+
+   !> A model compared at the chosen settings: the theory, or D16, D26.
+   type :: comparison_t
+      character(len=12) :: what = ''               !< 'theory' or 'bend_twist'
+      character(len=160) :: compared = ''          !< what the other run changes
+      integer :: run = 0                           !< its run, 0 when none was made
+      character(len=160) :: note = ''              !< why none was made
+   end type comparison_t
+
+   !> The outcome of the ladder.
+   type :: accuracy_outcome_t
+      real(dp) :: target = 0.0_dp                  !< the relative error asked for
+      logical :: met = .false.                     !< every error within it
+      character(len=240) :: status = ''            !< 'met', 'cap reached: ...', 'not met: ...'
+      integer :: chosen = 0                        !< the run whose results are given
+      type(judged_t) :: jd                         !< its results and errors
+      logical :: estimated(nq) = .false.           !< the results estimated
+      logical :: targeted(nq) = .false.            !< of which those that must meet the target
+      real(dp) :: wall_s = 0.0_dp                  !< wall time of the accuracy run (s)
+   end type accuracy_outcome_t
+
+   !> Columns of <prefix>_accuracy.dat before the results.
+   integer, parameter :: nfixed = 12
+
+contains
+
+   !> <prefix>_accuracy.dat (module header).
+   subroutine write_accuracy_table(deck, runs, tx, mx, out, stat, errmsg)
+      type(deck_t), intent(in) :: deck             !< the accuracy run's deck
+      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(axis_t), intent(in) :: tx, mx           !< the axes
+      type(accuracy_outcome_t), intent(in) :: out  !< the outcome
+      integer, intent(out) :: stat                 !< 0 on success
+      character(len=*), intent(inout) :: errmsg    !< what failed
+      character(len=32) :: names(nfixed + 4*nq)
+      character(len=96) :: texts(nfixed + 4*nq)
+      character(len=msg_len) :: iomsg
+      integer :: u, i, iq
+      names(:nfixed) = [character(len=32) :: 'run', 'role', 'time_level', 'mesh_level', 'dt_us', 'nx', 'ny', &
+         'grading', 'element_size_rel', 'cpu_s', 'chosen', 'state']
+      texts(:nfixed) = [character(len=96) :: 'the run: <prefix>_acc/<run>_summary.dat', &
+         'time, mesh or combined (the ladder), theory or bend_twist (a model compared)', &
+         'k: dt = dt0/2^k', 'j: the mesh refined j times by &accuracy mesh_factor', 'time step (us)', &
+         '&mesh nx', '&mesh ny', '&mesh grading', '1/sqrt(nx ny) relative to mesh level 0', &
+         'cpu time of the run (s)', '1: the run whose results the summary gives', &
+         'done, failed, or skipped (it would pass &accuracy max_cpu_s)']
+      do iq = 1, nq
+         names(nfixed + iq) = result_keys(iq)
+         texts(nfixed + iq) = 'the run''s ' // trim(result_keys(iq)) // ' (' // trim(result_units(iq)) // &
+                              '; NaN: none)'
+         names(nfixed + nq + iq) = trim(result_keys(iq)) // '_error'
+         texts(nfixed + nq + iq) = 'its estimated error (' // trim(result_units(iq)) // '; NaN: not estimated)'
+         names(nfixed + 2*nq + iq) = trim(result_keys(iq)) // '_error_dt'
+         texts(nfixed + 2*nq + iq) = 'of which the time part (' // trim(result_units(iq)) // ')'
+         names(nfixed + 3*nq + iq) = trim(result_keys(iq)) // '_error_mesh'
+         texts(nfixed + 3*nq + iq) = 'and the mesh part (' // trim(result_units(iq)) // ')'
+      end do
+      open (newunit=u, file=deck%prefix // '_accuracy.dat', status='replace', action='write', iostat=stat, &
+            iomsg=iomsg)
+      if (stat /= 0) then
+         errmsg = 'cannot write ' // deck%prefix // '_accuracy.dat: ' // trim(iomsg)
+         return
+      end if
+      write (u, '(a)') '# impact: accuracy ladder, one row per run (target ' // real_short(out%target) // ')'
+      call echo_deck(deck, u, '# ')
+      call write_column_block(u, names, texts)
+      do i = 1, size(runs)
+         call write_row(i)
+      end do
+      call write_estimates(u, tx, mx, out%estimated)
+      close (u, iostat=stat, iomsg=iomsg)
+      if (stat /= 0) errmsg = deck%prefix // '_accuracy.dat: ' // trim(iomsg)
+
+   contains
+
+      !> The row of run i.
+      subroutine write_row(i)
+         integer, intent(in) :: i                  !< the run
+         real(dp) :: err(nq), err_time(nq), err_mesh(nq), q(nq), h_rel
+         type(judged_t) :: jd
+         err = ieee_value(err, ieee_quiet_nan)
+         err_time = err;  err_mesh = err
+         q = runs(i)%q
+         if (runs(i)%state /= state_done) q = ieee_value(q, ieee_quiet_nan)
+         if (runs(i)%state == state_done .and. runs(i)%role /= 'theory' .and. runs(i)%role /= 'bend_twist' &
+             .and. runs(i)%k < tx%levels .and. runs(i)%j < mx%levels) then
+            jd = judge_run(runs, tx, mx, runs(i)%k, runs(i)%j, out%target, out%targeted)
+            err = jd%err;  err_time = jd%err_time;  err_mesh = jd%err_mesh
+         end if
+         where (.not. out%estimated)
+            err = ieee_value(err, ieee_quiet_nan);  err_time = err;  err_mesh = err
+         end where
+         h_rel = sqrt(real(runs(1)%nx, dp)*real(runs(1)%ny, dp)/(real(runs(i)%nx, dp)*real(runs(i)%ny, dp)))
+         write (u, '(a,1x,a,2(1x,i3),es15.6e3,2(1x,i5),f9.5,f9.5,es12.4,1x,i1,1x,a,24es16.7e3)') &
+            trim(runs(i)%name), trim(runs(i)%role), runs(i)%k, runs(i)%j, runs(i)%dt*1.0e6_dp, runs(i)%nx, &
+            runs(i)%ny, runs(i)%grading, h_rel, runs(i)%cpu_s, merge(1, 0, i == out%chosen), &
+            state_word(runs(i)%state), q, err, err_time, err_mesh
+      end subroutine write_row
+
+   end subroutine write_accuracy_table
+
+   !> The estimates of both axes as '#' lines: result, axis, levels,
+   !> observed order, asymptotic or not, the rule, the error of the
+   !> finest level.
+   subroutine write_estimates(u, tx, mx, active)
+      integer, intent(in) :: u                     !< the open file
+      type(axis_t), intent(in) :: tx, mx           !< the axes
+      logical, intent(in) :: active(nq)            !< the results estimated
+      integer :: iq
+      write (u, '(a)') '# estimates of the finest level of each axis (src/accuracy/error_estimate.f90):'
+      write (u, '(a)') '# result axis levels observed_order asymptotic error(result''s unit) rule'
+      do iq = 1, nq
+         if (.not. active(iq)) cycle
+         call one('time', tx, iq)
+         call one('mesh', mx, iq)
+      end do
+   contains
+      !> The line of one result on one axis.
+      subroutine one(name, ax, iq)
+         character(len=*), intent(in) :: name      !< the axis
+         type(axis_t), intent(in) :: ax            !< the axis
+         integer, intent(in) :: iq                 !< the result
+         character(len=16) :: order
+         order = '-'
+         if (ax%finest(iq)%order >= 0.0_dp) write (order, '(f6.2)') ax%finest(iq)%order
+         write (u, '(a,1x,a,1x,i0,1x,a,1x,a,es12.4,1x,a)') '# ' // trim(result_keys(iq)), name, ax%levels, &
+            trim(adjustl(order)), trim(merge('yes', 'no ', ax%finest(iq)%asymptotic)), ax%finest(iq)%error, &
+            trim(ax%finest(iq)%how)
+      end subroutine one
+   end subroutine write_estimates
+
+   !> <prefix>_summary.dat (module header).
+   subroutine write_accuracy_summary(deck, la, runs, out, cmp, stat, errmsg)
+      type(deck_t), intent(in) :: deck             !< the accuracy run's deck
+      type(launcher_t), intent(in) :: la           !< the launcher (its directory, its spending)
+      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(accuracy_outcome_t), intent(in) :: out  !< the outcome
+      type(comparison_t), intent(in) :: cmp(:)     !< the models compared
+      integer, intent(out) :: stat                 !< 0 on success
+      character(len=*), intent(inout) :: errmsg    !< what failed
+      type(summary_t) :: s
+      type(summary_item_t), allocatable :: items(:)
+      type(run_t) :: r
+      integer :: i, iq
+
+      r = runs(out%chosen)
+      call read_summary(la%dir // trim(r%name) // '_summary.dat', s, stat, errmsg)
+      if (stat /= 0) return
+      allocate (items(0))
+      do i = 1, size(s%keys)
+         call summary_text(items, trim(s%keys(i)), trim(s%texts(i)))
+      end do
+      call summary_real(items, 'accuracy_target', 'accuracy_target', '-', out%target, 1.0_dp)
+      call summary_text(items, 'accuracy_status', trim(out%status))
+      call summary_text(items, 'accuracy_values', 'of the run chosen, not extrapolated')
+      call summary_text(items, 'chosen_run', la%dir // trim(r%name))
+      call summary_real(items, 'chosen_dt_us', 'chosen_dt', 's', r%dt, 1.0e6_dp)
+      call summary_integer(items, 'chosen_nx', r%nx)
+      call summary_integer(items, 'chosen_ny', r%ny)
+      call summary_real(items, 'chosen_grading', 'chosen_grading', '-', r%grading, 1.0_dp)
+      call summary_text(items, 'chosen_theory', trim(la%theory))
+      do iq = 1, nq
+         if (.not. out%estimated(iq)) cycle
+         call summary_real(items, trim(result_keys(iq)) // '_error', trim(result_keys(iq)) // '_error', &
+                           trim(result_units(iq)), out%jd%err(iq), 1.0_dp)
+         call summary_real(items, trim(result_keys(iq)) // '_error_dt', trim(result_keys(iq)) // '_error_dt', &
+                           trim(result_units(iq)), out%jd%err_time(iq), 1.0_dp)
+         call summary_real(items, trim(result_keys(iq)) // '_error_mesh', trim(result_keys(iq)) // '_error_mesh', &
+                           trim(result_units(iq)), out%jd%err_mesh(iq), 1.0_dp)
+         call summary_real(items, trim(result_keys(iq)) // '_relative_error', trim(result_keys(iq)) // &
+                           '_relative_error', '-', relative(out%jd%err(iq), out%jd%value(iq)), 1.0_dp)
+      end do
+      do i = 1, size(cmp)
+         call comparison_items(items, cmp(i), runs, out)
+      end do
+      call summary_integer(items, 'accuracy_runs', count(runs%state == state_done))
+      call summary_real(items, 'accuracy_cpu_s', 'accuracy_cpu', 's', la%spent, 1.0_dp)
+      call summary_real(items, 'accuracy_wall_s', 'accuracy_wall', 's', out%wall_s, 1.0_dp)
+      call write_summary_file(deck, items, stat, errmsg)
+   end subroutine write_accuracy_summary
+
+   !> The summary's items of one model compared: what, and the relative
+   !> change of each result (or why it was not compared).
+   subroutine comparison_items(items, c, runs, out)
+      type(summary_item_t), allocatable, intent(inout) :: items(:)   !< the summary
+      type(comparison_t), intent(in) :: c          !< the comparison
+      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(accuracy_outcome_t), intent(in) :: out  !< the outcome
+      integer :: iq
+      if (c%run == 0) then
+         call summary_text(items, trim(c%what) // '_compared', 'none: ' // trim(c%note))
+         return
+      end if
+      if (runs(c%run)%state /= state_done) then
+         call summary_text(items, trim(c%what) // '_compared', 'none: ' // not_done(runs(c%run)))
+         return
+      end if
+      call summary_text(items, trim(c%what) // '_compared', trim(c%compared))
+      do iq = 1, nq
+         if (.not. out%estimated(iq)) cycle
+         call summary_real(items, trim(result_keys(iq)) // '_change_' // trim(c%what), trim(result_keys(iq)) // &
+                           '_change_' // trim(c%what), '-', relative(runs(c%run)%q(iq) - out%jd%value(iq), &
+                           out%jd%value(iq)), 1.0_dp)
+      end do
+   end subroutine comparison_items
+
+   !> The accuracy run's words on standard output: the results with their
+   !> errors, the models compared, the spending.
+   subroutine report_terminal(unit, la, runs, out, cmp)
+      integer, intent(in) :: unit                  !< standard output
+      type(launcher_t), intent(in) :: la           !< the launcher
+      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(accuracy_outcome_t), intent(in) :: out  !< the outcome
+      type(comparison_t), intent(in) :: cmp(:)     !< the models compared
+      type(run_t) :: r
+      integer :: iq, i
+      character(len=msg_len) :: line
+      r = runs(out%chosen)
+      write (unit, '(a)') 'accuracy: ' // trim(out%status)
+      write (unit, '(a)') 'accuracy: results of run ' // trim(r%name) // ' (dt ' // real_short(r%dt*1.0e6_dp) // &
+         ' us, mesh ' // int_str(r%nx) // ' x ' // int_str(r%ny) // ', grading ' // real_short(r%grading) // &
+         ', ' // trim(la%theory) // '), not extrapolated; error = time part + mesh part + their interaction'
+      do iq = 1, nq
+         if (.not. out%estimated(iq)) cycle
+         write (line, '(a,es14.6,a,es10.3,a,f7.3,a,es10.3,a,es10.3,a)') result_keys(iq), out%jd%value(iq), ' +- ', &
+            out%jd%err(iq), ' (', 100.0_dp*relative(out%jd%err(iq), out%jd%value(iq)), ' %; dt ', &
+            out%jd%err_time(iq), ', mesh ', out%jd%err_mesh(iq), ')'
+         write (unit, '(a)') '  ' // trim(line)
+      end do
+      do i = 1, size(cmp)
+         call comparison_lines(unit, cmp(i), runs, out)
+      end do
+      write (unit, '(a)') 'accuracy: ' // int_str(count(runs%state == state_done)) // ' runs, cpu ' // &
+         real_short(la%spent) // ' s, wall ' // real_short(out%wall_s) // ' s on ' // int_str(la%cpus) // &
+         ' CPUs; every run: ' // la%dir // '; summary: ' // la%dir(:len(la%dir) - 5) // '_summary.dat'
+   end subroutine report_terminal
+
+   !> The terminal's lines of one model compared, with its verdict: the
+   !> scene requires the model chosen when a result that must meet the
+   !> target changes by more than the target.
+   subroutine comparison_lines(unit, c, runs, out)
+      integer, intent(in) :: unit                  !< standard output
+      type(comparison_t), intent(in) :: c          !< the comparison
+      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(accuracy_outcome_t), intent(in) :: out  !< the outcome
+      real(dp) :: change(nq)
+      character(len=msg_len) :: line
+      integer :: iq
+      if (c%run == 0) then
+         write (unit, '(a)') 'model: ' // trim(c%what) // ': not compared: ' // trim(c%note)
+         return
+      end if
+      if (runs(c%run)%state /= state_done) then
+         write (unit, '(a)') 'model: ' // trim(c%what) // ': not compared: ' // not_done(runs(c%run))
+         return
+      end if
+      change = 0.0_dp
+      line = ''
+      do iq = 1, nq
+         if (.not. out%estimated(iq)) cycle
+         change(iq) = relative(runs(c%run)%q(iq) - out%jd%value(iq), out%jd%value(iq))
+         write (line, '(a,1x,a,f8.3,a)') trim(line), trim(result_keys(iq)), 100.0_dp*change(iq), ' %'
+      end do
+      write (unit, '(a)') 'model: ' // trim(c%what) // ': ' // trim(c%compared) // ' changes' // trim(line)
+      if (maxval(abs(change), mask=out%targeted) > out%target) then
+         write (unit, '(a)') 'model: ' // trim(c%what) // ': more than the target ' // real_short(out%target) // &
+            ': the scene requires the model of the run chosen'
+      else
+         write (unit, '(a)') 'model: ' // trim(c%what) // ': within the target ' // real_short(out%target) // &
+            ': the other model would do as well'
+      end if
+   end subroutine comparison_lines
+
+   !> Why a run has no results: skipped for the cap, or failed.
+   function not_done(run) result(text)
+      type(run_t), intent(in) :: run               !< the run
+      character(len=:), allocatable :: text
+      if (run%state == state_skipped) then
+         text = 'the run ' // trim(run%name) // ' would pass &accuracy max_cpu_s'
+      else
+         text = 'the run ' // trim(run%name) // ' failed (' // trim(run%status) // ')'
+      end if
+   end function not_done
+
+   !> The state of a run as a word: done, failed, skipped or planned.
+   pure function state_word(state) result(word)
+      integer, intent(in) :: state                 !< the run's state
+      character(len=7) :: word
+      select case (state)
+      case (state_done);    word = 'done'
+      case (state_failed);  word = 'failed'
+      case (state_skipped); word = 'skipped'
+      case default;         word = 'planned'
+      end select
+   end function state_word
+
+   !> err/|value|, 0 when both are 0, huge when only value is.
+   pure real(dp) function relative(err, value)
+      real(dp), intent(in) :: err                  !< the error or change
+      real(dp), intent(in) :: value                !< the value
+      if (value /= 0.0_dp) then
+         relative = err/abs(value)
+      else if (err == 0.0_dp) then
+         relative = 0.0_dp
+      else
+         relative = huge(1.0_dp)
+      end if
+   end function relative
+
+end module accuracy_report

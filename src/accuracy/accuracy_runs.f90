@@ -1,0 +1,295 @@
+!> The runs of an accuracy run (src/accuracy/accuracy_driver.f90): each is
+!> the program itself on the same deck, started as a child process
+!> (src/accuracy/child_process.f90) with its own settings,
+!>
+!>    impact [the user's --set ...] --set accuracy.target=0
+!>           --set output.prefix='<prefix>_acc/<run>' --set output.overwrite=.true.
+!>           --set output.hdf5=.false. --set analysis.dt=... --set mesh.nx=...
+!>           --set mesh.ny=... --set mesh.grading=... --set analysis.theory=...
+!>           [the variant's] deck.nml
+!>
+!> its terminal output in <prefix>_acc/<run>.log, its results read back
+!> from <prefix>_acc/<run>_summary.dat (src/accuracy/summary_reader.f90).
+!>
+!> run_planned starts the planned runs, as many at a time as the process
+!> has CPUs, the cheapest first, and waits for them. The cost cap
+!> (&accuracy max_cpu_s): a run is started only when the cpu time spent,
+!> that of the runs still going and its own, each as the cost model
+!> predicts it, stay within the cap; else it is skipped and the cap is
+!> reached. The cost model: a run at time level k (dt0/2^k) on a mesh of
+!> n elements costs c 2^k (n/n0)^gamma times its variant's factor (the
+!> number of quarters its domain has, to the power gamma); gamma is fitted
+!> to the finest mesh done against level 0, c to the costliest run done.
+!> Until one run is done nothing is known, and the first run starts alone.
+module accuracy_runs
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use kinds, only: dp, msg_len
+   use number_text, only: int_str, real_str, real_short
+   use summary_reader, only: summary_t, read_summary, summary_value, summary_has, summary_index
+   use child_process, only: spawn_program, wait_child
+   implicit none
+   private
+   public :: nq, result_keys, result_units, run_t, launcher_t, run_planned, run_settings, quoted
+   public :: state_planned, state_running, state_done, state_failed, state_skipped, predicted_cost, relative_cost
+
+   !> The results an accuracy run estimates: their summary keys (the unit
+   !> in the key) and units; the last only with &strength.
+   integer, parameter :: nq = 6
+   character(len=*), parameter :: result_keys(nq) = [character(len=19) :: 'peak_force_N', 'max_deflection_mm', &
+      'contact_duration_us', 'time_of_peak_us', 'max_strain_y_back', 'max_failure_index']
+   character(len=*), parameter :: result_units(nq) = [character(len=2) :: 'N', 'mm', 'us', 'us', '-', '-']
+
+   !> States of a run.
+   integer, parameter :: state_planned = 0, state_running = 1, state_done = 2, state_failed = 3, state_skipped = 4
+   !> Settings of a variant, at most.
+   integer, parameter :: max_variant = 4
+   !> The cost model's exponent of the element count before two meshes are measured, and its bounds.
+   real(dp), parameter :: gamma_default = 1.8_dp, gamma_min = 1.0_dp, gamma_max = 3.0_dp
+
+   !> One run of the ladder, or a model variant at the chosen settings.
+   type :: run_t
+      character(len=48) :: name = ''              !< its name: <prefix>_acc/<name>_summary.dat
+      character(len=12) :: role = ''              !< 'time', 'mesh', 'combined', 'theory' or 'bend_twist'
+      integer :: k = 0                            !< time level: dt = dt0/2^k
+      integer :: j = 0                            !< mesh level
+      real(dp) :: dt = 0.0_dp                     !< time step (s)
+      integer :: nx = 0, ny = 0                   !< elements (&mesh nx, ny)
+      real(dp) :: grading = 1.0_dp                !< &mesh grading
+      character(len=64) :: variant(max_variant) = ''   !< the variant's settings, 'group.var=value'
+      real(dp) :: cost_factor = 1.0_dp            !< the variant's domain, in quarters
+      integer :: state = state_planned            !< state_planned, ...
+      integer :: pid = -1                         !< its process while it runs
+      integer :: exit_code = 0                    !< its exit status
+      real(dp) :: cpu_s = 0.0_dp                  !< its cpu time, from its summary (s)
+      real(dp) :: q(nq) = 0.0_dp                  !< its results, result_keys' units
+      logical :: has(nq) = .false.                !< which it has
+      character(len=256) :: status = ''            !< its summary's status
+      real(dp) :: h_impact = 0.0_dp               !< side of the element at the impact point, the larger (m)
+      real(dp) :: contact_radius = 0.0_dp         !< Hertz contact radius at its peak force (m)
+   end type run_t
+
+   !> What starting a run needs, and the spending so far.
+   type :: launcher_t
+      character(len=:), allocatable :: exe        !< the program
+      character(len=:), allocatable :: deck_path  !< the deck
+      character(len=:), allocatable :: dir        !< '<prefix>_acc/'
+      character(len=8192), allocatable :: user_settings(:)   !< the user's --set values, in order
+      character(len=32) :: theory = ''            !< the theory of every ladder run
+      logical :: every_step = .false.             !< history every step (&strength: the failure index)
+      integer :: cpus = 1                         !< runs at a time
+      integer :: n0 = 1                           !< elements of mesh level 0 (nx ny)
+      real(dp) :: impact_element(2) = 0.0_dp      !< sides of the element at the impact point, level 0 (m)
+      real(dp) :: cap = huge(1.0_dp)              !< &accuracy max_cpu_s (s)
+      real(dp) :: spent = 0.0_dp                  !< cpu time of the runs done (s)
+      real(dp) :: c_base = -1.0_dp                !< cost of a level-0 run (s), < 0: unknown
+      real(dp) :: gamma = gamma_default           !< the cost's exponent of the element count
+      logical :: cap_reached = .false.            !< a run was skipped for the cap
+      integer :: unit = 6                         !< where progress goes
+   end type launcher_t
+
+contains
+
+   !> Starts the planned runs, at most la%cpus at a time, the cheapest
+   !> first, within the cap (module header), and waits until every run
+   !> started has ended; reads each one's summary. stat /= 0 when a run
+   !> could not be started or read (a run that fails is state_failed).
+   subroutine run_planned(runs, la, stat, errmsg)
+      type(run_t), intent(inout) :: runs(:)        !< the runs
+      type(launcher_t), intent(inout) :: la        !< the launcher
+      integer, intent(out) :: stat                 !< 0 on success
+      character(len=*), intent(inout) :: errmsg    !< what failed
+      integer :: i, pid, code, running
+
+      stat = 0
+      running = 0
+      do
+         launch: do while (running < la%cpus .and. stat == 0)
+            i = next_run(runs, la, running)
+            if (i == 0) exit launch
+            if (la%c_base >= 0.0_dp .and. la%spent + sum(predicted_cost(runs, la, running=.true.)) &
+                + sum(predicted_cost(runs(i:i), la, running=.false.)) > la%cap) then
+               runs(i)%state = state_skipped
+               la%cap_reached = .true.
+               cycle launch
+            end if
+            call start_run(runs(i), la, stat, errmsg)
+            if (stat == 0) running = running + 1
+         end do launch
+         if (running == 0) exit
+         call wait_child(pid, code)
+         if (pid < 0) then
+            stat = 1
+            errmsg = 'waitpid: the runs started are gone'
+            exit
+         end if
+         i = findloc(runs%pid, pid, dim=1)
+         if (i == 0) cycle
+         running = running - 1
+         runs(i)%pid = -1
+         runs(i)%exit_code = code
+         call finish_run(runs(i), la)
+         call fit_costs(runs, la)
+      end do
+      if (stat == 0 .and. any(runs%state == state_planned)) then
+         where (runs%state == state_planned) runs%state = state_skipped
+         la%cap_reached = .true.
+      end if
+   end subroutine run_planned
+
+   !> The next run to start: the planned one predicted cheapest; none (0)
+   !> while nothing is known of the costs and a run is going.
+   integer function next_run(runs, la, running) result(i)
+      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(launcher_t), intent(in) :: la           !< the launcher
+      integer, intent(in) :: running               !< runs going
+      real(dp) :: cost(size(runs))
+      i = 0
+      if (.not. any(runs%state == state_planned)) return
+      if (la%c_base < 0.0_dp .and. running > 0) return
+      cost = predicted_cost(runs, la, running=.false.)
+      i = minloc(cost, mask=runs%state == state_planned, dim=1)
+   end function next_run
+
+   !> The predicted cost of each run (s): of those planned (running false)
+   !> or of those going (running true); 0 for the others.
+   function predicted_cost(runs, la, running) result(cost)
+      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
+      logical, intent(in) :: running               !< of the runs going, else of the planned
+      real(dp) :: cost(size(runs))
+      integer :: i, wanted
+      wanted = merge(state_running, state_planned, running)
+      cost = 0.0_dp
+      do i = 1, size(runs)
+         if (runs(i)%state /= wanted) cycle
+         cost(i) = max(la%c_base, 0.0_dp)*relative_cost(runs(i), la)
+      end do
+   end function predicted_cost
+
+   !> A run's cost relative to the level-0 run (module header).
+   pure real(dp) function relative_cost(run, la)
+      type(run_t), intent(in) :: run               !< the run
+      type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
+      relative_cost = 2.0_dp**run%k*(real(run%nx, dp)*real(run%ny, dp)/real(la%n0, dp)*run%cost_factor)**la%gamma
+   end function relative_cost
+
+   !> The cost model fitted to the runs done (module header).
+   subroutine fit_costs(runs, la)
+      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(launcher_t), intent(inout) :: la        !< the launcher
+      integer :: i, base, finest
+      real(dp) :: ratio
+      base = 0;  finest = 0
+      do i = 1, size(runs)
+         if (runs(i)%state /= state_done .or. runs(i)%role == 'theory' .or. runs(i)%role == 'bend_twist') cycle
+         if (runs(i)%k == 0 .and. runs(i)%j == 0) base = i
+         if (runs(i)%k == 0 .and. runs(i)%j > 0) then
+            if (finest == 0) then
+               finest = i
+            else if (runs(i)%j > runs(finest)%j) then
+               finest = i
+            end if
+         end if
+      end do
+      if (base > 0 .and. finest > 0) then
+         ratio = real(runs(finest)%nx, dp)*real(runs(finest)%ny, dp)/real(la%n0, dp)
+         if (ratio > 1.0_dp .and. runs(base)%cpu_s > 0.0_dp .and. runs(finest)%cpu_s > 0.0_dp) &
+            la%gamma = min(gamma_max, max(gamma_min, log(runs(finest)%cpu_s/runs(base)%cpu_s)/log(ratio)))
+      end if
+      ! c from the costliest run done: the best guide to the costly runs to come
+      i = maxloc(runs%cpu_s, mask=runs%state == state_done, dim=1)
+      if (i > 0) la%c_base = runs(i)%cpu_s/relative_cost(runs(i), la)
+   end subroutine fit_costs
+
+   !> The arguments of a run (module header), without the program.
+   function run_settings(run, la) result(args)
+      type(run_t), intent(in) :: run               !< the run
+      type(launcher_t), intent(in) :: la           !< the launcher
+      character(len=8192), allocatable :: args(:)
+      integer :: i
+      allocate (args(0))
+      do i = 1, size(la%user_settings)
+         call add(trim(la%user_settings(i)))
+      end do
+      call add('accuracy.target=0')
+      call add('output.prefix=' // quoted(la%dir // trim(run%name)))
+      call add('output.overwrite=.true.')
+      call add('output.hdf5=.false.')
+      if (la%every_step) call add('output.every=1')
+      call add('analysis.dt=' // real_str(run%dt))
+      call add('mesh.nx=' // int_str(run%nx))
+      call add('mesh.ny=' // int_str(run%ny))
+      call add('mesh.grading=' // real_str(run%grading))
+      call add('analysis.theory=' // quoted(trim(la%theory)))
+      do i = 1, max_variant
+         if (len_trim(run%variant(i)) > 0) call add(trim(run%variant(i)))
+      end do
+      args = [args, [character(len=8192) :: la%deck_path]]
+   contains
+      !> Appends '--set' and the setting.
+      subroutine add(setting)
+         character(len=*), intent(in) :: setting   !< 'group.var=value'
+         args = [args, [character(len=8192) :: '--set', setting]]
+      end subroutine add
+   end function run_settings
+
+   !> text as a deck's quoted text: 'text', a quote in it doubled.
+   pure function quoted(text) result(q)
+      character(len=*), intent(in) :: text         !< the text
+      character(len=:), allocatable :: q
+      integer :: i
+      q = "'"
+      do i = 1, len(text)
+         q = q // text(i:i)
+         if (text(i:i) == "'") q = q // "'"
+      end do
+      q = q // "'"
+   end function quoted
+
+   !> Starts one run.
+   subroutine start_run(run, la, stat, errmsg)
+      type(run_t), intent(inout) :: run            !< the run
+      type(launcher_t), intent(in) :: la           !< the launcher
+      integer, intent(out) :: stat                 !< 0 on success
+      character(len=*), intent(inout) :: errmsg    !< what failed
+      call spawn_program(la%exe, run_settings(run, la), la%dir // trim(run%name) // '.log', run%pid, stat, errmsg)
+      if (stat == 0) then
+         run%state = state_running
+      else
+         run%state = state_failed
+      end if
+   end subroutine start_run
+
+   !> A run that ended: its summary read, its state, one line of progress.
+   subroutine finish_run(run, la)
+      type(run_t), intent(inout) :: run            !< the run
+      type(launcher_t), intent(inout) :: la        !< the launcher (its spending)
+      type(summary_t) :: s
+      character(len=msg_len) :: errmsg
+      character(len=:), allocatable :: line
+      integer :: stat, iq, i
+      real(dp) :: nan
+
+      nan = ieee_value(nan, ieee_quiet_nan)
+      call read_summary(la%dir // trim(run%name) // '_summary.dat', s, stat, errmsg)
+      run%state = merge(state_done, state_failed, stat == 0 .and. run%exit_code == 0)
+      run%status = 'no summary (' // la%dir // trim(run%name) // '.log)'
+      if (stat /= 0) return
+      i = summary_index(s, 'status')
+      if (i > 0) run%status = s%texts(i)
+      run%cpu_s = max(0.0_dp, summary_value(s, 'cpu_s', 0.0_dp))
+      la%spent = la%spent + run%cpu_s
+      line = 'accuracy: run ' // trim(run%name) // ': dt ' // real_short(run%dt*1.0e6_dp) // ' us, mesh ' // &
+         int_str(run%nx) // ' x ' // int_str(run%ny)
+      do iq = 1, nq
+         run%has(iq) = summary_has(s, result_keys(iq))
+         run%q(iq) = summary_value(s, result_keys(iq), nan)
+         if (run%has(iq)) line = line // ', ' // trim(result_keys(iq)) // ' ' // real_short(run%q(iq))
+      end do
+      line = line // ', cpu ' // real_short(run%cpu_s) // ' s'
+      if (run%state /= state_done) line = line // ': ' // trim(run%status)
+      write (la%unit, '(a)') line
+      flush (la%unit)
+   end subroutine finish_run
+
+end module accuracy_runs

@@ -1,0 +1,199 @@
+!> The discretisation error of a result from a ladder of runs that differ
+!> in one parameter only: the time step (dt, dt/2, dt/4, ...) or the
+!> element size (the mesh refined by a factor each level).
+!>
+!> With the last three levels h1 > h2 > h3 and their values q1, q2, q3,
+!> d1 = q1 - q2 and d2 = q2 - q3, a result in the asymptotic range
+!> behaves as q = Q + C h^p, and the observed order p solves
+!>    (h1^p - h2^p) / (h2^p - h3^p) = d1 / d2
+!> (p = log(d1/d2)/log(r) for a constant ratio r; solved here by
+!> bisection, the ratios of a mesh ladder being rounded counts).
+!>
+!>  - In range (d1, d2 of one sign, order_low <= p <= order_high): the
+!>    error of q3 is Richardson's, |d2| h3^p/(h2^p - h3^p), with p no
+!>    larger than the method's order (a higher observed order is not
+!>    trusted), times richardson_safety (Roache's factor of safety of the
+!>    grid convergence index for three grids, 1.25).
+!>  - Monotone but slower than order_low: the larger of Richardson's error
+!>    with the observed order (a result that converges slowly is not near
+!>    its limit) and the safe bound below; Richardson's error, which grows
+!>    without bound as p -> 0, taken at most slow_cap times the larger
+!>    difference: an order near 0 over three levels is mostly noise (an
+!>    iteration's tolerance, a time read off the steps) or the log tail
+!>    below, which has its own bound.
+!>  - Otherwise (the differences change sign: a rippled, oscillating or
+!>    noisy result; or the order is above order_high, as when the error
+!>    crosses zero between levels): the safe bound, safe_factor times the
+!>    larger of |d1| and |d2|, never an extrapolation.
+!>  - Two levels: two_level_factor times |d| (Roache's factor for two
+!>    grids); one level: no estimate (huge).
+!> A resolution floor (the time step, for a time read off the steps) is
+!> added to the estimate of the finest level.
+!>
+!> A result that depends on a length the mesh does not resolve yet (the
+!> Hertz contact disc of radius a under an element of size s > a: the
+!> plate sees a point force, under which a Mindlin plate's deflection,
+!> and the force and strains with it, change like ln(1/h) as the mesh is
+!> refined, without an algebraic order) keeps changing by about its last
+!> difference per level until s = a: log_tail, the larger of the last two
+!> differences times the levels still to go, ln(s/a)/ln(h_{n-1}/h_n), and
+!> one more (the change does not stop at once where s = a), is then the
+!> least error the mesh axis may claim. A coarser level i of the
+!> same ladder has the error |q_i - q_n| plus the finest level's
+!> (level_error): the triangle inequality, no model.
+module error_estimate
+   use kinds, only: dp
+   implicit none
+   private
+   public :: estimate_t, ladder_estimate, observed_order, level_error, log_tail
+   public :: richardson_safety, safe_factor, two_level_factor, slow_cap
+
+   !> Factors of safety (module header) (-).
+   real(dp), parameter :: richardson_safety = 1.25_dp, safe_factor = 1.5_dp, two_level_factor = 3.0_dp, &
+      slow_cap = 5.0_dp
+   !> Orders the bisection of observed_order looks within (-).
+   real(dp), parameter :: order_min = 0.05_dp, order_max = 12.0_dp
+
+   !> The estimate of one result on one ladder.
+   type :: estimate_t
+      real(dp) :: error = huge(1.0_dp)     !< bound on |q(finest) - q(h -> 0)|, the result's unit
+      real(dp) :: order = -1.0_dp          !< observed order, -1 when there is none
+      logical :: asymptotic = .false.      !< the order is in the asymptotic range
+      character(len=40) :: how = ''        !< which rule gave the error
+      real(dp) :: floor = 0.0_dp           !< of which the resolution floor
+   end type estimate_t
+
+contains
+
+   !> The error of the finest level of a ladder (module header).
+   pure function ladder_estimate(h, q, order_theory, order_low, order_high, floor) result(e)
+      real(dp), intent(in) :: h(:)             !< step or element size of each level, decreasing
+      real(dp), intent(in) :: q(:)             !< the result at each level
+      real(dp), intent(in) :: order_theory     !< the method's order: no larger order is used
+      real(dp), intent(in) :: order_low        !< the lowest order of the asymptotic range
+      real(dp), intent(in) :: order_high       !< the highest
+      real(dp), intent(in) :: floor            !< resolution added to the error (0: none)
+      type(estimate_t) :: e
+      real(dp) :: d1, d2, p, safe
+      integer :: n
+
+      n = size(q)
+      e%floor = floor
+      if (n < 2) then
+         e%how = 'one level: no estimate'
+         return
+      end if
+      d2 = q(n - 1) - q(n)
+      if (n == 2) then
+         e%error = two_level_factor*abs(d2) + floor
+         e%how = 'two levels: 3 x the difference'
+         return
+      end if
+      d1 = q(n - 2) - q(n - 1)
+      safe = safe_factor*max(abs(d1), abs(d2))
+      if (d1 == 0.0_dp .and. d2 == 0.0_dp) then
+         e%error = floor
+         e%how = 'no change between the levels'
+      else if (d1*d2 <= 0.0_dp) then
+         e%error = safe + floor
+         e%how = 'not monotone: 1.5 x largest difference'
+      else
+         p = observed_order(h(n - 2:n), d1/d2)
+         e%order = p
+         e%asymptotic = p >= order_low .and. p <= order_high
+         if (e%asymptotic) then
+            e%error = richardson_safety*richardson(min(p, order_theory)) + floor
+            e%how = 'Richardson, order in range'
+         else if (p < order_low) then
+            e%error = max(min(richardson_safety*richardson(p), slow_cap*max(abs(d1), abs(d2))), safe) + floor
+            e%how = 'slow: Richardson at observed order'
+         else
+            e%error = safe + floor
+            e%how = 'order too high: 1.5 x largest diff.'
+         end if
+      end if
+
+   contains
+
+      !> Richardson's error of the finest level at order po.
+      pure real(dp) function richardson(po)
+         real(dp), intent(in) :: po       !< the order
+         real(dp) :: ratio
+         ratio = (h(n)/h(n - 1))**po
+         if (ratio >= 1.0_dp) then
+            richardson = huge(1.0_dp)
+         else
+            richardson = abs(d2)*ratio/(1.0_dp - ratio)
+         end if
+      end function richardson
+
+   end function ladder_estimate
+
+   !> The order p of (h1^p - h2^p)/(h2^p - h3^p) = ratio (h1 > h2 > h3,
+   !> ratio > 0), by bisection within [order_min, order_max]; a bound of
+   !> that interval when the ratio is outside the range it spans.
+   pure real(dp) function observed_order(h, ratio) result(p)
+      real(dp), intent(in) :: h(3)           !< the three sizes, decreasing
+      real(dp), intent(in) :: ratio          !< d1/d2, positive
+      real(dp) :: lo, hi
+      integer :: it
+      lo = order_min
+      hi = order_max
+      if (ratio <= f(lo)) then
+         p = lo
+         return
+      end if
+      if (ratio >= f(hi)) then
+         p = hi
+         return
+      end if
+      do it = 1, 100
+         p = 0.5_dp*(lo + hi)
+         if (f(p) < ratio) then
+            lo = p
+         else
+            hi = p
+         end if
+      end do
+      p = 0.5_dp*(lo + hi)
+
+   contains
+
+      !> (h1^x - h2^x)/(h2^x - h3^x), scaled by h3 (it grows with x).
+      pure real(dp) function f(x)
+         real(dp), intent(in) :: x          !< the order
+         real(dp) :: a, b
+         a = (h(1)/h(3))**x
+         b = (h(2)/h(3))**x
+         f = (a - b)/(b - 1.0_dp)
+      end function f
+
+   end function observed_order
+
+   !> The change still to come on a mesh that does not resolve a length
+   !> (module header): 0 when it does (size_ratio <= 1) or with fewer than
+   !> two levels.
+   pure real(dp) function log_tail(h, q, size_ratio)
+      real(dp), intent(in) :: h(:)             !< element size of each level, decreasing
+      real(dp), intent(in) :: q(:)             !< the result at each level
+      real(dp), intent(in) :: size_ratio       !< the finest level's element over the length (s/a)
+      integer :: n
+      real(dp) :: d
+      n = size(q)
+      log_tail = 0.0_dp
+      if (n < 2 .or. size_ratio <= 1.0_dp) return
+      d = abs(q(n - 1) - q(n))
+      if (n >= 3) d = max(d, abs(q(n - 2) - q(n - 1)))
+      log_tail = d*(log(size_ratio)/log(h(n - 1)/h(n)) + 1.0_dp)
+   end function log_tail
+
+   !> The error of level i of a ladder whose finest level n has the error
+   !> e_finest: |q_i - q_n| + e_finest.
+   pure real(dp) function level_error(q, i, e_finest)
+      real(dp), intent(in) :: q(:)           !< the result at each level
+      integer, intent(in) :: i               !< the level
+      real(dp), intent(in) :: e_finest       !< the finest level's error
+      level_error = abs(q(i) - q(size(q))) + e_finest
+   end function level_error
+
+end module error_estimate
