@@ -67,7 +67,6 @@ override LAPACK := $(CHOLMOD_LIBS) $(LAPACK)
 #             solution, the contact iteration, the one-call 'fast' step
 #   results   result files, HDF5 and XDMF, the run's recorder and reports
 #   analyses  the static, modal and pressure analyses of the same model
-#   accuracy  --accuracy: a ladder of runs of the program itself and their error bars
 #   accuracy  the accuracy run: a ladder of runs of the program itself (dt
 #             halved, the mesh refined), their errors, the run chosen
 # Every file but the main program is one module named after the file; the

@@ -51,7 +51,7 @@ module xdmf_plies
    use number_text, only: int_str
    use mesh, only: mesh_t
    use shape_functions, only: nen, shape9
-   use hdf5_io, only: h5io_group, h5io_write
+   use hdf5_io, only: h5io_group, h5io_write, h5io_exists, h5io_delete
    implicit none
    private
    public :: xdmf_plies_t, plies_write, plies_collection
@@ -111,7 +111,10 @@ contains
       npoint = size(fi_max, 2)
       ncell = 2*nply*npoint
       call laminate_grid(msh, z, xyz, cells)
-      call h5io_group(fid, group, stat, errmsg)
+      stat = 0
+      ! a restarted run (src/results/restart_point.f90) finds the group of the run it continues
+      if (h5io_exists(fid, group)) call h5io_delete(fid, group, stat, errmsg)
+      if (stat == 0) call h5io_group(fid, group, stat, errmsg)
       if (stat == 0) call h5io_write(fid, group // '/points', xyz, stat, errmsg)
       if (stat == 0) call h5io_write(fid, group // '/cells', cells, stat, errmsg)
       deallocate (xyz, cells)
