@@ -7,6 +7,8 @@
 #   make install    under PREFIX (mk/install.mk)
 #   make version    the release number (the file VERSION)
 #   make setup      only the Debian packages (tools/setup-debian; make setup-run: the run's only)
+#   make docs       rerun the studies and rewrite the published documents of docs/
+#                   (DOCS_DIR below; docs/INSTALL.md, "Regenerating the documents")
 #   make clean
 #
 # Compiler settings can be overridden: make FC=gfortran FFLAGS='-O3 ...'
@@ -81,6 +83,17 @@ C_OBJS  := $(patsubst %.c,$(BUILD)/%.o,$(notdir $(C_SOURCES)))
 LIB     := $(BUILD)/libimpact.a
 vpath %.f90 $(addprefix src/,$(SRC_FOLDERS))
 vpath %.c $(addprefix src/,$(SRC_FOLDERS))
+
+# Where the studies (make figures, validate, validate-model, stress, bench)
+# write their documents and figures: a mirror of docs/ under out/docs by
+# default (out/docs/PAPER.md, out/docs/figures/, out/docs/VALIDATION.md, ...),
+# each document filled from a copy of the committed one, so that these
+# targets leave the checkout as it was (git status clean, the build's version
+# without -dirty). make docs sets DOCS_DIR=docs: the published documents
+# themselves (and bench/results.dat, mk/bench.mk).
+DOCS_DIR ?= out/docs
+# Whether DOCS_DIR is docs/ (however written: docs, docs/, ./docs).
+docs_published = $(filter $(CURDIR)/docs,$(abspath $(DOCS_DIR)))
 
 # The validation's oracles (exact and independent solutions: Navier,
 # Hertz, the rigid target, ...) are not part of the solver: they live in
@@ -170,3 +183,37 @@ include tests/tests.mk
 .PHONY: deck-table
 deck-table: impact
 	@python3 tools/readme-deck-table docs/DECK.md ./impact
+
+# ---- the published documents (docs/INSTALL.md, "Regenerating the documents")
+#
+#   make docs         rerun every study with DOCS_DIR=docs: docs/PAPER.md and
+#                     docs/figures/ (figures), docs/VALIDATION.md and
+#                     docs/validation/ (validate, validate-model),
+#                     docs/STABILITY.md (stress), docs/PERFORMANCE.md,
+#                     docs/performance/ and bench/results.dat (the full bench
+#                     grid), the table of docs/DECK.md (deck-table). About 40
+#                     minutes on 2 cores; one study at a time (the bench times
+#                     its runs); a study that fails a check still writes its
+#                     document, and make docs goes on, then exits 1. The
+#                     bench refuses BENCH_ARGS=--quick here (bench/run_bench.py).
+#                     Review the diff, then commit it.
+#   make docs-quick   the same studies with the small bench grid
+#                     (BENCH_ARGS=--quick), into DOCS_DIR (out/docs): a
+#                     preview; it refuses DOCS_DIR=docs.
+DOCS_STUDIES := deck-table validate validate-model stress figures bench
+
+.PHONY: docs docs-quick
+docs:
+	@status=0; for t in $(DOCS_STUDIES); do \
+	    $(MAKE) --no-print-directory $$t DOCS_DIR=docs || { status=1; failed="$$failed $$t"; }; \
+	done; \
+	echo "make docs: wrote docs/ and bench/results.dat$${failed:+ (failed:$$failed)}; review git diff, then commit"; \
+	exit $$status
+
+docs-quick:
+	$(if $(docs_published),$(error make docs-quick: DOCS_DIR=$(DOCS_DIR): the quick studies never write docs/ (make docs does)))
+	@status=0; for t in $(filter-out deck-table,$(DOCS_STUDIES)); do \
+	    $(MAKE) --no-print-directory $$t DOCS_DIR='$(DOCS_DIR)' BENCH_ARGS=--quick || { status=1; failed="$$failed $$t"; }; \
+	done; \
+	echo "make docs-quick: wrote $(DOCS_DIR)/ and out/bench/results.dat$${failed:+ (failed:$$failed)}"; \
+	exit $$status

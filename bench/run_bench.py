@@ -4,18 +4,25 @@
 Runs a grid of scenes of the paper's plate (Choi, Hong & Lee 1991: 150 x 100 x
 2.7 mm [0/45/0/-45/0]2s, 243 g at 3 m/s, quarter model) over meshes, time
 steps, tolerances (cr1, cr2), iteration schemes ('paper', 'fast') and storage
-('band', 'skyline'), and writes
+('band', 'skyline'), and writes (DOCS: --docs-dir, RESULTS: --results)
 
-  bench/results.dat              one row per run and sweep (columns: header)
-  docs/performance/pareto.png    error against CPU time, the paper's scene,
+  RESULTS                        one row per run and sweep (columns: header)
+  DOCS/performance/pareto.png    error against CPU time, the paper's scene,
                                  one curve per knob (postproc/bench_pareto.gp)
-  docs/performance/scenes.png    the same for the four scenes, largest error
-  docs/performance/cost.png      CPU time per step against freedoms, log-log,
+                                 (and knobs.png: the time step and tolerances)
+  DOCS/performance/scenes.png    the same for the four scenes, largest error
+  DOCS/performance/cost.png      CPU time per step against freedoms, log-log,
                                  with the fitted slope (postproc/bench_cost.gp)
-  docs/PERFORMANCE.md            its block bench (between the bench:begin and
-                                 bench:end comments, impact_files.fill_file):
+  DOCS/PERFORMANCE.md            docs/PERFORMANCE.md with its block bench
+                                 (between the bench:begin and bench:end
+                                 comments, impact_files.fill_file) filled:
                                  measured figures, scheme agreement,
                                  recommended settings per accuracy
+
+DOCS is out/docs and RESULTS out/bench/results.dat by default (make bench,
+everyday: the checkout is left as it was); make docs gives docs and
+bench/results.dat, the published ones (docs/PERFORMANCE.md filled in
+place). The quick grid never writes those: --quick with either is refused.
 
 Scenes: CN clamped nonlinear (the paper's scene), CL clamped linear, SN simply
 supported nonlinear, SL simply supported linear. The error measures need the
@@ -66,8 +73,11 @@ cannot converge at its tolerances) is recorded with status 'failed'.
 Scheme agreement: every pair of runs that differ only in the scheme is
 compared against the stated tolerance 3 max(cr1, sqrt(cr2)) (pair_tolerance).
 
-Usage: python3 bench/run_bench.py [--repeat N] [--quick] [--reuse]
+Usage: python3 bench/run_bench.py [--repeat N] [--quick] [--reuse] [--docs-dir DIR] [--results FILE]
   --quick   a small grid (minutes): checks the machinery, not for the record
+            (refused with --docs-dir docs or --results bench/results.dat)
+  --docs-dir DIR   where PERFORMANCE.md and performance/ go (default out/docs)
+  --results FILE   the table of every run (default out/bench/results.dat)
   --reuse   keep the runs of an earlier bench in build/bench/runs whose deck
             is unchanged (development); the default reruns everything
 Environment: BENCH_OPENBLAS=<dir holding libblas.so.3 and liblapack.so.3 of
@@ -90,6 +100,7 @@ import json
 import math
 import os
 import re
+import shutil
 import statistics
 import subprocess
 import sys
@@ -101,9 +112,15 @@ import impact_files as imf  # noqa: E402  (decks, summaries, histories, runs, th
 EXE = os.path.join(ROOT, 'impact')
 KERNELS = os.path.join(ROOT, 'build', 'bench', 'bench_kernels')
 RUN_DIR = os.path.join(ROOT, 'build', 'bench', 'runs')
-RESULTS = os.path.join(ROOT, 'bench', 'results.dat')
-FIG_DIR = os.path.join(ROOT, 'docs', 'performance')
-DOC = os.path.join(ROOT, 'docs', 'PERFORMANCE.md')
+# The published results and document (make docs), the template of every
+# PERFORMANCE.md the bench writes.
+PUBLISHED_RESULTS = os.path.join(ROOT, 'bench', 'results.dat')
+PUBLISHED_DOCS = os.path.join(ROOT, 'docs')
+TEMPLATE = os.path.join(PUBLISHED_DOCS, 'PERFORMANCE.md')
+# What this bench writes (main(): --results, --docs-dir).
+RESULTS = os.path.join(ROOT, 'out', 'bench', 'results.dat')
+FIG_DIR = os.path.join(ROOT, 'out', 'docs', 'performance')
+DOC = os.path.join(ROOT, 'out', 'docs', 'PERFORMANCE.md')
 DECK_HEADER = ['make bench (bench/run_bench.py): the paper plate, quarter model; the element and the contact load',
                'stated; every other value the default']
 
@@ -630,8 +647,10 @@ def fmt(v):
 
 
 def write_results(rows, header_lines):
+    os.makedirs(os.path.dirname(RESULTS), exist_ok=True)
     with open(RESULTS, 'w') as f:
-        f.write('# bench/results.dat: written by make bench (bench/run_bench.py); one row per run and sweep\n')
+        f.write('# {}: written by make bench (bench/run_bench.py); one row per run and sweep\n'.format(
+            os.path.relpath(RESULTS, ROOT)))
         for line in header_lines:
             f.write('# ' + line + '\n')
         f.write('# columns:\n')
@@ -643,11 +662,23 @@ def write_results(rows, header_lines):
 
 
 def main():
+    global RESULTS, FIG_DIR, DOC
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     ap.add_argument('--repeat', type=int, default=int(os.environ.get('BENCH_REPEAT', '3')))
     ap.add_argument('--quick', action='store_true')
     ap.add_argument('--reuse', action='store_true')
+    ap.add_argument('--docs-dir', default=os.path.join(ROOT, 'out', 'docs'))
+    ap.add_argument('--results', default=RESULTS)
     args = ap.parse_args()
+    RESULTS = os.path.abspath(args.results)
+    FIG_DIR = os.path.join(os.path.abspath(args.docs_dir), 'performance')
+    DOC = os.path.join(os.path.abspath(args.docs_dir), 'PERFORMANCE.md')
+    if args.quick:
+        for given, published in ((args.docs_dir, PUBLISHED_DOCS), (args.results, PUBLISHED_RESULTS)):
+            if os.path.realpath(given) == os.path.realpath(published):
+                sys.exit('bench: --quick: the quick grid never writes the published {} (make docs runs the '
+                         'full grid); give another place, or leave the default (out/)'.format(
+                             os.path.relpath(published, ROOT)))
     t_wall0 = time.time()
     os.makedirs(RUN_DIR, exist_ok=True)
     os.makedirs(FIG_DIR, exist_ok=True)
@@ -782,8 +813,8 @@ def main():
     write_doc(rows, refs, hows, pairs, tol, cost, kern, by_sweep, ob_recs, wall, args, floors, alt_name)
     for f in floors:
         print('bench: ' + floor_line(f))
-    print('bench: {} rows in {}; figures in {}; {} updated; {:.0f} s'.format(
-        len(rows), os.path.relpath(RESULTS, ROOT), os.path.relpath(FIG_DIR, ROOT), os.path.relpath(DOC, ROOT), wall))
+    print('bench: wrote {} ({} rows), {} and {}/; {:.0f} s'.format(
+        os.path.relpath(RESULTS, ROOT), len(rows), os.path.relpath(DOC, ROOT), os.path.relpath(FIG_DIR, ROOT), wall))
     bad = [p for p in pairs if max(p[2]) > p[3]]
     if bad:
         print('bench: WARNING: {} scheme pairs differ by more than their tolerance'.format(len(bad)))
@@ -1061,6 +1092,8 @@ def write_doc(rows, refs, hows, pairs, tol, cost, kern, by_sweep, ob_recs, wall,
             L.append('| {} | {:.1%} | {}x{} | {:g} | {} | {:g} | {:g} | {} | {:.3f} | {:.2%} / {:.2%} / {:.2%} | {} |'.format(
                 scene, target, b[5], b[6], b[9], b[2], b[11], b[12], b[3], b[14], b[25], b[26], b[27], note))
     L.append('')
+    if not (os.path.exists(DOC) and os.path.samefile(DOC, TEMPLATE)):
+        shutil.copyfile(TEMPLATE, DOC)
     if 'bench' not in imf.fill_file(DOC, {'bench': '\n'.join(L)}):
         sys.exit('bench: {}: no bench:begin / bench:end block to fill'.format(DOC))
 

@@ -1,9 +1,11 @@
 # make bench: the speed-accuracy trade, measured (issue 5; docs/PERFORMANCE.md).
 #
 #   make bench                   the full grid (about 15 minutes on 2 cores);
-#                                writes bench/results.dat, docs/performance/*.png
-#                                and the generated block of docs/PERFORMANCE.md
+#                                writes $(BENCH_RESULTS), $(DOCS_DIR)/performance/*.png
+#                                and $(DOCS_DIR)/PERFORMANCE.md (docs/PERFORMANCE.md
+#                                with its generated block filled)
 #   make bench BENCH_ARGS=--quick   a small grid, to check the machinery
+#                                (refused where the published results go)
 #   make bench-kernels           build only the kernel timer
 #
 #   make bench-accuracy          the cost of impact --accuracy 0.05, 0.01, 0.002 on the
@@ -11,14 +13,20 @@
 #                                and the bench-accuracy block of docs/PERFORMANCE.md;
 #                                BENCH_ACCURACY_ARGS='--cap 300' sets the cap of each run
 #
+# DOCS_DIR (the top Makefile) is out/docs by default, and BENCH_RESULTS
+# out/bench/results.dat: the checkout is left as it was. make docs sets
+# DOCS_DIR=docs, and then BENCH_RESULTS is bench/results.dat: the published
+# full-grid results, which the quick grid never overwrites
+# (bench/run_bench.py refuses --quick there).
 # Runs one job at a time (timings); BENCH_REPEAT=N sets the repeats (3).
 # BENCH_OPENBLAS=<dir> adds runs with OpenBLAS (LD_LIBRARY_PATH).
 BENCH_BUILD := $(BUILD)/bench
 BENCH_ARGS ?=
+BENCH_RESULTS ?= $(if $(docs_published),bench/results.dat,out/bench/results.dat)
 
 .PHONY: bench bench-kernels bench-accuracy
 bench: impact $(BENCH_BUILD)/bench_kernels
-	$(PYTHON) bench/run_bench.py $(BENCH_ARGS)
+	$(PYTHON) bench/run_bench.py $(BENCH_ARGS) --docs-dir '$(DOCS_DIR)' --results '$(BENCH_RESULTS)'
 
 BENCH_ACCURACY_ARGS ?=
 bench-accuracy: impact

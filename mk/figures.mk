@@ -1,13 +1,17 @@
-# The paper's figures (issue 4): docs/figures/fig05.png ... fig13.png,
+# The paper's figures (issue 4): $(DOCS_DIR)/figures/fig05.png ... fig13.png,
 # fig06_converged.png, fig09_10_converged.png (and .pdf) and the numbers of
-# docs/PAPER.md.
+# $(DOCS_DIR)/PAPER.md. DOCS_DIR (the top Makefile) is out/docs by default:
+# the checkout is left as it was; make docs sets DOCS_DIR=docs, the
+# published docs/PAPER.md and docs/figures/.
 #
 #   make figures       build ./impact; run every deck of input/paper/ (and
 #                      tolerance/, converged/), and every deck of
 #                      input/paper/update/ twice (below),
 #                      FIG_JOBS at a time (results and logs in out/paper/);
-#                      draw postproc/figNN.gp into docs/figures/; write
-#                      the numbers of docs/PAPER.md, in place (tools/paper-numbers).
+#                      draw postproc/figNN.gp into $(DOCS_DIR)/figures/;
+#                      write $(DOCS_DIR)/PAPER.md: docs/PAPER.md with its
+#                      numbers filled in (tools/paper-numbers --template;
+#                      in place when DOCS_DIR is docs).
 #                      3 to 5 minutes on 2 cores (about 4.5 minutes of CPU,
 #                      half of it the 24 x 36 meshes of input/paper/ and
 #                      converged/); a rerun redoes only the runs whose deck
@@ -25,7 +29,7 @@
 # nonlinear, the paper's model and the converged one, with &strength: the
 # ply stresses and Hashin's index of docs/PAPER.md, "Ply stresses"; their
 # damage maps (postproc/damage_map.gp, over tools/damage-map and h5py) are
-# docs/figures/damage_fig09_simply_supported.png and damage_fig10_clamped.png.
+# $(DOCS_DIR)/figures/damage_fig09_simply_supported.png and damage_fig10_clamped.png.
 #
 # input/paper/converged/ holds the scenes of Fig. 6 (mesh study), 9 and 10
 # with the converged model (MITC9 shear, Hertz contact load; docs/PAPER.md,
@@ -57,19 +61,22 @@ UPDATE_RUNS    := $(foreach u,fixed bracket,\
 
 .PHONY: figures figures-runs figures-clean
 
+FIG_DIR        = $(DOCS_DIR)/figures
+
 figures: setup impact
 	@$(MAKE) --no-print-directory -j$(FIG_JOBS) figures-runs
-	@mkdir -p docs/figures
+	@mkdir -p '$(FIG_DIR)'
 	@for n in $(FIG_NUMBERS); do \
 	    for fmt in png pdf; do \
-	        gnuplot -e "fmt='$$fmt'; run='$(FIG_OUT)'; figdir='docs/figures'" postproc/fig$$n.gp || exit 1; \
-	    done; echo "figure written: docs/figures/fig$$n.png, .pdf"; \
+	        gnuplot -e "fmt='$$fmt'; run='$(FIG_OUT)'; figdir='$(FIG_DIR)'" postproc/fig$$n.gp || exit 1; \
+	    done; echo "figure written: $(FIG_DIR)/fig$$n.png, .pdf"; \
 	done
 	@for s in fig09_simply_supported fig10_clamped; do \
-	    gnuplot -e "prefix='$(FIG_OUT)/strength/converged_$${s}_nonlinear'; out='docs/figures/damage_$${s}.png'" \
+	    gnuplot -e "prefix='$(FIG_OUT)/strength/converged_$${s}_nonlinear'; out='$(FIG_DIR)/damage_$${s}.png'" \
 	        postproc/damage_map.gp || exit 1; \
 	done
-	python3 tools/paper-numbers --runs $(FIG_OUT) docs/PAPER.md
+	python3 tools/paper-numbers --runs $(FIG_OUT) --template docs/PAPER.md '$(DOCS_DIR)/PAPER.md'
+	@echo 'make figures: wrote $(DOCS_DIR)/PAPER.md and $(FIG_DIR)/ (runs in $(FIG_OUT)/)'
 
 figures-runs: $(FIG_RUNS) $(UPDATE_RUNS)
 

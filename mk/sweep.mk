@@ -18,3 +18,4 @@ sweep-example: impact
 	tools/sweep run $(SWEEP_DIR) $(if $(filter-out 0,$(SWEEP_JOBS)),--jobs $(SWEEP_JOBS)) \
 	    || echo 'make sweep-example: some scenes failed: see $(SWEEP_DIR)/failed.dat'
 	tools/sweep plot $(SWEEP_DIR) --x initial_energy_J --y peak_force_N --by boundary.edges
+	@echo 'make sweep-example: wrote $(SWEEP_DIR)/ (table.dat and the plot)'

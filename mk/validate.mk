@@ -2,11 +2,14 @@
 #
 #   make validate    build ./impact and build/validate, run every check of
 #                    docs/VALIDATION.md (validation/validate.f90, decks in
-#                    validation/decks, results in build/validation), write
-#                    docs/VALIDATION.md from validation/VALIDATION.md.in (its
-#                    blocks filled with the tables build/validation/NAME.md by
-#                    tools/impact_files.py fill) and draw docs/validation/*.png
-#                    (validation/plots.gp).
+#                    validation/decks, results and tables in build/validation),
+#                    write $(DOCS_DIR)/VALIDATION.md: build/validate copies
+#                    the template validation/VALIDATION.md.in there, then
+#                    tools/impact_files.py fill fills its blocks with the
+#                    tables build/validation/NAME.md; and draw
+#                    $(DOCS_DIR)/validation/*.png (validation/plots.gp).
+#                    DOCS_DIR (the top Makefile) is out/docs by default, docs
+#                    under make docs (the published docs/VALIDATION.md).
 #                    Fails (exit 1) when a check is outside its tolerance;
 #                    the report and the plots are written either way.
 #                    About 3 minutes of one core, and check 12 (below).
@@ -33,18 +36,19 @@ $(ACCURACY_VALIDATION): validation/accuracy_validation.f90 $(LIB)
 
 # check 12 first: the report that validate assembles includes its tables
 validate: setup impact $(VALIDATE_EXE) $(ACCURACY_VALIDATION) $(NAVIER_IMPACT)
-	@mkdir -p build/validation docs/validation
+	@mkdir -p build/validation '$(DOCS_DIR)/validation'
 	@status=0; $(ACCURACY_VALIDATION) || status=$$?; \
-	$(VALIDATE_EXE) || status=$$?; \
-	$(or $(PYTHON),python3) tools/impact_files.py fill docs/VALIDATION.md build/validation || status=1; \
-	gnuplot validation/plots.gp || status=1; \
-	gnuplot validation/accuracy_plots.gp || status=1; \
+	$(VALIDATE_EXE) '$(DOCS_DIR)/VALIDATION.md' || status=$$?; \
+	$(or $(PYTHON),python3) tools/impact_files.py fill '$(DOCS_DIR)/VALIDATION.md' build/validation || status=1; \
+	gnuplot -e "figdir='$(DOCS_DIR)/validation'" validation/plots.gp || status=1; \
+	gnuplot -e "figdir='$(DOCS_DIR)/validation'" validation/accuracy_plots.gp || status=1; \
+	echo 'make validate: wrote $(DOCS_DIR)/VALIDATION.md and $(DOCS_DIR)/validation/*.png (tables in build/validation/)'; \
 	exit $$status
 
 validate-accuracy: impact $(ACCURACY_VALIDATION) $(NAVIER_IMPACT)
-	@mkdir -p build/validation docs/validation
+	@mkdir -p build/validation '$(DOCS_DIR)/validation'
 	$(ACCURACY_VALIDATION)
-	gnuplot validation/accuracy_plots.gp
+	gnuplot -e "figdir='$(DOCS_DIR)/validation'" validation/accuracy_plots.gp
 
 # The Navier modal impact solution of the simply supported plate, the
 # reference for ./impact's dynamic point response (validation/navier_impact.f90,

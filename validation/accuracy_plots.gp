@@ -7,7 +7,8 @@
 # below the diagonal would be a bound that fails.
 file = 'build/validation/accuracy_bounds.dat'
 set terminal pngcairo size 760,640 font ",10"
-set output 'docs/validation/accuracy_bounds.png'
+if (!exists('figdir')) figdir = 'out/docs/validation'
+set output figdir.'/accuracy_bounds.png'
 set logscale xy
 set grid
 set xrange [1e-7:10]

@@ -1,12 +1,14 @@
 # plots.gp: the figures of docs/VALIDATION.md, from the data that
 # build/validate writes to build/validation/*.dat (make validate runs both).
 #
-#   gnuplot validation/plots.gp          (from the repository root)
+#   gnuplot [-e "figdir='DIR'"] validation/plots.gp     (from the repository root)
 #
-# writes docs/validation/*.png. Each data file names its columns in its
-# '#' header.
+# writes DIR/*.png (default out/docs/validation; make validate gives
+# $(DOCS_DIR)/validation, docs/validation under make docs). Each data file
+# names its columns in its '#' header.
 d = 'build/validation/'
-o = 'docs/validation/'
+if (!exists("figdir")) figdir = 'out/docs/validation'
+o = figdir.'/'
 set terminal pngcairo size 900,600 font ",11"
 set grid
 set key top right

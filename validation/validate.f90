@@ -1,6 +1,8 @@
 !> validate: runs every check of docs/VALIDATION.md and writes its tables.
 !>
 !> Usage (from the repository root, after `make impact`):  make validate
+!>   build/validate [REPORT]     (REPORT: default out/docs/VALIDATION.md;
+!>                                make validate gives $(DOCS_DIR)/VALIDATION.md)
 !>
 !> The checks (issue 3):
 !>   1 Navier (FSDT) deflections and frequencies, cross-ply and orthotropic,
@@ -27,10 +29,12 @@
 !> on decks of validation/decks and read its result files.
 !>
 !> Output: build/validation/<table>.md (markdown tables), build/validation/*.dat
-!> (data of the plots, column text with '#' headers), and docs/VALIDATION.md,
-!> assembled from validation/VALIDATION.md.in: a line '@include NAME@' is
-!> replaced by build/validation/NAME.md. The plots are drawn afterwards by
-!> validation/plots.gp (make validate). Exit status 1 when a check fails.
+!> (data of the plots, column text with '#' headers), and REPORT, a copy of
+!> the template validation/VALIDATION.md.in, whose blocks (between the
+!> comments NAME:begin and NAME:end) make validate then fills with
+!> build/validation/NAME.md (tools/impact_files.py fill). The plots are drawn
+!> afterwards by validation/plots.gp (make validate). Exit status 1 when a
+!> check fails.
 program validate
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
    use kinds, only: dp, pi, msg_len
@@ -60,7 +64,10 @@ program validate
    character(len=*), parameter :: out_dir = 'build/validation'
    character(len=*), parameter :: deck_dir = 'validation/decks'
    character(len=*), parameter :: template = 'validation/VALIDATION.md.in'
-   character(len=*), parameter :: report = 'docs/VALIDATION.md'
+   !> The report: the command's argument, else this (make validate gives
+   !> $(DOCS_DIR)/VALIDATION.md).
+   character(len=*), parameter :: default_report = 'out/docs/VALIDATION.md'
+   character(len=:), allocatable :: report
    !> Half-wave numbers kept in the Navier series of a uniform load (odd m, n <= this).
    integer, parameter :: mmax_series = 401
    !> Table cell width.
@@ -73,7 +80,8 @@ program validate
    call cpu_time(t0)
    cpu_last = t0
    call system_clock(wall0, clock_rate)
-   call execute_command_line('mkdir -p ' // out_dir // ' docs/validation')
+   report = report_path()
+   call execute_command_line('mkdir -p ' // out_dir // ' ''' // report_dir(report) // '''')
    open (newunit=su, file=out_dir // '/summary.md', status='replace', action='write')
    write (su, '(a)') '| check | quantity | worst error | tolerance | result |'
    write (su, '(a)') '|---|---|---|---|---|'
@@ -102,7 +110,7 @@ program validate
    call lap('check 11')
 
    close (su)
-   call assemble_report()
+   call copy_template()
    call cpu_time(t1)
    write (output_unit, '(a,i0,a,i0,a,f8.1,a)') 'validate: ', npass, ' passed, ', nfail, ' failed (cpu ', &
       t1 - t0, ' s); report: ' // report
@@ -1609,38 +1617,50 @@ contains
       flush (output_unit)
    end subroutine record
 
-   !> docs/VALIDATION.md from the template: '@include NAME@' lines replaced by
-   !> build/validation/NAME.md.
-   subroutine assemble_report()
-      character(len=4096) :: line, inc
-      integer :: ui, uo, uinc, ios, ios2, b
+   !> The report's path: the first argument of the command, else default_report.
+   function report_path() result(path)
+      character(len=:), allocatable :: path
+      integer :: length, st
+      if (command_argument_count() < 1) then
+         path = default_report
+         return
+      end if
+      call get_command_argument(1, length=length, status=st)
+      if (st /= 0 .or. length == 0) call fail('usage: validate [REPORT]')
+      allocate (character(len=length) :: path)
+      call get_command_argument(1, path)
+   end function report_path
+
+   !> The directory of a path ('.' when it has none).
+   function report_dir(path) result(dir)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: dir
+      integer :: k
+      k = index(path, '/', back=.true.)
+      if (k == 0) then
+         dir = '.'
+      else
+         dir = path(:max(k - 1, 1))
+      end if
+   end function report_dir
+
+   !> The report: the template copied line by line; make validate fills its
+   !> blocks with the tables afterwards (tools/impact_files.py fill).
+   subroutine copy_template()
+      character(len=4096) :: line
+      integer :: ui, uo, ios
       open (newunit=ui, file=template, status='old', action='read', iostat=ios)
       if (ios /= 0) call fail('cannot read ' // template)
-      open (newunit=uo, file=report, status='replace', action='write')
-      lines: do
+      open (newunit=uo, file=report, status='replace', action='write', iostat=ios)
+      if (ios /= 0) call fail('cannot write ' // report)
+      do
          read (ui, '(a)', iostat=ios) line
-         if (ios /= 0) exit lines
-         if (index(line, '@include ') == 1) then
-            b = index(line(10:), '@')
-            open (newunit=uinc, file=out_dir // '/' // line(10:8 + b) // '.md', status='old', action='read', &
-               iostat=ios2)
-            if (ios2 /= 0) then
-               write (uo, '(a)') '(table ' // line(10:8 + b) // ' missing: the check did not run)'
-               cycle lines
-            end if
-            copy: do
-               read (uinc, '(a)', iostat=ios2) inc
-               if (ios2 /= 0) exit copy
-               write (uo, '(a)') trim(inc)
-            end do copy
-            close (uinc)
-         else
-            write (uo, '(a)') trim(line)
-         end if
-      end do lines
+         if (ios /= 0) exit
+         write (uo, '(a)') trim(line)
+      end do
       close (ui)
       close (uo)
-   end subroutine assemble_report
+   end subroutine copy_template
 
    ! ============================================================ text
 

@@ -16,13 +16,17 @@ Each scene changes one thing of the paper's scene (the clamped 150 x 100 x
 except the few marked 'beyond', which combine extremes on purpose.
 
 Writes build/stress/results.dat (one row per scene, a '#' header naming
-each column and its unit) and fills the blocks of docs/STABILITY.md in place
-(<!-- name:begin --> ... <!-- name:end -->: the table, the envelope, the worst
-energy error, the scenes that needed a fall-back; impact_files.fill_file).
+each column and its unit) and DOCS/STABILITY.md: a copy of docs/STABILITY.md
+with its blocks filled (<!-- name:begin --> ... <!-- name:end -->: the table,
+the envelope, the worst energy error, the scenes that needed a fall-back;
+impact_files.fill_file). DOCS is --docs-dir: out/docs by default (make stress
+gives $(DOCS_DIR)); with docs, docs/STABILITY.md is filled in place (make
+docs: the published document). With --only, the report holds only those
+scenes: written to out/docs and the like, never to docs/.
 The scenes run through impact_files.run_many. Exit status 0 when every scene
 passes, 1 otherwise.
 
-Usage: tools/stress/stress.py [--jobs N] [--only NAME...] [--impact PATH]
+Usage: tools/stress/stress.py [--jobs N] [--only NAME...] [--impact PATH] [--docs-dir DIR]
 Python 3 standard library only.
 """
 
@@ -30,12 +34,14 @@ import argparse
 import math
 import os
 import re
+import shutil
 import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 WORK = os.path.join(ROOT, 'build', 'stress')
-REPORT = os.path.join(ROOT, 'docs', 'STABILITY.md')
+# The committed document, the template of every report.
+TEMPLATE = os.path.join(ROOT, 'docs', 'STABILITY.md')
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
 import impact_files as imf  # noqa: E402
 
@@ -300,15 +306,19 @@ def md_table(results):
     return '\n'.join(lines)
 
 
-def write_report(results, elapsed, jobs):
-    """Fills the blocks of docs/STABILITY.md with the numbers of this run."""
+def write_report(results, elapsed, jobs, report):
+    """Writes report: docs/STABILITY.md (the template) with its blocks filled
+    with the numbers of this run (in place when report is the template)."""
     finite = [r for r in results if math.isfinite(r['lost'])]
     worst_lost = max(finite, key=lambda r: r['lost']) if finite else None
     worst_created = max(finite, key=lambda r: r['created']) if finite else None
     fallbacks = [r for r in results if (r['nonlinear_fallback_steps'] or 0) > 0 or (r['contact_fallback_steps'] or 0) > 0]
     stopped = [r for r in results if r['outcome'].startswith('stopped')]
     failed = [r for r in results if not r['pass']]
-    imf.fill_file(REPORT, {
+    os.makedirs(os.path.dirname(report), exist_ok=True)
+    if not (os.path.exists(report) and os.path.samefile(report, TEMPLATE)):
+        shutil.copyfile(TEMPLATE, report)
+    imf.fill_file(report, {
         'table': md_table(results),
         'nscenes': str(len(results)),
         'npass': str(len(results) - len(failed)),
@@ -337,11 +347,20 @@ def report_line(r):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     ap.add_argument('--jobs', type=int, default=2, help='scenes run at once (default 2, at most 2)')
-    ap.add_argument('--only', nargs='*', help='run only these scenes (no report written)')
+    ap.add_argument('--only', nargs='*', help='run only these scenes (their report never goes to docs/)')
     ap.add_argument('--impact', default=os.path.join(ROOT, 'impact'), help='the program (default ./impact)')
+    ap.add_argument('--docs-dir', default=os.path.join(ROOT, 'out', 'docs'),
+                    help='the report is DIR/STABILITY.md (default out/docs; docs: the published one)')
     args = ap.parse_args(argv)
     jobs = max(1, min(args.jobs, 2))
     scenes = [s for s in SCENES if not args.only or s['name'] in args.only]
+    report = os.path.join(os.path.abspath(args.docs_dir), 'STABILITY.md')
+    if args.only and os.path.realpath(args.docs_dir) == os.path.realpath(os.path.dirname(TEMPLATE)):
+        sys.exit('stress: --only: a report of some scenes is not the published one: not into %s'
+                 % os.path.relpath(TEMPLATE, ROOT))
+    unknown = sorted(set(args.only or ()) - {s['name'] for s in SCENES})
+    if unknown:
+        sys.exit('stress: no scene %s' % ', '.join(unknown))
     if not os.access(args.impact, os.X_OK):
         sys.exit('stress: %s is not there: make impact' % args.impact)
     os.makedirs(WORK, exist_ok=True)
@@ -362,9 +381,8 @@ def main(argv=None):
     npass = sum(r['pass'] for r in ordered)
     print('stress: %d scenes, %d passed, %d failed, %.0f s; results in %s'
           % (len(ordered), npass, len(ordered) - npass, elapsed, os.path.join(WORK, 'results.dat')))
-    if not args.only:
-        write_report(ordered, elapsed, jobs)
-        print('stress: report %s' % REPORT)
+    write_report(ordered, elapsed, jobs, report)
+    print('stress: wrote %s (results in %s)' % (os.path.relpath(report), os.path.relpath(os.path.join(WORK, 'results.dat'))))
     return 0 if npass == len(ordered) else 1
 
 

@@ -2,8 +2,10 @@
 """Validation of the model choices of issue 8 (make validate-model).
 
 Runs ./impact on decks written to build/validation/model_choice/, and writes
-docs/validation/model_choice.md with the data and the figure of
-docs/validation/model_choice/ (grading.dat, grading.png by grading.gp).
+DOCS/validation/model_choice.md with the data and the figure of
+DOCS/validation/model_choice/ (grading.dat, grading.png by grading.gp);
+DOCS is --docs-dir: out/docs by default (make validate-model gives
+$(DOCS_DIR), docs under make docs: the published document).
 
 Sections: 1 Whitney's shear correction factors against the paper's Table 1;
 2 the domain 'auto' picks for a set of scenes; 3 the symmetry check (a
@@ -20,7 +22,7 @@ symmetric cases equal to 1e-6 of the peak force and deflection.
 Every deck of the report (plan()) is written first and run through
 impact_files.run_many, --jobs at a time (default: the CPUs this process may
 use); then the report is written from their outputs.
-Usage: python3 validation/model_choice/run.py [--jobs N]   (from the repository root)
+Usage: python3 validation/model_choice/run.py [--jobs N] [--docs-dir DIR]   (from the repository root)
 """
 import argparse
 import os
@@ -31,7 +33,8 @@ import sys
 ROOT = os.getcwd()
 IMPACT = os.path.join(ROOT, 'impact')
 WORK = os.path.join(ROOT, 'build', 'validation', 'model_choice')
-DOCS = os.path.join(ROOT, 'docs', 'validation')
+# DOCS/validation/model_choice.md and FIGS (main(): --docs-dir)
+DOCS = os.path.join(ROOT, 'out', 'docs', 'validation')
 FIGS = os.path.join(DOCS, 'model_choice')
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), 'tools'))
@@ -174,7 +177,13 @@ def clamped(extra_mesh, extra=None, laminate="angles = %s" % PAPER, theory='nonl
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     ap.add_argument('--jobs', type=int, default=0, help='runs at a time (default: the CPUs this process may use)')
+    ap.add_argument('--docs-dir', default=os.path.join('out', 'docs'),
+                    help='where the documents go: DIR/validation/model_choice.md and DIR/validation/model_choice/ '
+                         '(default out/docs; docs: the published ones)')
     args = ap.parse_args()
+    global DOCS, FIGS
+    DOCS = os.path.join(ROOT, args.docs_dir, 'validation')
+    FIGS = os.path.join(DOCS, 'model_choice')
     os.makedirs(WORK, exist_ok=True)
     os.makedirs(FIGS, exist_ok=True)
     R = run_all(plan(), args.jobs or None)
@@ -402,7 +411,9 @@ def main():
     w('')
     with open(os.path.join(DOCS, 'model_choice.md'), 'w') as f:
         f.write('\n'.join(md))
-    print('written: docs/validation/model_choice.md, docs/validation/model_choice/grading.png')
+    print('validate-model: wrote %s and %s (decks and runs in %s)'
+          % (os.path.relpath(os.path.join(DOCS, 'model_choice.md')),
+             os.path.relpath(os.path.join(FIGS, 'grading.png')), os.path.relpath(WORK)))
     if failures:
         print('validate-model: %d check(s) failed' % len(failures), file=sys.stderr)
         sys.exit(1)
