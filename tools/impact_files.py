@@ -509,3 +509,27 @@ def main(argv):
 
 if __name__ == '__main__':
     sys.exit(main(sys.argv[1:]))
+
+
+def h5_problem(path):
+    """What is wrong with the HDF5 file at path, '' when nothing is seen: not
+    an HDF5 file, or shorter than the end of file its superblock records (a
+    file cut by a full disk or a copy; versions 2 and 3 of the superblock,
+    which impact writes, record it). Reads 48 bytes; no HDF5 library needed.
+    Damage inside a dataset is the checksums' to find (h5py, h5export)."""
+    try:
+        with open(path, 'rb') as f:
+            head = f.read(48)
+        size = os.path.getsize(path)
+    except OSError as e:
+        return f'cannot read it ({e.strerror})'
+    if head[:8] != b'\x89HDF\r\n\x1a\n':
+        return 'not an HDF5 file'
+    if len(head) > 12 and head[8] in (2, 3):
+        width = head[9]
+        start = 12 + 2 * width
+        if width in (4, 8) and len(head) >= start + width:
+            end = int.from_bytes(head[start:start + width], 'little')
+            if size < end:
+                return f'truncated: {size} bytes of the {end} its superblock records'
+    return ''
