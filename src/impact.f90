@@ -29,7 +29,7 @@
 program impact
    use, intrinsic :: iso_fortran_env, only: input_unit, output_unit, error_unit
    use kinds, only: dp, msg_len
-   use deck_schema, only: deck_t
+   use deck_schema, only: deck_t, accuracy_wanted
    use deck_echo, only: write_schema, write_deck_table
    use command_line, only: options_t, parse_command_line, read_input_deck
    use plate_model, only: model_t, build_model, release_assembled, mass_times
@@ -208,7 +208,7 @@ program impact
 contains
 
    !> The command line, the deck and its settings (src/deck/command_line.f90);
-   !> an accuracy run (&accuracy target > 0) hands over to its driver and
+   !> an accuracy run (&accuracy target given) hands over to its driver and
    !> ends there; an impact run claims its result files before any work.
    subroutine read_input()
       type(options_t) :: opts
@@ -229,7 +229,7 @@ contains
       if (stat /= 0) call bad_usage('--trace ' // opts%trace // ': give time steps, e.g. --trace 120,121')
       call read_input_deck(opts, input_unit, deck, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
-      if (deck%accuracy_target > 0 .and. .not. check_only) then     ! a ladder of runs (src/accuracy/)
+      if (accuracy_wanted(deck) .and. .not. check_only) then     ! a ladder of runs (src/accuracy/)
          call run_accuracy(opts, deck, output_unit, accuracy_exit, stat, errmsg)
          if (stat /= 0) call fail(errmsg)
          call exit_program(accuracy_exit)

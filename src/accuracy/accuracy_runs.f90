@@ -2,7 +2,7 @@
 !> the program itself on the same deck, started as a child process
 !> (src/accuracy/child_process.f90) with its own settings,
 !>
-!>    impact [the user's --set ...] --set accuracy.target=0
+!>    impact --single [the user's --set ...]
 !>           --set output.prefix='<prefix>_acc/<run>' --set output.overwrite=.true.
 !>           --set output.hdf5=.false. --set analysis.dt=... --set mesh.nx=...
 !>           --set mesh.ny=... --set mesh.grading=... --set analysis.theory=...
@@ -207,11 +207,10 @@ contains
       type(launcher_t), intent(in) :: la           !< the launcher
       character(len=8192), allocatable :: args(:)
       integer :: i
-      allocate (args(0))
+      args = [character(len=8192) :: '--single']       ! one run: the deck's &accuracy left aside
       do i = 1, size(la%user_settings)
          call add(trim(la%user_settings(i)))
       end do
-      call add('accuracy.target=0')
       call add('output.prefix=' // quoted(la%dir // trim(run%name)))
       call add('output.overwrite=.true.')
       call add('output.hdf5=.false.')

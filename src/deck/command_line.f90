@@ -10,6 +10,8 @@
 !>     --trace STEP[,STEP]   the teaching trace of those steps (src/results/step_trace.f90)
 !>     --accuracy TOL        every result to a relative error TOL: a ladder of runs
 !>                           (as &accuracy target = TOL; src/accuracy/accuracy_driver.f90)
+!>     --single              one run of the deck as it stands, its &accuracy target
+!>                           left aside (how an accuracy run starts the runs of its ladder)
 !>     --schema, --deck-table, --version, --help
 !>
 !> Options may stand before or after the deck (impact deck.nml --check is
@@ -17,6 +19,7 @@
 !> missing value is an error (the caller prints the usage line).
 module command_line
    use input_deck, only: deck_t, read_deck, read_deck_file, set_variable
+   use deck_schema, only: not_given_real
    use number_text, only: int_str
    implicit none
    private
@@ -32,6 +35,7 @@ module command_line
       logical :: check = .false.                   !< --check
       logical :: overwrite = .false.               !< --overwrite
       logical :: restart = .false.                 !< --restart
+      logical :: single = .false.                  !< --single: &accuracy target left aside
    end type options_t
 
 contains
@@ -62,6 +66,8 @@ contains
             opts%overwrite = .true.
          case ('--restart')
             opts%restart = .true.
+         case ('--single')
+            opts%single = .true.
          case ('--set', '--trace', '--accuracy')
             if (i == n) then
                errmsg = arg // ' needs a value'
@@ -96,8 +102,8 @@ contains
    end subroutine parse_command_line
 
    !> The deck the options name (a file, or standard input), the --set
-   !> values over it, --accuracy (as &accuracy target) and --overwrite;
-   !> every value checked.
+   !> values over it, --accuracy (as &accuracy target), --single (the
+   !> target not given) and --overwrite; every value checked.
    subroutine read_input_deck(opts, unit, deck, stat, errmsg)
       type(options_t), intent(in) :: opts           !< the options
       integer, intent(in) :: unit                   !< standard input's unit
@@ -121,6 +127,14 @@ contains
             errmsg = '--accuracy ' // opts%accuracy // ': ' // trim(errmsg)
             return
          end if
+      end if
+      if (opts%single) then
+         if (len(opts%accuracy) > 0) then
+            errmsg = '--single and --accuracy: one run, or a ladder of runs, not both'
+            stat = 1
+            return
+         end if
+         deck%accuracy_target = not_given_real()
       end if
       if (opts%overwrite) deck%overwrite = .true.
    end subroutine read_input_deck

@@ -5,7 +5,7 @@
 !> by tools/impact_files.py).
 module deck_echo
    use number_text, only: real_str, int_str, list_str
-   use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, strength_given, &
+   use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, strength_given, accuracy_wanted, &
       words_quoted, kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names
    implicit none
    private
@@ -25,7 +25,7 @@ contains
       type(deck_t), intent(in) :: deck              !< the deck
       select case (trim(group))
       case ('strength'); group_applies = strength_given(deck)
-      case ('accuracy'); group_applies = deck%accuracy_target > 0
+      case ('accuracy'); group_applies = accuracy_wanted(deck)
       case default;      group_applies = group_applies_kind(group, deck%analysis_kind)
       end select
    end function group_applies

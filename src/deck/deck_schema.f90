@@ -52,7 +52,7 @@ module deck_schema
    implicit none
    private
    public :: deck_var_t, deck_t, value_t, deck_vars, deck_groups, deck_bind, find_var, var_key, strength_given
-   public :: is_given, not_given_real, not_given_integer
+   public :: is_given, not_given_real, not_given_integer, accuracy_wanted
    public :: kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names
    public :: max_word_len, max_path_len, max_list_len, words_of, words_quoted
 
@@ -197,9 +197,9 @@ module deck_schema
          // 'into the whole plate; its fields then also stored in <prefix>.h5) or ''none'' (no XDMF file)'), &
       deck_var_t('output', 'fields_every', kind_integer, '-', '40', '[1, inf)', &
          'field snapshots in <prefix>.h5 every N-th step'), &
-      deck_var_t('accuracy', 'target', kind_real, '-', '0', '[0, 0.5]', 'relative error every result must ' &
+      deck_var_t('accuracy', 'target', kind_real, '-', '', '(0, 0.5]', 'relative error every result must ' &
          // 'reach: the run refines dt and the mesh on a ladder of runs until it estimates so (impact ' &
-         // '--accuracy TOL; src/accuracy/); 0: one plain run, no estimate'), &
+         // '--accuracy TOL; src/accuracy/); not given: one plain run, no estimate'), &
       deck_var_t('accuracy', 'max_cpu_s', kind_real, 's', '3600', '(0, inf)', &
          'cpu time all the runs of an accuracy run may take together; reached: the run says so'), &
       deck_var_t('accuracy', 'mesh_factor', kind_real, '-', '1.5', '[1.2, 2]', &
@@ -254,7 +254,8 @@ module deck_schema
       logical :: overwrite = .false., hdf5 = .false.
       character(len=:), allocatable :: xdmf
       ! &accuracy
-      real(dp) :: accuracy_target = 0, accuracy_max_cpu_s = 0, accuracy_mesh_factor = 0
+      real(dp) :: accuracy_target = 0              !< NaN: not given (one plain run; accuracy_wanted)
+      real(dp) :: accuracy_max_cpu_s = 0, accuracy_mesh_factor = 0
       character(len=:), allocatable :: accuracy_results
       !> which variables the deck (or --set) gave, by entry of deck_vars
       logical :: given(size(deck_vars)) = .false.
@@ -297,6 +298,13 @@ contains
          .and. is_given(deck, 'strength', 'yt') .and. is_given(deck, 'strength', 'yc') &
          .and. is_given(deck, 'strength', 's12') .and. is_given(deck, 'strength', 's23')
    end function strength_given
+
+   !> True when the deck asks for an accuracy run (&accuracy target given,
+   !> or impact --accuracy TOL): a ladder of runs (src/accuracy/).
+   pure logical function accuracy_wanted(deck)
+      type(deck_t), intent(in) :: deck   !< the deck
+      accuracy_wanted = is_given(deck, 'accuracy', 'target')
+   end function accuracy_wanted
 
    !> True when the variable group.name has a value: always for one with a
    !> default; for an optional one (default '') when the deck, --set or the

@@ -58,6 +58,7 @@ contains
       write (u, '(a)') '                       checked like the deck: --set analysis.dt=1e-6 --set mesh.nx=18'
       write (u, '(a)') '  --trace STEP[,STEP]  print every box of the flowchart (Fig. 3) for those time steps'
       write (u, '(a)') '  --accuracy TOL       every result with its error bar, refined to relative error TOL (&accuracy)'
+      write (u, '(a)') '  --single             one run of the deck, its &accuracy target left aside'
       write (u, '(a)') '  --schema             the deck''s variables as tab-separated lines (for tools)'
       write (u, '(a)') '  --deck-table         the deck''s variables as the Markdown table of docs/DECK.md'
       write (u, '(a)') '  --version            the version this program was built from'
