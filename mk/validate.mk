@@ -24,6 +24,7 @@
 #                    minutes of cpu.
 
 VALIDATE_EXE := $(BUILD)/validate
+NAVIER_IMPACT := $(BUILD)/navier_impact
 ACCURACY_VALIDATION := $(BUILD)/accuracy_validation
 
 .PHONY: validate validate-accuracy
@@ -58,7 +59,7 @@ validate-accuracy: impact $(ACCURACY_VALIDATION) $(NAVIER_IMPACT)
 #   build/navier_impact deck.nml [--load hertz|point] [--mmax N] [--max-mmax N] [--tol X] [--out prefix]
 #
 # The module is one of the oracles (Makefile, ORACLE_OBJS), linked with the tests too.
-NAVIER_IMPACT := $(BUILD)/navier_impact
+# (NAVIER_IMPACT is set at the top: the prerequisites above read it as they are parsed.)
 
 .PHONY: navier-impact
 navier-impact: $(NAVIER_IMPACT)
