@@ -190,7 +190,7 @@ contains
          write (gt, '(es24.16)') g
          j%name = trim(scene%name) // '_' // tag
          j%exe = exe
-         j%args = [character(len=4096) :: '--set', 'accuracy.target=0', '--set', 'output.prefix=''' // out_dir // &
+         j%args = [character(len=4096) :: '--single', '--set', 'output.prefix=''' // out_dir // &
             trim(j%name) // '''', '--set', 'output.overwrite=.true.', '--set', 'analysis.dt=' // adjustl(t), &
             '--set', 'mesh.nx=' // int_str(nx_ref), '--set', 'mesh.ny=' // int_str(ny_ref), '--set', &
             'mesh.grading=' // adjustl(gt), path]
