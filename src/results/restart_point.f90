@@ -66,7 +66,7 @@ module restart_point
    public :: restart_file, restart_save, restart_check, restart_resume, restart_discard
 
    !> The layout of the file; a restart point of another is refused.
-   integer, parameter :: layout = 1
+   integer, parameter :: layout = 2
    !> The deck's variables a restart may change.
    character(len=*), parameter :: free_vars(2) = [character(len=24) :: 'analysis.t_end', 'output.overwrite']
    !> open(2)'s O_RDONLY.

@@ -15,6 +15,18 @@
 !>   record_close  at the end, or when a run fails: the summary, in
 !>                 <prefix>_summary.dat and /summary, with its status
 !>
+!> The summary's peak force and its time, largest deflection and largest
+!> strain are refined between the steps: the vertex of the parabola through
+!> the largest sample and its two neighbours (row 0 counts as a sample), or
+!> the sample itself at the ends of the record or where the three are not
+!> concave (src/results/step_peak.f90); the sampled peak force and its time
+!> (the step of /peak in <prefix>.h5) are kept as *_sampled keys. The first
+!> contact lasts from the first touch (t = 0, the indentation 0 there) to
+!> where the indentation less the permanent indentation, alpha - alpha_0,
+!> crosses 0, linear between the last step with force and the first without
+!> (the force itself is 0 at that step and its law F ~ (alpha - alpha_0)^q
+!> leaves it with slope 0, so a line through the forces would give the step).
+!>
 !> Energies (whole plate, J): the impactor's kinetic energy; the plate's
 !> kinetic and strain energy; the work of the contact force on the plate,
 !> the trapezoidal rule of the load vectors at both ends of a step,
@@ -53,6 +65,8 @@ module run_recorder
       take_reals, put_ints, take_ints, put_impactor, take_impactor, put_pattern, take_pattern
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
    use progress_line, only: progress_t, progress_start, progress_step, progress_end
+   use step_peak, only: peak_track_t, peak_sample, peak_between, zero_crossing, peak_state, peak_restore, &
+      peak_state_size
    implicit none
    private
    public :: record_t, record_open, record_step, record_close, record_save_state, record_load_state
@@ -103,9 +117,13 @@ module run_recorder
       integer :: unconverged_steps = 0, first_unconverged = 0, nonlinear_fallback_steps = 0
       integer :: contact_fallback_steps = 0, warnings = 0, mixed_seen = 0, solves_before = 0
       logical :: in_contact = .false.
-      ! forces (N), times (s), deflections (m), strain (-), energies (J), w/h (-)
-      real(dp) :: peak_force = 0, time_of_peak = 0, first_contact_start = -1, first_contact_end = -1
-      real(dp) :: max_deflection = 0, max_strain_y = 0, max_energy_error = 0, energy_created = 0, energy_lost = 0
+      ! the samples of the largest contact force (N), deflection under the impactor (m) and back-face
+      ! strain (-), refined between the steps by src/results/step_peak.f90
+      type(peak_track_t) :: force_peak, deflection_peak, strain_peak
+      ! the first contact's start and end, interpolated (s; -1: not yet), and the step's indentation (m)
+      real(dp) :: first_contact_start = -1, first_contact_end = -1, alpha_prev = 0
+      ! energies (J), w/h (-)
+      real(dp) :: max_energy_error = 0, energy_created = 0, energy_lost = 0
       real(dp) :: max_w_over_h = 0
       real(dp) :: w_bend_max = 0, diverged_at = -1
       ! compliances under the impactor over a step (m/N; c_plate -1: not measured), and the largest
@@ -202,6 +220,10 @@ contains
       row = 0.0_dp
       row(col_v_impactor) = imp%v
       row(col_ke_impactor) = rec%e0
+      ! -- row 0 is the first sample of the summary's peaks (the plate at rest, the impactor touching)
+      call peak_sample(rec%force_peak, 0.0_dp, 0.0_dp)
+      call peak_sample(rec%deflection_peak, 0.0_dp, 0.0_dp)
+      call peak_sample(rec%strain_peak, 0.0_dp, 0.0_dp)
       call write_row(rec, row, stat, errmsg)
       call progress_start(rec%progress, rec%nstep, deck%t_end)
       if (stat == 0) call results_flush(rec%h5, stat, errmsg)     ! row 0 in every file: the first restart point
@@ -287,8 +309,10 @@ contains
       rec%d_prev = plate%d
    end subroutine add_contact_work
 
-   !> The summary's running figures of every step: the peak force and its
-   !> time, the contacts and their times, the largest deflections and strain,
+   !> The summary's running figures of every step: the samples of the peak
+   !> force, the largest deflection and strain (src/results/step_peak.f90
+   !> refines them between the steps), the contacts and the first one's
+   !> start and end (first_contact_bounds), the largest w/h,
    !> the iterations, the bending deflection (and with free edges the rigid-
    !> body part of the deflection under the impactor, fig%w_rigid), the
    !> largest slope of the fixed-point force update, the peak's ply stresses.
@@ -304,20 +328,12 @@ contains
       character(len=*), intent(inout) :: errmsg          !< reason on failure
       real(dp) :: w_bend
 
-      if (imp%f > rec%peak_force) then
-         rec%peak_force = imp%f
-         rec%time_of_peak = fig%t
-      end if
-      if (imp%f > 0.0_dp .and. .not. rec%in_contact) then
-         rec%in_contact = .true.
-         rec%contacts = rec%contacts + 1
-         if (rec%contacts == 1) rec%first_contact_start = fig%t
-      else if (imp%f <= 0.0_dp .and. rec%in_contact) then
-         rec%in_contact = .false.
-         if (rec%contacts == 1) rec%first_contact_end = fig%t
-      end if
-      rec%max_deflection = nan_max(rec%max_deflection, abs(fig%w_plate))
-      rec%max_strain_y = nan_max(rec%max_strain_y, abs(fig%strain_y))
+      ! (a NaN force is not a sample: the peak force keeps the finite ones, as it always did)
+      if (.not. ieee_is_nan(imp%f)) call peak_sample(rec%force_peak, fig%t, imp%f)
+      call peak_sample(rec%deflection_peak, fig%t, abs(fig%w_plate))
+      call peak_sample(rec%strain_peak, fig%t, abs(fig%strain_y))
+      call first_contact_bounds(rec, fig%t, imp%f, cit%alpha, hist%alpha_0)
+      rec%alpha_prev = cit%alpha
       rec%contact_iterations = rec%contact_iterations + fig%ic
       rec%max_contact_iter = max(rec%max_contact_iter, fig%ic)
       rec%max_solves = max(rec%max_solves, fig%solves)
@@ -331,6 +347,31 @@ contains
          (rec%c_plate + rec%c_impactor)*law_tangent(model%law, hist, cit%alpha))
       call damage_peak(rec%damage, fig%step, fig%t, imp%f, plate%d)
    end subroutine update_maxima
+
+   !> The contacts (a step with force after one without starts one), and
+   !> the first contact's start and end, each where the indentation less the
+   !> permanent indentation, alpha - alpha_0, crosses 0 between the step
+   !> before and this one (zero_crossing; module header): the start of the
+   !> first contact is t = 0, where the impactor touches the plate with
+   !> alpha = 0. rec%alpha_prev is still the step before's indentation.
+   subroutine first_contact_bounds(rec, t, f, alpha, alpha_0)
+      type(record_t), intent(inout) :: rec               !< the record
+      real(dp), intent(in) :: t                          !< the step's time (s)
+      real(dp), intent(in) :: f                          !< its contact force (N)
+      real(dp), intent(in) :: alpha                      !< its indentation (m), eq. (13)
+      real(dp), intent(in) :: alpha_0                    !< the permanent indentation of the contact's law (m), eq. (12)
+      real(dp) :: crossing
+
+      crossing = zero_crossing(t - rec%dt, rec%alpha_prev - alpha_0, t, alpha - alpha_0)
+      if (f > 0.0_dp .and. .not. rec%in_contact) then
+         rec%in_contact = .true.
+         rec%contacts = rec%contacts + 1
+         if (rec%contacts == 1) rec%first_contact_start = crossing
+      else if (f <= 0.0_dp .and. rec%in_contact) then
+         rec%in_contact = .false.
+         if (rec%contacts == 1) rec%first_contact_end = crossing
+      end if
+   end subroutine first_contact_bounds
 
    !> The history row of the step (every &output every steps, and the last),
    !> to the history file and <prefix>.h5; a run whose energy balance goes
@@ -613,23 +654,29 @@ contains
       type(contact_history_t), intent(in) :: hist   !< the contact history at the end
       type(impactor_t), intent(in) :: imp     !< the impactor at the end
       type(summary_item_t), allocatable, intent(out) :: s(:)   !< the items
-      real(dp) :: duration
+      real(dp) :: duration, f_peak, t_peak, w_max, e_max, t_other
       logical :: ended
 
-      ! -- first contact: its duration, or the time in contact so far
+      ! -- first contact, from the first touch: its duration, or the time in contact so far
       ended = rec%contacts == 0 .or. rec%first_contact_end >= 0.0_dp
       duration = 0.0_dp
       if (rec%contacts >= 1) duration = merge(rec%first_contact_end, real(rec%steps, dp)*rec%dt, ended) &
                                         - rec%first_contact_start
+      ! -- the peaks, refined between the steps (module header)
+      call peak_between(rec%force_peak, t_peak, f_peak)
+      call peak_between(rec%deflection_peak, t_other, w_max)
+      call peak_between(rec%strain_peak, t_other, e_max)
       allocate (s(0))
       call summary_text(s, 'status', status)
-      call summary_real(s, 'peak_force_N', 'peak_force', 'N', rec%peak_force, 1.0_dp)
-      call summary_real(s, 'time_of_peak_us', 'time_of_peak', 's', rec%time_of_peak, 1.0e6_dp)
+      call summary_real(s, 'peak_force_N', 'peak_force', 'N', f_peak, 1.0_dp)
+      call summary_real(s, 'time_of_peak_us', 'time_of_peak', 's', t_peak, 1.0e6_dp)
+      call summary_real(s, 'peak_force_sampled_N', 'peak_force_sampled', 'N', rec%force_peak%v(2), 1.0_dp)
+      call summary_real(s, 'time_of_peak_sampled_us', 'time_of_peak_sampled', 's', rec%force_peak%t(2), 1.0e6_dp)
       call summary_real(s, 'contact_duration_us', 'contact_duration', 's', duration, 1.0e6_dp)
       call summary_text(s, 'first_contact_ended', trim(merge('true ', 'false', ended)))
       call summary_integer(s, 'contacts', rec%contacts)
-      call summary_real(s, 'max_deflection_mm', 'max_deflection', 'm', rec%max_deflection, 1.0e3_dp)
-      call summary_real(s, 'max_strain_y_back', 'max_strain_y_back', '-', rec%max_strain_y, 1.0_dp)
+      call summary_real(s, 'max_deflection_mm', 'max_deflection', 'm', w_max, 1.0e3_dp)
+      call summary_real(s, 'max_strain_y_back', 'max_strain_y_back', '-', e_max, 1.0_dp)
       call summary_real(s, 'permanent_indentation_mm', 'permanent_indentation', 'm', hist%alpha_0, 1.0e3_dp)
       call summary_real(s, 'rebound_velocity_m_s', 'rebound_velocity', 'm/s', -imp%v, 1.0_dp)
       call summary_real(s, 'initial_energy_J', 'initial_energy', 'J', rec%e0, 1.0_dp)
@@ -679,13 +726,16 @@ contains
       type(deck_t), intent(in) :: deck              !< the effective deck
       real(dp), intent(in) :: cpu_s                 !< cpu time of the run (s)
       integer, intent(in) :: unit                   !< where they go (standard output)
+      real(dp) :: f_peak, t_peak, w_max, t_w
 
+      call peak_between(rec%force_peak, t_peak, f_peak)          ! as in the summary (module header)
+      call peak_between(rec%deflection_peak, t_w, w_max)
       write (unit, '(a)') 'history: ' // rec%hist_path
       write (unit, '(a)') 'summary: ' // deck%prefix // '_summary.dat'
       if (deck%hdf5) write (unit, '(a)') 'results: ' // deck%prefix // '.h5'
-      write (unit, '(a,es12.5,a,f9.2,a,i0,a,es12.5,a,f8.3,a)') 'peak force ', rec%peak_force, ' N at ', &
-         rec%time_of_peak*1.0e6_dp, ' us; contacts ', rec%contacts, '; max deflection ', &
-         rec%max_deflection*1.0e3_dp, ' mm; cpu ', cpu_s, ' s'
+      write (unit, '(a,es12.5,a,f9.2,a,i0,a,es12.5,a,f8.3,a)') 'peak force ', f_peak, ' N at ', &
+         t_peak*1.0e6_dp, ' us; contacts ', rec%contacts, '; max deflection ', &
+         w_max*1.0e3_dp, ' mm; cpu ', cpu_s, ' s'
    end subroutine last_words
 
 
@@ -701,10 +751,12 @@ contains
       integer, intent(in) :: u                      !< the restart file, an open stream
       integer, intent(inout) :: stat                !< 0, or the first failure
       call put_tag(u, 'record', stat)
-      call put_reals(u, [rec%e0, rec%contact_work, rec%contact_energy, rec%peak_force, rec%time_of_peak, &
-         rec%first_contact_start, rec%first_contact_end, rec%max_deflection, rec%max_strain_y, &
-         rec%max_energy_error, rec%energy_created, rec%energy_lost, rec%max_w_over_h, rec%w_bend_max, &
+      call put_reals(u, [rec%e0, rec%contact_work, rec%contact_energy, rec%alpha_prev, &
+         rec%first_contact_start, rec%first_contact_end, rec%max_energy_error, rec%energy_created, &
+         rec%energy_lost, rec%max_w_over_h, rec%w_bend_max, &
          rec%diverged_at, rec%c_plate, rec%c_impactor, rec%max_slope], stat)
+      call put_reals(u, [peak_state(rec%force_peak), peak_state(rec%deflection_peak), peak_state(rec%strain_peak)], &
+         stat)
       call put_ints(u, [rec%steps, rec%contacts, rec%contact_iterations, rec%max_contact_iter, rec%max_solves, &
          rec%unconverged_steps, rec%first_unconverged, rec%nonlinear_fallback_steps, rec%contact_fallback_steps, &
          rec%warnings, rec%mixed_seen, rec%solves_before, merge(1, 0, rec%in_contact), merge(1, 0, rec%warned)], stat)
@@ -742,15 +794,20 @@ contains
       call damage_open(rec%damage, deck, model)
       rec%ncol = history_width(rec%damage%active)
       call take_tag(u, 'record', stat)
-      call take_reals(u, r, stat, 18)
+      call take_reals(u, r, stat, 15)
+      if (stat /= 0) return
+      rec%e0 = r(1);  rec%contact_work = r(2);  rec%contact_energy = r(3);  rec%alpha_prev = r(4)
+      rec%first_contact_start = r(5);  rec%first_contact_end = r(6);  rec%max_energy_error = r(7)
+      rec%energy_created = r(8);  rec%energy_lost = r(9);  rec%max_w_over_h = r(10);  rec%w_bend_max = r(11)
+      rec%diverged_at = r(12);  rec%c_plate = r(13);  rec%c_impactor = r(14);  rec%max_slope = r(15)
+      call take_reals(u, r, stat, 3*peak_state_size)
+      if (stat /= 0) return
+      rec%force_peak = peak_restore(r(1:peak_state_size))
+      rec%deflection_peak = peak_restore(r(peak_state_size + 1:2*peak_state_size))
+      rec%strain_peak = peak_restore(r(2*peak_state_size + 1:))
       call take_ints(u, i, stat)
       if (stat == 0 .and. size(i) /= 13 + nwarn) stat = 1
       if (stat /= 0) return
-      rec%e0 = r(1);  rec%contact_work = r(2);  rec%contact_energy = r(3);  rec%peak_force = r(4)
-      rec%time_of_peak = r(5);  rec%first_contact_start = r(6);  rec%first_contact_end = r(7)
-      rec%max_deflection = r(8);  rec%max_strain_y = r(9);  rec%max_energy_error = r(10)
-      rec%energy_created = r(11);  rec%energy_lost = r(12);  rec%max_w_over_h = r(13);  rec%w_bend_max = r(14)
-      rec%diverged_at = r(15);  rec%c_plate = r(16);  rec%c_impactor = r(17);  rec%max_slope = r(18)
       rec%steps = i(1);  rec%contacts = i(2);  rec%contact_iterations = i(3);  rec%max_contact_iter = i(4)
       rec%max_solves = i(5);  rec%unconverged_steps = i(6);  rec%first_unconverged = i(7)
       rec%nonlinear_fallback_steps = i(8);  rec%contact_fallback_steps = i(9);  rec%warnings = i(10)

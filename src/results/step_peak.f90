@@ -1,0 +1,168 @@
+!> The summary's extremes between the steps (issue 22, item 3): a run
+!> samples its force, deflection and strain once per step, so the largest
+!> sample misses the true peak by up to O(dt^2) in value and dt/2 in time,
+!> and jumps from one step to the next as dt changes. These pure kernels
+!> refine the samples:
+!>
+!>   parabola_vertex  the vertex of the parabola through three samples (the
+!>                    largest and its two neighbours): an error O(dt^3) in
+!>                    the value at a smooth maximum, and a time that moves
+!>                    smoothly with dt
+!>   zero_crossing    where the straight line through two samples crosses 0
+!>                    (the end of a contact, from the indentation less the
+!>                    permanent indentation: src/results/run_recorder.f90)
+!>   peak_sample      keeps, sample by sample, what parabola_vertex needs:
+!>                    the largest sample, the one before and the one after
+!>   peak_between     the refined extreme of the samples kept: the vertex,
+!>                    or the largest sample itself at either end of the
+!>                    record or where the three do not make a concave
+!>                    parabola (a flat or a kinked top)
+!>
+!> The largest sample is the first of equal ones, and a NaN sample, once
+!> taken, stays the largest (a run whose state is not finite shows it).
+module step_peak
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
+   use kinds, only: dp
+   implicit none
+   private
+   public :: peak_track_t, peak_sample, peak_between, parabola_vertex, zero_crossing, peak_state, peak_restore, &
+      peak_state_size
+
+   !> The samples a peak is refined from (peak_sample, peak_between).
+   type :: peak_track_t
+      integer :: samples = 0              !< samples taken so far
+      real(dp) :: t_last = 0.0_dp         !< time of the last sample (s)
+      real(dp) :: v_last = 0.0_dp         !< its value
+      real(dp) :: t(3) = 0.0_dp           !< times of the sample before the largest, the largest, the one after (s)
+      real(dp) :: v(3) = 0.0_dp           !< their values
+      logical :: before = .false.         !< there is a sample before the largest (t(1), v(1))
+      logical :: after = .false.          !< there is a sample after the largest (t(3), v(3))
+   end type peak_track_t
+
+   !> Reals of a peak_track_t in a restart point (peak_state, peak_restore).
+   integer, parameter :: peak_state_size = 11
+
+contains
+
+   !> The vertex of the parabola through (t(k), v(k)), k = 1..3, t strictly
+   !> increasing: its time tv and value vv. concave is false (tv, vv then
+   !> the middle sample) when the parabola does not open downwards, a
+   !> sample is not finite, or the vertex lies outside [t(1), t(3)].
+   !> In Newton's form v = v1 + d1 (t - t1) + c (t - t1)(t - t2), with the
+   !> divided differences d1 = (v2 - v1)/(t2 - t1) and c; its slope is 0 at
+   !> tv = (t1 + t2)/2 - d1/(2c).
+   pure subroutine parabola_vertex(t, v, tv, vv, concave)
+      real(dp), intent(in) :: t(3)              !< the samples' times, increasing
+      real(dp), intent(in) :: v(3)              !< their values
+      real(dp), intent(out) :: tv               !< the vertex's time
+      real(dp), intent(out) :: vv               !< its value
+      logical, intent(out) :: concave           !< the vertex is a maximum between t(1) and t(3)
+      real(dp) :: d1, d2, c
+
+      tv = t(2)
+      vv = v(2)
+      concave = .false.
+      if (.not. (all(ieee_is_finite(t)) .and. all(ieee_is_finite(v)))) return
+      if (.not. (t(1) < t(2) .and. t(2) < t(3))) return
+      d1 = (v(2) - v(1))/(t(2) - t(1))
+      d2 = (v(3) - v(2))/(t(3) - t(2))
+      c = (d2 - d1)/(t(3) - t(1))
+      if (.not. c < 0.0_dp) return
+      tv = 0.5_dp*(t(1) + t(2)) - d1/(2.0_dp*c)
+      if (tv < t(1) .or. tv > t(3)) then
+         tv = t(2)
+         return
+      end if
+      ! about the middle sample: v = v2 + s (t - t2) + c (t - t2)^2, s its slope there
+      vv = v(2) + (d1 + c*(t(2) - t(1)))*(tv - t(2)) + c*(tv - t(2))**2
+      concave = .true.
+   end subroutine parabola_vertex
+
+   !> Where the straight line through (t1, y1) and (t2, y2), t1 < t2, is 0,
+   !> kept in [t1, t2]: t2 when y1 = y2, t1 when y1 is 0 already, t2 when
+   !> y2 is not yet 0 (both of one sign, the line crossing later).
+   pure real(dp) function zero_crossing(t1, y1, t2, y2) result(tz)
+      real(dp), intent(in) :: t1                !< the first sample's time
+      real(dp), intent(in) :: y1                !< its value
+      real(dp), intent(in) :: t2                !< the second sample's time (> t1)
+      real(dp), intent(in) :: y2                !< its value
+
+      if (y1 == y2) then
+         tz = t2
+      else
+         tz = t1 + (t2 - t1)*y1/(y1 - y2)
+         tz = min(max(tz, t1), t2)
+      end if
+   end function zero_crossing
+
+   !> Takes the sample (t, v), t after every earlier one: it becomes the
+   !> largest when it exceeds the largest so far (or is a NaN), the last
+   !> sample then its neighbour before; the first sample after the largest
+   !> is its neighbour after.
+   pure subroutine peak_sample(p, t, v)
+      type(peak_track_t), intent(inout) :: p    !< the samples kept
+      real(dp), intent(in) :: t                 !< the sample's time (s)
+      real(dp), intent(in) :: v                 !< its value
+
+      if (p%samples == 0) then
+         p%t(2) = t
+         p%v(2) = v
+      else if (ieee_is_nan(p%v(2))) then
+         continue                               ! a NaN stays the largest
+      else if (ieee_is_nan(v) .or. v > p%v(2)) then
+         p%t(1) = p%t_last
+         p%v(1) = p%v_last
+         p%before = .true.
+         p%t(2) = t
+         p%v(2) = v
+         p%after = .false.
+      else if (.not. p%after) then
+         p%t(3) = t
+         p%v(3) = v
+         p%after = .true.
+      end if
+      p%samples = p%samples + 1
+      p%t_last = t
+      p%v_last = v
+   end subroutine peak_sample
+
+   !> The largest value of the samples kept, refined between them, and its
+   !> time: the vertex of the parabola through the largest sample and its
+   !> neighbours (parabola_vertex), or the largest sample itself when it is
+   !> the first or the last one or the three are not concave. 0 at 0 before
+   !> any sample.
+   pure subroutine peak_between(p, t_peak, v_peak)
+      type(peak_track_t), intent(in) :: p       !< the samples kept
+      real(dp), intent(out) :: t_peak           !< time of the peak (s)
+      real(dp), intent(out) :: v_peak           !< the peak
+      logical :: concave
+
+      t_peak = p%t(2)
+      v_peak = p%v(2)
+      if (p%before .and. p%after) call parabola_vertex(p%t, p%v, t_peak, v_peak, concave)
+   end subroutine peak_between
+
+   !> The samples kept, as peak_state_size reals (a restart point).
+   pure function peak_state(p) result(r)
+      type(peak_track_t), intent(in) :: p       !< the samples kept
+      real(dp) :: r(peak_state_size)            !< samples, last, times, values, before, after
+
+      r = [real(p%samples, dp), p%t_last, p%v_last, p%t, p%v, merge(1.0_dp, 0.0_dp, p%before), &
+           merge(1.0_dp, 0.0_dp, p%after)]
+   end function peak_state
+
+   !> The samples kept, from peak_state's reals.
+   pure function peak_restore(r) result(p)
+      real(dp), intent(in) :: r(peak_state_size)   !< peak_state's reals
+      type(peak_track_t) :: p                      !< the samples kept
+
+      p%samples = nint(r(1))
+      p%t_last = r(2)
+      p%v_last = r(3)
+      p%t = r(4:6)
+      p%v = r(7:9)
+      p%before = r(10) /= 0.0_dp
+      p%after = r(11) /= 0.0_dp
+   end function peak_restore
+
+end module step_peak
