@@ -40,6 +40,7 @@ import os
 import re
 import subprocess
 import sys
+import threading
 import time
 
 FORTRAN_NUMBER = re.compile(r'^[+-]?(\d+\.?\d*|\.\d+)([eEdD][+-]?\d+)?$')
@@ -352,8 +353,41 @@ def run_impact(impact, deck, sets=(), cwd=None, timeout=None, log=None, options=
     with open(log, 'w', encoding='utf-8') as f:
         f.write(log_header)
         f.flush()
-        return subprocess.run(args, cwd=cwd, stdout=f, stderr=subprocess.STDOUT, timeout=timeout, env=env,
-                              stdin=subprocess.DEVNULL)
+        p = subprocess.Popen(args, cwd=cwd, stdout=f, stderr=subprocess.STDOUT, env=env,
+                             stdin=subprocess.DEVNULL)
+        code, cpu = _wait_cpu(p, timeout)
+        if code is None:
+            raise subprocess.TimeoutExpired(args, timeout)
+        done = subprocess.CompletedProcess(args, code)
+        done.cpu_s = cpu
+        return done
+
+
+def _wait_cpu(p, timeout):
+    """Waits for the process p (killed past timeout seconds); returns its exit
+    status (None when it was killed at its timeout; -N for a signal, as
+    subprocess gives it) and the CPU time (user + system, s) it and its
+    children used, from os.wait4."""
+    timer = None
+    killed = []
+    if timeout is not None:
+        def kill():
+            killed.append(True)
+            p.kill()
+        timer = threading.Timer(timeout, kill)
+        timer.start()
+    try:
+        while True:
+            try:
+                _, status, usage = os.wait4(p.pid, 0)
+                break
+            except InterruptedError:
+                continue
+    finally:
+        if timer:
+            timer.cancel()
+    p.returncode = os.waitstatus_to_exitcode(status)
+    return (None if killed else p.returncode), usage.ru_utime + usage.ru_stime
 
 
 RUN_ARGUMENTS = ('impact', 'deck', 'sets', 'cwd', 'timeout', 'log', 'options', 'env', 'log_header')
@@ -372,6 +406,8 @@ def run_many(runs, jobs=None, on_done=None, **common):
       stdout, stderr   what it wrote ('' when it went to its log)
       diagnostic its error lines (diagnostic()), from stderr or the log
       elapsed_s  its wall-clock time (s)
+      cpu_s      the CPU time (user + system, s) its process used, for a
+                 run with a log (os.wait4); None otherwise
     on_done(result), when given, is called in this thread as each run ends;
     with jobs = 1 the runs are made one after the other in this thread, and
     on_done sees each before the next one starts."""
@@ -396,11 +432,12 @@ def run_many(runs, jobs=None, on_done=None, **common):
 
 def _run_one(run):
     """One run of run_many: the run's dict with its outcome."""
-    result = dict(run, exit=None, timed_out=False, stdout='', stderr='')
+    result = dict(run, exit=None, timed_out=False, stdout='', stderr='', cpu_s=None)
     start = time.time()
     try:
         p = run_impact(**{k: run[k] for k in RUN_ARGUMENTS if k in run})
-        result.update(exit=p.returncode, stdout=p.stdout or '', stderr=p.stderr or '')
+        result.update(exit=p.returncode, stdout=p.stdout or '', stderr=p.stderr or '',
+                      cpu_s=getattr(p, 'cpu_s', None))
     except subprocess.TimeoutExpired as e:
         result.update(timed_out=True, stdout=_text(e.stdout), stderr=_text(e.stderr))
     except OSError as e:
@@ -507,10 +544,6 @@ def main(argv):
     return 0
 
 
-if __name__ == '__main__':
-    sys.exit(main(sys.argv[1:]))
-
-
 def h5_problem(path):
     """What is wrong with the HDF5 file at path, '' when nothing is seen: not
     an HDF5 file, or shorter than the end of file its superblock records (a
@@ -533,3 +566,7 @@ def h5_problem(path):
             if size < end:
                 return f'truncated: {size} bytes of the {end} its superblock records'
     return ''
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv[1:]))
