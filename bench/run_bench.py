@@ -821,19 +821,31 @@ def sweep_pass(vary, jobs):
         code, cpu, _ = imf.wait_usage(p)
         wall = time.monotonic() - t0
     scenes = sorted(os.listdir(os.path.join(SWEEP_DIR, 'scenes')))
-    processes = summaries = 0.0
+    processes = summaries = walls = 0.0
     for n in scenes:
         d = os.path.join(SWEEP_DIR, 'scenes', n)
-        processes += imf.summary_number(imf.read_keys(os.path.join(d, 'scene.status')), 'cpu_s')
+        status = imf.read_keys(os.path.join(d, 'scene.status'))
+        processes += imf.summary_number(status, 'cpu_s')
+        walls += imf.summary_number(status, 'wall_s')
         summaries += imf.summary_number(imf.read_keys(os.path.join(d, 'run_summary.dat')), 'cpu_s')
     return dict(jobs=jobs, scenes=len(scenes), exit=code, wall=wall, cpu=cpu, processes=processes,
-                summaries=summaries)
+                summaries=summaries, in_flight=walls / wall)
+
+
+def load_average():
+    """The 1-minute load average (/proc/loadavg), NaN when unknown."""
+    try:
+        with open('/proc/loadavg') as f:
+            return float(f.read().split()[0])
+    except (OSError, ValueError, IndexError):
+        return float('nan')
 
 
 def sweep_throughput(quick):
     """The sweep passes: one worker, every CPU, one, every CPU."""
     n = imf.cpu_count()
     passes = []
+    loads = [load_average()]
     for jobs in ([1, n, 1, n] if n > 1 else [1, 1]):
         p = sweep_pass(QUICK_SWEEP_VARY if quick else SWEEP_VARY, jobs)
         passes.append(p)
@@ -843,10 +855,11 @@ def sweep_throughput(quick):
                                                         p['cpu'] / p['summaries'],
                                                         '' if p['exit'] == 0 else ' (exit status {})'.format(p['exit'])),
               flush=True)
-    return passes, n
+    loads.append(load_average())
+    return passes, n, loads
 
 
-def sweep_lines(passes, n):
+def sweep_lines(passes, n, loads):
     """The sweep throughput as Markdown lines."""
     p0 = passes[0]
     L = ['`tools/sweep run` on {} scenes of `input/clamped.nml` (quarter 6x4, 3 ms; {}), fresh each pass, with one '
@@ -854,13 +867,17 @@ def sweep_lines(passes, n):
          'process it started, os.wait4) against its scenes\' processes (each `impact`, os.wait4) and against their '
          'summaries\' `cpu_s` (set-up and time loop only).'.format(p0['scenes'], ' x '.join(
              v.split('=')[0] for v in (SWEEP_VARY if p0['scenes'] == 24 else QUICK_SWEEP_VARY)), n), '',
-         '| pass | workers | wall (s) | scenes/s | sweep CPU (s) | scenes\' processes (s) | their cpu_s (s) | '
-         'sweep / processes | sweep / cpu_s |', '|---|---|---|---|---|---|---|---|---|']
+         '| pass | workers | wall (s) | scenes/s | scenes in flight | sweep CPU (s) | scenes\' processes (s) | '
+         'their cpu_s (s) | sweep / processes | sweep / cpu_s |', '|---|---|---|---|---|---|---|---|---|---|']
     for k, p in enumerate(passes, 1):
-        L.append('| {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |'.format(
-            k, p['jobs'], p['wall'], p['scenes'] / p['wall'], p['cpu'], p['processes'], p['summaries'],
-            p['cpu'] / p['processes'], p['cpu'] / p['summaries']))
+        L.append('| {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |'.format(
+            k, p['jobs'], p['wall'], p['scenes'] / p['wall'], p['in_flight'], p['cpu'], p['processes'],
+            p['summaries'], p['cpu'] / p['processes'], p['cpu'] / p['summaries']))
     L.append('')
+    L.append('Scenes in flight: the sum of the scenes\' wall times over the sweep\'s (how many ran at once, on '
+             'average). Load average of the machine (1 min) before and after the passes: {:.1f}, {:.1f} (on {} '
+             'CPUs: above that, the scenes wait for a CPU and more workers cannot shorten the sweep).'.format(
+                 loads[0], loads[-1], os.cpu_count()))
     if n > 1:
         ratios = [passes[k + 1]['wall'] / passes[k]['wall'] for k in range(0, len(passes) - 1, 2)]
         L.append('Wall time with {} workers over one worker: {} (pass by pass).'.format(
@@ -929,8 +946,8 @@ def main():
                         min(r['per_step']), min(r['setup']), max(r['rss'])))
         fill_doc({'bench-scaling': '\n'.join(L)})
     if 'sweep' in parts:
-        passes, n = sweep_throughput(args.quick)
-        L = sweep_lines(passes, n)
+        passes, n, loads = sweep_throughput(args.quick)
+        L = sweep_lines(passes, n, loads)
         print('\n'.join(['', 'bench: the sweep throughput'] + L), flush=True)
         fill_doc({'bench-sweep': '\n'.join(L)})
     if 'grid' not in parts:
