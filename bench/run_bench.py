@@ -661,6 +661,239 @@ def write_results(rows, header_lines):
             f.write(' '.join(fmt(v) for v in r) + '\n')
 
 
+# ------------------------------------------------------------- scaling and sweeps
+# The scaling table (issue 24): full plates of the paper's laminate, clamped,
+# nonlinear, scheme 'fast', 2.5 us, the first SCALING_STEPS steps, HDF5 off;
+# (nx, ny, a, b): elements along a and b, the plate's sides (m). 150x150 is
+# the 300 x 300 mm plate with 2 mm elements.
+SCALING_MESHES = [(18, 12, 0.15, 0.10), (36, 24, 0.15, 0.10), (72, 48, 0.15, 0.10), (108, 72, 0.15, 0.10),
+                  (150, 150, 0.30, 0.30)]
+QUICK_SCALING_MESHES = [(18, 12, 0.15, 0.10), (27, 18, 0.15, 0.10), (36, 24, 0.15, 0.10)]
+SCALING_STEPS = 40
+# Runs up to this many elements are repeated (--repeat) and the least s/step
+# kept (the machine is shared: noise); larger ones run once.
+SCALING_REPEAT_ELEMENTS = 36 * 24
+# Band storage runs where its three band matrices fit: the estimate
+# 3 x 8 bytes x neq (kd + 1), neq ~ 5 (2 nx + 1)(2 ny + 1) and kd ~ 20
+# min(nx, ny) + 4 (the 9-node elements, numbered across the shorter side:
+# 244 at 18x12, 484 at 36x24, measured), at most --band-max-gib and half the
+# memory available.
+BAND_MAX_GIB = 2.0
+SCALING_DIR = os.path.join(ROOT, 'build', 'bench', 'scaling')
+# The sweep throughput: input/clamped.nml (quarter 6x4, 3 ms) over 3 masses x
+# 4 velocities x 2 edge conditions, 24 scenes (quick: 2 x 2 x 2), run with
+# one worker and with every CPU, twice each, alternately.
+SWEEP_VARY = ['impactor.mass=0.1,0.243,0.5', 'impactor.velocity=1,2,3,4', 'boundary.edges=clamped,simply_supported',
+              'mesh.nx+mesh.ny=6:4']
+QUICK_SWEEP_VARY = ['impactor.mass=0.1,0.243', 'impactor.velocity=2,3', 'boundary.edges=clamped,simply_supported',
+                    'mesh.nx+mesh.ny=6:4']
+SWEEP_DIR = os.path.join(ROOT, 'build', 'bench', 'sweep')
+SWEEP_TOOL = os.path.join(ROOT, 'tools', 'sweep')
+
+
+def mem_available_gib():
+    """MemAvailable of /proc/meminfo (GiB); inf when unknown."""
+    try:
+        with open('/proc/meminfo') as f:
+            for line in f:
+                if line.startswith('MemAvailable:'):
+                    return int(line.split()[1]) / 2.0 ** 20
+    except (OSError, ValueError, IndexError):
+        pass
+    return float('inf')
+
+
+def band_estimate_gib(nx, ny):
+    """The three band matrices of a full plate nx x ny (GiB), estimated."""
+    neq = 5 * (2 * nx + 1) * (2 * ny + 1)
+    kd = 20 * min(nx, ny) + 4
+    return 3 * 8 * neq * (kd + 1) / 2.0 ** 30
+
+
+def scaling_run(nx, ny, a, b, storage, repeat):
+    """One mesh of the scaling table in one storage, `repeat` times: a dict
+    with neq, kd, the storage the run used, s/step (least), set-up CPU (s),
+    peak memory (MiB), cpu_s, or failed."""
+    os.makedirs(SCALING_DIR, exist_ok=True)
+    name = '{}x{}_{}'.format(nx, ny, storage)
+    prefix = os.path.join(SCALING_DIR, name)
+    sets = ['plate.a={}'.format(a), 'plate.b={}'.format(b), 'mesh.nx={}'.format(nx), 'mesh.ny={}'.format(ny),
+            "mesh.domain=full", 'analysis.scheme=fast', 'analysis.dt=2.5e-6',
+            'analysis.t_end={:g}'.format(SCALING_STEPS * 2.5e-6), 'analysis.storage=' + storage,
+            'output.prefix=' + prefix, 'output.hdf5=.false.', 'output.overwrite=.true.']
+    rec = dict(mesh='{}x{}'.format(nx, ny), plate='{:g} x {:g} mm'.format(a * 1e3, b * 1e3), asked=storage,
+               per_step=[], setup=[], rss=[], cpu=[], failed='')
+    for _ in range(repeat):
+        r = imf.run_many([dict(deck=os.path.join(ROOT, 'input', 'clamped.nml'), sets=sets, log=prefix + '.log')],
+                         jobs=1, impact=EXE)[0]
+        summary = prefix + '_summary.dat'
+        keys = imf.read_keys(summary) if r['exit'] == 0 and os.path.exists(summary) else {}
+        if keys.get('status') != 'completed':
+            rec['failed'] = r['diagnostic'] or 'exit status {}'.format(r['exit'])
+            return rec
+        with open(prefix + '.log', encoding='utf-8', errors='replace') as f:
+            log = f.read()
+        m = re.search(r'equations (\d+), half-bandwidth (\d+)', log)
+        rec['neq'], rec['kd'] = (int(m.group(1)), int(m.group(2))) if m else (0, 0)
+        m = re.search(r'scene: storage\s+(\w+)', log)
+        rec['storage'] = m.group(1) if m else storage
+        m = SETUP_RE.search(log)
+        setup = float(m.group(1)) if m else float('nan')
+        cpu = imf.summary_number(keys, 'cpu_s')
+        rec['setup'].append(setup)
+        rec['cpu'].append(cpu)
+        rec['per_step'].append((cpu - setup) / max(int(keys.get('steps', '1')), 1))
+        rec['rss'].append(r['max_rss_mib'] or float('nan'))
+    return rec
+
+
+def scaling(quick, repeat, band_max_gib):
+    """The scaling table: every mesh in 'auto' storage, and in band storage
+    where it fits; the growth exponent of s/step with the equations."""
+    recs = []
+    meshes = QUICK_SCALING_MESHES if quick else SCALING_MESHES
+    band_limit = min(band_max_gib, mem_available_gib() / 2)
+    for nx, ny, a, b in meshes:
+        for storage in ('auto', 'band'):
+            if storage == 'band' and band_estimate_gib(nx, ny) > band_limit:
+                print('  scaling {}x{} band: skipped (its band matrices, some {:.1f} GiB, over {:.1f} GiB)'.format(
+                    nx, ny, band_estimate_gib(nx, ny), band_limit), flush=True)
+                continue
+            t0 = time.time()
+            rec = scaling_run(nx, ny, a, b, storage, repeat if nx * ny <= SCALING_REPEAT_ELEMENTS else 1)
+            recs.append(rec)
+            if rec['failed']:
+                print('  scaling {}x{} {}: failed: {}'.format(nx, ny, storage, rec['failed']), flush=True)
+                continue
+            print('  scaling {:>8s} {:>7d} equations  {:<6s} ({})  {:.4g} s/step  set-up {:.3g} s  peak {:.0f} MiB'
+                  '  ({:.0f} s)'.format(rec['mesh'], rec['neq'], rec['storage'], storage, min(rec['per_step']),
+                                        min(rec['setup']), max(rec['rss']), time.time() - t0), flush=True)
+    growth = {}
+    for storage in ('auto', 'band'):
+        pts = [(r['neq'], min(r['per_step'])) for r in recs if r['asked'] == storage and not r['failed']]
+        growth[storage] = (fit_slope(pts)[0], pts) if len(pts) >= 2 else (float('nan'), pts)
+    return recs, growth, band_limit
+
+
+def gib_text(mib):
+    return '{:.2f} GiB'.format(mib / 1024) if mib >= 1024 else '{:.0f} MiB'.format(mib)
+
+
+def scaling_lines(recs, growth, band_limit, repeat):
+    """The scaling table as Markdown lines (printed and in PERFORMANCE.md)."""
+    L = ['Full plates (150 x 100 mm unless said; the paper\'s laminate), clamped, nonlinear, scheme `\'fast\'`, '
+         '2.5 us, the first {} steps, HDF5 off; s/step = (CPU of the run - CPU of the set-up) / steps, the least of '
+         '{} runs up to {} elements, one run above; peak memory: the process\'s maximum resident set (os.wait4). '
+         'Storage `\'auto\'` (the default) and `\'band\'` where its three band matrices fit in {:.1f} GiB '
+         '(estimated).'.format(SCALING_STEPS, repeat, SCALING_REPEAT_ELEMENTS, band_limit), '',
+         '| mesh | plate | equations | half-band | storage | s/step | set-up (s) | peak memory |',
+         '|---|---|---|---|---|---|---|---|']
+    for r in recs:
+        if r['failed']:
+            L.append('| {} | {} | | | {} | failed: {} | | |'.format(r['mesh'], r['plate'], r['asked'],
+                                                                   r['failed'][:80]))
+            continue
+        store = r['storage'] + (' (auto)' if r['asked'] == 'auto' else '')
+        L.append('| {} | {} | {} | {} | {} | {:.3g} | {:.3g} | {} |'.format(
+            r['mesh'], r['plate'], r['neq'], r['kd'], store, min(r['per_step']), min(r['setup']),
+            gib_text(max(r['rss']))))
+    L.append('')
+    for storage, (slope, pts) in growth.items():
+        if pts:
+            L.append('Growth of s/step with the equations N, storage `\'{}\'` ({} meshes, {} to {} equations, least '
+                     'squares of log s/step on log N): **N^{:.2f}**.'.format(storage, len(pts), min(p[0] for p in pts),
+                                                                           max(p[0] for p in pts), slope))
+    return L
+
+
+def sweep_pass(vary, jobs):
+    """A fresh sweep of the scenes `vary` run with `jobs` workers: wall (s),
+    the CPU of the whole sweep (tools/sweep and all it started, os.wait4),
+    of its scenes' processes and of their summaries' cpu_s (s)."""
+    shutil.rmtree(SWEEP_DIR, ignore_errors=True)
+    subprocess.run([SWEEP_TOOL, 'init', SWEEP_DIR, '--deck', os.path.join(ROOT, 'input', 'clamped.nml'),
+                    '--impact', EXE] + [w for v in vary for w in ('--vary', v)],
+                   check=True, stdout=subprocess.DEVNULL)
+    with open(os.path.join(os.path.dirname(SWEEP_DIR), 'sweep_{}.log'.format(jobs)), 'w') as log:
+        t0 = time.monotonic()
+        p = subprocess.Popen([SWEEP_TOOL, 'run', SWEEP_DIR, '--jobs', str(jobs)], stdout=log,
+                             stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL)
+        code, cpu, _ = imf.wait_usage(p)
+        wall = time.monotonic() - t0
+    scenes = sorted(os.listdir(os.path.join(SWEEP_DIR, 'scenes')))
+    processes = summaries = walls = 0.0
+    for n in scenes:
+        d = os.path.join(SWEEP_DIR, 'scenes', n)
+        status = imf.read_keys(os.path.join(d, 'scene.status'))
+        processes += imf.summary_number(status, 'cpu_s')
+        walls += imf.summary_number(status, 'wall_s')
+        summaries += imf.summary_number(imf.read_keys(os.path.join(d, 'run_summary.dat')), 'cpu_s')
+    return dict(jobs=jobs, scenes=len(scenes), exit=code, wall=wall, cpu=cpu, processes=processes,
+                summaries=summaries, in_flight=walls / wall)
+
+
+def load_average():
+    """The 1-minute load average (/proc/loadavg), NaN when unknown."""
+    try:
+        with open('/proc/loadavg') as f:
+            return float(f.read().split()[0])
+    except (OSError, ValueError, IndexError):
+        return float('nan')
+
+
+def sweep_throughput(quick):
+    """The sweep passes: one worker, every CPU, one, every CPU."""
+    n = imf.cpu_count()
+    passes = []
+    loads = [load_average()]
+    for jobs in ([1, n, 1, n] if n > 1 else [1, 1]):
+        p = sweep_pass(QUICK_SWEEP_VARY if quick else SWEEP_VARY, jobs)
+        passes.append(p)
+        print('  sweep {} scenes, {} worker(s): {:.2f} s wall, {:.2f} scenes/s; CPU {:.2f} s, {:.2f}x its scenes\' '
+              'processes, {:.2f}x their cpu_s{}'.format(p['scenes'], jobs, p['wall'], p['scenes'] / p['wall'],
+                                                        p['cpu'], p['cpu'] / p['processes'],
+                                                        p['cpu'] / p['summaries'],
+                                                        '' if p['exit'] == 0 else ' (exit status {})'.format(p['exit'])),
+              flush=True)
+    loads.append(load_average())
+    return passes, n, loads
+
+
+def sweep_lines(passes, n, loads):
+    """The sweep throughput as Markdown lines."""
+    p0 = passes[0]
+    L = ['`tools/sweep run` on {} scenes of `input/clamped.nml` (quarter 6x4, 3 ms; {}), fresh each pass, with one '
+         'worker and with the {} CPUs this process may use, alternately; CPU: the whole sweep (the tool and every '
+         'process it started, os.wait4) against its scenes\' processes (each `impact`, os.wait4) and against their '
+         'summaries\' `cpu_s` (set-up and time loop only).'.format(p0['scenes'], ' x '.join(
+             v.split('=')[0] for v in (SWEEP_VARY if p0['scenes'] == 24 else QUICK_SWEEP_VARY)), n), '',
+         '| pass | workers | wall (s) | scenes/s | scenes in flight | sweep CPU (s) | scenes\' processes (s) | '
+         'their cpu_s (s) | sweep / processes | sweep / cpu_s |', '|---|---|---|---|---|---|---|---|---|---|']
+    for k, p in enumerate(passes, 1):
+        L.append('| {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |'.format(
+            k, p['jobs'], p['wall'], p['scenes'] / p['wall'], p['in_flight'], p['cpu'], p['processes'],
+            p['summaries'], p['cpu'] / p['processes'], p['cpu'] / p['summaries']))
+    L.append('')
+    L.append('Scenes in flight: the sum of the scenes\' wall times over the sweep\'s (how many ran at once, on '
+             'average). Load average of the machine (1 min) before and after the passes: {:.1f}, {:.1f} (on {} '
+             'CPUs: above that, the scenes wait for a CPU and more workers cannot shorten the sweep).'.format(
+                 loads[0], loads[-1], os.cpu_count()))
+    if n > 1:
+        ratios = [passes[k + 1]['wall'] / passes[k]['wall'] for k in range(0, len(passes) - 1, 2)]
+        L.append('Wall time with {} workers over one worker: {} (pass by pass).'.format(
+            n, ', '.join('{:.2f}'.format(x) for x in ratios)))
+    return L
+
+
+def fill_doc(blocks):
+    """Fills the blocks of DOC named in blocks, the others left as they are."""
+    names = imf.fill_file(DOC, blocks, keep_others=True)
+    missing = [b for b in blocks if b not in names]
+    if missing:
+        sys.exit('bench: {}: no block {} to fill'.format(DOC, ', '.join(missing)))
+
+
+
 def main():
     global RESULTS, FIG_DIR, DOC
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
@@ -669,7 +902,16 @@ def main():
     ap.add_argument('--reuse', action='store_true')
     ap.add_argument('--docs-dir', default=os.path.join(ROOT, 'out', 'docs'))
     ap.add_argument('--results', default=RESULTS)
+    ap.add_argument('--parts', default='scaling,sweep',
+                    help='what to run, a comma list of scaling (the scaling table), sweep (the sweep '
+                         'throughput), grid (the speed-accuracy grid, ~15 min); default scaling,sweep')
+    ap.add_argument('--band-max-gib', type=float, default=BAND_MAX_GIB,
+                    help='scaling: band storage runs where its matrices fit in this (default {:g} GiB; '
+                         'at most half the memory available)'.format(BAND_MAX_GIB))
     args = ap.parse_args()
+    parts = [x.strip() for x in args.parts.split(',') if x.strip()]
+    if not parts or any(x not in ('scaling', 'sweep', 'grid') for x in parts):
+        sys.exit('bench: --parts {}: a comma list of scaling, sweep, grid'.format(args.parts))
     RESULTS = os.path.abspath(args.results)
     FIG_DIR = os.path.join(os.path.abspath(args.docs_dir), 'performance')
     DOC = os.path.join(os.path.abspath(args.docs_dir), 'PERFORMANCE.md')
@@ -682,8 +924,37 @@ def main():
     t_wall0 = time.time()
     os.makedirs(RUN_DIR, exist_ok=True)
     os.makedirs(FIG_DIR, exist_ok=True)
+    os.makedirs(os.path.dirname(RESULTS), exist_ok=True)
     if not os.path.exists(EXE):
         sys.exit('bench: ./impact not built (make impact)')
+    if not (os.path.exists(DOC) and os.path.samefile(DOC, TEMPLATE)):
+        shutil.copyfile(TEMPLATE, DOC)
+    print('bench: {} ({}); writes {} and {}'.format(', '.join(parts), 'quick' if args.quick else 'full',
+                                                   os.path.relpath(DOC, ROOT), os.path.relpath(RESULTS, ROOT)))
+    if 'scaling' in parts:
+        recs, growth, band_limit = scaling(args.quick, args.repeat, args.band_max_gib)
+        L = scaling_lines(recs, growth, band_limit, args.repeat)
+        print('\n'.join(['', 'bench: the scaling table'] + L), flush=True)
+        scaling_file = os.path.join(os.path.dirname(RESULTS), 'scaling.dat')
+        with open(scaling_file, 'w') as f:
+            f.write('# make bench: the scaling table ({}), {}\n# mesh plate equations half_band storage asked '
+                    's_per_step setup_s peak_MiB\n'.format('quick' if args.quick else 'full', time.strftime('%Y-%m-%d')))
+            for r in recs:
+                if not r['failed']:
+                    f.write('{} {} {} {} {} {} {:.6g} {:.6g} {:.1f}\n'.format(
+                        r['mesh'], r['plate'].replace(' ', ''), r['neq'], r['kd'], r['storage'], r['asked'],
+                        min(r['per_step']), min(r['setup']), max(r['rss'])))
+        fill_doc({'bench-scaling': '\n'.join(L)})
+    if 'sweep' in parts:
+        passes, n, loads = sweep_throughput(args.quick)
+        L = sweep_lines(passes, n, loads)
+        print('\n'.join(['', 'bench: the sweep throughput'] + L), flush=True)
+        fill_doc({'bench-sweep': '\n'.join(L)})
+    if 'grid' not in parts:
+        print('bench: wrote {} and {}; {:.0f} s'.format(os.path.relpath(DOC, ROOT),
+                                                        os.path.relpath(os.path.dirname(RESULTS), ROOT),
+                                                        time.time() - t_wall0))
+        return
     env_sys = dict(os.environ)
     sys_name = blas_name(system_blas())
     alt = other_blas()
@@ -1092,9 +1363,7 @@ def write_doc(rows, refs, hows, pairs, tol, cost, kern, by_sweep, ob_recs, wall,
             L.append('| {} | {:.1%} | {}x{} | {:g} | {} | {:g} | {:g} | {} | {:.3f} | {:.2%} / {:.2%} / {:.2%} | {} |'.format(
                 scene, target, b[5], b[6], b[9], b[2], b[11], b[12], b[3], b[14], b[25], b[26], b[27], note))
     L.append('')
-    if not (os.path.exists(DOC) and os.path.samefile(DOC, TEMPLATE)):
-        shutil.copyfile(TEMPLATE, DOC)
-    if 'bench' not in imf.fill_file(DOC, {'bench': '\n'.join(L)}):
+    if 'bench' not in imf.fill_file(DOC, {'bench': '\n'.join(L)}, keep_others=True):
         sys.exit('bench: {}: no bench:begin / bench:end block to fill'.format(DOC))
 
 

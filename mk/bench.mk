@@ -1,10 +1,17 @@
-# make bench: the speed-accuracy trade, measured (issue 5; docs/PERFORMANCE.md).
+# make bench: the scaling table and the sweep throughput (issue 24), and the
+# speed-accuracy trade (issue 5), measured (docs/PERFORMANCE.md).
 #
-#   make bench                   the full grid (about 15 minutes on 2 cores);
+#   make bench                   the parts scaling,sweep (under 10 minutes on 2
+#                                cores): the scaling table (full plates 18x12 to
+#                                150x150, s/step, peak memory, growth exponent) and
+#                                the sweep throughput, printed and in their blocks
+#                                of $(DOCS_DIR)/PERFORMANCE.md; scaling.dat beside
+#                                $(BENCH_RESULTS)
+#   make bench BENCH_PARTS=grid  the speed-accuracy grid (about 15 minutes on 2 cores);
 #                                writes $(BENCH_RESULTS), $(DOCS_DIR)/performance/*.png
-#                                and $(DOCS_DIR)/PERFORMANCE.md (docs/PERFORMANCE.md
-#                                with its generated block filled)
-#   make bench BENCH_ARGS=--quick   a small grid, to check the machinery
+#                                and its block of $(DOCS_DIR)/PERFORMANCE.md
+#                                (make docs: all three parts)
+#   make bench BENCH_ARGS=--quick   small grids, to check the machinery
 #                                (refused where the published results go)
 #   make bench-kernels           build only the kernel timer
 #
@@ -23,10 +30,13 @@
 BENCH_BUILD := $(BUILD)/bench
 BENCH_ARGS ?=
 BENCH_RESULTS ?= $(if $(docs_published),bench/results.dat,out/bench/results.dat)
+BENCH_PARTS ?= $(if $(docs_published),scaling$(bench_comma)sweep$(bench_comma)grid,scaling$(bench_comma)sweep)
+bench_comma := ,
 
 .PHONY: bench bench-kernels bench-accuracy
 bench: impact $(BENCH_BUILD)/bench_kernels
-	$(PYTHON) bench/run_bench.py $(BENCH_ARGS) --docs-dir '$(DOCS_DIR)' --results '$(BENCH_RESULTS)'
+	$(PYTHON) bench/run_bench.py --parts '$(BENCH_PARTS)' $(BENCH_ARGS) --docs-dir '$(DOCS_DIR)' \
+	    --results '$(BENCH_RESULTS)'
 
 BENCH_ACCURACY_ARGS ?=
 bench-accuracy: impact

@@ -40,6 +40,7 @@ import os
 import re
 import subprocess
 import sys
+import threading
 import time
 
 FORTRAN_NUMBER = re.compile(r'^[+-]?(\d+\.?\d*|\.\d+)([eEdD][+-]?\d+)?$')
@@ -352,8 +353,43 @@ def run_impact(impact, deck, sets=(), cwd=None, timeout=None, log=None, options=
     with open(log, 'w', encoding='utf-8') as f:
         f.write(log_header)
         f.flush()
-        return subprocess.run(args, cwd=cwd, stdout=f, stderr=subprocess.STDOUT, timeout=timeout, env=env,
-                              stdin=subprocess.DEVNULL)
+        p = subprocess.Popen(args, cwd=cwd, stdout=f, stderr=subprocess.STDOUT, env=env,
+                             stdin=subprocess.DEVNULL)
+        code, cpu, rss = wait_usage(p, timeout)
+        if code is None:
+            raise subprocess.TimeoutExpired(args, timeout)
+        done = subprocess.CompletedProcess(args, code)
+        done.cpu_s, done.max_rss_mib = cpu, rss
+        return done
+
+
+def wait_usage(p, timeout=None):
+    """Waits for the process p (a subprocess.Popen; killed past timeout
+    seconds); returns its exit status (None when it was killed at its
+    timeout; -N for a signal, as subprocess gives it), the CPU time (user +
+    system, s) it and the children it waited for used, and its peak
+    resident memory (MiB; the largest of it and those children), from
+    os.wait4."""
+    timer = None
+    killed = []
+    if timeout is not None:
+        def kill():
+            killed.append(True)
+            p.kill()
+        timer = threading.Timer(timeout, kill)
+        timer.start()
+    try:
+        while True:
+            try:
+                _, status, usage = os.wait4(p.pid, 0)
+                break
+            except InterruptedError:
+                continue
+    finally:
+        if timer:
+            timer.cancel()
+    p.returncode = os.waitstatus_to_exitcode(status)
+    return (None if killed else p.returncode), usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0
 
 
 RUN_ARGUMENTS = ('impact', 'deck', 'sets', 'cwd', 'timeout', 'log', 'options', 'env', 'log_header')
@@ -372,6 +408,9 @@ def run_many(runs, jobs=None, on_done=None, **common):
       stdout, stderr   what it wrote ('' when it went to its log)
       diagnostic its error lines (diagnostic()), from stderr or the log
       elapsed_s  its wall-clock time (s)
+      cpu_s      the CPU time (user + system, s) its process used, for a
+                 run with a log (os.wait4); None otherwise
+      max_rss_mib  its peak resident memory (MiB), likewise
     on_done(result), when given, is called in this thread as each run ends;
     with jobs = 1 the runs are made one after the other in this thread, and
     on_done sees each before the next one starts."""
@@ -396,11 +435,12 @@ def run_many(runs, jobs=None, on_done=None, **common):
 
 def _run_one(run):
     """One run of run_many: the run's dict with its outcome."""
-    result = dict(run, exit=None, timed_out=False, stdout='', stderr='')
+    result = dict(run, exit=None, timed_out=False, stdout='', stderr='', cpu_s=None, max_rss_mib=None)
     start = time.time()
     try:
         p = run_impact(**{k: run[k] for k in RUN_ARGUMENTS if k in run})
-        result.update(exit=p.returncode, stdout=p.stdout or '', stderr=p.stderr or '')
+        result.update(exit=p.returncode, stdout=p.stdout or '', stderr=p.stderr or '',
+                      cpu_s=getattr(p, 'cpu_s', None), max_rss_mib=getattr(p, 'max_rss_mib', None))
     except subprocess.TimeoutExpired as e:
         result.update(timed_out=True, stdout=_text(e.stdout), stderr=_text(e.stderr))
     except OSError as e:
@@ -445,12 +485,14 @@ class TemplateError(Exception):
     """A block of a document that nothing fills."""
 
 
-def fill_blocks(text, value):
+def fill_blocks(text, value, keep_others=False):
     """text with every block <!-- NAME:begin -->...<!-- NAME:end --> filled
     with value(NAME) (value: a function, or a dict). A block whose begin
     marker ends its line gets the value on lines of its own, one written
     inline stays inline. A name value does not know (KeyError) is a
-    TemplateError. Returns (text, the names filled, in order)."""
+    TemplateError, or, with keep_others, a block left as it is (a study
+    that fills only its own blocks). Returns (text, the names filled, in
+    order)."""
     lookup = value.__getitem__ if isinstance(value, dict) else value
     names = []
 
@@ -459,6 +501,8 @@ def fill_blocks(text, value):
         try:
             new = lookup(name)
         except KeyError:
+            if keep_others:
+                return m.group(0)
             raise TemplateError(f'nothing fills the block {name}') from None
         names.append(name)
         if m.group(2).startswith('\n'):
@@ -468,11 +512,11 @@ def fill_blocks(text, value):
     return BLOCK.sub(fill, text), names
 
 
-def fill_file(path, value):
+def fill_file(path, value, keep_others=False):
     """Fills the blocks of the file at path in place (fill_blocks; the file
     is replaced whole or not at all); returns the names filled."""
     with open(path, encoding='utf-8') as f:
-        text, names = fill_blocks(f.read(), value)
+        text, names = fill_blocks(f.read(), value, keep_others)
     tmp = path + '.tmp'
     with open(tmp, 'w', encoding='utf-8') as f:
         f.write(text)
@@ -507,10 +551,6 @@ def main(argv):
     return 0
 
 
-if __name__ == '__main__':
-    sys.exit(main(sys.argv[1:]))
-
-
 def h5_problem(path):
     """What is wrong with the HDF5 file at path, '' when nothing is seen: not
     an HDF5 file, or shorter than the end of file its superblock records (a
@@ -533,3 +573,7 @@ def h5_problem(path):
             if size < end:
                 return f'truncated: {size} bytes of the {end} its superblock records'
     return ''
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv[1:]))

@@ -14,8 +14,10 @@
 #    as background jobs of this script, so that their process ids are known.
 # 3. tools/sweep init WORKDIR/sweep with tests/sweep/template.nml and
 #    mass x velocity = 2 x 2 scenes, then tools/sweep slurm --submit --wait
-#    (an sbatch --array job, at most 2 tasks at once), which collects
-#    WORKDIR/sweep/table.dat when the array has ended.
+#    asking one scene a task; the cluster's MaxArraySize = 2 (task ids 0
+#    and 1, read by the sweep from scontrol show config) makes it 2 array
+#    tasks of 2 scenes, at most 2 at once; it collects WORKDIR/sweep/table.dat
+#    when the array has ended.
 # 4. Stops slurmd, slurmctld and munged by the process ids it started (also
 #    on failure or interruption), cancels its job first if it is still there,
 #    and removes the temporary directory.
@@ -124,6 +126,7 @@ SelectTypeParameters=CR_Core
 ReturnToService=2
 SlurmdTimeout=30
 NodeName=impactnode NodeAddr=127.0.0.1 NodeHostname=localhost CPUs=$cpus State=UNKNOWN
+MaxArraySize=2
 PartitionName=impact Nodes=impactnode Default=YES MaxTime=INFINITE State=UP
 EOF
 export SLURM_CONF="$tmp/slurm.conf"
@@ -150,8 +153,8 @@ say "node impactnode is $state"
 rm -rf "$work/sweep"
 "$repo/tools/sweep" init "$work/sweep" --deck "$repo/tests/sweep/template.nml" \
     --vary impactor.mass=0.1,0.243 --vary impactor.velocity=1.5,3.0 || die "tools/sweep init failed"
-timeout "$deadline" "$repo/tools/sweep" slurm "$work/sweep" --max-running 2 --time 00:05:00 \
-    --job-name impact-test --submit --wait > "$work/submit.log" 2>&1
+timeout "$deadline" "$repo/tools/sweep" slurm "$work/sweep" --max-running 2 --scenes-per-task 1 \
+    --poll 1 --time 00:05:00 --job-name impact-test --submit --wait > "$work/submit.log" 2>&1
 code=$?
 cat "$work/submit.log"
 job=$(sed -n 's/^sweep: submitted job array \([0-9]*\).*/\1/p' "$work/submit.log")
