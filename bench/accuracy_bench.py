@@ -7,22 +7,29 @@ mesh, 2.5 us to start from), at the accuracy levels TOL = 0.05, 0.01 and
 0.002, each with the cap &accuracy max_cpu_s = --cap (default 600 s), and
 writes
 
-  bench/accuracy.dat      one row per scene and level: the outcome (met or
+  --results FILE          one row per scene and level: the outcome (met or
                           the cap reached), the runs of the ladder, their
                           total cpu and wall time, the run chosen (dt,
                           mesh) and each result's relative error
-  docs/PERFORMANCE.md     the block between the bench-accuracy:begin and
-                          bench-accuracy:end markers
+                          (out/bench/accuracy.dat; bench/accuracy.dat
+                          with --docs-dir docs)
+  --docs-dir DIR/PERFORMANCE.md
+                          a copy of docs/PERFORMANCE.md (out/docs by
+                          default; docs itself when DIR is docs, as make
+                          docs and make bench-accuracy DOCS_DIR=docs do)
+                          with the block between the bench-accuracy:begin
+                          and bench-accuracy:end markers filled
 
 Every run's files are in build/bench/accuracy/<scene>_<level>* (the ladder
 in <scene>_<level>_acc/). The accuracy runs use every CPU the process may
 use (the runs of a ladder that do not depend on each other run at once):
 the wall time is that of this machine at the time, the cpu time the sum
 of the runs'. The program is ./impact, or the one $IMPACT_EXE names.
-Usage: bench/accuracy_bench.py [--cap S] [--levels 0.05,0.01]
+Usage: bench/accuracy_bench.py [--cap S] [--levels 0.05,0.01] [--docs-dir DIR] [--results FILE]
 """
 import argparse
 import os
+import shutil
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -31,9 +38,8 @@ import impact_files as imf  # noqa: E402  (the one reader of summaries)
 
 EXE = os.environ.get('IMPACT_EXE') or os.path.join(ROOT, 'impact')   # ./impact, or $IMPACT_EXE
 RUN_DIR = os.path.join(ROOT, 'build', 'bench', 'accuracy')
-RESULTS = os.path.join(ROOT, 'bench', 'accuracy.dat')
-DOC = os.path.join(ROOT, 'docs', 'PERFORMANCE.md')
-BEGIN, END = '<!-- bench-accuracy:begin -->', '<!-- bench-accuracy:end -->'
+PUBLISHED_DOCS = os.path.join(ROOT, 'docs')                       # make docs: the published documents
+PUBLISHED_RESULTS = os.path.join(ROOT, 'bench', 'accuracy.dat')
 SCENES = [('clamped', 'input/clamped.nml'), ('simply_supported', 'input/simply_supported.nml')]
 RESULT_KEYS = ['peak_force_N', 'max_deflection_mm', 'contact_duration_us', 'time_of_peak_us',
                'max_strain_y_back']
@@ -62,7 +68,7 @@ def row(name, tol, s):
 
 def markdown(rows, cap):
     """The generated block of docs/PERFORMANCE.md."""
-    lines = [BEGIN, '',
+    lines = [
              f'`make bench-accuracy` (bench/accuracy_bench.py), cap {cap:g} s of cpu per accuracy run; '
              'relative errors as the run estimates them (time part + mesh part + their interaction; '
              'F peak force, w max deflection, T contact duration, t_F time of the peak, eps max back-face '
@@ -72,27 +78,35 @@ def markdown(rows, cap):
              '|' + '---|' * (8 + len(SHORT))]
     for r in rows:
         lines.append('| ' + ' | '.join(r[:2] + [r[2].replace('_', ' ')] + r[3:]) + ' |')
-    lines += ['', END]
     return '\n'.join(lines)
 
 
-def write_doc(block):
-    """Replaces the block in docs/PERFORMANCE.md (appended when absent)."""
-    with open(DOC, encoding='utf-8') as f:
-        text = f.read()
-    if BEGIN in text and END in text:
-        text = text[:text.index(BEGIN)] + block + text[text.index(END) + len(END):]
-    else:
-        text = text.rstrip('\n') + '\n\n' + block + '\n'
-    with open(DOC, 'w', encoding='utf-8') as f:
-        f.write(text)
+def write_doc(docs_dir, block):
+    """Fills the bench-accuracy block of docs_dir/PERFORMANCE.md, a copy of
+    the committed docs/PERFORMANCE.md unless docs_dir is docs; returns its path."""
+    doc = os.path.join(docs_dir, 'PERFORMANCE.md')
+    template = os.path.join(PUBLISHED_DOCS, 'PERFORMANCE.md')
+    os.makedirs(docs_dir, exist_ok=True)
+    if not (os.path.exists(doc) and os.path.samefile(doc, template)):
+        shutil.copyfile(template, doc)
+    if 'bench-accuracy' not in imf.fill_file(doc, {'bench-accuracy': block}, keep_others=True):
+        sys.exit(f'bench-accuracy: {template} has no bench-accuracy block')
+    return doc
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--cap', type=float, default=600.0, help='&accuracy max_cpu_s of each run (s)')
     parser.add_argument('--levels', default='0.05,0.01,0.002', help='the targets, comma-separated')
+    parser.add_argument('--docs-dir', default=os.path.join(ROOT, 'out', 'docs'),
+                        help='where PERFORMANCE.md is written (docs: the published one)')
+    parser.add_argument('--results', default=None,
+                        help='the table (out/bench/accuracy.dat; bench/accuracy.dat with --docs-dir docs)')
     args = parser.parse_args()
+    published = os.path.realpath(args.docs_dir) == os.path.realpath(PUBLISHED_DOCS)
+    results = os.path.abspath(args.results or (PUBLISHED_RESULTS if published
+                                               else os.path.join(ROOT, 'out', 'bench', 'accuracy.dat')))
+    os.makedirs(os.path.dirname(results), exist_ok=True)
     levels = [float(x) for x in args.levels.split(',')]
     rows = []
     for name, deck in SCENES:
@@ -100,15 +114,15 @@ def main():
             s = run_level(name, deck, tol, args.cap)
             rows.append(row(name, tol, s))
             print('bench-accuracy: ' + ' '.join(rows[-1]), flush=True)
-    with open(RESULTS, 'w', encoding='utf-8') as f:
+    with open(results, 'w', encoding='utf-8') as f:
         f.write('# make bench-accuracy (bench/accuracy_bench.py): impact --accuracy on the paper\'s scenes\n')
         f.write(f'# cap (&accuracy max_cpu_s) {args.cap:g} s per accuracy run\n')
         f.write('# scene target outcome runs cpu_s wall_s chosen_dt_us chosen_mesh '
                 + ' '.join(k + '_relative_error' for k in RESULT_KEYS) + '\n')
         for r in rows:
             f.write(' '.join(r) + '\n')
-    write_doc(markdown(rows, args.cap))
-    print(f'bench-accuracy: {RESULTS}, {DOC}')
+    doc = write_doc(os.path.abspath(args.docs_dir), markdown(rows, args.cap))
+    print(f'bench-accuracy: wrote {os.path.relpath(results, ROOT)} and {os.path.relpath(doc, ROOT)}')
 
 
 if __name__ == '__main__':

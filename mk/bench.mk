@@ -16,8 +16,9 @@
 #   make bench-kernels           build only the kernel timer
 #
 #   make bench-accuracy          the cost of impact --accuracy 0.05, 0.01, 0.002 on the
-#                                paper's scenes (bench/accuracy_bench.py): bench/accuracy.dat
-#                                and the bench-accuracy block of docs/PERFORMANCE.md;
+#                                paper's scenes (bench/accuracy_bench.py): out/bench/accuracy.dat
+#                                and the bench-accuracy block of $(DOCS_DIR)/PERFORMANCE.md
+#                                (DOCS_DIR=docs: bench/accuracy.dat and docs/PERFORMANCE.md);
 #                                BENCH_ACCURACY_ARGS='--cap 300' sets the cap of each run
 #
 # DOCS_DIR (the top Makefile) is out/docs by default, and BENCH_RESULTS
@@ -40,7 +41,7 @@ bench: impact $(BENCH_BUILD)/bench_kernels
 
 BENCH_ACCURACY_ARGS ?=
 bench-accuracy: impact
-	$(PYTHON) bench/accuracy_bench.py $(BENCH_ACCURACY_ARGS)
+	$(PYTHON) bench/accuracy_bench.py --docs-dir '$(DOCS_DIR)' $(BENCH_ACCURACY_ARGS)
 
 bench-kernels: $(BENCH_BUILD)/bench_kernels
 
