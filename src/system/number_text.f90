@@ -47,9 +47,27 @@ contains
    pure function int_str(i) result(s)
       integer, intent(in) :: i
       character(len=:), allocatable :: s
-      character(len=24) :: buf
-      write (buf, '(i0)') i
-      s = trim(buf)
+      character(len=12) :: buf                      ! -2147483648 at most
+      integer :: m, at
+      if (i == -huge(i) - 1) then                   ! no positive twin
+         write (buf, '(i0)') i
+         s = trim(buf)
+         return
+      end if
+      ! the digits from the right, as i0 writes them (an internal write costs some 1 us)
+      m = abs(i)
+      at = len(buf) + 1
+      do
+         at = at - 1
+         buf(at:at) = digit_chars(mod(m, 10) + 1:mod(m, 10) + 1)
+         m = m/10
+         if (m == 0) exit
+      end do
+      if (i < 0) then
+         at = at - 1
+         buf(at:at) = '-'
+      end if
+      s = buf(at:)
    end function int_str
 
    !> x with the fewest significant digits that read back to the same
