@@ -35,9 +35,10 @@ module number_text
    !> Magnitudes es16.7e3's fast path takes: their scaling is at most a
    !> few roundings (10.0**p by repeated products beyond 10**22).
    real(dp), parameter :: es_lowest = 1.0e-280_dp, es_highest = 1.0e280_dp
-   !> f16.4's fast path: below this the number fits the field (11 digits
-   !> before the point) and its 1e4 multiple an int64 exactly.
-   real(dp), parameter :: f_highest = 1.0e10_dp
+   !> f16.4's fast path: below this the 1e4 multiple is below 1e10, where
+   !> its one rounding (half an ulp, under 1e-6) stays well inside tie_margin
+   !> (times in us: up to 1 s; later ones by the formatted write).
+   real(dp), parameter :: f_highest = 1.0e6_dp
    !> The digits, for the fast paths.
    character(len=10), parameter :: digit_chars = '0123456789'
 
