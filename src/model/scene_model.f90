@@ -85,7 +85,7 @@ module scene_model
    use mesh, only: mesh_t, apply_boundary, nfe
    use element_matrices, only: element_geometry_t, element_stiffness
    use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, global_factor, &
-      global_solve, global_release
+      global_solve, global_release, global_copy
    use storage_choice, only: resolve_storage, sparse_crossover
    implicit none
    private
@@ -457,12 +457,20 @@ contains
 
    !> The plate's static stiffness at the impact point, K = 1/w under a unit
    !> force on the whole plate (module header): K_L of the model's mesh,
-   !> assembled and factored here once more (not counted among the run's
-   !> factorisations); free edges are replaced by simply supported ones.
-   subroutine point_stiffness(msh, lmt, geo, force_share, edges, storage, scene, stat, errmsg)
+   !> factored here once more (not counted among the run's factorisations);
+   !> free edges are replaced by simply supported ones. When the edges the
+   !> estimate holds are the model's own (clamped; simply supported and
+   !> immovable), K_L is a copy of the model's assembled [K_L], else it is
+   !> assembled anew. (An iterative solve preconditioned by the run's factor
+   !> of K_L + 4/dt^2 M would spare this factorization, but it needs some
+   !> 100 solves for K to 1e-7, 60 for 1 %, the cost of 3-4
+   !> factorizations: docs/PERFORMANCE.md, "The set-up's second
+   !> factorization".)
+   subroutine point_stiffness(msh, lmt, geo, stiff, force_share, edges, storage, scene, stat, errmsg)
       type(mesh_t), intent(in) :: msh                    !< the model's mesh and freedoms
       type(laminate_t), intent(in) :: lmt                !< the model's laminate
       type(element_geometry_t), intent(in) :: geo(:)     !< per-element geometry
+      type(global_matrix_t), intent(in) :: stiff         !< the model's [K_L], assembled in its storage
       real(dp), intent(in) :: force_share                !< share of the force the domain carries (-)
       character(len=*), intent(in) :: edges              !< &boundary edges
       character(len=*), intent(in) :: storage            !< 'band', 'skyline' or 'sparse'
@@ -489,13 +497,17 @@ contains
       else
          scene%stiffness_note = trim(edges) // ' edges, K_L of this mesh (bending and shear)'
       end if
-      call global_init(k, storage, m%neq, m%elem_eq, stat, errmsg)
-      if (stat /= 0) return
-      call global_zero(k)
-      elements: do e = 1, m%nelem
-         call element_stiffness(lmt, geo(e), ke)
-         call global_assemble(k, ke, m%elem_eq(:, e))
-      end do elements
+      if (all(m%eq == msh%eq)) then
+         call global_copy(k, stiff)                 ! the model's own freedoms: its K_L as assembled
+      else
+         call global_init(k, storage, m%neq, m%elem_eq, stat, errmsg)
+         if (stat /= 0) return
+         call global_zero(k)
+         elements: do e = 1, m%nelem
+            call element_stiffness(lmt, geo(e), ke)
+            call global_assemble(k, ke, m%elem_eq(:, e))
+         end do elements
+      end if
       call global_factor(k, stat, errmsg, bad_eq)
       if (stat /= 0) then
          errmsg = 'scene: static stiffness: ' // trim(errmsg)

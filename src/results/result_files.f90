@@ -33,6 +33,7 @@ module result_files
       path_kind, path_missing, path_regular, path_link, path_directory, path_other, create_new_file, remove_file, &
       file_lock_t, lock_file, unlock_file, rename_file, file_size, file_probe_t, probe_size
    use system_limits, only: name_max, path_max, read_only_file_system
+   use number_text, only: put_f16_4, put_es16_7e3, put_i6
    implicit none
    private
    public :: column_t, history_columns, nhist, nhist_strength, history_width
@@ -108,10 +109,6 @@ module result_files
    !> Bytes reserved for the summary before a run (reserve_summary): it is
    !> a few kilobytes.
    integer, parameter :: summary_reserve = 65536
-
-   !> Characters of a history row (its format in write_history_row): the
-   !> time, twelve reals and three integers.
-   integer, parameter :: history_row_len = 16 + 12*16 + 3*6
 
    !> Bytes of a history row on disk, newline included: the row, blanks, the
    !> newline. A power of two, and the header padded to a multiple of it, so
@@ -369,18 +366,19 @@ contains
       integer(int64) :: after
       integer :: c, at
       line = ''
-      write (line(:history_row_len), '(f16.4, 12es16.7e3, 3i6)') values(1)*history_columns(1)%scale, &
-         values(2:13)*history_columns(2:13)%scale, nint(values(14:16))
-      at = history_row_len
-      extra: do c = nhist + 1, size(values)
+      ! the text of the format (f16.4, 12es16.7e3, 3i6), then es16.7e3 or i6 for
+      ! each further column, byte for byte, by src/system/number_text.f90's writers
+      call put_f16_4(values(1)*history_columns(1)%scale, line(1:16))
+      at = 16
+      columns: do c = 2, size(values)
          if (history_columns(c)%whole) then
-            write (line(at + 1:at + 6), '(i6)') nint(values(c))
+            call put_i6(nint(values(c)), line(at + 1:at + 6))
             at = at + 6
          else
-            write (line(at + 1:at + 16), '(es16.7e3)') values(c)*history_columns(c)%scale
+            call put_es16_7e3(values(c)*history_columns(c)%scale, line(at + 1:at + 16))
             at = at + 16
          end if
-      end do extra
+      end do columns
       write (unit, '(a)', iostat=stat, iomsg=iomsg) line       ! the whole slot (history_slot)
       if (stat == 0) flush (unit, iostat=stat, iomsg=iomsg)
       if (stat /= 0) return
