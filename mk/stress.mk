@@ -13,11 +13,18 @@
 #   make stress STRESS_ONLY='paper m_1g'
 #                   only these scenes; their report is not the published
 #                   one: refused with DOCS_DIR=docs
+#   make stress STRESS_RANDOM=160 [STRESS_SEED=2]
+#                   instead 160 random extreme scenes (scheme 'fast', 400
+#                   steps each; tools/stress/stress.py random_scenes), the
+#                   same for the same seed; refused with DOCS_DIR=docs
 
 STRESS_JOBS ?= 2
 STRESS_ONLY ?=
+STRESS_RANDOM ?=
+STRESS_SEED ?= 1
 
 .PHONY: stress
 stress: setup impact
 	$(or $(PYTHON),python3) tools/stress/stress.py --jobs $(STRESS_JOBS) --docs-dir '$(DOCS_DIR)' \
-	    $(if $(strip $(STRESS_ONLY)),--only $(STRESS_ONLY))
+	    $(if $(strip $(STRESS_ONLY)),--only $(STRESS_ONLY)) \
+	    $(if $(strip $(STRESS_RANDOM)),--random $(STRESS_RANDOM) --seed $(STRESS_SEED))

@@ -38,7 +38,7 @@ program impact
       contact_indentation, contact_outcome, contact_report
    use contact_law, only: contact_history_t, contact_commit
    use contact_load, only: pattern_load, pattern_mean
-   use fast_scheme, only: fast_step
+   use substeps, only: fast_step_or_substeps
    use newmark, only: newmark_t, plate_state_t, impactor_t, newmark_init, newmark_predictor, &
       newmark_update, impactor_moved
    use run_recorder, only: record_t, record_open, record_step, record_close
@@ -46,7 +46,6 @@ program impact
    use run_report, only: echo_model, usage, usage_line
    use build_info, only: code_version
    use result_files, only: results_claim_t, result_suffixes, claim_results, release_results
-   use fixed_point, only: fp_report
    use other_analyses, only: run_other_analysis
    use process_stop, only: catch_stop_signals, remove_on_stop, stop_after_step, stop_signal_caught, &
       keep_file_size_errors, exit_program
@@ -59,6 +58,7 @@ program impact
    type(model_t) :: model                  ! laminate, mesh, [M], [K_L], contact law and load
    type(solver_t) :: solver                ! K_L + 4/dt^2 M factored, and the eq. (19) iteration's state
    type(newmark_t) :: nm                   ! Newmark's constants: the time step dt, 4/dt^2, 4/dt
+   type(newmark_t) :: step_nm              ! those the step is accepted with: nm, or its last sub-step's
    type(plate_state_t) :: plate            ! {D}, {V}, {A} at t
    type(impactor_t) :: imp                 ! the impactor (mass; position, velocity, force) at t
    type(impactor_t) :: imp_new             ! the impactor at t+dt under the assumed force
@@ -154,6 +154,7 @@ program impact
       call trace_step(tr, step, t, imp, .false.)
       ! -- {b} of eq. (20) and M{b}, fixed for the whole step
       call mass_times(model, newmark_predictor(nm, plate%d, plate%v, plate%a), mb)
+      step_nm = nm
       if (deck%scheme == 'paper') then
          ! -- assume the contact force, the plate not reacting at first (section 2.3)
          call contact_start(cit, model, hist, nm, imp, pattern_mean(cit%pattern, plate%d))
@@ -181,13 +182,16 @@ program impact
          if (.not. ok) call fail_in_run('time step did not converge: the contact iteration (eq. 17): ' &
                                         // contact_report(cit))
       else
-         ! -- scheme 'fast': the contact equation solved inside each eq. (19) iteration
-         call fast_step(solver, model, nm, mb, plate, imp, hist, d_new, imp_new, cit, ok, stat, errmsg)
+         ! -- scheme 'fast': the contact equation solved inside each eq. (19) iteration; a step
+         !    that does not converge is taken again in sub-steps (src/scheme/substeps.f90)
+         call fast_step_or_substeps(solver, model, nm, mb, plate, imp, hist, d_new, imp_new, cit, step_nm, ok, &
+                                    stat, errmsg)
          call check_solver('the nonlinear iteration (eq. 19) with the contact equation')
          call trace_iteration(tr, step, 1, cit, solver, imp_new, d_new, hist, deck%scheme)
       end if
-      ! -- accept the step: Newmark update (eq. 20), the impactor, the contact history
-      call newmark_update(nm, plate%d, d_new, plate%v, plate%a)
+      ! -- accept the step: Newmark update (eq. 20; a sub-stepped step: its last sub-step's), the
+      !    impactor, the contact history
+      call newmark_update(step_nm, plate%d, d_new, plate%v, plate%a)
       plate%d = d_new
       imp = imp_new
       call record_step(rec, step, model, solver, plate, imp, hist, cit, cit%iterations, cit%converged, stat, errmsg)
@@ -248,11 +252,12 @@ contains
       if (.not. restarting) call restart_discard(deck)      ! an earlier run's restart point
    end subroutine read_input
 
-   !> A solver failure or an unconverged step of scheme 'fast' stops the run.
+   !> A solver failure or a step of scheme 'fast' that did not converge, even
+   !> in sub-steps, stops the run (errmsg: the iteration's report).
    subroutine check_solver(what)
       character(len=*), intent(in) :: what
       if (stat /= 0) call fail_in_run('plate solution: ' // errmsg)
-      if (.not. ok) call fail_in_run('time step did not converge: ' // what // ': ' // fp_report(solver%guard))
+      if (.not. ok) call fail_in_run('time step did not converge: ' // what // ': ' // trim(errmsg))
    end subroutine check_solver
 
    !> The end of a run: the summary with its status, the last words; a run

@@ -25,7 +25,7 @@ module plate_model
    use deck_schema, only: deck_t
    implicit none
    private
-   public :: model_t, build_model, release_assembled, nonlinear_force, mass_times, gather_element, &
+   public :: model_t, build_model, assemble_matrices, release_assembled, nonlinear_force, mass_times, gather_element, &
              scatter_add_element, centre_deflection, back_face_strain, max_deflection, plate_kinetic_energy, &
              plate_strain_energy
 
@@ -61,7 +61,6 @@ contains
       integer, intent(out) :: stat              !< 0 on success
       character(len=*), intent(inout) :: errmsg !< reason on failure
       type(shear_rule_t) :: rule
-      real(dp) :: ke(nfe, nfe), me(nfe, nfe)
       integer :: e
       logical :: ok
 
@@ -122,18 +121,9 @@ contains
       ! -- [M] and [K_L], assembled once (eq. 15), in the deck's storage or
       !    the one 'auto' picks for this many equations (src/model/scene_model.f90)
       call choose_storage(deck%storage, model%msh%neq, deck%analysis_kind == 'modes', model%scene)
-      call global_init(model%mass, model%scene%storage, model%msh%neq, model%msh%elem_eq, stat, errmsg)
+      call assemble_matrices(model%msh, model%lmt, model%geo, model%scene%storage, model%mass, model%stiff, &
+                             stat, errmsg)
       if (stat /= 0) return
-      call global_init(model%stiff, model%scene%storage, model%msh%neq, model%msh%elem_eq, stat, errmsg)
-      if (stat /= 0) return
-      call global_zero(model%mass)
-      call global_zero(model%stiff)
-      elements: do e = 1, model%msh%nelem
-         call element_mass(model%lmt, model%geo(e), me)
-         call element_stiffness(model%lmt, model%geo(e), ke)
-         call global_assemble(model%mass, me, model%msh%elem_eq(:, e))
-         call global_assemble(model%stiff, ke, model%msh%elem_eq(:, e))
-      end do elements
       call work_build(model%msh, model%lmt, model%geo, model%work)
 
       ! -- the scene's static estimate, and the theory it calls for
@@ -150,6 +140,36 @@ contains
                          model%scene%theory_reason)
       model%nonlinear = model%scene%theory == 'nonlinear'
    end subroutine build_model
+
+   !> [M] and [K_L] assembled from the element matrices (eq. 15, Appendix B)
+   !> in the storage `storage`: by build_model, and again by a refactoring
+   !> of the left-hand matrix for another time step once the model's own
+   !> were released (src/scheme/plate_solver.f90, solver_refactor), with
+   !> the same operations in the same order: the same bits.
+   subroutine assemble_matrices(msh, lmt, geo, storage, mass, stiff, stat, errmsg)
+      type(mesh_t), intent(in) :: msh                   !< mesh and freedoms
+      type(laminate_t), intent(in) :: lmt               !< laminate
+      type(element_geometry_t), intent(in) :: geo(:)    !< per-element geometry and shear operator
+      character(len=*), intent(in) :: storage           !< the storage of the matrices (the scene's)
+      type(global_matrix_t), intent(inout) :: mass      !< [M], released and assembled
+      type(global_matrix_t), intent(inout) :: stiff     !< [K_L], released and assembled
+      integer, intent(out) :: stat                      !< 0 on success
+      character(len=*), intent(inout) :: errmsg         !< reason on failure
+      real(dp) :: ke(nfe, nfe), me(nfe, nfe)            ! element stiffness and mass matrices
+      integer :: e                                      ! element
+      call global_init(mass, storage, msh%neq, msh%elem_eq, stat, errmsg)
+      if (stat /= 0) return
+      call global_init(stiff, storage, msh%neq, msh%elem_eq, stat, errmsg)
+      if (stat /= 0) return
+      call global_zero(mass)
+      call global_zero(stiff)
+      elements: do e = 1, msh%nelem
+         call element_mass(lmt, geo(e), me)
+         call element_stiffness(lmt, geo(e), ke)
+         call global_assemble(mass, me, msh%elem_eq(:, e))
+         call global_assemble(stiff, ke, msh%elem_eq(:, e))
+      end do elements
+   end subroutine assemble_matrices
 
    !> Release the assembled [M] and [K_L] once the impact's left-hand matrix
    !> K_L + 4/dt^2 M is factored: its time steps form M x and K_N(D) D

@@ -77,7 +77,8 @@ module run_recorder
 
    !> Kinds of warning, each given once (later ones are counted).
    integer, parameter :: warn_mixing = 1, warn_contact = 2, warn_deflection = 3, warn_unconverged = 4, &
-                         warn_energy = 5, warn_indentation = 6, warn_drift = 7, warn_energy_lost = 8, nwarn = 8
+                         warn_energy = 5, warn_indentation = 6, warn_drift = 7, warn_energy_lost = 8, &
+                         warn_substeps = 9, nwarn = 9
    !> Energy the integration may create before it is warned, as a fraction
    !> of E0 (docs/STABILITY.md, "The energy bound"): the average acceleration
    !> rule conserves energy, so created energy is the time step's error in
@@ -116,6 +117,7 @@ module run_recorder
       integer :: steps = 0, contacts = 0, contact_iterations = 0, max_contact_iter = 0, max_solves = 0
       integer :: unconverged_steps = 0, first_unconverged = 0, nonlinear_fallback_steps = 0
       integer :: contact_fallback_steps = 0, warnings = 0, mixed_seen = 0, solves_before = 0
+      integer :: substepped_steps = 0            !< steps of scheme 'fast' taken in sub-steps (src/scheme/substeps.f90)
       logical :: in_contact = .false.
       ! the samples of the largest contact force (N), deflection under the impactor (m) and back-face
       ! strain (-), refined between the steps by src/results/step_peak.f90
@@ -446,7 +448,7 @@ contains
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
       real(dp), parameter :: none(2) = 0.0_dp
-      type(warning_check_t) :: table(9)
+      type(warning_check_t) :: table(10)
       integer :: k
 
       stat = 0
@@ -481,7 +483,10 @@ contains
          warning_check_t(warn_unconverged, .not. converged, none, 'the contact iteration (eq. 17) did not ' &
             // 'converge in max_contact_iter iterations; with force_update = ''plain'' the step keeps its last ' &
             // 'assumed force and the run goes on (later such steps are counted in the summary, ' &
-            // 'unconverged_steps)') ]
+            // 'unconverged_steps)'), &
+         warning_check_t(warn_substeps, solver%substeps > 0, none, 'the iteration of the step (eq. 19 with ' &
+            // 'the contact equation) did not converge; the step was taken again in ' // int_str(solver%substeps) &
+            // ' sub-steps, which did (later such steps are counted in the summary, substepped_steps)') ]
       do k = 1, size(table)
          if (.not. table(k)%due) cycle
          call count_step(rec, table(k)%kind, fig%step, solver)
@@ -508,6 +513,8 @@ contains
       case (warn_unconverged)
          rec%unconverged_steps = rec%unconverged_steps + 1
          if (rec%first_unconverged == 0) rec%first_unconverged = step
+      case (warn_substeps)
+         rec%substepped_steps = rec%substepped_steps + 1
       end select
    end subroutine count_step
 
@@ -641,7 +648,8 @@ contains
       end if
       if (rec%warnings > 0) write (error_unit, '(a)') 'impact: ' // int_str(rec%warnings) // ' warning(s) above; ' &
          // 'steps with a fall-back: nonlinear ' // int_str(rec%nonlinear_fallback_steps) // ', contact ' &
-         // int_str(rec%contact_fallback_steps) // '; largest w/h ' // real_short(rec%max_w_over_h)
+         // int_str(rec%contact_fallback_steps) // ', sub-stepped ' // int_str(rec%substepped_steps) &
+         // '; largest w/h ' // real_short(rec%max_w_over_h)
    end subroutine closing_warnings
 
    !> The summary's items of the run's figures, from its status to the
@@ -696,6 +704,7 @@ contains
       call summary_time(s, 'diverged_at_us', 'diverged_at', rec%diverged_at, rec%diverged_at >= 0.0_dp)
       call summary_integer(s, 'nonlinear_fallback_steps', rec%nonlinear_fallback_steps)
       call summary_integer(s, 'contact_fallback_steps', rec%contact_fallback_steps)
+      call summary_integer(s, 'substepped_steps', rec%substepped_steps)
       call summary_real(s, 'max_w_over_h', 'max_w_over_h', '-', rec%max_w_over_h, 1.0_dp)
       if (rec%c_plate >= 0.0_dp) then
          call summary_real(s, 'plate_compliance_m_per_N', 'plate_compliance', 'm/N', rec%c_plate, 1.0_dp)
@@ -759,7 +768,8 @@ contains
          stat)
       call put_ints(u, [rec%steps, rec%contacts, rec%contact_iterations, rec%max_contact_iter, rec%max_solves, &
          rec%unconverged_steps, rec%first_unconverged, rec%nonlinear_fallback_steps, rec%contact_fallback_steps, &
-         rec%warnings, rec%mixed_seen, rec%solves_before, merge(1, 0, rec%in_contact), merge(1, 0, rec%warned)], stat)
+         rec%warnings, rec%mixed_seen, rec%solves_before, merge(1, 0, rec%in_contact), rec%substepped_steps, &
+         merge(1, 0, rec%warned)], stat)
       call put_real(u, real(rec%hist_bytes, dp), stat)
       call put_impactor(u, rec%imp_prev, stat)
       call put_pattern(u, rec%pattern_prev, stat)
@@ -806,13 +816,14 @@ contains
       rec%deflection_peak = peak_restore(r(peak_state_size + 1:2*peak_state_size))
       rec%strain_peak = peak_restore(r(2*peak_state_size + 1:))
       call take_ints(u, i, stat)
-      if (stat == 0 .and. size(i) /= 13 + nwarn) stat = 1
+      if (stat == 0 .and. size(i) /= 14 + nwarn) stat = 1
       if (stat /= 0) return
       rec%steps = i(1);  rec%contacts = i(2);  rec%contact_iterations = i(3);  rec%max_contact_iter = i(4)
       rec%max_solves = i(5);  rec%unconverged_steps = i(6);  rec%first_unconverged = i(7)
       rec%nonlinear_fallback_steps = i(8);  rec%contact_fallback_steps = i(9);  rec%warnings = i(10)
       rec%mixed_seen = i(11);  rec%solves_before = i(12);  rec%in_contact = i(13) /= 0
-      rec%warned = i(14:) /= 0
+      rec%substepped_steps = i(14)
+      rec%warned = i(15:) /= 0
       bytes = 0.0_dp
       call take_real(u, bytes, stat)
       rec%hist_bytes = nint(bytes, int64)

@@ -1,6 +1,8 @@
 !> The plate solution of a time step (Fig. 3, "nonlinear plate solution"):
 !> Akay's constant-coefficient iteration of eq. (19), stopped by eq. (18),
-!> on the left-hand matrix K_L + 4/dt^2 M that is factored once per run.
+!> on the left-hand matrix K_L + 4/dt^2 M that is factored once per run (and
+!> again only around a step of scheme 'fast' taken in sub-steps,
+!> src/scheme/substeps.f90).
 !>
 !>   (K_L + 4/dt^2 M) D^{n+1} = F + M b - K_N(D^n) D^n        eq. (19)
 !>   sum (D^{n+1} - D^n)^2 / sum (D^{n+1} - D_t)^2 < C_r2      eq. (18)
@@ -14,15 +16,16 @@
 !> contact load has touched.
 module plate_solver
    use kinds, only: dp
-   use plate_model, only: model_t, nonlinear_force
+   use plate_model, only: model_t, nonlinear_force, assemble_matrices
    use mesh, only: describe_equation
    use newmark, only: newmark_t
-   use global_matrix, only: global_matrix_t, global_copy, global_axpy_matrix, global_factor, global_solve
+   use global_matrix, only: global_matrix_t, global_copy, global_axpy_matrix, global_factor, global_solve, &
+      global_release
    use contact_load, only: load_pattern_t, pattern_mean
    use fixed_point, only: fp_guard_t, fp_start, fp_check, fp_next, fp_report, fp_converged, fp_iterating
    implicit none
    private
-   public :: solver_t, solver_init, plate_solve, solve_once, iteration_end, contact_response, &
+   public :: solver_t, solver_init, solver_refactor, plate_solve, solve_once, iteration_end, contact_response, &
              add_pattern_response, pattern_compliance
 
    !> The plate solver of a run.
@@ -49,6 +52,9 @@ module plate_solver
       !> last (src/scheme/fast_scheme.f90, "one solve per step")
       real(dp) :: contraction(2) = huge(1.0_dp)
       integer :: since_measured = 0
+      !> scheme 'fast': the sub-steps the last time step was taken in
+      !> (0: the step itself; src/scheme/substeps.f90), set every step
+      integer :: substeps = 0
    end type solver_t
 
 contains
@@ -62,18 +68,54 @@ contains
       type(solver_t), intent(out) :: solver     !< the solver
       integer, intent(out) :: stat              !< 0 on success
       character(len=*), intent(inout) :: errmsg !< names equation, node and freedom on failure
-      integer :: bad_eq
       solver%max_iter = model%max_nonlinear_iter
       solver%cr2 = model%cr2
       allocate (solver%ratios(model%max_nonlinear_iter), solver%resp_eq(0), solver%resp(model%msh%neq, 0))
       call global_copy(solver%keff, model%stiff)
-      call global_axpy_matrix(solver%keff, nm%a0, model%mass)
+      call factor_left_matrix(solver, model, nm, model%mass, stat, errmsg)
+   end subroutine solver_init
+
+   !> The solver's left-hand matrix for another time step nm%dt (a step
+   !> taken in sub-steps, src/scheme/substeps.f90, and back to the run's
+   !> step after): the old factor is released first, [K_L] and [M]
+   !> assembled again into its place (the model's were released after the
+   !> set-up; module plate_model, assemble_matrices), K_L + 4/dt^2 M formed
+   !> in place and factored. One factor at a time, and at most [K_L], [M]
+   !> and the factor at once, less than the set-up's peak (which also held
+   !> the copy). The same operations as solver_init: the run's step
+   !> factored again gives the same bits. The response columns belong to
+   !> the old matrix: the caller keeps or drops them (none are held after).
+   subroutine solver_refactor(solver, model, nm, stat, errmsg)
+      type(solver_t), intent(inout) :: solver   !< solver: its factor replaced, counted
+      type(model_t), intent(in) :: model        !< the model (its mesh, laminate and elements)
+      type(newmark_t), intent(in) :: nm         !< Newmark constants of the new step
+      integer, intent(out) :: stat              !< 0 on success
+      character(len=*), intent(inout) :: errmsg !< names equation, node and freedom on failure
+      type(global_matrix_t) :: mass             ! [M], assembled for the factoring and released
+      call global_release(solver%keff)
+      solver%nresp = 0
+      call assemble_matrices(model%msh, model%lmt, model%geo, model%scene%storage, mass, solver%keff, stat, errmsg)
+      if (stat == 0) call factor_left_matrix(solver, model, nm, mass, stat, errmsg)
+      call global_release(mass)
+   end subroutine solver_refactor
+
+   !> K_L + 4/dt^2 M from solver%keff = K_L, factored and counted. A pivot
+   !> that fails names its equation, node and freedom.
+   subroutine factor_left_matrix(solver, model, nm, mass, stat, errmsg)
+      type(solver_t), intent(inout) :: solver      !< solver: keff holds K_L on entry, the factor on exit
+      type(model_t), intent(in) :: model           !< the model (its mesh, to name a pivot)
+      type(newmark_t), intent(in) :: nm            !< Newmark constants
+      type(global_matrix_t), intent(in) :: mass    !< [M]
+      integer, intent(out) :: stat                 !< 0 on success
+      character(len=*), intent(inout) :: errmsg    !< names equation, node and freedom on failure
+      integer :: bad_eq                            ! the equation of a failed pivot (0: none)
+      call global_axpy_matrix(solver%keff, nm%a0, mass)
       bad_eq = 0
       call global_factor(solver%keff, stat, errmsg, bad_eq)
       solver%factorizations = solver%factorizations + 1
       if (stat /= 0 .and. bad_eq > 0) &
          errmsg = 'K_L + 4/dt^2 M is not positive definite: pivot of ' // trim(describe_equation(model%msh, bad_eq))
-   end subroutine solver_init
+   end subroutine factor_left_matrix
 
    !> The plate at t+dt under the load vector `load` = M b + F (the contact
    !> force over its area, or the pressure analysis's load): Akay's

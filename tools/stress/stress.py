@@ -26,13 +26,20 @@ scenes: written to out/docs and the like, never to docs/.
 The scenes run through impact_files.run_many. Exit status 0 when every scene
 passes, 1 otherwise.
 
-Usage: tools/stress/stress.py [--jobs N] [--only NAME...] [--impact PATH] [--docs-dir DIR]
+With --random N, the scenes are instead N random extreme scenes
+(random_scenes: mass, velocity, thickness, time step, mesh, edges and theory
+drawn at random over the ranges of SCENES, scheme 'fast', 400 steps each;
+--seed S makes another draw); their report goes to out/docs, never docs/.
+
+Usage: tools/stress/stress.py [--jobs N] [--only NAME...] [--random N [--seed S]] [--impact PATH]
+                              [--docs-dir DIR]
 Python 3 standard library only.
 """
 
 import argparse
 import math
 import os
+import random
 import re
 import shutil
 import sys
@@ -157,6 +164,35 @@ SCENES = [
 ]
 
 
+def random_scenes(n, seed):
+    """n random extreme scenes: the paper's scene with the impactor's mass
+    (1 g - 20 kg), its velocity (0.05 - 50 m/s), the thickness (0.15 - 30 mm,
+    a/h 1000 - 5) and the time step (0.25 - 20 us) drawn log-uniformly, the
+    quarter mesh (4 x 3 - 18 x 12), the edges and the theory at random, scheme
+    'fast' (the default), 400 steps each. The same seed gives the same scenes."""
+    rng = random.Random(seed)
+
+    def log_uniform(lo, hi):
+        return 10.0 ** rng.uniform(math.log10(lo), math.log10(hi))
+    scenes = []
+    for i in range(n):
+        mass, velocity = log_uniform(1.0e-3, 20.0), log_uniform(0.05, 50.0)
+        h, dt = log_uniform(1.5e-4, 0.03), log_uniform(2.5e-7, 2.0e-5)
+        nx = rng.choice([4, 6, 9, 12, 18])
+        edges = rng.choice(['clamped', 'simply_supported', 'free'])
+        theory = rng.choice(['nonlinear', 'nonlinear', 'linear'])
+        what = 'm %.3g kg, v0 %.3g m/s, h %.3g mm, dt %.3g us, %d x %d, %s, %s' % (
+            mass, velocity, h * 1e3, dt * 1e6, nx, 2 * nx // 3, edges, theory)
+        scenes.append(dict(scene('random_%03d' % (i + 1), what, {
+            'impactor': {'mass': '%.6g' % mass, 'velocity': '%.6g' % velocity},
+            'plate': {'h': '%.6g' % h},
+            'mesh': {'nx': str(nx), 'ny': str(2 * nx // 3)},
+            'boundary': {'edges': "'%s'" % edges},
+            'analysis': {'theory': "'%s'" % theory, 'dt': '%.6g' % dt, 't_end': '%.6g' % (400 * dt),
+                         'scheme': "'fast'"}}), group='random', beyond=True))
+    return scenes
+
+
 def scene_deck(sc, prefix):
     """The deck of a scene (its groups): the paper's scene with the scene's changes."""
     groups = [[g, [[name, value] for name, value in values.items()]] for g, values in BASE.items()]
@@ -209,7 +245,8 @@ def analyse(run):
     else:
         r['lost'] = r['created'] = math.nan
     for key in ('steps', 'peak_force_N', 'contacts', 'max_w_over_h', 'nonlinear_fallback_steps',
-                'contact_fallback_steps', 'warnings', 'plate_solves', 'cpu_s', 'unconverged_steps'):
+                'contact_fallback_steps', 'substepped_steps', 'warnings', 'plate_solves', 'factorizations',
+                'cpu_s', 'unconverged_steps'):
         r[key] = s.get(key, math.nan)
     r['status'] = s.get('status', '(no summary)')
     diag = [l for l in stderr.splitlines() if 'time step did not converge' in l]
@@ -265,6 +302,8 @@ COLUMNS = [
     ('max_w_over_h', '-', 'largest plate deflection / thickness', '{:.3g}'),
     ('nonlinear_fallback_steps', '-', 'steps where eq. (19) fell back to Anderson mixing', '{:.0f}'),
     ('contact_fallback_steps', '-', 'steps where the contact iteration fell back', '{:.0f}'),
+    ('substepped_steps', '-', "steps of scheme 'fast' taken again in sub-steps", '{:.0f}'),
+    ('factorizations', '-', 'factorizations of the left-hand matrix', '{:.0f}'),
     ('plate_solves', '-', 'back substitutions', '{:.0f}'),
     ('cpu_s', 's', 'cpu time ./impact reports', '{:.2f}'),
     ('wall_s', 's', 'wall-clock time of the run', '{:.1f}'),
@@ -294,15 +333,15 @@ def write_results(results, path):
 
 def md_table(results):
     head = ('| scene | what changes | outcome | steps | NaN/Inf | energy lost (E0) | energy created (E0) '
-            '| peak F (N) | contacts | max w/h | fall-back steps (eq. 19 / contact) | cpu (s) | check |')
+            '| peak F (N) | contacts | max w/h | fall-back steps (eq. 19 / contact / sub-stepped) | cpu (s) | check |')
     lines = [head, '|' + '---|' * (head.count('|') - 1)]
     for r in results:
-        lines.append('| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s / %s | %s | %s |' % (
+        lines.append('| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s / %s / %s | %s | %s |' % (
             r['name'], r['what'], r['outcome'], fmt(r['steps'], '{:.0f}'), 'yes' if r['nan'] else 'no',
             fmt(r['lost'], '{:.2e}'), fmt(r['created'], '{:.2e}'), fmt(r['peak_force_N'], '{:.4g}'),
             fmt(r['contacts'], '{:.0f}'), fmt(r['max_w_over_h'], '{:.3g}'),
             fmt(r['nonlinear_fallback_steps'], '{:.0f}'), fmt(r['contact_fallback_steps'], '{:.0f}'),
-            fmt(r['cpu_s'], '{:.1f}'), 'pass' if r['pass'] else 'FAIL: ' + '; '.join(r['problems'])))
+            fmt(r['substepped_steps'], '{:.0f}'), fmt(r['cpu_s'], '{:.1f}'), 'pass' if r['pass'] else 'FAIL: ' + '; '.join(r['problems'])))
     return '\n'.join(lines)
 
 
@@ -348,17 +387,21 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     ap.add_argument('--jobs', type=int, default=2, help='scenes run at once (default 2, at most 2)')
     ap.add_argument('--only', nargs='*', help='run only these scenes (their report never goes to docs/)')
+    ap.add_argument('--random', type=int, default=0, metavar='N',
+                    help='run N random extreme scenes instead (their report never goes to docs/)')
+    ap.add_argument('--seed', type=int, default=1, help='the draw of --random (default 1)')
     ap.add_argument('--impact', default=os.path.join(ROOT, 'impact'), help='the program (default ./impact)')
     ap.add_argument('--docs-dir', default=os.path.join(ROOT, 'out', 'docs'),
                     help='the report is DIR/STABILITY.md (default out/docs; docs: the published one)')
     args = ap.parse_args(argv)
     jobs = max(1, min(args.jobs, 2))
-    scenes = [s for s in SCENES if not args.only or s['name'] in args.only]
+    pool = random_scenes(args.random, args.seed) if args.random > 0 else SCENES
+    scenes = [s for s in pool if not args.only or s['name'] in args.only]
     report = os.path.join(os.path.abspath(args.docs_dir), 'STABILITY.md')
-    if args.only and os.path.realpath(args.docs_dir) == os.path.realpath(os.path.dirname(TEMPLATE)):
-        sys.exit('stress: --only: a report of some scenes is not the published one: not into %s'
+    if (args.only or args.random) and os.path.realpath(args.docs_dir) == os.path.realpath(os.path.dirname(TEMPLATE)):
+        sys.exit('stress: --only, --random: a report of some scenes is not the published one: not into %s'
                  % os.path.relpath(TEMPLATE, ROOT))
-    unknown = sorted(set(args.only or ()) - {s['name'] for s in SCENES})
+    unknown = sorted(set(args.only or ()) - {s['name'] for s in pool})
     if unknown:
         sys.exit('stress: no scene %s' % ', '.join(unknown))
     if not os.access(args.impact, os.X_OK):
@@ -379,6 +422,10 @@ def main(argv=None):
     ordered = [results[s['name']] for s in scenes]
     write_results(ordered, os.path.join(WORK, 'results.dat'))
     npass = sum(r['pass'] for r in ordered)
+    substepped = [r for r in ordered if (r['substepped_steps'] or 0) > 0]
+    print('stress: %d completed, %d stopped with a diagnostic; %d took sub-steps (%.0f steps in all)'
+          % (sum(r['exit'] == 0 for r in ordered), sum(r['outcome'].startswith('stopped') for r in ordered),
+             len(substepped), sum(r['substepped_steps'] for r in substepped)))
     print('stress: %d scenes, %d passed, %d failed, %.0f s; results in %s'
           % (len(ordered), npass, len(ordered) - npass, elapsed, os.path.join(WORK, 'results.dat')))
     write_report(ordered, elapsed, jobs, report)
