@@ -24,7 +24,9 @@
 !>  - the Hertz contact radius a = sqrt(R alpha_m) and the impactor's mass
 !>    against the plate's, reported with the choice.
 !>
-!> The step: dt = min(T_H, T_1) / steps_per_time, rounded down to two
+!> The step (of the impact and the pressure analyses; the static and modal
+!> ones have none, their dt stays not given): dt = min(T_H, T_1) / steps_per_time
+!> (T_1 alone for the pressure analysis), rounded down to two
 !> significant digits (the average-acceleration rule's period error
 !> grows as (omega dt)^2 / 12). On the paper's plate (243 g at 3 m/s,
 !> T_H = 321 us) dt = T_H/128 = 2.5 us moves the peak force by up to 0.4 %
@@ -172,7 +174,8 @@ contains
       type(deck_t), intent(inout) :: deck       !< the validated deck
       type(settings_t) :: s
       logical :: dt_given, mesh_given, nx_given, ny_given
-      dt_given = is_given(deck, 'analysis', 'dt')
+      dt_given = is_given(deck, 'analysis', 'dt') .or. deck%analysis_kind == 'static' &
+                 .or. deck%analysis_kind == 'modes'      ! (no time steps: dt stays not given)
       nx_given = is_given(deck, 'mesh', 'nx')
       ny_given = is_given(deck, 'mesh', 'ny')
       mesh_given = nx_given .and. ny_given
