@@ -32,6 +32,8 @@ program impact
    use deck_schema, only: deck_t, accuracy_wanted
    use deck_echo, only: write_schema, write_deck_table
    use command_line, only: options_t, parse_command_line, read_input_deck
+   use input_deck, only: validate_deck
+   use scene_settings, only: choose_settings
    use plate_model, only: model_t, build_model, release_assembled, mass_times
    use plate_solver, only: solver_t, solver_init, plate_solve
    use contact_iteration, only: contact_iteration_t, contact_area, contact_start, contact_next, contact_cut, &
@@ -211,8 +213,10 @@ program impact
 
 contains
 
-   !> The command line, the deck and its settings (src/deck/command_line.f90);
-   !> an accuracy run (&accuracy target given) hands over to its driver and
+   !> The command line, the deck and its settings (src/deck/command_line.f90),
+   !> dt and the mesh chosen from the scene where the deck gives none
+   !> (src/model/scene_settings.f90); an accuracy run (&accuracy target
+   !> given) hands over to its driver and
    !> ends there; an impact run claims its result files before any work.
    subroutine read_input()
       type(options_t) :: opts
@@ -232,6 +236,9 @@ contains
       call trace_parse(opts%trace, tr, stat)
       if (stat /= 0) call bad_usage('--trace ' // opts%trace // ': give time steps, e.g. --trace 120,121')
       call read_input_deck(opts, input_unit, deck, stat, errmsg)
+      if (stat /= 0) call fail(errmsg)
+      call choose_settings(deck)            ! dt, nx, ny the deck does not give: from the scene
+      call validate_deck(deck, stat, errmsg)   ! (the chosen ones checked as given ones)
       if (stat /= 0) call fail(errmsg)
       if (accuracy_wanted(deck) .and. .not. check_only) then     ! a ladder of runs (src/accuracy/)
          call run_accuracy(opts, deck, output_unit, accuracy_exit, stat, errmsg)

@@ -58,6 +58,7 @@ contains
          if (.not. v%given) text = '(not given)'
       case (kind_integer)
          text = int_str(v%i)
+         if (.not. v%given) text = '(not given)'
       case (kind_logical)
          text = trim(merge('.true. ', '.false.', v%l))
       case (kind_word, kind_path)
@@ -119,6 +120,10 @@ contains
          line = line // piece
       end do vars
       write (unit, '(a)') lead // column // line
+      ! -- settings chosen from the scene (src/model/scene_settings.f90), one line each
+      column = ''
+      if (group == 'analysis' .and. len_trim(deck%dt_chosen) > 0) write (unit, '(a)') lead // column // trim(deck%dt_chosen)
+      if (group == 'mesh' .and. len_trim(deck%mesh_chosen) > 0) write (unit, '(a)') lead // column // trim(deck%mesh_chosen)
    end subroutine echo_group
 
    !> The deck table of docs/DECK.md (Markdown): group, variable, unit, default,

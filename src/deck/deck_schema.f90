@@ -134,9 +134,10 @@ module deck_schema
          'permanent indentation alpha0 = beta (alpha_m - alpha_p) (eq. 12)'), &
       deck_var_t('contact', 'load', kind_word, '-', 'hertz', 'hertz | point', 'how the force enters the plate: ' &
          // '''hertz'' (Hertz''s pressure over the contact disc a = sqrt(R alpha)) or ''point'' (eq. 10)'), &
-      deck_var_t('mesh', 'nx', kind_integer, '-', '9', '[1, 10000]', 'elements along x of the domain (with domain ' &
-         // '''auto'': of the quarter, doubled across each centre line the domain spans)'), &
-      deck_var_t('mesh', 'ny', kind_integer, '-', '6', '[1, 10000]', 'elements along y, likewise'), &
+      deck_var_t('mesh', 'nx', kind_integer, '-', '', '[1, 10000]', 'elements along x of the domain (with domain ' &
+         // '''auto'': of the quarter, doubled across each centre line the domain spans); not given: chosen ' &
+         // 'from the scene (src/model/scene_settings.f90)'), &
+      deck_var_t('mesh', 'ny', kind_integer, '-', '', '[1, 10000]', 'elements along y, likewise'), &
       deck_var_t('mesh', 'domain', kind_word, '-', 'auto', 'auto | quarter | half | full | strip', &
          '''auto'' (the smallest domain the scene allows), ''quarter'', ''half'', ''full'' or ''strip'''), &
       deck_var_t('mesh', 'average_bend_twist', kind_logical, '-', '.false.', '', &
@@ -156,7 +157,8 @@ module deck_schema
          'the analysis: ''impact'' (the paper''s), ''static'', ''modes'' or ''pressure'' (&load held from t = 0)'), &
       deck_var_t('analysis', 'theory', kind_word, '-', 'nonlinear', 'linear | nonlinear | auto', &
          '''linear'', ''nonlinear'' (von Karman) or ''auto'' (from the scene''s deflection estimate)'), &
-      deck_var_t('analysis', 'dt', kind_real, 's', '2.5e-6', '[1e-10, 1e-2]', 'time step'), &
+      deck_var_t('analysis', 'dt', kind_real, 's', '', '[1e-10, 1e-2]', 'time step; not given: chosen from ' &
+         // 'the scene, the Hertz contact time or the plate''s period / 160 (src/model/scene_settings.f90)'), &
       deck_var_t('analysis', 't_end', kind_real, 's', '3.0e-3', '(0, 10]', 'end time'), &
       deck_var_t('analysis', 'cr1', kind_real, '-', '2.0e-3', '(0, 1)', &
          'contact-force tolerance C_r1, eq. (17)'), &
@@ -230,7 +232,7 @@ module deck_schema
       real(dp) :: k = 0, q = 0, alpha_p = 0, beta = 0
       character(len=:), allocatable :: contact_load
       ! &mesh
-      integer :: nx = 0, ny = 0
+      integer :: nx = 0, ny = 0                     !< not_given_integer: not given (chosen, src/model/scene_settings.f90)
       character(len=:), allocatable :: domain, shear_rule
       logical :: average_bend_twist = .false.
       real(dp) :: grading = 0, stabilization = 0
@@ -238,7 +240,7 @@ module deck_schema
       character(len=:), allocatable :: edges, inplane
       ! &analysis
       character(len=:), allocatable :: analysis_kind, theory, scheme, storage, force_update
-      real(dp) :: dt = 0, t_end = 0, cr1 = 0, cr2 = 0
+      real(dp) :: dt = 0, t_end = 0, cr1 = 0, cr2 = 0   !< dt NaN: not given (chosen, as nx, ny)
       integer :: max_contact_iter = 0, max_nonlinear_iter = 0
       logical :: stop_on_warning = .false.
       ! &load
@@ -257,6 +259,10 @@ module deck_schema
       real(dp) :: accuracy_target = 0              !< NaN: not given (one plain run; accuracy_wanted)
       real(dp) :: accuracy_max_cpu_s = 0, accuracy_mesh_factor = 0
       character(len=:), allocatable :: accuracy_results
+      !> &analysis dt, &mesh nx, ny chosen from the scene where the deck does not
+      !> give them: what and why, one line each ('' for a given value;
+      !> src/model/scene_settings.f90, choose_settings)
+      character(len=240) :: dt_chosen = '', mesh_chosen = ''
       !> which variables the deck (or --set) gave, by entry of deck_vars
       logical :: given(size(deck_vars)) = .false.
    end type deck_t

@@ -531,7 +531,7 @@ contains
       if (deck%theory == 'auto') call need(c, deck%analysis_kind == 'impact', 'analysis', 'theory', "'auto'", &
          "chooses from the impact's deflection estimate: give 'linear' or 'nonlinear' for kind = '" &
          // deck%analysis_kind // "'")
-      call need(c, deck%dt < deck%t_end, 'analysis', 'dt', real_str(deck%dt), &
+      if (is_given(deck, 'analysis', 'dt')) call need(c, deck%dt < deck%t_end, 'analysis', 'dt', real_str(deck%dt), &
          'must be less than t_end = ' // real_str(deck%t_end))
       call need(c, deck%cr1 >= min_cr1, 'analysis', 'cr1', real_str(deck%cr1), 'must be at least ' &
          // real_str(min_cr1) // ' (100 eps): eq. (17) cannot be met below the rounding of the force')
@@ -558,6 +558,9 @@ contains
       real(dp), parameter :: max_steps = 1.0e8_dp, text_row_bytes = 230.0_dp, row_bytes = 360.0_dp, &
                              h5_fixed_bytes = 65536.0_dp
       real(dp) :: steps, ex, ey, neq, kd, memory, machine, output, room, biggest
+      ! dt, nx, ny not given: checked once chosen from the scene (src/model/scene_settings.f90)
+      if (.not. (is_given(deck, 'analysis', 'dt') .and. is_given(deck, 'mesh', 'nx') &
+                 .and. is_given(deck, 'mesh', 'ny'))) return
       steps = deck%t_end/deck%dt
       call need(c, steps <= max_steps, 'analysis', 'dt', real_str(deck%dt), 'gives t_end/dt = ' &
          // real_short(steps) // ' time steps, more than the limit of ' // real_short(max_steps) &

@@ -23,6 +23,7 @@ module plate_model
    use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, global_release
    use contact_law, only: contact_law_t
    use deck_schema, only: deck_t
+   use scene_settings, only: choose_settings
    implicit none
    private
    public :: model_t, build_model, assemble_matrices, release_assembled, nonlinear_force, mass_times, gather_element, &
@@ -61,6 +62,7 @@ contains
       integer, intent(out) :: stat              !< 0 on success
       character(len=*), intent(inout) :: errmsg !< reason on failure
       type(shear_rule_t) :: rule
+      type(deck_t) :: settled                   ! the deck with its dt, nx, ny (scene_settings)
       integer :: e
       logical :: ok
 
@@ -88,7 +90,9 @@ contains
       if (rule%code == shear_stabilized) rule%eps = deck%stabilization
 
       ! -- mesh, boundary conditions, equation numbers (Fig. 4)
-      call build_mesh(deck%a, deck%b, deck%nx, deck%ny, model%scene%domain, model%msh, stat, errmsg, &
+      settled = deck                   ! nx, ny of a deck made in code that gives none: from the scene
+      call choose_settings(settled)
+      call build_mesh(deck%a, deck%b, settled%nx, settled%ny, model%scene%domain, model%msh, stat, errmsg, &
                       x0=deck%x0, y0=deck%y0, grading=deck%grading, quarter_counts=deck%domain == 'auto')
       if (stat /= 0) return
       call apply_boundary(model%msh, deck%edges, deck%inplane, stat, errmsg)

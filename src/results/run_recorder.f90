@@ -610,6 +610,9 @@ contains
       call progress_end(rec%progress)
       call closing_warnings(rec, model)
       call run_summary(rec, solver, status, hist, imp, s)
+      ! -- dt and the mesh chosen from the scene (src/model/scene_settings.f90), when the deck gives none
+      if (len_trim(deck%dt_chosen) > 0) call summary_text(s, 'dt_chosen', after_equals(deck%dt_chosen))
+      if (len_trim(deck%mesh_chosen) > 0) call summary_text(s, 'mesh_chosen', after_equals(deck%mesh_chosen))
       call results_closing(rec%h5)                  ! <prefix>.h5 open for its last words
       call damage_close(rec%damage, model, s, rec%h5, dstat, dtext)
       call summary_integer(s, 'warnings', rec%warnings)
@@ -631,6 +634,13 @@ contains
       end if
       call last_words(rec, deck, cpu_s, unit)
    end subroutine record_close
+
+   !> The text after the first ' = ' of 'dt chosen = 2.0 us: ...' (the summary's value).
+   pure function after_equals(text) result(value)
+      character(len=*), intent(in) :: text          !< 'name = value'
+      character(len=:), allocatable :: value
+      value = trim(text(index(text, ' = ') + 3:))
+   end function after_equals
 
    !> At the end of a run: the theory warning of a linear run whose
    !> deflection needed the nonlinear theory (src/model/scene_model.f90),
