@@ -364,7 +364,7 @@ contains
       close (ud)
    end subroutine write_tables
 
-   !> The text of a summary's key, cut to n characters.
+   !> The text of a summary's key up to its first colon (the outcome, not its reason), cut to n characters.
    function text_of(s, key, n) result(text)
       type(summary_t), intent(in) :: s
       character(len=*), intent(in) :: key
@@ -373,7 +373,10 @@ contains
       integer :: i
       text = '-'
       i = summary_index(s, key)
-      if (i > 0) text = s%texts(i)(:min(n, len_trim(s%texts(i))))
+      if (i == 0) return
+      text = trim(s%texts(i))
+      if (index(text, ':') > 1) text = text(:index(text, ':') - 1)     ! the outcome, without its reason
+      text = text(:min(n, len(text)))
    end function text_of
 
    !> The median of x.
