@@ -184,15 +184,13 @@ program impact
          if (.not. ok) call fail_in_run('time step did not converge: the contact iteration (eq. 17): ' &
                                         // contact_report(cit))
       else
-         ! -- scheme 'fast': the contact equation solved inside each eq. (19) iteration; a step
-         !    that does not converge is taken again in sub-steps (src/scheme/substeps.f90)
+         ! -- scheme 'fast': the contact equation inside each eq. (19) iteration (sub-steps if it fails)
          call fast_step_or_substeps(solver, model, nm, mb, plate, imp, hist, d_new, imp_new, cit, step_nm, ok, &
                                     stat, errmsg)
          call check_solver('the nonlinear iteration (eq. 19) with the contact equation')
          call trace_iteration(tr, step, 1, cit, solver, imp_new, d_new, hist, deck%scheme)
       end if
-      ! -- accept the step: Newmark update (eq. 20; a sub-stepped step: its last sub-step's), the
-      !    impactor, the contact history
+      ! -- accept the step: Newmark update (eq. 20; after sub-steps, the last one's), impactor, contact
       call newmark_update(step_nm, plate%d, d_new, plate%v, plate%a)
       plate%d = d_new
       imp = imp_new
