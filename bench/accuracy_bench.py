@@ -121,7 +121,7 @@ def main():
             for tol in levels:
                 s = run_level(name, deck, tol, args.cap, targeted)
                 rows.append(row(name, tol, label, s))
-            print('bench-accuracy: ' + ' '.join(rows[-1]), flush=True)
+                print('bench-accuracy: ' + ' '.join(rows[-1]), flush=True)
     with open(results, 'w', encoding='utf-8') as f:
         f.write('# make bench-accuracy (bench/accuracy_bench.py): impact --accuracy on the paper\'s scenes\n')
         f.write(f'# cap (&accuracy max_cpu_s) {args.cap:g} s per accuracy run\n')
