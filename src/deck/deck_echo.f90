@@ -9,7 +9,7 @@ module deck_echo
       words_quoted, kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names
    implicit none
    private
-   public :: echo_deck, write_deck_table, write_schema
+   public :: echo_deck, write_deck_table, write_schema, deck_value_text
 
    !> Width of the echo's lines (the group column included), and of its group column.
    integer, parameter :: echo_width = 100, group_column = 11
@@ -43,7 +43,9 @@ contains
    end function group_applies_kind
 
    !> The value of entry iv as a deck would give it ('0.15', "'clamped'",
-   !> '.true.', '0, 45, ...'), or '(not given)'.
+   !> '.true.', '0, 45, ...'), or '(not given)'; reals with the fewest
+   !> digits that read back to the same double, so two texts are equal
+   !> exactly when the values are (the restart point's deck check).
    function deck_value_text(deck, iv) result(text)
       type(deck_t), intent(in) :: deck              !< the deck
       integer, intent(in) :: iv                     !< entry of deck_vars

@@ -45,8 +45,8 @@ module restart_point
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char
    use kinds, only: dp, msg_len
    use number_text, only: int_str, real_str
-   use deck_schema, only: deck_t, deck_vars, value_t, deck_bind, var_key, kind_real, kind_integer, kind_logical, &
-      kind_word, kind_path, kind_reals
+   use deck_schema, only: deck_t, deck_vars, var_key
+   use deck_echo, only: deck_value_text
    use c_library, only: c_open, c_close, c_fsync, c_unlink
    use file_system, only: rename_file, truncate_file, file_size, open_probe, parent_directory
    use mesh, only: ndof_node
@@ -276,7 +276,7 @@ contains
       call put_int(u, size(deck_vars), stat)
       do iv = 1, size(deck_vars)
          call put_text(u, var_key(iv), stat)
-         call put_text(u, value_text(deck, iv), stat)
+         call put_text(u, deck_value_text(deck, iv), stat)
       end do
    end subroutine put_deck
 
@@ -304,46 +304,13 @@ contains
          if (var_key(iv) /= key) stat = 1               ! another schema: another build
          if (stat /= 0) exit variables
          if (any(free_vars == key)) cycle variables
-         now = value_text(deck, iv)
+         now = deck_value_text(deck, iv)
          if (now == then) cycle variables
          dot = index(key, '.')
          if (len(changed) > 0) changed = changed // ', '
          changed = changed // '&' // key(:dot - 1) // ' ' // key(dot + 1:) // ' = ' // now // ' (was ' // then // ')'
       end do variables
    end subroutine compare_deck
-
-   !> The value of variable iv of the deck as text: reals with the fewest
-   !> digits that read back to the same double (so texts are equal exactly
-   !> when values are).
-   function value_text(deck, iv) result(text)
-      type(deck_t), intent(in) :: deck              !< the deck
-      integer, intent(in) :: iv                     !< entry of deck_vars
-      character(len=:), allocatable :: text
-      type(deck_t) :: copy
-      type(value_t) :: v
-      integer :: k
-      copy = deck
-      call deck_bind(copy, iv, v, .false.)
-      select case (deck_vars(iv)%kind)
-      case (kind_real)
-         text = real_str(v%r)
-         if (.not. v%given) text = '(not given)'
-      case (kind_integer)
-         text = int_str(v%i)
-      case (kind_logical)
-         text = trim(merge('.true. ', '.false.', v%l))
-      case (kind_word, kind_path)
-         text = "'" // v%s // "'"
-      case (kind_reals)
-         text = ''
-         do k = 1, size(v%list)
-            if (k > 1) text = text // ', '
-            text = text // real_str(v%list(k))
-         end do
-      case default
-         text = '?'
-      end select
-   end function value_text
 
    !> The solver's state that carries from step to step (module header).
    subroutine put_solver(u, solver, stat)
