@@ -152,7 +152,7 @@ contains
       type(summary_t), intent(in) :: s
       type(job_t), allocatable, intent(inout) :: jobs(:)
       type(deck_t) :: deck
-      real(dp) :: dt, a, g1, s1
+      real(dp) :: dt, a, g1, s1, gauge(2)
       integer :: nx, ny, n1x, n1y, st
       character(len=:), allocatable :: path
 
@@ -160,17 +160,19 @@ contains
       call read_deck_file(path, deck, st, errmsg)
       if (st /= 0) call fail(errmsg)
       dt = summary_value(s, 'chosen_dt_us', 0.0_dp)*1.0e-6_dp
+      ! the strain at the accuracy run's gauge (its ladder's: level 0's Gauss point)
+      gauge = [summary_value(s, 'gauge_x_mm', 0.0_dp), summary_value(s, 'gauge_y_mm', 0.0_dp)]*1.0e-3_dp
       nx = nint(summary_value(s, 'chosen_nx', 0.0_dp))
       ny = nint(summary_value(s, 'chosen_ny', 0.0_dp))
-      call add_impact(jobs, scene, path, 't2', dt/2.0_dp, nx, ny, 1.0_dp, 2.0_dp)
-      call add_impact(jobs, scene, path, 't4', dt/4.0_dp, nx, ny, 1.0_dp, 4.0_dp)
+      call add_impact(jobs, scene, path, 't2', dt/2.0_dp, nx, ny, 1.0_dp, 2.0_dp, gauge)
+      call add_impact(jobs, scene, path, 't4', dt/4.0_dp, nx, ny, 1.0_dp, 4.0_dp, gauge)
       ! the contact radius at the chosen run's peak force, and the graded mesh resolving it
       a = sqrt(0.5_dp*deck%diameter*(summary_value(s, 'peak_force_N', 0.0_dp)/deck%k)**(2.0_dp/3.0_dp))
       s1 = min(first_over_radius*a, 0.25_dp*0.5_dp*deck%a/real(nx, dp))
       call graded_mesh(0.5_dp*deck%a, 0.5_dp*deck%b, s1, largest_over_side, g1, n1x, n1y)
-      call add_impact(jobs, scene, path, 'm1', dt, n1x, n1y, g1, 1.0_dp)
+      call add_impact(jobs, scene, path, 'm1', dt, n1x, n1y, g1, 1.0_dp, gauge)
       call add_impact(jobs, scene, path, 'm2', dt, nint(ref_factor*n1x), nint(ref_factor*n1y), &
-                      g1**(1.0_dp/ref_factor), 3.0_dp)
+                      g1**(1.0_dp/ref_factor), 3.0_dp, gauge)
       if (scene%navier) then
          call add_navier(jobs, scene, path, 'n4', dt/4.0_dp, deck%t_end)
          call add_navier(jobs, scene, path, 'n8', dt/8.0_dp, deck%t_end)
@@ -178,22 +180,26 @@ contains
    end subroutine plan_references
 
    !> A reference run of ./impact at dt on nx x ny graded by g.
-      subroutine add_impact(jobs, scene, path, tag, dt_ref, nx_ref, ny_ref, g, weight)
+      subroutine add_impact(jobs, scene, path, tag, dt_ref, nx_ref, ny_ref, g, weight, gauge)
          type(job_t), allocatable, intent(inout) :: jobs(:)
          type(scene_t), intent(in) :: scene
          character(len=*), intent(in) :: path, tag
          real(dp), intent(in) :: dt_ref, g, weight
+         real(dp), intent(in) :: gauge(2)   !< the strain gauge (m): the accuracy run's
          integer, intent(in) :: nx_ref, ny_ref
          type(job_t) :: j
-         character(len=32) :: t, gt
+         character(len=32) :: t, gt, gx, gy
          write (t, '(es24.16)') dt_ref
+         write (gx, '(es24.16)') gauge(1)
+         write (gy, '(es24.16)') gauge(2)
          write (gt, '(es24.16)') g
          j%name = trim(scene%name) // '_' // tag
          j%exe = exe
          j%args = [character(len=4096) :: '--single', '--set', 'output.prefix=''' // out_dir // &
             trim(j%name) // '''', '--set', 'output.overwrite=.true.', '--set', 'analysis.dt=' // adjustl(t), &
             '--set', 'mesh.nx=' // int_str(nx_ref), '--set', 'mesh.ny=' // int_str(ny_ref), '--set', &
-            'mesh.grading=' // adjustl(gt), path]
+            'mesh.grading=' // adjustl(gt), '--set', 'output.gauge_x=' // adjustl(gx), '--set', &
+            'output.gauge_y=' // adjustl(gy), path]
          j%weight = weight*real(nx_ref, dp)*real(ny_ref, dp)
          jobs = [jobs, j]
       end subroutine add_impact

@@ -140,6 +140,7 @@ contains
       la%cap = deck%accuracy_max_cpu_s
       la%n0 = deck%nx*deck%ny
       la%impact_element = scene%element_size
+      la%gauge = model%gauge_xy                     ! the strain at one point on every mesh
       la%unit = unit
       call make_directories(la%dir(:len(la%dir) - 1), stat, iomsg)
       if (stat /= 0) then

@@ -5,7 +5,8 @@
 !>    impact --single [the user's --set ...]
 !>           --set output.prefix='<prefix>_acc/<run>' --set output.overwrite=.true.
 !>           --set output.hdf5=.false. --set analysis.dt=... --set mesh.nx=...
-!>           --set mesh.ny=... --set mesh.grading=... --set analysis.theory=...
+!>           --set mesh.ny=... --set mesh.grading=... --set output.gauge_x=...
+!>           --set output.gauge_y=... --set analysis.theory=...
 !>           [the variant's] deck.nml
 !>
 !> its terminal output in <prefix>_acc/<run>.log, its results read back
@@ -79,6 +80,7 @@ module accuracy_runs
       integer :: cpus = 1                         !< runs at a time
       integer :: n0 = 1                           !< elements of mesh level 0 (nx ny)
       real(dp) :: impact_element(2) = 0.0_dp      !< sides of the element at the impact point, level 0 (m)
+      real(dp) :: gauge(2) = 0.0_dp               !< the strain gauge of level 0 (m, from the plate centre)
       real(dp) :: cap = huge(1.0_dp)              !< &accuracy max_cpu_s (s)
       real(dp) :: spent = 0.0_dp                  !< cpu time of the runs done (s)
       real(dp) :: c_base = -1.0_dp                !< cost of a level-0 run (s), < 0: unknown
@@ -219,6 +221,8 @@ contains
       call add('mesh.nx=' // int_str(run%nx))
       call add('mesh.ny=' // int_str(run%ny))
       call add('mesh.grading=' // real_str(run%grading))
+      call add('output.gauge_x=' // real_str(la%gauge(1)))   ! every run's strain at level 0's gauge
+      call add('output.gauge_y=' // real_str(la%gauge(2)))
       call add('analysis.theory=' // quoted(trim(la%theory)))
       do i = 1, max_variant
          if (len_trim(run%variant(i)) > 0) call add(trim(run%variant(i)))

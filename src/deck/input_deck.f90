@@ -419,6 +419,7 @@ contains
       if (c%stat == 0) call check_plate(deck, c)
       if (c%stat == 0) call check_laminate(deck, c)
       if (c%stat == 0) call check_impactor(deck, c)
+      if (c%stat == 0) call check_gauge(deck, c)
       if (c%stat == 0) call check_domain(deck, c)
       if (c%stat == 0) call check_analysis(deck, c)
       if (c%stat == 0) call check_prefix(deck, c)
@@ -491,6 +492,18 @@ contains
          'the nose must lie on the plate: |y0| <= (b - diameter)/2 = ' // real_str(0.5_dp*(deck%b - deck%diameter)) &
          // ' m (y0 is measured from the plate centre)')
    end subroutine check_impactor
+
+   !> &output gauge_x, gauge_y: the strain gauge on the plate.
+   subroutine check_gauge(deck, c)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(checks_t), intent(inout) :: c            !< the checks so far
+      if (is_given(deck, 'output', 'gauge_x')) call need(c, abs(deck%gauge_x) <= 0.5_dp*deck%a, 'output', 'gauge_x', &
+         real_str(deck%gauge_x), 'the gauge must lie on the plate: |gauge_x| <= a/2 = ' // real_str(0.5_dp*deck%a) &
+         // ' m (gauge_x is measured from the plate centre)')
+      if (is_given(deck, 'output', 'gauge_y')) call need(c, abs(deck%gauge_y) <= 0.5_dp*deck%b, 'output', 'gauge_y', &
+         real_str(deck%gauge_y), 'the gauge must lie on the plate: |gauge_y| <= b/2 = ' // real_str(0.5_dp*deck%b) &
+         // ' m (gauge_y is measured from the plate centre)')
+   end subroutine check_gauge
 
    !> &mesh domain and its symmetry lines: D16 = D26 = 0 on them, the
    !> impact point on them, a layup symmetric about the mid-plane for a

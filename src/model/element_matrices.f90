@@ -34,7 +34,7 @@ module element_matrices
    private
    public :: element_geometry_t, element_geometry, element_mass, &
              element_stiffness, element_nonlinear_force, element_internal_force, &
-             element_strain_energy, element_inplane_strain, element_gauss_point, &
+             element_strain_energy, element_inplane_strain, element_gauss_point, point_derivs, &
              element_tangent_stiffness, element_pressure_load, &
              element_mass_integrals, element_mass_product, &
              ngp_full, nfe_elem
@@ -73,32 +73,38 @@ contains
 
       call gauss_2d(3, pts3, w3)
       full_rule: do g = 1, ngp_full
-         call point_derivs(pts3(:, g), w3(g), geo%phi3(:, g), geo%dx3(:, :, g), geo%wj3(g), det3(g))
+         call point_derivs(xe, pts3(:, g), w3(g), geo%phi3(:, g), geo%dx3(:, :, g), geo%wj3(g), det3(g))
          geo%xy3(:, g) = matmul(xe, geo%phi3(:, g))
       end do full_rule
       call shear_operator(xe, rule, geo%shear, shear_ok)
       ok = all(det3 > 0.0_dp) .and. shear_ok
-
-   contains
-
-      pure subroutine point_derivs(pt, w, phi, dxy, wj, det)
-         real(dp), intent(in) :: pt(2), w
-         real(dp), intent(out) :: phi(nen), dxy(2, nen), wj, det
-         real(dp) :: dref(2, nen), jac(2,2), jinv(2,2)
-         phi = shape9(pt(1), pt(2))
-         dref = shape9_derivs(pt(1), pt(2))
-         ! J(i,j) = d x_j / d xi_i
-         jac = matmul(dref, transpose(xe))
-         det = jac(1,1)*jac(2,2) - jac(1,2)*jac(2,1)
-         if (det <= 0.0_dp) then
-            dxy = 0.0_dp;  wj = 0.0_dp
-            return
-         end if
-         jinv = reshape([jac(2,2), -jac(2,1), -jac(1,2), jac(1,1)], [2,2])/det
-         dxy = matmul(jinv, dref)
-         wj = w*det
-      end subroutine point_derivs
    end subroutine element_geometry
+
+   !> Shape functions, their x, y derivatives, the weight w det J and det J
+   !> at the reference point pt of the element with node coordinates xe
+   !> (isoparametric map, eq. 14); dxy = 0 where det J <= 0.
+   pure subroutine point_derivs(xe, pt, w, phi, dxy, wj, det)
+      real(dp), intent(in) :: xe(2, nen)     !< node coordinates (m)
+      real(dp), intent(in) :: pt(2)          !< reference point (xi, eta)
+      real(dp), intent(in) :: w              !< its integration weight
+      real(dp), intent(out) :: phi(nen)      !< shape functions
+      real(dp), intent(out) :: dxy(2, nen)   !< their derivatives d/dx, d/dy (1/m)
+      real(dp), intent(out) :: wj            !< w det J (m^2)
+      real(dp), intent(out) :: det           !< det J (m^2)
+      real(dp) :: dref(2, nen), jac(2,2), jinv(2,2)
+      phi = shape9(pt(1), pt(2))
+      dref = shape9_derivs(pt(1), pt(2))
+      ! J(i,j) = d x_j / d xi_i
+      jac = matmul(dref, transpose(xe))
+      det = jac(1,1)*jac(2,2) - jac(1,2)*jac(2,1)
+      if (det <= 0.0_dp) then
+         dxy = 0.0_dp;  wj = 0.0_dp
+         return
+      end if
+      jinv = reshape([jac(2,2), -jac(2,1), -jac(1,2), jac(1,1)], [2,2])/det
+      dxy = matmul(jinv, dref)
+      wj = w*det
+   end subroutine point_derivs
 
    !> Consistent mass matrix, 3x3 Gauss (Appendix B: P[S], R[S], I[S] blocks
    !> with S_ij = int phi_i phi_j).
@@ -282,17 +288,17 @@ contains
       end do
    end function shear_strains
 
-   !> In-plane strains (eps_x, eps_y, gamma_xy) at depth z and 3x3 Gauss
-   !> point g, eq. (2): eps = eps0 + z kappa.
-   pure function element_inplane_strain(geo, de, g, z, nonlinear) result(eps)
-      type(element_geometry_t), intent(in) :: geo   !< element geometry
+   !> In-plane strains (eps_x, eps_y, gamma_xy) at depth z at a point of
+   !> the element with shape-function derivatives dxy (a Gauss point's,
+   !> geo%dx3(:, :, g), or point_derivs'), eq. (2): eps = eps0 + z kappa.
+   pure function element_inplane_strain(dxy, de, z, nonlinear) result(eps)
+      real(dp), intent(in) :: dxy(2, nen)           !< shape-function derivatives at the point (1/m)
       real(dp), intent(in) :: de(nfe_elem)          !< element displacements
-      integer, intent(in) :: g                      !< 3x3 Gauss point
       real(dp), intent(in) :: z                     !< depth from the mid-plane (m)
       logical, intent(in) :: nonlinear              !< von Karman strains
       real(dp) :: eps(3)
       real(dp) :: eps0(3), kap(3), wx, wy
-      call point_strains(geo%dx3(:, :, g), de, eps0, kap, wx, wy)
+      call point_strains(dxy, de, eps0, kap, wx, wy)
       if (nonlinear) eps0 = eps0 + [0.5_dp*wx*wx, 0.5_dp*wy*wy, wx*wy]
       eps = eps0 + z*kap
    end function element_inplane_strain

@@ -14,15 +14,16 @@ module plate_model
    use materials, only: laminate_t, laminate_drop_bend_twist
    use scene_model, only: scene_t, model_laminate, choose_domain, point_stiffness, energy_balance, &
       choose_theory, impact_element_size, choose_storage
-   use mesh, only: mesh_t, build_mesh, apply_boundary, nfe, ndof_node
+   use mesh, only: mesh_t, build_mesh, apply_boundary, nfe, ndof_node, locate_point
+   use shape_functions, only: nen
    use shear_strain, only: shear_rule_t, shear_rule_code, shear_stabilized
    use contact_load, only: contact_load_t, contact_load_init, load_point, load_hertz
    use element_matrices, only: element_geometry_t, element_geometry, element_mass, element_stiffness, &
-      element_inplane_strain, element_gauss_point
+      element_inplane_strain, element_gauss_point, point_derivs
    use element_work, only: element_work_t, work_build, work_nonlinear_force, work_mass_times, work_strain_energy
    use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, global_release
    use contact_law, only: contact_law_t
-   use deck_schema, only: deck_t
+   use deck_schema, only: deck_t, is_given
    use scene_settings, only: choose_settings
    implicit none
    private
@@ -45,7 +46,9 @@ module plate_model
       real(dp) :: impactor_mass = 0.0_dp       !< m (kg)
       integer :: eq_impact = 0                 !< equation of w at the impact point
       real(dp) :: force_share = 1.0_dp         !< share of a force at the impact point the model carries
-      integer :: gauge_gp = 0                  !< 3x3 Gauss point of the strain gauge in msh%impact_elem
+      integer :: gauge_elem = 0                !< element of the strain gauge (place_gauge)
+      real(dp) :: gauge_xy(2) = 0.0_dp         !< the gauge's point (m), from the plate centre
+      real(dp) :: gauge_dxy(2, nen) = 0.0_dp   !< shape-function derivatives there (1/m)
       real(dp) :: z_back = 0.0_dp              !< z of the back face, +h/2 (m)
       character(len=16) :: shear_rule = ''     !< transverse shear rule used (module shear_strain)
       integer :: max_nonlinear_iter = 200      !< limit of the eq. (19) and Newton iterations
@@ -119,8 +122,8 @@ contains
             return
          end if
       end do geometry
-      model%gauge_gp = element_gauss_point(model%geo(model%msh%impact_elem), &
-                                           model%msh%coords(:, model%msh%impact_node))
+      call place_gauge(deck, model, stat, errmsg)
+      if (stat /= 0) return
 
       ! -- [M] and [K_L], assembled once (eq. 15), in the deck's storage or
       !    the one 'auto' picks for this many equations (src/model/scene_model.f90)
@@ -267,20 +270,54 @@ contains
       u = work_strain_energy(model%work, d, model%nonlinear)*model%msh%sym_factor
    end function plate_strain_energy
 
-   !> The paper's strain gauge (Fig. 9b): in-plane y strain on the face
-   !> opposite the impact, at the Gauss point nearest the impact point, in
-   !> the element nearest it.
+   !> The strain gauge: in-plane y strain on the face opposite the impact,
+   !> at the gauge's point (place_gauge).
    function back_face_strain(model, d) result(eps_y)
       type(model_t), intent(in) :: model   !< model
       real(dp), intent(in) :: d(:)         !< global displacements
       real(dp) :: eps_y
       real(dp) :: de(nfe), eps(3)
-      integer :: e
-      e = model%msh%impact_elem
-      call gather_element(model%msh%elem_eq(:, e), d, de)
-      eps = element_inplane_strain(model%geo(e), de, model%gauge_gp, model%z_back, model%nonlinear)
+      call gather_element(model%msh%elem_eq(:, model%gauge_elem), d, de)
+      eps = element_inplane_strain(model%gauge_dxy, de, model%z_back, model%nonlinear)
       eps_y = eps(2)
    end function back_face_strain
+
+   !> The strain gauge's point. The paper's (Fig. 9b), where the deck
+   !> gives none: the Gauss point nearest the impact point in the element
+   !> at it, which moves with the mesh. The deck's &output gauge_x, gauge_y
+   !> (either one; the other the paper's): a fixed point, mirrored into the
+   !> modelled domain across its symmetry lines (eps_y is even in x and y),
+   !> where the results converge as the mesh is refined.
+   subroutine place_gauge(deck, model, stat, errmsg)
+      type(deck_t), intent(in) :: deck          !< the deck
+      type(model_t), intent(inout) :: model     !< the model, its geometry built
+      integer, intent(out) :: stat              !< 0 on success
+      character(len=*), intent(inout) :: errmsg !< reason on failure
+      real(dp) :: p(2), xi(2), phi(nen), wj, det
+      integer :: e, g
+
+      stat = 0
+      e = model%msh%impact_elem
+      g = element_gauss_point(model%geo(e), model%msh%coords(:, model%msh%impact_node))
+      model%gauge_elem = e
+      model%gauge_xy = model%geo(e)%xy3(:, g)
+      model%gauge_dxy = model%geo(e)%dx3(:, :, g)
+      if (.not. (is_given(deck, 'output', 'gauge_x') .or. is_given(deck, 'output', 'gauge_y'))) return
+      if (is_given(deck, 'output', 'gauge_x')) model%gauge_xy(1) = deck%gauge_x
+      if (is_given(deck, 'output', 'gauge_y')) model%gauge_xy(2) = deck%gauge_y
+      p = model%gauge_xy
+      if (model%msh%sym_x) p(1) = abs(p(1))
+      if (model%msh%sym_y) p(2) = abs(p(2))
+      call locate_point(model%msh, p, e, xi)
+      if (e == 0) then
+         stat = 1
+         write (errmsg, '(a,es11.4,a,es11.4,a)') 'output: the gauge at (', p(1), ', ', p(2), &
+            ') m is outside the modelled domain'
+         return
+      end if
+      model%gauge_elem = e
+      call point_derivs(model%msh%coords(:, model%msh%conn(:, e)), xi, 1.0_dp, phi, model%gauge_dxy, wj, det)
+   end subroutine place_gauge
 
    ! ============================================================== helpers
 

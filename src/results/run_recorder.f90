@@ -610,6 +610,9 @@ contains
       call progress_end(rec%progress)
       call closing_warnings(rec, model)
       call run_summary(rec, solver, status, hist, imp, s)
+      ! -- where the strain gauge of max_strain_y_back is (src/model/plate_model.f90, place_gauge)
+      call summary_real(s, 'gauge_x_mm', 'gauge_x', 'm', model%gauge_xy(1), 1.0e3_dp)
+      call summary_real(s, 'gauge_y_mm', 'gauge_y', 'm', model%gauge_xy(2), 1.0e3_dp)
       ! -- dt and the mesh chosen from the scene (src/model/scene_settings.f90), when the deck gives none
       if (len_trim(deck%dt_chosen) > 0) call summary_text(s, 'dt_chosen', after_equals(deck%dt_chosen))
       if (len_trim(deck%mesh_chosen) > 0) call summary_text(s, 'mesh_chosen', after_equals(deck%mesh_chosen))
