@@ -39,7 +39,7 @@ module band_matrix
    use, intrinsic :: iso_fortran_env, only: int64
    implicit none
    private
-   public :: band_matrix_t, pivot_rel_tol
+   public :: band_matrix_t, pivot_rel_tol, check_pivot
    public :: band_init, band_zero, band_in_band, band_add, band_get, &
              band_matvec, band_factor, band_solve, band_axpy
 
@@ -229,14 +229,9 @@ contains
       last = a%n
       if (info > 0) last = info - 1
       do j = 1, last
-         pivot = a%ab(a%kd + 1, j)**2
-         if (.not. (pivot > pivot_rel_tol * abs(diag(j)))) then
-            stat = 1
+         call check_pivot(j, a%ab(a%kd + 1, j)**2, diag(j), stat, errmsg)
+         if (stat /= 0) then
             bad_eq = j
-            write (msg, '(a,i0,a,es10.3,a,es9.2,a,es10.3,a)') &
-               'matrix not positive definite at equation ', j, ' (pivot ', pivot, &
-               ' <= ', pivot_rel_tol, ' x diagonal ', diag(j), ')'
-            errmsg = msg
             return
          end if
       end do
@@ -340,5 +335,23 @@ contains
       end if
       a%ab = a%ab + alpha * b%ab
    end subroutine band_axpy
+
+   !> The pivot rule (module header) at equation j: stat = 1 and the
+   !> message when the pivot d_j is not greater than pivot_rel_tol |A(j,j)|
+   !> (NaN fails too), else stat = 0 (band, and sparse_matrix's CHOLMOD factor).
+   pure subroutine check_pivot(j, pivot, ajj, stat, errmsg)
+      integer, intent(in) :: j                    !< the equation
+      real(dp), intent(in) :: pivot               !< its pivot d_j
+      real(dp), intent(in) :: ajj                 !< A(j,j) before the factorization
+      integer, intent(out) :: stat                !< 0: the pivot passes
+      character(len=*), intent(inout) :: errmsg   !< the reason, on failure
+      character(len=msg_len) :: msg
+      stat = 0
+      if (pivot > pivot_rel_tol * abs(ajj)) return
+      stat = 1
+      write (msg, '(a,i0,a,es10.3,a,es9.2,a,es10.3,a)') 'matrix not positive definite at equation ', j, &
+         ' (pivot ', pivot, ' <= ', pivot_rel_tol, ' x diagonal ', ajj, ')'
+      errmsg = msg
+   end subroutine check_pivot
 
 end module band_matrix

@@ -55,7 +55,7 @@ module sparse_matrix
    use, intrinsic :: iso_c_binding, only: c_long_long
    use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
-   use band_matrix, only: pivot_rel_tol
+   use band_matrix, only: check_pivot
    use cholmod_binding, only: cholmod_handle_t, chol_set_matrix, chol_analyze, chol_factorize, chol_diagonal, &
                               chol_solve, chol_copy, chol_release
    use system_limits, only: physical_memory
@@ -414,7 +414,6 @@ contains
       integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
       real(dp), allocatable :: ldiag(:)
       integer, allocatable :: perm(:)
-      real(dp) :: pivot
       integer :: k, j
       character(len=msg_len) :: msg
 
@@ -424,14 +423,9 @@ contains
       if (stat /= 0) return
       do k = 1, min(minor - 1, a%n)
          j = perm(k)
-         pivot = ldiag(k)**2
-         if (.not. (pivot > pivot_rel_tol * abs(diag(j)))) then
-            stat = 1
+         call check_pivot(j, ldiag(k)**2, diag(j), stat, errmsg)
+         if (stat /= 0) then
             bad_eq = j
-            write (msg, '(a,i0,a,es10.3,a,es9.2,a,es10.3,a)') &
-               'matrix not positive definite at equation ', j, ' (pivot ', pivot, &
-               ' <= ', pivot_rel_tol, ' x diagonal ', diag(j), ')'
-            errmsg = msg
             return
          end if
       end do

@@ -606,16 +606,11 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer(hid_t) :: did
-      type(c_ptr) :: buf
-      integer :: err
-      call h5io_open_dataset(loc, name, did, stat, errmsg)
+      integer :: x_len
+      call open_series(loc, name, did, x_len, stat, errmsg)
       if (stat /= 0) return
-      allocate (x(max(0, h5io_series_length(did))))
-      err = 0
-      buf = c_loc(x)
-      if (size(x) > 0) call h5dread_f(did, H5T_NATIVE_DOUBLE, buf, err)
-      call h5io_check(err, 'cannot read the dataset', name, stat, errmsg)
-      call h5dclose_f(did, err)
+      allocate (x(x_len))
+      call read_series(did, H5T_NATIVE_DOUBLE, c_loc(x), size(x), name, stat, errmsg)
    end subroutine read_reals
 
    !> The integers of the rank-1 series `name`.
@@ -626,17 +621,44 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer(hid_t) :: did
-      type(c_ptr) :: buf
-      integer :: err
-      call h5io_open_dataset(loc, name, did, stat, errmsg)
+      integer :: x_len
+      call open_series(loc, name, did, x_len, stat, errmsg)
       if (stat /= 0) return
-      allocate (x(max(0, h5io_series_length(did))))
+      allocate (x(x_len))
+      call read_series(did, H5T_NATIVE_INTEGER, c_loc(x), size(x), name, stat, errmsg)
+   end subroutine read_integers
+
+   !> Opens the rank-1 series `name`: its dataset and its length (>= 0).
+   subroutine open_series(loc, name, did, n, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name
+      integer(hid_t), intent(out) :: did
+      integer, intent(out) :: n
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      n = 0
+      call h5io_open_dataset(loc, name, did, stat, errmsg)
+      if (stat == 0) n = max(0, h5io_series_length(did))
+   end subroutine open_series
+
+   !> Reads the n values of the open series did into buf (memory type
+   !> mem_type) and closes it.
+   subroutine read_series(did, mem_type, buf, n, name, stat, errmsg)
+      integer(hid_t), intent(in) :: did
+      integer(hid_t), intent(in) :: mem_type
+      type(c_ptr), intent(in) :: buf
+      integer, intent(in) :: n
+      character(len=*), intent(in) :: name
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      type(c_ptr) :: at
+      integer :: err
       err = 0
-      buf = c_loc(x)
-      if (size(x) > 0) call h5dread_f(did, H5T_NATIVE_INTEGER, buf, err)
+      at = buf                               ! (h5dread_f's buffer is intent(inout))
+      if (n > 0) call h5dread_f(did, mem_type, at, err)
       call h5io_check(err, 'cannot read the dataset', name, stat, errmsg)
       call h5dclose_f(did, err)
-   end subroutine read_integers
+   end subroutine read_series
 
    !> Appends the reals x(:) to the rank-1 series did.
    subroutine append_reals(did, x, stat, errmsg)
