@@ -59,7 +59,7 @@ module accuracy_driver
       report_terminal
    implicit none
    private
-   public :: run_accuracy, exit_not_met, comparison_base
+   public :: run_accuracy, exit_not_met, comparison_base, ladder_mesh
 
    !> Exit status of an accuracy run that did not meet its target.
    integer, parameter :: exit_not_met = 3
@@ -179,7 +179,8 @@ contains
    !> (src/model/scene_settings.f90: against a rigid plate, an upper
    !> bound). Then the mesh is graded by ladder_grading away from the
    !> impact point, with the deck's counts raised until that element is
-   !> no larger than a along each side: the results at and near the
+   !> no larger than a along each side (counts that need no raising: the
+   !> least grading that brings the element to a): the results at and near the
    !> contact (the back-face strain, the peak force) converge once the
    !> disc is resolved, which uniform meshes reach only at many times the
    !> cost (on the paper's clamped plate the strain at its gauge changed
@@ -193,8 +194,8 @@ contains
       real(dp), intent(inout) :: impact_element(2)  !< sides of level 0's element at the impact point (m)
       character(len=:), allocatable, intent(out) :: why   !< what was chosen and why, '' for the deck's mesh
       type(settings_t) :: est
-      real(dp) :: a, side(2), counted(2)
-      integer :: n(2), d
+      real(dp) :: a, side(2), counted(2), g, lo
+      integer :: n(2), d, it
 
       why = ''
       est = scene_settings_of(deck)
@@ -204,19 +205,40 @@ contains
       ! the count across it (the deck's mesh is uniform: its grading is 1)
       side = [max(msh%x1 - msh%x_impact, msh%x_impact - msh%x0), max(msh%y1 - msh%y_impact, msh%y_impact - msh%y0)]
       counted = real(nint(side/impact_element), dp)/real([deck%nx, deck%ny], dp)
+      ! the counts that bring the element at the impact point to a with ladder_grading
       do d = 1, 2
-         ! side (g - 1)/(g^m - 1) <= a for the m = counted n elements across the side
          n(d) = ceiling(log(1.0_dp + side(d)*(ladder_grading - 1.0_dp)/a)/log(ladder_grading)/counted(d) - 1.0e-9_dp)
-         impact_element(d) = side(d)*(ladder_grading - 1.0_dp)/(ladder_grading**(counted(d)*n(d)) - 1.0_dp)
       end do
-      base%nx = max(deck%nx, n(1))
-      base%ny = max(deck%ny, n(2))
-      base%grading = ladder_grading
+      n = max(n, [deck%nx, deck%ny])
+      ! the deck's counts already do with ladder_grading: the least grading that does (bisection)
+      g = ladder_grading
+      if (all(n == [deck%nx, deck%ny])) then
+         lo = 1.0_dp
+         do it = 1, 60
+            if (maxval(first_element(0.5_dp*(lo + g))) <= a) then
+               g = 0.5_dp*(lo + g)
+            else
+               lo = 0.5_dp*(lo + g)
+            end if
+         end do
+      end if
+      impact_element = first_element(g)
+      base%nx = n(1)
+      base%ny = n(2)
+      base%grading = g
       why = 'level 0: ' // int_str(base%nx) // ' x ' // int_str(base%ny) // ' graded by ' // &
-         real_short(ladder_grading) // ' (the element at the impact point ' // &
+         real_short(g) // ' (the element at the impact point ' // &
          real_short(maxval(impact_element)*1.0e3_dp) // ' mm, the Hertz radius ' // real_short(a*1.0e3_dp) // &
          ' mm; the deck''s ' // int_str(deck%nx) // ' x ' // int_str(deck%ny) // ' does not resolve it, and ' // &
          'gives no &mesh grading)'
+   contains
+      !> The sides of the element at the impact point with grading gg and
+      !> the counts n: side (g - 1)/(g^m - 1), m = counted n across the side.
+      pure function first_element(gg) result(e)
+         real(dp), intent(in) :: gg
+         real(dp) :: e(2)
+         e = side*(gg - 1.0_dp)/(gg**(counted*real(n, dp)) - 1.0_dp)
+      end function first_element
    end subroutine ladder_mesh
 
    !> Adds the ladder run (k, j) to the runs (unless it is there). A graded
