@@ -11,7 +11,7 @@
 !>     part E_dt and the mesh part E_mesh.
 !>  2. The references, much finer in one direction each, all scenes' runs
 !>     at the same time on the CPUs the process may use:
-!>       time: the chosen mesh at dt_c/2 and dt_c/4 (Newmark's error of
+!>       time: the chosen mesh (its grading too) at dt_c/2 and dt_c/4 (Newmark's error of
 !>             dt_c/4 is 1/16 of the chosen run's);
 !>       mesh: at dt_c, a graded mesh whose element at the impact point is
 !>             3/4 of the Hertz contact radius a at the chosen run's peak
@@ -152,7 +152,7 @@ contains
       type(summary_t), intent(in) :: s
       type(job_t), allocatable, intent(inout) :: jobs(:)
       type(deck_t) :: deck
-      real(dp) :: dt, a, g1, s1, gauge(2)
+      real(dp) :: dt, a, g0, g1, s1, gauge(2)
       integer :: nx, ny, n1x, n1y, st
       character(len=:), allocatable :: path
 
@@ -164,8 +164,10 @@ contains
       gauge = [summary_value(s, 'gauge_x_mm', 0.0_dp), summary_value(s, 'gauge_y_mm', 0.0_dp)]*1.0e-3_dp
       nx = nint(summary_value(s, 'chosen_nx', 0.0_dp))
       ny = nint(summary_value(s, 'chosen_ny', 0.0_dp))
-      call add_impact(jobs, scene, path, 't2', dt/2.0_dp, nx, ny, 1.0_dp, 2.0_dp, gauge)
-      call add_impact(jobs, scene, path, 't4', dt/4.0_dp, nx, ny, 1.0_dp, 4.0_dp, gauge)
+      ! the time references on the chosen mesh, its grading included (the ladder grades its meshes)
+      g0 = summary_value(s, 'chosen_grading', 1.0_dp)
+      call add_impact(jobs, scene, path, 't2', dt/2.0_dp, nx, ny, g0, 2.0_dp, gauge)
+      call add_impact(jobs, scene, path, 't4', dt/4.0_dp, nx, ny, g0, 4.0_dp, gauge)
       ! the contact radius at the chosen run's peak force, and the graded mesh resolving it
       a = sqrt(0.5_dp*deck%diameter*(summary_value(s, 'peak_force_N', 0.0_dp)/deck%k)**(2.0_dp/3.0_dp))
       s1 = min(first_over_radius*a, 0.25_dp*0.5_dp*deck%a/real(nx, dp))

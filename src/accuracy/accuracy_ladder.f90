@@ -204,9 +204,8 @@ contains
    !> the time levels done on mesh j (dt0, dt0/2, ... without a gap, at
    !> least two, k among them), by the rule of the time axis, and no less
    !> than the time axis's on mesh 0. The time error depends on the mesh
-   !> (finer elements at the contact carry faster responses: on graded
-   !> meshes check 12's time errors were 2 to 40 times mesh 0's),
-   !> so a run without a second time level on its mesh is not measured.
+   !> (finer elements at the contact carry faster responses), so a run
+   !> without a second time level on its mesh is not measured.
    !> Two levels, where mesh 0's time axis is in its asymptotic range:
    !> Roache's grid convergence index for two grids at the method's order,
    !> two_level_factor |d| / (r^2 - 1) (r = 2: |d|); else the axis's rule.
