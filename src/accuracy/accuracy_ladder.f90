@@ -72,6 +72,7 @@ module accuracy_ladder
       real(dp) :: err(nq) = 0.0_dp                !< the sum: the error of the run's results
       real(dp) :: worst = huge(1.0_dp)            !< largest err / (target |value|)
       logical :: meets = .false.                  !< every error within the target
+      logical :: time_measured = .true.           !< its time error measured on its own mesh (time_on_mesh)
    end type judged_t
 
 contains
@@ -198,6 +199,7 @@ contains
          end if
       end do
       jd%meets = jd%worst <= 1.0_dp .and. measured
+      jd%time_measured = measured
    end function judge_run
 
    !> The time error of run (k, j), j > 0, measured on its own mesh: from

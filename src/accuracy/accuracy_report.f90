@@ -184,6 +184,7 @@ contains
       call summary_real(items, 'accuracy_target', 'accuracy_target', '-', out%target, 1.0_dp)
       call summary_text(items, 'accuracy_status', trim(out%status))
       call summary_text(items, 'accuracy_values', 'of the run chosen, not extrapolated')
+      call summary_text(items, 'time_error_measured', trim(time_words(out%jd%time_measured)))
       call summary_text(items, 'chosen_run', la%dir // trim(r%name))
       call summary_real(items, 'chosen_dt_us', 'chosen_dt', 's', r%dt, 1.0e6_dp)
       call summary_integer(items, 'chosen_nx', r%nx)
@@ -249,6 +250,8 @@ contains
       character(len=msg_len) :: line
       r = runs(out%chosen)
       write (unit, '(a)') 'accuracy: ' // trim(out%status)
+      if (.not. out%jd%time_measured) write (unit, '(a)') 'accuracy: the time error ' // &
+         trim(time_words(.false.))
       write (unit, '(a)') 'accuracy: results of run ' // trim(r%name) // ' (dt ' // real_short(r%dt*1.0e6_dp) // &
          ' us, mesh ' // int_str(r%nx) // ' x ' // int_str(r%ny) // ', grading ' // real_short(r%grading) // &
          ', ' // trim(la%theory) // '), not extrapolated; error = time part + mesh part + their interaction'
@@ -340,5 +343,17 @@ contains
          relative = huge(1.0_dp)
       end if
    end function relative
+
+   !> Whether the time error of the run chosen was measured on its own
+   !> mesh (src/accuracy/accuracy_ladder.f90, time_on_mesh), in words.
+   pure function time_words(measured) result(text)
+      logical, intent(in) :: measured              !< measured on its mesh
+      character(len=:), allocatable :: text
+      if (measured) then
+         text = 'true'
+      else
+         text = 'false: level 0''s (the cap left no second time level on the chosen mesh)'
+      end if
+   end function time_words
 
 end module accuracy_report
