@@ -198,7 +198,6 @@ contains
       integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
       character(len=msg_len) :: msg
       real(dp), allocatable :: diag(:)
-      real(dp) :: pivot
       integer :: info, j, last
 
       stat = 0
