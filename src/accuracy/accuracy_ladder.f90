@@ -90,17 +90,20 @@ contains
 
    !> The axis (axis_time or axis_mesh) from the runs done, with the error
    !> of each level of each active result.
-   subroutine build_axis(runs, which, active, ax)
+   subroutine build_axis(runs, which, active, ax, mesh)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: which                !< axis_time or axis_mesh
       logical, intent(in) :: active(nq)           !< the results estimated
       type(axis_t), intent(out) :: ax             !< the axis
-      integer :: l, i, iq
+      integer, intent(in), optional :: mesh       !< the time axis on this mesh level (0 if absent)
+      integer :: l, i, iq, j0
       real(dp) :: floor, tail
+      j0 = 0
+      if (present(mesh)) j0 = mesh
       allocate (ax%run(0), ax%h(0))
       l = 0
       do
-         i = ladder_run(runs, merge(l, 0, which == axis_time), merge(0, l, which == axis_time))
+         i = ladder_run(runs, merge(l, 0, which == axis_time), merge(j0, l, which == axis_time))
          if (i == 0) exit
          if (runs(i)%state /= state_done) exit
          ax%run = [ax%run, i]
@@ -218,33 +221,18 @@ contains
       logical, intent(in) :: asymptotic(nq)       !< mesh 0's time axis in its asymptotic range, by result
       real(dp), intent(inout) :: err_time(nq)     !< mesh 0's time error in; the larger out
       logical, intent(out) :: measured            !< two time levels on mesh j, k among them
-      type(estimate_t) :: e
-      integer, allocatable :: at(:)
-      real(dp) :: floor
-      integer :: kk, i, iq, n
-      allocate (at(0))
-      kk = 0
-      do
-         i = ladder_run(runs, kk, j)
-         if (i == 0) exit
-         if (runs(i)%state /= state_done) exit
-         at = [at, i]
-         kk = kk + 1
-      end do
-      n = size(at)
-      measured = n >= 2 .and. k < n
+      type(axis_t) :: ax
+      real(dp) :: finest
+      integer :: iq
+      call build_axis(runs, axis_time, active, ax, mesh=j)
+      measured = ax%levels >= 2 .and. k < ax%levels
       if (.not. measured) return
       do iq = 1, nq
          if (.not. active(iq)) cycle
-         floor = 0.0_dp
-         if (time_results(iq)) then
-            if (on_steps(runs(at)%q(iq), runs(at)%dt)) floor = runs(at(n))%dt*1.0e6_dp
-         end if
-         e = ladder_estimate(runs(at)%dt, runs(at)%q(iq), order_theory(axis_time), order_low(axis_time), &
-                             order_high(axis_time), floor)
-         if (n == 2 .and. asymptotic(iq)) e%error = two_level_factor*abs(runs(at(1))%q(iq) - runs(at(2))%q(iq)) &
-            /((runs(at(1))%dt/runs(at(2))%dt)**order_theory(axis_time) - 1.0_dp) + floor
-         err_time(iq) = max(err_time(iq), level_error(runs(at)%q(iq), k + 1, e%error))
+         finest = ax%finest(iq)%error
+         if (ax%levels == 2 .and. asymptotic(iq)) finest = two_level_factor*abs(runs(ax%run(1))%q(iq) &
+            - runs(ax%run(2))%q(iq))/((ax%h(1)/ax%h(2))**order_theory(axis_time) - 1.0_dp) + ax%finest(iq)%floor
+         err_time(iq) = max(err_time(iq), level_error(runs(ax%run)%q(iq), k + 1, finest))
       end do
    end subroutine time_on_mesh
 
