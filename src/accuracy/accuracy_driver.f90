@@ -54,7 +54,8 @@ module accuracy_driver
    use child_process, only: program_path, usable_cpus
    use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, state_failed, &
       relative_cost
-   use accuracy_ladder, only: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, axis_time, axis_mesh
+   use accuracy_ladder, only: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, time_partner, &
+      axis_time, axis_mesh
    use accuracy_report, only: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
       report_terminal
    implicit none
@@ -329,7 +330,7 @@ contains
          call choose_run(runs, la, tx, mx, out%target, out%targeted, k, j, found)
          i = ladder_run(runs, k, j)
          if (found .and. i > 0) then
-            if (runs(i)%state == state_done) then
+            if (runs(i)%state == state_done .and. time_partner(runs, k, j) < 0) then
                out%met = .true.
                out%status = 'met'
                exit
@@ -342,6 +343,7 @@ contains
          end if
          if (found) then
             call plan(runs, deck, la, k, j)
+            if (time_partner(runs, k, j) >= 0) call plan(runs, deck, la, time_partner(runs, k, j), j)
          else
             call refine(deck, la, runs, tx, mx, out, more, why)
             if (.not. more) then

@@ -40,10 +40,12 @@
 module accuracy_ladder
    use kinds, only: dp
    use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_level_factor
-   use accuracy_runs, only: run_t, launcher_t, nq, state_done, relative_cost
+   use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, relative_cost
+   use history_reader, only: maxima_t
    implicit none
    private
-   public :: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, axis_time, axis_mesh, time_results
+   public :: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, time_partner, peak_spread, axis_time, &
+      axis_mesh, time_results
 
    !> The two axes.
    integer, parameter :: axis_time = 1, axis_mesh = 2
@@ -69,6 +71,7 @@ module accuracy_ladder
       real(dp) :: err_time(nq) = 0.0_dp           !< time part of the error
       real(dp) :: err_mesh(nq) = 0.0_dp           !< mesh part
       real(dp) :: err_cross(nq) = 0.0_dp          !< the interaction of the two
+      real(dp) :: err_maxima(nq) = 0.0_dp         !< the time of the peak: the spread of the maxima (peak_spread)
       real(dp) :: err(nq) = 0.0_dp                !< the sum: the error of the run's results
       real(dp) :: worst = huge(1.0_dp)            !< largest err / (target |value|)
       logical :: meets = .false.                  !< every error within the target
@@ -90,20 +93,23 @@ contains
 
    !> The axis (axis_time or axis_mesh) from the runs done, with the error
    !> of each level of each active result.
-   subroutine build_axis(runs, which, active, ax, mesh)
+   subroutine build_axis(runs, which, active, ax, mesh, first)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: which                !< axis_time or axis_mesh
       logical, intent(in) :: active(nq)           !< the results estimated
       type(axis_t), intent(out) :: ax             !< the axis
       integer, intent(in), optional :: mesh       !< the time axis on this mesh level (0 if absent)
-      integer :: l, i, iq, j0
+      integer, intent(in), optional :: first      !< the time axis from this time level (0 if absent)
+      integer :: l, i, iq, j0, k0
       real(dp) :: floor, tail
       j0 = 0
       if (present(mesh)) j0 = mesh
+      k0 = 0
+      if (present(first)) k0 = first
       allocate (ax%run(0), ax%h(0))
       l = 0
       do
-         i = ladder_run(runs, merge(l, 0, which == axis_time), merge(j0, l, which == axis_time))
+         i = ladder_run(runs, merge(k0 + l, 0, which == axis_time), merge(j0, l, which == axis_time))
          if (i == 0) exit
          if (runs(i)%state /= state_done) exit
          ax%run = [ax%run, i]
@@ -191,6 +197,12 @@ contains
       if (j > 0) call time_on_mesh(runs, k, j, active, tx%finest%asymptotic, jd%err_time, measured)
       if (i == 0) measured = .true.                ! a run to come: predicted, judged again when done
       jd%err = jd%err_time + jd%err_mesh + jd%err_cross
+      if (i == 0) i = ij                           ! a run to come: its mesh's maxima
+      if (jd%err(iq_force) < huge(1.0_dp) .and. runs(i)%has(iq_peak_time)) then
+         jd%err_maxima(iq_peak_time) = peak_spread(runs(i)%maxima, jd%value(iq_peak_time), &
+                                                   jd%value(iq_force), jd%err(iq_force))
+         jd%err(iq_peak_time) = jd%err(iq_peak_time) + jd%err_maxima(iq_peak_time)
+      end if
       jd%worst = 0.0_dp
       do i = 1, nq
          if (.not. active(i)) cycle
@@ -205,12 +217,31 @@ contains
       jd%time_measured = measured
    end function judge_run
 
+   !> The error of the time of the peak from the choice of the maximum:
+   !> the force's local maxima F_i within twice the peak force's error of
+   !> the peak, F_i >= F - 2 e_F, could each be the highest (two values,
+   !> each within e_F of its limit, can change places), so the time of the
+   !> peak may be any of theirs: the largest |t_i - t_peak| (those within
+   !> one history row of the peak are the peak itself). 0 when the peak
+   !> stands out, and without maxima.
+   pure real(dp) function peak_spread(mx, t_peak, f_peak, e_force) result(spread)
+      type(maxima_t), intent(in) :: mx            !< the run's maxima (src/accuracy/history_reader.f90)
+      real(dp), intent(in) :: t_peak              !< the time of the peak (us)
+      real(dp), intent(in) :: f_peak              !< the peak force (N)
+      real(dp), intent(in) :: e_force             !< its error (N)
+      spread = 0.0_dp
+      if (.not. allocated(mx%f_n)) return
+      spread = max(0.0_dp, maxval(abs(mx%t_us - t_peak), &
+                                  mask=mx%f_n >= f_peak - 2.0_dp*e_force .and. abs(mx%t_us - t_peak) > mx%row_us))
+   end function peak_spread
+
    !> The time error of run (k, j), j > 0, measured on its own mesh: from
-   !> the time levels done on mesh j (dt0, dt0/2, ... without a gap, at
-   !> least two, k among them), by the rule of the time axis, and no less
-   !> than the time axis's on mesh 0. The time error depends on the mesh
-   !> (finer elements at the contact carry faster responses), so a run
-   !> without a second time level on its mesh is not measured.
+   !> the time levels done on mesh j next to each other, k among them (at
+   !> least two: k with k - 1 or k + 1), by the rule of the time axis, and
+   !> no less than the time axis's on mesh 0. The time error depends on
+   !> the mesh (finer elements at the contact carry faster responses), so
+   !> a run without a neighbouring time level on its mesh is not measured
+   !> (time_partner names the run that would measure it).
    !> Two levels, where mesh 0's time axis is in its asymptotic range:
    !> Roache's grid convergence index for two grids at the method's order,
    !> two_level_factor |d| / (r^2 - 1) (r = 2: |d|); else the axis's rule.
@@ -220,21 +251,51 @@ contains
       logical, intent(in) :: active(nq)           !< the results estimated
       logical, intent(in) :: asymptotic(nq)       !< mesh 0's time axis in its asymptotic range, by result
       real(dp), intent(inout) :: err_time(nq)     !< mesh 0's time error in; the larger out
-      logical, intent(out) :: measured            !< two time levels on mesh j, k among them
+      logical, intent(out) :: measured            !< a neighbouring time level done on mesh j
       type(axis_t) :: ax
       real(dp) :: finest
-      integer :: iq
-      call build_axis(runs, axis_time, active, ax, mesh=j)
-      measured = ax%levels >= 2 .and. k < ax%levels
+      integer :: iq, k0
+      k0 = k
+      do while (k0 > 0)
+         if (.not. done_run(runs, k0 - 1, j)) exit
+         k0 = k0 - 1
+      end do
+      call build_axis(runs, axis_time, active, ax, mesh=j, first=k0)
+      measured = ax%levels >= 2 .and. k - k0 < ax%levels
       if (.not. measured) return
       do iq = 1, nq
          if (.not. active(iq)) cycle
          finest = ax%finest(iq)%error
          if (ax%levels == 2 .and. asymptotic(iq)) finest = two_level_factor*abs(runs(ax%run(1))%q(iq) &
             - runs(ax%run(2))%q(iq))/((ax%h(1)/ax%h(2))**order_theory(axis_time) - 1.0_dp) + ax%finest(iq)%floor
-         err_time(iq) = max(err_time(iq), level_error(runs(ax%run)%q(iq), k + 1, finest))
+         err_time(iq) = max(err_time(iq), level_error(runs(ax%run)%q(iq), k - k0 + 1, finest))
       end do
    end subroutine time_on_mesh
+
+   !> The time level whose run on mesh j would measure the time error of
+   !> run (k, j) (time_on_mesh): k - 1 (the cheaper neighbour), or 1 for
+   !> k = 0; -1 when none is needed (j = 0, or a neighbour is done).
+   pure integer function time_partner(runs, k, j) result(p)
+      type(run_t), intent(in) :: runs(:)          !< the runs
+      integer, intent(in) :: k, j                 !< the run's levels
+      p = -1
+      if (j == 0) return
+      if (k > 0) then
+         if (done_run(runs, k - 1, j)) return
+      end if
+      if (done_run(runs, k + 1, j)) return
+      p = merge(k - 1, 1, k > 0)
+   end function time_partner
+
+   !> True when the ladder run (k, j) is done.
+   pure logical function done_run(runs, k, j)
+      type(run_t), intent(in) :: runs(:)          !< the runs
+      integer, intent(in) :: k, j                 !< its levels
+      integer :: i
+      i = ladder_run(runs, k, j)
+      done_run = i > 0
+      if (done_run) done_run = runs(i)%state == state_done
+   end function done_run
 
    !> The largest interaction |q(k,j) - q(k,0) - q(0,j) + q(0,0)| of the
    !> combined runs done (0 when there is none).
@@ -253,10 +314,12 @@ contains
    end function largest_cross
 
    !> The cheapest run (k, j) of the axes whose results all meet the
-   !> target: a run done costs nothing, one to come its predicted cost.
-   !> found is false when none meets it; (k, j) is then the run done with
-   !> the smallest worst ratio (the best there is). With done_only, only
-   !> the runs done are candidates.
+   !> target: its cost is that of the runs still to make for it, itself
+   !> and its time partner (the run on its mesh that measures its time
+   !> error, time_partner); a run done and measured costs nothing. found
+   !> is false when none meets it; (k, j) is then the run done with the
+   !> smallest worst ratio (the best there is). With done_only, only the
+   !> runs done and measured are candidates (the final choice).
    subroutine choose_run(runs, la, tx, mx, target, active, k, j, found, done_only)
       type(run_t), intent(in) :: runs(:)          !< the runs
       type(launcher_t), intent(in) :: la          !< the launcher (its cost model)
@@ -267,27 +330,30 @@ contains
       logical, intent(out) :: found               !< it meets the target
       logical, intent(in), optional :: done_only  !< only the runs done (the final choice)
       type(judged_t) :: jd
-      type(run_t) :: probe
       real(dp) :: cost, best_cost, best_worst
-      integer :: kk, jj, i
-      logical :: done
+      integer :: kk, jj, p
+      logical :: done, final
 
+      final = .false.
+      if (present(done_only)) final = done_only
       found = .false.
       k = 0;  j = 0
       best_cost = huge(1.0_dp);  best_worst = huge(1.0_dp)
       do kk = 0, tx%levels - 1
          do jj = 0, mx%levels - 1
             jd = judge_run(runs, tx, mx, kk, jj, target, active)
-            i = ladder_run(runs, kk, jj)
-            done = i > 0
-            if (done) done = runs(i)%state == state_done
-            if (present(done_only)) then
-               if (done_only .and. .not. done) cycle
+            done = done_run(runs, kk, jj)
+            if (final .and. .not. (done .and. jd%time_measured)) then
+               if (done .and. .not. found .and. jd%worst < best_worst) then
+                  k = kk;  j = jj;  best_worst = jd%worst
+               end if
+               cycle
             end if
-            probe = runs(tx%run(kk + 1))
-            probe%nx = runs(mx%run(jj + 1))%nx;  probe%ny = runs(mx%run(jj + 1))%ny
-            cost = merge(0.0_dp, max(la%c_base, 0.0_dp)*relative_cost(probe, la), done)
-            if (jd%meets) then
+            cost = 0.0_dp
+            if (.not. done) cost = run_cost(kk, jj)
+            p = time_partner(runs, kk, jj)
+            if (p >= 0 .and. .not. done_run(runs, p, jj)) cost = cost + run_cost(p, jj)
+            if (jd%worst <= 1.0_dp) then
                if (.not. found .or. cost < best_cost .or. (cost == best_cost .and. jd%worst < best_worst)) then
                   found = .true.;  k = kk;  j = jj;  best_cost = cost;  best_worst = jd%worst
                end if
@@ -296,6 +362,19 @@ contains
             end if
          end do
       end do
+
+   contains
+
+      !> The predicted cost of the run (k, j): dt of time level k on mesh j.
+      real(dp) function run_cost(kr, jr)
+         integer, intent(in) :: kr, jr            !< its levels
+         type(run_t) :: probe
+         probe = runs(tx%run(1))
+         probe%dt = runs(tx%run(1))%dt/2.0_dp**kr
+         probe%k = kr
+         probe%nx = runs(mx%run(jr + 1))%nx;  probe%ny = runs(mx%run(jr + 1))%ny
+         run_cost = max(la%c_base, 0.0_dp)*relative_cost(probe, la)
+      end function run_cost
    end subroutine choose_run
 
 end module accuracy_ladder

@@ -22,7 +22,7 @@ module accuracy_report
    use result_files, only: summary_item_t, summary_real, summary_integer, summary_text, write_summary_file, &
       write_column_block
    use summary_reader, only: summary_t, read_summary
-   use accuracy_runs, only: run_t, launcher_t, nq, result_keys, result_units, state_done, state_failed, &
+   use accuracy_runs, only: run_t, launcher_t, nq, iq_peak_time, result_keys, result_units, state_done, state_failed, &
       state_skipped
    use accuracy_ladder, only: axis_t, judged_t, judge_run
    implicit none
@@ -199,6 +199,8 @@ contains
                            trim(result_units(iq)), out%jd%err_time(iq), 1.0_dp)
          call summary_real(items, trim(result_keys(iq)) // '_error_mesh', trim(result_keys(iq)) // '_error_mesh', &
                            trim(result_units(iq)), out%jd%err_mesh(iq), 1.0_dp)
+         if (iq == iq_peak_time) call summary_real(items, trim(result_keys(iq)) // '_error_maxima', &
+            trim(result_keys(iq)) // '_error_maxima', trim(result_units(iq)), out%jd%err_maxima(iq), 1.0_dp)
          call summary_real(items, trim(result_keys(iq)) // '_relative_error', trim(result_keys(iq)) // &
                            '_relative_error', '-', relative(out%jd%err(iq), out%jd%value(iq)), 1.0_dp)
       end do
@@ -250,8 +252,12 @@ contains
       character(len=msg_len) :: line
       r = runs(out%chosen)
       write (unit, '(a)') 'accuracy: ' // trim(out%status)
-      if (.not. out%jd%time_measured) write (unit, '(a)') 'accuracy: the time error ' // &
-         trim(time_words(.false.))
+      if (.not. out%jd%time_measured) write (unit, '(a)') 'accuracy: the time error was not measured on ' // &
+         'the chosen mesh: it is mesh 0''s (the cap left no neighbouring time level there)'
+      if (out%jd%err_maxima(iq_peak_time) > 0.0_dp) write (unit, '(a)') 'accuracy: ' // &
+         trim(result_keys(iq_peak_time)) // ': the force has other maxima within twice the peak force''s error, ' // &
+         'up to ' // real_short(out%jd%err_maxima(iq_peak_time)) // ' us from the peak: which is the highest ' // &
+         'is not settled at these settings (its error counts them)'
       write (unit, '(a)') 'accuracy: results of run ' // trim(r%name) // ' (dt ' // real_short(r%dt*1.0e6_dp) // &
          ' us, mesh ' // int_str(r%nx) // ' x ' // int_str(r%ny) // ', grading ' // real_short(r%grading) // &
          ', ' // trim(la%theory) // '), not extrapolated; error = time part + mesh part + their interaction'
@@ -352,7 +358,7 @@ contains
       if (measured) then
          text = 'true'
       else
-         text = 'false: level 0''s (the cap left no second time level on the chosen mesh)'
+         text = 'false: mesh 0''s (the cap left no neighbouring time level on the chosen mesh)'
       end if
    end function time_words
 

@@ -28,9 +28,10 @@ module accuracy_runs
    use number_text, only: int_str, real_str, real_short
    use summary_reader, only: summary_t, read_summary, summary_value, summary_has, summary_index
    use child_process, only: spawn_program, wait_child
+   use history_reader, only: maxima_t, force_maxima
    implicit none
    private
-   public :: nq, result_keys, result_units, run_t, launcher_t, run_planned, run_settings, quoted
+   public :: nq, iq_force, iq_peak_time, result_keys, result_units, run_t, launcher_t, run_planned, run_settings, quoted
    public :: state_planned, state_running, state_done, state_failed, state_skipped, predicted_cost, relative_cost
 
    !> The results an accuracy run estimates: their summary keys (the unit
@@ -39,6 +40,8 @@ module accuracy_runs
    character(len=*), parameter :: result_keys(nq) = [character(len=19) :: 'peak_force_N', 'max_deflection_mm', &
       'contact_duration_us', 'time_of_peak_us', 'max_strain_y_back', 'max_failure_index']
    character(len=*), parameter :: result_units(nq) = [character(len=2) :: 'N', 'mm', 'us', 'us', '-', '-']
+   !> The peak force's and the time of the peak's places in result_keys.
+   integer, parameter :: iq_force = 1, iq_peak_time = 4
 
    !> States of a run.
    integer, parameter :: state_planned = 0, state_running = 1, state_done = 2, state_failed = 3, state_skipped = 4
@@ -67,6 +70,7 @@ module accuracy_runs
       character(len=256) :: status = ''            !< its summary's status
       real(dp) :: h_impact = 0.0_dp               !< side of the element at the impact point, the larger (m)
       real(dp) :: contact_radius = 0.0_dp         !< Hertz contact radius at its peak force (m)
+      type(maxima_t) :: maxima                    !< the force's local maxima (its history file)
    end type run_t
 
    !> What starting a run needs, and the spending so far.
@@ -289,6 +293,7 @@ contains
          run%q(iq) = summary_value(s, result_keys(iq), nan)
          if (run%has(iq)) line = line // ', ' // trim(result_keys(iq)) // ' ' // real_short(run%q(iq))
       end do
+      if (run%state == state_done) call force_maxima(la%dir // trim(run%name) // '_history.dat', run%maxima)
       line = line // ', cpu ' // real_short(run%cpu_s) // ' s'
       if (run%state /= state_done) line = line // ': ' // trim(run%status)
       write (la%unit, '(a)') line
