@@ -166,8 +166,9 @@ contains
    end function on_steps
 
    !> The results of run (k, j) and their errors; for a run not done, its
-   !> results predicted as q(k,0) + q(0,j) - q(0,0) and the interaction as
-   !> the largest measured.
+   !> results predicted as q(k,0) + q(0,j) - q(0,0), the interaction as
+   !> the largest measured, and its time error on a finer mesh no less
+   !> than the one measured there at dt x 2 over 2^2 (the method's order).
    function judge_run(runs, tx, mx, k, j, target, active) result(jd)
       type(run_t), intent(in) :: runs(:)          !< the runs
       type(axis_t), intent(in) :: tx, mx          !< the time and mesh axes
@@ -176,8 +177,8 @@ contains
       logical, intent(in) :: active(nq)           !< the results estimated
       type(judged_t) :: jd
       integer :: i, i0, ik, ij
-      real(dp) :: scale
-      logical :: measured
+      real(dp) :: scale, below(nq)
+      logical :: measured, known
 
       i0 = tx%run(1);  ik = tx%run(k + 1);  ij = mx%run(j + 1)
       i = ladder_run(runs, k, j)
@@ -195,6 +196,11 @@ contains
       jd%err_mesh = mx%err(j + 1, :)
       measured = .true.
       if (j > 0) call time_on_mesh(runs, k, j, active, tx%finest%asymptotic, jd%err_time, measured)
+      if (i == 0 .and. j > 0 .and. k > 0) then     ! a run to come: its mesh's time error at dt x 2, the order's share
+         below = 0.0_dp
+         call time_on_mesh(runs, k - 1, j, active, tx%finest%asymptotic, below, known)
+         if (known) jd%err_time = max(jd%err_time, below/2.0_dp**order_theory(axis_time))
+      end if
       if (i == 0) measured = .true.                ! a run to come: predicted, judged again when done
       jd%err = jd%err_time + jd%err_mesh + jd%err_cross
       if (i == 0) i = ij                           ! a run to come: its mesh's maxima
