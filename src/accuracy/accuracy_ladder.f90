@@ -32,11 +32,15 @@
 !> level's plus the interaction of the two, |q(k,j) - q(k,0) - q(0,j) +
 !> q(0,0)|: measured for a run done, for one to come the largest measured
 !> (0 until one is). On a finer mesh (j > 0) the time error is measured on
-!> that mesh too, from its own time levels (time_on_mesh), and a run done
-!> without a second one there is not taken as meeting the target: the
-!> time error grows as the elements at the contact shrink. judge_run
-!> gives them; choose_run the cheapest run, done (cost 0) or to come,
-!> whose every error is within the target.
+!> that mesh too, from its own time levels next to the run's
+!> (time_on_mesh), and a run done without one there is not taken as
+!> meeting the target: the time error grows as the elements at the
+!> contact shrink; a run to come there is predicted with at least the
+!> time error measured at twice its step over 2^2. judge_run gives them;
+!> choose_run the cheapest run whose every error is within the target,
+!> its cost that of the runs it still needs: itself, and on a finer mesh
+!> its time partner (time_partner, the neighbouring time level that
+!> measures its time error) - 0 for a run done and measured.
 module accuracy_ladder
    use kinds, only: dp
    use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_level_factor
