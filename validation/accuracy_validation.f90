@@ -312,8 +312,9 @@ contains
    subroutine write_tables(nfail)
       integer, intent(out) :: nfail
       integer :: is, iq, ub, us, ud
-      real(dp) :: q, e, e_dt, e_mesh, true_dt, true_mesh, truth, unc, ratio
+      real(dp) :: q, e, e_dt, e_mesh, e_maxima, true_dt, true_mesh, truth, unc, ratio
       character(len=16) :: verdict
+      character(len=:), allocatable :: parts
       real(dp), allocatable :: ratios(:)
 
       nfail = 0
@@ -339,6 +340,9 @@ contains
             e = summary_value(acc(is), trim(keys(iq)) // '_error', 0.0_dp)
             e_dt = summary_value(acc(is), trim(keys(iq)) // '_error_dt', 0.0_dp)
             e_mesh = summary_value(acc(is), trim(keys(iq)) // '_error_mesh', 0.0_dp)
+            e_maxima = summary_value(acc(is), trim(keys(iq)) // '_error_maxima', 0.0_dp)
+            parts = real_short(e_dt) // ' + ' // real_short(e_mesh)
+            if (e_maxima > 0.0_dp) parts = parts // ' + maxima ' // real_short(e_maxima)
             true_dt = q - reference(scenes(is), 't4', iq)
             true_mesh = q - reference(scenes(is), 'm2', iq)
             unc = abs(reference(scenes(is), 't2', iq) - reference(scenes(is), 't4', iq)) + &
@@ -356,7 +360,7 @@ contains
             ratio = e/max(abs(truth), unc, tiny(1.0_dp))
             ratios = [ratios, ratio]
             write (ub, '(a)') '| ' // trim(scenes(is)%name) // ' | ' // trim(keys(iq)) // ' | ' // real_short(q) // &
-               ' | ' // real_short(e) // ' (' // real_short(e_dt) // ' + ' // real_short(e_mesh) // ') | ' // &
+               ' | ' // real_short(e) // ' (' // parts // ') | ' // &
                real_short(abs(truth)) // ' (' // real_short(true_dt) // ' + ' // real_short(true_mesh) // ') | ' // &
                real_short(unc) // ' | ' // real_short(ratio) // ' | ' // trim(verdict) // ' |'
             write (ud, '(a,1x,a,3es14.5)') trim(scenes(is)%name), trim(keys(iq)), e/abs(q), abs(truth)/abs(q), &

@@ -228,21 +228,28 @@ contains
    end function judge_run
 
    !> The error of the time of the peak from the choice of the maximum:
-   !> the force's local maxima F_i within twice the peak force's error of
-   !> the peak, F_i >= F - 2 e_F, could each be the highest (two values,
-   !> each within e_F of its limit, can change places), so the time of the
-   !> peak may be any of theirs: the largest |t_i - t_peak| (those within
-   !> one history row of the peak are the peak itself). 0 when the peak
-   !> stands out, and without maxima.
+   !> another local maximum of the force within the peak force's error of
+   !> the peak, F_i >= F - e_F, could be the highest (the maxima of one
+   !> record come from the same discretisation and their errors move
+   !> together, so one error bar, not two, separates them; a swap the
+   !> ladder's runs already show is in its differences), so the time of
+   !> the peak may be any of theirs: the largest |t_i - t_peak| over them.
+   !> The highest maximum of the record is the peak itself (its sample,
+   !> which the parabola refines). 0 when the peak stands out, and without
+   !> maxima.
    pure real(dp) function peak_spread(mx, t_peak, f_peak, e_force) result(spread)
       type(maxima_t), intent(in) :: mx            !< the run's maxima (src/accuracy/history_reader.f90)
       real(dp), intent(in) :: t_peak              !< the time of the peak (us)
       real(dp), intent(in) :: f_peak              !< the peak force (N)
       real(dp), intent(in) :: e_force             !< its error (N)
+      integer :: i, top
       spread = 0.0_dp
       if (.not. allocated(mx%f_n)) return
-      spread = max(0.0_dp, maxval(abs(mx%t_us - t_peak), &
-                                  mask=mx%f_n >= f_peak - 2.0_dp*e_force .and. abs(mx%t_us - t_peak) > mx%row_us))
+      if (size(mx%f_n) == 0) return
+      top = maxloc(mx%f_n, dim=1)
+      do i = 1, size(mx%f_n)
+         if (i /= top .and. mx%f_n(i) >= f_peak - e_force) spread = max(spread, abs(mx%t_us(i) - t_peak))
+      end do
    end function peak_spread
 
    !> The time error of run (k, j), j > 0, measured on its own mesh: from

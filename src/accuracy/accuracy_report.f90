@@ -255,7 +255,7 @@ contains
       if (.not. out%jd%time_measured) write (unit, '(a)') 'accuracy: the time error was not measured on ' // &
          'the chosen mesh: it is mesh 0''s (the cap left no neighbouring time level there)'
       if (out%jd%err_maxima(iq_peak_time) > 0.0_dp) write (unit, '(a)') 'accuracy: ' // &
-         trim(result_keys(iq_peak_time)) // ': the force has other maxima within twice the peak force''s error, ' // &
+         trim(result_keys(iq_peak_time)) // ': the force has other maxima within the peak force''s error of it, ' // &
          'up to ' // real_short(out%jd%err_maxima(iq_peak_time)) // ' us from the peak: which is the highest ' // &
          'is not settled at these settings (its error counts them)'
       write (unit, '(a)') 'accuracy: results of run ' // trim(r%name) // ' (dt ' // real_short(r%dt*1.0e6_dp) // &

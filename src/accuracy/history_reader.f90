@@ -19,7 +19,6 @@ module history_reader
    type :: maxima_t
       real(dp), allocatable :: t_us(:)            !< their times (us)
       real(dp), allocatable :: f_n(:)             !< their forces (N)
-      real(dp) :: row_us = 0.0_dp                 !< the time between the last two rows (us)
    end type maxima_t
 
 contains
@@ -54,7 +53,6 @@ contains
          end if
       end do
       close (u)
-      if (rows >= 2) mx%row_us = t(3) - t(2)
       if (size(mx%f_n) == 0) return
       mx%t_us = pack(mx%t_us, mx%f_n >= kept_fraction*maxval(mx%f_n))
       mx%f_n = pack(mx%f_n, mx%f_n >= kept_fraction*maxval(mx%f_n))
