@@ -304,7 +304,7 @@ contains
       type(accuracy_outcome_t), intent(out) :: out  !< the outcome
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
-      integer :: k, j, i
+      integer :: k, j, i, partner
       logical :: found, more
       character(len=224) :: why
 
@@ -342,8 +342,9 @@ contains
             exit
          end if
          if (found) then
+            partner = time_partner(runs, k, j)
             call plan(runs, deck, la, k, j)
-            if (time_partner(runs, k, j) >= 0) call plan(runs, deck, la, time_partner(runs, k, j), j)
+            if (partner >= 0) call plan(runs, deck, la, partner, j)
          else
             call refine(deck, la, runs, tx, mx, out, more, why)
             if (.not. more) then

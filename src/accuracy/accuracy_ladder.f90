@@ -43,7 +43,7 @@
 !> measures its time error) - 0 for a run done and measured.
 module accuracy_ladder
    use kinds, only: dp
-   use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_level_factor
+   use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_grid_index
    use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, relative_cost
    use history_reader, only: maxima_t
    implicit none
@@ -180,7 +180,7 @@ contains
       real(dp), intent(in) :: target              !< the relative error asked for
       logical, intent(in) :: active(nq)           !< the results estimated
       type(judged_t) :: jd
-      integer :: i, i0, ik, ij
+      integer :: i, i0, ik, ij, im
       real(dp) :: scale, below(nq)
       logical :: measured, known
 
@@ -207,9 +207,9 @@ contains
       end if
       if (i == 0) measured = .true.                ! a run to come: predicted, judged again when done
       jd%err = jd%err_time + jd%err_mesh + jd%err_cross
-      if (i == 0) i = ij                           ! a run to come: its mesh's maxima
-      if (jd%err(iq_force) < huge(1.0_dp) .and. runs(i)%has(iq_peak_time)) then
-         jd%err_maxima(iq_peak_time) = peak_spread(runs(i)%maxima, jd%value(iq_peak_time), &
+      im = merge(i, ij, i > 0)                     ! the run whose maxima: itself, or for one to come its mesh's
+      if (jd%err(iq_force) < huge(1.0_dp) .and. runs(im)%has(iq_peak_time)) then
+         jd%err_maxima(iq_peak_time) = peak_spread(runs(im)%maxima, jd%value(iq_peak_time), &
                                                    jd%value(iq_force), jd%err(iq_force))
          jd%err(iq_peak_time) = jd%err(iq_peak_time) + jd%err_maxima(iq_peak_time)
       end if
@@ -260,8 +260,8 @@ contains
    !> a run without a neighbouring time level on its mesh is not measured
    !> (time_partner names the run that would measure it).
    !> Two levels, where mesh 0's time axis is in its asymptotic range:
-   !> Roache's grid convergence index for two grids at the method's order,
-   !> two_level_factor |d| / (r^2 - 1) (r = 2: |d|); else the axis's rule.
+   !> Roache's grid convergence index at the method's order (two_grid_index
+   !> of src/accuracy/error_estimate.f90; r = 2: |d|); else the axis's rule.
    subroutine time_on_mesh(runs, k, j, active, asymptotic, err_time, measured)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< the run's levels
@@ -283,8 +283,8 @@ contains
       do iq = 1, nq
          if (.not. active(iq)) cycle
          finest = ax%finest(iq)%error
-         if (ax%levels == 2 .and. asymptotic(iq)) finest = two_level_factor*abs(runs(ax%run(1))%q(iq) &
-            - runs(ax%run(2))%q(iq))/((ax%h(1)/ax%h(2))**order_theory(axis_time) - 1.0_dp) + ax%finest(iq)%floor
+         if (ax%levels == 2 .and. asymptotic(iq)) finest = two_grid_index(ax%h, runs(ax%run)%q(iq), &
+            order_theory(axis_time)) + ax%finest(iq)%floor
          err_time(iq) = max(err_time(iq), level_error(runs(ax%run)%q(iq), k - k0 + 1, finest))
       end do
    end subroutine time_on_mesh
@@ -385,9 +385,7 @@ contains
       !> The predicted cost of the run (k, j): dt of time level k on mesh j.
       real(dp) function run_cost(kr, jr)
          integer, intent(in) :: kr, jr            !< its levels
-         type(run_t) :: probe
-         probe = runs(tx%run(1))
-         probe%dt = runs(tx%run(1))%dt/2.0_dp**kr
+         type(run_t) :: probe                     ! what the cost model reads: k, nx, ny (a ladder run's domain)
          probe%k = kr
          probe%nx = runs(mx%run(jr + 1))%nx;  probe%ny = runs(mx%run(jr + 1))%ny
          run_cost = max(la%c_base, 0.0_dp)*relative_cost(probe, la)

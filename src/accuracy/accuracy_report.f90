@@ -52,6 +52,10 @@ module accuracy_report
 
    !> Columns of <prefix>_accuracy.dat before the results.
    integer, parameter :: nfixed = 12
+   !> Whose the time error of a run chosen without it measured on its mesh is,
+   !> and why (the summary's time_error_measured, the terminal).
+   character(len=*), parameter :: unmeasured_time = &
+      'mesh 0''s (the cap left no neighbouring time level on the chosen mesh)'
 
 contains
 
@@ -253,7 +257,7 @@ contains
       r = runs(out%chosen)
       write (unit, '(a)') 'accuracy: ' // trim(out%status)
       if (.not. out%jd%time_measured) write (unit, '(a)') 'accuracy: the time error was not measured on ' // &
-         'the chosen mesh: it is mesh 0''s (the cap left no neighbouring time level there)'
+         'the chosen mesh: it is ' // unmeasured_time
       if (out%jd%err_maxima(iq_peak_time) > 0.0_dp) write (unit, '(a)') 'accuracy: ' // &
          trim(result_keys(iq_peak_time)) // ': the force has other maxima within the peak force''s error of it, ' // &
          'up to ' // real_short(out%jd%err_maxima(iq_peak_time)) // ' us from the peak: which is the highest ' // &
@@ -358,7 +362,7 @@ contains
       if (measured) then
          text = 'true'
       else
-         text = 'false: mesh 0''s (the cap left no neighbouring time level on the chosen mesh)'
+         text = 'false: ' // unmeasured_time
       end if
    end function time_words
 

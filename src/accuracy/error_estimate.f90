@@ -26,7 +26,11 @@
 !>    crosses zero between levels): the safe bound, safe_factor times the
 !>    larger of |d1| and |d2|, never an extrapolation.
 !>  - Two levels: two_level_factor times |d| (Roache's factor for two
-!>    grids); one level: no estimate (huge).
+!>    grids); one level: no estimate (huge). Two levels whose order p is
+!>    known to be in its asymptotic range (another ladder of the same
+!>    method shows it): Roache's grid convergence index for two grids,
+!>    two_level_factor |d| / (r^p - 1), r the ratio of their sizes
+!>    (two_grid_index).
 !> A resolution floor (the time step, for a time read off the steps) is
 !> added to the estimate of the finest level.
 !>
@@ -45,8 +49,8 @@ module error_estimate
    use kinds, only: dp
    implicit none
    private
-   public :: estimate_t, ladder_estimate, observed_order, level_error, log_tail
-   public :: richardson_safety, safe_factor, two_level_factor, slow_cap
+   public :: estimate_t, ladder_estimate, observed_order, level_error, log_tail, two_grid_index
+   public :: richardson_safety, safe_factor, slow_cap
 
    !> Factors of safety (module header) (-).
    real(dp), parameter :: richardson_safety = 1.25_dp, safe_factor = 1.5_dp, two_level_factor = 3.0_dp, &
@@ -186,6 +190,16 @@ contains
       if (n >= 3) d = max(d, abs(q(n - 2) - q(n - 1)))
       log_tail = d*(log(size_ratio)/log(h(n - 1)/h(n)) + 1.0_dp)
    end function log_tail
+
+   !> Roache's grid convergence index of the finer of two levels whose
+   !> order p is known (module header): two_level_factor |q1 - q2| / (r^p - 1),
+   !> r = h1/h2.
+   pure real(dp) function two_grid_index(h, q, p) result(e)
+      real(dp), intent(in) :: h(2)             !< step or element size of the two levels, decreasing
+      real(dp), intent(in) :: q(2)             !< the result at each
+      real(dp), intent(in) :: p                !< the order
+      e = two_level_factor*abs(q(1) - q(2))/((h(1)/h(2))**p - 1.0_dp)
+   end function two_grid_index
 
    !> The error of level i of a ladder whose finest level n has the error
    !> e_finest: |q_i - q_n| + e_finest.
