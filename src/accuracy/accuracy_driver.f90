@@ -24,9 +24,12 @@
 !>     (src/accuracy/error_estimate.f90).
 !>  3. The run chosen is the cheapest (k, j) whose time error, mesh error
 !>     and their interaction meet the target for every result: a run done,
-!>     or one to make (then made, and its interaction measured). When none
-!>     does, the axis whose part of the error exceeds half the target is
-!>     refined by one level (both, when both do), and 3 again.
+!>     or one to make (then made, and its interaction measured), the next
+!>     time level on mesh 0 among them (predicted from the time axis's
+!>     order), each within the cap. When none does, the axis whose part of
+!>     the error exceeds half the target is refined by one level (both,
+!>     when both do), and 3 again; when none fits the cap, the run stops
+!>     there.
 !>  4. At the chosen settings, one run with the other theory (linear
 !>     against von Karman) and, when the laminate has D16, D26, one with
 !>     the other bend-twist model (the paper's averaged reduced plate
@@ -305,7 +308,7 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
       integer :: k, j, i, partner
-      logical :: found, more
+      logical :: found, more, over_cap
       character(len=224) :: why
 
       out%target = deck%accuracy_target
@@ -327,7 +330,8 @@ contains
          out%targeted = out%targeted .and. out%estimated
          call build_axis(runs, axis_time, out%estimated, tx)
          call build_axis(runs, axis_mesh, out%estimated, mx)
-         call choose_run(runs, la, tx, mx, out%target, out%targeted, k, j, found)
+         call choose_run(runs, la, tx, mx, out%target, out%targeted, k, j, found, &
+                         more_time=can_halve_dt(deck, tx), beyond_cap=over_cap)
          i = ladder_run(runs, k, j)
          if (found .and. i > 0) then
             if (runs(i)%state == state_done .and. time_partner(runs, k, j) < 0) then
@@ -336,15 +340,14 @@ contains
                exit
             end if
          end if
-         if (la%cap_reached) then
-            out%status = 'cap reached: the next run would take the cpu time of all runs past &accuracy ' // &
-                         'max_cpu_s = ' // real_short(la%cap) // ' s; the results carry the errors reached'
-            exit
-         end if
-         if (found) then
+         if (found) then                            ! within the cap: the chosen run and its partner
             partner = time_partner(runs, k, j)
             call plan(runs, deck, la, k, j)
             if (partner >= 0) call plan(runs, deck, la, partner, j)
+         else if (la%cap_reached .or. over_cap) then
+            out%status = 'cap reached: the next run would take the cpu time of all runs past &accuracy ' // &
+                         'max_cpu_s = ' // real_short(la%cap) // ' s; the results carry the errors reached'
+            exit
          else
             call refine(deck, la, runs, tx, mx, out, more, why)
             if (.not. more) then
@@ -458,7 +461,7 @@ contains
             mesh = mesh .or. (jd%err_mesh(iq) > jd%err_time(iq) .and. .not. step_bound(iq))
          end if
       end do
-      can_time = tx%levels < max_time_levels .and. deck%dt/2.0_dp**tx%levels >= min_dt
+      can_time = can_halve_dt(deck, tx)
       can_mesh = mx%levels < max_mesh_levels .and. &
                  max(mesh_count(deck%nx, deck%accuracy_mesh_factor, mx%levels), &
                      mesh_count(deck%ny, deck%accuracy_mesh_factor, mx%levels)) <= max_elements
@@ -475,6 +478,13 @@ contains
          ' is read off the time steps: the meshes, all run at the deck''s dt = ' // real_short(deck%dt*1.0e6_dp) // &
          ' us, cannot show it to the target; give a smaller dt in the deck'
    end subroutine refine
+
+   !> True when the time axis may have one more level (the ladder's limits).
+   pure logical function can_halve_dt(deck, tx)
+      type(deck_t), intent(in) :: deck             !< the deck (dt0)
+      type(axis_t), intent(in) :: tx               !< the time axis
+      can_halve_dt = tx%levels < max_time_levels .and. deck%dt/2.0_dp**tx%levels >= min_dt
+   end function can_halve_dt
 
    !> Step 4 of the module header: the other theory and the other
    !> bend-twist model at the chosen settings, run together; at the

@@ -40,11 +40,16 @@
 !> choose_run the cheapest run whose every error is within the target,
 !> its cost that of the runs it still needs: itself, and on a finer mesh
 !> its time partner (time_partner, the neighbouring time level that
-!> measures its time error) - 0 for a run done and measured.
+!> measures its time error) - 0 for a run done and measured - and within
+!> the cap. The next time level on mesh 0, not yet run, is a candidate
+!> too, predicted by continuing the time axis's observed order
+!> (judge_next_time). The mesh axis's next level is not predicted: its
+!> results on these meshes mostly carry a safe bound or the log tail,
+!> which predict no gain; refine adds it when its part dominates.
 module accuracy_ladder
    use kinds, only: dp
    use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_grid_index
-   use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, relative_cost
+   use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, state_skipped, relative_cost
    use history_reader, only: maxima_t
    implicit none
    private
@@ -172,18 +177,23 @@ contains
    !> The results of run (k, j) and their errors; for a run not done, its
    !> results predicted as q(k,0) + q(0,j) - q(0,0), the interaction as
    !> the largest measured, and its time error on a finer mesh no less
-   !> than the one measured there at dt x 2 over 2^2 (the method's order).
+   !> than the one measured there at dt x 2 over 2^2 (the method's order);
+   !> for k = tx%levels (j = 0), the next time level (judge_next_time).
    function judge_run(runs, tx, mx, k, j, target, active) result(jd)
       type(run_t), intent(in) :: runs(:)          !< the runs
       type(axis_t), intent(in) :: tx, mx          !< the time and mesh axes
-      integer, intent(in) :: k, j                 !< the levels (k < tx%levels, j < mx%levels)
+      integer, intent(in) :: k, j                 !< the levels (k <= tx%levels, j < mx%levels; j = 0 for k = tx%levels)
       real(dp), intent(in) :: target              !< the relative error asked for
       logical, intent(in) :: active(nq)           !< the results estimated
       type(judged_t) :: jd
       integer :: i, i0, ik, ij, im
-      real(dp) :: scale, below(nq)
+      real(dp) :: below(nq)
       logical :: measured, known
 
+      if (k >= tx%levels) then                     ! the next time level, not yet planned
+         jd = judge_next_time(runs, tx, mx, target, active)
+         return
+      end if
       i0 = tx%run(1);  ik = tx%run(k + 1);  ij = mx%run(j + 1)
       i = ladder_run(runs, k, j)
       if (i > 0) then
@@ -206,26 +216,77 @@ contains
          if (known) jd%err_time = max(jd%err_time, below/2.0_dp**order_theory(axis_time))
       end if
       if (i == 0) measured = .true.                ! a run to come: predicted, judged again when done
-      jd%err = jd%err_time + jd%err_mesh + jd%err_cross
       im = merge(i, ij, i > 0)                     ! the run whose maxima: itself, or for one to come its mesh's
-      if (jd%err(iq_force) < huge(1.0_dp) .and. runs(im)%has(iq_peak_time)) then
-         jd%err_maxima(iq_peak_time) = peak_spread(runs(im)%maxima, jd%value(iq_peak_time), &
+      call weigh(jd, runs(im), target, active, measured)
+   end function judge_run
+
+   !> The next time level on mesh 0, (tx%levels, 0), before it is planned:
+   !> for a result whose time axis converges monotonically at an observed
+   !> order p no faster than its range (in range, or slower), its value
+   !> continued by that order, q_n - d (h_{n+1}^p - h_n^p)/(h_n^p -
+   !> h_{n-1}^p) with d = q_{n-1} - q_n (d/2^p for dt halved), and its error
+   !> what the axis's rule would give with that level added (its floor,
+   !> the step, halved); for any other result the finest level's value
+   !> and error (a safe bound predicts no gain). Its mesh error mesh 0's;
+   !> no interaction (j = 0).
+   function judge_next_time(runs, tx, mx, target, active) result(jd)
+      type(run_t), intent(in) :: runs(:)          !< the runs
+      type(axis_t), intent(in) :: tx, mx          !< the time and mesh axes (tx%levels >= 1)
+      real(dp), intent(in) :: target              !< the relative error asked for
+      logical, intent(in) :: active(nq)           !< the results estimated
+      type(judged_t) :: jd
+      type(estimate_t) :: next
+      real(dp) :: h(tx%levels + 1), q(tx%levels + 1), p
+      integer :: n, iq
+      n = tx%levels
+      jd%value = runs(tx%run(n))%q
+      jd%err_time = tx%finest%error
+      h(:n) = tx%h;  h(n + 1) = tx%h(n)/2.0_dp
+      do iq = 1, nq
+         p = tx%finest(iq)%order
+         if (.not. active(iq) .or. p <= 0.0_dp .or. p > order_high(axis_time)) cycle
+         q(:n) = runs(tx%run)%q(iq)
+         q(n + 1) = q(n) - (q(n - 1) - q(n))*(h(n + 1)**p - h(n)**p)/(h(n)**p - h(n - 1)**p)
+         next = ladder_estimate(h, q, order_theory(axis_time), order_low(axis_time), order_high(axis_time), &
+                                tx%finest(iq)%floor/2.0_dp)
+         jd%value(iq) = q(n + 1)
+         jd%err_time(iq) = next%error
+      end do
+      jd%err_mesh = mx%err(1, :)
+      call weigh(jd, runs(tx%run(n)), target, active, .true.)
+   end function judge_next_time
+
+   !> A judgement's last steps: the error the sum of its parts, plus for
+   !> the time of the peak the spread of the maxima of run im (peak_spread);
+   !> the worst ratio of error to target over the active results; whether
+   !> it meets the target (measured: its time error known on its mesh).
+   pure subroutine weigh(jd, im, target, active, measured)
+      type(judged_t), intent(inout) :: jd         !< the judgement, its parts set
+      type(run_t), intent(in) :: im               !< the run whose maxima count
+      real(dp), intent(in) :: target              !< the relative error asked for
+      logical, intent(in) :: active(nq)           !< the results estimated
+      logical, intent(in) :: measured             !< the time error measured on its mesh
+      real(dp) :: scale
+      integer :: iq
+      jd%err = jd%err_time + jd%err_mesh + jd%err_cross
+      if (jd%err(iq_force) < huge(1.0_dp) .and. im%has(iq_peak_time)) then
+         jd%err_maxima(iq_peak_time) = peak_spread(im%maxima, jd%value(iq_peak_time), &
                                                    jd%value(iq_force), jd%err(iq_force))
          jd%err(iq_peak_time) = jd%err(iq_peak_time) + jd%err_maxima(iq_peak_time)
       end if
       jd%worst = 0.0_dp
-      do i = 1, nq
-         if (.not. active(i)) cycle
-         scale = target*abs(jd%value(i))
+      do iq = 1, nq
+         if (.not. active(iq)) cycle
+         scale = target*abs(jd%value(iq))
          if (scale > 0.0_dp) then
-            jd%worst = max(jd%worst, jd%err(i)/scale)
-         else if (jd%err(i) > 0.0_dp) then
+            jd%worst = max(jd%worst, jd%err(iq)/scale)
+         else if (jd%err(iq) > 0.0_dp) then
             jd%worst = huge(1.0_dp)
          end if
       end do
       jd%meets = jd%worst <= 1.0_dp .and. measured
       jd%time_measured = measured
-   end function judge_run
+   end subroutine weigh
 
    !> The error of the time of the peak from the choice of the maximum:
    !> another local maximum of the force within the peak force's error of
@@ -274,7 +335,7 @@ contains
       integer :: iq, k0
       k0 = k
       do while (k0 > 0)
-         if (.not. done_run(runs, k0 - 1, j)) exit
+         if (.not. in_state(runs, k0 - 1, j, state_done)) exit
          k0 = k0 - 1
       end do
       call build_axis(runs, axis_time, active, ax, mesh=j, first=k0)
@@ -298,21 +359,23 @@ contains
       p = -1
       if (j == 0) return
       if (k > 0) then
-         if (done_run(runs, k - 1, j)) return
+         if (in_state(runs, k - 1, j, state_done)) return
       end if
-      if (done_run(runs, k + 1, j)) return
+      if (in_state(runs, k + 1, j, state_done)) return
       p = merge(k - 1, 1, k > 0)
    end function time_partner
 
-   !> True when the ladder run (k, j) is done.
-   pure logical function done_run(runs, k, j)
+   !> True when the ladder run (k, j) is in the state (state_done: done;
+   !> state_skipped: turned away by the cap).
+   pure logical function in_state(runs, k, j, state)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< its levels
+      integer, intent(in) :: state                !< the state asked about
       integer :: i
       i = ladder_run(runs, k, j)
-      done_run = i > 0
-      if (done_run) done_run = runs(i)%state == state_done
-   end function done_run
+      in_state = i > 0
+      if (in_state) in_state = runs(i)%state == state
+   end function in_state
 
    !> The largest interaction |q(k,j) - q(k,0) - q(0,j) + q(0,0)| of the
    !> combined runs done (0 when there is none).
@@ -333,33 +396,46 @@ contains
    !> The cheapest run (k, j) of the axes whose results all meet the
    !> target: its cost is that of the runs still to make for it, itself
    !> and its time partner (the run on its mesh that measures its time
-   !> error, time_partner); a run done and measured costs nothing. found
-   !> is false when none meets it; (k, j) is then the run done with the
-   !> smallest worst ratio (the best there is). With done_only, only the
-   !> runs done and measured are candidates (the final choice).
-   subroutine choose_run(runs, la, tx, mx, target, active, k, j, found, done_only)
+   !> error, time_partner); a run done and measured costs nothing. With
+   !> more_time, the next time level on mesh 0 (tx%levels, 0) is a
+   !> candidate too, predicted from the time axis's order
+   !> (judge_next_time). A candidate whose cost would take the cpu time
+   !> past the cap, or that needs a run the cap turned away (skipped), is
+   !> not taken (beyond_cap says one met the target). found is false when
+   !> none meets it; (k, j) is then the run done with the smallest worst
+   !> ratio (the best there is). With done_only, only the runs done and
+   !> measured are candidates (the final choice).
+   subroutine choose_run(runs, la, tx, mx, target, active, k, j, found, done_only, more_time, beyond_cap)
       type(run_t), intent(in) :: runs(:)          !< the runs
-      type(launcher_t), intent(in) :: la          !< the launcher (its cost model)
+      type(launcher_t), intent(in) :: la          !< the launcher (its cost model, the cap, the cpu time spent)
       type(axis_t), intent(in) :: tx, mx          !< the axes
       real(dp), intent(in) :: target              !< the relative error asked for
       logical, intent(in) :: active(nq)           !< the results estimated
       integer, intent(out) :: k, j                !< the run chosen
       logical, intent(out) :: found               !< it meets the target
       logical, intent(in), optional :: done_only  !< only the runs done (the final choice)
+      logical, intent(in), optional :: more_time  !< the next time level may be planned
+      logical, intent(out), optional :: beyond_cap   !< a run to make met the target but would pass the cap
       type(judged_t) :: jd
       real(dp) :: cost, best_cost, best_worst
-      integer :: kk, jj, p
-      logical :: done, final
+      integer :: kk, jj, p, k_last
+      logical :: done, final, over
 
       final = .false.
+      over = .false.
       if (present(done_only)) final = done_only
+      k_last = tx%levels - 1
+      if (present(more_time)) then
+         if (more_time .and. .not. final) k_last = tx%levels
+      end if
       found = .false.
       k = 0;  j = 0
       best_cost = huge(1.0_dp);  best_worst = huge(1.0_dp)
-      do kk = 0, tx%levels - 1
-         do jj = 0, mx%levels - 1
+      do kk = 0, k_last
+         do jj = 0, merge(0, mx%levels - 1, kk == tx%levels)
+            if (in_state(runs, kk, jj, state_skipped)) cycle
             jd = judge_run(runs, tx, mx, kk, jj, target, active)
-            done = done_run(runs, kk, jj)
+            done = in_state(runs, kk, jj, state_done)
             if (final .and. .not. (done .and. jd%time_measured)) then
                if (done .and. .not. found .and. jd%worst < best_worst) then
                   k = kk;  j = jj;  best_worst = jd%worst
@@ -369,8 +445,13 @@ contains
             cost = 0.0_dp
             if (.not. done) cost = run_cost(kk, jj)
             p = time_partner(runs, kk, jj)
-            if (p >= 0 .and. .not. done_run(runs, p, jj)) cost = cost + run_cost(p, jj)
-            if (jd%worst <= 1.0_dp) then
+            if (p >= 0) then
+               if (in_state(runs, p, jj, state_skipped)) cycle
+               if (.not. in_state(runs, p, jj, state_done)) cost = cost + run_cost(p, jj)
+            end if
+            if (jd%worst <= 1.0_dp .and. .not. final .and. la%spent + cost > la%cap) then
+               over = .true.
+            else if (jd%worst <= 1.0_dp) then
                if (.not. found .or. cost < best_cost .or. (cost == best_cost .and. jd%worst < best_worst)) then
                   found = .true.;  k = kk;  j = jj;  best_cost = cost;  best_worst = jd%worst
                end if
@@ -379,6 +460,7 @@ contains
             end if
          end do
       end do
+      if (present(beyond_cap)) beyond_cap = over .and. .not. found
 
    contains
 
@@ -391,5 +473,6 @@ contains
          run_cost = max(la%c_base, 0.0_dp)*relative_cost(probe, la)
       end function run_cost
    end subroutine choose_run
+
 
 end module accuracy_ladder

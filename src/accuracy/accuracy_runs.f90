@@ -13,7 +13,11 @@
 !> from <prefix>_acc/<run>_summary.dat (src/accuracy/summary_reader.f90).
 !>
 !> run_planned starts the planned runs, as many at a time as the process
-!> has CPUs, the cheapest first, and waits for them. The cost cap
+!> has CPUs, the dearest first once the costs are known (the longest
+!> first keeps the CPUs busy to the end; and of a run and the partner
+!> that measures its time error, the cheaper, started after the dearer
+!> has shown its real cost, is the one the cap may turn away, before
+!> the cpu time goes into a run that cannot count), and waits for them. The cost cap
 !> (&accuracy max_cpu_s): a run is started only when the cpu time spent,
 !> that of the runs still going and its own, each as the cost model
 !> predicts it, stay within the cap; else it is skipped and the cap is
@@ -142,8 +146,10 @@ contains
       end if
    end subroutine run_planned
 
-   !> The next run to start: the planned one predicted cheapest; none (0)
-   !> while nothing is known of the costs and a run is going.
+   !> The next run to start: the planned one predicted dearest, or while
+   !> nothing is known of the costs the cheapest (level 0, which teaches
+   !> the cost model) alone; none (0) while nothing is known and a run is
+   !> going.
    integer function next_run(runs, la, running) result(i)
       type(run_t), intent(in) :: runs(:)           !< the runs
       type(launcher_t), intent(in) :: la           !< the launcher
@@ -153,7 +159,11 @@ contains
       if (.not. any(runs%state == state_planned)) return
       if (la%c_base < 0.0_dp .and. running > 0) return
       cost = predicted_cost(runs, la, running=.false.)
-      i = minloc(cost, mask=runs%state == state_planned, dim=1)
+      if (la%c_base < 0.0_dp) then
+         i = minloc(cost, mask=runs%state == state_planned, dim=1)
+      else
+         i = maxloc(cost, mask=runs%state == state_planned, dim=1)
+      end if
    end function next_run
 
    !> The predicted cost of each run (s): of those planned (running false)
