@@ -474,5 +474,4 @@ contains
       end function run_cost
    end subroutine choose_run
 
-
 end module accuracy_ladder

@@ -14,10 +14,8 @@
 !>
 !> run_planned starts the planned runs, as many at a time as the process
 !> has CPUs, the dearest first once the costs are known (the longest
-!> first keeps the CPUs busy to the end; and of a run and the partner
-!> that measures its time error, the cheaper, started after the dearer
-!> has shown its real cost, is the one the cap may turn away, before
-!> the cpu time goes into a run that cannot count), and waits for them. The cost cap
+!> first keeps the CPUs busy to the end: the cheap runs fill in beside
+!> it), and waits for them. The cost cap
 !> (&accuracy max_cpu_s): a run is started only when the cpu time spent,
 !> that of the runs still going and its own, each as the cost model
 !> predicts it, stay within the cap; else it is skipped and the cap is
