@@ -56,7 +56,7 @@ module accuracy_driver
    use result_files, only: results_claim_t, claim_results, release_results
    use child_process, only: program_path, usable_cpus
    use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, state_failed, &
-      relative_cost
+      state_skipped, relative_cost
    use accuracy_ladder, only: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, time_partner, &
       axis_time, axis_mesh
    use accuracy_report, only: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
@@ -245,7 +245,8 @@ contains
       end function first_element
    end subroutine ladder_mesh
 
-   !> Adds the ladder run (k, j) to the runs (unless it is there). A graded
+   !> Adds the ladder run (k, j) to the runs (unless it is there; one the
+   !> cap turned away is planned again: the costs may have changed). A graded
    !> mesh is refined as one family: the grading g0^(nx0/nx), so that the
    !> ratio of the largest element to the smallest stays, and every
    !> element shrinks by about the factor of the counts.
@@ -255,7 +256,12 @@ contains
       type(launcher_t), intent(in) :: la            !< the launcher (the element at the impact point, level 0)
       integer, intent(in) :: k, j                   !< time and mesh level
       type(run_t) :: r
-      if (ladder_run(runs, k, j) > 0) return
+      integer :: i
+      i = ladder_run(runs, k, j)
+      if (i > 0) then                               ! made already, or turned away by the cap: again
+         if (runs(i)%state == state_skipped) runs(i)%state = state_planned
+         return
+      end if
       r%k = k;  r%j = j
       r%name = 't' // int_str(k) // '_m' // int_str(j)
       r%role = 'combined'
@@ -298,7 +304,11 @@ contains
    !> Steps 1-3 of the module header: runs the planned runs, estimates,
    !> chooses, refines, until the target is met, the cap is reached or the
    !> ladder cannot be refined; the outcome names the run whose results
-   !> are given.
+   !> are given. The cap is reached when the candidate that would meet the
+   !> target does not fit it, or when a pass made no run after the cap
+   !> turned one away: every pass that goes on has made a run, so the
+   !> climb ends (a run turned away while dearer ones were predicted to
+   !> go may be planned again once their real cost is known).
    subroutine climb(deck, la, runs, tx, mx, out, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
       type(launcher_t), intent(inout) :: la         !< the launcher
@@ -307,16 +317,18 @@ contains
       type(accuracy_outcome_t), intent(out) :: out  !< the outcome
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
-      integer :: k, j, i, partner
-      logical :: found, more, over_cap
+      integer :: k, j, i, partner, done_before
+      logical :: found, more, over_cap, ran
       character(len=224) :: why
 
       out%target = deck%accuracy_target
       call targeted_results(deck, out%targeted, stat, errmsg)
       if (stat /= 0) return
       do
+         done_before = count(runs%state == state_done)
          call run_planned(runs, la, stat, errmsg)
          if (stat /= 0) return
+         ran = count(runs%state == state_done) > done_before
          call check_failures(runs, la, stat, errmsg)
          if (stat /= 0) return
          if (runs(1)%state /= state_done) then
@@ -344,7 +356,7 @@ contains
             partner = time_partner(runs, k, j)
             call plan(runs, deck, la, k, j)
             if (partner >= 0) call plan(runs, deck, la, partner, j)
-         else if (la%cap_reached .or. over_cap) then
+         else if (over_cap .or. (la%cap_reached .and. .not. ran)) then
             out%status = 'cap reached: the next run would take the cpu time of all runs past &accuracy ' // &
                          'max_cpu_s = ' // real_short(la%cap) // ' s; the results carry the errors reached'
             exit

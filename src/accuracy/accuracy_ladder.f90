@@ -41,7 +41,7 @@
 !> its cost that of the runs it still needs: itself, and on a finer mesh
 !> its time partner (time_partner, the neighbouring time level that
 !> measures its time error) - 0 for a run done and measured - and within
-!> the cap. The next time level on mesh 0, not yet run, is a candidate
+!> the cap (a run the cap turned away earlier is costed again). The next time level on mesh 0, not yet run, is a candidate
 !> too, predicted by continuing the time axis's observed order
 !> (judge_next_time). The mesh axis's next level is not predicted: its
 !> results on these meshes mostly carry a safe bound or the log tail,
@@ -49,7 +49,7 @@
 module accuracy_ladder
    use kinds, only: dp
    use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_grid_index
-   use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, state_skipped, relative_cost
+   use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, relative_cost
    use history_reader, only: maxima_t
    implicit none
    private
@@ -365,8 +365,7 @@ contains
       p = merge(k - 1, 1, k > 0)
    end function time_partner
 
-   !> True when the ladder run (k, j) is in the state (state_done: done;
-   !> state_skipped: turned away by the cap).
+   !> True when the ladder run (k, j) is in the state (state_done: done).
    pure logical function in_state(runs, k, j, state)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< its levels
@@ -400,8 +399,9 @@ contains
    !> more_time, the next time level on mesh 0 (tx%levels, 0) is a
    !> candidate too, predicted from the time axis's order
    !> (judge_next_time). A candidate whose cost would take the cpu time
-   !> past the cap, or that needs a run the cap turned away (skipped), is
-   !> not taken (beyond_cap says one met the target). found is false when
+   !> past the cap is not taken (beyond_cap says one met the target); a
+   !> run the cap turned away before (skipped, while dearer runs were
+   !> predicted to go) is costed as one to make, and may fit now. found is false when
    !> none meets it; (k, j) is then the run done with the smallest worst
    !> ratio (the best there is). With done_only, only the runs done and
    !> measured are candidates (the final choice).
@@ -433,7 +433,6 @@ contains
       best_cost = huge(1.0_dp);  best_worst = huge(1.0_dp)
       do kk = 0, k_last
          do jj = 0, merge(0, mx%levels - 1, kk == tx%levels)
-            if (in_state(runs, kk, jj, state_skipped)) cycle
             jd = judge_run(runs, tx, mx, kk, jj, target, active)
             done = in_state(runs, kk, jj, state_done)
             if (final .and. .not. (done .and. jd%time_measured)) then
@@ -446,7 +445,6 @@ contains
             if (.not. done) cost = run_cost(kk, jj)
             p = time_partner(runs, kk, jj)
             if (p >= 0) then
-               if (in_state(runs, p, jj, state_skipped)) cycle
                if (.not. in_state(runs, p, jj, state_done)) cost = cost + run_cost(p, jj)
             end if
             if (jd%worst <= 1.0_dp .and. .not. final .and. la%spent + cost > la%cap) then
