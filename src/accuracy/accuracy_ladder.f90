@@ -41,14 +41,15 @@
 !> its cost that of the runs it still needs: itself, and on a finer mesh
 !> its time partner (time_partner, the neighbouring time level that
 !> measures its time error) - 0 for a run done and measured - and within
-!> the cap (a run the cap turned away earlier is costed again). The next time level on mesh 0, not yet run, is a candidate
-!> too, predicted by continuing the time axis's observed order
-!> (judge_next_time). The mesh axis's next level is not predicted: its
+!> the cap (a run the cap turned away earlier is costed again). The next
+!> time level on mesh 0, not yet run, is a candidate too, predicted by
+!> continuing the time axis's observed order (judge_next_time). The mesh axis's next level is not predicted: its
 !> results on these meshes mostly carry a safe bound or the log tail,
 !> which predict no gain; refine adds it when its part dominates.
 module accuracy_ladder
    use kinds, only: dp
-   use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_grid_index
+   use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_grid_index, &
+      continued_value
    use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, relative_cost
    use history_reader, only: maxima_t
    implicit none
@@ -223,12 +224,13 @@ contains
    !> The next time level on mesh 0, (tx%levels, 0), before it is planned:
    !> for a result whose time axis converges monotonically at an observed
    !> order p no faster than its range (in range, or slower), its value
-   !> continued by that order, q_n - d (h_{n+1}^p - h_n^p)/(h_n^p -
-   !> h_{n-1}^p) with d = q_{n-1} - q_n (d/2^p for dt halved), and its error
+   !> continued by that order (d/2^p past the finest, d its last
+   !> difference, for dt halved), and its error
    !> what the axis's rule would give with that level added (its floor,
    !> the step, halved); for any other result the finest level's value
    !> and error (a safe bound predicts no gain). Its mesh error mesh 0's;
-   !> no interaction (j = 0).
+   !> no interaction (j = 0). The value: continued_value of
+   !> src/accuracy/error_estimate.f90.
    function judge_next_time(runs, tx, mx, target, active) result(jd)
       type(run_t), intent(in) :: runs(:)          !< the runs
       type(axis_t), intent(in) :: tx, mx          !< the time and mesh axes (tx%levels >= 1)
@@ -246,7 +248,7 @@ contains
          p = tx%finest(iq)%order
          if (.not. active(iq) .or. p <= 0.0_dp .or. p > order_high(axis_time)) cycle
          q(:n) = runs(tx%run)%q(iq)
-         q(n + 1) = q(n) - (q(n - 1) - q(n))*(h(n + 1)**p - h(n)**p)/(h(n)**p - h(n - 1)**p)
+         q(n + 1) = continued_value(h(n - 1:n + 1), q(n - 1:n), p)
          next = ladder_estimate(h, q, order_theory(axis_time), order_low(axis_time), order_high(axis_time), &
                                 tx%finest(iq)%floor/2.0_dp)
          jd%value(iq) = q(n + 1)
@@ -257,20 +259,20 @@ contains
    end function judge_next_time
 
    !> A judgement's last steps: the error the sum of its parts, plus for
-   !> the time of the peak the spread of the maxima of run im (peak_spread);
+   !> the time of the peak the spread of the maxima of maxima_run (peak_spread);
    !> the worst ratio of error to target over the active results; whether
    !> it meets the target (measured: its time error known on its mesh).
-   pure subroutine weigh(jd, im, target, active, measured)
+   pure subroutine weigh(jd, maxima_run, target, active, measured)
       type(judged_t), intent(inout) :: jd         !< the judgement, its parts set
-      type(run_t), intent(in) :: im               !< the run whose maxima count
+      type(run_t), intent(in) :: maxima_run       !< the run whose maxima count
       real(dp), intent(in) :: target              !< the relative error asked for
       logical, intent(in) :: active(nq)           !< the results estimated
       logical, intent(in) :: measured             !< the time error measured on its mesh
       real(dp) :: scale
       integer :: iq
       jd%err = jd%err_time + jd%err_mesh + jd%err_cross
-      if (jd%err(iq_force) < huge(1.0_dp) .and. im%has(iq_peak_time)) then
-         jd%err_maxima(iq_peak_time) = peak_spread(im%maxima, jd%value(iq_peak_time), &
+      if (jd%err(iq_force) < huge(1.0_dp) .and. maxima_run%has(iq_peak_time)) then
+         jd%err_maxima(iq_peak_time) = peak_spread(maxima_run%maxima, jd%value(iq_peak_time), &
                                                    jd%value(iq_force), jd%err(iq_force))
          jd%err(iq_peak_time) = jd%err(iq_peak_time) + jd%err_maxima(iq_peak_time)
       end if
@@ -335,7 +337,7 @@ contains
       integer :: iq, k0
       k0 = k
       do while (k0 > 0)
-         if (.not. in_state(runs, k0 - 1, j, state_done)) exit
+         if (.not. done_run(runs, k0 - 1, j)) exit
          k0 = k0 - 1
       end do
       call build_axis(runs, axis_time, active, ax, mesh=j, first=k0)
@@ -359,22 +361,21 @@ contains
       p = -1
       if (j == 0) return
       if (k > 0) then
-         if (in_state(runs, k - 1, j, state_done)) return
+         if (done_run(runs, k - 1, j)) return
       end if
-      if (in_state(runs, k + 1, j, state_done)) return
+      if (done_run(runs, k + 1, j)) return
       p = merge(k - 1, 1, k > 0)
    end function time_partner
 
-   !> True when the ladder run (k, j) is in the state (state_done: done).
-   pure logical function in_state(runs, k, j, state)
+   !> True when the ladder run (k, j) is done.
+   pure logical function done_run(runs, k, j)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< its levels
-      integer, intent(in) :: state                !< the state asked about
       integer :: i
       i = ladder_run(runs, k, j)
-      in_state = i > 0
-      if (in_state) in_state = runs(i)%state == state
-   end function in_state
+      done_run = i > 0
+      if (done_run) done_run = runs(i)%state == state_done
+   end function done_run
 
    !> The largest interaction |q(k,j) - q(k,0) - q(0,j) + q(0,0)| of the
    !> combined runs done (0 when there is none).
@@ -434,7 +435,7 @@ contains
       do kk = 0, k_last
          do jj = 0, merge(0, mx%levels - 1, kk == tx%levels)
             jd = judge_run(runs, tx, mx, kk, jj, target, active)
-            done = in_state(runs, kk, jj, state_done)
+            done = done_run(runs, kk, jj)
             if (final .and. .not. (done .and. jd%time_measured)) then
                if (done .and. .not. found .and. jd%worst < best_worst) then
                   k = kk;  j = jj;  best_worst = jd%worst
@@ -445,7 +446,7 @@ contains
             if (.not. done) cost = run_cost(kk, jj)
             p = time_partner(runs, kk, jj)
             if (p >= 0) then
-               if (.not. in_state(runs, p, jj, state_done)) cost = cost + run_cost(p, jj)
+               if (.not. done_run(runs, p, jj)) cost = cost + run_cost(p, jj)
             end if
             if (jd%worst <= 1.0_dp .and. .not. final .and. la%spent + cost > la%cap) then
                over = .true.

@@ -49,7 +49,7 @@ module error_estimate
    use kinds, only: dp
    implicit none
    private
-   public :: estimate_t, ladder_estimate, observed_order, level_error, log_tail, two_grid_index
+   public :: estimate_t, ladder_estimate, observed_order, level_error, log_tail, two_grid_index, continued_value
    public :: richardson_safety, safe_factor, slow_cap
 
    !> Factors of safety (module header) (-).
@@ -200,6 +200,17 @@ contains
       real(dp), intent(in) :: p                !< the order
       e = two_level_factor*abs(q(1) - q(2))/((h(1)/h(2))**p - 1.0_dp)
    end function two_grid_index
+
+   !> The value of the next level of a ladder that goes on converging at
+   !> order p (module header: q = Q + C h^p through the last two levels):
+   !> q_n - (q_{n-1} - q_n) (h_{n+1}^p - h_n^p)/(h_n^p - h_{n-1}^p), the
+   !> last difference over r^p for a constant ratio r.
+   pure real(dp) function continued_value(h, q, p) result(q_next)
+      real(dp), intent(in) :: h(3)             !< sizes of the last two levels and the next, decreasing
+      real(dp), intent(in) :: q(2)             !< the result at the last two levels
+      real(dp), intent(in) :: p                !< the order
+      q_next = q(2) - (q(1) - q(2))*(h(3)**p - h(2)**p)/(h(2)**p - h(1)**p)
+   end function continued_value
 
    !> The error of level i of a ladder whose finest level n has the error
    !> e_finest: |q_i - q_n| + e_finest.
