@@ -400,7 +400,9 @@ contains
    !> more_time, the next time level on mesh 0 (tx%levels, 0) is a
    !> candidate too, predicted from the time axis's order
    !> (judge_next_time). A candidate whose cost would take the cpu time
-   !> past the cap is not taken (beyond_cap says one met the target); a
+   !> past the cap is not taken (beyond_cap says one met the target); one
+   !> that costs nothing is, even when the runs made took more than
+   !> predicted and the time spent is past the cap already; a
    !> run the cap turned away before (skipped, while dearer runs were
    !> predicted to go) is costed as one to make, and may fit now. found is false when
    !> none meets it; (k, j) is then the run done with the smallest worst
@@ -448,7 +450,7 @@ contains
             if (p >= 0) then
                if (.not. done_run(runs, p, jj)) cost = cost + run_cost(p, jj)
             end if
-            if (jd%worst <= 1.0_dp .and. .not. final .and. la%spent + cost > la%cap) then
+            if (jd%worst <= 1.0_dp .and. .not. final .and. cost > 0.0_dp .and. la%spent + cost > la%cap) then
                over = .true.
             else if (jd%worst <= 1.0_dp) then
                if (.not. found .or. cost < best_cost .or. (cost == best_cost .and. jd%worst < best_worst)) then
