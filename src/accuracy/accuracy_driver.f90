@@ -317,7 +317,8 @@ contains
       type(accuracy_outcome_t), intent(out) :: out  !< the outcome
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
-      integer :: k, j, i, partner, done_before
+      integer :: k, j, i, partner, done_before, next_kj(2)
+      real(dp) :: next_cost
       logical :: found, more, over_cap, ran
       character(len=224) :: why
 
@@ -343,7 +344,8 @@ contains
          call build_axis(runs, axis_time, out%estimated, tx)
          call build_axis(runs, axis_mesh, out%estimated, mx)
          call choose_run(runs, la, tx, mx, out%target, out%targeted, k, j, found, &
-                         more_time=can_halve_dt(deck, tx), beyond_cap=over_cap)
+                         more_time=can_halve_dt(deck, tx), beyond_cap=over_cap, beyond_kj=next_kj, &
+                         beyond_cost=next_cost)
          i = ladder_run(runs, k, j)
          if (found .and. i > 0) then
             if (runs(i)%state == state_done .and. time_partner(runs, k, j) < 0) then
@@ -357,8 +359,7 @@ contains
             call plan(runs, deck, la, k, j)
             if (partner >= 0) call plan(runs, deck, la, partner, j)
          else if (over_cap .or. (la%cap_reached .and. .not. ran)) then
-            out%status = 'cap reached: the next run would take the cpu time of all runs past &accuracy ' // &
-                         'max_cpu_s = ' // real_short(la%cap) // ' s; the results carry the errors reached'
+            out%status = cap_status(runs, la, mx, over_cap, next_kj, next_cost)
             exit
          else
             call refine(deck, la, runs, tx, mx, out, more, why)
@@ -372,6 +373,49 @@ contains
       out%chosen = ladder_run(runs, k, j)
       out%jd = judge_run(runs, tx, mx, k, j, out%target, out%targeted)
    end subroutine climb
+
+   !> The status of a climb stopped at the cap (climb): the run that would
+   !> come next, the candidate that meets the target beyond the cap
+   !> (beyond: (k, j) = kj, its cost with its time partner's) or else the
+   !> cheapest run the cap turned away, with its predicted cpu time and the
+   !> total it would bring, so that a user sees what a larger max_cpu_s buys.
+   function cap_status(runs, la, mx, beyond, kj, cost) result(status)
+      type(run_t), intent(in) :: runs(:)            !< the runs
+      type(launcher_t), intent(in) :: la            !< the launcher (cost model, cap, spent)
+      type(axis_t), intent(in) :: mx                !< the mesh axis
+      logical, intent(in) :: beyond                 !< a candidate met the target beyond the cap
+      integer, intent(in) :: kj(2)                  !< that candidate
+      real(dp), intent(in) :: cost                  !< its predicted cost (s)
+      character(len=:), allocatable :: status
+      character(len=:), allocatable :: what
+      real(dp) :: c, ci
+      integer :: i, pick
+      if (beyond .and. kj(2) >= 0) then
+         c = cost
+         what = 't' // int_str(kj(1)) // '_m' // int_str(kj(2)) // ' (mesh ' // &
+                int_str(runs(mx%run(kj(2) + 1))%nx) // ' x ' // int_str(runs(mx%run(kj(2) + 1))%ny) // ', dt ' // &
+                real_short(runs(1)%dt/2.0_dp**kj(1)*1.0e6_dp) // ' us)'
+      else
+         pick = 0;  c = huge(1.0_dp)
+         do i = 1, size(runs)
+            if (runs(i)%state /= state_skipped) cycle
+            ci = max(la%c_base, 0.0_dp)*relative_cost(runs(i), la)
+            if (ci < c) then
+               pick = i;  c = ci
+            end if
+         end do
+         if (pick == 0) then
+            status = 'cap reached: the next run would take the cpu time of all runs past &accuracy max_cpu_s = ' // &
+                     real_short(la%cap) // ' s; the results carry the errors reached'
+            return
+         end if
+         what = trim(runs(pick)%name) // ' (mesh ' // int_str(runs(pick)%nx) // ' x ' // int_str(runs(pick)%ny) // &
+                ', dt ' // real_short(runs(pick)%dt*1.0e6_dp) // ' us)'
+      end if
+      status = 'cap reached: the next run, ' // what // ', is predicted at ' // real_short(c) // ' s of cpu, ' // &
+               real_short(la%spent + c) // ' s in all, past &accuracy max_cpu_s = ' // real_short(la%cap) // &
+               ' s; the results carry the errors reached'
+   end function cap_status
 
    !> The results that must meet the target: &accuracy results, 'all' (or
    !> nothing) or summary keys separated by blanks, commas or '+' (on the

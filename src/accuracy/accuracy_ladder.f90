@@ -408,7 +408,8 @@ contains
    !> none meets it; (k, j) is then the run done with the smallest worst
    !> ratio (the best there is). With done_only, only the runs done and
    !> measured are candidates (the final choice).
-   subroutine choose_run(runs, la, tx, mx, target, active, k, j, found, done_only, more_time, beyond_cap)
+   subroutine choose_run(runs, la, tx, mx, target, active, k, j, found, done_only, more_time, beyond_cap, &
+                         beyond_kj, beyond_cost)
       type(run_t), intent(in) :: runs(:)          !< the runs
       type(launcher_t), intent(in) :: la          !< the launcher (its cost model, the cap, the cpu time spent)
       type(axis_t), intent(in) :: tx, mx          !< the axes
@@ -419,13 +420,16 @@ contains
       logical, intent(in), optional :: done_only  !< only the runs done (the final choice)
       logical, intent(in), optional :: more_time  !< the next time level may be planned
       logical, intent(out), optional :: beyond_cap   !< a run to make met the target but would pass the cap
+      integer, intent(out), optional :: beyond_kj(2) !< with beyond_cap: the cheapest such run (k, j)
+      real(dp), intent(out), optional :: beyond_cost !< and its predicted cost, its partner's included (s)
       type(judged_t) :: jd
-      real(dp) :: cost, best_cost, best_worst
-      integer :: kk, jj, p, k_last
+      real(dp) :: cost, best_cost, best_worst, over_cost
+      integer :: kk, jj, p, k_last, over_kj(2)
       logical :: done, final, over
 
       final = .false.
       over = .false.
+      over_cost = huge(1.0_dp);  over_kj = -1
       if (present(done_only)) final = done_only
       k_last = tx%levels - 1
       if (present(more_time)) then
@@ -452,6 +456,9 @@ contains
             end if
             if (jd%worst <= 1.0_dp .and. .not. final .and. cost > 0.0_dp .and. la%spent + cost > la%cap) then
                over = .true.
+               if (cost < over_cost) then
+                  over_cost = cost;  over_kj = [kk, jj]
+               end if
             else if (jd%worst <= 1.0_dp) then
                if (.not. found .or. cost < best_cost .or. (cost == best_cost .and. jd%worst < best_worst)) then
                   found = .true.;  k = kk;  j = jj;  best_cost = cost;  best_worst = jd%worst
@@ -462,6 +469,8 @@ contains
          end do
       end do
       if (present(beyond_cap)) beyond_cap = over .and. .not. found
+      if (present(beyond_kj)) beyond_kj = over_kj
+      if (present(beyond_cost)) beyond_cost = over_cost
 
    contains
 
