@@ -337,7 +337,7 @@ contains
             int_str(nint(summary_value(acc(is), 'chosen_ny', 0.0_dp))) // ' | ' // &
             int_str(nint(summary_value(acc(is), 'accuracy_runs', 0.0_dp))) // ' | ' // &
             real_short(summary_value(acc(is), 'accuracy_cpu_s', 0.0_dp)) // ' | ' // &
-            real_short(summary_value(acc(is), 'accuracy_cpu_s', 0.0_dp)/summary_value(acc(is), 'cpu_s', 1.0_dp)) // ' |'
+            real_short(summary_value(acc(is), 'accuracy_cpu_in_chosen_runs', 0.0_dp)) // ' |'
          do iq = 1, nq
             q = summary_value(acc(is), trim(keys(iq)), 0.0_dp)
             e = summary_value(acc(is), trim(keys(iq)) // '_error', 0.0_dp)

@@ -213,9 +213,20 @@ contains
       end do
       call summary_integer(items, 'accuracy_runs', count(runs%state == state_done))
       call summary_real(items, 'accuracy_cpu_s', 'accuracy_cpu', 's', la%spent, 1.0_dp)
+      call summary_real(items, 'accuracy_cpu_in_chosen_runs', 'accuracy_cpu_in_chosen_runs', '-', &
+                        in_chosen_runs(la, runs(out%chosen)), 1.0_dp)
       call summary_real(items, 'accuracy_wall_s', 'accuracy_wall', 's', out%wall_s, 1.0_dp)
       call write_summary_file(deck, items, stat, errmsg)
    end subroutine write_accuracy_summary
+
+   !> The cpu time of all runs over the run chosen's: the accuracy run's
+   !> cost in runs of the settings it chose (what one run would have cost
+   !> a user who knew them).
+   pure real(dp) function in_chosen_runs(la, chosen)
+      type(launcher_t), intent(in) :: la           !< the launcher (its spending)
+      type(run_t), intent(in) :: chosen            !< the run chosen
+      in_chosen_runs = la%spent/max(chosen%cpu_s, tiny(1.0_dp))
+   end function in_chosen_runs
 
    !> The summary's items of one model compared: what, and the relative
    !> change of each result (or why it was not compared).
@@ -276,7 +287,8 @@ contains
          call comparison_lines(unit, cmp(i), runs, out)
       end do
       write (unit, '(a)') 'accuracy: ' // int_str(count(runs%state == state_done)) // ' runs, cpu ' // &
-         real_short(la%spent) // ' s, wall ' // real_short(out%wall_s) // ' s on ' // int_str(la%cpus) // &
+         real_short(la%spent) // ' s (' // real_short(in_chosen_runs(la, r)) // ' times the run chosen), wall ' // &
+         real_short(out%wall_s) // ' s on ' // int_str(la%cpus) // &
          ' CPUs; every run: ' // la%dir // '; summary: ' // la%dir(:len(la%dir) - 5) // '_summary.dat'
    end subroutine report_terminal
 
