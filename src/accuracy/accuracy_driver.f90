@@ -389,12 +389,19 @@ contains
       character(len=:), allocatable :: status
       character(len=:), allocatable :: what
       real(dp) :: c, ci
-      integer :: i, pick
+      integer :: i, pick, partner
       if (beyond .and. kj(2) >= 0) then
+         ! the candidate, unless it is done, and its time partner, when it needs one (choose_run's cost)
          c = cost
-         what = 't' // int_str(kj(1)) // '_m' // int_str(kj(2)) // ' (mesh ' // &
-                int_str(runs(mx%run(kj(2) + 1))%nx) // ' x ' // int_str(runs(mx%run(kj(2) + 1))%ny) // ', dt ' // &
-                real_short(runs(1)%dt/2.0_dp**kj(1)*1.0e6_dp) // ' us)'
+         what = ''
+         if (ladder_state(kj(1)) /= state_done) what = level_text(kj(1))
+         partner = time_partner(runs, kj(1), kj(2))
+         if (partner >= 0) then
+            if (len(what) > 0) what = what // ' and '
+            what = what // level_text(partner)
+         end if
+         what = what // ' on the mesh ' // int_str(runs(mx%run(kj(2) + 1))%nx) // ' x ' // &
+                int_str(runs(mx%run(kj(2) + 1))%ny)
       else
          pick = 0;  c = huge(1.0_dp)
          do i = 1, size(runs)
@@ -409,12 +416,31 @@ contains
                      real_short(la%cap) // ' s; the results carry the errors reached'
             return
          end if
-         what = trim(runs(pick)%name) // ' (mesh ' // int_str(runs(pick)%nx) // ' x ' // int_str(runs(pick)%ny) // &
-                ', dt ' // real_short(runs(pick)%dt*1.0e6_dp) // ' us)'
+         what = trim(runs(pick)%name) // ' (dt ' // real_short(runs(pick)%dt*1.0e6_dp) // ' us) on the mesh ' // &
+                int_str(runs(pick)%nx) // ' x ' // int_str(runs(pick)%ny)
       end if
-      status = 'cap reached: the next run, ' // what // ', is predicted at ' // real_short(c) // ' s of cpu, ' // &
+      status = 'cap reached: next, ' // what // ', predicted at ' // real_short(c) // ' s of cpu, ' // &
                real_short(la%spent + c) // ' s in all, past &accuracy max_cpu_s = ' // real_short(la%cap) // &
                ' s; the results carry the errors reached'
+
+   contains
+
+      !> 't<k>_m<j> (dt ... us)': time level k on the candidate's mesh.
+      function level_text(k) result(text)
+         integer, intent(in) :: k                  !< time level
+         character(len=:), allocatable :: text
+         text = 't' // int_str(k) // '_m' // int_str(kj(2)) // ' (dt ' // &
+                real_short(runs(1)%dt/2.0_dp**k*1.0e6_dp) // ' us)'
+      end function level_text
+
+      !> The state of the ladder run (k, kj(2)); planned when there is none yet.
+      integer function ladder_state(k)
+         integer, intent(in) :: k                  !< time level
+         integer :: r
+         r = ladder_run(runs, k, kj(2))
+         ladder_state = state_planned
+         if (r > 0) ladder_state = runs(r)%state
+      end function ladder_state
    end function cap_status
 
    !> The results that must meet the target: &accuracy results, 'all' (or
