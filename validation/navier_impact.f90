@@ -42,6 +42,7 @@ program navier_impact
    use input_deck, only: deck_t, read_deck_file
    use deck_echo, only: echo_deck
    use result_files, only: write_column_block
+   use file_system, only: make_directories
    use navier_impact_solution, only: navier_problem_t, navier_result_t, navier_problem_from_deck, &
       navier_impact_run, navier_changes, load_hertz, load_point, load_name, nchange, change_names
    implicit none
@@ -390,12 +391,15 @@ contains
       write (u, '(a,f12.4)')  key0//'cpu_s = ', r%cpu_s
    end subroutine write_figures
 
-   !> mkdir -p of the directory part of a path prefix (nothing if none).
+   !> The directory part of a path prefix and its parents, made where
+   !> missing (nothing if none; a failure shows when the file is opened).
    subroutine make_parent_directory(path)
       character(len=*), intent(in) :: path        !< file path prefix
-      integer :: slash, ex
+      integer :: slash, st
+      character(len=msg_len) :: why
+      why = ''
       slash = index(path, '/', back=.true.)
-      if (slash > 1) call execute_command_line('mkdir -p "'//path(1:slash-1)//'"', exitstat=ex)
+      if (slash > 1) call make_directories(path(1:slash-1), st, why)
    end subroutine make_parent_directory
 
    !> An integer as text.

@@ -55,6 +55,8 @@ program validate
    use damage_record, only: damage_t, damage_open, damage_stresses, damage_points
    use failure_criteria, only: strength_t, failure_index, criterion_hashin, criterion_max_stress, &
       criterion_tsai_wu, mode_names
+   use file_system, only: make_directories
+   use child_process, only: spawn_program, wait_child
    use reference_solutions, only: navier_sinusoidal_ply_stresses, isotropic_sinusoidal_stresses
    use reference_solutions, only: navier_series_t, navier_fsdt, navier_fsdt_static, navier_step_centre, &
       navier_frequencies, navier_clpt_centre, strip_deflection, hertz_impact_t, hertz_impact, &
@@ -76,12 +78,16 @@ program validate
    integer :: npass = 0, nfail = 0, su = 0, tu = 0
    real(dp) :: t0, t1, cpu_last
    integer(int64) :: wall0, clock_rate
+   integer :: dir_stat                   !< making the output directories: 0 on success
+   character(len=msg_len) :: dir_msg = ''  !< and what failed
 
    call cpu_time(t0)
    cpu_last = t0
    call system_clock(wall0, clock_rate)
    report = report_path()
-   call execute_command_line('mkdir -p ' // out_dir // ' ''' // report_dir(report) // '''')
+   call make_directories(out_dir, dir_stat, dir_msg)
+   if (dir_stat == 0) call make_directories(report_dir(report), dir_stat, dir_msg)
+   if (dir_stat /= 0) call fail(dir_msg)
    open (newunit=su, file=out_dir // '/summary.md', status='replace', action='write')
    write (su, '(a)') '| check | quantity | worst error | tolerance | result |'
    write (su, '(a)') '|---|---|---|---|---|'
@@ -1443,15 +1449,24 @@ contains
    subroutine run_program(name, result, stat)
       character(len=*), intent(in) :: name, result
       integer, intent(out) :: stat
-      integer :: ex, cs, length, st
+      integer :: ex, cs, length, st, pid, ended
       logical :: there
-      character(len=msg_len) :: exe
+      character(len=msg_len) :: exe, why
       ! the program: ./impact, or $IMPACT_EXE when it is set
       call get_environment_variable('IMPACT_EXE', exe, length, st)
       if (st /= 0 .or. length == 0) exe = './impact'
-      ! --overwrite: build/validation holds this check's own earlier results
-      call execute_command_line(trim(exe) // ' --overwrite ' // deck_dir // '/' // trim(name) // '.nml > ' // out_dir // '/' // &
-         trim(name) // '.log 2>&1', exitstat=ex, cmdstat=cs)
+      ! --overwrite: build/validation holds this check's own earlier results;
+      ! started without a shell (posix_spawn), its output in <name>.log
+      why = ''
+      call spawn_program(trim(exe), [character(len=msg_len) :: '--overwrite', deck_dir // '/' // trim(name) // '.nml'], &
+                         out_dir // '/' // trim(name) // '.log', pid, cs, why)
+      ex = 1
+      if (cs == 0) then
+         do
+            call wait_child(ended, ex)
+            if (ended == pid .or. ended < 0) exit
+         end do
+      end if
       inquire (file=result, exist=there)
       stat = 0
       if (ex /= 0 .or. cs /= 0 .or. .not. there) then
