@@ -1471,8 +1471,12 @@ contains
       stat = 0
       if (ex /= 0 .or. cs /= 0 .or. .not. there) then
          stat = 1
-         write (error_unit, '(a)') 'validate: ./impact ' // deck_dir // '/' // trim(name) // '.nml failed; see ' // &
-            out_dir // '/' // trim(name) // '.log'
+         if (cs /= 0) then
+            write (error_unit, '(a)') 'validate: ' // trim(why)
+         else
+            write (error_unit, '(a)') 'validate: ./impact ' // deck_dir // '/' // trim(name) // '.nml failed; see ' // &
+               out_dir // '/' // trim(name) // '.log'
+         end if
       end if
    end subroutine run_program
 

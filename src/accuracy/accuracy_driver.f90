@@ -56,9 +56,9 @@ module accuracy_driver
    use result_files, only: results_claim_t, claim_results, release_results
    use child_process, only: program_path, usable_cpus
    use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, state_failed, &
-      state_skipped, relative_cost
+      state_skipped, relative_cost, predicted_run_cost, ladder_name
    use accuracy_ladder, only: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, time_partner, &
-      axis_time, axis_mesh
+      done_run, axis_time, axis_mesh
    use accuracy_report, only: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
       report_terminal
    implicit none
@@ -263,7 +263,7 @@ contains
          return
       end if
       r%k = k;  r%j = j
-      r%name = 't' // int_str(k) // '_m' // int_str(j)
+      r%name = ladder_name(k, j)
       r%role = 'combined'
       if (j == 0) r%role = 'time'
       if (k == 0 .and. j > 0) r%role = 'mesh'
@@ -394,7 +394,7 @@ contains
          ! the candidate, unless it is done, and its time partner, when it needs one (choose_run's cost)
          c = cost
          what = ''
-         if (ladder_state(kj(1)) /= state_done) what = level_text(kj(1))
+         if (.not. done_run(runs, kj(1), kj(2))) what = level_text(kj(1))
          partner = time_partner(runs, kj(1), kj(2))
          if (partner >= 0) then
             if (len(what) > 0) what = what // ' and '
@@ -406,7 +406,7 @@ contains
          pick = 0;  c = huge(1.0_dp)
          do i = 1, size(runs)
             if (runs(i)%state /= state_skipped) cycle
-            ci = max(la%c_base, 0.0_dp)*relative_cost(runs(i), la)
+            ci = predicted_run_cost(runs(i), la)
             if (ci < c) then
                pick = i;  c = ci
             end if
@@ -429,18 +429,8 @@ contains
       function level_text(k) result(text)
          integer, intent(in) :: k                  !< time level
          character(len=:), allocatable :: text
-         text = 't' // int_str(k) // '_m' // int_str(kj(2)) // ' (dt ' // &
-                real_short(runs(1)%dt/2.0_dp**k*1.0e6_dp) // ' us)'
+         text = ladder_name(k, kj(2)) // ' (dt ' // real_short(runs(1)%dt/2.0_dp**k*1.0e6_dp) // ' us)'
       end function level_text
-
-      !> The state of the ladder run (k, kj(2)); planned when there is none yet.
-      integer function ladder_state(k)
-         integer, intent(in) :: k                  !< time level
-         integer :: r
-         r = ladder_run(runs, k, kj(2))
-         ladder_state = state_planned
-         if (r > 0) ladder_state = runs(r)%state
-      end function ladder_state
    end function cap_status
 
    !> The results that must meet the target: &accuracy results, 'all' (or
@@ -634,7 +624,7 @@ contains
       !> A run at the settings of run i stays within the cap.
       logical function fits(i)
          integer, intent(in) :: i
-         fits = la%c_base < 0.0_dp .or. la%spent + la%c_base*relative_cost(runs(i), la) <= la%cap
+         fits = la%c_base < 0.0_dp .or. la%spent + predicted_run_cost(runs(i), la) <= la%cap
       end function fits
    end function comparison_base
 

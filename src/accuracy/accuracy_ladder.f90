@@ -43,19 +43,20 @@
 !> measures its time error) - 0 for a run done and measured - and within
 !> the cap (a run the cap turned away earlier is costed again). The next
 !> time level on mesh 0, not yet run, is a candidate too, predicted by
-!> continuing the time axis's observed order (judge_next_time). The mesh axis's next level is not predicted: its
-!> results on these meshes mostly carry a safe bound or the log tail,
-!> which predict no gain; refine adds it when its part dominates.
+!> continuing the time axis's observed order (judge_next_time). The mesh
+!> axis's next level is not predicted: its results on these meshes mostly
+!> carry a safe bound or the log tail, which predict no gain; refine adds
+!> it when its part dominates.
 module accuracy_ladder
    use kinds, only: dp
    use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_grid_index, &
       continued_value
-   use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, relative_cost
+   use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, predicted_run_cost
    use history_reader, only: maxima_t
    implicit none
    private
-   public :: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, time_partner, peak_spread, axis_time, &
-      axis_mesh, time_results
+   public :: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, time_partner, done_run, peak_spread, &
+      axis_time, axis_mesh, time_results
 
    !> The two axes.
    integer, parameter :: axis_time = 1, axis_mesh = 2
@@ -402,12 +403,12 @@ contains
    !> (judge_next_time). A candidate whose cost would take the cpu time
    !> past the cap is not taken (beyond_cap says one met the target); one
    !> that costs nothing is, even when the runs made took more than
-   !> predicted and the time spent is past the cap already; a
-   !> run the cap turned away before (skipped, while dearer runs were
-   !> predicted to go) is costed as one to make, and may fit now. found is false when
-   !> none meets it; (k, j) is then the run done with the smallest worst
-   !> ratio (the best there is). With done_only, only the runs done and
-   !> measured are candidates (the final choice).
+   !> predicted and the time spent is past the cap already; a run the cap
+   !> turned away before (skipped, while dearer runs were predicted to go)
+   !> is costed as one to make, and may fit now. found is false when none
+   !> meets it; (k, j) is then the run done with the smallest worst ratio
+   !> (the best there is). With done_only, only the runs done and measured
+   !> are candidates (the final choice).
    subroutine choose_run(runs, la, tx, mx, target, active, k, j, found, done_only, more_time, beyond_cap, &
                          beyond_kj, beyond_cost)
       type(run_t), intent(in) :: runs(:)          !< the runs
@@ -480,7 +481,7 @@ contains
          type(run_t) :: probe                     ! what the cost model reads: k, nx, ny (a ladder run's domain)
          probe%k = kr
          probe%nx = runs(mx%run(jr + 1))%nx;  probe%ny = runs(mx%run(jr + 1))%ny
-         run_cost = max(la%c_base, 0.0_dp)*relative_cost(probe, la)
+         run_cost = predicted_run_cost(probe, la)
       end function run_cost
    end subroutine choose_run
 

@@ -42,6 +42,7 @@ module accuracy_runs
    private
    public :: nq, iq_force, iq_peak_time, result_keys, result_units, run_t, launcher_t, run_planned, run_settings, quoted
    public :: state_planned, state_running, state_done, state_failed, state_skipped, predicted_cost, relative_cost, fit_costs
+   public :: predicted_run_cost, ladder_name
 
    !> The results an accuracy run estimates: their summary keys (the unit
    !> in the key) and units; the last only with &strength.
@@ -183,9 +184,24 @@ contains
       cost = 0.0_dp
       do i = 1, size(runs)
          if (runs(i)%state /= wanted) cycle
-         cost(i) = max(la%c_base, 0.0_dp)*relative_cost(runs(i), la)
+         cost(i) = predicted_run_cost(runs(i), la)
       end do
    end function predicted_cost
+
+   !> The cost model's prediction of a run's cpu time (s; 0 while nothing
+   !> is known of the costs).
+   pure real(dp) function predicted_run_cost(run, la)
+      type(run_t), intent(in) :: run               !< the run (its k, nx, ny, cost_factor)
+      type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
+      predicted_run_cost = max(la%c_base, 0.0_dp)*relative_cost(run, la)
+   end function predicted_run_cost
+
+   !> The name of the ladder run (k, j): t<k>_m<j>.
+   pure function ladder_name(k, j) result(name)
+      integer, intent(in) :: k, j                  !< its time and mesh levels
+      character(len=:), allocatable :: name
+      name = 't' // int_str(k) // '_m' // int_str(j)
+   end function ladder_name
 
    !> A run's cost relative to the level-0 run (module header).
    pure real(dp) function relative_cost(run, la)
