@@ -56,14 +56,14 @@ module accuracy_driver
    use result_files, only: results_claim_t, claim_results, release_results
    use child_process, only: program_path, usable_cpus
    use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, state_failed, &
-      state_skipped, relative_cost, predicted_run_cost, ladder_name
+      state_skipped, predicted_run_cost, ladder_name
    use accuracy_ladder, only: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, time_partner, &
       done_run, axis_time, axis_mesh
    use accuracy_report, only: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
       report_terminal
    implicit none
    private
-   public :: run_accuracy, exit_not_met, comparison_base, ladder_mesh
+   public :: run_accuracy, exit_not_met, comparison_base, ladder_mesh, bend_twist_variant
 
    !> Exit status of an accuracy run that did not meet its target.
    integer, parameter :: exit_not_met = 3
@@ -616,7 +616,7 @@ contains
          if (.not. fits(i)) cycle
          if (base == chosen) then
             base = i
-         else if (relative_cost(runs(i), la) > relative_cost(runs(base), la)) then
+         else if (predicted_run_cost(runs(i), la) > predicted_run_cost(runs(base), la)) then
             base = i
          end if
       end do
@@ -662,7 +662,9 @@ contains
          r%variant(1) = "mesh.domain='full'"
          r%variant(2) = 'mesh.average_bend_twist=.false.'
          r%variant(3) = "laminate.bend_twist='keep'"
-         r%cost_factor = 4.0_dp/quarters
+         ! nx, ny count the full plate's elements; a ladder run's count the
+         ! quarter's, doubled across the centre lines of an 'auto' domain
+         r%cost_factor = merge(1.0_dp/quarters, 1.0_dp, deck%domain == 'auto')
          r%name = trim(c%name) // '_bend_twist_keep'
          cmp%compared = 'the full plate with D16, D26 kept instead of D16 = D26 = 0 (' // trim(scene%domain) // ')'
       else
