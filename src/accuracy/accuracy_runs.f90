@@ -22,24 +22,24 @@
 !> reached. The cost model predicts a run from the runs done. On a mesh
 !> already run (the same nx, ny and domain), from the run there at the
 !> nearest time level k' (the finer when two are as near): its cpu time
-!> times 2^(beta (k - k')). beta is the slope of log2 cost against k
-!> between the two finest time levels done on one mesh, within [1/2, 1]
-!> (1 until two are done): the steps double with each level, and a
-!> nonlinear scene's solutions of eq. (19) per step fall as the step
-!> shrinks (a ratio above 2 is the noise of runs sharing the CPUs). On a
-!> mesh not yet run, a run at time level k (dt0/2^k) on a mesh of n
-!> elements costs c 2^(beta k) (n/n0)^gamma times its variant's factor
-!> (the number of quarters its domain has against the ladder's, to the
-!> power gamma); gamma is the slope of log cost against log n between the
-!> two finest meshes done at dt0 (level 0 the coarser when only one mesh
-!> level is done), c fitted to the costliest run done. The slope falls as
-!> the mesh grows (the paper's plates, 132 to 675 elements: 1.9 between
-!> the first two, 1.3-1.6 between the next two), so the nearest pair
-!> predicts the next mesh: 41 x 37 on the clamped plate cost 77 s,
+!> times 2^(k - k'), the steps' ratio (on the paper's clamped plate, 12 x
+!> 11, the levels cost 2.02 and 3.78 s from 2.5 to 0.3125 us at target
+!> 0.05, 3.78 and 7.72 s at 0.01: one solution of eq. (19) a step
+!> throughout). On a mesh not yet run, a run at time level k (dt0/2^k) on
+!> a mesh of n elements costs c 2^k (n/n0)^gamma times its variant's
+!> factor (the number of quarters its domain has against the ladder's, to
+!> the power gamma); gamma is the slope of log cost against log n between
+!> the two finest meshes done at dt0 (level 0 the coarser when only one
+!> mesh level is done), c fitted to the costliest run done. The slope
+!> falls as the mesh grows (the paper's plates, 132 to 675 elements: 1.9
+!> between the first two, 1.3-1.6 between the next two), so the nearest
+!> pair predicts the next mesh: 41 x 37 on the clamped plate cost 77 s,
 !> predicted 73 s by the two finest, 111 s by level 0 and the finest
-!> (make bench-accuracy, every result at 1 %); and a time level on a mesh
-!> run is predicted from that mesh's own cost, not from c and gamma,
-!> which the finest mesh sets.
+!> (make bench-accuracy, every result at 1 %). But c and gamma, which the
+!> finest meshes set, say little of mesh 0's cost: the paper's clamped
+!> plate at a cap of 40 s turned away t3_m0 on 12 x 11 predicted so at
+!> 15.4 s, which took 8.7 s; from t2_m0 there it is predicted at twice
+!> t2_m0's 3.8 s, and took 7.7 s.
 !> Until one run is done nothing is known, and the first run starts alone.
 module accuracy_runs
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -69,8 +69,6 @@ module accuracy_runs
    integer, parameter :: max_variant = 4
    !> The cost model's exponent of the element count before two meshes are measured, and its bounds.
    real(dp), parameter :: gamma_default = 1.8_dp, gamma_min = 1.0_dp, gamma_max = 3.0_dp
-   !> The cost model's exponent of 2^k before two time levels are measured on one mesh, and its bounds.
-   real(dp), parameter :: beta_default = 1.0_dp, beta_min = 0.5_dp, beta_max = 1.0_dp
 
    !> One run of the ladder, or a model variant at the chosen settings.
    type :: run_t
@@ -95,14 +93,6 @@ module accuracy_runs
       type(maxima_t) :: maxima                    !< the force's local maxima (its history file)
    end type run_t
 
-   !> A ladder run done, as the cost model reads it (module header).
-   type :: cost_anchor_t
-      integer :: k = 0                            !< its time level
-      integer :: nx = 0, ny = 0                   !< its mesh
-      real(dp) :: cost_factor = 1.0_dp            !< its domain, in quarters of the ladder's
-      real(dp) :: cpu_s = 0.0_dp                  !< its cpu time (s)
-   end type cost_anchor_t
-
    !> What starting a run needs, and the spending so far.
    type :: launcher_t
       character(len=:), allocatable :: exe        !< the program
@@ -119,8 +109,7 @@ module accuracy_runs
       real(dp) :: spent = 0.0_dp                  !< cpu time of the runs done (s)
       real(dp) :: c_base = -1.0_dp                !< cost of a level-0 run (s), < 0: unknown
       real(dp) :: gamma = gamma_default           !< the cost's exponent of the element count
-      real(dp) :: beta = beta_default             !< the cost's exponent of 2^k
-      type(cost_anchor_t), allocatable :: anchors(:)   !< the ladder runs done
+      type(run_t), allocatable :: anchors(:)      !< the ladder runs done (fit_costs)
       logical :: cap_reached = .false.            !< a run was skipped for the cap
       integer :: unit = 6                         !< where progress goes
    end type launcher_t
@@ -211,15 +200,15 @@ contains
    end function predicted_cost
 
    !> The cost model's prediction of a run's cpu time (s; 0 while nothing
-   !> is known of the costs): from a run done on its mesh, else from c,
-   !> beta and gamma (module header).
+   !> is known of the costs): from a run done on its mesh, else from c
+   !> and gamma (module header).
    pure real(dp) function predicted_run_cost(run, la)
       type(run_t), intent(in) :: run               !< the run (its k, nx, ny, cost_factor)
       type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
       integer :: a
       a = nearest_anchor(run, la)
       if (a > 0) then
-         predicted_run_cost = la%anchors(a)%cpu_s*2.0_dp**(la%beta*real(run%k - la%anchors(a)%k, dp))
+         predicted_run_cost = la%anchors(a)%cpu_s*2.0_dp**(run%k - la%anchors(a)%k)
       else
          predicted_run_cost = max(la%c_base, 0.0_dp)*relative_cost(run, la)
       end if
@@ -255,8 +244,7 @@ contains
    pure real(dp) function relative_cost(run, la)
       type(run_t), intent(in) :: run               !< the run
       type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
-      relative_cost = 2.0_dp**(la%beta*real(run%k, dp)) &
-                      *(real(run%nx, dp)*real(run%ny, dp)/real(la%n0, dp)*run%cost_factor)**la%gamma
+      relative_cost = 2.0_dp**run%k*(real(run%nx, dp)*real(run%ny, dp)/real(la%n0, dp)*run%cost_factor)**la%gamma
    end function relative_cost
 
    !> The cost model fitted to the runs done (module header).
@@ -284,54 +272,12 @@ contains
          if (ratio > 1.0_dp .and. runs(next)%cpu_s > 0.0_dp .and. runs(finest)%cpu_s > 0.0_dp) &
             la%gamma = min(gamma_max, max(gamma_min, log(runs(finest)%cpu_s/runs(next)%cpu_s)/log(ratio)))
       end if
-      call fit_time_levels(runs, la)
+      la%anchors = pack(runs, runs%state == state_done .and. runs%role /= 'theory' .and. runs%role /= 'bend_twist')
       ! c from the costliest run done: the best guide to the costly runs to come
       i = maxloc(runs%cpu_s, mask=runs%state == state_done, dim=1)
       if (i > 0) la%c_base = runs(i)%cpu_s/relative_cost(runs(i), la)
    end subroutine fit_costs
 
-   !> The ladder runs done as the cost model's anchors, and beta from the
-   !> two finest time levels done on one mesh (module header).
-   subroutine fit_time_levels(runs, la)
-      type(run_t), intent(in) :: runs(:)           !< the runs
-      type(launcher_t), intent(inout) :: la        !< the launcher
-      logical :: ladder(size(runs))
-      integer :: i, n, fine, coarse
-      ladder = runs%state == state_done .and. runs%role /= 'theory' .and. runs%role /= 'bend_twist'
-      la%anchors = [(cost_anchor_t(runs(i)%k, runs(i)%nx, runs(i)%ny, runs(i)%cost_factor, runs(i)%cpu_s), &
-                     i = 1, size(runs))]
-      la%anchors = pack(la%anchors, ladder)
-      n = size(la%anchors)
-      fine = 0;  coarse = 0
-      do i = 1, n                                  ! the finest time level with a coarser one on its mesh
-         if (fine > 0) then
-            if (la%anchors(i)%k <= la%anchors(fine)%k) cycle
-         end if
-         if (coarser(i) > 0) then
-            fine = i;  coarse = coarser(i)
-         end if
-      end do
-      if (fine == 0) return
-      if (la%anchors(coarse)%cpu_s <= 0.0_dp .or. la%anchors(fine)%cpu_s <= 0.0_dp) return
-      la%beta = log(la%anchors(fine)%cpu_s/la%anchors(coarse)%cpu_s)/log(2.0_dp) &
-                /real(la%anchors(fine)%k - la%anchors(coarse)%k, dp)
-      la%beta = min(beta_max, max(beta_min, la%beta))
-   contains
-      !> The run done on anchor f's mesh at the finest time level below its own (0: none).
-      integer function coarser(f)
-         integer, intent(in) :: f
-         integer :: m
-         coarser = 0
-         do m = 1, n
-            if (la%anchors(m)%nx /= la%anchors(f)%nx .or. la%anchors(m)%ny /= la%anchors(f)%ny) cycle
-            if (la%anchors(m)%k >= la%anchors(f)%k) cycle
-            if (coarser > 0) then
-               if (la%anchors(m)%k <= la%anchors(coarser)%k) cycle
-            end if
-            coarser = m
-         end do
-      end function coarser
-   end subroutine fit_time_levels
 
    !> The arguments of a run (module header), without the program.
    function run_settings(run, la) result(args)

@@ -32,7 +32,8 @@ module element_work
    use element_matrices, only: element_geometry_t, element_mass_integrals, ngp_full
    implicit none
    private
-   public :: element_work_t, work_build, work_nonlinear_force, work_mass_times, work_strain_energy
+   public :: element_work_t, work_build, work_nonlinear_force, work_mass_times, work_mass_quadratic, &
+             work_strain_energy
 
    !> Largest number of elements per block of the vectorised loops (a block's
    !> arrays stay in the cache); a mesh with fewer has one block of its own
@@ -230,8 +231,8 @@ contains
       real(dp), intent(out) :: y(:)           !< M x
       real(dp) :: xn(ndof_node, w%nnode), sx(ndof_node)
       real(dp) :: x0(0:w%neq), y0(0:w%neq)
-      real(dp), dimension(w%nblk, ndof_node, nen) :: xe, se, ye
-      integer :: n, k, q, e0, nb, i
+      real(dp), dimension(w%nblk, ndof_node, nen) :: xe, ye
+      integer :: n, k, q, e0, nb
 
       if (w%rectangles) then
          x0(0) = 0.0_dp;  x0(1:) = x
@@ -240,18 +241,7 @@ contains
          blocks: do e0 = 1, w%nelem, w%nblk
             nb = min(w%nblk, w%nelem - e0 + 1)
             call gather(w, x0, e0, nb, xe)
-            call dgemm('N', 'N', w%nblk*ndof_node, nen, nen, 1.0_dp, xe, w%nblk*ndof_node, w%sref, nen, &
-                       0.0_dp, se, w%nblk*ndof_node)
-            do i = 1, nen
-               do k = 1, ndof_node
-                  se(:nb, k, i) = w%c(e0:e0+nb-1)*se(:nb, k, i)
-               end do
-               ye(:nb, 1, i) = w%lmt%p*se(:nb, 1, i) + w%lmt%r*se(:nb, 4, i)
-               ye(:nb, 2, i) = w%lmt%p*se(:nb, 2, i) + w%lmt%r*se(:nb, 5, i)
-               ye(:nb, 3, i) = w%lmt%p*se(:nb, 3, i)
-               ye(:nb, 4, i) = w%lmt%i*se(:nb, 4, i) + w%lmt%r*se(:nb, 1, i)
-               ye(:nb, 5, i) = w%lmt%i*se(:nb, 5, i) + w%lmt%r*se(:nb, 2, i)
-            end do
+            call block_mass_times(w, e0, nb, xe, ye)
             call scatter_add(w, e0, nb, ye, y0)
          end do blocks
          y = y0(1:)
@@ -276,6 +266,34 @@ contains
          if (m%eq(5, n) > 0) y(m%eq(5, n)) = w%lmt%i*sx(5) + w%lmt%r*sx(2)
       end do nodes
    end subroutine work_mass_times
+
+   !> x^T M x (for x the velocities, twice the kinetic energy, not yet
+   !> times the symmetry factor): on rectangles the sum of x_e^T M_e x_e
+   !> over the elements, without assembling M x; otherwise from M x.
+   function work_mass_quadratic(w, m, x) result(q)
+      type(element_work_t), intent(in) :: w   !< the layout
+      type(mesh_t), intent(in) :: m           !< mesh with equation numbers
+      real(dp), intent(in) :: x(:)            !< global vector
+      real(dp) :: q
+      real(dp) :: x0(0:w%neq), y(size(x))
+      real(dp), dimension(w%nblk, ndof_node, nen) :: xe, ye
+      integer :: e0, nb
+
+      if (.not. w%rectangles) then
+         call work_mass_times(w, m, x, y)
+         q = dot_product(x, y)
+         return
+      end if
+      x0(0) = 0.0_dp;  x0(1:) = x
+      xe = 0.0_dp
+      q = 0.0_dp
+      blocks: do e0 = 1, w%nelem, w%nblk
+         nb = min(w%nblk, w%nelem - e0 + 1)
+         call gather(w, x0, e0, nb, xe)
+         call block_mass_times(w, e0, nb, xe, ye)
+         q = q + sum(xe(:nb, :, :)*ye(:nb, :, :))
+      end do blocks
+   end function work_mass_quadratic
 
    !> fn = K_N(d) d, the nonlinear term of eq. (19) (module element_matrices,
    !> element_nonlinear_force, for the formulas).
@@ -416,6 +434,29 @@ contains
    end function work_strain_energy
 
    ! ============================================================== kernels
+
+   !> ye = M_e xe for the block's elements e0 .. e0+nb-1 of a mesh of
+   !> rectangles: c(e) sref on each field, mixed by P, R and I (Appendix B).
+   subroutine block_mass_times(w, e0, nb, xe, ye)
+      type(element_work_t), intent(in) :: w   !< the layout
+      integer, intent(in) :: e0, nb           !< the block's first element and size
+      real(dp), intent(in) :: xe(w%nblk, ndof_node, nen)    !< the element values
+      real(dp), intent(out) :: ye(w%nblk, ndof_node, nen)   !< M_e xe (rows 1 .. nb)
+      real(dp) :: se(w%nblk, ndof_node, nen)
+      integer :: i, k
+      call dgemm('N', 'N', w%nblk*ndof_node, nen, nen, 1.0_dp, xe, w%nblk*ndof_node, w%sref, nen, &
+                 0.0_dp, se, w%nblk*ndof_node)
+      do i = 1, nen
+         do k = 1, ndof_node
+            se(:nb, k, i) = w%c(e0:e0+nb-1)*se(:nb, k, i)
+         end do
+         ye(:nb, 1, i) = w%lmt%p*se(:nb, 1, i) + w%lmt%r*se(:nb, 4, i)
+         ye(:nb, 2, i) = w%lmt%p*se(:nb, 2, i) + w%lmt%r*se(:nb, 5, i)
+         ye(:nb, 3, i) = w%lmt%p*se(:nb, 3, i)
+         ye(:nb, 4, i) = w%lmt%i*se(:nb, 4, i) + w%lmt%r*se(:nb, 1, i)
+         ye(:nb, 5, i) = w%lmt%i*se(:nb, 5, i) + w%lmt%r*se(:nb, 2, i)
+      end do
+   end subroutine block_mass_times
 
    !> The element values of the block's elements e0 .. e0+nb-1 from the
    !> global vector d0 (index 0 holds the 0 of the held freedoms).

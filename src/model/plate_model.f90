@@ -20,7 +20,8 @@ module plate_model
    use contact_load, only: contact_load_t, contact_load_init, load_point, load_hertz
    use element_matrices, only: element_geometry_t, element_geometry, element_mass, element_stiffness, &
       element_inplane_strain, element_gauss_point, point_derivs
-   use element_work, only: element_work_t, work_build, work_nonlinear_force, work_mass_times, work_strain_energy
+   use element_work, only: element_work_t, work_build, work_nonlinear_force, work_mass_times, work_strain_energy, &
+      work_mass_quadratic
    use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, global_release
    use contact_law, only: contact_law_t
    use deck_schema, only: deck_t, is_given
@@ -256,9 +257,7 @@ contains
       type(model_t), intent(in) :: model   !< model
       real(dp), intent(in) :: v(:)         !< global velocities
       real(dp) :: ek
-      real(dp) :: mv(size(v))
-      call mass_times(model, v, mv)
-      ek = 0.5_dp*dot_product(v, mv)*model%msh%sym_factor
+      ek = 0.5_dp*work_mass_quadratic(model%work, model%msh, v)*model%msh%sym_factor
    end function plate_kinetic_energy
 
    !> Strain energy of the whole plate (J), von Karman strains for the
