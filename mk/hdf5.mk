@@ -37,9 +37,9 @@ comma := ,
 H5FC ?= h5fc
 hdf5_h5fc_static = $(wordlist 2,1000,$(shell '$(1)' -noshlib -show 2>/dev/null))
 hdf5_h5fc_shared = $(wordlist 2,1000,$(shell '$(1)' -shlib -show 2>/dev/null || '$(1)' -show 2>/dev/null))
-hdf5_archives_exist = $(if $(filter %.a,$(1)),$(if $(filter-out $(wildcard $(filter %.a,$(1))),$(filter %.a,$(1))),,yes))
-hdf5_h5fc_words = $(if $(call hdf5_archives_exist,$(call hdf5_h5fc_static,$(1))),$(call hdf5_h5fc_static,$(1)),$(call \
-    hdf5_h5fc_shared,$(1)))
+# the words when they name archives and every one exists, else nothing
+hdf5_if_archives = $(if $(filter %.a,$(1)),$(if $(filter-out $(wildcard $(filter %.a,$(1))),$(filter %.a,$(1))),,$(1)))
+hdf5_h5fc_words = $(or $(call hdf5_if_archives,$(call hdf5_h5fc_static,$(1))),$(call hdf5_h5fc_shared,$(1)))
 hdf5_root_words = -I$(HDF5_ROOT)/include -L$(HDF5_ROOT)/lib -lhdf5hl_fortran -lhdf5_hl -lhdf5_fortran -lhdf5
 hdf5_pkg_words = $(shell pkg-config --cflags --libs hdf5-fortran 2>/dev/null || \
     pkg-config --cflags --libs hdf5_fortran 2>/dev/null || \

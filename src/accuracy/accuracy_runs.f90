@@ -22,9 +22,9 @@
 !> reached. The cost model predicts a run from the runs done. On a mesh
 !> already run (the same nx, ny and domain), from the run there at the
 !> nearest time level k' (the finer when two are as near): its cpu time
-!> times 2^(k - k'), the steps' ratio (on the paper's clamped plate, 12 x
-!> 11, the levels cost 2.02 and 3.78 s from 2.5 to 0.3125 us at target
-!> 0.05, 3.78 and 7.72 s at 0.01: one solution of eq. (19) a step
+!> times 2^(k - k'), the steps' ratio (the paper's clamped plate on 12 x
+!> 11: 1.04 and 2.02 s at 2.5 and 1.25 us in one ladder, 3.78 and 7.72 s
+!> at 0.625 and 0.3125 us in another; one solution of eq. (19) a step
 !> throughout). On a mesh not yet run, a run at time level k (dt0/2^k) on
 !> a mesh of n elements costs c 2^k (n/n0)^gamma times its variant's
 !> factor (the number of quarters its domain has against the ladder's, to
@@ -227,9 +227,11 @@ contains
          if (la%anchors(i)%nx /= run%nx .or. la%anchors(i)%ny /= run%ny) cycle
          if (la%anchors(i)%cost_factor /= run%cost_factor) cycle
          d = abs(la%anchors(i)%k - run%k)
-         if (d < best .or. (d == best .and. la%anchors(i)%k > la%anchors(max(a, 1))%k)) then
-            a = i;  best = d
+         if (d > best) cycle
+         if (d == best) then                       ! as near: the finer
+            if (la%anchors(i)%k < la%anchors(a)%k) cycle
          end if
+         a = i;  best = d
       end do
    end function nearest_anchor
 
@@ -277,7 +279,6 @@ contains
       i = maxloc(runs%cpu_s, mask=runs%state == state_done, dim=1)
       if (i > 0) la%c_base = runs(i)%cpu_s/relative_cost(runs(i), la)
    end subroutine fit_costs
-
 
    !> The arguments of a run (module header), without the program.
    function run_settings(run, la) result(args)
