@@ -30,11 +30,14 @@
 !>     the error exceeds half the target is refined by one level (both,
 !>     when both do), and 3 again; when none fits the cap, the run stops
 !>     there.
-!>  4. At the chosen settings, one run with the other theory (linear
-!>     against von Karman) and, when the laminate has D16, D26, one with
-!>     the other bend-twist model (the paper's averaged reduced plate
-!>     against the full plate that keeps them): their relative changes say
-!>     which model the scene requires. When a run at the chosen settings
+!>  4. One run with the other theory (linear against von Karman) and,
+!>     when the laminate has D16, D26, one with the other bend-twist model
+!>     (the paper's averaged reduced plate against the full plate that
+!>     keeps them): their relative changes say which model the scene
+!>     requires. First on the chosen mesh at dt0, where they cost 2^k
+!>     times less than at dt0/2^k; again at the chosen settings only when
+!>     the change at dt0, give or take twice the time errors of both
+!>     steps, could turn the verdict. When a run at the chosen settings
 !>     would pass the cap, at the finest ladder run whose variant fits.
 !>  5. <prefix>_summary.dat and <prefix>_accuracy.dat
 !>     (src/accuracy/accuracy_report.f90); the runs stay in <prefix>_acc/.
@@ -60,10 +63,10 @@ module accuracy_driver
    use accuracy_ladder, only: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, time_partner, &
       done_run, axis_time, axis_mesh
    use accuracy_report, only: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
-      report_terminal
+      report_terminal, model_changes, model_required
    implicit none
    private
-   public :: run_accuracy, exit_not_met, comparison_base, ladder_mesh, bend_twist_variant
+   public :: run_accuracy, exit_not_met, comparison_base, ladder_mesh, bend_twist_variant, coarse_base, verdict_settled
 
    !> Exit status of an accuracy run that did not meet its target.
    integer, parameter :: exit_not_met = 3
@@ -114,7 +117,7 @@ contains
       if (stat /= 0) return
       call set_up(opts, deck, unit, base, la, scene, runs, stat, errmsg)
       if (stat == 0) call climb(base, la, runs, tx, mx, out, stat, errmsg)
-      if (stat == 0) call compare_models(base, scene, la, runs, out, cmp, stat, errmsg)
+      if (stat == 0) call compare_models(base, scene, la, runs, tx, mx, out, cmp, stat, errmsg)
       call system_clock(wall1)
       out%wall_s = real(wall1 - wall0, dp)/real(rate, dp)
       if (stat == 0) call write_accuracy_table(deck, runs, tx, mx, out, stat, errmsg)
@@ -559,24 +562,81 @@ contains
    end function can_halve_dt
 
    !> Step 4 of the module header: the other theory and the other
-   !> bend-twist model at the chosen settings, run together; at the
-   !> finest ladder run done whose variant the cap still allows when the
-   !> chosen run's would pass it (a model's change hardly depends on the
-   !> discretisation; the report names the run compared with).
-   subroutine compare_models(deck, scene, la, runs, out, cmp, stat, errmsg)
+   !> bend-twist model, run together. First at the chosen mesh's run at
+   !> the ladder's first step (coarse_base): a model's change hardly
+   !> depends on the step, and that run costs 2^k times less than the
+   !> chosen run at dt0/2^k. A comparison whose verdict that change
+   !> settles (verdict_settled) stays there; the others are made again at
+   !> the chosen settings when the cap allows, and keep the first
+   !> comparison when it does not. When the chosen run is at dt0 (or its
+   !> mesh has no run there), at the chosen settings, or at the costliest
+   !> ladder run done whose variant the cap still allows
+   !> (comparison_base). The report names the run compared with.
+   subroutine compare_models(deck, scene, la, runs, tx, mx, out, cmp, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
       type(scene_t), intent(in) :: scene            !< the scene of the deck's model
       type(launcher_t), intent(inout) :: la         !< the launcher
       type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
+      type(axis_t), intent(in) :: tx, mx            !< the time and mesh axes
       type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the run chosen)
       type(comparison_t), intent(out) :: cmp(2)     !< the two comparisons
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
+      character(len=*), parameter :: past_cap = 'a run at its settings would pass &accuracy max_cpu_s'
+      type(comparison_t) :: first(2)
+      real(dp) :: slack(nq)
+      integer :: coarse, i
+      logical :: settled(2), chosen_fits
+
+      settled = .false.
+      coarse = coarse_base(runs, out%chosen)
+      if (coarse /= out%chosen) then
+         slack = change_slack(runs, tx, mx, out, coarse)
+         call make_variants(deck, scene, la, runs, comparison_base(runs, la, coarse), [.true., .true.], first, &
+                            stat, errmsg)
+         if (stat /= 0) return
+         cmp = first
+         if (first(1)%base /= coarse) then         ! even that run would pass the cap
+            cmp%at = past_cap
+            return
+         end if
+         chosen_fits = comparison_base(runs, la, out%chosen) == out%chosen
+         do i = 1, 2
+            settled(i) = verdict_settled(first(i), runs, out, slack)
+            first(i)%at = coarse_words(settled(i) .or. .not. chosen_fits, settled(i), slack, out)
+         end do
+         cmp = first
+         if (all(settled) .or. .not. chosen_fits) return
+      end if
+      call make_variants(deck, scene, la, runs, comparison_base(runs, la, out%chosen), .not. settled, cmp, &
+                         stat, errmsg)
+      if (stat /= 0) return
+      do i = 1, 2
+         if (cmp(i)%base /= out%chosen) cmp(i)%at = past_cap
+         if (settled(i)) cmp(i) = first(i)
+         if (settled(i) .or. first(i)%run == 0 .or. cmp(i)%run == 0) cycle
+         if (runs(cmp(i)%run)%state /= state_done .and. runs(first(i)%run)%state == state_done) then
+            cmp(i) = first(i)                       ! the cap skipped the second: the first stands
+            cmp(i)%at = coarse_words(.true., .false., slack, out)
+         end if
+      end do
+   end subroutine compare_models
+
+   !> The variants of the models of want (theory, bend-twist) at the
+   !> settings of run base, planned and run; cmp says what each compares.
+   subroutine make_variants(deck, scene, la, runs, base, want, cmp, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(scene_t), intent(in) :: scene            !< the scene of the deck's model
+      type(launcher_t), intent(inout) :: la         !< the launcher
+      type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
+      integer, intent(in) :: base                   !< the run compared with
+      logical, intent(in) :: want(2)                !< the theory, the bend-twist model
+      type(comparison_t), intent(out) :: cmp(2)     !< the two comparisons (run 0 where not wanted)
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< what failed
       type(run_t) :: r
       character(len=16) :: other
-      integer :: base
 
-      base = comparison_base(runs, la, out%chosen)
       cmp%base = base
       r = runs(base)
       r%state = state_planned;  r%cpu_s = 0.0_dp;  r%has = .false.;  r%variant = '';  r%status = ''
@@ -585,20 +645,100 @@ contains
       other = merge('nonlinear', 'linear   ', la%theory == 'linear')
       cmp(1)%what = 'theory'
       cmp(1)%compared = trim(other) // ' instead of ' // trim(la%theory)
-      r%role = 'theory'
-      r%name = trim(runs(base)%name) // '_' // trim(other)
-      r%variant(1) = "analysis.theory='" // trim(other) // "'"
-      runs = [runs, r]
-      cmp(1)%run = size(runs)
+      if (want(1)) then
+         r%role = 'theory'
+         r%name = trim(runs(base)%name) // '_' // trim(other)
+         r%variant(1) = "analysis.theory='" // trim(other) // "'"
+         runs = [runs, r]
+         cmp(1)%run = size(runs)
+      end if
       ! -- D16, D26
       cmp(2)%what = 'bend_twist'
       call bend_twist_variant(deck, scene, runs(base), r, cmp(2))
-      if (len_trim(cmp(2)%note) == 0) then
+      if (want(2) .and. len_trim(cmp(2)%note) == 0) then
          runs = [runs, r]
          cmp(2)%run = size(runs)
       end if
       call run_planned(runs, la, stat, errmsg)
-   end subroutine compare_models
+   end subroutine make_variants
+
+   !> The run on the chosen run's mesh at the ladder's first step, dt0:
+   !> the ladder's mesh axis runs every mesh there. The chosen run itself
+   !> when it is at dt0 or that run is not done.
+   integer function coarse_base(runs, chosen) result(coarse)
+      type(run_t), intent(in) :: runs(:)            !< the runs
+      integer, intent(in) :: chosen                 !< the run chosen
+      coarse = ladder_run(runs, 0, runs(chosen)%j)
+      if (coarse == 0) then
+         coarse = chosen
+      else if (runs(coarse)%state /= state_done) then
+         coarse = chosen
+      end if
+   end function coarse_base
+
+   !> How far a model's relative change at run coarse may lie from the
+   !> change at the chosen settings, for each result: the two runs of the
+   !> change each move by at most their time errors between the two steps,
+   !> the variant's taken as large as the base's (it differs from the base
+   !> by the change itself), so 2 (e_t(coarse) + e_t(chosen)) / |q|.
+   function change_slack(runs, tx, mx, out, coarse) result(slack)
+      type(run_t), intent(in) :: runs(:)            !< the runs
+      type(axis_t), intent(in) :: tx, mx            !< the time and mesh axes
+      type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the run chosen, its errors)
+      integer, intent(in) :: coarse                 !< the run compared with first
+      real(dp) :: slack(nq)
+      type(judged_t) :: jd
+      jd = judge_run(runs, tx, mx, 0, runs(coarse)%j, out%target, out%estimated)
+      where (runs(coarse)%q /= 0.0_dp)
+         slack = 2.0_dp*(jd%err_time + out%jd%err_time)/abs(runs(coarse)%q)
+      elsewhere
+         slack = huge(1.0_dp)
+      end where
+   end function change_slack
+
+   !> Whether the verdict of comparison c (model_required) would be the
+   !> same for every change within slack of the one measured: a result
+   !> that must meet the target changes by more than target + slack, or
+   !> every one by at most target - slack. A comparison not made settles
+   !> nothing.
+   logical function verdict_settled(c, runs, out, slack) result(settled)
+      type(comparison_t), intent(in) :: c           !< the comparison
+      type(run_t), intent(in) :: runs(:)            !< the runs
+      type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the target, the results targeted)
+      real(dp), intent(in) :: slack(nq)             !< change_slack
+      real(dp) :: change(nq)
+      settled = .false.
+      if (c%run == 0) return
+      if (runs(c%run)%state /= state_done) return
+      change = model_changes(c, runs, out)
+      settled = model_required(abs(change) - slack, out) .or. .not. model_required(abs(change) + slack, out)
+   end function verdict_settled
+
+   !> Why a comparison stays at the chosen mesh's run at dt0 (kept: it
+   !> does; settled: its verdict is settled, else the chosen settings
+   !> would pass the cap), with the slack of the results targeted.
+   function coarse_words(kept, settled, slack, out) result(text)
+      logical, intent(in) :: kept                   !< it stays there
+      logical, intent(in) :: settled                !< verdict_settled
+      real(dp), intent(in) :: slack(nq)             !< change_slack
+      type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the results targeted)
+      character(len=:), allocatable :: text, bands
+      integer :: iq
+      bands = ''
+      do iq = 1, nq
+         if (.not. out%targeted(iq)) cycle
+         if (len(bands) > 0) bands = bands // ', '
+         bands = bands // trim(result_keys(iq)) // ' ' // real_short(100.0_dp*min(slack(iq), 1.0_dp)) // ' %'
+      end do
+      text = 'the chosen mesh at the ladder''s first step; the change at the chosen step lies within ' // bands // &
+             ' of it (twice the time errors of both steps)'
+      if (.not. kept) return
+      if (settled) then
+         text = text // ', which leaves the verdict as it is'
+      else
+         text = text // ', which could turn the verdict; a run at the chosen settings would pass &accuracy max_cpu_s'
+      end if
+   end function coarse_words
 
    !> The run the models are compared at: the chosen one, or when a run
    !> at its settings would pass the cap, the costliest ladder run done at

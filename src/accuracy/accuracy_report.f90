@@ -27,14 +27,16 @@ module accuracy_report
    use accuracy_ladder, only: axis_t, judged_t, judge_run
    implicit none
    private
-   public :: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, report_terminal
+   public :: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, report_terminal, &
+             model_changes, model_required
 
    !> A model compared at the chosen settings: the theory, or D16, D26.
    type :: comparison_t
       character(len=12) :: what = ''               !< 'theory' or 'bend_twist'
       character(len=160) :: compared = ''          !< what the other run changes
       integer :: run = 0                           !< its run, 0 when none was made
-      integer :: base = 0                          !< the run it is compared with (the chosen, or one the cap allows)
+      integer :: base = 0                          !< the run it is compared with (the chosen, or another: at)
+      character(len=400) :: at = ''                !< why base is not the run chosen
       character(len=160) :: note = ''              !< why none was made
    end type comparison_t
 
@@ -235,6 +237,7 @@ contains
       type(comparison_t), intent(in) :: c          !< the comparison
       type(run_t), intent(in) :: runs(:)           !< the runs
       type(accuracy_outcome_t), intent(in) :: out  !< the outcome
+      real(dp) :: change(nq)
       integer :: iq
       if (c%run == 0) then
          call summary_text(items, trim(c%what) // '_compared', 'none: ' // trim(c%note))
@@ -246,11 +249,11 @@ contains
       end if
       call summary_text(items, trim(c%what) // '_compared', trim(c%compared))
       call summary_text(items, trim(c%what) // '_compared_at', trim(runs(c%base)%name))
+      change = model_changes(c, runs, out)
       do iq = 1, nq
          if (.not. out%estimated(iq)) cycle
          call summary_real(items, trim(result_keys(iq)) // '_change_' // trim(c%what), trim(result_keys(iq)) // &
-                           '_change_' // trim(c%what), '-', relative(runs(c%run)%q(iq) - runs(c%base)%q(iq), &
-                           runs(c%base)%q(iq)), 1.0_dp)
+                           '_change_' // trim(c%what), '-', change(iq), 1.0_dp)
       end do
    end subroutine comparison_items
 
@@ -311,17 +314,16 @@ contains
          write (unit, '(a)') 'model: ' // trim(c%what) // ': not compared: ' // not_done(runs(c%run))
          return
       end if
-      change = 0.0_dp
+      change = model_changes(c, runs, out)
       line = ''
       do iq = 1, nq
          if (.not. out%estimated(iq)) cycle
-         change(iq) = relative(runs(c%run)%q(iq) - runs(c%base)%q(iq), runs(c%base)%q(iq))
          write (line, '(a,1x,a,f8.3,a)') trim(line), trim(result_keys(iq)), 100.0_dp*change(iq), ' %'
       end do
       write (unit, '(a)') 'model: ' // trim(c%what) // ': ' // trim(c%compared) // ' changes' // trim(line)
       if (c%base /= out%chosen) write (unit, '(a)') 'model: ' // trim(c%what) // ': compared at run ' // &
-         trim(runs(c%base)%name) // ', not at the run chosen: a run at its settings would pass &accuracy max_cpu_s'
-      if (maxval(abs(change), mask=out%targeted) > out%target) then
+         trim(runs(c%base)%name) // ', not at the run chosen: ' // trim(c%at)
+      if (model_required(change, out)) then
          write (unit, '(a)') 'model: ' // trim(c%what) // ': more than the target ' // real_short(out%target) // &
             ': the scene requires the model of the run chosen'
       else
@@ -329,6 +331,28 @@ contains
             ': the other model would do as well'
       end if
    end subroutine comparison_lines
+
+   !> The relative change of each result estimated that the other model
+   !> of comparison c makes (0 for the others).
+   pure function model_changes(c, runs, out) result(change)
+      type(comparison_t), intent(in) :: c          !< the comparison (its runs done)
+      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(accuracy_outcome_t), intent(in) :: out  !< the outcome (the results estimated)
+      real(dp) :: change(nq)
+      integer :: iq
+      change = 0.0_dp
+      do iq = 1, nq
+         if (out%estimated(iq)) change(iq) = relative(runs(c%run)%q(iq) - runs(c%base)%q(iq), runs(c%base)%q(iq))
+      end do
+   end function model_changes
+
+   !> The verdict of a comparison: the scene requires the model chosen when
+   !> a result that must meet the target changes by more than the target.
+   pure logical function model_required(change, out)
+      real(dp), intent(in) :: change(nq)           !< the relative changes (model_changes)
+      type(accuracy_outcome_t), intent(in) :: out  !< the outcome (the target, the results targeted)
+      model_required = any(out%targeted .and. abs(change) > out%target)
+   end function model_required
 
    !> Why a run has no results: skipped for the cap, or failed.
    function not_done(run) result(text)
