@@ -37,7 +37,8 @@
 !>     requires. First on the chosen mesh at dt0, where they cost 2^k
 !>     times less than at dt0/2^k; again at the chosen settings only when
 !>     the change at dt0, give or take twice the time errors of both
-!>     steps, could turn the verdict. When a run at the chosen settings
+!>     steps and a tenth of the change, could turn the verdict. When a run
+!>     at the chosen settings
 !>     would pass the cap, at the finest ladder run whose variant fits.
 !>  5. <prefix>_summary.dat and <prefix>_accuracy.dat
 !>     (src/accuracy/accuracy_report.f90); the runs stay in <prefix>_acc/.
@@ -603,8 +604,8 @@ contains
          chosen_fits = comparison_base(runs, la, out%chosen) == out%chosen
          do i = 1, 2
             settled(i) = verdict_settled(first(i), runs, out, slack)
-            if (first(i)%run > 0) first(i)%at = coarse_words(settled(i) .or. .not. chosen_fits, settled(i), &
-                                                             change_band(first(i), runs, out, slack), out)
+            if (settled(i) .or. (.not. chosen_fits .and. made(first(i)))) &
+               first(i)%at = coarse_words(settled(i), change_band(model_changes(first(i), runs, out), slack), out)
          end do
          cmp = first
          if (all(settled) .or. .not. chosen_fits) return
@@ -615,12 +616,22 @@ contains
       do i = 1, 2
          if (cmp(i)%base /= out%chosen) cmp(i)%at = past_cap
          if (settled(i)) cmp(i) = first(i)
-         if (settled(i) .or. first(i)%run == 0 .or. cmp(i)%run == 0) cycle
-         if (runs(cmp(i)%run)%state /= state_done .and. runs(first(i)%run)%state == state_done) then
+         if (settled(i) .or. cmp(i)%run == 0) cycle
+         if (runs(cmp(i)%run)%state /= state_done .and. made(first(i))) then
             cmp(i) = first(i)                       ! the cap skipped the second: the first stands
-            cmp(i)%at = coarse_words(.true., .false., change_band(first(i), runs, out, slack), out)
+            cmp(i)%at = coarse_words(.false., change_band(model_changes(first(i), runs, out), slack), out)
          end if
       end do
+
+   contains
+
+      !> The comparison's variant was made and has results.
+      logical function made(c)
+         type(comparison_t), intent(in) :: c
+         made = .false.
+         if (c%run > 0) made = runs(c%run)%state == state_done
+      end function made
+
    end subroutine compare_models
 
    !> The variants of the models of want (theory, bend-twist) at the
@@ -697,21 +708,19 @@ contains
       end where
    end function change_slack
 
-   !> The band about comparison c's change within which the change at
-   !> the chosen step lies: slack (change_slack), and change_share of the
+   !> The band about a model's changes within which the change at the
+   !> chosen step lies: slack (change_slack), and change_share of the
    !> change itself for the variant's own time error, which the base's
    !> does not bound when the models differ (by hand, 55 results of seven
    !> scenes of check 12: the linear plate's strain in heavy_slow_thick
    !> changed by 1.30 % at 5 us and 1.42 % at 1.25 us, where slack alone
    !> is 0.105 %).
-   pure function change_band(c, runs, out, slack) result(band)
-      type(comparison_t), intent(in) :: c           !< the comparison (its runs done)
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the results estimated)
+   pure function change_band(change, slack) result(band)
+      real(dp), intent(in) :: change(nq)            !< the relative changes (model_changes)
       real(dp), intent(in) :: slack(nq)             !< change_slack
       real(dp) :: band(nq)
       real(dp), parameter :: change_share = 0.1_dp
-      band = slack + change_share*abs(model_changes(c, runs, out))
+      band = slack + change_share*abs(change)
    end function change_band
 
    !> Whether the verdict of comparison c (model_required) would be the
@@ -729,16 +738,15 @@ contains
       if (c%run == 0) return
       if (runs(c%run)%state /= state_done) return
       change = model_changes(c, runs, out)
-      band = change_band(c, runs, out, slack)
+      band = change_band(change, slack)
       settled = model_required(max(abs(change) - band, 0.0_dp), out) .or. &
                 .not. model_required(abs(change) + band, out)
    end function verdict_settled
 
-   !> Why a comparison stays at the chosen mesh's run at dt0 (kept: it
-   !> does; settled: its verdict is settled, else the chosen settings
-   !> would pass the cap), with the band of the results targeted.
-   function coarse_words(kept, settled, band, out) result(text)
-      logical, intent(in) :: kept                   !< it stays there
+   !> Why a comparison stays at the chosen mesh's run at dt0 (settled: its
+   !> verdict is settled, else the chosen settings would pass the cap),
+   !> with the band of the results targeted.
+   function coarse_words(settled, band, out) result(text)
       logical, intent(in) :: settled                !< verdict_settled
       real(dp), intent(in) :: band(nq)              !< change_band
       type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the results targeted)
@@ -752,7 +760,6 @@ contains
       end do
       text = 'the chosen mesh at the ladder''s first step; the change at the chosen step lies within ' // bands // &
              ' of it (twice the time errors of both steps and a tenth of the change)'
-      if (.not. kept) return
       if (settled) then
          text = text // ', which leaves the verdict as it is'
       else
