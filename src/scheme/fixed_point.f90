@@ -22,6 +22,17 @@
 !> out of iterations, the guard says so (state) and the caller stops the run
 !> with a diagnostic: never a silent wrong answer.
 !>
+!> With guard%accelerate (scheme 'fast', src/scheme/fast_scheme.f90) the
+!> mixing is not a fall-back but the iteration itself from its fifth
+!> iterate on: the first four are plain (most steps need no more, and
+!> they measure the plain map's contraction for the rate test below),
+!> every later one combines the iterates so far (Anderson acceleration).
+!> Where the deflection is large the plain map contracts slowly, and more
+!> slowly on finer meshes; accelerated, its iterations stay few
+!> (docs/PERFORMANCE.md, "Large deflections"). The mixing's own tests
+!> apply from the start; when they fail there is nothing further to fall
+!> back to, and the caller's sub-steps take over (src/scheme/substeps.f90).
+!>
 !> Convergence is eq. (18) on the residual of the map,
 !>   sum (G(D) - D)^2 <= C_r2 sum (G(D) - D_t)^2,
 !> which is the paper's test for the plain iteration (there D^{n+1} = G(D^n)),
@@ -37,7 +48,11 @@
 !> and the ratios may alternate between a large and a small fall, so one
 !> quotient alone can promise far more than the next iteration gives); never
 !> for the second (its quotient is the first's: the paper's test decides);
-!> and only while the ratio itself is below rate_test_max_ratio.
+!> accelerated, from the fifth on the fourth's (the test bounds the error
+!> of G(D) by theta/(1 - theta) |G(D) - D|, theta the contraction of the
+!> map however D was found, and the falls of the mixed iterates are not
+!> the map's); never after the fall-back; and only while the ratio itself
+!> is below rate_test_max_ratio.
 !>
 !> Usage, once per plate solution:
 !>     call fp_start(guard, n, max_iter, cr2)
@@ -81,6 +96,9 @@ module fixed_point
    real(dp), parameter :: restart_factor = 1.0e3_dp
    !> Previous iterates combined by Anderson mixing.
    integer, parameter :: anderson_depth = 5
+   !> Accelerated, the last plain iteration: the mixing makes the next
+   !> iterate (module header).
+   integer, parameter :: first_mixed = 4
    !> Relative size below which the least-squares problem of the mixing is
    !> treated as rank deficient (dgelsy's rcond).
    real(dp), parameter :: mixing_rcond = 1.0e-10_dp
@@ -98,8 +116,10 @@ module fixed_point
       real(dp) :: cr2 = 0.0_dp            !< tolerance of eq. (18)
       real(dp) :: ratio = huge(1.0_dp)    !< last eq. (18) ratio sum R^2 / sum (G - D_t)^2
       logical :: rate_test = .false.      !< also accept on the estimated next change (module header)
+      logical :: accelerate = .false.     !< Anderson mixing from the fifth iterate on, not only as a fall-back
       real(dp) :: theta2_first = 1.0_dp   !< theta^2 of the rate test's first iteration
       real(dp) :: ratios_before(2) = huge(1.0_dp)  !< the eq. (18) ratios of the two iterations before the last
+      real(dp) :: plain_theta2 = huge(1.0_dp)      !< theta^2 of the rate test from the third iteration on (plain map)
       real(dp) :: res = huge(1.0_dp)      !< last sum R^2 (m^2, rad^2)
       real(dp) :: res_best = huge(1.0_dp) !< smallest sum R^2 so far
       integer :: growths = 0              !< residual growths in a row
@@ -112,6 +132,7 @@ module fixed_point
       real(dp), allocatable :: window(:)  !< sum R^2 of each iteration (stagnation test)
       real(dp), allocatable :: d_best(:)  !< the iterate with the smallest residual
       integer :: ncol = 0                 !< columns of the mixing history in use
+      integer :: newest = 0               !< the column of df, dg written last (a ring of anderson_depth)
       real(dp), allocatable :: df(:,:)    !< differences of successive residuals
       real(dp), allocatable :: dg(:,:)    !< differences of successive G values
       real(dp), allocatable :: f_last(:)  !< last residual
@@ -146,8 +167,10 @@ contains
       guard%cr2 = cr2
       guard%ratio = huge(1.0_dp)
       guard%rate_test = .false.
+      guard%accelerate = .false.
       guard%theta2_first = 1.0_dp
       guard%ratios_before = huge(1.0_dp)
+      guard%plain_theta2 = huge(1.0_dp)
       guard%res = huge(1.0_dp)
       guard%res_best = huge(1.0_dp)
       guard%growths = 0
@@ -158,6 +181,7 @@ contains
       guard%mixing_cause = fp_iterating
       guard%window_start = 1
       guard%ncol = 0
+      guard%newest = 0
       guard%has_last = .false.
       if (allocated(guard%window)) then
          if (size(guard%window) /= max_iter) deallocate (guard%window)
@@ -180,6 +204,7 @@ contains
       real(dp), intent(in) :: d_t(:)            !< converged solution at t
       real(dp) :: num, den, theta2
       integer :: it, trouble
+      logical :: mixed
 
       guard%iterations = guard%iterations + 1
       it = guard%iterations
@@ -194,6 +219,7 @@ contains
       end if
       guard%window(it) = num
       if (it == 1) guard%d_best = d
+      mixed = guard%mixing .or. guard%accelerate
 
       ! -- eq. (18), or nothing left to gain above rounding
       if (ieee_is_finite(num) .and. ieee_is_finite(den)) then
@@ -203,9 +229,11 @@ contains
          end if
       end if
       ! -- the rate test: eq. (18) on the estimated next change
+      if (it <= first_mixed .or. .not. guard%accelerate) &
+         guard%plain_theta2 = max(guard%ratio/guard%ratios_before(2), guard%ratios_before(2)/guard%ratios_before(1))
       if (guard%rate_test .and. .not. guard%mixing .and. guard%ratio <= rate_test_max_ratio .and. it /= 2) then
          theta2 = guard%theta2_first
-         if (it >= 3) theta2 = max(guard%ratio/guard%ratios_before(2), guard%ratios_before(2)/guard%ratios_before(1))
+         if (it >= 3) theta2 = guard%plain_theta2
          if (theta2 < 1.0_dp .and. theta2*guard%ratio <= guard%cr2) then
             guard%state = fp_converged
             return
@@ -215,7 +243,7 @@ contains
       trouble = fp_iterating
       if (.not. (ieee_is_finite(num) .and. ieee_is_finite(den))) then
          trouble = fp_not_finite
-      else if (.not. guard%mixing) then
+      else if (.not. mixed) then
          ! -- the plain iteration: growth in a row, or too slow a fall
          if (it > guard%window_start .and. num > guard%window(it - 1)) then
             guard%growths = guard%growths + 1
@@ -247,8 +275,8 @@ contains
       end if
 
       if (trouble /= fp_iterating) then
-         if (guard%mixing) then
-            guard%state = trouble                 ! the fall-back failed too
+         if (mixed) then
+            guard%state = trouble                 ! the fall-back failed too, or the accelerated iteration
             return
          end if
          ! -- fall back to Anderson mixing, from the best iterate so far
@@ -263,7 +291,9 @@ contains
 
    !> The next iterate: G(D) for the plain iteration of eq. (19); after the
    !> fall-back, Anderson mixing of the last iterates (the first mixing
-   !> iterate is the best iterate so far).
+   !> iterate is the best iterate so far); accelerated, plain up to the
+   !> iteration first_mixed, then Anderson mixing of the iterates from the
+   !> first on.
    subroutine fp_next(guard, d, g, stat, errmsg)
       type(fp_guard_t), intent(inout) :: guard  !< guard (mixing history)
       real(dp), intent(inout) :: d(:)           !< iterate in, next iterate out
@@ -275,7 +305,7 @@ contains
       integer :: jpvt(anderson_depth), rank, info, m, n
 
       stat = 0
-      if (.not. guard%mixing) then
+      if (.not. (guard%mixing .or. guard%accelerate)) then
          d = g
          return
       end if
@@ -284,27 +314,26 @@ contains
          d = guard%d_best
          guard%restart = .false.
          guard%ncol = 0
+         guard%newest = 0
          guard%has_last = .false.
          return
       end if
 
-      ! -- Anderson mixing: append the differences, solve the small least-squares problem
+      ! -- Anderson mixing: the differences over the oldest in the ring (the
+      !    least-squares problem does not depend on the columns' order), then
+      !    the small least-squares problem
       n = size(d)
       if (guard%has_last) then
-         if (guard%ncol == anderson_depth) then
-            guard%df(:, 1:anderson_depth - 1) = guard%df(:, 2:anderson_depth)
-            guard%dg(:, 1:anderson_depth - 1) = guard%dg(:, 2:anderson_depth)
-         else
-            guard%ncol = guard%ncol + 1
-         end if
-         guard%df(:, guard%ncol) = (g - d) - guard%f_last
-         guard%dg(:, guard%ncol) = g - guard%g_last
+         guard%newest = modulo(guard%newest, anderson_depth) + 1
+         guard%ncol = min(guard%ncol + 1, anderson_depth)
+         guard%df(:, guard%newest) = (g - d) - guard%f_last
+         guard%dg(:, guard%newest) = g - guard%g_last
       end if
       guard%f_last = g - d
       guard%g_last = g
       guard%has_last = .true.
       m = guard%ncol
-      if (m == 0) then
+      if (m == 0 .or. (.not. guard%mixing .and. guard%iterations < first_mixed)) then
          d = g
          return
       end if
@@ -362,6 +391,7 @@ contains
          ' iterations; eq. (18) ratio sum (G(D) - D)^2 / sum (G(D) - D_t)^2 = ', guard%ratio, &
          ' against C_r2 = ', guard%cr2, '; sum (G(D) - D)^2 = ', guard%res
       text = fp_state_text(guard%state) // trim(buf)
+      if (guard%accelerate) text = text // '; Anderson-accelerated from the fifth iterate (scheme fast)'
       if (guard%mixing) text = text // '; the plain iteration had stopped at iteration ' // &
          int_str(guard%mixing_from) // ', ' // fp_state_text(guard%mixing_cause) // &
          ', and the fall-back (Anderson mixing) took over from there'
