@@ -38,8 +38,8 @@
 !>     times less than at dt0/2^k; again at the chosen settings only when
 !>     the change at dt0, give or take twice the time errors of both
 !>     steps and a tenth of the change, could turn the verdict. When a run
-!>     at the chosen settings
-!>     would pass the cap, at the finest ladder run whose variant fits.
+!>     at the chosen settings would pass the cap, at the finest ladder run
+!>     whose variant fits.
 !>  5. <prefix>_summary.dat and <prefix>_accuracy.dat
 !>     (src/accuracy/accuracy_report.f90); the runs stay in <prefix>_acc/.
 !> Exit status 0 when the target is met, exit_not_met (3) when the cap or
@@ -719,7 +719,7 @@ contains
       real(dp), intent(in) :: change(nq)            !< the relative changes (model_changes)
       real(dp), intent(in) :: slack(nq)             !< change_slack
       real(dp) :: band(nq)
-      real(dp), parameter :: change_share = 0.1_dp
+      real(dp), parameter :: change_share = 0.1_dp   ! share of the change (-)
       band = slack + change_share*abs(change)
    end function change_band
 
