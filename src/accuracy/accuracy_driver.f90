@@ -67,7 +67,8 @@ module accuracy_driver
       report_terminal, model_changes, model_required
    implicit none
    private
-   public :: run_accuracy, exit_not_met, comparison_base, ladder_mesh, bend_twist_variant, coarse_base, verdict_settled
+   public :: run_accuracy, exit_not_met, comparison_base, variant_bases, ladder_mesh, bend_twist_variant, coarse_base, &
+             verdict_settled
 
    !> Exit status of an accuracy run that did not meet its target.
    integer, parameter :: exit_not_met = 3
@@ -570,9 +571,9 @@ contains
    !> settles (verdict_settled) stays there; the others are made again at
    !> the chosen settings when the cap allows, and keep the first
    !> comparison when it does not. When the chosen run is at dt0 (or its
-   !> mesh has no run there), at the chosen settings, or at the costliest
-   !> ladder run done whose variant the cap still allows
-   !> (comparison_base). The report names the run compared with.
+   !> mesh has no run there), at the chosen settings, or, each comparison
+   !> for itself, at the costliest ladder run done whose variant the cap
+   !> still allows (variant_bases). The report names the run compared with.
    subroutine compare_models(deck, scene, la, runs, tx, mx, out, cmp, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
       type(scene_t), intent(in) :: scene            !< the scene of the deck's model
@@ -584,42 +585,50 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
       character(len=*), parameter :: past_cap = 'a run at its settings would pass &accuracy max_cpu_s'
-      type(comparison_t) :: first(2)
+      type(comparison_t) :: first(2), second(2)
       real(dp) :: slack(nq)
-      integer :: coarse, i
-      logical :: settled(2), chosen_fits
+      integer :: coarse, i, base(2)
+      logical :: again(2)
 
-      settled = .false.
+      again = .true.
+      slack = 0.0_dp                                ! made (again) at the chosen settings
       coarse = coarse_base(runs, out%chosen)
       if (coarse /= out%chosen) then
          slack = change_slack(runs, tx, mx, out, coarse)
-         call make_variants(deck, scene, la, runs, comparison_base(runs, la, coarse), [.true., .true.], first, &
-                            stat, errmsg)
+         call make_variants(deck, scene, la, runs, variant_bases(deck, scene, runs, la, coarse, again), again, &
+                            first, stat, errmsg)
          if (stat /= 0) return
          cmp = first
-         if (first(1)%base /= coarse) then         ! even that run would pass the cap
-            cmp%at = past_cap
-            return
-         end if
-         chosen_fits = comparison_base(runs, la, out%chosen) == out%chosen
          do i = 1, 2
-            settled(i) = verdict_settled(first(i), runs, out, slack)
-            if (settled(i) .or. (.not. chosen_fits .and. made(first(i)))) &
-               first(i)%at = coarse_words(settled(i), change_band(model_changes(first(i), runs, out), slack), out)
+            if (first(i)%base /= coarse) then      ! even that run would pass the cap
+               cmp(i)%at = past_cap
+               again(i) = .false.
+            else if (verdict_settled(first(i), runs, out, slack)) then
+               again(i) = .false.
+               cmp(i)%at = coarse_words(.true., change_band(model_changes(first(i), runs, out), slack), out)
+            end if
          end do
-         cmp = first
-         if (all(settled) .or. .not. chosen_fits) return
+         base = variant_bases(deck, scene, runs, la, out%chosen, again)
+         do i = 1, 2
+            if (.not. again(i) .or. base(i) == out%chosen) cycle
+            again(i) = .false.                      ! the chosen settings would pass the cap
+            if (made(first(i))) &
+               cmp(i)%at = coarse_words(.false., change_band(model_changes(first(i), runs, out), slack), out)
+         end do
+         if (.not. any(again)) return
       end if
-      call make_variants(deck, scene, la, runs, comparison_base(runs, la, out%chosen), .not. settled, cmp, &
-                         stat, errmsg)
+      call make_variants(deck, scene, la, runs, variant_bases(deck, scene, runs, la, out%chosen, again), again, &
+                         second, stat, errmsg)
       if (stat /= 0) return
       do i = 1, 2
-         if (cmp(i)%base /= out%chosen) cmp(i)%at = past_cap
-         if (settled(i)) cmp(i) = first(i)
-         if (settled(i) .or. cmp(i)%run == 0) cycle
-         if (runs(cmp(i)%run)%state /= state_done .and. made(first(i))) then
-            cmp(i) = first(i)                       ! the cap skipped the second: the first stands
-            cmp(i)%at = coarse_words(.false., change_band(model_changes(first(i), runs, out), slack), out)
+         if (.not. again(i)) cycle
+         if (second(i)%run == 0 .or. coarse == out%chosen .or. .not. made(cmp(i))) then
+            cmp(i) = second(i)
+            if (cmp(i)%base /= out%chosen) cmp(i)%at = past_cap
+         else if (made(second(i))) then
+            cmp(i) = second(i)
+         else                                       ! the cap skipped the second: the first stands
+            cmp(i)%at = coarse_words(.false., change_band(model_changes(cmp(i), runs, out), slack), out)
          end if
       end do
 
@@ -634,14 +643,15 @@ contains
 
    end subroutine compare_models
 
-   !> The variants of the models of want (theory, bend-twist) at the
-   !> settings of run base, planned and run; cmp says what each compares.
+   !> The variants of the models of want (theory, bend-twist), each at the
+   !> settings of its run base(i), planned and run together; cmp says
+   !> what each compares.
    subroutine make_variants(deck, scene, la, runs, base, want, cmp, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
       type(scene_t), intent(in) :: scene            !< the scene of the deck's model
       type(launcher_t), intent(inout) :: la         !< the launcher
       type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
-      integer, intent(in) :: base                   !< the run compared with
+      integer, intent(in) :: base(2)                !< the runs compared with: the theory's, the bend-twist's
       logical, intent(in) :: want(2)                !< the theory, the bend-twist model
       type(comparison_t), intent(out) :: cmp(2)     !< the two comparisons (run 0 where not wanted)
       integer, intent(out) :: stat                  !< 0 on success
@@ -650,29 +660,71 @@ contains
       character(len=16) :: other
 
       cmp%base = base
-      r = runs(base)
-      r%state = state_planned;  r%cpu_s = 0.0_dp;  r%has = .false.;  r%variant = '';  r%status = ''
-      r%exit_code = 0;  r%pid = -1
       ! -- the theory
       other = merge('nonlinear', 'linear   ', la%theory == 'linear')
       cmp(1)%what = 'theory'
       cmp(1)%compared = trim(other) // ' instead of ' // trim(la%theory)
       if (want(1)) then
+         r = planned_copy(runs(base(1)))
          r%role = 'theory'
-         r%name = trim(runs(base)%name) // '_' // trim(other)
+         r%name = trim(runs(base(1))%name) // '_' // trim(other)
          r%variant(1) = "analysis.theory='" // trim(other) // "'"
          runs = [runs, r]
          cmp(1)%run = size(runs)
       end if
       ! -- D16, D26
       cmp(2)%what = 'bend_twist'
-      call bend_twist_variant(deck, scene, runs(base), r, cmp(2))
+      r = planned_copy(runs(base(2)))
+      call bend_twist_variant(deck, scene, runs(base(2)), r, cmp(2))
       if (want(2) .and. len_trim(cmp(2)%note) == 0) then
          runs = [runs, r]
          cmp(2)%run = size(runs)
       end if
       call run_planned(runs, la, stat, errmsg)
    end subroutine make_variants
+
+   !> A run at the settings of run c, planned: nothing of c's outcome.
+   pure function planned_copy(c) result(r)
+      type(run_t), intent(in) :: c                  !< the run
+      type(run_t) :: r
+      r = c
+      r%state = state_planned;  r%cpu_s = 0.0_dp;  r%has = .false.;  r%variant = '';  r%status = ''
+      r%exit_code = 0;  r%pid = -1
+   end function planned_copy
+
+   !> The runs the two comparisons are made at, near run x: for each one
+   !> wanted, x when its variant fits the cap, else the costliest ladder
+   !> run done whose variant does (comparison_base), each variant priced
+   !> as it would run (the full plate of the bend-twist model at its own
+   !> elements). The theory's comes first; the bend-twist variant must
+   !> fit beside it.
+   function variant_bases(deck, scene, runs, la, x, want) result(base)
+      type(deck_t), intent(in) :: deck              !< the deck
+      type(scene_t), intent(in) :: scene            !< the scene of the deck's model
+      type(run_t), intent(in) :: runs(:)            !< the runs
+      type(launcher_t), intent(in) :: la            !< the launcher (its cost model and spending)
+      integer, intent(in) :: x                      !< the run preferred
+      logical, intent(in) :: want(2)                !< the theory, the bend-twist model
+      integer :: base(2)
+      real(dp) :: cost_theory(size(runs)), cost_bt(size(runs)), reserve
+      type(run_t) :: r
+      type(comparison_t) :: c
+      integer :: i
+
+      do i = 1, size(runs)
+         cost_theory(i) = predicted_run_cost(runs(i), la)
+         r = planned_copy(runs(i))
+         call bend_twist_variant(deck, scene, runs(i), r, c)
+         cost_bt(i) = predicted_run_cost(r, la)
+      end do
+      base = x
+      reserve = 0.0_dp
+      if (want(1)) then
+         base(1) = comparison_base(runs, la, x, cost_theory)
+         if (la%spent + cost_theory(base(1)) <= la%cap) reserve = cost_theory(base(1))
+      end if
+      if (want(2)) base(2) = comparison_base(runs, la, x, cost_bt + reserve)
+   end function variant_bases
 
    !> The run on the chosen run's mesh at the ladder's first step, dt0:
    !> the ladder's mesh axis runs every mesh there. The chosen run itself
@@ -767,14 +819,16 @@ contains
       end if
    end function coarse_words
 
-   !> The run the models are compared at: the chosen one, or when a run
-   !> at its settings would pass the cap, the costliest ladder run done at
+   !> The run a model is compared at: the chosen one, or when a run at
+   !> its settings would pass the cap, the costliest ladder run done at
    !> whose settings one still fits (the chosen one when none does: its
-   !> variants are then skipped, and the report says so).
-   integer function comparison_base(runs, la, chosen) result(base)
+   !> variant is then skipped, and the report says so). cost(i): what the
+   !> variant at run i's settings is predicted to cost (s).
+   integer function comparison_base(runs, la, chosen, cost) result(base)
       type(run_t), intent(in) :: runs(:)            !< the runs
-      type(launcher_t), intent(in) :: la            !< the launcher (its cost model and spending)
+      type(launcher_t), intent(in) :: la            !< the launcher (its spending and cap)
       integer, intent(in) :: chosen                 !< the run chosen
+      real(dp), intent(in) :: cost(:)               !< the variant's predicted cost at each run's settings (s)
       integer :: i
       base = chosen
       if (fits(chosen)) return
@@ -783,7 +837,7 @@ contains
          if (.not. fits(i)) cycle
          if (base == chosen) then
             base = i
-         else if (predicted_run_cost(runs(i), la) > predicted_run_cost(runs(base), la)) then
+         else if (cost(i) > cost(base)) then
             base = i
          end if
       end do
@@ -791,7 +845,7 @@ contains
       !> A run at the settings of run i stays within the cap.
       logical function fits(i)
          integer, intent(in) :: i
-         fits = la%c_base < 0.0_dp .or. la%spent + predicted_run_cost(runs(i), la) <= la%cap
+         fits = la%c_base < 0.0_dp .or. la%spent + cost(i) <= la%cap
       end function fits
    end function comparison_base
 
