@@ -38,8 +38,9 @@
 !>     times less than at dt0/2^k; again at the chosen settings only when
 !>     the change at dt0, give or take twice the time errors of both
 !>     steps and a tenth of the change, could turn the verdict. When a run
-!>     at the chosen settings would pass the cap, at the finest ladder run
-!>     whose variant fits.
+!>     at the chosen settings would pass the cap, each comparison at the
+!>     costliest ladder run whose variant fits, the full plate priced at
+!>     its own elements and beside the theory's variant.
 !>  5. <prefix>_summary.dat and <prefix>_accuracy.dat
 !>     (src/accuracy/accuracy_report.f90); the runs stay in <prefix>_acc/.
 !> Exit status 0 when the target is met, exit_not_met (3) when the cap or
@@ -590,8 +591,8 @@ contains
       integer :: coarse, i, base(2)
       logical :: again(2)
 
-      again = .true.
-      slack = 0.0_dp                                ! made (again) at the chosen settings
+      again = .true.                                ! made (again) at the chosen settings
+      slack = 0.0_dp
       coarse = coarse_base(runs, out%chosen)
       if (coarse /= out%chosen) then
          slack = change_slack(runs, tx, mx, out, coarse)
@@ -715,7 +716,7 @@ contains
          cost_theory(i) = predicted_run_cost(runs(i), la)
          r = planned_copy(runs(i))
          call bend_twist_variant(deck, scene, runs(i), r, c)
-         cost_bt(i) = predicted_run_cost(r, la)
+         cost_bt(i) = merge(predicted_run_cost(r, la), 0.0_dp, len_trim(c%note) == 0)   ! a note: no run
       end do
       base = x
       reserve = 0.0_dp
