@@ -665,6 +665,8 @@ contains
       other = merge('nonlinear', 'linear   ', la%theory == 'linear')
       cmp(1)%what = 'theory'
       cmp(1)%compared = trim(other) // ' instead of ' // trim(la%theory)
+      cmp(1)%richer = 'nonlinear';  cmp(1)%simpler = 'linear'
+      cmp(1)%chosen_richer = la%theory /= 'linear'
       if (want(1)) then
          r = planned_copy(runs(base(1)))
          r%role = 'theory'
@@ -862,6 +864,8 @@ contains
       integer :: fx, fy
 
       r%role = 'bend_twist';  r%variant = ''
+      cmp%richer = 'keep';  cmp%simpler = 'drop'           ! &laminate bend_twist
+      cmp%chosen_richer = .not. scene%averaged
       if (all(scene%couplings(1:2) <= coupling_tol)) then
          cmp%note = 'the laminate has D16 = D26 = 0'
          return

@@ -28,7 +28,7 @@ module accuracy_report
    implicit none
    private
    public :: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, report_terminal, &
-             model_changes, model_required
+             model_changes, model_required, model_needed
 
    !> A model compared at the chosen settings: the theory, or D16, D26.
    type :: comparison_t
@@ -38,6 +38,9 @@ module accuracy_report
       integer :: base = 0                          !< the run it is compared with (the chosen, or another: at)
       character(len=400) :: at = ''                !< why base is not the run chosen
       character(len=160) :: note = ''              !< why none was made
+      character(len=16) :: richer = ''             !< the fuller model: 'nonlinear', or 'keep' (D16, D26)
+      character(len=16) :: simpler = ''            !< the other: 'linear', or 'drop' (D16 = D26 = 0)
+      logical :: chosen_richer = .true.            !< the run chosen has the fuller model
    end type comparison_t
 
    !> The outcome of the ladder.
@@ -250,6 +253,7 @@ contains
       call summary_text(items, trim(c%what) // '_compared', trim(c%compared))
       call summary_text(items, trim(c%what) // '_compared_at', trim(runs(c%base)%name))
       change = model_changes(c, runs, out)
+      call summary_text(items, trim(c%what) // '_needed', trim(model_needed(c, change, out)))
       do iq = 1, nq
          if (.not. out%estimated(iq)) cycle
          call summary_real(items, trim(result_keys(iq)) // '_change_' // trim(c%what), trim(result_keys(iq)) // &
@@ -295,9 +299,10 @@ contains
          ' CPUs; every run: ' // la%dir // '; summary: ' // la%dir(:len(la%dir) - 5) // '_summary.dat'
    end subroutine report_terminal
 
-   !> The terminal's lines of one model compared, with its verdict: the
-   !> scene requires the model chosen when a result that must meet the
-   !> target changes by more than the target.
+   !> The terminal's lines of one model compared, with its verdict
+   !> (model_needed): the scene requires the fuller model when a result
+   !> that must meet the target changes by more than the target, whichever
+   !> of the two the run chosen has; else the simpler does as well.
    subroutine comparison_lines(unit, c, runs, out)
       integer, intent(in) :: unit                  !< standard output
       type(comparison_t), intent(in) :: c          !< the comparison
@@ -323,13 +328,25 @@ contains
       write (unit, '(a)') 'model: ' // trim(c%what) // ': ' // trim(c%compared) // ' changes' // trim(line)
       if (c%base /= out%chosen) write (unit, '(a)') 'model: ' // trim(c%what) // ': compared at run ' // &
          trim(runs(c%base)%name) // ', not at the run chosen: ' // trim(c%at)
+      line = 'model: ' // trim(c%what) // ': '
       if (model_required(change, out)) then
-         write (unit, '(a)') 'model: ' // trim(c%what) // ': more than the target ' // real_short(out%target) // &
-            ': the scene requires the model of the run chosen'
+         line = trim(line) // ' more than the target ' // real_short(out%target) // ': the scene requires '
+         if (c%chosen_richer) then
+            line = trim(line) // ' the model of the run chosen (' // trim(c%richer) // ')'
+         else
+            line = trim(line) // ' the other model (' // trim(c%richer) // '): the results above are the ' // &
+                   'simpler model''s (' // trim(c%simpler) // '), and the fuller one moves them by more than the target'
+         end if
       else
-         write (unit, '(a)') 'model: ' // trim(c%what) // ': within the target ' // real_short(out%target) // &
-            ': the other model would do as well'
+         line = trim(line) // ' within the target ' // real_short(out%target) // ': '
+         if (c%chosen_richer) then
+            line = trim(line) // ' the simpler model (' // trim(c%simpler) // ') would do as well'
+         else
+            line = trim(line) // ' the model of the run chosen (' // trim(c%simpler) // ') does as well as the ' // &
+                   'fuller one (' // trim(c%richer) // ')'
+         end if
       end if
+      write (unit, '(a)') trim(line)
    end subroutine comparison_lines
 
    !> The relative change of each result estimated that the other model
@@ -346,13 +363,28 @@ contains
       end do
    end function model_changes
 
-   !> The verdict of a comparison: the scene requires the model chosen when
+   !> Whether the two models of a comparison differ by more than the target:
    !> a result that must meet the target changes by more than the target.
    pure logical function model_required(change, out)
       real(dp), intent(in) :: change(nq)           !< the relative changes (model_changes)
       type(accuracy_outcome_t), intent(in) :: out  !< the outcome (the target, the results targeted)
       model_required = any(out%targeted .and. abs(change) > out%target)
    end function model_required
+
+   !> The verdict of comparison c: the simplest model the scene allows,
+   !> the fuller one (c%richer) when the models differ by more than the
+   !> target (model_required), else the simpler (c%simpler).
+   pure function model_needed(c, change, out) result(name)
+      type(comparison_t), intent(in) :: c          !< the comparison
+      real(dp), intent(in) :: change(nq)           !< the relative changes (model_changes)
+      type(accuracy_outcome_t), intent(in) :: out  !< the outcome (the target, the results targeted)
+      character(len=:), allocatable :: name
+      if (model_required(change, out)) then
+         name = trim(c%richer)
+      else
+         name = trim(c%simpler)
+      end if
+   end function model_needed
 
    !> Why a run has no results: skipped for the cap, or failed.
    function not_done(run) result(text)
