@@ -662,11 +662,11 @@ contains
 
       cmp%base = base
       ! -- the theory
-      other = merge('nonlinear', 'linear   ', la%theory == 'linear')
       cmp(1)%what = 'theory'
-      cmp(1)%compared = trim(other) // ' instead of ' // trim(la%theory)
       cmp(1)%richer = 'nonlinear';  cmp(1)%simpler = 'linear'
       cmp(1)%chosen_richer = la%theory /= 'linear'
+      other = merge(cmp(1)%simpler, cmp(1)%richer, cmp(1)%chosen_richer)
+      cmp(1)%compared = trim(other) // ' instead of ' // trim(la%theory)
       if (want(1)) then
          r = planned_copy(runs(base(1)))
          r%role = 'theory'

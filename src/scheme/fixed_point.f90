@@ -391,7 +391,8 @@ contains
          ' iterations; eq. (18) ratio sum (G(D) - D)^2 / sum (G(D) - D_t)^2 = ', guard%ratio, &
          ' against C_r2 = ', guard%cr2, '; sum (G(D) - D)^2 = ', guard%res
       text = fp_state_text(guard%state) // trim(buf)
-      if (guard%accelerate) text = text // '; Anderson-accelerated from the fifth iterate (scheme fast)'
+      if (guard%accelerate) text = text // '; Anderson-accelerated from iterate ' // int_str(first_mixed + 1) // &
+                                   ' (scheme fast)'
       if (guard%mixing) text = text // '; the plain iteration had stopped at iteration ' // &
          int_str(guard%mixing_from) // ', ' // fp_state_text(guard%mixing_cause) // &
          ', and the fall-back (Anderson mixing) took over from there'
