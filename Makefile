@@ -7,6 +7,7 @@
 #   make install    under PREFIX (mk/install.mk)
 #   make version    the release number (the file VERSION)
 #   make setup      only the Debian packages (tools/setup-debian; make setup-run: the run's only)
+#   make fresh-check  the README's two commands in a fresh Debian 12 (tools/fresh-check)
 #   make docs       rerun the studies and rewrite the published documents of docs/
 #                   (DOCS_DIR below; docs/INSTALL.md, "Regenerating the documents")
 #   make clean
@@ -39,11 +40,16 @@ FSTD    += -Werror
 endif
 LAPACK  ?= -llapack -lblas
 FC_ALL   = $(FC) $(FSTD) $(FFLAGS) -J$(BUILD) -I$(BUILD)
+# Every link line ends with $(LIBS): CHOLMOD, LAPACK and HDF5 (mk/hdf5.mk).
+# Recursively expanded, so that no library is looked for while make reads
+# this file: make setup, make clean and make -n start on a machine without
+# them, and make run installs them before its first compilation.
+LIBS     = $(CHOLMOD_LIBS) $(LAPACK) $(HDF5_LIBS)
 
 # CHOLMOD (SuiteSparse; Debian: libsuitesparse-dev) for &analysis storage =
 # 'sparse' (and 'auto' on large meshes). src/linalg/cholmod_shim.c is compiled
 # against the installed cholmod.h (why C there: its header); the libraries
-# go before LAPACK on every link line (each uses $(LAPACK)).
+# go before LAPACK on every link line ($(LIBS)).
 CC      ?= cc
 CFLAGS  ?= -O2 -g
 CSTD    := -std=c99 -Wall -Wextra -pedantic
@@ -52,7 +58,6 @@ CSTD    += -Werror
 endif
 CHOLMOD_CFLAGS ?= $(shell pkg-config --cflags cholmod 2>/dev/null || echo -I/usr/include/suitesparse)
 CHOLMOD_LIBS   ?= -lcholmod -lsuitesparseconfig
-override LAPACK := $(CHOLMOD_LIBS) $(LAPACK)
 
 # src/ holds the main program and the modules in folders by concern, from
 # the bottom of the `use` graph to its top (a folder uses only those before
@@ -123,7 +128,24 @@ $(BUILD)/element_work.o: private FC_ALL += -fvect-cost-model=dynamic
 
 $(BUILD)/deps.mk: $(SOURCES) tools/fortran-deps | $(BUILD)
 	@python3 tools/fortran-deps $(BUILD) '$(SRC_FOLDERS)' $(SOURCES) > $@.tmp && mv $@.tmp $@
+# Read (and so written) only where a goal compiles: the set-up targets, run
+# and test (which set up first, then build in a second make), clean and
+# version start without python3; so does make -n.
+SETUP_GOALS := run test setup setup-run clean version fresh-check hdf5-config uninstall
+ifneq ($(filter-out $(SETUP_GOALS),$(or $(MAKECMDGOALS),all)),)
+ifeq ($(findstring n,$(firstword -$(MAKEFLAGS))),)
 -include $(BUILD)/deps.mk
+endif
+endif
+
+# What a compilation needs that make cannot make: python3 (tools/fortran-deps
+# wrote $(BUILD)/deps.mk) and HDF5-Fortran (mk/hdf5.mk); a missing one stops
+# the build here with what to do, before the first compiler's message.
+.PHONY: build-needs
+build-needs:
+	@test -f $(BUILD)/deps.mk || { echo 'make: python3 not found (tools/fortran-deps orders the build): make setup' >&2; exit 1; }
+	$(hdf5_check)
+$(OBJS) $(C_OBJS): | build-needs
 
 $(LIB): $(OBJS) $(C_OBJS)
 	ar rcs $@ $^
@@ -144,7 +166,7 @@ $(BUILD)/oracles/navier_impact_solution.o: $(BUILD)/oracles/reference_solutions.
 # rebuild with MAIN_FLAGS= to get backtraces back when debugging a crash.
 MAIN_FLAGS ?= -fno-backtrace
 impact: $(MAIN) $(LIB)
-	$(FC_ALL) $(MAIN_FLAGS) $(MAIN) $(LIB) $(LAPACK) -o $@
+	$(FC_ALL) $(MAIN_FLAGS) $(MAIN) $(LIB) $(LIBS) -o $@
 
 setup:
 	@sh tools/setup-debian
@@ -153,7 +175,15 @@ setup:
 setup-run:
 	@sh tools/setup-debian run
 
-run: setup-run impact
+# The README's two commands in a fresh Debian 12 tree (tools/fresh-check:
+# what it needs, about 25 minutes); before each release.
+.PHONY: fresh-check
+fresh-check:
+	@sh tools/fresh-check $(FRESH_DIR)
+
+# Set up first, then build in a second make that reads the Makefile anew.
+run: setup-run
+	@$(MAKE) --no-print-directory impact
 	@mkdir -p out
 	./impact < input/clamped.nml
 	gnuplot -e "prefix='out/clamped'" postproc/history.gp

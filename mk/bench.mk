@@ -50,4 +50,4 @@ bench-kernels: $(BENCH_BUILD)/bench_kernels
 # machine can do (the library keeps $(FFLAGS)).
 $(BENCH_BUILD)/bench_kernels: bench/kernels.f90 $(LIB) mk/bench.mk
 	@mkdir -p $(BENCH_BUILD)
-	$(FC_ALL) -O3 -march=native $< $(LIB) $(LAPACK) -o $@
+	$(FC_ALL) -O3 -march=native $< $(LIB) $(LIBS) -o $@

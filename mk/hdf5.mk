@@ -16,13 +16,13 @@
 #   2. h5fc on PATH (Debian: libhdf5-dev; another name: H5FC=...);
 #   3. pkg-config: hdf5-fortran, else hdf5 with the Fortran libraries beside it.
 # or given outright:  make HDF5_FFLAGS='-I<dir of hdf5.mod>' HDF5_LIBS='-L<dir> -lhdf5_fortran -lhdf5 ...'
-# The compile flags are appended to FFLAGS, the libraries to LAPACK (the top
-# Makefile's link line is  $(FC_ALL) $(MAIN) $(LIB) $(LAPACK)).
+# The compile flags are appended to FFLAGS, the libraries end $(LIBS) (the top
+# Makefile's link line is  $(FC_ALL) $(MAIN) $(LIB) $(LIBS)).
 #
 # The search runs when a recipe first needs the flags, not when make reads
 # this file: `make run` and `make test` install libhdf5-dev (tools/setup-debian)
 # before they compile anything, on a fresh machine too. When nothing is found,
-# make stops at the first compilation and says what to do.
+# the build stops before its first compilation and says what to do.
 
 comma := ,
 # The HDF5 Fortran compiler wrapper looked for on PATH (H5FC=none skips it).
@@ -58,15 +58,19 @@ hdf5_find = $(strip \
 # Memoised: searched once per make, on first use.
 hdf5_found = $(eval hdf5_found := $$(hdf5_find))$(hdf5_found)
 
-hdf5_missing = $(error HDF5-Fortran not found (no HDF5_ROOT, no h5fc on PATH, no pkg-config hdf5). \
-    On Debian: make setup (installs libhdf5-dev); on a cluster: module load hdf5 (sets HDF5_ROOT) \
-    or make HDF5_ROOT=<install prefix>; or give HDF5_FFLAGS and HDF5_LIBS)
-hdf5_words = $(if $(filter none,$(firstword $(hdf5_found))),$(hdf5_missing),$(wordlist 2,1000,$(hdf5_found)))
+# Not found: no flags, and build-needs (top Makefile) stops the build.
+hdf5_none = $(filter none,$(firstword $(hdf5_found)))
+hdf5_words = $(if $(hdf5_none),,$(wordlist 2,1000,$(hdf5_found)))
+hdf5_check_found = $(if $(hdf5_none),\
+    @echo 'make: HDF5-Fortran not found (no HDF5_ROOT, no h5fc on PATH, no pkg-config hdf5).' \
+    'On Debian: make setup (installs libhdf5-dev); on a cluster: module load hdf5 (sets HDF5_ROOT)' \
+    'or make HDF5_ROOT=<install prefix>; or give HDF5_FFLAGS and HDF5_LIBS' >&2; exit 1)
 
 ifeq ($(origin HDF5_FFLAGS),undefined)
 HDF5_FFLAGS = $(filter -I%,$(hdf5_words))
 endif
 ifeq ($(origin HDF5_LIBS),undefined)
+hdf5_check = $(hdf5_check_found)
 # The libraries and their directories, each also as a run-time path (cluster
 # installs are outside the loader's default path); archives before the
 # libraries they call, and of these only the ones called are kept.
@@ -75,7 +79,6 @@ HDF5_LIBS = -Wl,--as-needed $(filter -L%,$(hdf5_words)) $(filter %.a %.so,$(hdf5
 endif
 
 override FFLAGS += $(HDF5_FFLAGS)
-override LAPACK += $(HDF5_LIBS)
 
 .PHONY: hdf5-config h5export shape hdf5-version
 hdf5-config:
@@ -108,7 +111,7 @@ h5export: $(H5EXPORT)
 # tests/test_hdf5.pf runs the exporter
 test-build: $(H5EXPORT)
 $(H5EXPORT): tools/h5export.f90 $(TOOL_OBJS) $(LIB)
-	$(FC_ALL) $< $(TOOL_OBJS) $(LIB) $(LAPACK) -o $@
+	$(FC_ALL) $< $(TOOL_OBJS) $(LIB) $(LIBS) -o $@
 
 shape: $(H5EXPORT) impact
 	@test -f '$(SHAPE_PREFIX).h5' || { test '$(SHAPE_PREFIX)' = out/clamped && ./impact input/clamped.nml > /dev/null; } \

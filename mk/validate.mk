@@ -30,10 +30,10 @@ ACCURACY_VALIDATION := $(BUILD)/accuracy_validation
 .PHONY: validate validate-accuracy
 
 $(VALIDATE_EXE): validation/validate.f90 $(ORACLE_OBJS) $(LIB)
-	$(FC_ALL) $< $(ORACLE_OBJS) $(LIB) $(LAPACK) -o $@
+	$(FC_ALL) $< $(ORACLE_OBJS) $(LIB) $(LIBS) -o $@
 
 $(ACCURACY_VALIDATION): validation/accuracy_validation.f90 $(LIB)
-	$(FC_ALL) $< $(LIB) $(LAPACK) -o $@
+	$(FC_ALL) $< $(LIB) $(LIBS) -o $@
 
 # check 12 first: the report that validate assembles includes its tables
 validate: setup impact $(VALIDATE_EXE) $(ACCURACY_VALIDATION) $(NAVIER_IMPACT)
@@ -66,4 +66,4 @@ navier-impact: $(NAVIER_IMPACT)
 
 # (without the run-time backtrace, as ./impact: bad input ends with one line)
 $(NAVIER_IMPACT): validation/navier_impact.f90 $(ORACLE_OBJS) $(LIB)
-	$(FC_ALL) $(MAIN_FLAGS) $< $(ORACLE_OBJS) $(LIB) $(LAPACK) -o $@
+	$(FC_ALL) $(MAIN_FLAGS) $< $(ORACLE_OBJS) $(LIB) $(LIBS) -o $@

@@ -57,7 +57,7 @@ test-build: $(LIB) $(ORACLE_OBJS) $(TOOL_OBJS)
 	$(MAKE) -C $(BUILD)/pfunit -f $(CURDIR)/$(FUNIT)/pfunit.mk impact_tests \
 	    PFUNIT_DIR='$(abspath $(PFUNIT_DIR))' FC='$(FC)' FFLAGS='$(FFLAGS)' \
 	    IMPACT_TESTS='$(abspath $(TEST_PF))' IMPACT_LIB='$(abspath $(ORACLE_OBJS) $(TOOL_OBJS) $(LIB))' \
-	    IMPACT_MODULES='$(abspath $(BUILD))' LAPACK='$(LAPACK)'
+	    IMPACT_MODULES='$(abspath $(BUILD))' LAPACK='$(LIBS)'
 
 .PHONY: pfunit-check
 pfunit-check:
@@ -90,5 +90,5 @@ $(TEST_BUILD)/%.o: $(TEST_BUILD)/%.F90 $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(TO
 	$(FC_ALL) -c $< -o $@
 
 $(TEST_EXE): $(TEST_BUILD)/funit_driver.f90 $(TEST_OBJ) $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(TOOL_OBJS) $(LIB)
-	$(FC_ALL) $< $(TEST_OBJ) $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(TOOL_OBJS) $(LIB) $(LAPACK) -o $@
+	$(FC_ALL) $< $(TEST_OBJ) $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(TOOL_OBJS) $(LIB) $(LIBS) -o $@
 endif
