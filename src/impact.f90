@@ -53,6 +53,7 @@ program impact
       keep_file_size_errors, exit_program
    use restart_point, only: restart_file, restart_save, restart_check, restart_resume, restart_discard
    use number_text, only: int_str
+   use c_library, only: c_isatty
    use accuracy_driver, only: run_accuracy
    implicit none
 
@@ -233,6 +234,11 @@ contains
       restarting = opts%restart .and. .not. check_only
       call trace_parse(opts%trace, tr, stat)
       if (stat /= 0) call bad_usage('--trace ' // opts%trace // ': give time steps, e.g. --trace 120,121')
+      if (len(opts%deck_path) == 0) then      ! on a terminal, what it waits for (else it waits without a word)
+         if (c_isatty(0) == 1) write (error_unit, '(a)') 'impact: reading the deck from standard input, a ' &
+            // 'terminal: type it and end with Ctrl-D, or give a deck file (' // usage_line(8:) &
+            // '; impact --help: the options)'
+      end if
       call read_input_deck(opts, input_unit, deck, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
       call choose_settings(deck)            ! dt, nx, ny the deck does not give: from the scene
