@@ -250,8 +250,14 @@ contains
          call exit_program(accuracy_exit)
       end if
       tr%unit = output_unit;  tr%cr1 = deck%cr1;  tr%cr2 = deck%cr2
-      if (restarting) call restart_check(deck, restarting, stat, errmsg)
+      if (restarting) call restart_check(deck, restarting, first_step, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
+      if (restarting .and. first_step == nint(deck%t_end/deck%dt)) then    ! nothing to do, nothing rewritten
+         write (output_unit, '(a)') 'restart: the run is complete: its restart point ' // restart_file(deck) &
+            // ' is at its last step, ' // int_str(first_step) // '; nothing is done (give a later &analysis ' &
+            // 't_end to continue it)'
+         stop
+      end if
       if (opts%restart .and. .not. (restarting .or. check_only)) write (output_unit, '(a)') &
          'restart: no restart point ' // restart_file(deck) // ': the run starts at step 0'
       if (check_only) return

@@ -142,22 +142,27 @@ contains
 
    !> A restart's first look at the run's restart point: whether there is
    !> one, and that it was written with this deck (module header) by this
-   !> layout; stat /= 0 with the differences named otherwise.
-   subroutine restart_check(deck, found, stat, errmsg)
+   !> layout, and its step (the run's last step: the run completed); stat
+   !> /= 0 with the differences named otherwise.
+   subroutine restart_check(deck, found, step, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       logical, intent(out) :: found                 !< there is a restart point
+      integer, intent(out) :: step                  !< the step it was written after (0 if none)
       integer, intent(out) :: stat                  !< 0 when the run may continue from it
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=:), allocatable :: path, changed
       integer :: u
 
       stat = 0
+      step = 0
       path = restart_file(deck)
       inquire (file=path, exist=found)
       if (.not. found) return
       call open_point(path, u, stat, errmsg)
       if (stat /= 0) return
       call compare_deck(u, deck, changed, stat)
+      call take_tag(u, 'state', stat)
+      call take_int(u, step, stat)
       close (u)
       if (stat /= 0) then
          errmsg = path // ': not a restart point of this build of impact (or damaged)'
