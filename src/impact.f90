@@ -45,7 +45,7 @@ program impact
       newmark_update, impactor_moved
    use run_recorder, only: record_t, record_open, record_step, record_close
    use step_trace, only: trace_t, trace_parse, trace_step, trace_iteration
-   use run_report, only: echo_model, usage, usage_line
+   use run_report, only: echo_model, usage, usage_line, version_text
    use build_info, only: code_version
    use result_files, only: results_claim_t, result_suffixes, claim_results, release_results
    use other_analyses, only: run_other_analysis
@@ -225,7 +225,7 @@ contains
       if (stat /= 0) call bad_usage(errmsg)
       select case (opts%action)
       case ('help');       call usage(output_unit)
-      case ('version');    write (output_unit, '(a)') code_version
+      case ('version');    call version_text(output_unit, code_version)
       case ('schema');     call write_schema(output_unit)
       case ('deck-table'); call write_deck_table(output_unit)
       end select
