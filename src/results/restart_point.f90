@@ -3,6 +3,9 @@
 !> files, and ends as the run would have ended had it never stopped: the
 !> same history rows, bit for bit, and the same summary.
 !>
+!> A restart of a run that completed (its restart point at its last step,
+!> t_end unchanged) writes nothing and exits 0 (src/impact.f90).
+!>
 !> A restart point is <prefix>.restart, written when the files are flushed
 !> (once a second at the end of a step, src/results/results_hdf5.f90's
 !> results_tick), at the first step (step 0, so that a run that has
