@@ -3,7 +3,7 @@
 #   make            build ./impact
 #   make run        install what is missing, build, run input/clamped.nml, plot it
 #   make test       install what is missing, build, run the pFUnit tests
-#   make check      the same (the GNU name)
+#   make check      the tests only, without the set-up (the GNU name)
 #   make install    under PREFIX (mk/install.mk)
 #   make version    the release number (the file VERSION)
 #   make setup      only the Debian packages (tools/setup-debian; make setup-run: the run's only)
@@ -198,9 +198,11 @@ reference: impact
 clean:
 	rm -rf $(BUILD) impact
 
-# check: the GNU name of the tests; version: the release number, for scripts.
+# check: the GNU name of the tests, the tests only (make test without its
+# set-up: no apt-get; make setup installs); version: the release number.
 .PHONY: check version
-check: test
+check: test-funit test-build
+	$(TEST_EXE)
 version:
 	@echo '$(IMPACT_VERSION)'
 

@@ -45,7 +45,7 @@ program impact
       newmark_update, impactor_moved
    use run_recorder, only: record_t, record_open, record_step, record_close
    use step_trace, only: trace_t, trace_parse, trace_step, trace_iteration
-   use run_report, only: echo_model, usage, usage_line
+   use run_report, only: echo_model, usage, usage_line, version_text
    use build_info, only: code_version
    use result_files, only: results_claim_t, result_suffixes, claim_results, release_results
    use other_analyses, only: run_other_analysis
@@ -53,6 +53,7 @@ program impact
       keep_file_size_errors, exit_program
    use restart_point, only: restart_file, restart_save, restart_check, restart_resume, restart_discard
    use number_text, only: int_str
+   use c_library, only: c_isatty
    use accuracy_driver, only: run_accuracy
    implicit none
 
@@ -224,7 +225,7 @@ contains
       if (stat /= 0) call bad_usage(errmsg)
       select case (opts%action)
       case ('help');       call usage(output_unit)
-      case ('version');    write (output_unit, '(a)') code_version
+      case ('version');    call version_text(output_unit, code_version)
       case ('schema');     call write_schema(output_unit)
       case ('deck-table'); call write_deck_table(output_unit)
       end select
@@ -233,6 +234,11 @@ contains
       restarting = opts%restart .and. .not. check_only
       call trace_parse(opts%trace, tr, stat)
       if (stat /= 0) call bad_usage('--trace ' // opts%trace // ': give time steps, e.g. --trace 120,121')
+      if (len(opts%deck_path) == 0) then      ! on a terminal, what it waits for (else it waits without a word)
+         if (c_isatty(0) == 1) write (error_unit, '(a)') 'impact: reading the deck from standard input, a ' &
+            // 'terminal: type it and end with Ctrl-D, or give a deck file (' // usage_line(8:) &
+            // '; impact --help: the options)'
+      end if
       call read_input_deck(opts, input_unit, deck, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
       call choose_settings(deck)            ! dt, nx, ny the deck does not give: from the scene
@@ -244,8 +250,14 @@ contains
          call exit_program(accuracy_exit)
       end if
       tr%unit = output_unit;  tr%cr1 = deck%cr1;  tr%cr2 = deck%cr2
-      if (restarting) call restart_check(deck, restarting, stat, errmsg)
+      if (restarting) call restart_check(deck, restarting, first_step, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
+      if (restarting .and. first_step == nint(deck%t_end/deck%dt)) then    ! nothing to do, nothing rewritten
+         write (output_unit, '(a)') 'restart: the run is complete: its restart point ' // restart_file(deck) &
+            // ' is at its last step, ' // int_str(first_step) // '; nothing is done (give a later &analysis ' &
+            // 't_end to continue it)'
+         stop
+      end if
       if (opts%restart .and. .not. (restarting .or. check_only)) write (output_unit, '(a)') &
          'restart: no restart point ' // restart_file(deck) // ': the run starts at step 0'
       if (check_only) return

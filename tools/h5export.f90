@@ -15,6 +15,10 @@
 !>                   plate (w, v, psi_y are even in x; u, psi_x odd; w, u,
 !>                   psi_x even in y; v, psi_y odd: the quarter model's
 !>                   symmetry, src/model/mesh.f90)
+!>    --version      the version of the impact it was built with, and the licence
+!>
+!> Installed (make install) as impact-h5export, out of HDF5's own h5*
+!> names; bin/h5export is a link to it for one release.
 !>
 !> Output: '#' lines naming the file, the snapshot (step, time, force) and
 !> the columns with their units, then x_mm y_mm <field>_mm (or _rad for the
@@ -34,6 +38,7 @@ program h5export
    use hdf5_read, only: h5io_open_read, h5io_get_attr, h5io_read
    use process_stop, only: exit_program, keep_file_size_errors
    use file_system, only: path_kind, path_regular, file_size
+   use build_info, only: code_version
    implicit none
 
    !> Metres to millimetres.
@@ -72,7 +77,11 @@ program h5export
          mirror = .false.
       case ('-h', '--help')
          write (output_unit, '(a)') 'usage: h5export FILE.h5 [-o OUT] [--field w|u|v|psi_x|psi_y] '// &
-            '[--snapshot peak|last|K] [--quarter]'
+            '[--snapshot peak|last|K] [--quarter] [--version]'
+         stop
+      case ('--version')
+         write (output_unit, '(a/a)') 'impact-h5export (' // code_version // ')', &
+            'License MIT: <https://opensource.org/licenses/MIT>.'
          stop
       case default
          if (arg(1:1) == '-') call fail('unknown option '//trim(arg))

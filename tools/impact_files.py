@@ -21,6 +21,7 @@ validation/mesh_study/run.py):
   running     run_impact: ./impact on a deck, never through a shell;
               run_many: ./impact on many decks, at most `jobs` at a time
               (cpu_count(): the CPUs this process may use); diagnostic
+  version     version_text(tool): a tool's --version (VERSION, the licence)
   documents   fill_blocks, fill_file: the blocks between
               <!-- name:begin --> and <!-- name:end --> of a Markdown file,
               rewritten in place (the one template mechanism of the docs)
@@ -484,6 +485,19 @@ BLOCK = re.compile(r'<!-- ([\w.:+-]+):begin -->(.*?)<!-- \1:end -->', re.S)
 class TemplateError(Exception):
     """A block of a document that nothing fills."""
 
+
+
+def version_text(tool):
+    """`tool --version`, as GNU tools say it: the release of the impact the
+    tool belongs to (the file VERSION beside tools/: the checkout's, or
+    <prefix>/share/impact/VERSION once installed) and the licence."""
+    path = os.path.join(os.path.dirname(os.path.realpath(__file__)), os.pardir, 'VERSION')
+    try:
+        with open(path, encoding='utf-8') as f:
+            release = f.read().strip()
+    except OSError:
+        release = '(no VERSION file)'
+    return f'{tool} (impact) {release}\nLicense MIT: <https://opensource.org/licenses/MIT>.'
 
 def fill_blocks(text, value, keep_others=False):
     """text with every block <!-- NAME:begin -->...<!-- NAME:end --> filled

@@ -4,7 +4,7 @@
 ## mk/install/modulefile.tcl; Environment Modules and Lmod read it:
 ##   module use @PREFIX@/share/modulefiles
 ##   module load impact
-## puts bin/ (impact, impact-sweep, h5export, impact-damage-map) on PATH and
+## puts bin/ (impact, impact-sweep, impact-h5export, impact-damage-map) on PATH and
 ## the man page impact(1) on MANPATH; IMPACT_ROOT is the install prefix
 ## (the gnuplot scripts: $IMPACT_ROOT/share/impact/postproc).
 

@@ -5,8 +5,8 @@
 !>     --overwrite           replace an earlier run's results (as &output overwrite = .true.)
 !>     --restart             continue the run at the deck's prefix from its restart point
 !>                           (src/results/restart_point.f90)
-!>     --set group.var=value a deck variable, set after the deck is read and checked
-!>                           like it (repeatable)
+!>     --set group.var=value a deck variable, set after the deck is read (repeatable);
+!>                           the deck with every --set is then checked once, as a deck
 !>     --trace STEP[,STEP]   the teaching trace of those steps (src/results/step_trace.f90)
 !>     --accuracy TOL        every result to a relative error TOL: a ladder of runs
 !>                           (as &accuracy target = TOL; src/accuracy/accuracy_driver.f90)
@@ -18,7 +18,7 @@
 !> a data check); one deck only: a second one, an unknown option or a
 !> missing value is an error (the caller prints the usage line).
 module command_line
-   use input_deck, only: deck_t, read_deck, read_deck_file, set_variable
+   use input_deck, only: deck_t, read_deck, read_deck_file, set_variable, validate_deck
    use deck_schema, only: not_given_real
    use number_text, only: int_str
    implicit none
@@ -103,7 +103,9 @@ contains
 
    !> The deck the options name (a file, or standard input), the --set
    !> values over it, --accuracy (as &accuracy target), --single (the
-   !> target not given) and --overwrite; every value checked.
+   !> target not given) and --overwrite; then the whole checked once, as a
+   !> deck is (values checked together, as the six strengths, may be given
+   !> by --set together; a failure names the variable, and the --set values).
    subroutine read_input_deck(opts, unit, deck, stat, errmsg)
       type(options_t), intent(in) :: opts           !< the options
       integer, intent(in) :: unit                   !< standard input's unit
@@ -112,17 +114,17 @@ contains
       character(len=*), intent(inout) :: errmsg     !< the one-line message on failure
       integer :: i
       if (len(opts%deck_path) > 0) then
-         call read_deck_file(opts%deck_path, deck, stat, errmsg)
+         call read_deck_file(opts%deck_path, deck, stat, errmsg, check=.false.)
       else
-         call read_deck(unit, '<stdin>', deck, stat, errmsg)
+         call read_deck(unit, '<stdin>', deck, stat, errmsg, check=.false.)
       end if
       if (stat /= 0) return
       do i = 1, size(opts%settings)
-         call set_variable(deck, trim(opts%settings(i)), stat, errmsg)
+         call set_variable(deck, trim(opts%settings(i)), stat, errmsg, check=.false.)
          if (stat /= 0) return
       end do
       if (len(opts%accuracy) > 0) then
-         call set_variable(deck, 'accuracy.target=' // opts%accuracy, stat, errmsg)
+         call set_variable(deck, 'accuracy.target=' // opts%accuracy, stat, errmsg, check=.false.)
          if (stat /= 0) then
             errmsg = '--accuracy ' // opts%accuracy // ': ' // trim(errmsg)
             return
@@ -137,6 +139,8 @@ contains
          deck%accuracy_target = not_given_real()
       end if
       if (opts%overwrite) deck%overwrite = .true.
+      call validate_deck(deck, stat, errmsg)
+      if (stat /= 0 .and. len(deck%settings) > 0) errmsg = trim(errmsg) // ' (with ' // deck%settings // ')'
    end subroutine read_input_deck
 
    !> Command-line argument i, whole.

@@ -86,14 +86,16 @@ contains
 
    !> Reads a deck from `unit`, an open formatted sequential unit (standard
    !> input is fine: it is read once, to its end), and checks it
-   !> (validate_deck). On failure stat /= 0 and errmsg is the one-line
+   !> (validate_deck; not with check = .false., when the command line's
+   !> settings come first). On failure stat /= 0 and errmsg is the one-line
    !> message of the module header; deck is then incomplete.
-   subroutine read_deck(unit, source, deck, stat, errmsg)
+   subroutine read_deck(unit, source, deck, stat, errmsg, check)
       integer, intent(in) :: unit                   !< unit to read from
       character(len=*), intent(in) :: source        !< the deck's name in messages: its path, or '<stdin>'
       type(deck_t), intent(out) :: deck             !< defaults overridden by the deck
       integer, intent(out) :: stat                  !< 0 when the deck was read and is valid
       character(len=*), intent(inout) :: errmsg     !< the message on failure
+      logical, intent(in), optional :: check        !< check the deck (default .true.)
       type(group_text_t), allocatable :: groups(:)
       character(len=:), allocatable :: what
       integer :: line, ig, jg, ia, ja, iv
@@ -156,6 +158,10 @@ contains
             end do assignments
          end associate
       end do groups_loop
+      stat = 0
+      if (present(check)) then
+         if (.not. check) return
+      end if
       call validate_deck(deck, stat, errmsg)
 
    contains
@@ -171,11 +177,12 @@ contains
    !> Opens the deck file `path`, reads it with read_deck and closes it. A
    !> directory or an unreadable file is refused with the same kind of
    !> message.
-   subroutine read_deck_file(path, deck, stat, errmsg)
+   subroutine read_deck_file(path, deck, stat, errmsg, check)
       character(len=*), intent(in) :: path          !< the deck's path
       type(deck_t), intent(out) :: deck             !< the deck read
       integer, intent(out) :: stat                  !< 0 when the deck was read and is valid
       character(len=*), intent(inout) :: errmsg     !< the message on failure
+      logical, intent(in), optional :: check        !< check the deck (default .true.)
       integer :: unit, ios
       character(len=msg_len) :: msg
       logical :: exists
@@ -192,7 +199,7 @@ contains
          errmsg = path // ': cannot open the deck: ' // trim(msg)
          return
       end if
-      call read_deck(unit, path, deck, stat, errmsg)
+      call read_deck(unit, path, deck, stat, errmsg, check)
       close (unit, iostat=ios)
    end subroutine read_deck_file
 
@@ -200,12 +207,16 @@ contains
    !> whole deck again: `impact --set group.var=value`. The text is read as
    !> a deck's value (src/deck/deck_text.f90, split_value_text): a list ('0,
    !> 90, 90, 0', '10*0'), a string quoted or not ('a b' quoted, out/run
-   !> without quotes).
-   subroutine set_variable(deck, setting, stat, errmsg)
+   !> without quotes). With check = .false. the deck is not checked (the
+   !> value's kind is): the command line sets all its --set values first
+   !> and then checks the deck once (src/deck/command_line.f90), so that
+   !> values checked together, as the six strengths, can be given together.
+   subroutine set_variable(deck, setting, stat, errmsg, check)
       type(deck_t), intent(inout) :: deck           !< the deck, changed
       character(len=*), intent(in) :: setting       !< 'group.var=value'
       integer, intent(out) :: stat                  !< 0 when the setting and the deck are valid
       character(len=*), intent(inout) :: errmsg     !< the message on failure
+      logical, intent(in), optional :: check        !< check the deck (default .true.)
       character(len=:), allocatable :: what, key, group, name, text
       type(item_t), allocatable :: items(:)
       integer :: eq, dot, iv
@@ -242,16 +253,18 @@ contains
       end if
       call deck_bind(deck, iv, v, .true.)
       deck%given(iv) = .true.
-      call validate_deck(deck, stat, errmsg)
-      if (stat /= 0) then
-         errmsg = '--set ' // group // '.' // name // '=' // quoted_cut(text) // ': ' // trim(errmsg)
-         return
-      end if
       ! -- recorded as a command line would give it (the echo, /deck settings)
       if (.not. allocated(deck%settings)) deck%settings = ''
       if (len(deck%settings) > 0) deck%settings = deck%settings // ' '
-      if (index(text, ' ') > 0 .and. index('''"', text(1:1)) == 0) text = "'" // text // "'"
-      deck%settings = deck%settings // '--set ' // group // '.' // name // '=' // text
+      what = text
+      if (index(text, ' ') > 0 .and. index('''"', text(1:1)) == 0) what = "'" // text // "'"
+      deck%settings = deck%settings // '--set ' // group // '.' // name // '=' // what
+      stat = 0
+      if (present(check)) then
+         if (.not. check) return
+      end if
+      call validate_deck(deck, stat, errmsg)
+      if (stat /= 0) errmsg = '--set ' // group // '.' // name // '=' // quoted_cut(text) // ': ' // trim(errmsg)
    end subroutine set_variable
 
    !> The value of entry iv from the items of its assignment, checked for its

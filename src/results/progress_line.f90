@@ -9,10 +9,13 @@
 !> nothing else: a short run writes none, a long one a line now and then
 !> that a log reader can follow (`tail -f slurm-*.out`).
 !>
-!> The estimate is the wall time per step so far times the steps left: the
-!> steps of an impact cost about the same (one back substitution each for
-!> scheme 'fast'), and the set-up is not counted, since the clock starts at
-!> the first step.
+!> The estimate is the wall time per step times the steps left: the steps
+!> of an impact cost about the same (one back substitution each for scheme
+!> 'fast'), but the first one can cost far more (the response columns of
+!> scheme 'fast'; the first contact), so the steps are timed from the end
+!> of the first one recorded, and the line gives no estimate until
+!> `timed_steps` steps are timed (before, a 10 s run of 1200 steps whose
+!> first step took 0.26 s was first said to have "5 min 12 s left").
 module progress_line
    use, intrinsic :: iso_fortran_env, only: error_unit, int64
    use kinds, only: dp
@@ -20,12 +23,15 @@ module progress_line
    use number_text, only: int_str
    implicit none
    private
-   public :: progress_t, progress_start, progress_step, progress_end, progress_due, time_left_s, duration_text
+   public :: progress_t, progress_start, progress_step, progress_end, progress_due, progress_timed, progress_left, &
+             time_left_s, duration_text
 
    !> Updates a second, at most, of the line on a terminal.
    real(dp), parameter :: terminal_rate = 4.0_dp
    !> Seconds between two plain lines when standard error is not a terminal.
    real(dp), parameter :: log_interval = 30.0_dp
+   !> Steps timed, after the first, before the time left is estimated.
+   integer, parameter, public :: timed_steps = 5
 
    !> Where the run's progress stands.
    type :: progress_t
@@ -36,6 +42,8 @@ module progress_line
       integer(int64) :: count0 = 0         !< system_clock at the first step
       integer(int64) :: rate = 1           !< system_clock's counts per second
       real(dp) :: last = 0                 !< wall seconds since count0 at the last update
+      integer :: step0 = -1                !< the step the timing starts after (-1: none recorded yet)
+      real(dp) :: elapsed0 = 0             !< wall seconds since count0 at its end
       logical :: shown = .false.           !< a line is on the terminal, to be cleared
    end type progress_t
 
@@ -63,6 +71,7 @@ contains
       if (prog%nstep <= 0) return
       call system_clock(now)
       elapsed = real(now - prog%count0, dp)/real(prog%rate, dp)
+      call progress_timed(prog, step, elapsed)
       if (.not. progress_due(prog%last, elapsed, prog%interval)) return
       prog%last = elapsed
       if (prog%terminal) then
@@ -92,6 +101,28 @@ contains
       due = elapsed - last >= interval
    end function progress_due
 
+   !> The steps are timed from the end of the first one recorded (`step` at
+   !> `elapsed` wall seconds): that one may cost far more than the rest.
+   pure subroutine progress_timed(prog, step, elapsed)
+      type(progress_t), intent(inout) :: prog   !< the progress
+      integer, intent(in) :: step               !< the step just recorded
+      real(dp), intent(in) :: elapsed           !< wall seconds since the clock started
+      if (prog%step0 >= 0) return
+      prog%step0 = step
+      prog%elapsed0 = elapsed
+   end subroutine progress_timed
+
+   !> The wall time left (s) after `step`, `elapsed` wall seconds since the
+   !> clock started; -1 until `timed_steps` steps are timed (progress_timed).
+   pure real(dp) function progress_left(prog, step, elapsed) result(left)
+      type(progress_t), intent(in) :: prog   !< the progress
+      integer, intent(in) :: step            !< the step just recorded
+      real(dp), intent(in) :: elapsed        !< wall seconds since the clock started
+      left = -1.0_dp
+      if (prog%step0 < 0 .or. step - prog%step0 < timed_steps) return
+      left = time_left_s(step - prog%step0, prog%nstep - prog%step0, elapsed - prog%elapsed0)
+   end function progress_left
+
    !> The wall time left (s) after `step` of `nstep` steps took `elapsed` s.
    pure real(dp) function time_left_s(step, nstep, elapsed) result(left)
       integer, intent(in) :: step, nstep   !< steps done, and in all
@@ -117,7 +148,8 @@ contains
       end if
    end function duration_text
 
-   !> The progress line: 'impact: step 480/1200 (t = 1.200 ms of 3.000 ms), 40 %, 12 s left'.
+   !> The progress line: 'impact: step 480/1200 (t = 1.200 ms of 3.000 ms), 40 %, 12 s left'
+   !> (no time left until it is estimated).
    function progress_text(prog, step, t, elapsed) result(text)
       type(progress_t), intent(in) :: prog   !< the progress
       integer, intent(in) :: step            !< the step
@@ -129,8 +161,9 @@ contains
       write (end, '(f16.3)') prog%t_end*1.0e3_dp
       text = 'impact: step ' // int_str(step) // '/' // int_str(prog%nstep) // ' (t = ' // trim(adjustl(now)) &
          // ' ms of ' // trim(adjustl(end)) // ' ms), ' &
-         // int_str(int(100.0_dp*real(step, dp)/real(prog%nstep, dp))) // ' %, ' &
-         // duration_text(time_left_s(step, prog%nstep, elapsed)) // ' left'
+         // int_str(int(100.0_dp*real(step, dp)/real(prog%nstep, dp))) // ' %'
+      if (progress_left(prog, step, elapsed) >= 0.0_dp) &
+         text = text // ', ' // duration_text(progress_left(prog, step, elapsed)) // ' left'
    end function progress_text
 
 end module progress_line

@@ -3,6 +3,9 @@
 !> files, and ends as the run would have ended had it never stopped: the
 !> same history rows, bit for bit, and the same summary.
 !>
+!> A restart of a run that completed (its restart point at its last step,
+!> t_end unchanged) writes nothing and exits 0 (src/impact.f90).
+!>
 !> A restart point is <prefix>.restart, written when the files are flushed
 !> (once a second at the end of a step, src/results/results_hdf5.f90's
 !> results_tick), at the first step (step 0, so that a run that has
@@ -142,22 +145,27 @@ contains
 
    !> A restart's first look at the run's restart point: whether there is
    !> one, and that it was written with this deck (module header) by this
-   !> layout; stat /= 0 with the differences named otherwise.
-   subroutine restart_check(deck, found, stat, errmsg)
+   !> layout, and its step (the run's last step: the run completed); stat
+   !> /= 0 with the differences named otherwise.
+   subroutine restart_check(deck, found, step, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       logical, intent(out) :: found                 !< there is a restart point
+      integer, intent(out) :: step                  !< the step it was written after (0 if none)
       integer, intent(out) :: stat                  !< 0 when the run may continue from it
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=:), allocatable :: path, changed
       integer :: u
 
       stat = 0
+      step = 0
       path = restart_file(deck)
       inquire (file=path, exist=found)
       if (.not. found) return
       call open_point(path, u, stat, errmsg)
       if (stat /= 0) return
       call compare_deck(u, deck, changed, stat)
+      call take_tag(u, 'state', stat)
+      call take_int(u, step, stat)
       close (u)
       if (stat /= 0) then
          errmsg = path // ': not a restart point of this build of impact (or damaged)'

@@ -10,7 +10,7 @@ module run_report
    use scene_model, only: write_scene_report
    implicit none
    private
-   public :: echo_model, usage, usage_line
+   public :: echo_model, usage, usage_line, version_text
 
    !> The usage in one line: the first of impact --help, and what a wrong
    !> command line gets after its message.
@@ -54,8 +54,8 @@ contains
       write (u, '(a)') '  --check              read, echo, build and factor; stop before the time loop (a data check)'
       write (u, '(a)') '  --overwrite          replace the results of an earlier run with the same prefix'
       write (u, '(a)') '  --restart            continue the run at the deck''s prefix from its last restart point'
-      write (u, '(a)') '  --set group.var=val  set a deck variable after reading the deck (repeatable),'
-      write (u, '(a)') '                       checked like the deck: --set analysis.dt=1e-6 --set mesh.nx=18'
+      write (u, '(a)') '  --set group.var=val  set a deck variable after reading the deck (repeatable); the deck is'
+      write (u, '(a)') '                       then checked once with all: --set analysis.dt=1e-6 --set mesh.nx=18'
       write (u, '(a)') '  --trace STEP[,STEP]  print every box of the flowchart (Fig. 3) for those time steps'
       write (u, '(a)') '  --accuracy TOL       every result with its error bar, refined to relative error TOL (&accuracy)'
       write (u, '(a)') '  --single             one run of the deck, its &accuracy target left aside'
@@ -66,7 +66,23 @@ contains
       write (u, '(a)') 'options may stand before or after the deck; one deck only'
       write (u, '(a)') ''
       write (u, '(a)') 'deck groups:' // groups
-      write (u, '(a)') 'every variable, its unit, default and meaning: docs/DECK.md, "The deck" (or impact --deck-table)'
+      write (u, '(a)') 'every variable, its unit, default and meaning: docs/DECK.md, "The deck" (or impact --deck-table);'
+      write (u, '(a)') 'installed (make install): the documents in <prefix>/share/doc/impact (docs/DECK.md there)'
+      write (u, '(a)') ''
+      write (u, '(a)') 'Report bugs to the impact developers, with the deck, the command line and the first line'
+      write (u, '(a)') 'of impact --version (README.md, "Reporting bugs").'
    end subroutine usage
+
+   !> impact --version: the version the build recorded (one line, as scripts
+   !> read it), then the copyright and the licence (LICENSE).
+   subroutine version_text(u, version)
+      integer, intent(in) :: u                   !< open formatted unit
+      character(len=*), intent(in) :: version    !< 'impact 1.2.0 (git <commit>)' (src/system/build_info.f90)
+      write (u, '(a)') version
+      write (u, '(a)') 'Copyright (c) 2026 the impact developers.'
+      write (u, '(a)') 'License MIT: <https://opensource.org/licenses/MIT>, the file LICENSE.'
+      write (u, '(a)') 'This is free software: you are free to change and redistribute it.'
+      write (u, '(a)') 'There is NO WARRANTY, to the extent permitted by law.'
+   end subroutine version_text
 
 end module run_report

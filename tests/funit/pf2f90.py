@@ -29,7 +29,11 @@ The subset:
           (passes when lhs < rhs, lhs <= rhs, ...; tolerance=t for reals)
       @assertTrue(condition)  @assertFalse(condition)  @assertIsFinite(x)
           (each with an optional message=m)
-    message= and tolerance= by keyword only.
+    message= and tolerance= by keyword only;
+  * every `call execute_command_line(...)` gives cmdstat=: without it a
+    command that cannot run (a tool not installed, exit status 127) ends
+    the whole suite ("EXECUTE_COMMAND_LINE: Invalid command line"); with it
+    exitstat= says 127 and only that test fails, by its name.
 
 An assertion becomes, as in pFUnit,
     call assertEqual(<arguments>, location=SourceLocation('<file>', <line>))
@@ -387,6 +391,9 @@ class PfFile:
         low = re.sub(r'\s+', ' ', text.lower())
         if self._pending:
             self._marked_subroutine(first, last, low)
+        if re.match(r'call execute_command_line\b', low) and not re.search(r'\bcmdstat ?=', low):
+            self.refuse(first, 'execute_command_line without cmdstat=: a command that cannot run (a tool '
+                        'not installed) would end the whole suite; give cmdstat= (exitstat= then says 127)')
 
         m = re.match(r'end ?(subroutine|function|module|submodule|interface|type|program)\b', low)
         if m or low == 'end':

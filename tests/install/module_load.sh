@@ -12,7 +12,7 @@
 #   loaded        the module as `module -t list` names it
 #   impact        `command -v impact` after the load
 #   man           `man -w impact` after the load
-#   version       `impact --version` after the load
+#   version       the first line of `impact --version` after the load
 #   root          IMPACT_ROOT after the load
 #   man_kept      yes when `man -w man` finds the same page as before the
 #                 load (the modulefile keeps man's own search path)
@@ -46,7 +46,7 @@ say load $?
 say loaded "$(module -t list 2>&1 | grep '^impact/')"
 say impact "$(command -v impact)"
 say man "$(man -w impact 2>/dev/null)"
-say version "$(impact --version 2>&1)"
+say version "$(impact --version 2>&1 | head -n 1)"
 say root "${IMPACT_ROOT-}"
 if [ "$(man -w man 2>/dev/null)" = "$man_before" ]; then say man_kept yes; else say man_kept no; fi
 module unload impact
