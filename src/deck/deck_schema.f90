@@ -120,18 +120,18 @@ module deck_schema
          'failure criterion of the plies: ''hashin'' (Hashin 1980), ''max_stress'' or ''tsai_wu'' ' &
          // '(Tsai & Wu 1971)'), &
       deck_var_t('strength', 'g1c', kind_real, 'J/m^2', '', '[1, 1e6]', 'mode I interlaminar fracture ' &
-         // 'toughness (DCB test, ASTM D5528); not given: no value is assumed'), &
+         // 'toughness (DCB test, ASTM D5528); read and checked, not used yet'), &
       deck_var_t('strength', 'g2c', kind_real, 'J/m^2', '', '[1, 1e6]', 'mode II interlaminar fracture ' &
          // 'toughness (ENF test, ASTM D7905); gives the delamination threshold load (Davies & Zhang 1995); ' &
          // 'not given: not computed'), &
       deck_var_t('strength', 'gft', kind_real, 'J/m^2', '', '[1, 1e6]', 'ply fracture energy, fibre tension ' &
-         // '(compact tension); needs the six strengths'), &
+         // '(compact tension); needs the six strengths; read and checked, not used yet'), &
       deck_var_t('strength', 'gfc', kind_real, 'J/m^2', '', '[1, 1e6]', 'ply fracture energy, fibre ' &
-         // 'compression (compact compression); needs the six strengths'), &
+         // 'compression (compact compression); needs the six strengths; not used yet'), &
       deck_var_t('strength', 'gmt', kind_real, 'J/m^2', '', '[1, 1e6]', 'ply fracture energy, matrix tension ' &
-         // '(about G_Ic); needs the six strengths'), &
+         // '(about G_Ic); needs the six strengths; not used yet'), &
       deck_var_t('strength', 'gmc', kind_real, 'J/m^2', '', '[1, 1e6]', 'ply fracture energy, matrix ' &
-         // 'compression (about G_IIc); needs the six strengths'), &
+         // 'compression (about G_IIc); needs the six strengths; not used yet'), &
       deck_var_t('impactor', 'mass', kind_real, 'kg', '0.243', '[1e-6, 1e4]', 'impactor mass'), &
       deck_var_t('impactor', 'velocity', kind_real, 'm/s', '3.0', '(0, 1e3]', 'impact velocity, towards the plate'), &
       deck_var_t('impactor', 'diameter', kind_real, 'm', '0.0127', '[1e-5, 10]', &
