@@ -25,9 +25,17 @@
 !> history's steps only, so &output every bounds it (docs/STRENGTH.md, "Ply stresses
 !> and failure", gives the measured share of a run).
 !>
-!> At the end (damage_close): the summary's items (max_failure_index, the
-!> largest stresses max_abs_s11_MPa ... max_abs_t13_MPa, failure_onset_us,
-!> failure_mode, failure_ply, failure_x_mm, failure_y_mm)
+!> Delamination (src/strength/delamination.f90), with or without
+!> &strength: the regime, and with g2c the first step whose contact force
+!> passed the threshold (damage_peak); with &strength, Choi & Chang's index
+!> of every interface from the ply averages, with the failure indices.
+!>
+!> At the end (damage_close): the summary's items (impact_regime,
+!> mass_ratio, the delamination thresholds and onset; with &strength
+!> max_failure_index, the largest stresses max_abs_s11_MPa ...
+!> max_abs_t13_MPa, failure_onset_us, failure_mode, failure_ply,
+!> failure_x_mm, failure_y_mm, max_delamination_index,
+!> delamination_interface, delamination_x_mm, delamination_y_mm)
 !> and, in <prefix>.h5, the group /strength (damage_write, layout there);
 !> with <prefix>.xdmf, the same on a grid of the laminate, which ParaView
 !> and meshio show (/xdmf/plies, src/results/xdmf_plies.f90).
@@ -329,6 +337,8 @@ contains
    !>   damage_map (npoint, nply) the largest failure index of each ply at
    !>               each point over the run; damage_mode (npoint, nply) its mode;
    !>               onset_time (npoint, nply) the first time it reached 1 (s, -1: never)
+   !>   delamination_map (npoint, nply - 1) Choi & Chang's largest index of
+   !>               each interface (k: plies k, k + 1) at each point over the run
    !>   peak/       attributes step, time, force: the step of the largest
    !>               contact force; s11 s22 t12 t23 t13 (npoint, 2 nply) the
    !>               stresses there (Pa, material axes; face 2k-1 the bottom of
