@@ -52,6 +52,7 @@ module deck_schema
    implicit none
    private
    public :: deck_var_t, deck_t, value_t, deck_vars, deck_groups, deck_bind, find_var, var_key, strength_given
+   public :: toughness_given
    public :: is_given, not_given_real, not_given_integer, accuracy_wanted
    public :: kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names
    public :: max_word_len, max_path_len, max_list_len, words_of, words_quoted
@@ -323,6 +324,15 @@ contains
          .and. is_given(deck, 'strength', 'yt') .and. is_given(deck, 'strength', 'yc') &
          .and. is_given(deck, 'strength', 's12') .and. is_given(deck, 'strength', 's23')
    end function strength_given
+
+   !> True when the deck gives any of the fracture toughnesses of
+   !> &strength (g1c, g2c, gft, gfc, gmt, gmc).
+   pure logical function toughness_given(deck)
+      type(deck_t), intent(in) :: deck              !< the deck
+      character(len=3), parameter :: names(6) = [character(len=3) :: 'g1c', 'g2c', 'gft', 'gfc', 'gmt', 'gmc']
+      integer :: k
+      toughness_given = any([(is_given(deck, 'strength', trim(names(k))), k = 1, size(names))])
+   end function toughness_given
 
    !> True when the deck asks for an accuracy run (&accuracy target given,
    !> or impact --accuracy TOL): a ladder of runs (src/accuracy/).

@@ -3,7 +3,7 @@
 !> value of the deck with its symbol and unit, the derived sizes, the
 !> laminate, and the scene report of src/model/scene_model.f90).
 module run_report
-   use deck_schema, only: deck_t, deck_groups, is_given, strength_given
+   use deck_schema, only: deck_t, deck_groups, is_given, strength_given, toughness_given
    use deck_echo, only: echo_deck
    use plate_model, only: model_t
    use global_matrix, only: global_bandwidth, global_stored_entries
@@ -24,8 +24,6 @@ contains
       type(deck_t), intent(in) :: deck      !< the effective deck
       type(model_t), intent(in) :: model    !< the model built from it
       integer, intent(in) :: u              !< open formatted unit
-      character(len=3), parameter :: toughness(6) = [character(len=3) :: 'g1c', 'g2c', 'gft', 'gfc', 'gmt', 'gmc']
-      integer :: i
       write (u, '(a)') 'impact: low-velocity impact of a composite laminate (Choi, Hong & Lee 1991)'
       call echo_deck(deck, u, '')
       write (u, '(a,i0,a,i0,a,i0,a,i0,a,i0)') 'model: nodes ', model%msh%nnode, ', elements ', &
@@ -39,8 +37,7 @@ contains
       write (u, '(a,3es12.4)') 'laminate: P (kg/m^2), R (kg/m), I (kg) ', model%lmt%p, model%lmt%r, model%lmt%i
       call write_scene_report(model%scene, u)
       call write_delamination_scene(u, model%lmt%d, model%scene%impactor_mass, model%scene%plate_mass, &
-         is_given(deck, 'strength', 'g2c'), deck%g2c, strength_given(deck) &
-         .or. any([(is_given(deck, 'strength', trim(toughness(i))), i = 1, size(toughness))]))
+         is_given(deck, 'strength', 'g2c'), deck%g2c, strength_given(deck) .or. toughness_given(deck))
    end subroutine echo_model
 
    !> impact --help: the usage, the options and the deck's groups.
