@@ -257,8 +257,9 @@ def summary_value(text):
 
 def table_text(text):
     """A summary value as the text of a numeric table: as written, flags as
-    1 / 0, a time that never came ('none') and a field of '*'s as NaN."""
-    if overflowed(text) or text == 'none':
+    1 / 0, a time that never came ('none', 'not reached'), a value not
+    computed and a field of '*'s as NaN."""
+    if overflowed(text) or text in ('none', 'not reached', 'not computed'):
         return 'NaN'
     if text in ('true', 'false'):
         return '1' if text == 'true' else '0'

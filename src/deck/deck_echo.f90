@@ -6,7 +6,7 @@
 module deck_echo
    use number_text, only: real_str, int_str, list_str
    use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, strength_given, accuracy_wanted, &
-      words_quoted, kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names
+      toughness_given, words_quoted, kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names
    implicit none
    private
    public :: echo_deck, write_deck_table, write_schema, deck_value_text
@@ -19,12 +19,13 @@ contains
    !> True when the group concerns a deck of this analysis kind (the echo
    !> leaves the others out: &load only for static and pressure analyses,
    !> &modes only for modes, &contact only for the impact, &strength only
-   !> when its strengths are given, &accuracy only for an accuracy run).
+   !> when its strengths or a toughness are given, &accuracy only for an
+   !> accuracy run).
    pure logical function group_applies(group, deck)
       character(len=*), intent(in) :: group         !< the group, without '&'
       type(deck_t), intent(in) :: deck              !< the deck
       select case (trim(group))
-      case ('strength'); group_applies = strength_given(deck)
+      case ('strength'); group_applies = strength_given(deck) .or. toughness_given(deck)
       case ('accuracy'); group_applies = accuracy_wanted(deck)
       case default;      group_applies = group_applies_kind(group, deck%analysis_kind)
       end select

@@ -52,6 +52,7 @@ module deck_schema
    implicit none
    private
    public :: deck_var_t, deck_t, value_t, deck_vars, deck_groups, deck_bind, find_var, var_key, strength_given
+   public :: toughness_given
    public :: is_given, not_given_real, not_given_integer, accuracy_wanted
    public :: kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names
    public :: max_word_len, max_path_len, max_list_len, words_of, words_quoted
@@ -119,6 +120,19 @@ module deck_schema
       deck_var_t('strength', 'criterion', kind_word, '-', 'hashin', 'hashin | max_stress | tsai_wu', &
          'failure criterion of the plies: ''hashin'' (Hashin 1980), ''max_stress'' or ''tsai_wu'' ' &
          // '(Tsai & Wu 1971)'), &
+      deck_var_t('strength', 'g1c', kind_real, 'J/m^2', '', '[1, 1e6]', 'mode I interlaminar fracture ' &
+         // 'toughness (DCB test, ASTM D5528); read and checked, not used yet'), &
+      deck_var_t('strength', 'g2c', kind_real, 'J/m^2', '', '[1, 1e6]', 'mode II interlaminar fracture ' &
+         // 'toughness (ENF test, ASTM D7905); gives the delamination threshold load (Davies & Zhang 1995); ' &
+         // 'not given: not computed'), &
+      deck_var_t('strength', 'gft', kind_real, 'J/m^2', '', '[1, 1e6]', 'ply fracture energy, fibre tension ' &
+         // '(compact tension); needs the six strengths; read and checked, not used yet'), &
+      deck_var_t('strength', 'gfc', kind_real, 'J/m^2', '', '[1, 1e6]', 'ply fracture energy, fibre ' &
+         // 'compression (compact compression); needs the six strengths; not used yet'), &
+      deck_var_t('strength', 'gmt', kind_real, 'J/m^2', '', '[1, 1e6]', 'ply fracture energy, matrix tension ' &
+         // '(about G_Ic); needs the six strengths; not used yet'), &
+      deck_var_t('strength', 'gmc', kind_real, 'J/m^2', '', '[1, 1e6]', 'ply fracture energy, matrix ' &
+         // 'compression (about G_IIc); needs the six strengths; not used yet'), &
       deck_var_t('impactor', 'mass', kind_real, 'kg', '0.243', '[1e-6, 1e4]', 'impactor mass'), &
       deck_var_t('impactor', 'velocity', kind_real, 'm/s', '3.0', '(0, 1e3]', 'impact velocity, towards the plate'), &
       deck_var_t('impactor', 'diameter', kind_real, 'm', '0.0127', '[1e-5, 10]', &
@@ -229,6 +243,7 @@ module deck_schema
       character(len=:), allocatable :: bend_twist
       ! &strength (NaN: not given, as k4, k5: strength_given)
       real(dp) :: xt = 0, xc = 0, yt = 0, yc = 0, s12 = 0, s23 = 0
+      real(dp) :: g1c = 0, g2c = 0, gft = 0, gfc = 0, gmt = 0, gmc = 0   !< NaN: not given (is_given)
       character(len=:), allocatable :: criterion
       ! &impactor
       real(dp) :: mass = 0, velocity = 0, diameter = 0, x0 = 0, y0 = 0
@@ -310,6 +325,15 @@ contains
          .and. is_given(deck, 'strength', 's12') .and. is_given(deck, 'strength', 's23')
    end function strength_given
 
+   !> True when the deck gives any of the fracture toughnesses of
+   !> &strength (g1c, g2c, gft, gfc, gmt, gmc).
+   pure logical function toughness_given(deck)
+      type(deck_t), intent(in) :: deck              !< the deck
+      character(len=3), parameter :: names(6) = [character(len=3) :: 'g1c', 'g2c', 'gft', 'gfc', 'gmt', 'gmc']
+      integer :: k
+      toughness_given = any([(is_given(deck, 'strength', trim(names(k))), k = 1, size(names))])
+   end function toughness_given
+
    !> True when the deck asks for an accuracy run (&accuracy target given,
    !> or impact --accuracy TOL): a ladder of runs (src/accuracy/).
    pure logical function accuracy_wanted(deck)
@@ -380,6 +404,12 @@ contains
       case ('strength.s12');               call bind_real(deck%s12, v, set)
       case ('strength.s23');               call bind_real(deck%s23, v, set)
       case ('strength.criterion');         call bind_text(deck%criterion, v, set)
+      case ('strength.g1c');               call bind_real(deck%g1c, v, set)
+      case ('strength.g2c');               call bind_real(deck%g2c, v, set)
+      case ('strength.gft');               call bind_real(deck%gft, v, set)
+      case ('strength.gfc');               call bind_real(deck%gfc, v, set)
+      case ('strength.gmt');               call bind_real(deck%gmt, v, set)
+      case ('strength.gmc');               call bind_real(deck%gmc, v, set)
       case ('impactor.mass');              call bind_real(deck%mass, v, set)
       case ('impactor.velocity');          call bind_real(deck%velocity, v, set)
       case ('impactor.diameter');          call bind_real(deck%diameter, v, set)

@@ -629,14 +629,25 @@ contains
          // deck%prefix // '''): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
    end subroutine check_needs
 
-   !> &strength: all six strengths or none; the criterion only with them;
-   !> the ply stresses belong to the impact analysis.
+   !> &strength: all six strengths or none; the criterion and the ply
+   !> fracture energies only with them; the ply stresses and the
+   !> toughnesses belong to the impact analysis.
    subroutine check_strength(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
       character(len=3), parameter :: names(6) = [character(len=3) :: 'xt', 'xc', 'yt', 'yc', 's12', 's23']
+      character(len=3), parameter :: energies(6) = [character(len=3) :: 'g1c', 'g2c', 'gft', 'gfc', 'gmt', 'gmc']
+      real(dp) :: given(6)
       logical :: missing(6)
       integer :: k
+      given = [deck%g1c, deck%g2c, deck%gft, deck%gfc, deck%gmt, deck%gmc]
+      do k = 1, size(energies)
+         if (.not. is_given(deck, 'strength', trim(energies(k)))) cycle
+         call need(c, k <= 2 .or. strength_given(deck), 'strength', trim(energies(k)), real_str(given(k)), &
+            'a ply fracture energy needs the six ply strengths xt, xc, yt, yc, s12, s23')
+         call need(c, deck%analysis_kind == 'impact', 'strength', trim(energies(k)), real_str(given(k)), &
+            "the fracture toughnesses are used by kind = 'impact' only")
+      end do
       missing = [(.not. is_given(deck, 'strength', trim(names(k))), k = 1, size(names))]
       if (any(missing) .and. .not. all(missing)) call need(c, .false., 'strength', trim(names(findloc(missing, &
          .true., dim=1))), '(not given)', 'give all six strengths (xt, xc, yt, yc, s12, s23) or none')

@@ -25,15 +25,23 @@
 !> history's steps only, so &output every bounds it (docs/STRENGTH.md, "Ply stresses
 !> and failure", gives the measured share of a run).
 !>
-!> At the end (damage_close): the summary's items (max_failure_index, the
-!> largest stresses max_abs_s11_MPa ... max_abs_t13_MPa, failure_onset_us,
-!> failure_mode, failure_ply, failure_x_mm, failure_y_mm)
+!> Delamination (src/strength/delamination.f90), with or without
+!> &strength: the regime, and with g2c the first step whose contact force
+!> passed the threshold (damage_peak); with &strength, Choi & Chang's index
+!> of every interface from the ply averages, with the failure indices.
+!>
+!> At the end (damage_close): the summary's items (impact_regime,
+!> mass_ratio, the delamination thresholds and onset; with &strength
+!> max_failure_index, the largest stresses max_abs_s11_MPa ...
+!> max_abs_t13_MPa, failure_onset_us, failure_mode, failure_ply,
+!> failure_x_mm, failure_y_mm, max_delamination_index,
+!> delamination_interface, delamination_x_mm, delamination_y_mm)
 !> and, in <prefix>.h5, the group /strength (damage_write, layout there);
 !> with <prefix>.xdmf, the same on a grid of the laminate, which ParaView
 !> and meshio show (/xdmf/plies, src/results/xdmf_plies.f90).
 module damage_record
    use kinds, only: dp, msg_len
-   use deck_schema, only: deck_t, strength_given
+   use deck_schema, only: deck_t, strength_given, is_given
    use materials, only: lamina_t
    use shape_functions, only: nen
    use mesh, only: nfe
@@ -45,6 +53,7 @@ module damage_record
    use results_hdf5, only: results_file_t
    use hdf5_io, only: h5io_group, h5io_set_attr, h5io_write
    use xdmf_plies, only: plies_write
+   use delamination, only: delamination_t, delamination_open, delamination_force, delamination_point, impact_regime
    implicit none
    private
    public :: damage_t, damage_open, damage_step, damage_peak, damage_close, damage_stresses, damage_points
@@ -77,6 +86,8 @@ module damage_record
       real(dp), allocatable :: d_peak(:)
       real(dp) :: peak_force = 0.0_dp, peak_time = 0.0_dp
       integer :: peak_step = 0
+      ! -- delamination: thresholds (g2c), regime, Choi & Chang's interfaces (src/strength/delamination.f90)
+      type(delamination_t) :: delam
    end type damage_t
 
 contains
@@ -88,9 +99,12 @@ contains
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(model_t), intent(in) :: model            !< the model
       integer :: e
+      dmg%strength = strength_t(deck%xt, deck%xc, deck%yt, deck%yc, deck%s12, deck%s23)
+      call delamination_open(dmg%delam, model%lmt%d, model%scene%impactor_mass/model%scene%plate_mass, &
+         is_given(deck, 'strength', 'g2c'), deck%g2c, strength_given(deck), dmg%strength, size(deck%angles), &
+         ngp*model%msh%nelem)
       if (.not. strength_given(deck)) return
       dmg%active = .true.
-      dmg%strength = strength_t(deck%xt, deck%xc, deck%yt, deck%yc, deck%s12, deck%s23)
       dmg%criterion = criterion_code(deck%criterion)
       dmg%criterion_name = deck%criterion
       call ply_stack_init(lamina_t(deck%e1, deck%e2, deck%g12, deck%g13, deck%g23, deck%nu12, deck%rho), &
@@ -117,7 +131,7 @@ contains
       type(model_t), intent(in) :: model            !< the model
       real(dp), intent(in) :: t                     !< the time of the state (s)
       real(dp), intent(in) :: d(:)                  !< plate displacements {D}
-      real(dp) :: de(nfe), e(nstate), sigma(5, 2, dmg%nply), fi(dmg%nply)
+      real(dp) :: de(nfe), e(nstate), sigma(5, 2, dmg%nply), fi(dmg%nply), mean(5, dmg%nply)
       integer :: mode(dmg%nply), el, g, p, k, kmax
       logical :: onset_now
 
@@ -131,7 +145,8 @@ contains
          points: do g = 1, ngp
             p = g + ngp*(el - 1)
             e = point_strain_state(model%geo(el)%dx3(:, :, g), dmg%d2(:, :, g, el), de, dmg%nonlinear)
-            call ply_stresses(dmg%stack, e, sigma)
+            call ply_stresses(dmg%stack, e, sigma, mean)
+            call delamination_point(dmg%delam, p, mean)
             do k = 1, 5
                dmg%smax(k) = max(dmg%smax(k), maxval(abs(sigma(k, :, :))))
             end do
@@ -175,6 +190,7 @@ contains
       integer, intent(in) :: step                   !< the step
       real(dp), intent(in) :: t, f                  !< its time (s) and contact force (N)
       real(dp), intent(in) :: d(:)                  !< plate displacements {D}
+      call delamination_force(dmg%delam, t, f)
       if (.not. dmg%active .or. .not. f > dmg%peak_force) return
       dmg%peak_force = f
       dmg%peak_time = t
@@ -254,6 +270,23 @@ contains
       real(dp), allocatable :: xy(:,:)
       integer :: ply, point, mode, c
       stat = 0
+      ! -- delamination (src/strength/delamination.f90): regime, thresholds
+      call summary_text(s, 'impact_regime', impact_regime(dmg%delam%ratio))
+      call summary_real(s, 'mass_ratio', 'mass_ratio', '-', dmg%delam%ratio, 1.0_dp)
+      if (dmg%delam%threshold) then
+         call summary_real(s, 'delamination_threshold_N', 'delamination_threshold', 'N', dmg%delam%p_c, 1.0_dp)
+         call summary_real(s, 'delamination_threshold_dynamic_N', 'delamination_threshold_dynamic', 'N', &
+                           dmg%delam%p_dyn, 1.0_dp)
+         if (dmg%delam%onset >= 0.0_dp) then
+            call summary_real(s, 'delamination_onset_us', 'delamination_onset', 's', dmg%delam%onset, 1.0e6_dp)
+         else
+            call summary_text(s, 'delamination_onset_us', 'not reached')
+         end if
+      else
+         call summary_text(s, 'delamination_threshold_N', 'not computed')
+         call summary_text(s, 'delamination_threshold_dynamic_N', 'not computed')
+         call summary_text(s, 'delamination_onset_us', 'not computed')
+      end if
       if (.not. dmg%active) return
       call summary_real(s, 'max_failure_index', 'max_failure_index', '-', dmg%max_fi, 1.0_dp)
       do c = 1, 5
@@ -270,14 +303,30 @@ contains
       call summary_text(s, 'failure_mode', trim(mode_names(mode)))
       call summary_integer(s, 'failure_ply', ply)
       xy = damage_points(model)
-      if (point > 0) then
-         call summary_real(s, 'failure_x_mm', 'failure_x', 'm', xy(1, point), 1.0e3_dp)
-         call summary_real(s, 'failure_y_mm', 'failure_y', 'm', xy(2, point), 1.0e3_dp)
-      else
-         call summary_text(s, 'failure_x_mm', 'none')
-         call summary_text(s, 'failure_y_mm', 'none')
+      call place('failure', point)
+      ! -- Choi & Chang's delamination index: the largest, its interface and place
+      if (dmg%delam%interfaces) then
+         call summary_real(s, 'max_delamination_index', 'max_delamination_index', '-', dmg%delam%max_index, 1.0_dp)
+         call summary_integer(s, 'delamination_interface', dmg%delam%max_interface)
+         call place('delamination', dmg%delam%max_point)
       end if
       if (rf%active) call damage_write(dmg, model, xy, rf, stat, errmsg)
+
+   contains
+
+      !> <what>_x_mm, <what>_y_mm of point p, 'none' without one.
+      subroutine place(what, p)
+         character(len=*), intent(in) :: what
+         integer, intent(in) :: p
+         if (p > 0) then
+            call summary_real(s, what // '_x_mm', what // '_x', 'm', xy(1, p), 1.0e3_dp)
+            call summary_real(s, what // '_y_mm', what // '_y', 'm', xy(2, p), 1.0e3_dp)
+         else
+            call summary_text(s, what // '_x_mm', 'none')
+            call summary_text(s, what // '_y_mm', 'none')
+         end if
+      end subroutine place
+
    end subroutine damage_close
 
    !> /strength of <prefix>.h5 (C order, as h5py shows it):
@@ -288,6 +337,8 @@ contains
    !>   damage_map (npoint, nply) the largest failure index of each ply at
    !>               each point over the run; damage_mode (npoint, nply) its mode;
    !>               onset_time (npoint, nply) the first time it reached 1 (s, -1: never)
+   !>   delamination_map (npoint, nply - 1) Choi & Chang's largest index of
+   !>               each interface (k: plies k, k + 1) at each point over the run
    !>   peak/       attributes step, time, force: the step of the largest
    !>               contact force; s11 s22 t12 t23 t13 (npoint, 2 nply) the
    !>               stresses there (Pa, material axes; face 2k-1 the bottom of
@@ -325,6 +376,7 @@ contains
       call put_data('strength/damage_map', dmg%fi_max, '-')
       if (stat == 0) call h5io_write(rf%fid, 'strength/damage_mode', dmg%mode_max, stat, why)
       call put_data('strength/onset_time', dmg%onset_time, 's')
+      if (dmg%delam%interfaces) call put_data('strength/delamination_map', dmg%delam%map, '-')
 
       allocate (sigma(5, 2, dmg%nply, dmg%npoint), fi(2, dmg%nply, dmg%npoint))
       call damage_stresses(dmg, model, dmg%d_peak, sigma, fi)
@@ -344,7 +396,7 @@ contains
       end if
       ! -- the same on the laminate's grid of <prefix>.xdmf (src/results/xdmf_plies.f90)
       if (rf%xdmf%active) call plies_write(rf%xdmf%plies, rf%fid, model%msh, dmg%stack%z, dmg%stack%angle, &
-         dmg%fi_max, dmg%mode_max, dmg%onset_time, sigma, fi, modes, stat, why)
+         dmg%fi_max, dmg%mode_max, dmg%onset_time, sigma, fi, dmg%delam%map, modes, stat, why)
       if (stat /= 0) errmsg = rf%path // ': /xdmf/plies: ' // trim(why)
 
    contains

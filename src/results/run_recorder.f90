@@ -766,8 +766,9 @@ contains
    !> Writes what the record carries from step to step (a restart point,
    !> src/results/restart_point.f90): the energies, the previous step's
    !> impactor, pattern and plate, the summary's running figures and
-   !> maxima, the warnings given, the history file's length, and with
-   !> &strength the damage record's maps and maxima.
+   !> maxima, the warnings given, the history file's length, the
+   !> delamination onset, and with &strength the damage record's maps and
+   !> maxima.
    subroutine record_save_state(rec, u, stat)
       type(record_t), intent(in) :: rec             !< the record
       integer, intent(in) :: u                      !< the restart file, an open stream
@@ -788,6 +789,7 @@ contains
       call put_pattern(u, rec%pattern_prev, stat)
       call put_reals(u, rec%d_prev, stat)
       call put_flag(u, rec%damage%active, stat)
+      call put_real(u, rec%damage%delam%onset, stat)
       if (.not. rec%damage%active) return
       call put_reals(u, [rec%damage%smax, rec%damage%step_fi, rec%damage%max_fi, rec%damage%max_time, &
          rec%damage%onset, rec%damage%onset_fi, rec%damage%peak_force, rec%damage%peak_time], stat)
@@ -797,6 +799,9 @@ contains
       call put_ints(u, reshape(rec%damage%mode_max, [size(rec%damage%mode_max)]), stat)
       call put_reals(u, reshape(rec%damage%onset_time, [size(rec%damage%onset_time)]), stat)
       call put_reals(u, rec%damage%d_peak, stat)
+      call put_reals(u, [rec%damage%delam%max_index], stat)
+      call put_ints(u, [rec%damage%delam%max_interface, rec%damage%delam%max_point], stat)
+      call put_reals(u, reshape(rec%damage%delam%map, [size(rec%damage%delam%map)]), stat)
    end subroutine record_save_state
 
    !> A restart: the record of the deck and model (record_open's settings)
@@ -846,6 +851,7 @@ contains
       active = .false.
       call take_flag(u, active, stat)
       if (stat == 0 .and. active .neqv. rec%damage%active) stat = 1
+      call take_real(u, rec%damage%delam%onset, stat)
       if (stat /= 0 .or. .not. active) return
       call take_reals(u, r, stat, 12)
       call take_ints(u, i, stat)
@@ -865,6 +871,13 @@ contains
       call take_reals(u, r, stat, size(rec%damage%onset_time))
       if (stat == 0) rec%damage%onset_time = reshape(r, shape(rec%damage%onset_time))
       call take_reals(u, rec%damage%d_peak, stat, model%msh%neq)
+      call take_reals(u, r, stat, 1)
+      call take_ints(u, i, stat)
+      if (stat == 0 .and. size(i) /= 2) stat = 1
+      if (stat /= 0) return
+      rec%damage%delam%max_index = r(1);  rec%damage%delam%max_interface = i(1);  rec%damage%delam%max_point = i(2)
+      call take_reals(u, r, stat, size(rec%damage%delam%map))
+      if (stat == 0) rec%damage%delam%map = reshape(r, shape(rec%damage%delam%map))
    end subroutine record_load_state
 
    ! ============================================================== helpers

@@ -3,11 +3,12 @@
 !> value of the deck with its symbol and unit, the derived sizes, the
 !> laminate, and the scene report of src/model/scene_model.f90).
 module run_report
-   use deck_schema, only: deck_t, deck_groups
+   use deck_schema, only: deck_t, deck_groups, is_given, strength_given, toughness_given
    use deck_echo, only: echo_deck
    use plate_model, only: model_t
    use global_matrix, only: global_bandwidth, global_stored_entries
    use scene_model, only: write_scene_report
+   use delamination, only: write_delamination_scene
    implicit none
    private
    public :: echo_model, usage, usage_line, version_text
@@ -35,6 +36,8 @@ contains
       write (u, '(a,2es12.4)') 'laminate: Abar44 Abar55 (N/m) ', model%lmt%as(1,1), model%lmt%as(2,2)
       write (u, '(a,3es12.4)') 'laminate: P (kg/m^2), R (kg/m), I (kg) ', model%lmt%p, model%lmt%r, model%lmt%i
       call write_scene_report(model%scene, u)
+      call write_delamination_scene(u, model%lmt%d, model%scene%impactor_mass, model%scene%plate_mass, &
+         is_given(deck, 'strength', 'g2c'), deck%g2c, strength_given(deck) .or. toughness_given(deck))
    end subroutine echo_model
 
    !> impact --help: the usage, the options and the deck's groups.

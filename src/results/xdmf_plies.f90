@@ -29,6 +29,10 @@
 !>   peak_tau_23 (Pa), peak_tau_13 (Pa), peak_failure_index (-)
 !>                                    at the step of the largest contact force,
 !>                                    material axes: /strength/peak
+!>   delamination_index (-)           Choi & Chang's largest index over the run
+!>                                    of the interface the half-ply touches (0
+!>                                    on the laminate's faces):
+!>                                    /strength/delamination_map
 !>
 !> In <prefix>.h5, /xdmf/plies: points (npts, 3) m, cells (ncell, 8) numbered
 !> from 0 (VTK's hexahedron order), and one dataset (ncell) per attribute,
@@ -63,13 +67,14 @@ module xdmf_plies
    !> Points of the lattice of an element's cut lines (4 x 4).
    integer, parameter :: nen_lattice = 16
    !> Number of real and integer cell attributes, their names in the XML and datasets.
-   integer, parameter :: nreals = 9, nints = 3, name_len = 24
+   integer, parameter :: nreals = 10, nints = 3, name_len = 24
    character(len=name_len), parameter :: real_names(nreals) = [character(len=name_len) :: &
       'ply_angle (deg)', 'damage_map (-)', 'onset_time (s)', 'peak_sigma_11 (Pa)', 'peak_sigma_22 (Pa)', &
-      'peak_tau_12 (Pa)', 'peak_tau_23 (Pa)', 'peak_tau_13 (Pa)', 'peak_failure_index (-)']
+      'peak_tau_12 (Pa)', 'peak_tau_23 (Pa)', 'peak_tau_13 (Pa)', 'peak_failure_index (-)', &
+      'delamination_index (-)']
    character(len=name_len), parameter :: real_sets(nreals) = [character(len=name_len) :: &
       'ply_angle', 'damage_map', 'onset_time', 'peak_sigma_11', 'peak_sigma_22', &
-      'peak_tau_12', 'peak_tau_23', 'peak_tau_13', 'peak_failure_index']
+      'peak_tau_12', 'peak_tau_23', 'peak_tau_13', 'peak_failure_index', 'delamination_index']
    character(len=name_len), parameter :: int_names(nints) = [character(len=name_len) :: 'ply', 'face', 'damage_mode']
 
    !> The laminate grid of a results file.
@@ -87,9 +92,9 @@ contains
    !> impacted face), angle the ply angles (deg); the damage map fi_max,
    !> mode_max, onset (nply, npoint); at the peak force sigma (5, 2, nply,
    !> npoint) (Pa, s11 s22 t12 t23 t13, material axes) and fi (2, nply,
-   !> npoint); points in element order, 9 per element (ply_stress's order:
-   !> xi fastest).
-   subroutine plies_write(p, fid, msh, z, angle, fi_max, mode_max, onset, sigma, fi, modes, stat, errmsg)
+   !> npoint); delam (nply - 1, npoint) the interfaces' largest index;
+   !> points in element order, 9 per element (ply_stress's order: xi fastest).
+   subroutine plies_write(p, fid, msh, z, angle, fi_max, mode_max, onset, sigma, fi, delam, modes, stat, errmsg)
       type(xdmf_plies_t), intent(out) :: p          !< the grid, active on success
       integer(hid_t), intent(in) :: fid             !< the open results file
       type(mesh_t), intent(in) :: msh               !< the modelled mesh
@@ -100,10 +105,11 @@ contains
       real(dp), intent(in) :: onset(:,:)            !< (nply, npoint) first time it reached 1 (s, -1 never)
       real(dp), intent(in) :: sigma(:,:,:,:)        !< (5, 2, nply, npoint) stresses at the peak force (Pa)
       real(dp), intent(in) :: fi(:,:,:)             !< (2, nply, npoint) failure indices there (-)
+      real(dp), intent(in) :: delam(:,:)            !< (nply - 1, npoint) interfaces' largest index (-)
       character(len=*), intent(in) :: modes         !< the mode codes' words
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
-      real(dp), allocatable :: xyz(:,:), v(:)
+      real(dp), allocatable :: xyz(:,:), v(:), face_values(:,:,:)
       integer, allocatable :: cells(:,:), iv(:)
       integer :: nply, npoint, ncell, c, k
 
@@ -140,6 +146,13 @@ contains
       end do
       v = reshape(fi, [ncell])
       call put_real(9)
+      ! -- each interface's index on the two half-plies beside it
+      allocate (face_values(2, nply, npoint))
+      face_values = 0.0_dp
+      face_values(2, 1:nply-1, :) = delam
+      face_values(1, 2:nply, :) = delam
+      v = reshape(face_values, [ncell])
+      call put_real(10)
       if (stat /= 0) return
       p%active = .true.
       p%nply = nply

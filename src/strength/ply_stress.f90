@@ -116,13 +116,18 @@ contains
 
    !> The stresses of every ply face at a point of strain state e:
    !> sigma(:, f, k) = (s11, s22, t12, t23, t13) (Pa) on face f (1 bottom,
-   !> 2 top) of ply k, material axes (module header).
-   pure subroutine ply_stresses(stack, e, sigma)
+   !> 2 top) of ply k, material axes (module header); with mean, also each
+   !> ply's through-thickness average: exact, the in-plane stresses being
+   !> linear in z within a ply and the shear quadratic (Simpson's rule on
+   !> its faces and middle).
+   pure subroutine ply_stresses(stack, e, sigma, mean)
       type(ply_stack_t), intent(in) :: stack        !< the laminate's tables
       real(dp), intent(in) :: e(nstate)             !< strain state (module header)
       real(dp), intent(out) :: sigma(5, 2, stack%nply)   !< stresses (Pa)
+      real(dp), intent(out), optional :: mean(5, stack%nply)   !< ply averages (Pa)
       real(dp) :: p0(3, stack%nangle), p1(3, stack%nangle), ax(3, stack%nangle), bx(3, stack%nangle), &
-                  ay(3, stack%nangle), by(3, stack%nangle), txz(0:stack%nply), tyz(0:stack%nply), z, r
+                  ay(3, stack%nangle), by(3, stack%nangle), txz(0:stack%nply), tyz(0:stack%nply), z, r, &
+                  mxz(stack%nply), myz(stack%nply), zm, hz, hz2
       integer :: a, i, j, k, f, n
       n = stack%nply
       ! -- per distinct angle: T Qbar eps0, T Qbar kappa, and Qbar times the gradients
@@ -146,6 +151,18 @@ contains
          txz(k) = txz(k-1) - (stack%dz(k)*(ax(1, a) + ay(3, a)) + stack%dz2(k)*(bx(1, a) + by(3, a)))
          tyz(k) = tyz(k-1) - (stack%dz(k)*(ax(3, a) + ay(2, a)) + stack%dz2(k)*(bx(3, a) + by(2, a)))
       end do through
+      ! -- the shear at each ply's middle, for the averages
+      if (present(mean)) then
+         do k = 1, n
+            a = stack%kind(k)
+            zm = 0.5_dp*(stack%z(k-1) + stack%z(k))
+            hz = 0.5_dp*stack%dz(k)
+            hz2 = 0.5_dp*(zm**2 - stack%z(k-1)**2)
+            r = (zm + 0.5_dp*stack%h)/stack%h
+            mxz(k) = txz(k-1) - (hz*(ax(1, a) + ay(3, a)) + hz2*(bx(1, a) + by(3, a))) - r*txz(n)
+            myz(k) = tyz(k-1) - (hz*(ax(3, a) + ay(2, a)) + hz2*(bx(3, a) + by(2, a))) - r*tyz(n)
+         end do
+      end if
       ! -- faces free: the top's residual (in-plane inertia) spread as (z + h/2)/h
       do i = 1, n
          r = (stack%z(i) + 0.5_dp*stack%h)/stack%h
@@ -163,6 +180,15 @@ contains
             sigma(5, f, k) = stack%c(k)*txz(i) + stack%s(k)*tyz(i)     ! t13
          end do
       end do plies
+      if (.not. present(mean)) return
+      averages: do k = 1, n
+         a = stack%kind(k)
+         mean(1:3, k) = p0(:, a) + 0.5_dp*(stack%z(k-1) + stack%z(k))*p1(:, a)
+         mxz(k) = (txz(k-1) + 4.0_dp*mxz(k) + txz(k))/6.0_dp
+         myz(k) = (tyz(k-1) + 4.0_dp*myz(k) + tyz(k))/6.0_dp
+         mean(4, k) = -stack%s(k)*mxz(k) + stack%c(k)*myz(k)
+         mean(5, k) = stack%c(k)*mxz(k) + stack%s(k)*myz(k)
+      end do averages
    end subroutine ply_stresses
 
    !> The in-plane stresses (sx, sy, txy) in the axes of a ply at theta_deg:
