@@ -47,7 +47,7 @@ program impact
    use step_trace, only: trace_t, trace_parse, trace_step, trace_iteration
    use run_report, only: echo_model, usage, usage_line
    use build_info, only: code_version
-   use result_files, only: results_claim_t, result_suffixes, claim_results, release_results
+   use result_files, only: results_claim_t, result_suffixes, claim_results, release_results, claim_left_empty
    use other_analyses, only: run_other_analysis
    use process_stop, only: catch_stop_signals, remove_on_stop, stop_after_step, stop_signal_caught, &
       keep_file_size_errors, exit_program
@@ -250,7 +250,10 @@ contains
          'restart: no restart point ' // restart_file(deck) // ': the run starts at step 0'
       if (check_only) return
       claimed = deck
-      claimed%overwrite = deck%overwrite .or. restarting     ! a restart continues the run's own files
+      ! a restart continues the run's own files, or the claim a run killed in its set-up left
+      claimed%overwrite = deck%overwrite .or. restarting
+      if (opts%restart .and. .not. claimed%overwrite) &
+         claimed%overwrite = claim_left_empty(deck%prefix, result_suffixes(deck%analysis_kind))
       call claim_results(claimed, result_suffixes(deck%analysis_kind), claim, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
       call remove_on_stop(claim%first)                      ! a stop in the set-up leaves it only if written
@@ -303,9 +306,13 @@ contains
       character(len=*), intent(in), optional :: status
       character(len=80) :: where
       write (where, '(a,i0,a,es11.4,a)') 'failed at step ', step, ' (t = ', t, ' s)'
-      if (present(status)) where = status
-      write (error_unit, '(a/a)') 'impact: error: ' // trim(message), 'impact: ' // trim(where) &
-         // '; results up to the last step are in ' // deck%prefix // '_history.dat'
+      if (present(status)) then          ! before the first step: no results
+         where = status
+         write (error_unit, '(a/a)') 'impact: error: ' // trim(message), 'impact: ' // trim(where) // ': no step ran'
+      else
+         write (error_unit, '(a/a)') 'impact: error: ' // trim(message), 'impact: ' // trim(where) &
+            // '; results up to the last step are in ' // deck%prefix // '_history.dat'
+      end if
       call finish(trim(where), 1)
    end subroutine fail_in_run
 

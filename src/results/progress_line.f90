@@ -31,6 +31,7 @@ module progress_line
    type :: progress_t
       logical :: terminal = .false.        !< standard error is a terminal: one line, rewritten
       integer :: nstep = 0                 !< the run's steps
+      integer :: first = 0                 !< the step the clock starts after (a restart's)
       real(dp) :: t_end = 0                !< its end time (s)
       real(dp) :: interval = log_interval  !< wall seconds between two updates
       integer(int64) :: count0 = 0         !< system_clock at the first step
@@ -41,11 +42,14 @@ module progress_line
 
 contains
 
-   !> The clock starts: the run has nstep steps to t_end.
-   subroutine progress_start(prog, nstep, t_end)
+   !> The clock starts: the run has nstep steps to t_end, the first
+   !> `first` of them made before (a restart).
+   subroutine progress_start(prog, nstep, t_end, first)
       type(progress_t), intent(out) :: prog   !< the progress
       integer, intent(in) :: nstep            !< the run's steps
       real(dp), intent(in) :: t_end           !< its end time (s)
+      integer, intent(in) :: first            !< the steps made before (0, or a restart point's)
+      prog%first = first
       prog%terminal = c_isatty(2) == 1
       prog%interval = merge(1.0_dp/terminal_rate, log_interval, prog%terminal)
       prog%nstep = nstep
@@ -130,7 +134,7 @@ contains
       text = 'impact: step ' // int_str(step) // '/' // int_str(prog%nstep) // ' (t = ' // trim(adjustl(now)) &
          // ' ms of ' // trim(adjustl(end)) // ' ms), ' &
          // int_str(int(100.0_dp*real(step, dp)/real(prog%nstep, dp))) // ' %, ' &
-         // duration_text(time_left_s(step, prog%nstep, elapsed)) // ' left'
+         // duration_text(time_left_s(step - prog%first, prog%nstep - prog%first, elapsed)) // ' left'
    end function progress_text
 
 end module progress_line

@@ -227,7 +227,7 @@ contains
       call peak_sample(rec%deflection_peak, 0.0_dp, 0.0_dp)
       call peak_sample(rec%strain_peak, 0.0_dp, 0.0_dp)
       call write_row(rec, row, stat, errmsg)
-      call progress_start(rec%progress, rec%nstep, deck%t_end)
+      call progress_start(rec%progress, rec%nstep, deck%t_end, 0)
       if (stat == 0) call results_flush(rec%h5, stat, errmsg)     ! row 0 in every file: the first restart point
    end subroutine record_open
 
@@ -837,6 +837,7 @@ contains
       rec%mixed_seen = i(11);  rec%solves_before = i(12);  rec%in_contact = i(13) /= 0
       rec%substepped_steps = i(14)
       rec%warned = i(15:) /= 0
+      call progress_start(rec%progress, rec%nstep, deck%t_end, rec%steps)   ! the progress line goes on
       bytes = 0.0_dp
       call take_real(u, bytes, stat)
       rec%hist_bytes = nint(bytes, int64)
