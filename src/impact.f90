@@ -32,7 +32,7 @@ program impact
    use deck_schema, only: deck_t, accuracy_wanted
    use deck_echo, only: write_schema, write_deck_table
    use command_line, only: options_t, parse_command_line, read_input_deck
-   use input_deck, only: validate_deck
+   use input_deck, only: validate_deck, model_size
    use scene_settings, only: choose_settings
    use plate_model, only: model_t, build_model, release_assembled, mass_times
    use plate_solver, only: solver_t, solver_init, plate_solve
@@ -52,7 +52,7 @@ program impact
    use process_stop, only: catch_stop_signals, remove_on_stop, stop_after_step, stop_signal_caught, &
       keep_file_size_errors, exit_program
    use restart_point, only: restart_file, restart_save, restart_check, restart_resume, restart_discard
-   use number_text, only: int_str
+   use number_text, only: int_str, real_short
    use accuracy_driver, only: run_accuracy
    implicit none
 
@@ -238,6 +238,7 @@ contains
       call choose_settings(deck)            ! dt, nx, ny the deck does not give: from the scene
       call validate_deck(deck, stat, errmsg)   ! (the chosen ones checked as given ones)
       if (stat /= 0) call fail(errmsg)
+      call say_large_chosen_mesh()
       if (accuracy_wanted(deck) .and. .not. check_only) then     ! a ladder of runs (src/accuracy/)
          call run_accuracy(opts, deck, output_unit, accuracy_exit, stat, errmsg)
          if (stat /= 0) call fail(errmsg)
@@ -259,6 +260,21 @@ contains
       call remove_on_stop(claim%first)                      ! a stop in the set-up leaves it only if written
       if (.not. restarting) call restart_discard(deck)      ! an earlier run's restart point
    end subroutine read_input
+
+   !> A mesh the program chose (no nx, ny in the deck) of more than
+   !> large_model equations: said before the set-up builds it, which takes
+   !> minutes, with its size and memory.
+   subroutine say_large_chosen_mesh()
+      real(dp), parameter :: large_model = 1.0e5_dp
+      real(dp) :: neq, memory
+      if (len_trim(deck%mesh_chosen) == 0) return
+      call model_size(deck, neq, memory)
+      if (neq > large_model) write (output_unit, '(a)') 'mesh chosen: ' // int_str(deck%nx) // ' x ' &
+         // int_str(deck%ny) // ' elements, about ' // int_str(nint(neq)) // ' equations and ' &
+         // real_short(memory/1024.0_dp**3) // ' GiB for the matrices: the set-up takes minutes (give &mesh nx, ' &
+         // 'ny for a coarser mesh)'
+      flush (output_unit)
+   end subroutine say_large_chosen_mesh
 
    !> A solver failure or a step of scheme 'fast' that did not converge, even
    !> in sub-steps, stops the run (errmsg: the iteration's report).
