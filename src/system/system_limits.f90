@@ -57,15 +57,18 @@ contains
       integer :: u, ios, c1, c2
       bytes = physical_memory()
       open (newunit=u, file='/proc/meminfo', status='old', action='read', iostat=ios)
-      do while (ios == 0)
-         read (u, '(a)', iostat=ios) line
-         if (ios == 0 .and. index(line, 'MemAvailable:') == 1) call take_text(line(14:), 1024.0_dp)
-      end do
-      close (u, iostat=ios)
+      if (ios == 0) then            ! (u is undefined after a failed open: no close)
+         do while (ios == 0)
+            read (u, '(a)', iostat=ios) line
+            if (ios == 0 .and. index(line, 'MemAvailable:') == 1) call take_text(line(14:), 1024.0_dp)
+         end do
+         close (u, iostat=ios)
+      end if
       call take_file('/sys/fs/cgroup/memory.max')
       call take_file('/sys/fs/cgroup/memory/memory.limit_in_bytes')
       open (newunit=u, file='/proc/self/cgroup', status='old', action='read', iostat=ios)
-      do while (ios == 0)
+      if (ios /= 0) return
+      do
          read (u, '(a)', iostat=ios) line
          if (ios /= 0) exit
          c1 = index(line, ':')
@@ -85,9 +88,10 @@ contains
          character(len=64) :: text
          integer :: v, ios
          open (newunit=v, file=path, status='old', action='read', iostat=ios)
-         if (ios == 0) read (v, '(a)', iostat=ios) text
-         close (v, iostat=ios)
+         if (ios /= 0) return
+         read (v, '(a)', iostat=ios) text
          if (ios == 0) call take_text(text, 1.0_dp)
+         close (v, iostat=ios)
       end subroutine take_file
 
       !> A number of `unit` bytes at the start of `text` (else nothing).
