@@ -262,17 +262,17 @@ contains
    end subroutine read_input
 
    !> A mesh the program chose (no nx, ny in the deck) of more than
-   !> large_model equations: said before the set-up builds it, which takes
-   !> minutes, with its size and memory.
+   !> large_model equations: said before the set-up builds it, which may
+   !> take minutes, with its size and memory.
    subroutine say_large_chosen_mesh()
       real(dp), parameter :: large_model = 1.0e5_dp
       real(dp) :: neq, memory
       if (len_trim(deck%mesh_chosen) == 0) return
       call model_size(deck, neq, memory)
-      if (neq > large_model) write (output_unit, '(a)') 'mesh chosen: ' // int_str(deck%nx) // ' x ' &
-         // int_str(deck%ny) // ' elements, about ' // int_str(nint(neq)) // ' equations and ' &
-         // real_short(memory/1024.0_dp**3) // ' GiB for the matrices: the set-up takes minutes (give &mesh nx, ' &
-         // 'ny for a coarser mesh)'
+      if (neq <= large_model) return
+      write (output_unit, '(a)') 'mesh chosen: ' // int_str(deck%nx) // ' x ' // int_str(deck%ny) &
+         // ' elements, about ' // int_str(nint(neq)) // ' equations and ' // real_short(memory/1024.0_dp**3) &
+         // ' GiB for the matrices: the set-up may take minutes (give &mesh nx, ny for a coarser mesh)'
       flush (output_unit)
    end subroutine say_large_chosen_mesh
 
