@@ -189,9 +189,23 @@ def with_settings(template_path, settings, header=()):
     return deck_text(groups, header)
 
 
+def open_text(path, mode='w'):
+    """A text file opened for writing, never through a symbolic link: 'w'
+    removes what has the name (a link itself, never what it points to) and
+    creates the file exclusively; 'a' appends to it; both with O_NOFOLLOW,
+    so a link put there in between is refused (OSError)."""
+    if mode == 'w':
+        try:
+            os.unlink(path)
+        except FileNotFoundError:
+            pass
+    flags = os.O_WRONLY | os.O_CREAT | os.O_NOFOLLOW | (os.O_APPEND if mode == 'a' else os.O_EXCL)
+    return open(os.open(path, flags, 0o666), mode, encoding='utf-8')
+
+
 def write_deck(path, groups, header=()):
     """Writes the groups as a deck (deck_text) to path; returns path."""
-    with open(path, 'w', encoding='utf-8') as f:
+    with open_text(path) as f:
         f.write(deck_text(groups, header))
     return path
 
@@ -237,7 +251,7 @@ def write_keys(path, values, comment=''):
     """Writes {key: value} as 'key = value' lines (after '# comment') to path,
     whole or not at all (a temporary file renamed)."""
     tmp = path + '.tmp'
-    with open(tmp, 'w', encoding='utf-8') as f:
+    with open_text(tmp) as f:
         if comment:
             f.write(f'# {comment}\n')
         f.write(''.join(f'{key} = {value}\n' for key, value in values.items()))
@@ -397,7 +411,7 @@ def run_impact(impact, deck, sets=(), cwd=None, timeout=None, log=None, options=
     if log is None:
         return subprocess.run(args, cwd=cwd, capture_output=True, text=True, timeout=timeout, env=env,
                               stdin=subprocess.DEVNULL, preexec_fn=_end_with_parent(os.getpid()))
-    with open(log, 'w', encoding='utf-8') as f:
+    with open_text(log) as f:
         f.write(log_header)
         f.flush()
         p = subprocess.Popen(args, cwd=cwd, stdout=f, stderr=subprocess.STDOUT, env=env,
@@ -502,8 +516,11 @@ def _run_one(run):
     except OSError as e:
         result.update(exit=127, stderr=f'impact_files: cannot run {run.get("impact")}: {e}\n')
         if run.get('log'):
-            with open(run['log'], 'a', encoding='utf-8') as f:
-                f.write(result['stderr'])
+            try:
+                with open_text(run['log'], 'a') as f:
+                    f.write(result['stderr'])
+            except OSError:
+                pass
     result['elapsed_s'] = time.time() - start
     result['diagnostic'] = diagnostic(result['stderr'] or _log_text(run.get('log')))
     return result
@@ -574,7 +591,7 @@ def fill_file(path, value, keep_others=False):
     with open(path, encoding='utf-8') as f:
         text, names = fill_blocks(f.read(), value, keep_others)
     tmp = path + '.tmp'
-    with open(tmp, 'w', encoding='utf-8') as f:
+    with open_text(tmp) as f:
         f.write(text)
     os.replace(tmp, path)
     return names
