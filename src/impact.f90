@@ -32,7 +32,9 @@ program impact
    use deck_schema, only: deck_t, accuracy_wanted
    use deck_echo, only: write_schema, write_deck_table
    use command_line, only: options_t, parse_command_line, read_input_deck
-   use input_deck, only: validate_deck
+   use input_deck, only: validate_deck, model_size
+   use storage_choice, only: resolve_storage
+   use progress_line, only: duration_text
    use scene_settings, only: choose_settings
    use plate_model, only: model_t, build_model, release_assembled, mass_times
    use plate_solver, only: solver_t, solver_init, plate_solve
@@ -47,12 +49,12 @@ program impact
    use step_trace, only: trace_t, trace_parse, trace_step, trace_iteration
    use run_report, only: echo_model, usage, usage_line, version_text
    use build_info, only: code_version
-   use result_files, only: results_claim_t, result_suffixes, claim_results, release_results
+   use result_files, only: results_claim_t, result_suffixes, claim_results, release_results, claim_left_empty
    use other_analyses, only: run_other_analysis
    use process_stop, only: catch_stop_signals, remove_on_stop, stop_after_step, stop_signal_caught, &
       keep_file_size_errors, exit_program
    use restart_point, only: restart_file, restart_save, restart_check, restart_resume, restart_discard
-   use number_text, only: int_str
+   use number_text, only: int_str, real_short
    use c_library, only: c_isatty
    use accuracy_driver, only: run_accuracy
    implicit none
@@ -244,6 +246,7 @@ contains
       call choose_settings(deck)            ! dt, nx, ny the deck does not give: from the scene
       call validate_deck(deck, stat, errmsg)   ! (the chosen ones checked as given ones)
       if (stat /= 0) call fail(errmsg)
+      call say_large_chosen_mesh()
       if (accuracy_wanted(deck) .and. .not. check_only) then     ! a ladder of runs (src/accuracy/)
          call run_accuracy(opts, deck, output_unit, accuracy_exit, stat, errmsg)
          if (stat /= 0) call fail(errmsg)
@@ -262,12 +265,39 @@ contains
          'restart: no restart point ' // restart_file(deck) // ': the run starts at step 0'
       if (check_only) return
       claimed = deck
-      claimed%overwrite = deck%overwrite .or. restarting     ! a restart continues the run's own files
+      ! a restart continues the run's own files, or the claim a run killed in its set-up left
+      claimed%overwrite = deck%overwrite .or. restarting
+      if (opts%restart .and. .not. claimed%overwrite) &
+         claimed%overwrite = claim_left_empty(deck%prefix, result_suffixes(deck%analysis_kind))
       call claim_results(claimed, result_suffixes(deck%analysis_kind), claim, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
       call remove_on_stop(claim%first)                      ! a stop in the set-up leaves it only if written
       if (.not. restarting) call restart_discard(deck)      ! an earlier run's restart point
    end subroutine read_input
+
+   !> A mesh the program chose (no nx, ny in the deck) of more than
+   !> large_model equations: said before the set-up builds it, which may
+   !> take minutes, with its size, its memory and, in sparse storage, the
+   !> set-up's cpu time: set_up_s (measured: an 80 x 60 full plate, 94 605
+   !> equations, on one core of the 2-core test machine; a 40 x 30 one took
+   !> 0.8 s, 23 305 equations) times the equations' ratio to the power
+   !> set_up_growth (CHOLMOD's factorization of a plate's matrix).
+   subroutine say_large_chosen_mesh()
+      real(dp), parameter :: large_model = 1.0e5_dp, set_up_neq = 94605.0_dp, set_up_s = 4.8_dp, &
+                             set_up_growth = 1.3_dp
+      real(dp) :: neq, memory
+      character(len=:), allocatable :: time
+      if (len_trim(deck%mesh_chosen) == 0) return
+      call model_size(deck, neq, memory)
+      if (neq <= large_model) return
+      time = ''
+      if (resolve_storage(deck%storage, nint(min(neq, 1.0e9_dp)), .false.) == 'sparse') time = ' and about ' &
+         // duration_text(set_up_s*(neq/set_up_neq)**set_up_growth) // ' of set-up on one core'
+      write (output_unit, '(a)') 'mesh chosen: ' // int_str(deck%nx) // ' x ' // int_str(deck%ny) &
+         // ' elements, about ' // int_str(nint(neq)) // ' equations, ' // real_short(memory/1024.0_dp**3) &
+         // ' GiB for the matrices' // time // ': give &mesh nx, ny for a coarser mesh'
+      flush (output_unit)
+   end subroutine say_large_chosen_mesh
 
    !> A solver failure or a step of scheme 'fast' that did not converge, even
    !> in sub-steps, stops the run (errmsg: the iteration's report).
@@ -315,9 +345,13 @@ contains
       character(len=*), intent(in), optional :: status
       character(len=80) :: where
       write (where, '(a,i0,a,es11.4,a)') 'failed at step ', step, ' (t = ', t, ' s)'
-      if (present(status)) where = status
-      write (error_unit, '(a/a)') 'impact: error: ' // trim(message), 'impact: ' // trim(where) &
-         // '; results up to the last step are in ' // deck%prefix // '_history.dat'
+      if (present(status)) then          ! before the first step: no results
+         where = status
+         write (error_unit, '(a/a)') 'impact: error: ' // trim(message), 'impact: ' // trim(where) // ': no step ran'
+      else
+         write (error_unit, '(a/a)') 'impact: error: ' // trim(message), 'impact: ' // trim(where) &
+            // '; results up to the last step are in ' // deck%prefix // '_history.dat'
+      end if
       call finish(trim(where), 1)
    end subroutine fail_in_run
 

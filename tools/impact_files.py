@@ -20,7 +20,10 @@ validation/mesh_study/run.py):
               is NaN, or its row left out: whole_rows=True)
   running     run_impact: ./impact on a deck, never through a shell;
               run_many: ./impact on many decks, at most `jobs` at a time
-              (cpu_count(): the CPUs this process may use); diagnostic
+              (cpu_count(): the CPUs this process may use); diagnostic;
+              no run outlives the tool: each gets SIGTERM when the tool
+              ends, however it ends (a parent-death signal), and
+              stop_runs_on_signals passes a stop signal on to the runs
   version     version_text(tool): a tool's --version (VERSION, the licence)
   documents   fill_blocks, fill_file: the blocks between
               <!-- name:begin --> and <!-- name:end --> of a Markdown file,
@@ -36,9 +39,11 @@ NAME of DOC with the file DIR/NAME.md (make validate).
 """
 
 import concurrent.futures
+import ctypes
 import math
 import os
 import re
+import signal
 import subprocess
 import sys
 import threading
@@ -185,9 +190,23 @@ def with_settings(template_path, settings, header=()):
     return deck_text(groups, header)
 
 
+def open_text(path, mode='w'):
+    """A text file opened for writing, never through a symbolic link: 'w'
+    removes what has the name (a link itself, never what it points to) and
+    creates the file exclusively; 'a' appends to it; both with O_NOFOLLOW,
+    so a link put there in between is refused (OSError)."""
+    if mode == 'w':
+        try:
+            os.unlink(path)
+        except FileNotFoundError:
+            pass
+    flags = os.O_WRONLY | os.O_CREAT | os.O_NOFOLLOW | (os.O_APPEND if mode == 'a' else os.O_EXCL)
+    return open(os.open(path, flags, 0o666), mode, encoding='utf-8')
+
+
 def write_deck(path, groups, header=()):
     """Writes the groups as a deck (deck_text) to path; returns path."""
-    with open(path, 'w', encoding='utf-8') as f:
+    with open_text(path) as f:
         f.write(deck_text(groups, header))
     return path
 
@@ -233,7 +252,7 @@ def write_keys(path, values, comment=''):
     """Writes {key: value} as 'key = value' lines (after '# comment') to path,
     whole or not at all (a temporary file renamed)."""
     tmp = path + '.tmp'
-    with open(tmp, 'w', encoding='utf-8') as f:
+    with open_text(tmp) as f:
         if comment:
             f.write(f'# {comment}\n')
         f.write(''.join(f'{key} = {value}\n' for key, value in values.items()))
@@ -338,6 +357,48 @@ def cpu_count():
     return max(1, n)
 
 
+# No run outlives the tool that started it. Each run is started with a
+# parent-death signal, SIGTERM (prctl PR_SET_PDEATHSIG: sent by the kernel
+# when the thread that started it ends, however the tool ends, kill -9
+# too): impact then stops after its step, its results written. The C
+# library is loaded here, before any fork: the child only calls it.
+PR_SET_PDEATHSIG = 1
+try:
+    _LIBC = ctypes.CDLL(None, use_errno=True)
+except OSError:
+    _LIBC = None
+_RUNNING = set()       # the runs going (Popen), for stop_runs_on_signals
+_STOPPED = []          # the stop signal caught
+
+
+def _end_with_parent(parent):
+    """What a run does before impact starts: SIGTERM when its parent ends
+    (and at once if it has ended already)."""
+    def set_up():
+        if _LIBC is not None:
+            _LIBC.prctl(PR_SET_PDEATHSIG, int(signal.SIGTERM), 0, 0, 0)
+        if os.getppid() != parent:
+            os._exit(128 + int(signal.SIGTERM))
+    return set_up
+
+
+def stop_runs_on_signals():
+    """From here SIGTERM, SIGINT or SIGHUP to this process is passed on to
+    the runs going (each stops after its step, its results written) and no
+    other run starts (run_many leaves them out). Returns a function that
+    gives the signal caught, 0 when none."""
+    def handler(signum, frame):
+        _STOPPED.append(signum)
+        for p in list(_RUNNING):
+            try:
+                p.send_signal(signum)
+            except OSError:
+                pass
+    for s in (signal.SIGTERM, signal.SIGINT, signal.SIGHUP):
+        signal.signal(s, handler)
+    return lambda: _STOPPED[0] if _STOPPED else 0
+
+
 def run_impact(impact, deck, sets=(), cwd=None, timeout=None, log=None, options=(), env=None,
                log_header=''):
     """Runs `impact [options] [--set g.v=x ...] deck` (an argument list, no
@@ -351,13 +412,17 @@ def run_impact(impact, deck, sets=(), cwd=None, timeout=None, log=None, options=
     args.append(deck)
     if log is None:
         return subprocess.run(args, cwd=cwd, capture_output=True, text=True, timeout=timeout, env=env,
-                              stdin=subprocess.DEVNULL)
-    with open(log, 'w', encoding='utf-8') as f:
+                              stdin=subprocess.DEVNULL, preexec_fn=_end_with_parent(os.getpid()))
+    with open_text(log) as f:
         f.write(log_header)
         f.flush()
         p = subprocess.Popen(args, cwd=cwd, stdout=f, stderr=subprocess.STDOUT, env=env,
-                             stdin=subprocess.DEVNULL)
-        code, cpu, rss = wait_usage(p, timeout)
+                             stdin=subprocess.DEVNULL, preexec_fn=_end_with_parent(os.getpid()))
+        _RUNNING.add(p)
+        try:
+            code, cpu, rss = wait_usage(p, timeout)
+        finally:
+            _RUNNING.discard(p)
         if code is None:
             raise subprocess.TimeoutExpired(args, timeout)
         done = subprocess.CompletedProcess(args, code)
@@ -415,14 +480,16 @@ def run_many(runs, jobs=None, on_done=None, **common):
       max_rss_mib  its peak resident memory (MiB), likewise
     on_done(result), when given, is called in this thread as each run ends;
     with jobs = 1 the runs are made one after the other in this thread, and
-    on_done sees each before the next one starts."""
+    on_done sees each before the next one starts. After a stop signal
+    (stop_runs_on_signals) the runs not yet started are left out: their
+    result has not_started = True, and on_done does not see them."""
     runs = [dict(common, **({'deck': r} if isinstance(r, str) else r)) for r in runs]
     jobs = max(1, jobs or cpu_count())
     if jobs == 1 or len(runs) <= 1:
         results = []
         for r in runs:
             results.append(_run_one(r))
-            if on_done:
+            if on_done and not results[-1]['not_started']:
                 on_done(results[-1])
         return results
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
@@ -430,14 +497,17 @@ def run_many(runs, jobs=None, on_done=None, **common):
         results = [None] * len(runs)
         for future in concurrent.futures.as_completed(futures):
             results[futures[future]] = future.result()
-            if on_done:
+            if on_done and not results[futures[future]]['not_started']:
                 on_done(results[futures[future]])
     return results
 
 
 def _run_one(run):
     """One run of run_many: the run's dict with its outcome."""
-    result = dict(run, exit=None, timed_out=False, stdout='', stderr='', cpu_s=None, max_rss_mib=None)
+    result = dict(run, exit=None, timed_out=False, stdout='', stderr='', cpu_s=None, max_rss_mib=None,
+                  not_started=bool(_STOPPED), elapsed_s=0.0, diagnostic='')
+    if _STOPPED:
+        return result
     start = time.time()
     try:
         p = run_impact(**{k: run[k] for k in RUN_ARGUMENTS if k in run})
@@ -448,8 +518,11 @@ def _run_one(run):
     except OSError as e:
         result.update(exit=127, stderr=f'impact_files: cannot run {run.get("impact")}: {e}\n')
         if run.get('log'):
-            with open(run['log'], 'a', encoding='utf-8') as f:
-                f.write(result['stderr'])
+            try:
+                with open_text(run['log'], 'a') as f:
+                    f.write(result['stderr'])
+            except OSError:
+                pass
     result['elapsed_s'] = time.time() - start
     result['diagnostic'] = diagnostic(result['stderr'] or _log_text(run.get('log')))
     return result
@@ -533,7 +606,7 @@ def fill_file(path, value, keep_others=False):
     with open(path, encoding='utf-8') as f:
         text, names = fill_blocks(f.read(), value, keep_others)
     tmp = path + '.tmp'
-    with open(tmp, 'w', encoding='utf-8') as f:
+    with open_text(tmp) as f:
         f.write(text)
     os.replace(tmp, path)
     return names

@@ -17,7 +17,7 @@ module child_process
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_ptr, c_null_ptr, c_null_char, c_loc, c_size_t, c_long
    use c_library, only: spawn_actions_t, cpu_set_t, c_environ, c_posix_spawn, c_spawn_actions_init, &
       c_spawn_actions_destroy, c_spawn_actions_addopen, c_spawn_actions_adddup2, c_waitpid, c_readlink, &
-      c_sched_getaffinity, o_wronly, o_creat, o_trunc
+      c_sched_getaffinity, o_write_no_follow
    use number_text, only: int_str
    implicit none
    private
@@ -51,7 +51,7 @@ contains
       call pack_strings()
       pid = -1
       r = c_spawn_actions_init(actions)
-      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, c_text(log_path), ior(o_wronly, ior(o_creat, o_trunc)), &
+      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, c_text(log_path), o_write_no_follow, &
                                              log_mode)
       if (r == 0) r = c_spawn_actions_adddup2(actions, fd_out, fd_err)
       if (r == 0) r = c_posix_spawn(cpid, c_text(path), actions, c_null_ptr, argv, c_environ)

@@ -74,6 +74,10 @@ contains
                return
             end if
             i = i + 1
+            if (len_trim(argument(i)) == 0) then        ! (an unset variable in a job script)
+               errmsg = arg // ' needs a value: it is empty'
+               return
+            end if
             select case (arg)
             case ('--set')
                if (len(argument(i)) > len(opts%settings)) then      ! it would be cut

@@ -24,7 +24,7 @@ module input_deck
    use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
    use number_text, only: real_str, real_short, int_str, list_str
-   use system_limits, only: physical_memory, memory_room, free_disk_space, file_size_limit, read_only_file_system
+   use system_limits, only: memory_available, memory_room, free_disk_space, file_size_limit, read_only_file_system
    use storage_choice, only: resolve_storage, matrices_memory
    use file_system, only: path_problem, prefix_problem, nearest_directory
    use deck_text, only: item_t, group_text_t, read_deck_text, split_value_text, lower_case, shown_text
@@ -34,7 +34,7 @@ module input_deck
       max_word_len, max_path_len, max_list_len
    implicit none
    private
-   public :: deck_t, default_deck, read_deck, read_deck_file, validate_deck, set_variable
+   public :: deck_t, default_deck, read_deck, read_deck_file, validate_deck, set_variable, model_size
 
    !> Status returned on any failure.
    integer, parameter :: failed = 1
@@ -583,7 +583,7 @@ contains
       type(checks_t), intent(inout) :: c            !< the checks so far
       real(dp), parameter :: max_steps = 1.0e8_dp, text_row_bytes = 230.0_dp, row_bytes = 360.0_dp, &
                              h5_fixed_bytes = 65536.0_dp
-      real(dp) :: steps, ex, ey, neq, kd, memory, machine, output, room, biggest
+      real(dp) :: steps, neq, memory, machine, output, room, biggest
       ! dt, nx, ny not given: checked once chosen from the scene (src/model/scene_settings.f90)
       if (.not. (is_given(deck, 'analysis', 'dt') .and. is_given(deck, 'mesh', 'nx') &
                  .and. is_given(deck, 'mesh', 'ny'))) return
@@ -592,19 +592,13 @@ contains
          // real_short(steps) // ' time steps, more than the limit of ' // real_short(max_steps) &
          // ' (a longer dt, or a shorter t_end)')
       if (c%stat /= 0) return
-      ex = real(deck%nx, dp);  ey = real(deck%ny, dp)
-      if (deck%domain == 'auto' .or. deck%domain == 'half') then
-         ex = 2.0_dp*ex;  ey = 2.0_dp*ey
-      end if
-      neq = 5.0_dp*(2.0_dp*ex + 1.0_dp)*(2.0_dp*ey + 1.0_dp)
-      kd = 10.0_dp*(2.0_dp*min(ex, ey) + 1.0_dp)
-      memory = matrices_memory(resolve_storage(deck%storage, nint(min(neq, 1.0e9_dp)), deck%analysis_kind == 'modes'), &
-                               neq, kd)
-      machine = physical_memory()
+      call model_size(deck, neq, memory)
+      machine = memory_available()
       if (machine > 0.0_dp) call need(c, memory < machine, 'mesh', 'nx', int_str(deck%nx), 'with ny = ' &
          // int_str(deck%ny) // ' the model would need about ' // real_short(memory/gib) // ' GiB of memory (' &
-         // real_short(neq) // ' equations), more than this machine''s ' // real_short(machine/gib) &
-         // ' GiB: a coarser mesh, or a graded one (&mesh grading)')
+         // real_short(neq) // ' equations), more than the ' // real_short(machine/gib) &
+         // ' GiB free for it on this machine (MemAvailable, its control group''s limit): a coarser mesh, ' &
+         // 'or a graded one (&mesh grading)')
       room = memory_room()
       if (room >= 0.0_dp) call need(c, model_share*memory + library_bytes < room, 'mesh', 'nx', int_str(deck%nx), &
          'with ny = ' // int_str(deck%ny) // ' the model would need about ' &
@@ -628,6 +622,23 @@ contains
          // ' GiB, more than the ' // real_short(room/gib) // ' GiB free where they go (prefix ''' &
          // deck%prefix // '''): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
    end subroutine check_needs
+
+   !> The size of the model of the deck's mesh (check_needs' estimates):
+   !> its equations and the memory of its matrices in the storage it takes.
+   pure subroutine model_size(deck, neq, memory)
+      type(deck_t), intent(in) :: deck              !< the deck, nx and ny given or chosen
+      real(dp), intent(out) :: neq                  !< the equations
+      real(dp), intent(out) :: memory               !< the matrices' memory (bytes)
+      real(dp) :: ex, ey, kd
+      ex = real(deck%nx, dp);  ey = real(deck%ny, dp)
+      if (deck%domain == 'auto' .or. deck%domain == 'half') then
+         ex = 2.0_dp*ex;  ey = 2.0_dp*ey
+      end if
+      neq = 5.0_dp*(2.0_dp*ex + 1.0_dp)*(2.0_dp*ey + 1.0_dp)
+      kd = 10.0_dp*(2.0_dp*min(ex, ey) + 1.0_dp)
+      memory = matrices_memory(resolve_storage(deck%storage, nint(min(neq, 1.0e9_dp)), deck%analysis_kind == 'modes'), &
+                               neq, kd)
+   end subroutine model_size
 
    !> &strength: all six strengths or none; the criterion and the ply
    !> fracture energies only with them; the ply stresses and the

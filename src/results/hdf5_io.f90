@@ -46,7 +46,7 @@
 module hdf5_io
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char, c_bool, c_int, c_int64_t
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, h5fclose_f, &
-      h5fflush_f, H5F_ACC_TRUNC_F, H5F_ACC_RDWR_F, H5F_SCOPE_GLOBAL_F, H5F_LIBVER_LATEST_F, h5gcreate_f, &
+      h5fflush_f, H5F_ACC_EXCL_F, H5F_ACC_RDWR_F, H5F_SCOPE_GLOBAL_F, H5F_LIBVER_LATEST_F, h5gcreate_f, &
       h5gclose_f, h5ldelete_f, h5lexists_f, h5oopen_f, h5oclose_f, &
       h5screate_f, h5screate_simple_f, h5sclose_f, h5sselect_hyperslab_f, h5sget_simple_extent_dims_f, &
       H5S_SCALAR_F, H5S_UNLIMITED_F, H5S_SELECT_SET_F, &
@@ -59,6 +59,7 @@ module hdf5_io
       h5pset_file_locking_f, h5pclose_f, H5P_DATASET_CREATE_F, H5P_FILE_ACCESS_F, &
       h5dcreate_f, h5dopen_f, h5dclose_f, h5dwrite_f, h5dread_f, h5dset_extent_f, h5dget_space_f
    use kinds, only: dp
+   use file_system, only: remove_file
    implicit none
    private
    public :: h5io_start, h5io_create, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_exists, h5io_delete
@@ -119,7 +120,10 @@ contains
       call h5io_check(err, 'cannot initialise the HDF5 library', '', stat, errmsg)
    end subroutine h5io_start
 
-   !> Creates (or truncates) the file `path` for writing; fid is its id.
+   !> Creates the file `path` anew for writing; fid is its id. What has the
+   !> name is removed first (a link itself, never what it points to) and
+   !> the file created exclusively (O_EXCL): nothing is written through a
+   !> link, even one put there in between.
    !> With `latest`, in the latest file format (HDF5 1.10's: what SWMR needs,
    !> with checksummed metadata; older HDF5 libraries do not read it).
    subroutine h5io_create(path, latest, fid, stat, errmsg)
@@ -134,7 +138,8 @@ contains
       call file_access(latest, .false., fapl, err)
       call h5io_check(err, 'cannot set up the access to the HDF5 file', path, stat, errmsg)
       if (stat /= 0) return
-      call h5fcreate_f(path, H5F_ACC_TRUNC_F, fid, err, access_prp=fapl)
+      call remove_file(path, err)
+      call h5fcreate_f(path, H5F_ACC_EXCL_F, fid, err, access_prp=fapl)
       call h5io_check(err, 'cannot create the HDF5 file', path, stat, errmsg)
       call h5pclose_f(fapl, err)
    end subroutine h5io_create

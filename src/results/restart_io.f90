@@ -10,7 +10,12 @@
 !> impactor (eq. 16, 21) and a contact load pattern (src/model/contact_load.f90:
 !> its equations and coefficients, and the polynomials it keeps as a cache,
 !> which a restarted run must find as they were to give the same bits).
+!>
+!> The seal: the file's last 8 bytes, the CRC-32 (IEEE 802.3, zlib's) of
+!> every byte before them (put_seal), checked before a part is read
+!> (seal_holds): a bit changed anywhere, the seal's own included, is found.
 module restart_io
+   use, intrinsic :: iso_fortran_env, only: int8, int64
    use kinds, only: dp
    use newmark, only: impactor_t
    use contact_load, only: load_pattern_t
@@ -18,12 +23,14 @@ module restart_io
    private
    public :: tag_len, put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, &
              put_flag, take_flag, put_reals, take_reals, put_ints, take_ints, put_impactor, take_impactor, &
-             put_pattern, take_pattern
+             put_pattern, take_pattern, put_seal, seal_holds, crc32
 
    !> Characters of a tag.
    integer, parameter :: tag_len = 8
    !> stat when a tag is not the one expected.
    integer, parameter :: wrong_tag = -100
+   !> CRC-32's polynomial, reflected, and its initial and final mask.
+   integer(int64), parameter :: crc_poly = int(z'EDB88320', int64), crc_mask = int(z'FFFFFFFF', int64)
 
 contains
 
@@ -250,5 +257,56 @@ contains
       allocate (p%poly(0:4, p%n))             ! (lower bound 0: the power of the radius)
       p%poly(:, :) = reshape(x, [5, p%n])
    end subroutine take_pattern
+
+   !> Ends a file written on `u` (opened with action = 'readwrite'): the
+   !> CRC-32 of all it holds, appended.
+   subroutine put_seal(u, stat)
+      integer, intent(in) :: u                      !< the open stream, at its end
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      integer(int8), allocatable :: bytes(:)
+      integer :: next
+      if (stat /= 0) return
+      inquire (unit=u, pos=next, iostat=stat)
+      if (stat /= 0) return
+      allocate (bytes(next - 1))
+      if (next > 1) read (u, pos=1, iostat=stat) bytes
+      if (stat == 0) write (u, pos=next, iostat=stat) crc32(bytes)
+   end subroutine put_seal
+
+   !> The file open on `u` ends with the CRC-32 of all before it
+   !> (put_seal); `u` is at its start again on return.
+   logical function seal_holds(u) result(holds)
+      integer, intent(in) :: u                      !< the open stream
+      integer(int8), allocatable :: bytes(:)
+      integer(int64) :: n, seal
+      integer :: ios
+      holds = .false.
+      inquire (unit=u, size=n, iostat=ios)
+      if (ios /= 0 .or. n < 9 .or. n > huge(1)) return
+      allocate (bytes(n - 8))
+      read (u, pos=1, iostat=ios) bytes, seal
+      if (ios == 0) holds = seal == crc32(bytes)
+      if (ios == 0) read (u, pos=1, iostat=ios)
+   end function seal_holds
+
+   !> The CRC-32 of `bytes` (IEEE 802.3, as zlib's crc32), in [0, 2**32).
+   pure function crc32(bytes) result(crc)
+      integer(int8), intent(in) :: bytes(:)         !< the data
+      integer(int64) :: crc
+      integer(int64) :: table(0:255), c
+      integer :: i, k
+      do i = 0, 255
+         c = i
+         do k = 1, 8
+            c = merge(ieor(shiftr(c, 1), crc_poly), shiftr(c, 1), iand(c, 1_int64) /= 0)
+         end do
+         table(i) = c
+      end do
+      crc = crc_mask
+      do i = 1, size(bytes)
+         crc = ieor(table(iand(ieor(crc, int(bytes(i), int64)), 255_int64)), shiftr(crc, 8))
+      end do
+      crc = ieor(crc, crc_mask)
+   end function crc32
 
 end module restart_io

@@ -43,6 +43,10 @@
 !> The file is a stream of tagged parts (src/results/restart_io.f90) in the
 !> machine's own layout: a restart continues a run on the machine and with
 !> the build that made it (a restart point of another layout is refused).
+!> Its last 8 bytes are the CRC-32 of all before them (restart_io's seal):
+!> a restart point with a bit changed anywhere is refused whole, before
+!> anything is read from it. The temporary name is removed first and the
+!> file created exclusively: no write goes through a link put there.
 module restart_point
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char
@@ -51,7 +55,7 @@ module restart_point
    use deck_schema, only: deck_t, deck_vars, var_key
    use deck_echo, only: deck_value_text
    use c_library, only: c_open, c_close, c_fsync, c_unlink
-   use file_system, only: rename_file, truncate_file, file_size, open_probe, parent_directory
+   use file_system, only: remove_file, rename_file, truncate_file, file_size, open_probe, parent_directory
    use mesh, only: ndof_node
    use plate_model, only: model_t
    use plate_solver, only: solver_t, contact_response
@@ -63,13 +67,14 @@ module restart_point
    use results_hdf5, only: results_reopen
    use run_recorder, only: record_t, record_save_state, record_load_state
    use restart_io, only: put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, put_flag, &
-      take_flag, put_reals, take_reals, put_ints, take_ints, put_impactor, take_impactor, put_pattern, take_pattern
+      take_flag, put_reals, take_reals, put_ints, take_ints, put_impactor, take_impactor, put_pattern, take_pattern, &
+      put_seal, seal_holds
    implicit none
    private
    public :: restart_file, restart_save, restart_check, restart_resume, restart_discard
 
    !> The layout of the file; a restart point of another is refused.
-   integer, parameter :: layout = 2
+   integer, parameter :: layout = 3
    !> The deck's variables a restart may change.
    character(len=*), parameter :: free_vars(2) = [character(len=24) :: 'analysis.t_end', 'output.overwrite']
    !> open(2)'s O_RDONLY.
@@ -112,8 +117,9 @@ contains
       integer :: u, ios
 
       path = restart_file(deck)
-      open (newunit=u, file=path // '.tmp', access='stream', form='unformatted', status='replace', &
-            action='write', iostat=stat, iomsg=iomsg)
+      call remove_file(path // '.tmp', ios)          ! a link itself, never what it points to
+      open (newunit=u, file=path // '.tmp', access='stream', form='unformatted', status='new', &
+            action='readwrite', iostat=stat, iomsg=iomsg)
       if (stat /= 0) then
          errmsg = path // '.tmp: ' // trim(iomsg)
          return
@@ -135,6 +141,7 @@ contains
       call record_save_state(rec, u, stat)
       call put_results(u, rec, stat)
       call put_tag(u, 'end', stat)
+      call put_seal(u, stat)
       close (u, iostat=ios)
       if (stat == 0) stat = ios
       if (stat == 0) call force_to_disk(path // '.tmp', stat)
@@ -237,20 +244,22 @@ contains
             // int_str(last_step) // ', before the restart point''s step ' // int_str(step)
          return
       end if
-      call response_columns(solver, columns, stat, errmsg)
-      if (stat == 0) call reopen_history(deck, rec, stat, errmsg)
-      if (stat == 0) call reserve_summary(deck, stat, errmsg)
-      if (stat == 0 .and. h5 .neqv. deck%hdf5) then
+      if (h5 .neqv. deck%hdf5) then
          stat = 1
          errmsg = path // ': its run had &output hdf5 = ' // trim(merge('.true. ', '.false.', h5))
+         return
       end if
+      call response_columns(solver, columns, stat, errmsg)
+      if (stat == 0) call reopen_history(deck, rec, stat, errmsg)
       if (stat == 0 .and. h5) call results_reopen(deck, model%msh, rows, snaps, peak_step, peak(1), peak(2), &
          reshape(peak_fields, [ndof_node, model%msh%nnode]), rec%h5, stat, errmsg)
+      if (stat == 0) call reserve_summary(deck, stat, errmsg)
    end subroutine restart_resume
 
    ! ============================================================== parts
 
-   !> Opens a restart point for reading and checks its tag and layout.
+   !> Opens a restart point for reading and checks its checksum, tag and
+   !> layout.
    subroutine open_point(path, u, stat, errmsg)
       character(len=*), intent(in) :: path          !< <prefix>.restart
       integer, intent(out) :: u                     !< the open stream, at the deck's part
@@ -262,6 +271,12 @@ contains
             iostat=stat, iomsg=iomsg)
       if (stat /= 0) then
          errmsg = path // ': ' // trim(iomsg)
+         return
+      end if
+      if (.not. seal_holds(u)) then
+         close (u)
+         stat = 1
+         errmsg = path // ': damaged (its checksum does not match its contents): no run continues from it'
          return
       end if
       version = -1

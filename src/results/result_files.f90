@@ -41,7 +41,7 @@ module result_files
              col_ke_impactor, col_ke_plate, col_strain_energy, col_contact_work, col_contact_energy, &
              col_energy_error, col_branch, col_contact_iter, col_solves, col_failure_index, col_failure_mode
    public :: summary_item_t, summary_real, summary_integer, summary_text
-   public :: results_claim_t, result_suffixes, claim_results, release_results
+   public :: results_claim_t, result_suffixes, claim_results, release_results, claim_left_empty
    public :: open_columns, write_column_block, write_history_row, history_slot, reserve_summary, write_summary_file
 
    !> One column of the history.
@@ -200,6 +200,21 @@ contains
       call lock_file(claim%first, claim%lock, stat, iomsg)
       if (stat /= 0) errmsg = head // trim(iomsg) // ': choose another prefix, or wait for that run to end'
    end subroutine claim_results
+
+   !> A run killed in its set-up left its claim and nothing else: the first
+   !> file exists, empty, and no other result file does (a restart of it
+   !> starts at step 0 over that file; the lock still tells a run that is
+   !> in its set-up now).
+   logical function claim_left_empty(prefix, suffixes) result(left)
+      character(len=*), intent(in) :: prefix        !< the prefix
+      character(len=*), intent(in) :: suffixes(:)   !< the run's file names after it
+      integer :: i
+      left = path_kind(prefix // trim(suffixes(1))) == path_regular
+      if (left) left = file_size(prefix // trim(suffixes(1))) == 0
+      do i = 2, size(suffixes)
+         if (left) left = path_kind(prefix // trim(suffixes(i))) == path_missing
+      end do
+   end function claim_left_empty
 
    !> Why the run's file names cannot be made on the file system the prefix
    !> is on, '' when they can: a part of the prefix or a file's name

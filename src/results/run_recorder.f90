@@ -842,6 +842,7 @@ contains
       rec%mixed_seen = i(11);  rec%solves_before = i(12);  rec%in_contact = i(13) /= 0
       rec%substepped_steps = i(14)
       rec%warned = i(15:) /= 0
+      call progress_start(rec%progress, rec%nstep, deck%t_end)   ! the progress line goes on
       bytes = 0.0_dp
       call take_real(u, bytes, stat)
       rec%hist_bytes = nint(bytes, int64)

@@ -18,7 +18,7 @@ module c_library
    public :: statx_t, c_statx
    public :: spawn_actions_t, cpu_set_t, c_environ, c_posix_spawn, c_spawn_actions_init, c_spawn_actions_destroy, &
              c_spawn_actions_addopen, c_spawn_actions_adddup2, c_waitpid, c_readlink, c_sched_getaffinity, &
-             o_wronly, o_creat, o_trunc
+             o_wronly, o_creat, o_trunc, o_write_no_follow
 
    !> struct statvfs (<sys/statvfs.h>): eleven unsigned longs (read as
    !> signed: sizes below 2^63) and six ints.
@@ -46,6 +46,10 @@ module c_library
 
    !> open(2) flags (Linux, <fcntl.h>): write only, create, truncate.
    integer(c_int), parameter :: o_wronly = 1, o_creat = int(o'100', c_int), o_trunc = int(o'1000', c_int)
+   !> ... and do not follow a symbolic link (O_NOFOLLOW: open fails on one);
+   !> with the three before: a file written anew, never through a link.
+   integer(c_int), parameter :: o_nofollow = int(o'400000', c_int)
+   integer(c_int), parameter :: o_write_no_follow = ior(o_wronly, ior(o_creat, ior(o_trunc, o_nofollow)))
 
    !> char **environ (<unistd.h>): the process's environment, passed on to a child.
    type(c_ptr), bind(c, name='environ') :: c_environ

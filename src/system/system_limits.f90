@@ -1,6 +1,7 @@
 !> What the machine offers a run, asked of the C library (ISO C binding,
 !> src/system/c_library.f90):
-!> the physical memory (sysconf(3)) and the memory this process may still
+!> the physical memory (sysconf(3)), the memory free for a run (the
+!> kernel's MemAvailable, the control group's limit) and the memory this process may still
 !> take (getrlimit(2), RLIMIT_AS and RLIMIT_DATA: ulimit -v, ulimit -d,
 !> less what it holds now, /proc/self/statm); the free space of the file
 !> system a path is on, whether it is mounted read-only and the longest
@@ -17,7 +18,7 @@ module system_limits
    use c_library, only: statvfs_t, rlimit_t, c_sysconf, c_statvfs, c_getrlimit
    implicit none
    private
-   public :: physical_memory, memory_room, free_disk_space, file_size_limit, read_only_file_system, name_max, &
+   public :: physical_memory, memory_available, memory_room, free_disk_space, file_size_limit, read_only_file_system, name_max, &
       path_max
 
    !> sysconf names (Linux, <unistd.h>): _SC_PAGESIZE, _SC_PHYS_PAGES.
@@ -42,6 +43,69 @@ contains
       bytes = -1.0_dp
       if (pages > 0 .and. page > 0) bytes = real(pages, dp)*real(page, dp)
    end function physical_memory
+
+   !> The memory a run may take on this machine (bytes), -1 when nothing
+   !> tells: the least of its physical memory, the memory free now
+   !> (MemAvailable of /proc/meminfo: free, and the caches the kernel gives
+   !> back) and the memory limit of the process's control group (a batch
+   !> system's limit of the job; cgroup v2 memory.max, v1
+   !> memory.limit_in_bytes, of the group /proc/self/cgroup names, or of
+   !> the hierarchy's root as a container sees it).
+   function memory_available() result(bytes)
+      real(dp) :: bytes
+      character(len=1024) :: line
+      integer :: u, ios, c1, c2
+      bytes = physical_memory()
+      open (newunit=u, file='/proc/meminfo', status='old', action='read', iostat=ios)
+      if (ios == 0) then            ! (u is undefined after a failed open: no close)
+         do while (ios == 0)
+            read (u, '(a)', iostat=ios) line
+            if (ios == 0 .and. index(line, 'MemAvailable:') == 1) call take_text(line(14:), 1024.0_dp)
+         end do
+         close (u, iostat=ios)
+      end if
+      call take_file('/sys/fs/cgroup/memory.max')
+      call take_file('/sys/fs/cgroup/memory/memory.limit_in_bytes')
+      open (newunit=u, file='/proc/self/cgroup', status='old', action='read', iostat=ios)
+      if (ios /= 0) return
+      do
+         read (u, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         c1 = index(line, ':')
+         c2 = c1 + index(line(c1 + 1:), ':')
+         if (c1 == 0 .or. c2 == c1) cycle
+         if (c2 == c1 + 1) call take_file('/sys/fs/cgroup' // trim(line(c2 + 1:)) // '/memory.max')
+         if (index(',' // line(c1 + 1:c2 - 1) // ',', ',memory,') > 0) &
+            call take_file('/sys/fs/cgroup/memory' // trim(line(c2 + 1:)) // '/memory.limit_in_bytes')
+      end do
+      close (u, iostat=ios)
+
+   contains
+
+      !> The limit in the file `path` ('max': none).
+      subroutine take_file(path)
+         character(len=*), intent(in) :: path
+         character(len=64) :: text
+         integer :: v, ios
+         open (newunit=v, file=path, status='old', action='read', iostat=ios)
+         if (ios /= 0) return
+         read (v, '(a)', iostat=ios) text
+         if (ios == 0) call take_text(text, 1.0_dp)
+         close (v, iostat=ios)
+      end subroutine take_file
+
+      !> A number of `unit` bytes at the start of `text` (else nothing).
+      subroutine take_text(text, unit)
+         character(len=*), intent(in) :: text
+         real(dp), intent(in) :: unit
+         real(dp) :: x
+         integer :: ios
+         read (text, *, iostat=ios) x
+         if (ios /= 0 .or. x <= 0.0_dp) return
+         if (bytes < 0.0_dp .or. x*unit < bytes) bytes = x*unit
+      end subroutine take_text
+
+   end function memory_available
 
    !> The memory this process may still allocate under its limits (bytes):
    !> the address space (RLIMIT_AS, ulimit -v) less what it has mapped now,
