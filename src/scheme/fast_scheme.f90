@@ -54,7 +54,7 @@
 !> that changes smoothly. On the paper's scene (input/clamped.nml, probes
 !> every 8 steps) keeping the probe's D^2 took 1.27 solutions per step and
 !> ended 9e-5 away from the paper's scheme in the peak force; keeping D^1
-!> takes 1.11 and ends 2e-7 away (docs/PERFORMANCE.md).
+!> takes 1.11 and ends 2e-7 away.
 module fast_scheme
    use kinds, only: dp
    use plate_model, only: model_t
