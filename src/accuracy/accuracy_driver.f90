@@ -57,9 +57,11 @@ module accuracy_driver
    use plate_model, only: model_t, build_model
    use mesh, only: mesh_t
    use scene_settings, only: settings_t, scene_settings_of
-   use file_system, only: make_directories
+   use, intrinsic :: iso_fortran_env, only: error_unit
+   use file_system, only: make_directories, path_kind, path_regular, file_size, remove_file, file_lock_t, lock_file, &
+      unlock_file
    use result_files, only: results_claim_t, claim_results, release_results
-   use child_process, only: program_path, usable_cpus
+   use child_process, only: program_path, usable_cpus, pass_stops_to_children, stop_caught
    use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, state_failed, &
       state_skipped, predicted_run_cost, ladder_name
    use accuracy_ladder, only: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, time_partner, &
@@ -73,6 +75,10 @@ module accuracy_driver
 
    !> Exit status of an accuracy run that did not meet its target.
    integer, parameter :: exit_not_met = 3
+   !> The files of the prefix an accuracy run claims: its own, then those
+   !> of a plain run, which it removes (the run chosen's are in <prefix>_acc/).
+   character(len=*), parameter :: own_files(6) = [character(len=16) :: '_accuracy.dat', '_summary.dat', &
+      '_history.dat', '.h5', '.xdmf', '.restart']
    !> The ladder's limits: time levels (dt0/2^10), mesh levels, the smallest
    !> dt and the largest element count of the deck's schema.
    integer, parameter :: max_time_levels = 11, max_mesh_levels = 12, max_elements = 10000
@@ -102,7 +108,9 @@ contains
       type(accuracy_outcome_t) :: out
       type(comparison_t) :: cmp(2)
       type(deck_t) :: base                          ! the deck with level 0's mesh (ladder_mesh)
+      type(deck_t) :: claimed                       ! the deck, overwriting with --restart
       integer(int64) :: wall0, wall1, rate
+      integer :: i, ignored
 
       exit_code = 1
       call system_clock(wall0, rate)
@@ -116,19 +124,62 @@ contains
          errmsg = '--accuracy: give the deck as a file (its runs read it again), not on standard input'
          return
       end if
-      call claim_results(deck, [character(len=16) :: '_accuracy.dat', '_summary.dat'], claim, stat, errmsg)
+      call pass_stops_to_children()                 ! a stop ends the runs going, keeps those done
+      claimed = deck
+      claimed%overwrite = deck%overwrite .or. opts%restart
+      call take_dead_claim(deck%prefix // trim(own_files(1)))
+      call claim_results(claimed, own_files, claim, stat, errmsg)
       if (stat /= 0) return
+      do i = 3, size(own_files)                     ! a plain run's files: not the run chosen's
+         call remove_file(deck%prefix // trim(own_files(i)), ignored)
+      end do
       call set_up(opts, deck, unit, base, la, scene, runs, stat, errmsg)
       if (stat == 0) call climb(base, la, runs, tx, mx, out, stat, errmsg)
-      if (stat == 0) call compare_models(base, scene, la, runs, tx, mx, out, cmp, stat, errmsg)
+      if (stat == 0 .and. stop_caught() == 0) call compare_models(base, scene, la, runs, tx, mx, out, cmp, stat, errmsg)
+      if (stat == 0 .and. stop_caught() /= 0) call stopped_outcome(out, cmp)
       call system_clock(wall1)
       out%wall_s = real(wall1 - wall0, dp)/real(rate, dp)
-      if (stat == 0) call write_accuracy_table(deck, runs, tx, mx, out, stat, errmsg)
-      if (stat == 0) call write_accuracy_summary(deck, la, runs, out, cmp, stat, errmsg)
-      if (stat == 0) call report_terminal(unit, la, runs, out, cmp)
-      call release_results(claim, discard=stat /= 0)
+      if (stat == 0 .and. out%chosen > 0) call write_accuracy_table(deck, runs, tx, mx, out, stat, errmsg)
+      if (stat == 0 .and. out%chosen > 0) call write_accuracy_summary(deck, la, runs, out, cmp, stat, errmsg)
+      if (stat == 0 .and. out%chosen > 0) call report_terminal(unit, la, runs, out, cmp)
+      call release_results(claim, discard=stat /= 0 .or. out%chosen == 0)
       if (stat == 0) exit_code = merge(0, exit_not_met, out%met)
+      if (stop_caught() /= 0) exit_code = 128 + stop_caught()
+      if (stat == 0 .and. out%chosen == 0) write (error_unit, '(a)') 'impact: stopped by signal ' // &
+         int_str(stop_caught()) // ' before the first run of the ladder ended: no results written'
    end subroutine run_accuracy
+
+   !> The claim of a run killed before it wrote anything (kill -9): the
+   !> file `path` empty and locked by no process; removed, so that it
+   !> blocks neither a rerun nor --restart.
+   subroutine take_dead_claim(path)
+      character(len=*), intent(in) :: path          !< the first file of the claim
+      type(file_lock_t) :: lock
+      character(len=msg_len) :: iomsg
+      integer :: st
+      if (path_kind(path) /= path_regular) return
+      if (file_size(path) /= 0) return
+      call lock_file(path, lock, st, iomsg)
+      if (st /= 0) return                           ! a run holds it
+      call remove_file(path, st)
+      call unlock_file(lock)
+   end subroutine take_dead_claim
+
+   !> The outcome of a run stopped by a signal: its status, and the models
+   !> not compared.
+   subroutine stopped_outcome(out, cmp)
+      type(accuracy_outcome_t), intent(inout) :: out   !< the outcome
+      type(comparison_t), intent(inout) :: cmp(2)   !< the comparisons
+      integer :: i
+      out%status = 'stopped by signal ' // int_str(stop_caught()) // ': the results carry the errors reached; ' // &
+                   'impact --restart continues the ladder'
+      out%met = .false.
+      out%stop_signal = stop_caught()
+      cmp%what = ['theory    ', 'bend_twist']
+      do i = 1, 2
+         if (cmp(i)%run == 0 .and. len_trim(cmp(i)%note) == 0) cmp(i)%note = 'the run was stopped'
+      end do
+   end subroutine stopped_outcome
 
    !> The launcher (the program, the CPUs, the cap, the theory of every
    !> run, the strain gauge of the deck's mesh), the scene of the deck's
@@ -159,6 +210,7 @@ contains
       la%dir = deck%prefix // '_acc/'
       la%theory = scene%theory
       la%every_step = strength_given(deck)
+      la%restart = opts%restart
       la%cpus = usable_cpus()
       la%cap = deck%accuracy_max_cpu_s
       la%gauge = model%gauge_xy                     ! the strain at one point on every mesh
@@ -336,6 +388,7 @@ contains
          call run_planned(runs, la, stat, errmsg)
          if (stat /= 0) return
          ran = count(runs%state == state_done) > done_before
+         if (stop_caught() /= 0 .and. runs(1)%state /= state_done) return   ! out%chosen 0: nothing to give
          call check_failures(runs, la, stat, errmsg)
          if (stat /= 0) return
          if (runs(1)%state /= state_done) then
@@ -349,6 +402,7 @@ contains
          out%targeted = out%targeted .and. out%estimated
          call build_axis(runs, axis_time, out%estimated, tx)
          call build_axis(runs, axis_mesh, out%estimated, mx)
+         if (stop_caught() /= 0) exit
          call choose_run(runs, la, tx, mx, out%target, out%targeted, k, j, found, &
                          more_time=can_halve_dt(deck, tx), beyond_cap=over_cap, beyond_kj=next_kj, &
                          beyond_cost=next_cost)

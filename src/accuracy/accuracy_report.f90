@@ -23,7 +23,7 @@ module accuracy_report
       write_column_block
    use summary_reader, only: summary_t, read_summary
    use accuracy_runs, only: run_t, launcher_t, nq, iq_peak_time, result_keys, result_units, state_done, state_failed, &
-      state_skipped
+      state_skipped, state_stopped
    use accuracy_ladder, only: axis_t, judged_t, judge_run
    implicit none
    private
@@ -47,7 +47,8 @@ module accuracy_report
    type :: accuracy_outcome_t
       real(dp) :: target = 0.0_dp                  !< the relative error asked for
       logical :: met = .false.                     !< every error within it
-      character(len=240) :: status = ''            !< 'met', 'cap reached: ...', 'not met: ...'
+      character(len=240) :: status = ''            !< 'met', 'cap reached: ...', 'not met: ...', 'stopped ...'
+      integer :: stop_signal = 0                   !< the stop signal that ended it, 0: none
       integer :: chosen = 0                        !< the run whose results are given
       type(judged_t) :: jd                         !< its results and errors
       logical :: estimated(nq) = .false.           !< the results estimated
@@ -192,6 +193,7 @@ contains
       end do
       call summary_real(items, 'accuracy_target', 'accuracy_target', '-', out%target, 1.0_dp)
       call summary_text(items, 'accuracy_status', trim(out%status))
+      if (out%stop_signal > 0) call summary_integer(items, 'accuracy_stop_signal', out%stop_signal)
       call summary_text(items, 'accuracy_values', 'of the run chosen, not extrapolated')
       call summary_text(items, 'time_error_measured', trim(time_words(out%jd%time_measured)))
       call summary_text(items, 'chosen_run', la%dir // trim(r%name))
@@ -386,18 +388,20 @@ contains
       end if
    end function model_needed
 
-   !> Why a run has no results: skipped for the cap, or failed.
+   !> Why a run has no results: skipped for the cap, stopped, or failed.
    function not_done(run) result(text)
       type(run_t), intent(in) :: run               !< the run
       character(len=:), allocatable :: text
       if (run%state == state_skipped) then
          text = 'the run ' // trim(run%name) // ' would pass &accuracy max_cpu_s'
+      else if (run%state == state_stopped) then
+         text = 'the run ' // trim(run%name) // ' was stopped'
       else
          text = 'the run ' // trim(run%name) // ' failed (' // trim(run%status) // ')'
       end if
    end function not_done
 
-   !> The state of a run as a word: done, failed, skipped or planned.
+   !> The state of a run as a word: done, failed, skipped, stopped or planned.
    pure function state_word(state) result(word)
       integer, intent(in) :: state                 !< the run's state
       character(len=7) :: word
@@ -405,6 +409,7 @@ contains
       case (state_done);    word = 'done'
       case (state_failed);  word = 'failed'
       case (state_skipped); word = 'skipped'
+      case (state_stopped); word = 'stopped'
       case default;         word = 'planned'
       end select
    end function state_word

@@ -46,12 +46,13 @@ module accuracy_runs
    use kinds, only: dp, msg_len
    use number_text, only: int_str, real_str, real_short
    use summary_reader, only: summary_t, read_summary, summary_value, summary_has, summary_index
-   use child_process, only: spawn_program, wait_child
+   use child_process, only: spawn_program, wait_child, stop_caught
    use history_reader, only: maxima_t, force_maxima
    implicit none
    private
    public :: nq, iq_force, iq_peak_time, result_keys, result_units, run_t, launcher_t, run_planned, run_settings, quoted
-   public :: state_planned, state_running, state_done, state_failed, state_skipped, predicted_cost, fit_costs
+   public :: state_planned, state_running, state_done, state_failed, state_skipped, state_stopped, predicted_cost, &
+             fit_costs
    public :: predicted_run_cost, ladder_name
 
    !> The results an accuracy run estimates: their summary keys (the unit
@@ -63,8 +64,9 @@ module accuracy_runs
    !> The peak force's and the time of the peak's places in result_keys.
    integer, parameter :: iq_force = 1, iq_peak_time = 4
 
-   !> States of a run.
-   integer, parameter :: state_planned = 0, state_running = 1, state_done = 2, state_failed = 3, state_skipped = 4
+   !> States of a run (stopped: by a stop signal to the accuracy run).
+   integer, parameter :: state_planned = 0, state_running = 1, state_done = 2, state_failed = 3, state_skipped = 4, &
+                         state_stopped = 5
    !> Settings of a variant, at most.
    integer, parameter :: max_variant = 4
    !> The cost model's exponent of the element count before two meshes are measured, and its bounds.
@@ -101,6 +103,7 @@ module accuracy_runs
       character(len=8192), allocatable :: user_settings(:)   !< the user's --set values, in order
       character(len=32) :: theory = ''            !< the theory of every ladder run
       logical :: every_step = .false.             !< history every step (&strength: the failure index)
+      logical :: restart = .false.                !< --restart: each run continues from its restart point
       integer :: cpus = 1                         !< runs at a time
       integer :: n0 = 1                           !< elements of mesh level 0 (nx ny)
       real(dp) :: impact_element(2) = 0.0_dp      !< sides of the element at the impact point, level 0 (m)
@@ -130,7 +133,7 @@ contains
       stat = 0
       running = 0
       do
-         launch: do while (running < la%cpus .and. stat == 0)
+         launch: do while (running < la%cpus .and. stat == 0 .and. stop_caught() == 0)
             i = next_run(runs, la, running)
             if (i == 0) exit launch
             if (la%c_base >= 0.0_dp .and. la%spent + sum(predicted_cost(runs, la, running=.true.)) &
@@ -154,10 +157,16 @@ contains
          running = running - 1
          runs(i)%pid = -1
          runs(i)%exit_code = code
+         if (stop_caught() /= 0 .and. code /= 0) then   ! ended by the stop: its restart point kept
+            runs(i)%state = state_stopped
+            cycle
+         end if
          call finish_run(runs(i), la)
          call fit_costs(runs, la)
       end do
-      if (stat == 0 .and. any(runs%state == state_planned)) then
+      if (stop_caught() /= 0) then
+         where (runs%state == state_planned) runs%state = state_stopped
+      else if (stat == 0 .and. any(runs%state == state_planned)) then
          where (runs%state == state_planned) runs%state = state_skipped
          la%cap_reached = .true.
       end if
@@ -287,6 +296,7 @@ contains
       character(len=8192), allocatable :: args(:)
       integer :: i
       args = [character(len=8192) :: '--single']       ! one run: the deck's &accuracy left aside
+      if (la%restart) args = [args, [character(len=8192) :: '--restart']]
       do i = 1, size(la%user_settings)
          call add(trim(la%user_settings(i)))
       end do
