@@ -3,8 +3,8 @@
 !> never through a shell.
 !>
 !>  - spawn_program: posix_spawn(3) of a program with an argument vector,
-!>    each argument passed as it is, its output into a log file, the child
-!>    in a process group of its own;
+!>    each argument passed as it is, its output into a log file (never
+!>    through a symbolic link), the child in a process group of its own;
 !>  - wait_child: waitpid(2) for any child (128 + N for a signal N);
 !>  - pass_stops_to_children: from then on a stop signal (SIGINT, SIGTERM,
 !>    ...: src/system/process_stop.f90) is recorded (stop_caught) and sent on
@@ -23,7 +23,8 @@ module child_process
    use c_library, only: spawn_actions_t, spawn_attr_t, cpu_set_t, c_posix_spawn, c_spawn_actions_init, &
       c_spawn_actions_destroy, c_spawn_actions_addopen, c_spawn_actions_adddup2, c_spawnattr_init, &
       c_spawnattr_destroy, c_spawnattr_setflags, c_spawnattr_setpgroup, c_waitpid, c_readlink, &
-      c_sched_getaffinity, c_kill, c_getpid, c_getppid, c_prctl, c_signal, c_exit, o_wronly, o_creat, o_trunc
+      c_sched_getaffinity, c_kill, c_getpid, c_getppid, c_prctl, c_signal, c_exit, o_wronly, o_creat, o_trunc, &
+      o_nofollow
    use process_stop, only: stop_signals
    use number_text, only: int_str
    implicit none
@@ -36,6 +37,8 @@ module child_process
    !> POSIX_SPAWN_SETPGROUP (glibc), PR_SET_PDEATHSIG, SIGKILL.
    integer(c_int16_t), parameter :: spawn_setpgroup = 2_c_int16_t
    integer(c_int), parameter :: pr_set_pdeathsig = 1, sigkill = 9
+   !> ELOOP (Linux): what open(2) with O_NOFOLLOW says of a symbolic link.
+   integer(c_int), parameter :: eloop = 40
    !> Children held at most (their process groups), and the signal caught (0: none).
    integer, parameter :: max_children = 256
    integer(c_int), volatile, save :: children(max_children) = 0
@@ -77,8 +80,8 @@ contains
       if (r == 0) r = c_spawnattr_init(attr)
       if (r == 0) r = c_spawnattr_setflags(attr, spawn_setpgroup)
       if (r == 0) r = c_spawnattr_setpgroup(attr, 0_c_int)          ! its own group, led by itself
-      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, c_text(log_path), ior(o_wronly, ior(o_creat, o_trunc)), &
-                                             log_mode)
+      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, c_text(log_path), &
+                                             ior(ior(o_wronly, o_nofollow), ior(o_creat, o_trunc)), log_mode)
       if (r == 0) r = c_spawn_actions_adddup2(actions, fd_out, fd_err)
       if (r == 0) r = c_posix_spawn(cpid, c_text(path), actions, attr, argv, envp)
       ignored = c_spawn_actions_destroy(actions)
@@ -86,6 +89,7 @@ contains
       stat = r
       if (r /= 0) then
          errmsg = 'cannot start ' // path // ' (posix_spawn: error ' // int_str(r) // ')'
+         if (r == eloop) errmsg = log_path // ' is a symbolic link: a run writes no file through a link'
          return
       end if
       pid = cpid

@@ -18,7 +18,7 @@ module c_library
    public :: statx_t, c_statx
    public :: spawn_actions_t, cpu_set_t, c_posix_spawn, c_spawn_actions_init, c_spawn_actions_destroy, &
              c_spawn_actions_addopen, c_spawn_actions_adddup2, c_waitpid, c_readlink, c_sched_getaffinity, &
-             o_wronly, o_creat, o_trunc
+             o_wronly, o_creat, o_trunc, o_nofollow
    public :: spawn_attr_t, c_spawnattr_init, c_spawnattr_destroy, c_spawnattr_setflags, c_spawnattr_setpgroup, &
              c_kill, c_getpid, c_getppid, c_prctl
 
@@ -51,8 +51,9 @@ module c_library
       integer(c_int64_t) :: bits(16) = 0
    end type cpu_set_t
 
-   !> open(2) flags (Linux, <fcntl.h>): write only, create, truncate.
-   integer(c_int), parameter :: o_wronly = 1, o_creat = int(o'100', c_int), o_trunc = int(o'1000', c_int)
+   !> open(2) flags (Linux, <fcntl.h>): write only, create, truncate, no symbolic link.
+   integer(c_int), parameter :: o_wronly = 1, o_creat = int(o'100', c_int), o_trunc = int(o'1000', c_int), &
+                                o_nofollow = int(o'400000', c_int)
 
    interface
       ! <stdio.h>
