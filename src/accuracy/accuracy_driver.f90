@@ -63,7 +63,7 @@ module accuracy_driver
    use result_files, only: results_claim_t, claim_results, release_results
    use child_process, only: program_path, usable_cpus, pass_stops_to_children, stop_caught
    use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, state_failed, &
-      state_skipped, predicted_run_cost, ladder_name
+      state_skipped, predicted_run_cost, ladder_name, error_scale
    use accuracy_ladder, only: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, time_partner, &
       done_run, axis_time, axis_mesh
    use accuracy_report, only: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
@@ -71,7 +71,7 @@ module accuracy_driver
    implicit none
    private
    public :: run_accuracy, exit_not_met, comparison_base, variant_bases, ladder_mesh, bend_twist_variant, coarse_base, &
-             verdict_settled
+             verdict_settled, targeted_results
 
    !> Exit status of an accuracy run that did not meet its target.
    integer, parameter :: exit_not_met = 3
@@ -493,9 +493,11 @@ contains
       end function level_text
    end function cap_status
 
-   !> The results that must meet the target: &accuracy results, 'all' (or
-   !> nothing) or summary keys separated by blanks, commas or '+' (on the
-   !> command line: --set accuracy.results=peak_force_N+max_deflection_mm).
+   !> The results that must meet the target: &accuracy results, 'default'
+   !> (or nothing: those that converge smoothly, the peak force, the largest
+   !> deflection, the contact duration and with &strength the largest
+   !> failure index), 'all', or summary keys separated by blanks, commas or
+   !> '+' (on the command line: --set accuracy.results=peak_force_N+max_deflection_mm).
    subroutine targeted_results(deck, targeted, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
       logical, intent(out) :: targeted(nq)          !< which of result_keys
@@ -508,8 +510,10 @@ contains
       do cut = 1, len(rest)
          if (rest(cut:cut) == ',' .or. rest(cut:cut) == '+') rest(cut:cut) = ' '
       end do
-      targeted = trim(adjustl(rest)) == 'all' .or. len_trim(rest) == 0
-      if (all(targeted)) return
+      targeted = trim(adjustl(rest)) == 'all'
+      if (trim(adjustl(rest)) == 'default' .or. len_trim(rest) == 0) targeted = [.true., .true., .true., .false., &
+                                                                                  .false., .true.]
+      if (any(targeted)) return
       do
          rest = trim(adjustl(rest))
          if (len(rest) == 0) exit
@@ -520,7 +524,7 @@ contains
          end do
          if (iq == 0) then
             stat = 1
-            errmsg = deck%source // ': &accuracy: results: ' // rest(:cut - 1) // ' is not one of all ' // &
+            errmsg = deck%source // ': &accuracy: results: ' // rest(:cut - 1) // ' is not one of default all ' // &
                'peak_force_N max_deflection_mm contact_duration_us time_of_peak_us max_strain_y_back max_failure_index'
             return
          end if
@@ -574,15 +578,16 @@ contains
       character(len=*), intent(out) :: why         !< when not: why
       type(judged_t) :: jd
       logical :: time, mesh, can_time, can_mesh, step_bound(nq)
-      real(dp) :: allowed
+      real(dp) :: allowed, reference(nq)
       integer :: iq
 
       jd = judge_run(runs, tx, mx, tx%levels - 1, mx%levels - 1, out%target, out%targeted)
+      reference = error_scale(jd%value)
       time = .false.;  mesh = .false.;  step_bound = .false.
       why = 'dt and the mesh cannot be refined further (the ladder''s limits)'
       do iq = 1, nq
          if (.not. out%targeted(iq)) cycle
-         allowed = out%target*abs(jd%value(iq))
+         allowed = out%target*reference(iq)
          if (jd%err(iq) <= allowed) cycle
          if (jd%err_time(iq) > 0.5_dp*allowed) time = .true.
          ! a time read off the steps whose mesh part is the mesh axis's step

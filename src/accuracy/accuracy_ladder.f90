@@ -51,7 +51,8 @@ module accuracy_ladder
    use kinds, only: dp
    use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_grid_index, &
       continued_value
-   use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, predicted_run_cost
+   use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, predicted_run_cost, &
+      error_scale
    use history_reader, only: maxima_t
    implicit none
    private
@@ -269,7 +270,7 @@ contains
       real(dp), intent(in) :: target              !< the relative error asked for
       logical, intent(in) :: active(nq)           !< the results estimated
       logical, intent(in) :: measured             !< the time error measured on its mesh
-      real(dp) :: scale
+      real(dp) :: scale, reference(nq)
       integer :: iq
       jd%err = jd%err_time + jd%err_mesh + jd%err_cross
       if (jd%err(iq_force) < huge(1.0_dp) .and. maxima_run%has(iq_peak_time)) then
@@ -278,9 +279,10 @@ contains
          jd%err(iq_peak_time) = jd%err(iq_peak_time) + jd%err_maxima(iq_peak_time)
       end if
       jd%worst = 0.0_dp
+      reference = error_scale(jd%value)
       do iq = 1, nq
          if (.not. active(iq)) cycle
-         scale = target*abs(jd%value(iq))
+         scale = target*reference(iq)
          if (scale > 0.0_dp) then
             jd%worst = max(jd%worst, jd%err(iq)/scale)
          else if (jd%err(iq) > 0.0_dp) then

@@ -23,6 +23,7 @@ module accuracy_report
       write_column_block
    use summary_reader, only: summary_t, read_summary
    use accuracy_runs, only: run_t, launcher_t, nq, iq_peak_time, result_keys, result_units, state_done, state_failed, &
+      error_scale, &
       state_skipped, state_stopped
    use accuracy_ladder, only: axis_t, judged_t, judge_run
    implicit none
@@ -183,8 +184,10 @@ contains
       type(summary_item_t), allocatable :: items(:)
       type(run_t) :: r
       integer :: i, iq
+      real(dp) :: reference(nq)
 
       r = runs(out%chosen)
+      reference = error_scale(out%jd%value)
       call read_summary(la%dir // trim(r%name) // '_summary.dat', s, stat, errmsg)
       if (stat /= 0) return
       allocate (items(0))
@@ -213,7 +216,7 @@ contains
          if (iq == iq_peak_time) call summary_real(items, trim(result_keys(iq)) // '_error_maxima', &
             trim(result_keys(iq)) // '_error_maxima', trim(result_units(iq)), out%jd%err_maxima(iq), 1.0_dp)
          call summary_real(items, trim(result_keys(iq)) // '_relative_error', trim(result_keys(iq)) // &
-                           '_relative_error', '-', relative(out%jd%err(iq), out%jd%value(iq)), 1.0_dp)
+                           '_relative_error', '-', relative(out%jd%err(iq), reference(iq)), 1.0_dp)
       end do
       do i = 1, size(cmp)
          call comparison_items(items, cmp(i), runs, out)
@@ -274,7 +277,9 @@ contains
       type(run_t) :: r
       integer :: iq, i
       character(len=msg_len) :: line
+      real(dp) :: reference(nq)
       r = runs(out%chosen)
+      reference = error_scale(out%jd%value)
       write (unit, '(a)') 'accuracy: ' // trim(out%status)
       if (.not. out%jd%time_measured) write (unit, '(a)') 'accuracy: the time error was not measured on ' // &
          'the chosen mesh: it is ' // unmeasured_time
@@ -288,7 +293,7 @@ contains
       do iq = 1, nq
          if (.not. out%estimated(iq)) cycle
          write (line, '(a,es14.6,a,es10.3,a,f7.3,a,es10.3,a,es10.3,a)') result_keys(iq), out%jd%value(iq), ' +- ', &
-            out%jd%err(iq), ' (', 100.0_dp*relative(out%jd%err(iq), out%jd%value(iq)), ' %; dt ', &
+            out%jd%err(iq), ' (', 100.0_dp*relative(out%jd%err(iq), reference(iq)), ' %; dt ', &
             out%jd%err_time(iq), ', mesh ', out%jd%err_mesh(iq), ')'
          write (unit, '(a)') '  ' // trim(line)
       end do
@@ -357,11 +362,12 @@ contains
       type(comparison_t), intent(in) :: c          !< the comparison (its runs done)
       type(run_t), intent(in) :: runs(:)           !< the runs
       type(accuracy_outcome_t), intent(in) :: out  !< the outcome (the results estimated)
-      real(dp) :: change(nq)
+      real(dp) :: change(nq), reference(nq)
       integer :: iq
       change = 0.0_dp
+      reference = error_scale(runs(c%base)%q)
       do iq = 1, nq
-         if (out%estimated(iq)) change(iq) = relative(runs(c%run)%q(iq) - runs(c%base)%q(iq), runs(c%base)%q(iq))
+         if (out%estimated(iq)) change(iq) = relative(runs(c%run)%q(iq) - runs(c%base)%q(iq), reference(iq))
       end do
    end function model_changes
 

@@ -53,7 +53,7 @@ module accuracy_runs
    public :: nq, iq_force, iq_peak_time, result_keys, result_units, run_t, launcher_t, run_planned, run_settings, quoted
    public :: state_planned, state_running, state_done, state_failed, state_skipped, state_stopped, predicted_cost, &
              fit_costs
-   public :: predicted_run_cost, ladder_name
+   public :: predicted_run_cost, ladder_name, error_scale, iq_duration
 
    !> The results an accuracy run estimates: their summary keys (the unit
    !> in the key) and units; the last only with &strength.
@@ -61,8 +61,8 @@ module accuracy_runs
    character(len=*), parameter :: result_keys(nq) = [character(len=19) :: 'peak_force_N', 'max_deflection_mm', &
       'contact_duration_us', 'time_of_peak_us', 'max_strain_y_back', 'max_failure_index']
    character(len=*), parameter :: result_units(nq) = [character(len=2) :: 'N', 'mm', 'us', 'us', '-', '-']
-   !> The peak force's and the time of the peak's places in result_keys.
-   integer, parameter :: iq_force = 1, iq_peak_time = 4
+   !> The places in result_keys of the peak force, the contact duration and the time of the peak.
+   integer, parameter :: iq_force = 1, iq_duration = 3, iq_peak_time = 4
 
    !> States of a run (stopped: by a stop signal to the accuracy run).
    integer, parameter :: state_planned = 0, state_running = 1, state_done = 2, state_failed = 3, state_skipped = 4, &
@@ -243,6 +243,17 @@ contains
          a = i;  best = d
       end do
    end function nearest_anchor
+
+   !> What each result's error is relative to: its own size, and for the
+   !> time of the peak the contact duration, the event's own time scale
+   !> (a time measured from the first contact is not more accurate for
+   !> being late).
+   pure function error_scale(q) result(scale)
+      real(dp), intent(in) :: q(nq)                !< the results
+      real(dp) :: scale(nq)
+      scale = abs(q)
+      scale(iq_peak_time) = abs(q(iq_duration))
+   end function error_scale
 
    !> The name of the ladder run (k, j): t<k>_m<j>.
    pure function ladder_name(k, j) result(name)
