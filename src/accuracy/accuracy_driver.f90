@@ -83,6 +83,12 @@ module accuracy_driver
    !> dt and the largest element count of the deck's schema.
    integer, parameter :: max_time_levels = 11, max_mesh_levels = 12, max_elements = 10000
    real(dp), parameter :: min_dt = 1.0e-10_dp
+   !> The cap when the deck gives none, in runs of level 0: the first
+   !> three levels of both axes cost about 25 to 60 of them (steps 1 + 2 + 4,
+   !> meshes about 4 and 13, the model comparisons), which leaves room for
+   !> a level or two more on each axis, and no more (a user who wants more
+   !> sets &accuracy max_cpu_s; the status says what the next run costs).
+   integer, parameter :: default_cap_times = 100
    !> Levels of each axis at the start.
    integer, parameter :: first_levels = 3
    !> Grading of level 0's mesh when the ladder grades it (ladder_mesh) (-).
@@ -212,7 +218,12 @@ contains
       la%every_step = strength_given(deck)
       la%restart = opts%restart
       la%cpus = usable_cpus()
-      la%cap = deck%accuracy_max_cpu_s
+      la%cap = huge(1.0_dp)
+      if (deck%given(find_var('accuracy', 'max_cpu_s'))) then
+         la%cap = deck%accuracy_max_cpu_s
+      else
+         la%cap_times = default_cap_times
+      end if
       la%gauge = model%gauge_xy                     ! the strain at one point on every mesh
       la%unit = unit
       base = deck
@@ -225,7 +236,8 @@ contains
          return
       end if
       write (unit, '(a)') 'accuracy: target ' // real_short(deck%accuracy_target) // ' (relative), cap ' // &
-         real_short(la%cap) // ' s of cpu, ' // int_str(la%cpus) // ' runs at a time; theory ' // &
+         merge(real_short(la%cap) // ' s of cpu', int_str(default_cap_times) // ' times the first run', &
+         la%cap_times == 0) // ', ' // int_str(la%cpus) // ' runs at a time; theory ' // &
          trim(la%theory) // ', domain ' // trim(scene%domain) // '; runs in ' // la%dir
       if (len(why) > 0) write (unit, '(a)') 'accuracy: ' // why
       allocate (runs(0))

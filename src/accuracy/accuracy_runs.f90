@@ -109,6 +109,7 @@ module accuracy_runs
       real(dp) :: impact_element(2) = 0.0_dp      !< sides of the element at the impact point, level 0 (m)
       real(dp) :: gauge(2) = 0.0_dp               !< the strain gauge of level 0 (m, from the plate centre)
       real(dp) :: cap = huge(1.0_dp)              !< &accuracy max_cpu_s (s)
+      integer :: cap_times = 0                    !< > 0: the cap this many times the first run's cpu time
       real(dp) :: spent = 0.0_dp                  !< cpu time of the runs done (s)
       real(dp) :: c_base = -1.0_dp                !< cost of a level-0 run (s), < 0: unknown
       real(dp) :: gamma = gamma_default           !< the cost's exponent of the element count
@@ -129,6 +130,7 @@ contains
       integer, intent(out) :: stat                 !< 0 on success
       character(len=*), intent(inout) :: errmsg    !< what failed
       integer :: i, pid, code, running
+      logical :: known
 
       stat = 0
       running = 0
@@ -161,8 +163,10 @@ contains
             runs(i)%state = state_stopped
             cycle
          end if
+         known = la%c_base >= 0.0_dp
          call finish_run(runs(i), la)
          call fit_costs(runs, la)
+         if (.not. known .and. la%c_base >= 0.0_dp) call state_price(runs, la)
       end do
       if (stop_caught() /= 0) then
          where (runs%state == state_planned) runs%state = state_stopped
@@ -171,6 +175,27 @@ contains
          la%cap_reached = .true.
       end if
    end subroutine run_planned
+
+   !> Once the first run is done: the cap, when it is a multiple of that
+   !> run, and on standard output the runs planned, their predicted cpu
+   !> and wall time, and the cap.
+   subroutine state_price(runs, la)
+      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(launcher_t), intent(inout) :: la        !< the launcher (its cost model, known now)
+      real(dp) :: cost(size(runs))
+      character(len=:), allocatable :: names
+      integer :: i
+      if (la%cap_times > 0) la%cap = real(la%cap_times, dp)*la%spent
+      cost = predicted_cost(runs, la, running=.false.)
+      names = ''
+      do i = 1, size(runs)
+         if (runs(i)%state == state_planned) names = names // ' ' // trim(runs(i)%name)
+      end do
+      write (la%unit, '(a)') 'accuracy: next,' // names // ': predicted ' // real_short(sum(cost)) // &
+         ' s of cpu, ' // real_short(max(maxval(cost), sum(cost)/la%cpus)) // ' s of wall; then more levels ' // &
+         'while the target is not met, within the cap of ' // real_short(la%cap) // ' s of cpu'
+      flush (la%unit)
+   end subroutine state_price
 
    !> The next run to start: the planned one predicted dearest, or while
    !> nothing is known of the costs the cheapest (level 0, which teaches
