@@ -203,7 +203,7 @@ contains
       character(len=*), intent(inout) :: errmsg     !< what failed
       type(model_t) :: model
       character(len=msg_len) :: iomsg
-      character(len=:), allocatable :: why
+      character(len=:), allocatable :: why, cap
       integer :: l
 
       ! -- the model of the deck's settings: the theory 'auto' picks, pinned for every run
@@ -235,9 +235,10 @@ contains
          errmsg = deck%source // ": &output: prefix = '" // deck%prefix // "': " // trim(iomsg)
          return
       end if
+      cap = int_str(default_cap_times) // ' times the first run''s cpu time'
+      if (la%cap_times == 0) cap = real_short(la%cap) // ' s of cpu'
       write (unit, '(a)') 'accuracy: target ' // real_short(deck%accuracy_target) // ' (relative), cap ' // &
-         merge(real_short(la%cap) // ' s of cpu', int_str(default_cap_times) // ' times the first run', &
-         la%cap_times == 0) // ', ' // int_str(la%cpus) // ' runs at a time; theory ' // &
+         cap // ', ' // int_str(la%cpus) // ' runs at a time; theory ' // &
          trim(la%theory) // ', domain ' // trim(scene%domain) // '; runs in ' // la%dir
       if (len(why) > 0) write (unit, '(a)') 'accuracy: ' // why
       allocate (runs(0))
