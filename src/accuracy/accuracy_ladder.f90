@@ -1,52 +1,17 @@
-!> The ladder of an accuracy run (src/accuracy/accuracy_driver.f90): two
-!> axes of runs from the deck's settings (time level 0, mesh level 0),
-!>
-!>   time axis: dt0, dt0/2, dt0/4, ... on mesh level 0 (runs (k, 0)),
-!>   mesh axis: nx, ny times mesh_factor^j, at dt0        (runs (0, j)),
-!>
+!> The ladder of an accuracy run: the time axis (dt0/2^k on mesh 0, runs
+!> (k, 0)), the mesh axis (nx, ny times mesh_factor^j at dt0, runs (0, j))
 !> and the runs that combine them, (k, j). Each axis gives the error of
-!> every level (src/accuracy/error_estimate.f90): the time axis with the
-!> order of Newmark's average acceleration rule, 2 (the asymptotic range
-!> taken as observed orders in [1.5, 2.7]); the mesh axis with an order
-!> no larger than 2 trusted, in range between 1 and 2.5 (the element size
-!> h = 1/sqrt(nx ny); a faster observed order is taken for what it mostly
-!> is on these meshes, a coarse mesh's error falling before the slow
-!> tail): the peak force on a mesh that does not resolve the
-!> Hertz contact disc is a rippled plateau, whose differences change sign
-!> and get the safe bound, or converges slowly (under a disc much smaller
-!> than the element the plate sees a point force, whose deflection grows
-!> like ln(1/h)), which the observed order shows. A time read off the
-!> steps (the contact's duration, the time of the peak, when every value
-!> of the axis is a whole number of its steps) cannot show a change below
-!> the step: the step of the axis's finest level is added to its error.
-!>
-!> On the mesh axis, while the element at the impact point is larger than
-!> the Hertz contact radius at the peak force (a = sqrt(R alpha), alpha =
-!> (F/k)^(2/3)), the results change like ln(1/h), and the change still to
-!> come (log_tail of src/accuracy/error_estimate.f90) is their error when
-!> the ladder's rule gives less; the rule's estimate of a result that
-!> shows no order there (an observed order below the range: the log's
-!> constant differences) is the tail alone.
-!>
-!> The error of a run (k, j) is its time level's error plus its mesh
-!> level's plus the interaction of the two, |q(k,j) - q(k,0) - q(0,j) +
-!> q(0,0)|: measured for a run done, for one to come the largest measured
-!> (0 until one is). On a finer mesh (j > 0) the time error is measured on
-!> that mesh too, from its own time levels next to the run's
-!> (time_on_mesh), and a run done without one there is not taken as
-!> meeting the target: the time error grows as the elements at the
-!> contact shrink; a run to come there is predicted with at least the
-!> time error measured at twice its step over 2^2. judge_run gives them;
-!> choose_run the cheapest run whose every error is within the target,
-!> its cost that of the runs it still needs: itself, and on a finer mesh
-!> its time partner (time_partner, the neighbouring time level that
-!> measures its time error) - 0 for a run done and measured - and within
-!> the cap (a run the cap turned away earlier is costed again). The next
-!> time level on mesh 0, not yet run, is a candidate too, predicted by
-!> continuing the time axis's observed order (judge_next_time). The mesh
-!> axis's next level is not predicted: its results on these meshes mostly
-!> carry a safe bound or the log tail, which predict no gain; refine adds
-!> it when its part dominates.
+!> every level (src/accuracy/error_estimate.f90): time at Newmark's order 2
+!> (range 1.5-2.7), mesh at no order above 2 trusted (range 1-2.5, h =
+!> 1/sqrt(nx ny)); a time read off the steps has the step added; while the
+!> element at the impact point is larger than the Hertz radius, the log
+!> tail bounds the mesh error from below. The error of a run (k, j): its
+!> time level's plus its mesh level's plus the interaction, |q(k,j) -
+!> q(k,0) - q(0,j) + q(0,0)|, no less than the largest measured; on a finer
+!> mesh its time error measured there too (time_on_mesh, time_partner).
+!> judge_run gives them; choose_run the cheapest run within the target and
+!> the cap, the next time level on mesh 0 among the candidates
+!> (judge_next_time).
 module accuracy_ladder
    use kinds, only: dp
    use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_grid_index, &

@@ -1,46 +1,16 @@
-!> The runs of an accuracy run (src/accuracy/accuracy_driver.f90): each is
-!> the program itself on the same deck, started as a child process
-!> (src/accuracy/child_process.f90) with its own settings,
-!>
-!>    impact --single [the user's --set ...]
-!>           --set output.prefix='<prefix>_acc/<run>' --set output.overwrite=.true.
-!>           --set output.hdf5=.false. --set analysis.dt=... --set mesh.nx=...
-!>           --set mesh.ny=... --set mesh.grading=... --set output.gauge_x=...
-!>           --set output.gauge_y=... --set analysis.theory=...
-!>           [the variant's] deck.nml
-!>
-!> its terminal output in <prefix>_acc/<run>.log, its results read back
-!> from <prefix>_acc/<run>_summary.dat (src/accuracy/summary_reader.f90).
-!>
+!> The runs of an accuracy run: each is the program itself on the same deck,
+!> a child process (src/accuracy/child_process.f90): impact --single
+!> [--restart] [the user's --set ...] --set output.prefix='<prefix>_acc/<run>'
+!> and its dt, nx, ny, grading, gauge, theory, variant; its output in
+!> <prefix>_acc/<run>.log, its results read from its summary.
 !> run_planned starts the planned runs, as many at a time as the process
-!> has CPUs, the dearest first once the costs are known (the longest
-!> first keeps the CPUs busy to the end: the cheap runs fill in beside
-!> it), and waits for them. The cost cap
-!> (&accuracy max_cpu_s): a run is started only when the cpu time spent,
-!> that of the runs still going and its own, each as the cost model
-!> predicts it, stay within the cap; else it is skipped and the cap is
-!> reached. The cost model predicts a run from the runs done. On a mesh
-!> already run (the same nx, ny and domain), from the run there at the
-!> nearest time level k' (the finer when two are as near): its cpu time
-!> times 2^(k - k'), the steps' ratio (the paper's clamped plate on 12 x
-!> 11: 1.04 and 2.02 s at 2.5 and 1.25 us in one ladder, 3.78 and 7.72 s
-!> at 0.625 and 0.3125 us in another; one solution of eq. (19) a step
-!> throughout). On a mesh not yet run, a run at time level k (dt0/2^k) on
-!> a mesh of n elements costs c 2^k (n/n0)^gamma times its variant's
-!> factor (the number of quarters its domain has against the ladder's, to
-!> the power gamma); gamma is the slope of log cost against log n between
-!> the two finest meshes done at dt0 (level 0 the coarser when only one
-!> mesh level is done), c fitted to the costliest run done. The slope
-!> falls as the mesh grows (the paper's plates, 132 to 675 elements: 1.9
-!> between the first two, 1.3-1.6 between the next two), so the nearest
-!> pair predicts the next mesh: 41 x 37 on the clamped plate cost 77 s,
-!> predicted 73 s by the two finest, 111 s by level 0 and the finest
-!> (make bench-accuracy, every result at 1 %). But c and gamma, which the
-!> finest meshes set, say little of mesh 0's cost: the paper's clamped
-!> plate at a cap of 40 s turned away t3_m0 on 12 x 11 predicted so at
-!> 15.4 s, which took 8.7 s; from t2_m0 there it is predicted at twice
-!> t2_m0's 3.8 s, and took 7.7 s.
-!> Until one run is done nothing is known, and the first run starts alone.
+!> has CPUs, the dearest first once the costs are known, each only when the
+!> cpu time spent and predicted stays within the cap; a stop signal ends
+!> them (state_stopped). The cost model: on a mesh already run, the run
+!> there at the nearest time level k' times 2^(k - k'); else c 2^k
+!> (n/n0)^gamma times the variant's factor, gamma the slope of log cost
+!> against log n between the two finest meshes done at dt0, c fitted to
+!> the costliest run done (measurements: docs/PERFORMANCE.md).
 module accuracy_runs
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: dp, msg_len
