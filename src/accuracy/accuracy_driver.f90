@@ -28,7 +28,8 @@ module accuracy_driver
    use child_process, only: program_path, usable_cpus, pass_stops_to_children, stop_caught
    use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, state_failed, &
       state_skipped, predicted_run_cost, ladder_name, error_scale
-   use accuracy_ladder, only: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, time_partner, &
+   use accuracy_ladder, only: axis_t, judged_t, choice_t, build_axis, judge_run, choose_run, final_run, ladder_run, &
+      time_partner, &
       done_run, axis_time, axis_mesh
    use accuracy_report, only: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
       report_terminal
@@ -352,9 +353,9 @@ contains
       type(accuracy_outcome_t), intent(out) :: out  !< the outcome
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
-      integer :: k, j, i, partner, done_before, next_kj(2)
-      real(dp) :: next_cost
-      logical :: found, more, over_cap, ran
+      integer :: k, j, i, partner, done_before, kj(2)
+      type(choice_t) :: c
+      logical :: more, ran
       character(len=224) :: why
 
       out%target = deck%accuracy_target
@@ -380,23 +381,22 @@ contains
          call build_axis(runs, axis_time, out%estimated, tx)
          call build_axis(runs, axis_mesh, out%estimated, mx)
          if (stop_caught() /= 0) exit
-         call choose_run(runs, la, tx, mx, out%target, out%targeted, k, j, found, &
-                         more_time=can_halve_dt(deck, tx), beyond_cap=over_cap, beyond_kj=next_kj, &
-                         beyond_cost=next_cost)
+         c = choose_run(runs, la, tx, mx, out%target, out%targeted, can_halve_dt(deck, tx))
+         k = c%k;  j = c%j
          i = ladder_run(runs, k, j)
-         if (found .and. i > 0) then
+         if (c%found .and. i > 0) then
             if (runs(i)%state == state_done .and. time_partner(runs, k, j) < 0) then
                out%met = .true.
                out%status = 'met'
                exit
             end if
          end if
-         if (found) then                            ! within the cap: the chosen run and its partner
+         if (c%found) then                          ! within the cap: the chosen run and its partner
             partner = time_partner(runs, k, j)
             call plan(runs, deck, la, k, j)
             if (partner >= 0) call plan(runs, deck, la, partner, j)
-         else if (over_cap .or. (la%cap_reached .and. .not. ran)) then
-            out%status = cap_status(runs, la, mx, over_cap, next_kj, next_cost)
+         else if (c%beyond_cap .or. (la%cap_reached .and. .not. ran)) then
+            out%status = cap_status(runs, la, mx, c)
             exit
          else
             call refine(deck, la, runs, tx, mx, out, more, why)
@@ -406,7 +406,10 @@ contains
             end if
          end if
       end do
-      if (.not. out%met) call choose_run(runs, la, tx, mx, out%target, out%targeted, k, j, found, done_only=.true.)
+      if (.not. out%met) then
+         kj = final_run(runs, tx, mx, out%target, out%targeted)
+         k = kj(1);  j = kj(2)
+      end if
       out%chosen = ladder_run(runs, k, j)
       out%jd = judge_run(runs, tx, mx, k, j, out%target, out%targeted)
    end subroutine climb
@@ -416,18 +419,17 @@ contains
    !> (beyond: (k, j) = kj, its cost with its time partner's) or else the
    !> cheapest run the cap turned away, with its predicted cpu time and the
    !> total it would bring, so that a user sees what a larger max_cpu_s buys.
-   function cap_status(runs, la, mx, beyond, kj, cost) result(status)
+   function cap_status(runs, la, mx, choice) result(status)
       type(run_t), intent(in) :: runs(:)            !< the runs
       type(launcher_t), intent(in) :: la            !< the launcher (cost model, cap, spent)
       type(axis_t), intent(in) :: mx                !< the mesh axis
-      logical, intent(in) :: beyond                 !< a candidate met the target beyond the cap
-      integer, intent(in) :: kj(2)                  !< that candidate
-      real(dp), intent(in) :: cost                  !< its predicted cost (s)
+      type(choice_t), intent(in) :: choice          !< choose_run's (beyond the cap: the candidate, its cost)
       character(len=:), allocatable :: status
       character(len=:), allocatable :: what
-      real(dp) :: c, ci
-      integer :: i, pick, partner
-      if (beyond .and. kj(2) >= 0) then
+      real(dp) :: c, ci, cost
+      integer :: i, pick, partner, kj(2)
+      kj = choice%beyond_kj;  cost = choice%beyond_cost
+      if (choice%beyond_cap .and. kj(2) >= 0) then
          ! the candidate, unless it is done, and its time partner, when it needs one (choose_run's cost)
          c = cost
          what = ''

@@ -21,7 +21,8 @@ module accuracy_ladder
    use history_reader, only: maxima_t
    implicit none
    private
-   public :: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, time_partner, done_run, peak_spread, &
+   public :: axis_t, judged_t, choice_t, build_axis, judge_run, choose_run, final_run, ladder_run, time_partner, &
+             done_run, peak_spread, &
       axis_time, axis_mesh, time_results
 
    !> The two axes.
@@ -41,6 +42,15 @@ module accuracy_ladder
       real(dp), allocatable :: err(:, :)          !< (level, result): the error of each level
       type(estimate_t) :: finest(nq)              !< the estimate of the finest level
    end type axis_t
+
+   !> The run choose_run chose, and the cheapest the cap turned away.
+   type :: choice_t
+      integer :: k = 0, j = 0                     !< the run chosen
+      logical :: found = .false.                  !< it meets the target
+      logical :: beyond_cap = .false.             !< a run to make met the target but would pass the cap
+      integer :: beyond_kj(2) = -1                !< the cheapest such run (k, j)
+      real(dp) :: beyond_cost = huge(1.0_dp)      !< its predicted cost, its partner's included (s)
+   end type choice_t
 
    !> A run's results with their errors (the results' units).
    type :: judged_t
@@ -367,82 +377,51 @@ contains
 
    !> The cheapest run (k, j) of the axes whose results all meet the
    !> target: its cost is that of the runs still to make for it, itself
-   !> and its time partner (the run on its mesh that measures its time
-   !> error, time_partner); a run done and measured costs nothing. With
-   !> more_time, the next time level on mesh 0 (tx%levels, 0) is a
-   !> candidate too, predicted from the time axis's order
-   !> (judge_next_time). A candidate whose cost would take the cpu time
-   !> past the cap is not taken (beyond_cap says one met the target); one
-   !> that costs nothing is, even when the runs made took more than
-   !> predicted and the time spent is past the cap already; a run the cap
-   !> turned away before (skipped, while dearer runs were predicted to go)
-   !> is costed as one to make, and may fit now. found is false when none
-   !> meets it; (k, j) is then the run done with the smallest worst ratio
-   !> (the best there is). With done_only, only the runs done and measured
-   !> are candidates (the final choice).
-   subroutine choose_run(runs, la, tx, mx, target, active, k, j, found, done_only, more_time, beyond_cap, &
-                         beyond_kj, beyond_cost)
+   !> and its time partner (time_partner); a run done and measured costs
+   !> nothing. With more_time, the next time level on mesh 0 (tx%levels, 0)
+   !> is a candidate too (judge_next_time). A candidate whose cost would
+   !> take the cpu time past the cap is not taken (beyond_cap says one met
+   !> the target); one that costs nothing is, even past the cap; a run the
+   !> cap turned away before is costed as one to make. Not found: (k, j)
+   !> the run done with the smallest worst ratio (the best there is).
+   function choose_run(runs, la, tx, mx, target, active, more_time) result(c)
       type(run_t), intent(in) :: runs(:)          !< the runs
       type(launcher_t), intent(in) :: la          !< the launcher (its cost model, the cap, the cpu time spent)
       type(axis_t), intent(in) :: tx, mx          !< the axes
       real(dp), intent(in) :: target              !< the relative error asked for
       logical, intent(in) :: active(nq)           !< the results estimated
-      integer, intent(out) :: k, j                !< the run chosen
-      logical, intent(out) :: found               !< it meets the target
-      logical, intent(in), optional :: done_only  !< only the runs done (the final choice)
-      logical, intent(in), optional :: more_time  !< the next time level may be planned
-      logical, intent(out), optional :: beyond_cap   !< a run to make met the target but would pass the cap
-      integer, intent(out), optional :: beyond_kj(2) !< with beyond_cap: the cheapest such run (k, j)
-      real(dp), intent(out), optional :: beyond_cost !< and its predicted cost, its partner's included (s)
+      logical, intent(in) :: more_time            !< the next time level may be planned
+      type(choice_t) :: c
       type(judged_t) :: jd
-      real(dp) :: cost, best_cost, best_worst, over_cost
-      integer :: kk, jj, p, k_last, over_kj(2)
-      logical :: done, final, over
+      real(dp) :: cost, best_cost, best_worst
+      integer :: kk, jj, p
+      logical :: done
 
-      final = .false.
-      over = .false.
-      over_cost = huge(1.0_dp);  over_kj = -1
-      if (present(done_only)) final = done_only
-      k_last = tx%levels - 1
-      if (present(more_time)) then
-         if (more_time .and. .not. final) k_last = tx%levels
-      end if
-      found = .false.
-      k = 0;  j = 0
       best_cost = huge(1.0_dp);  best_worst = huge(1.0_dp)
-      do kk = 0, k_last
+      do kk = 0, merge(tx%levels, tx%levels - 1, more_time)
          do jj = 0, merge(0, mx%levels - 1, kk == tx%levels)
             jd = judge_run(runs, tx, mx, kk, jj, target, active)
             done = done_run(runs, kk, jj)
-            if (final .and. .not. (done .and. jd%time_measured)) then
-               if (done .and. .not. found .and. jd%worst < best_worst) then
-                  k = kk;  j = jj;  best_worst = jd%worst
-               end if
-               cycle
-            end if
             cost = 0.0_dp
             if (.not. done) cost = run_cost(kk, jj)
             p = time_partner(runs, kk, jj)
             if (p >= 0) then
                if (.not. done_run(runs, p, jj)) cost = cost + run_cost(p, jj)
             end if
-            if (jd%worst <= 1.0_dp .and. .not. final .and. cost > 0.0_dp .and. la%spent + cost > la%cap) then
-               over = .true.
-               if (cost < over_cost) then
-                  over_cost = cost;  over_kj = [kk, jj]
+            if (jd%worst <= 1.0_dp .and. cost > 0.0_dp .and. la%spent + cost > la%cap) then
+               if (cost < c%beyond_cost) then
+                  c%beyond_cost = cost;  c%beyond_kj = [kk, jj]
                end if
             else if (jd%worst <= 1.0_dp) then
-               if (.not. found .or. cost < best_cost .or. (cost == best_cost .and. jd%worst < best_worst)) then
-                  found = .true.;  k = kk;  j = jj;  best_cost = cost;  best_worst = jd%worst
+               if (.not. c%found .or. cost < best_cost .or. (cost == best_cost .and. jd%worst < best_worst)) then
+                  c%found = .true.;  c%k = kk;  c%j = jj;  best_cost = cost;  best_worst = jd%worst
                end if
-            else if (.not. found .and. done .and. jd%worst < best_worst) then
-               k = kk;  j = jj;  best_worst = jd%worst
+            else if (.not. c%found .and. done .and. jd%worst < best_worst) then
+               c%k = kk;  c%j = jj;  best_worst = jd%worst
             end if
          end do
       end do
-      if (present(beyond_cap)) beyond_cap = over .and. .not. found
-      if (present(beyond_kj)) beyond_kj = over_kj
-      if (present(beyond_cost)) beyond_cost = over_cost
+      c%beyond_cap = c%beyond_kj(1) >= 0 .and. .not. c%found
 
    contains
 
@@ -454,6 +433,34 @@ contains
          probe%nx = runs(mx%run(jr + 1))%nx;  probe%ny = runs(mx%run(jr + 1))%ny
          run_cost = predicted_run_cost(probe, la)
       end function run_cost
-   end subroutine choose_run
+   end function choose_run
+
+   !> The final choice among the runs done: the one meeting the target
+   !> (its time error measured) with the smallest worst ratio, else the
+   !> one with the smallest worst ratio.
+   function final_run(runs, tx, mx, target, active) result(kj)
+      type(run_t), intent(in) :: runs(:)          !< the runs
+      type(axis_t), intent(in) :: tx, mx          !< the axes
+      real(dp), intent(in) :: target              !< the relative error asked for
+      logical, intent(in) :: active(nq)           !< the results estimated
+      integer :: kj(2)
+      type(judged_t) :: jd
+      real(dp) :: best(2)
+      integer :: kk, jj, other(2)
+      best = huge(1.0_dp);  kj = -1;  other = 0
+      do kk = 0, tx%levels - 1
+         do jj = 0, mx%levels - 1
+            if (.not. done_run(runs, kk, jj)) cycle
+            jd = judge_run(runs, tx, mx, kk, jj, target, active)
+            if (jd%meets .and. jd%worst < best(1)) then
+               kj = [kk, jj];  best(1) = jd%worst
+            end if
+            if (jd%worst < best(2)) then
+               other = [kk, jj];  best(2) = jd%worst
+            end if
+         end do
+      end do
+      if (kj(1) < 0) kj = other
+   end function final_run
 
 end module accuracy_ladder
