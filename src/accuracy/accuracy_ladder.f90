@@ -63,6 +63,7 @@ module accuracy_ladder
       real(dp) :: worst = huge(1.0_dp)            !< largest err / (target |value|)
       logical :: meets = .false.                  !< every error within the target
       logical :: time_measured = .true.           !< its time error measured on its own mesh (time_on_mesh)
+      logical :: two_levels = .false.             !< and from two time levels there (Roache's Fs = 3)
    end type judged_t
 
 contains
@@ -169,7 +170,7 @@ contains
       type(judged_t) :: jd
       integer :: i, i0, ik, ij, im
       real(dp) :: below(nq)
-      logical :: measured, known
+      logical :: measured, known, two
 
       if (k >= tx%levels) then                     ! the next time level, not yet planned
          jd = judge_next_time(runs, tx, mx, target, active)
@@ -190,10 +191,10 @@ contains
       jd%err_time = tx%err(k + 1, :)
       jd%err_mesh = mx%err(j + 1, :)
       measured = .true.
-      if (j > 0) call time_on_mesh(runs, k, j, active, tx%finest%asymptotic, jd%err_time, measured)
+      if (j > 0) call time_on_mesh(runs, k, j, active, tx%finest%asymptotic, jd%err_time, measured, jd%two_levels)
       if (i == 0 .and. j > 0 .and. k > 0) then     ! a run to come: its mesh's time error at dt x 2, the order's share
          below = 0.0_dp
-         call time_on_mesh(runs, k - 1, j, active, tx%finest%asymptotic, below, known)
+         call time_on_mesh(runs, k - 1, j, active, tx%finest%asymptotic, below, known, two)
          if (known) jd%err_time = max(jd%err_time, below/2.0_dp**order_theory(axis_time))
       end if
       if (i == 0) measured = .true.                ! a run to come: predicted, judged again when done
@@ -307,13 +308,14 @@ contains
    !> Two levels, where mesh 0's time axis is in its asymptotic range:
    !> Roache's grid convergence index at the method's order (two_grid_index
    !> of src/accuracy/error_estimate.f90; r = 2: |d|); else the axis's rule.
-   subroutine time_on_mesh(runs, k, j, active, asymptotic, err_time, measured)
+   subroutine time_on_mesh(runs, k, j, active, asymptotic, err_time, measured, two)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< the run's levels
       logical, intent(in) :: active(nq)           !< the results estimated
       logical, intent(in) :: asymptotic(nq)       !< mesh 0's time axis in its asymptotic range, by result
       real(dp), intent(inout) :: err_time(nq)     !< mesh 0's time error in; the larger out
       logical, intent(out) :: measured            !< a neighbouring time level done on mesh j
+      logical, intent(out) :: two                 !< measured from two levels only
       type(axis_t) :: ax
       real(dp) :: finest
       integer :: iq, k0
@@ -324,6 +326,7 @@ contains
       end do
       call build_axis(runs, axis_time, active, ax, mesh=j, first=k0)
       measured = ax%levels >= 2 .and. k - k0 < ax%levels
+      two = measured .and. ax%levels == 2
       if (.not. measured) return
       do iq = 1, nq
          if (.not. active(iq)) cycle

@@ -199,6 +199,8 @@ contains
       if (out%stop_signal > 0) call summary_integer(items, 'accuracy_stop_signal', out%stop_signal)
       call summary_text(items, 'accuracy_values', 'of the run chosen, not extrapolated')
       call summary_text(items, 'time_error_measured', trim(time_words(out%jd%time_measured)))
+      if (out%jd%two_levels) call summary_text(items, 'time_error_estimate', &
+                                               'two levels: Roache''s grid convergence index, Fs = 3')
       call summary_text(items, 'chosen_run', la%dir // trim(r%name))
       call summary_real(items, 'chosen_dt_us', 'chosen_dt', 's', r%dt, 1.0e6_dp)
       call summary_integer(items, 'chosen_nx', r%nx)
@@ -281,6 +283,8 @@ contains
       r = runs(out%chosen)
       reference = error_scale(out%jd%value)
       write (unit, '(a)') 'accuracy: ' // trim(out%status)
+      if (out%jd%two_levels) write (unit, '(a)') 'accuracy: the time error on the chosen mesh is from two ' // &
+         'time levels: Roache''s grid convergence index, factor of safety 3'
       if (.not. out%jd%time_measured) write (unit, '(a)') 'accuracy: the time error was not measured on ' // &
          'the chosen mesh: it is ' // unmeasured_time
       if (out%jd%err_maxima(iq_peak_time) > 0.0_dp) write (unit, '(a)') 'accuracy: ' // &
