@@ -29,7 +29,7 @@ module accuracy_driver
    use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, state_failed, &
       state_skipped, predicted_run_cost, ladder_name, error_scale
    use accuracy_ladder, only: axis_t, judged_t, choice_t, build_axis, judge_run, choose_run, final_run, ladder_run, &
-      time_partner, &
+      time_partner, cross_needed, &
       done_run, axis_time, axis_mesh
    use accuracy_report, only: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
       report_terminal
@@ -385,7 +385,7 @@ contains
          k = c%k;  j = c%j
          i = ladder_run(runs, k, j)
          if (c%found .and. i > 0) then
-            if (runs(i)%state == state_done .and. time_partner(runs, k, j) < 0) then
+            if (runs(i)%state == state_done .and. time_partner(runs, k, j) < 0 .and. .not. cross_needed(runs, k, j)) then
                out%met = .true.
                out%status = 'met'
                exit
@@ -395,6 +395,7 @@ contains
             partner = time_partner(runs, k, j)
             call plan(runs, deck, la, k, j)
             if (partner >= 0) call plan(runs, deck, la, partner, j)
+            if (cross_needed(runs, k, j)) call plan(runs, deck, la, 1, 1)
          else if (c%beyond_cap .or. (la%cap_reached .and. .not. ran)) then
             out%status = cap_status(runs, la, mx, c)
             exit

@@ -22,6 +22,7 @@ module accuracy_ladder
    implicit none
    private
    public :: axis_t, judged_t, choice_t, build_axis, judge_run, choose_run, final_run, ladder_run, time_partner, &
+             cross_needed, &
              done_run, peak_spread, &
       axis_time, axis_mesh, time_results
 
@@ -352,6 +353,16 @@ contains
       p = merge(k - 1, 1, k > 0)
    end function time_partner
 
+   !> Whether run (k, j) needs the combined run (1, 1) made to bound its
+   !> interaction of the step and the mesh: it lies on mesh 0 at a smaller
+   !> step than dt0, its mesh error measured at dt0, and no interaction has
+   !> been measured yet.
+   pure logical function cross_needed(runs, k, j)
+      type(run_t), intent(in) :: runs(:)          !< the runs
+      integer, intent(in) :: k, j                 !< the run's levels
+      cross_needed = k > 0 .and. j == 0 .and. .not. any(runs%state == state_done .and. runs%role == 'combined')
+   end function cross_needed
+
    !> True when the ladder run (k, j) is done.
    pure logical function done_run(runs, k, j)
       type(run_t), intent(in) :: runs(:)          !< the runs
@@ -381,7 +392,8 @@ contains
    !> The cheapest run (k, j) of the axes whose results all meet the
    !> target: its cost is that of the runs still to make for it, itself
    !> and its time partner (time_partner); a run done and measured costs
-   !> nothing. With more_time, the next time level on mesh 0 (tx%levels, 0)
+   !> nothing; on mesh 0 below dt0, the run (1, 1) too while no interaction
+   !> is measured (cross_needed). With more_time, the next time level on mesh 0 (tx%levels, 0)
    !> is a candidate too (judge_next_time). A candidate whose cost would
    !> take the cpu time past the cap is not taken (beyond_cap says one met
    !> the target); one that costs nothing is, even past the cap; a run the
@@ -411,6 +423,7 @@ contains
             if (p >= 0) then
                if (.not. done_run(runs, p, jj)) cost = cost + run_cost(p, jj)
             end if
+            if (cross_needed(runs, kk, jj) .and. mx%levels > 1) cost = cost + run_cost(1, 1)
             if (jd%worst <= 1.0_dp .and. cost > 0.0_dp .and. la%spent + cost > la%cap) then
                if (cost < c%beyond_cost) then
                   c%beyond_cost = cost;  c%beyond_kj = [kk, jj]
@@ -455,7 +468,7 @@ contains
          do jj = 0, mx%levels - 1
             if (.not. done_run(runs, kk, jj)) cycle
             jd = judge_run(runs, tx, mx, kk, jj, target, active)
-            if (jd%meets .and. jd%worst < best(1)) then
+            if (jd%meets .and. .not. cross_needed(runs, kk, jj) .and. jd%worst < best(1)) then
                kj = [kk, jj];  best(1) = jd%worst
             end if
             if (jd%worst < best(2)) then
