@@ -1,18 +1,13 @@
-!> Child processes of an accuracy run (src/accuracy/accuracy_driver.f90):
-!> the program runs itself, through the C library (src/system/c_library.f90),
-!> never through a shell.
-!>
-!>  - spawn_program: posix_spawn(3) of a program with an argument vector,
-!>    each argument passed as it is, its output into a log file (never
-!>    through a symbolic link), the child in a process group of its own;
+!> Child processes of an accuracy run, through the C library, never a shell:
+!>  - spawn_program: posix_spawn(3) with an argument vector, each argument
+!>    as it is, the output into a log file (never through a link), the
+!>    child in a process group of its own;
 !>  - wait_child: waitpid(2) for any child (128 + N for a signal N);
-!>  - pass_stops_to_children: from then on a stop signal (SIGINT, SIGTERM,
-!>    ...: src/system/process_stop.f90) is recorded (stop_caught) and sent on
-!>    to every child's group: the children end after their step, their
-!>    restart points saved, and the parent waits for them;
-!>  - die_with_parent: a child (IMPACT_PARENT_PID in its environment, set
-!>    by its parent) is killed with SIGKILL when its parent ends, however
-!>    (prctl PR_SET_PDEATHSIG): no run outlives the accuracy run;
+!>  - pass_stops_to_children: a stop signal (src/system/process_stop.f90) is
+!>    recorded (stop_caught) and sent on to every child's group: the
+!>    children end after their step, their restart points saved;
+!>  - die_with_parent: a child (IMPACT_PARENT_PID in its environment) is
+!>    killed with SIGKILL when its parent ends, however (PR_SET_PDEATHSIG);
 !>  - program_path, usable_cpus: /proc/self/exe; the CPUs the process may
 !>    use (sched_getaffinity, or Slurm's count when smaller).
 !> The children and the signal caught are module state, as in process_stop:
