@@ -381,6 +381,7 @@ contains
          call build_axis(runs, axis_time, out%estimated, tx)
          call build_axis(runs, axis_mesh, out%estimated, mx)
          if (stop_caught() /= 0) exit
+         call say_errors(la%unit, runs, tx, mx, out)
          c = choose_run(runs, la, tx, mx, out%target, out%targeted, can_halve_dt(deck, tx))
          k = c%k;  j = c%j
          i = ladder_run(runs, k, j)
@@ -414,6 +415,30 @@ contains
       out%chosen = ladder_run(runs, k, j)
       out%jd = judge_run(runs, tx, mx, k, j, out%target, out%targeted)
    end subroutine climb
+
+   !> One line of progress: the relative errors of the results targeted,
+   !> of the best run done so far (final_run).
+   subroutine say_errors(unit, runs, tx, mx, out)
+      integer, intent(in) :: unit                   !< standard output
+      type(run_t), intent(in) :: runs(:)            !< the runs
+      type(axis_t), intent(in) :: tx, mx            !< the axes
+      type(accuracy_outcome_t), intent(in) :: out   !< the target, the results targeted
+      type(judged_t) :: jd
+      character(len=:), allocatable :: line
+      real(dp) :: scale(nq)
+      integer :: kj(2), iq
+      kj = final_run(runs, tx, mx, out%target, out%targeted)
+      jd = judge_run(runs, tx, mx, kj(1), kj(2), out%target, out%targeted)
+      scale = error_scale(jd%value)
+      line = 'accuracy: errors so far, at ' // ladder_name(kj(1), kj(2)) // ':'
+      do iq = 1, nq
+         if (.not. out%targeted(iq)) cycle
+         line = line // ' ' // trim(result_keys(iq)) // ' ' // real_short(100.0_dp*jd%err(iq)/max(scale(iq), &
+                tiny(1.0_dp))) // ' %'
+      end do
+      write (unit, '(a)') line // ' (target ' // real_short(100.0_dp*out%target) // ' %)'
+      flush (unit)
+   end subroutine say_errors
 
    !> The status of a climb stopped at the cap (climb): the run that would
    !> come next, the candidate that meets the target beyond the cap
