@@ -68,7 +68,7 @@ contains
       type(options_t), intent(in) :: opts           !< the command line (the deck's path, the --set values)
       type(deck_t), intent(in) :: deck              !< the deck, as read and checked
       integer, intent(in) :: unit                   !< standard output
-      integer, intent(out) :: exit_code             !< 0: target met; exit_not_met
+      integer, intent(out) :: exit_code             !< 0: target met; exit_not_met; 128 + N: stopped by signal N
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
       type(results_claim_t) :: claim
