@@ -57,6 +57,7 @@ program impact
    use number_text, only: int_str, real_short
    use c_library, only: c_isatty
    use accuracy_driver, only: run_accuracy
+   use child_process, only: die_with_parent
    implicit none
 
    type(deck_t) :: deck                    ! the input deck, as read and checked
@@ -90,6 +91,7 @@ program impact
    ! settings over it; checked against the schema and echoed
    ! =====================================================================
    call catch_stop_signals()          ! from the first instruction: a stop signal ends the set-up at once
+   call die_with_parent()             ! a run of an accuracy ladder ends with its parent (src/accuracy/)
    call keep_file_size_errors()       ! past ulimit -f a write fails and the run says so
    call read_input()
    call cpu_time(cpu0)

@@ -1,82 +1,59 @@
-!> An accuracy run: `impact --accuracy TOL deck.nml`, or a deck with
-!> &accuracy target = TOL. Every result of the impact (the peak force, the
-!> largest deflection, the first contact's duration, the time of the peak,
-!> the largest back-face strain, with &strength the largest failure index)
-!> is given with an estimate of its discretisation error, and the run
-!> refines dt and the mesh the cheapest way until every estimated relative
-!> error is at most TOL, or the cpu time of all its runs would pass
-!> &accuracy max_cpu_s.
-!>
-!> How (docs: README, "Accuracy"):
-!>  1. The ladder (src/accuracy/accuracy_ladder.f90): the deck's dt and
-!>     mesh are level 0 (the mesh graded towards the impact point when
-!>     the deck leaves the grading open and does not resolve the Hertz
-!>     disc: ladder_mesh), every run's strain read at the deck's gauge;
-!>     the time axis halves dt on mesh 0 (dt, dt/2,
-!>     dt/4), the mesh axis multiplies nx, ny by &accuracy mesh_factor at
-!>     dt (three meshes); the runs that do not depend on each other run at
-!>     the same time, one per CPU the process may use
-!>     (src/accuracy/accuracy_runs.f90). Each is the program itself, a
-!>     child process with --set settings (no shell; nothing from the deck
-!>     reaches one), its results read from its summary.
-!>  2. Each axis gives the error of each level with the observed order
-!>     checked against the asymptotic range, else a safe bound
-!>     (src/accuracy/error_estimate.f90).
-!>  3. The run chosen is the cheapest (k, j) whose time error, mesh error
-!>     and their interaction meet the target for every result: a run done,
-!>     or one to make (then made, and its interaction measured), the next
-!>     time level on mesh 0 among them (predicted from the time axis's
-!>     order), each within the cap. When none does, the axis whose part of
-!>     the error exceeds half the target is refined by one level (both,
-!>     when both do), and 3 again; when none fits the cap, the run stops
-!>     there.
-!>  4. One run with the other theory (linear against von Karman) and,
-!>     when the laminate has D16, D26, one with the other bend-twist model
-!>     (the paper's averaged reduced plate against the full plate that
-!>     keeps them): their relative changes say which model the scene
-!>     requires. First on the chosen mesh at dt0, where they cost 2^k
-!>     times less than at dt0/2^k; again at the chosen settings only when
-!>     the change at dt0, give or take twice the time errors of both
-!>     steps and a tenth of the change, could turn the verdict. When a run
-!>     at the chosen settings would pass the cap, each comparison at the
-!>     costliest ladder run whose variant fits, the full plate priced at
-!>     its own elements and beside the theory's variant.
-!>  5. <prefix>_summary.dat and <prefix>_accuracy.dat
-!>     (src/accuracy/accuracy_report.f90); the runs stay in <prefix>_acc/.
-!> Exit status 0 when the target is met, exit_not_met (3) when the cap or
-!> the ladder's limits stopped it first (the results then carry the errors
-!> reached), 1 on an error.
+!> An accuracy run: `impact --accuracy TOL deck.nml` (or &accuracy target):
+!> each result with an estimate of its discretisation error, dt and the
+!> mesh refined the cheapest way until the results targeted are within TOL
+!> or the cap stops it (docs/ACCURACY.md).
+!>  1. the ladder: level 0 (ladder_mesh), dt halved on mesh 0, the mesh
+!>     refined at dt0, each run a child process (src/accuracy/accuracy_runs.f90);
+!>  2. the error of each axis and of each run (src/accuracy/accuracy_ladder.f90);
+!>  3. the cheapest run that meets the target (choose_run), else an axis
+!>     refined (refine), within the cap;
+!>  4. the models compared (src/accuracy/model_comparison.f90);
+!>  5. <prefix>_summary.dat, <prefix>_accuracy.dat (src/accuracy/accuracy_report.f90).
+!> A stop signal ends the runs going and keeps those done (the report with
+!> the errors reached); --restart continues each run from its restart point.
+!> Exit status 0 when met, exit_not_met (3) when not, 128 + N after signal N.
 module accuracy_driver
-   use, intrinsic :: iso_fortran_env, only: int64
+   use, intrinsic :: iso_fortran_env, only: int64, error_unit
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t, strength_given, find_var
    use command_line, only: options_t
    use number_text, only: int_str, real_short
-   use materials, only: laminate_t
-   use scene_model, only: scene_t, model_laminate, choose_domain, coupling_tol
+   use scene_model, only: scene_t
    use plate_model, only: model_t, build_model
    use mesh, only: mesh_t
    use scene_settings, only: settings_t, scene_settings_of
-   use file_system, only: make_directories
+   use file_system, only: make_directories, path_kind, path_regular, file_size, remove_file, file_lock_t, lock_file, &
+      unlock_file
    use result_files, only: results_claim_t, claim_results, release_results
-   use child_process, only: program_path, usable_cpus
+   use child_process, only: program_path, usable_cpus, pass_stops_to_children, stop_caught
    use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, state_failed, &
-      state_skipped, predicted_run_cost, ladder_name
-   use accuracy_ladder, only: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, time_partner, &
+      state_skipped, predicted_run_cost, ladder_name, error_scale
+   use accuracy_ladder, only: axis_t, judged_t, choice_t, build_axis, judge_run, choose_run, final_run, ladder_run, &
+      time_partner, cross_needed, &
       done_run, axis_time, axis_mesh
    use accuracy_report, only: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
-      report_terminal, model_changes, model_required
+      report_terminal
+   use model_comparison, only: compare_models
    implicit none
    private
-   public :: run_accuracy, exit_not_met, comparison_base, variant_bases, ladder_mesh, bend_twist_variant, coarse_base, &
-             verdict_settled
+   public :: run_accuracy, exit_not_met, ladder_mesh, targeted_results
 
    !> Exit status of an accuracy run that did not meet its target.
    integer, parameter :: exit_not_met = 3
+   !> The files of the prefix an accuracy run claims: its own, then those
+   !> of a plain run, which it removes (the run chosen's are in <prefix>_acc/).
+   character(len=*), parameter :: own_files(6) = [character(len=16) :: '_accuracy.dat', '_summary.dat', &
+      '_history.dat', '.h5', '.xdmf', '.restart']
    !> The ladder's limits: time levels (dt0/2^10), mesh levels, the smallest
    !> dt and the largest element count of the deck's schema.
    integer, parameter :: max_time_levels = 11, max_mesh_levels = 12, max_elements = 10000
    real(dp), parameter :: min_dt = 1.0e-10_dp
+   !> The cap when the deck gives none, in runs of level 0: the first
+   !> three levels of both axes cost about 25 to 60 of them (steps 1 + 2 + 4,
+   !> meshes about 4 and 13, the model comparisons), which leaves room for
+   !> a level or two more on each axis, and no more (a user who wants more
+   !> sets &accuracy max_cpu_s; the status says what the next run costs).
+   integer, parameter :: default_cap_times = 100
    !> Levels of each axis at the start.
    integer, parameter :: first_levels = 3
    !> Grading of level 0's mesh when the ladder grades it (ladder_mesh) (-).
@@ -91,7 +68,7 @@ contains
       type(options_t), intent(in) :: opts           !< the command line (the deck's path, the --set values)
       type(deck_t), intent(in) :: deck              !< the deck, as read and checked
       integer, intent(in) :: unit                   !< standard output
-      integer, intent(out) :: exit_code             !< 0: target met; exit_not_met
+      integer, intent(out) :: exit_code             !< 0: target met; exit_not_met; 128 + N: stopped by signal N
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
       type(results_claim_t) :: claim
@@ -102,7 +79,9 @@ contains
       type(accuracy_outcome_t) :: out
       type(comparison_t) :: cmp(2)
       type(deck_t) :: base                          ! the deck with level 0's mesh (ladder_mesh)
+      type(deck_t) :: claimed                       ! the deck, overwriting with --restart
       integer(int64) :: wall0, wall1, rate
+      integer :: i, ignored
 
       exit_code = 1
       call system_clock(wall0, rate)
@@ -116,19 +95,62 @@ contains
          errmsg = '--accuracy: give the deck as a file (its runs read it again), not on standard input'
          return
       end if
-      call claim_results(deck, [character(len=16) :: '_accuracy.dat', '_summary.dat'], claim, stat, errmsg)
+      call pass_stops_to_children()                 ! a stop ends the runs going, keeps those done
+      claimed = deck
+      claimed%overwrite = deck%overwrite .or. opts%restart
+      call take_dead_claim(deck%prefix // trim(own_files(1)))
+      call claim_results(claimed, own_files, claim, stat, errmsg)
       if (stat /= 0) return
+      do i = 3, size(own_files)                     ! a plain run's files: not the run chosen's
+         call remove_file(deck%prefix // trim(own_files(i)), ignored)
+      end do
       call set_up(opts, deck, unit, base, la, scene, runs, stat, errmsg)
       if (stat == 0) call climb(base, la, runs, tx, mx, out, stat, errmsg)
-      if (stat == 0) call compare_models(base, scene, la, runs, tx, mx, out, cmp, stat, errmsg)
+      if (stat == 0 .and. stop_caught() == 0) call compare_models(base, scene, la, runs, tx, mx, out, cmp, stat, errmsg)
+      if (stat == 0 .and. stop_caught() /= 0) call stopped_outcome(out, cmp)
       call system_clock(wall1)
       out%wall_s = real(wall1 - wall0, dp)/real(rate, dp)
-      if (stat == 0) call write_accuracy_table(deck, runs, tx, mx, out, stat, errmsg)
-      if (stat == 0) call write_accuracy_summary(deck, la, runs, out, cmp, stat, errmsg)
-      if (stat == 0) call report_terminal(unit, la, runs, out, cmp)
-      call release_results(claim, discard=stat /= 0)
+      if (stat == 0 .and. out%chosen > 0) call write_accuracy_table(deck, runs, tx, mx, out, stat, errmsg)
+      if (stat == 0 .and. out%chosen > 0) call write_accuracy_summary(deck, la, runs, out, cmp, stat, errmsg)
+      if (stat == 0 .and. out%chosen > 0) call report_terminal(unit, la, runs, out, cmp)
+      call release_results(claim, discard=stat /= 0 .or. out%chosen == 0)
       if (stat == 0) exit_code = merge(0, exit_not_met, out%met)
+      if (stop_caught() /= 0) exit_code = 128 + stop_caught()
+      if (stat == 0 .and. out%chosen == 0) write (error_unit, '(a)') 'impact: stopped by signal ' // &
+         int_str(stop_caught()) // ' before the first run of the ladder ended: no results written'
    end subroutine run_accuracy
+
+   !> The claim of a run killed before it wrote anything (kill -9): the
+   !> file `path` empty and locked by no process; removed, so that it
+   !> blocks neither a rerun nor --restart.
+   subroutine take_dead_claim(path)
+      character(len=*), intent(in) :: path          !< the first file of the claim
+      type(file_lock_t) :: lock
+      character(len=msg_len) :: iomsg
+      integer :: st
+      if (path_kind(path) /= path_regular) return
+      if (file_size(path) /= 0) return
+      call lock_file(path, lock, st, iomsg)
+      if (st /= 0) return                           ! a run holds it
+      call remove_file(path, st)
+      call unlock_file(lock)
+   end subroutine take_dead_claim
+
+   !> The outcome of a run stopped by a signal: its status, and the models
+   !> not compared.
+   subroutine stopped_outcome(out, cmp)
+      type(accuracy_outcome_t), intent(inout) :: out   !< the outcome
+      type(comparison_t), intent(inout) :: cmp(2)   !< the comparisons
+      integer :: i
+      out%status = 'stopped by signal ' // int_str(stop_caught()) // ': the results carry the errors reached; ' // &
+                   'impact --restart continues the ladder'
+      out%met = .false.
+      out%stop_signal = stop_caught()
+      cmp%what = ['theory    ', 'bend_twist']
+      do i = 1, 2
+         if (cmp(i)%run == 0 .and. len_trim(cmp(i)%note) == 0) cmp(i)%note = 'the run was stopped'
+      end do
+   end subroutine stopped_outcome
 
    !> The launcher (the program, the CPUs, the cap, the theory of every
    !> run, the strain gauge of the deck's mesh), the scene of the deck's
@@ -146,7 +168,7 @@ contains
       character(len=*), intent(inout) :: errmsg     !< what failed
       type(model_t) :: model
       character(len=msg_len) :: iomsg
-      character(len=:), allocatable :: why
+      character(len=:), allocatable :: why, cap
       integer :: l
 
       ! -- the model of the deck's settings: the theory 'auto' picks, pinned for every run
@@ -159,8 +181,14 @@ contains
       la%dir = deck%prefix // '_acc/'
       la%theory = scene%theory
       la%every_step = strength_given(deck)
+      la%restart = opts%restart
       la%cpus = usable_cpus()
-      la%cap = deck%accuracy_max_cpu_s
+      la%cap = huge(1.0_dp)
+      if (deck%given(find_var('accuracy', 'max_cpu_s'))) then
+         la%cap = deck%accuracy_max_cpu_s
+      else
+         la%cap_times = default_cap_times
+      end if
       la%gauge = model%gauge_xy                     ! the strain at one point on every mesh
       la%unit = unit
       base = deck
@@ -172,8 +200,10 @@ contains
          errmsg = deck%source // ": &output: prefix = '" // deck%prefix // "': " // trim(iomsg)
          return
       end if
+      cap = int_str(default_cap_times) // ' times the first run''s cpu time'
+      if (la%cap_times == 0) cap = real_short(la%cap) // ' s of cpu'
       write (unit, '(a)') 'accuracy: target ' // real_short(deck%accuracy_target) // ' (relative), cap ' // &
-         real_short(la%cap) // ' s of cpu, ' // int_str(la%cpus) // ' runs at a time; theory ' // &
+         cap // ', ' // int_str(la%cpus) // ' runs at a time; theory ' // &
          trim(la%theory) // ', domain ' // trim(scene%domain) // '; runs in ' // la%dir
       if (len(why) > 0) write (unit, '(a)') 'accuracy: ' // why
       allocate (runs(0))
@@ -323,9 +353,9 @@ contains
       type(accuracy_outcome_t), intent(out) :: out  !< the outcome
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
-      integer :: k, j, i, partner, done_before, next_kj(2)
-      real(dp) :: next_cost
-      logical :: found, more, over_cap, ran
+      integer :: k, j, i, partner, done_before, kj(2)
+      type(choice_t) :: c
+      logical :: more, ran
       character(len=224) :: why
 
       out%target = deck%accuracy_target
@@ -336,6 +366,7 @@ contains
          call run_planned(runs, la, stat, errmsg)
          if (stat /= 0) return
          ran = count(runs%state == state_done) > done_before
+         if (stop_caught() /= 0 .and. runs(1)%state /= state_done) return   ! out%chosen 0: nothing to give
          call check_failures(runs, la, stat, errmsg)
          if (stat /= 0) return
          if (runs(1)%state /= state_done) then
@@ -349,23 +380,25 @@ contains
          out%targeted = out%targeted .and. out%estimated
          call build_axis(runs, axis_time, out%estimated, tx)
          call build_axis(runs, axis_mesh, out%estimated, mx)
-         call choose_run(runs, la, tx, mx, out%target, out%targeted, k, j, found, &
-                         more_time=can_halve_dt(deck, tx), beyond_cap=over_cap, beyond_kj=next_kj, &
-                         beyond_cost=next_cost)
+         if (stop_caught() /= 0) exit
+         call say_errors(la%unit, runs, tx, mx, out)
+         c = choose_run(runs, la, tx, mx, out%target, out%targeted, can_halve_dt(deck, tx))
+         k = c%k;  j = c%j
          i = ladder_run(runs, k, j)
-         if (found .and. i > 0) then
-            if (runs(i)%state == state_done .and. time_partner(runs, k, j) < 0) then
+         if (c%found .and. i > 0) then
+            if (runs(i)%state == state_done .and. time_partner(runs, k, j) < 0 .and. .not. cross_needed(runs, k, j)) then
                out%met = .true.
                out%status = 'met'
                exit
             end if
          end if
-         if (found) then                            ! within the cap: the chosen run and its partner
+         if (c%found) then                          ! within the cap: the chosen run and its partner
             partner = time_partner(runs, k, j)
             call plan(runs, deck, la, k, j)
             if (partner >= 0) call plan(runs, deck, la, partner, j)
-         else if (over_cap .or. (la%cap_reached .and. .not. ran)) then
-            out%status = cap_status(runs, la, mx, over_cap, next_kj, next_cost)
+            if (cross_needed(runs, k, j)) call plan(runs, deck, la, 1, 1)
+         else if (c%beyond_cap .or. (la%cap_reached .and. .not. ran)) then
+            out%status = cap_status(runs, la, mx, c)
             exit
          else
             call refine(deck, la, runs, tx, mx, out, more, why)
@@ -375,28 +408,54 @@ contains
             end if
          end if
       end do
-      if (.not. out%met) call choose_run(runs, la, tx, mx, out%target, out%targeted, k, j, found, done_only=.true.)
+      if (.not. out%met) then
+         kj = final_run(runs, tx, mx, out%target, out%targeted)
+         k = kj(1);  j = kj(2)
+      end if
       out%chosen = ladder_run(runs, k, j)
       out%jd = judge_run(runs, tx, mx, k, j, out%target, out%targeted)
    end subroutine climb
+
+   !> One line of progress: the relative errors of the results targeted,
+   !> of the best run done so far (final_run).
+   subroutine say_errors(unit, runs, tx, mx, out)
+      integer, intent(in) :: unit                   !< standard output
+      type(run_t), intent(in) :: runs(:)            !< the runs
+      type(axis_t), intent(in) :: tx, mx            !< the axes
+      type(accuracy_outcome_t), intent(in) :: out   !< the target, the results targeted
+      type(judged_t) :: jd
+      character(len=:), allocatable :: line
+      real(dp) :: scale(nq)
+      integer :: kj(2), iq
+      kj = final_run(runs, tx, mx, out%target, out%targeted)
+      jd = judge_run(runs, tx, mx, kj(1), kj(2), out%target, out%targeted)
+      scale = error_scale(jd%value)
+      line = 'accuracy: errors so far, at ' // ladder_name(kj(1), kj(2)) // ':'
+      do iq = 1, nq
+         if (.not. out%targeted(iq)) cycle
+         line = line // ' ' // trim(result_keys(iq)) // ' ' // real_short(100.0_dp*jd%err(iq)/max(scale(iq), &
+                tiny(1.0_dp))) // ' %'
+      end do
+      write (unit, '(a)') line // ' (target ' // real_short(100.0_dp*out%target) // ' %)'
+      flush (unit)
+   end subroutine say_errors
 
    !> The status of a climb stopped at the cap (climb): the run that would
    !> come next, the candidate that meets the target beyond the cap
    !> (beyond: (k, j) = kj, its cost with its time partner's) or else the
    !> cheapest run the cap turned away, with its predicted cpu time and the
    !> total it would bring, so that a user sees what a larger max_cpu_s buys.
-   function cap_status(runs, la, mx, beyond, kj, cost) result(status)
+   function cap_status(runs, la, mx, choice) result(status)
       type(run_t), intent(in) :: runs(:)            !< the runs
       type(launcher_t), intent(in) :: la            !< the launcher (cost model, cap, spent)
       type(axis_t), intent(in) :: mx                !< the mesh axis
-      logical, intent(in) :: beyond                 !< a candidate met the target beyond the cap
-      integer, intent(in) :: kj(2)                  !< that candidate
-      real(dp), intent(in) :: cost                  !< its predicted cost (s)
+      type(choice_t), intent(in) :: choice          !< choose_run's (beyond the cap: the candidate, its cost)
       character(len=:), allocatable :: status
       character(len=:), allocatable :: what
-      real(dp) :: c, ci
-      integer :: i, pick, partner
-      if (beyond .and. kj(2) >= 0) then
+      real(dp) :: c, ci, cost
+      integer :: i, pick, partner, kj(2)
+      kj = choice%beyond_kj;  cost = choice%beyond_cost
+      if (choice%beyond_cap .and. kj(2) >= 0) then
          ! the candidate, unless it is done, and its time partner, when it needs one (choose_run's cost)
          c = cost
          what = ''
@@ -439,9 +498,11 @@ contains
       end function level_text
    end function cap_status
 
-   !> The results that must meet the target: &accuracy results, 'all' (or
-   !> nothing) or summary keys separated by blanks, commas or '+' (on the
-   !> command line: --set accuracy.results=peak_force_N+max_deflection_mm).
+   !> The results that must meet the target: &accuracy results, 'default'
+   !> (or nothing: those that converge smoothly, the peak force, the largest
+   !> deflection, the contact duration and with &strength the largest
+   !> failure index), 'all', or summary keys separated by blanks, commas or
+   !> '+' (on the command line: --set accuracy.results=peak_force_N+max_deflection_mm).
    subroutine targeted_results(deck, targeted, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
       logical, intent(out) :: targeted(nq)          !< which of result_keys
@@ -454,8 +515,10 @@ contains
       do cut = 1, len(rest)
          if (rest(cut:cut) == ',' .or. rest(cut:cut) == '+') rest(cut:cut) = ' '
       end do
-      targeted = trim(adjustl(rest)) == 'all' .or. len_trim(rest) == 0
-      if (all(targeted)) return
+      targeted = trim(adjustl(rest)) == 'all'
+      if (trim(adjustl(rest)) == 'default' .or. len_trim(rest) == 0) targeted = [.true., .true., .true., .false., &
+                                                                                  .false., .true.]
+      if (any(targeted)) return
       do
          rest = trim(adjustl(rest))
          if (len(rest) == 0) exit
@@ -466,7 +529,7 @@ contains
          end do
          if (iq == 0) then
             stat = 1
-            errmsg = deck%source // ': &accuracy: results: ' // rest(:cut - 1) // ' is not one of all ' // &
+            errmsg = deck%source // ': &accuracy: results: ' // rest(:cut - 1) // ' is not one of default all ' // &
                'peak_force_N max_deflection_mm contact_duration_us time_of_peak_us max_strain_y_back max_failure_index'
             return
          end if
@@ -520,15 +583,16 @@ contains
       character(len=*), intent(out) :: why         !< when not: why
       type(judged_t) :: jd
       logical :: time, mesh, can_time, can_mesh, step_bound(nq)
-      real(dp) :: allowed
+      real(dp) :: allowed, reference(nq)
       integer :: iq
 
       jd = judge_run(runs, tx, mx, tx%levels - 1, mx%levels - 1, out%target, out%targeted)
+      reference = error_scale(jd%value)
       time = .false.;  mesh = .false.;  step_bound = .false.
       why = 'dt and the mesh cannot be refined further (the ladder''s limits)'
       do iq = 1, nq
          if (.not. out%targeted(iq)) cycle
-         allowed = out%target*abs(jd%value(iq))
+         allowed = out%target*reference(iq)
          if (jd%err(iq) <= allowed) cycle
          if (jd%err_time(iq) > 0.5_dp*allowed) time = .true.
          ! a time read off the steps whose mesh part is the mesh axis's step
@@ -563,362 +627,5 @@ contains
       type(axis_t), intent(in) :: tx               !< the time axis
       can_halve_dt = tx%levels < max_time_levels .and. deck%dt/2.0_dp**tx%levels >= min_dt
    end function can_halve_dt
-
-   !> Step 4 of the module header: the other theory and the other
-   !> bend-twist model, run together. First at the chosen mesh's run at
-   !> the ladder's first step (coarse_base): a model's change hardly
-   !> depends on the step, and that run costs 2^k times less than the
-   !> chosen run at dt0/2^k. A comparison whose verdict that change
-   !> settles (verdict_settled) stays there; the others are made again at
-   !> the chosen settings when the cap allows, and keep the first
-   !> comparison when it does not. When the chosen run is at dt0 (or its
-   !> mesh has no run there), at the chosen settings, or, each comparison
-   !> for itself, at the costliest ladder run done whose variant the cap
-   !> still allows (variant_bases). The report names the run compared with.
-   subroutine compare_models(deck, scene, la, runs, tx, mx, out, cmp, stat, errmsg)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(scene_t), intent(in) :: scene            !< the scene of the deck's model
-      type(launcher_t), intent(inout) :: la         !< the launcher
-      type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
-      type(axis_t), intent(in) :: tx, mx            !< the time and mesh axes
-      type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the run chosen)
-      type(comparison_t), intent(out) :: cmp(2)     !< the two comparisons
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< what failed
-      character(len=*), parameter :: past_cap = 'a run at its settings would pass &accuracy max_cpu_s'
-      type(comparison_t) :: first(2), second(2)
-      real(dp) :: slack(nq)
-      integer :: coarse, i, base(2)
-      logical :: again(2)
-
-      again = .true.                                ! made (again) at the chosen settings
-      slack = 0.0_dp
-      coarse = coarse_base(runs, out%chosen)
-      if (coarse /= out%chosen) then
-         slack = change_slack(runs, tx, mx, out, coarse)
-         call make_variants(deck, scene, la, runs, variant_bases(deck, scene, runs, la, coarse, again), again, &
-                            first, stat, errmsg)
-         if (stat /= 0) return
-         cmp = first
-         do i = 1, 2
-            if (first(i)%base /= coarse) then      ! even that run would pass the cap
-               cmp(i)%at = past_cap
-               again(i) = .false.
-            else if (verdict_settled(first(i), runs, out, slack)) then
-               again(i) = .false.
-               cmp(i)%at = coarse_words(.true., change_band(model_changes(first(i), runs, out), slack), out)
-            end if
-         end do
-         base = variant_bases(deck, scene, runs, la, out%chosen, again)
-         do i = 1, 2
-            if (.not. again(i) .or. base(i) == out%chosen) cycle
-            again(i) = .false.                      ! the chosen settings would pass the cap
-            if (made(first(i))) &
-               cmp(i)%at = coarse_words(.false., change_band(model_changes(first(i), runs, out), slack), out)
-         end do
-         if (.not. any(again)) return
-      end if
-      call make_variants(deck, scene, la, runs, variant_bases(deck, scene, runs, la, out%chosen, again), again, &
-                         second, stat, errmsg)
-      if (stat /= 0) return
-      do i = 1, 2
-         if (.not. again(i)) cycle
-         if (second(i)%run == 0 .or. coarse == out%chosen .or. .not. made(cmp(i))) then
-            cmp(i) = second(i)
-            if (cmp(i)%base /= out%chosen) cmp(i)%at = past_cap
-         else if (made(second(i))) then
-            cmp(i) = second(i)
-         else                                       ! the cap skipped the second: the first stands
-            cmp(i)%at = coarse_words(.false., change_band(model_changes(cmp(i), runs, out), slack), out)
-         end if
-      end do
-
-   contains
-
-      !> The comparison's variant was made and has results.
-      logical function made(c)
-         type(comparison_t), intent(in) :: c
-         made = .false.
-         if (c%run > 0) made = runs(c%run)%state == state_done
-      end function made
-
-   end subroutine compare_models
-
-   !> The variants of the models of want (theory, bend-twist), each at the
-   !> settings of its run base(i), planned and run together; cmp says
-   !> what each compares.
-   subroutine make_variants(deck, scene, la, runs, base, want, cmp, stat, errmsg)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(scene_t), intent(in) :: scene            !< the scene of the deck's model
-      type(launcher_t), intent(inout) :: la         !< the launcher
-      type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
-      integer, intent(in) :: base(2)                !< the runs compared with: the theory's, the bend-twist's
-      logical, intent(in) :: want(2)                !< the theory, the bend-twist model
-      type(comparison_t), intent(out) :: cmp(2)     !< the two comparisons (run 0 where not wanted)
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< what failed
-      type(run_t) :: r
-      character(len=16) :: other
-
-      cmp%base = base
-      ! -- the theory
-      cmp(1)%what = 'theory'
-      cmp(1)%richer = 'nonlinear';  cmp(1)%simpler = 'linear'
-      cmp(1)%chosen_richer = la%theory /= 'linear'
-      other = merge(cmp(1)%simpler, cmp(1)%richer, cmp(1)%chosen_richer)
-      cmp(1)%compared = trim(other) // ' instead of ' // trim(la%theory)
-      if (want(1)) then
-         r = planned_copy(runs(base(1)))
-         r%role = 'theory'
-         r%name = trim(runs(base(1))%name) // '_' // trim(other)
-         r%variant(1) = "analysis.theory='" // trim(other) // "'"
-         runs = [runs, r]
-         cmp(1)%run = size(runs)
-      end if
-      ! -- D16, D26
-      cmp(2)%what = 'bend_twist'
-      r = planned_copy(runs(base(2)))
-      call bend_twist_variant(deck, scene, runs(base(2)), r, cmp(2))
-      if (want(2) .and. len_trim(cmp(2)%note) == 0) then
-         runs = [runs, r]
-         cmp(2)%run = size(runs)
-      end if
-      call run_planned(runs, la, stat, errmsg)
-   end subroutine make_variants
-
-   !> A run at the settings of run c, planned: nothing of c's outcome.
-   pure function planned_copy(c) result(r)
-      type(run_t), intent(in) :: c                  !< the run
-      type(run_t) :: r
-      r = c
-      r%state = state_planned;  r%cpu_s = 0.0_dp;  r%has = .false.;  r%variant = '';  r%status = ''
-      r%exit_code = 0;  r%pid = -1
-   end function planned_copy
-
-   !> The runs the two comparisons are made at, near run x: for each one
-   !> wanted, x when its variant fits the cap, else the costliest ladder
-   !> run done whose variant does (comparison_base), each variant priced
-   !> as it would run (the full plate of the bend-twist model at its own
-   !> elements). The theory's comes first; the bend-twist variant must
-   !> fit beside it.
-   function variant_bases(deck, scene, runs, la, x, want) result(base)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(scene_t), intent(in) :: scene            !< the scene of the deck's model
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      type(launcher_t), intent(in) :: la            !< the launcher (its cost model and spending)
-      integer, intent(in) :: x                      !< the run preferred
-      logical, intent(in) :: want(2)                !< the theory, the bend-twist model
-      integer :: base(2)
-      real(dp) :: cost_theory(size(runs)), cost_bt(size(runs)), reserve
-      type(run_t) :: r
-      type(comparison_t) :: c
-      integer :: i
-
-      do i = 1, size(runs)
-         cost_theory(i) = predicted_run_cost(runs(i), la)
-         r = planned_copy(runs(i))
-         call bend_twist_variant(deck, scene, runs(i), r, c)
-         cost_bt(i) = merge(predicted_run_cost(r, la), 0.0_dp, len_trim(c%note) == 0)   ! a note: no run
-      end do
-      base = x
-      reserve = 0.0_dp
-      if (want(1)) then
-         base(1) = comparison_base(runs, la, x, cost_theory)
-         if (la%spent + cost_theory(base(1)) <= la%cap) reserve = cost_theory(base(1))
-      end if
-      if (want(2)) base(2) = comparison_base(runs, la, x, cost_bt + reserve)
-   end function variant_bases
-
-   !> The run on the chosen run's mesh at the ladder's first step, dt0:
-   !> the ladder's mesh axis runs every mesh there. The chosen run itself
-   !> when it is at dt0 or that run is not done.
-   integer function coarse_base(runs, chosen) result(coarse)
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      integer, intent(in) :: chosen                 !< the run chosen
-      coarse = ladder_run(runs, 0, runs(chosen)%j)
-      if (coarse == 0) then
-         coarse = chosen
-      else if (runs(coarse)%state /= state_done) then
-         coarse = chosen
-      end if
-   end function coarse_base
-
-   !> How far a model's relative change at run coarse may lie from the
-   !> change at the chosen settings, for each result: the two runs of the
-   !> change each move by at most their time errors between the two steps,
-   !> the variant's taken as large as the base's (it differs from the base
-   !> by the change itself), so 2 (e_t(coarse) + e_t(chosen)) / |q|.
-   function change_slack(runs, tx, mx, out, coarse) result(slack)
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      type(axis_t), intent(in) :: tx, mx            !< the time and mesh axes
-      type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the run chosen, its errors)
-      integer, intent(in) :: coarse                 !< the run compared with first
-      real(dp) :: slack(nq)
-      type(judged_t) :: jd
-      jd = judge_run(runs, tx, mx, 0, runs(coarse)%j, out%target, out%estimated)
-      where (runs(coarse)%q /= 0.0_dp)
-         slack = 2.0_dp*(jd%err_time + out%jd%err_time)/abs(runs(coarse)%q)
-      elsewhere
-         slack = huge(1.0_dp)
-      end where
-   end function change_slack
-
-   !> The band about a model's changes within which the change at the
-   !> chosen step lies: slack (change_slack), and change_share of the
-   !> change itself for the variant's own time error, which the base's
-   !> does not bound when the models differ (by hand, 55 results of seven
-   !> scenes of check 12: the linear plate's strain in heavy_slow_thick
-   !> changed by 1.30 % at 5 us and 1.42 % at 1.25 us, where slack alone
-   !> is 0.105 %).
-   pure function change_band(change, slack) result(band)
-      real(dp), intent(in) :: change(nq)            !< the relative changes (model_changes)
-      real(dp), intent(in) :: slack(nq)             !< change_slack
-      real(dp) :: band(nq)
-      real(dp), parameter :: change_share = 0.1_dp   ! share of the change (-)
-      band = slack + change_share*abs(change)
-   end function change_band
-
-   !> Whether the verdict of comparison c (model_required) would be the
-   !> same for every change within its band (change_band) of the one
-   !> measured: a result that must meet the target changes by more than
-   !> target + band, or every one by at most target - band. A comparison
-   !> not made settles nothing.
-   logical function verdict_settled(c, runs, out, slack) result(settled)
-      type(comparison_t), intent(in) :: c           !< the comparison
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the target, the results targeted)
-      real(dp), intent(in) :: slack(nq)             !< change_slack
-      real(dp) :: change(nq), band(nq)
-      settled = .false.
-      if (c%run == 0) return
-      if (runs(c%run)%state /= state_done) return
-      change = model_changes(c, runs, out)
-      band = change_band(change, slack)
-      settled = model_required(max(abs(change) - band, 0.0_dp), out) .or. &
-                .not. model_required(abs(change) + band, out)
-   end function verdict_settled
-
-   !> Why a comparison stays at the chosen mesh's run at dt0 (settled: its
-   !> verdict is settled, else the chosen settings would pass the cap),
-   !> with the band of the results targeted.
-   function coarse_words(settled, band, out) result(text)
-      logical, intent(in) :: settled                !< verdict_settled
-      real(dp), intent(in) :: band(nq)              !< change_band
-      type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the results targeted)
-      character(len=:), allocatable :: text, bands
-      integer :: iq
-      bands = ''
-      do iq = 1, nq
-         if (.not. out%targeted(iq)) cycle
-         if (len(bands) > 0) bands = bands // ', '
-         bands = bands // trim(result_keys(iq)) // ' ' // real_short(100.0_dp*min(band(iq), 1.0_dp)) // ' %'
-      end do
-      text = 'the chosen mesh at the ladder''s first step; the change at the chosen step lies within ' // bands // &
-             ' of it (twice the time errors of both steps and a tenth of the change)'
-      if (settled) then
-         text = text // ', which leaves the verdict as it is'
-      else
-         text = text // ', which could turn the verdict; a run at the chosen settings would pass &accuracy max_cpu_s'
-      end if
-   end function coarse_words
-
-   !> The run a model is compared at: the chosen one, or when a run at
-   !> its settings would pass the cap, the costliest ladder run done at
-   !> whose settings one still fits (the chosen one when none does: its
-   !> variant is then skipped, and the report says so). cost(i): what the
-   !> variant at run i's settings is predicted to cost (s).
-   integer function comparison_base(runs, la, chosen, cost) result(base)
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      type(launcher_t), intent(in) :: la            !< the launcher (its spending and cap)
-      integer, intent(in) :: chosen                 !< the run chosen
-      real(dp), intent(in) :: cost(:)               !< the variant's predicted cost at each run's settings (s)
-      integer :: i
-      base = chosen
-      if (fits(chosen)) return
-      do i = 1, size(runs)
-         if (runs(i)%state /= state_done .or. runs(i)%role == 'theory' .or. runs(i)%role == 'bend_twist') cycle
-         if (.not. fits(i)) cycle
-         if (base == chosen) then
-            base = i
-         else if (cost(i) > cost(base)) then
-            base = i
-         end if
-      end do
-   contains
-      !> A run at the settings of run i stays within the cap.
-      logical function fits(i)
-         integer, intent(in) :: i
-         fits = la%c_base < 0.0_dp .or. la%spent + cost(i) <= la%cap
-      end function fits
-   end function comparison_base
-
-   !> The run of the other bend-twist model at the settings of run c
-   !> (module header, step 4), or a note why there is none.
-   subroutine bend_twist_variant(deck, scene, c, r, cmp)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(scene_t), intent(in) :: scene            !< the scene of the deck's model
-      type(run_t), intent(in) :: c                  !< the run chosen
-      type(run_t), intent(inout) :: r               !< the variant (c's settings in)
-      type(comparison_t), intent(inout) :: cmp      !< what it compares, or the note
-      real(dp) :: quarters
-      integer :: fx, fy
-
-      r%role = 'bend_twist';  r%variant = ''
-      cmp%richer = 'keep';  cmp%simpler = 'drop'           ! &laminate bend_twist
-      cmp%chosen_richer = .not. scene%averaged
-      if (all(scene%couplings(1:2) <= coupling_tol)) then
-         cmp%note = 'the laminate has D16 = D26 = 0'
-         return
-      end if
-      if (scene%domain == 'strip') then
-         cmp%note = 'a strip (cylindrical bending) has no full plate to compare with'
-         return
-      end if
-      quarters = merge(1.0_dp, merge(2.0_dp, 4.0_dp, scene%domain == 'half'), scene%domain == 'quarter')
-      if (scene%averaged) then
-         ! the full plate that keeps D16, D26: its counts, those of the domain mirrored
-         fx = 2;  fy = 2
-         if (deck%domain /= 'auto' .and. scene%domain == 'half') then
-            fx = merge(1, 2, deck%y0 == 0.0_dp);  fy = merge(2, 1, deck%y0 == 0.0_dp)
-         end if
-         if (deck%domain == 'full') then
-            fx = 1;  fy = 1
-         end if
-         r%nx = c%nx*fx;  r%ny = c%ny*fy
-         r%variant(1) = "mesh.domain='full'"
-         r%variant(2) = 'mesh.average_bend_twist=.false.'
-         r%variant(3) = "laminate.bend_twist='keep'"
-         ! nx, ny count the full plate's elements; a ladder run's count the
-         ! quarter's, doubled across the centre lines of an 'auto' domain
-         r%cost_factor = merge(1.0_dp/quarters, 1.0_dp, deck%domain == 'auto')
-         r%name = trim(c%name) // '_bend_twist_keep'
-         cmp%compared = 'the full plate with D16, D26 kept instead of D16 = D26 = 0 (' // trim(scene%domain) // ')'
-      else
-         ! the paper's averaging: D16 = D26 = 0, on the smallest domain that allows
-         r%variant(1) = "laminate.bend_twist='drop'"
-         r%cost_factor = reduced_quarters(deck)/quarters
-         r%name = trim(c%name) // '_bend_twist_drop'
-         cmp%compared = 'D16 = D26 = 0 (the paper''s averaging, section 3.1) instead of D16, D26 kept'
-      end if
-   end subroutine bend_twist_variant
-
-   !> The quarters of the domain 'auto' picks for the deck once D16 and
-   !> D26 are dropped (1 quarter, 2 half, 4 full).
-   real(dp) function reduced_quarters(deck) result(quarters)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(deck_t) :: d
-      type(scene_t) :: s
-      type(laminate_t) :: lmt
-      integer :: stat
-      character(len=msg_len) :: errmsg
-      d = deck
-      d%bend_twist = 'drop'
-      call model_laminate(d, lmt, s)
-      call choose_domain(d, s, stat, errmsg)
-      quarters = 4.0_dp
-      if (stat /= 0) return
-      if (s%domain == 'quarter') quarters = 1.0_dp
-      if (s%domain == 'half') quarters = 2.0_dp
-   end function reduced_quarters
 
 end module accuracy_driver

@@ -1,61 +1,29 @@
-!> The ladder of an accuracy run (src/accuracy/accuracy_driver.f90): two
-!> axes of runs from the deck's settings (time level 0, mesh level 0),
-!>
-!>   time axis: dt0, dt0/2, dt0/4, ... on mesh level 0 (runs (k, 0)),
-!>   mesh axis: nx, ny times mesh_factor^j, at dt0        (runs (0, j)),
-!>
+!> The ladder of an accuracy run: the time axis (dt0/2^k on mesh 0, runs
+!> (k, 0)), the mesh axis (nx, ny times mesh_factor^j at dt0, runs (0, j))
 !> and the runs that combine them, (k, j). Each axis gives the error of
-!> every level (src/accuracy/error_estimate.f90): the time axis with the
-!> order of Newmark's average acceleration rule, 2 (the asymptotic range
-!> taken as observed orders in [1.5, 2.7]); the mesh axis with an order
-!> no larger than 2 trusted, in range between 1 and 2.5 (the element size
-!> h = 1/sqrt(nx ny); a faster observed order is taken for what it mostly
-!> is on these meshes, a coarse mesh's error falling before the slow
-!> tail): the peak force on a mesh that does not resolve the
-!> Hertz contact disc is a rippled plateau, whose differences change sign
-!> and get the safe bound, or converges slowly (under a disc much smaller
-!> than the element the plate sees a point force, whose deflection grows
-!> like ln(1/h)), which the observed order shows. A time read off the
-!> steps (the contact's duration, the time of the peak, when every value
-!> of the axis is a whole number of its steps) cannot show a change below
-!> the step: the step of the axis's finest level is added to its error.
-!>
-!> On the mesh axis, while the element at the impact point is larger than
-!> the Hertz contact radius at the peak force (a = sqrt(R alpha), alpha =
-!> (F/k)^(2/3)), the results change like ln(1/h), and the change still to
-!> come (log_tail of src/accuracy/error_estimate.f90) is their error when
-!> the ladder's rule gives less; the rule's estimate of a result that
-!> shows no order there (an observed order below the range: the log's
-!> constant differences) is the tail alone.
-!>
-!> The error of a run (k, j) is its time level's error plus its mesh
-!> level's plus the interaction of the two, |q(k,j) - q(k,0) - q(0,j) +
-!> q(0,0)|: measured for a run done, for one to come the largest measured
-!> (0 until one is). On a finer mesh (j > 0) the time error is measured on
-!> that mesh too, from its own time levels next to the run's
-!> (time_on_mesh), and a run done without one there is not taken as
-!> meeting the target: the time error grows as the elements at the
-!> contact shrink; a run to come there is predicted with at least the
-!> time error measured at twice its step over 2^2. judge_run gives them;
-!> choose_run the cheapest run whose every error is within the target,
-!> its cost that of the runs it still needs: itself, and on a finer mesh
-!> its time partner (time_partner, the neighbouring time level that
-!> measures its time error) - 0 for a run done and measured - and within
-!> the cap (a run the cap turned away earlier is costed again). The next
-!> time level on mesh 0, not yet run, is a candidate too, predicted by
-!> continuing the time axis's observed order (judge_next_time). The mesh
-!> axis's next level is not predicted: its results on these meshes mostly
-!> carry a safe bound or the log tail, which predict no gain; refine adds
-!> it when its part dominates.
+!> every level (src/accuracy/error_estimate.f90): time at Newmark's order 2
+!> (range 1.5-2.7), mesh at no order above 2 trusted (range 1-2.5, h =
+!> 1/sqrt(nx ny)); a time read off the steps has the step added; while the
+!> element at the impact point is larger than the Hertz radius, the log
+!> tail bounds the mesh error from below. The error of a run (k, j): its
+!> time level's plus its mesh level's plus the interaction, |q(k,j) -
+!> q(k,0) - q(0,j) + q(0,0)|, no less than the largest measured; on a finer
+!> mesh its time error measured there too (time_on_mesh, time_partner).
+!> judge_run gives them; choose_run the cheapest run within the target and
+!> the cap, the next time level on mesh 0 among the candidates
+!> (judge_next_time).
 module accuracy_ladder
    use kinds, only: dp
    use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_grid_index, &
       continued_value
-   use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, predicted_run_cost
+   use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, predicted_run_cost, &
+      error_scale
    use history_reader, only: maxima_t
    implicit none
    private
-   public :: axis_t, judged_t, build_axis, judge_run, choose_run, ladder_run, time_partner, done_run, peak_spread, &
+   public :: axis_t, judged_t, choice_t, build_axis, judge_run, choose_run, final_run, ladder_run, time_partner, &
+             cross_needed, &
+             done_run, peak_spread, &
       axis_time, axis_mesh, time_results
 
    !> The two axes.
@@ -76,6 +44,15 @@ module accuracy_ladder
       type(estimate_t) :: finest(nq)              !< the estimate of the finest level
    end type axis_t
 
+   !> The run choose_run chose, and the cheapest the cap turned away.
+   type :: choice_t
+      integer :: k = 0, j = 0                     !< the run chosen
+      logical :: found = .false.                  !< it meets the target
+      logical :: beyond_cap = .false.             !< a run to make met the target but would pass the cap
+      integer :: beyond_kj(2) = -1                !< the cheapest such run (k, j)
+      real(dp) :: beyond_cost = huge(1.0_dp)      !< its predicted cost, its partner's included (s)
+   end type choice_t
+
    !> A run's results with their errors (the results' units).
    type :: judged_t
       real(dp) :: value(nq) = 0.0_dp              !< the results (predicted for a run to come)
@@ -87,6 +64,7 @@ module accuracy_ladder
       real(dp) :: worst = huge(1.0_dp)            !< largest err / (target |value|)
       logical :: meets = .false.                  !< every error within the target
       logical :: time_measured = .true.           !< its time error measured on its own mesh (time_on_mesh)
+      logical :: two_levels = .false.             !< and from two time levels there (Roache's Fs = 3)
    end type judged_t
 
 contains
@@ -176,9 +154,12 @@ contains
       on_steps = all(abs(steps - anint(steps)) <= 1.0e-6_dp*max(1.0_dp, abs(steps)))
    end function on_steps
 
-   !> The results of run (k, j) and their errors; for a run not done, its
-   !> results predicted as q(k,0) + q(0,j) - q(0,0), the interaction as
-   !> the largest measured, and its time error on a finer mesh no less
+   !> The results of run (k, j) and their errors; the interaction of the
+   !> step and the mesh no less than the largest measured (a mesh error
+   !> taken at dt0 need not hold at a small step: the peak force of a
+   !> light impactor on a thin plate moved by -0.4 % with the mesh at dt0,
+   !> +1.4 % at dt0/16); for a run not done, its
+   !> results predicted as q(k,0) + q(0,j) - q(0,0), and its time error on a finer mesh no less
    !> than the one measured there at dt x 2 over 2^2 (the method's order);
    !> for k = tx%levels (j = 0), the next time level (judge_next_time).
    function judge_run(runs, tx, mx, k, j, target, active) result(jd)
@@ -190,7 +171,7 @@ contains
       type(judged_t) :: jd
       integer :: i, i0, ik, ij, im
       real(dp) :: below(nq)
-      logical :: measured, known
+      logical :: measured, known, two
 
       if (k >= tx%levels) then                     ! the next time level, not yet planned
          jd = judge_next_time(runs, tx, mx, target, active)
@@ -203,7 +184,7 @@ contains
       end if
       if (i > 0) then
          jd%value = runs(i)%q
-         jd%err_cross = abs(runs(i)%q - runs(ik)%q - runs(ij)%q + runs(i0)%q)
+         jd%err_cross = max(abs(runs(i)%q - runs(ik)%q - runs(ij)%q + runs(i0)%q), largest_cross(runs, tx, mx))
       else
          jd%value = runs(ik)%q + runs(ij)%q - runs(i0)%q
          jd%err_cross = largest_cross(runs, tx, mx)
@@ -211,10 +192,10 @@ contains
       jd%err_time = tx%err(k + 1, :)
       jd%err_mesh = mx%err(j + 1, :)
       measured = .true.
-      if (j > 0) call time_on_mesh(runs, k, j, active, tx%finest%asymptotic, jd%err_time, measured)
+      if (j > 0) call time_on_mesh(runs, k, j, active, tx%finest%asymptotic, jd%err_time, measured, jd%two_levels)
       if (i == 0 .and. j > 0 .and. k > 0) then     ! a run to come: its mesh's time error at dt x 2, the order's share
          below = 0.0_dp
-         call time_on_mesh(runs, k - 1, j, active, tx%finest%asymptotic, below, known)
+         call time_on_mesh(runs, k - 1, j, active, tx%finest%asymptotic, below, known, two)
          if (known) jd%err_time = max(jd%err_time, below/2.0_dp**order_theory(axis_time))
       end if
       if (i == 0) measured = .true.                ! a run to come: predicted, judged again when done
@@ -229,8 +210,8 @@ contains
    !> difference, for dt halved), and its error
    !> what the axis's rule would give with that level added (its floor,
    !> the step, halved); for any other result the finest level's value
-   !> and error (a safe bound predicts no gain). Its mesh error mesh 0's;
-   !> no interaction (j = 0). The value: continued_value of
+   !> and error (a safe bound predicts no gain). Its mesh error mesh 0's,
+   !> the interaction the largest measured. The value: continued_value of
    !> src/accuracy/error_estimate.f90.
    function judge_next_time(runs, tx, mx, target, active) result(jd)
       type(run_t), intent(in) :: runs(:)          !< the runs
@@ -256,6 +237,7 @@ contains
          jd%err_time(iq) = next%error
       end do
       jd%err_mesh = mx%err(1, :)
+      jd%err_cross = largest_cross(runs, tx, mx)
       call weigh(jd, runs(tx%run(n)), target, active, .true.)
    end function judge_next_time
 
@@ -269,7 +251,7 @@ contains
       real(dp), intent(in) :: target              !< the relative error asked for
       logical, intent(in) :: active(nq)           !< the results estimated
       logical, intent(in) :: measured             !< the time error measured on its mesh
-      real(dp) :: scale
+      real(dp) :: scale, reference(nq)
       integer :: iq
       jd%err = jd%err_time + jd%err_mesh + jd%err_cross
       if (jd%err(iq_force) < huge(1.0_dp) .and. maxima_run%has(iq_peak_time)) then
@@ -278,9 +260,10 @@ contains
          jd%err(iq_peak_time) = jd%err(iq_peak_time) + jd%err_maxima(iq_peak_time)
       end if
       jd%worst = 0.0_dp
+      reference = error_scale(jd%value)
       do iq = 1, nq
          if (.not. active(iq)) cycle
-         scale = target*abs(jd%value(iq))
+         scale = target*reference(iq)
          if (scale > 0.0_dp) then
             jd%worst = max(jd%worst, jd%err(iq)/scale)
          else if (jd%err(iq) > 0.0_dp) then
@@ -326,13 +309,14 @@ contains
    !> Two levels, where mesh 0's time axis is in its asymptotic range:
    !> Roache's grid convergence index at the method's order (two_grid_index
    !> of src/accuracy/error_estimate.f90; r = 2: |d|); else the axis's rule.
-   subroutine time_on_mesh(runs, k, j, active, asymptotic, err_time, measured)
+   subroutine time_on_mesh(runs, k, j, active, asymptotic, err_time, measured, two)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< the run's levels
       logical, intent(in) :: active(nq)           !< the results estimated
       logical, intent(in) :: asymptotic(nq)       !< mesh 0's time axis in its asymptotic range, by result
       real(dp), intent(inout) :: err_time(nq)     !< mesh 0's time error in; the larger out
       logical, intent(out) :: measured            !< a neighbouring time level done on mesh j
+      logical, intent(out) :: two                 !< measured from two levels only
       type(axis_t) :: ax
       real(dp) :: finest
       integer :: iq, k0
@@ -343,6 +327,7 @@ contains
       end do
       call build_axis(runs, axis_time, active, ax, mesh=j, first=k0)
       measured = ax%levels >= 2 .and. k - k0 < ax%levels
+      two = measured .and. ax%levels == 2
       if (.not. measured) return
       do iq = 1, nq
          if (.not. active(iq)) cycle
@@ -367,6 +352,16 @@ contains
       if (done_run(runs, k + 1, j)) return
       p = merge(k - 1, 1, k > 0)
    end function time_partner
+
+   !> Whether run (k, j) needs the combined run (1, 1) made to bound its
+   !> interaction of the step and the mesh: it lies on mesh 0 at a smaller
+   !> step than dt0, its mesh error measured at dt0, and no interaction has
+   !> been measured yet.
+   pure logical function cross_needed(runs, k, j)
+      type(run_t), intent(in) :: runs(:)          !< the runs
+      integer, intent(in) :: k, j                 !< the run's levels
+      cross_needed = k > 0 .and. j == 0 .and. .not. any(runs%state == state_done .and. runs%role == 'combined')
+   end function cross_needed
 
    !> True when the ladder run (k, j) is done.
    pure logical function done_run(runs, k, j)
@@ -396,82 +391,53 @@ contains
 
    !> The cheapest run (k, j) of the axes whose results all meet the
    !> target: its cost is that of the runs still to make for it, itself
-   !> and its time partner (the run on its mesh that measures its time
-   !> error, time_partner); a run done and measured costs nothing. With
-   !> more_time, the next time level on mesh 0 (tx%levels, 0) is a
-   !> candidate too, predicted from the time axis's order
-   !> (judge_next_time). A candidate whose cost would take the cpu time
-   !> past the cap is not taken (beyond_cap says one met the target); one
-   !> that costs nothing is, even when the runs made took more than
-   !> predicted and the time spent is past the cap already; a run the cap
-   !> turned away before (skipped, while dearer runs were predicted to go)
-   !> is costed as one to make, and may fit now. found is false when none
-   !> meets it; (k, j) is then the run done with the smallest worst ratio
-   !> (the best there is). With done_only, only the runs done and measured
-   !> are candidates (the final choice).
-   subroutine choose_run(runs, la, tx, mx, target, active, k, j, found, done_only, more_time, beyond_cap, &
-                         beyond_kj, beyond_cost)
+   !> and its time partner (time_partner); a run done and measured costs
+   !> nothing; on mesh 0 below dt0, the run (1, 1) too while no interaction
+   !> is measured (cross_needed). With more_time, the next time level on mesh 0 (tx%levels, 0)
+   !> is a candidate too (judge_next_time). A candidate whose cost would
+   !> take the cpu time past the cap is not taken (beyond_cap says one met
+   !> the target); one that costs nothing is, even past the cap; a run the
+   !> cap turned away before is costed as one to make. Not found: (k, j)
+   !> the run done with the smallest worst ratio (the best there is).
+   function choose_run(runs, la, tx, mx, target, active, more_time) result(c)
       type(run_t), intent(in) :: runs(:)          !< the runs
       type(launcher_t), intent(in) :: la          !< the launcher (its cost model, the cap, the cpu time spent)
       type(axis_t), intent(in) :: tx, mx          !< the axes
       real(dp), intent(in) :: target              !< the relative error asked for
       logical, intent(in) :: active(nq)           !< the results estimated
-      integer, intent(out) :: k, j                !< the run chosen
-      logical, intent(out) :: found               !< it meets the target
-      logical, intent(in), optional :: done_only  !< only the runs done (the final choice)
-      logical, intent(in), optional :: more_time  !< the next time level may be planned
-      logical, intent(out), optional :: beyond_cap   !< a run to make met the target but would pass the cap
-      integer, intent(out), optional :: beyond_kj(2) !< with beyond_cap: the cheapest such run (k, j)
-      real(dp), intent(out), optional :: beyond_cost !< and its predicted cost, its partner's included (s)
+      logical, intent(in) :: more_time            !< the next time level may be planned
+      type(choice_t) :: c
       type(judged_t) :: jd
-      real(dp) :: cost, best_cost, best_worst, over_cost
-      integer :: kk, jj, p, k_last, over_kj(2)
-      logical :: done, final, over
+      real(dp) :: cost, best_cost, best_worst
+      integer :: kk, jj, p
+      logical :: done
 
-      final = .false.
-      over = .false.
-      over_cost = huge(1.0_dp);  over_kj = -1
-      if (present(done_only)) final = done_only
-      k_last = tx%levels - 1
-      if (present(more_time)) then
-         if (more_time .and. .not. final) k_last = tx%levels
-      end if
-      found = .false.
-      k = 0;  j = 0
       best_cost = huge(1.0_dp);  best_worst = huge(1.0_dp)
-      do kk = 0, k_last
+      do kk = 0, merge(tx%levels, tx%levels - 1, more_time)
          do jj = 0, merge(0, mx%levels - 1, kk == tx%levels)
             jd = judge_run(runs, tx, mx, kk, jj, target, active)
             done = done_run(runs, kk, jj)
-            if (final .and. .not. (done .and. jd%time_measured)) then
-               if (done .and. .not. found .and. jd%worst < best_worst) then
-                  k = kk;  j = jj;  best_worst = jd%worst
-               end if
-               cycle
-            end if
             cost = 0.0_dp
             if (.not. done) cost = run_cost(kk, jj)
             p = time_partner(runs, kk, jj)
             if (p >= 0) then
                if (.not. done_run(runs, p, jj)) cost = cost + run_cost(p, jj)
             end if
-            if (jd%worst <= 1.0_dp .and. .not. final .and. cost > 0.0_dp .and. la%spent + cost > la%cap) then
-               over = .true.
-               if (cost < over_cost) then
-                  over_cost = cost;  over_kj = [kk, jj]
+            if (cross_needed(runs, kk, jj) .and. mx%levels > 1) cost = cost + run_cost(1, 1)
+            if (jd%worst <= 1.0_dp .and. cost > 0.0_dp .and. la%spent + cost > la%cap) then
+               if (cost < c%beyond_cost) then
+                  c%beyond_cost = cost;  c%beyond_kj = [kk, jj]
                end if
             else if (jd%worst <= 1.0_dp) then
-               if (.not. found .or. cost < best_cost .or. (cost == best_cost .and. jd%worst < best_worst)) then
-                  found = .true.;  k = kk;  j = jj;  best_cost = cost;  best_worst = jd%worst
+               if (.not. c%found .or. cost < best_cost .or. (cost == best_cost .and. jd%worst < best_worst)) then
+                  c%found = .true.;  c%k = kk;  c%j = jj;  best_cost = cost;  best_worst = jd%worst
                end if
-            else if (.not. found .and. done .and. jd%worst < best_worst) then
-               k = kk;  j = jj;  best_worst = jd%worst
+            else if (.not. c%found .and. done .and. jd%worst < best_worst) then
+               c%k = kk;  c%j = jj;  best_worst = jd%worst
             end if
          end do
       end do
-      if (present(beyond_cap)) beyond_cap = over .and. .not. found
-      if (present(beyond_kj)) beyond_kj = over_kj
-      if (present(beyond_cost)) beyond_cost = over_cost
+      c%beyond_cap = c%beyond_kj(1) >= 0 .and. .not. c%found
 
    contains
 
@@ -483,6 +449,34 @@ contains
          probe%nx = runs(mx%run(jr + 1))%nx;  probe%ny = runs(mx%run(jr + 1))%ny
          run_cost = predicted_run_cost(probe, la)
       end function run_cost
-   end subroutine choose_run
+   end function choose_run
+
+   !> The final choice among the runs done: the one meeting the target
+   !> (its time error measured) with the smallest worst ratio, else the
+   !> one with the smallest worst ratio.
+   function final_run(runs, tx, mx, target, active) result(kj)
+      type(run_t), intent(in) :: runs(:)          !< the runs
+      type(axis_t), intent(in) :: tx, mx          !< the axes
+      real(dp), intent(in) :: target              !< the relative error asked for
+      logical, intent(in) :: active(nq)           !< the results estimated
+      integer :: kj(2)
+      type(judged_t) :: jd
+      real(dp) :: best(2)
+      integer :: kk, jj, other(2)
+      best = huge(1.0_dp);  kj = -1;  other = 0
+      do kk = 0, tx%levels - 1
+         do jj = 0, mx%levels - 1
+            if (.not. done_run(runs, kk, jj)) cycle
+            jd = judge_run(runs, tx, mx, kk, jj, target, active)
+            if (jd%meets .and. .not. cross_needed(runs, kk, jj) .and. jd%worst < best(1)) then
+               kj = [kk, jj];  best(1) = jd%worst
+            end if
+            if (jd%worst < best(2)) then
+               other = [kk, jj];  best(2) = jd%worst
+            end if
+         end do
+      end do
+      if (kj(1) < 0) kj = other
+   end function final_run
 
 end module accuracy_ladder

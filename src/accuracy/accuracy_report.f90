@@ -23,7 +23,8 @@ module accuracy_report
       write_column_block
    use summary_reader, only: summary_t, read_summary
    use accuracy_runs, only: run_t, launcher_t, nq, iq_peak_time, result_keys, result_units, state_done, state_failed, &
-      state_skipped
+      error_scale, &
+      state_skipped, state_stopped
    use accuracy_ladder, only: axis_t, judged_t, judge_run
    implicit none
    private
@@ -47,7 +48,8 @@ module accuracy_report
    type :: accuracy_outcome_t
       real(dp) :: target = 0.0_dp                  !< the relative error asked for
       logical :: met = .false.                     !< every error within it
-      character(len=240) :: status = ''            !< 'met', 'cap reached: ...', 'not met: ...'
+      character(len=240) :: status = ''            !< 'met', 'cap reached: ...', 'not met: ...', 'stopped ...'
+      integer :: stop_signal = 0                   !< the stop signal that ended it, 0: none
       integer :: chosen = 0                        !< the run whose results are given
       type(judged_t) :: jd                         !< its results and errors
       logical :: estimated(nq) = .false.           !< the results estimated
@@ -182,8 +184,10 @@ contains
       type(summary_item_t), allocatable :: items(:)
       type(run_t) :: r
       integer :: i, iq
+      real(dp) :: reference(nq)
 
       r = runs(out%chosen)
+      reference = error_scale(out%jd%value)
       call read_summary(la%dir // trim(r%name) // '_summary.dat', s, stat, errmsg)
       if (stat /= 0) return
       allocate (items(0))
@@ -192,8 +196,11 @@ contains
       end do
       call summary_real(items, 'accuracy_target', 'accuracy_target', '-', out%target, 1.0_dp)
       call summary_text(items, 'accuracy_status', trim(out%status))
+      if (out%stop_signal > 0) call summary_integer(items, 'accuracy_stop_signal', out%stop_signal)
       call summary_text(items, 'accuracy_values', 'of the run chosen, not extrapolated')
       call summary_text(items, 'time_error_measured', trim(time_words(out%jd%time_measured)))
+      if (out%jd%two_levels) call summary_text(items, 'time_error_estimate', &
+                                               'two levels: Roache''s grid convergence index, Fs = 3')
       call summary_text(items, 'chosen_run', la%dir // trim(r%name))
       call summary_real(items, 'chosen_dt_us', 'chosen_dt', 's', r%dt, 1.0e6_dp)
       call summary_integer(items, 'chosen_nx', r%nx)
@@ -211,7 +218,7 @@ contains
          if (iq == iq_peak_time) call summary_real(items, trim(result_keys(iq)) // '_error_maxima', &
             trim(result_keys(iq)) // '_error_maxima', trim(result_units(iq)), out%jd%err_maxima(iq), 1.0_dp)
          call summary_real(items, trim(result_keys(iq)) // '_relative_error', trim(result_keys(iq)) // &
-                           '_relative_error', '-', relative(out%jd%err(iq), out%jd%value(iq)), 1.0_dp)
+                           '_relative_error', '-', relative(out%jd%err(iq), reference(iq)), 1.0_dp)
       end do
       do i = 1, size(cmp)
          call comparison_items(items, cmp(i), runs, out)
@@ -272,8 +279,12 @@ contains
       type(run_t) :: r
       integer :: iq, i
       character(len=msg_len) :: line
+      real(dp) :: reference(nq)
       r = runs(out%chosen)
+      reference = error_scale(out%jd%value)
       write (unit, '(a)') 'accuracy: ' // trim(out%status)
+      if (out%jd%two_levels) write (unit, '(a)') 'accuracy: the time error on the chosen mesh is from two ' // &
+         'time levels: Roache''s grid convergence index, factor of safety 3'
       if (.not. out%jd%time_measured) write (unit, '(a)') 'accuracy: the time error was not measured on ' // &
          'the chosen mesh: it is ' // unmeasured_time
       if (out%jd%err_maxima(iq_peak_time) > 0.0_dp) write (unit, '(a)') 'accuracy: ' // &
@@ -286,7 +297,7 @@ contains
       do iq = 1, nq
          if (.not. out%estimated(iq)) cycle
          write (line, '(a,es14.6,a,es10.3,a,f7.3,a,es10.3,a,es10.3,a)') result_keys(iq), out%jd%value(iq), ' +- ', &
-            out%jd%err(iq), ' (', 100.0_dp*relative(out%jd%err(iq), out%jd%value(iq)), ' %; dt ', &
+            out%jd%err(iq), ' (', 100.0_dp*relative(out%jd%err(iq), reference(iq)), ' %; dt ', &
             out%jd%err_time(iq), ', mesh ', out%jd%err_mesh(iq), ')'
          write (unit, '(a)') '  ' // trim(line)
       end do
@@ -355,11 +366,12 @@ contains
       type(comparison_t), intent(in) :: c          !< the comparison (its runs done)
       type(run_t), intent(in) :: runs(:)           !< the runs
       type(accuracy_outcome_t), intent(in) :: out  !< the outcome (the results estimated)
-      real(dp) :: change(nq)
+      real(dp) :: change(nq), reference(nq)
       integer :: iq
       change = 0.0_dp
+      reference = error_scale(runs(c%base)%q)
       do iq = 1, nq
-         if (out%estimated(iq)) change(iq) = relative(runs(c%run)%q(iq) - runs(c%base)%q(iq), runs(c%base)%q(iq))
+         if (out%estimated(iq)) change(iq) = relative(runs(c%run)%q(iq) - runs(c%base)%q(iq), reference(iq))
       end do
    end function model_changes
 
@@ -386,18 +398,20 @@ contains
       end if
    end function model_needed
 
-   !> Why a run has no results: skipped for the cap, or failed.
+   !> Why a run has no results: skipped for the cap, stopped, or failed.
    function not_done(run) result(text)
       type(run_t), intent(in) :: run               !< the run
       character(len=:), allocatable :: text
       if (run%state == state_skipped) then
          text = 'the run ' // trim(run%name) // ' would pass &accuracy max_cpu_s'
+      else if (run%state == state_stopped) then
+         text = 'the run ' // trim(run%name) // ' was stopped'
       else
          text = 'the run ' // trim(run%name) // ' failed (' // trim(run%status) // ')'
       end if
    end function not_done
 
-   !> The state of a run as a word: done, failed, skipped or planned.
+   !> The state of a run as a word: done, failed, skipped, stopped or planned.
    pure function state_word(state) result(word)
       integer, intent(in) :: state                 !< the run's state
       character(len=7) :: word
@@ -405,6 +419,7 @@ contains
       case (state_done);    word = 'done'
       case (state_failed);  word = 'failed'
       case (state_skipped); word = 'skipped'
+      case (state_stopped); word = 'stopped'
       case default;         word = 'planned'
       end select
    end function state_word

@@ -1,58 +1,29 @@
-!> The runs of an accuracy run (src/accuracy/accuracy_driver.f90): each is
-!> the program itself on the same deck, started as a child process
-!> (src/accuracy/child_process.f90) with its own settings,
-!>
-!>    impact --single [the user's --set ...]
-!>           --set output.prefix='<prefix>_acc/<run>' --set output.overwrite=.true.
-!>           --set output.hdf5=.false. --set analysis.dt=... --set mesh.nx=...
-!>           --set mesh.ny=... --set mesh.grading=... --set output.gauge_x=...
-!>           --set output.gauge_y=... --set analysis.theory=...
-!>           [the variant's] deck.nml
-!>
-!> its terminal output in <prefix>_acc/<run>.log, its results read back
-!> from <prefix>_acc/<run>_summary.dat (src/accuracy/summary_reader.f90).
-!>
+!> The runs of an accuracy run: each is the program itself on the same deck,
+!> a child process (src/accuracy/child_process.f90): impact --single
+!> [--restart] [the user's --set ...] --set output.prefix='<prefix>_acc/<run>'
+!> and its dt, nx, ny, grading, gauge, theory, variant; its output in
+!> <prefix>_acc/<run>.log, its results read from its summary.
 !> run_planned starts the planned runs, as many at a time as the process
-!> has CPUs, the dearest first once the costs are known (the longest
-!> first keeps the CPUs busy to the end: the cheap runs fill in beside
-!> it), and waits for them. The cost cap
-!> (&accuracy max_cpu_s): a run is started only when the cpu time spent,
-!> that of the runs still going and its own, each as the cost model
-!> predicts it, stay within the cap; else it is skipped and the cap is
-!> reached. The cost model predicts a run from the runs done. On a mesh
-!> already run (the same nx, ny and domain), from the run there at the
-!> nearest time level k' (the finer when two are as near): its cpu time
-!> times 2^(k - k'), the steps' ratio (the paper's clamped plate on 12 x
-!> 11: 1.04 and 2.02 s at 2.5 and 1.25 us in one ladder, 3.78 and 7.72 s
-!> at 0.625 and 0.3125 us in another; one solution of eq. (19) a step
-!> throughout). On a mesh not yet run, a run at time level k (dt0/2^k) on
-!> a mesh of n elements costs c 2^k (n/n0)^gamma times its variant's
-!> factor (the number of quarters its domain has against the ladder's, to
-!> the power gamma); gamma is the slope of log cost against log n between
-!> the two finest meshes done at dt0 (level 0 the coarser when only one
-!> mesh level is done), c fitted to the costliest run done. The slope
-!> falls as the mesh grows (the paper's plates, 132 to 675 elements: 1.9
-!> between the first two, 1.3-1.6 between the next two), so the nearest
-!> pair predicts the next mesh: 41 x 37 on the clamped plate cost 77 s,
-!> predicted 73 s by the two finest, 111 s by level 0 and the finest
-!> (make bench-accuracy, every result at 1 %). But c and gamma, which the
-!> finest meshes set, say little of mesh 0's cost: the paper's clamped
-!> plate at a cap of 40 s turned away t3_m0 on 12 x 11 predicted so at
-!> 15.4 s, which took 8.7 s; from t2_m0 there it is predicted at twice
-!> t2_m0's 3.8 s, and took 7.7 s.
-!> Until one run is done nothing is known, and the first run starts alone.
+!> has CPUs, the dearest first once the costs are known, each only when the
+!> cpu time spent and predicted stays within the cap; a stop signal ends
+!> them (state_stopped). The cost model: on a mesh already run, the run
+!> there at the nearest time level k' times 2^(k - k'); else c 2^k
+!> (n/n0)^gamma times the variant's factor, gamma the slope of log cost
+!> against log n between the two finest meshes done at dt0, c fitted to
+!> the costliest run done (measurements: docs/PERFORMANCE.md).
 module accuracy_runs
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: dp, msg_len
    use number_text, only: int_str, real_str, real_short
    use summary_reader, only: summary_t, read_summary, summary_value, summary_has, summary_index
-   use child_process, only: spawn_program, wait_child
+   use child_process, only: spawn_program, wait_child, stop_caught
    use history_reader, only: maxima_t, force_maxima
    implicit none
    private
    public :: nq, iq_force, iq_peak_time, result_keys, result_units, run_t, launcher_t, run_planned, run_settings, quoted
-   public :: state_planned, state_running, state_done, state_failed, state_skipped, predicted_cost, fit_costs
-   public :: predicted_run_cost, ladder_name
+   public :: state_planned, state_running, state_done, state_failed, state_skipped, state_stopped, predicted_cost, &
+             fit_costs
+   public :: predicted_run_cost, ladder_name, error_scale, iq_duration
 
    !> The results an accuracy run estimates: their summary keys (the unit
    !> in the key) and units; the last only with &strength.
@@ -60,11 +31,12 @@ module accuracy_runs
    character(len=*), parameter :: result_keys(nq) = [character(len=19) :: 'peak_force_N', 'max_deflection_mm', &
       'contact_duration_us', 'time_of_peak_us', 'max_strain_y_back', 'max_failure_index']
    character(len=*), parameter :: result_units(nq) = [character(len=2) :: 'N', 'mm', 'us', 'us', '-', '-']
-   !> The peak force's and the time of the peak's places in result_keys.
-   integer, parameter :: iq_force = 1, iq_peak_time = 4
+   !> The places in result_keys of the peak force, the contact duration and the time of the peak.
+   integer, parameter :: iq_force = 1, iq_duration = 3, iq_peak_time = 4
 
-   !> States of a run.
-   integer, parameter :: state_planned = 0, state_running = 1, state_done = 2, state_failed = 3, state_skipped = 4
+   !> States of a run (stopped: by a stop signal to the accuracy run).
+   integer, parameter :: state_planned = 0, state_running = 1, state_done = 2, state_failed = 3, state_skipped = 4, &
+                         state_stopped = 5
    !> Settings of a variant, at most.
    integer, parameter :: max_variant = 4
    !> The cost model's exponent of the element count before two meshes are measured, and its bounds.
@@ -101,11 +73,13 @@ module accuracy_runs
       character(len=8192), allocatable :: user_settings(:)   !< the user's --set values, in order
       character(len=32) :: theory = ''            !< the theory of every ladder run
       logical :: every_step = .false.             !< history every step (&strength: the failure index)
+      logical :: restart = .false.                !< --restart: each run continues from its restart point
       integer :: cpus = 1                         !< runs at a time
       integer :: n0 = 1                           !< elements of mesh level 0 (nx ny)
       real(dp) :: impact_element(2) = 0.0_dp      !< sides of the element at the impact point, level 0 (m)
       real(dp) :: gauge(2) = 0.0_dp               !< the strain gauge of level 0 (m, from the plate centre)
       real(dp) :: cap = huge(1.0_dp)              !< &accuracy max_cpu_s (s)
+      integer :: cap_times = 0                    !< > 0: the cap this many times the first run's cpu time
       real(dp) :: spent = 0.0_dp                  !< cpu time of the runs done (s)
       real(dp) :: c_base = -1.0_dp                !< cost of a level-0 run (s), < 0: unknown
       real(dp) :: gamma = gamma_default           !< the cost's exponent of the element count
@@ -126,11 +100,12 @@ contains
       integer, intent(out) :: stat                 !< 0 on success
       character(len=*), intent(inout) :: errmsg    !< what failed
       integer :: i, pid, code, running
+      logical :: known
 
       stat = 0
       running = 0
       do
-         launch: do while (running < la%cpus .and. stat == 0)
+         launch: do while (running < la%cpus .and. stat == 0 .and. stop_caught() == 0)
             i = next_run(runs, la, running)
             if (i == 0) exit launch
             if (la%c_base >= 0.0_dp .and. la%spent + sum(predicted_cost(runs, la, running=.true.)) &
@@ -154,14 +129,43 @@ contains
          running = running - 1
          runs(i)%pid = -1
          runs(i)%exit_code = code
+         if (stop_caught() /= 0 .and. code /= 0) then   ! ended by the stop: its restart point kept
+            runs(i)%state = state_stopped
+            cycle
+         end if
+         known = la%c_base >= 0.0_dp
          call finish_run(runs(i), la)
          call fit_costs(runs, la)
+         if (.not. known .and. la%c_base >= 0.0_dp) call state_price(runs, la)
       end do
-      if (stat == 0 .and. any(runs%state == state_planned)) then
+      if (stop_caught() /= 0) then
+         where (runs%state == state_planned) runs%state = state_stopped
+      else if (stat == 0 .and. any(runs%state == state_planned)) then
          where (runs%state == state_planned) runs%state = state_skipped
          la%cap_reached = .true.
       end if
    end subroutine run_planned
+
+   !> Once the first run is done: the cap, when it is a multiple of that
+   !> run, and on standard output the runs planned, their predicted cpu
+   !> and wall time, and the cap.
+   subroutine state_price(runs, la)
+      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(launcher_t), intent(inout) :: la        !< the launcher (its cost model, known now)
+      real(dp) :: cost(size(runs))
+      character(len=:), allocatable :: names
+      integer :: i
+      if (la%cap_times > 0) la%cap = real(la%cap_times, dp)*la%spent
+      cost = predicted_cost(runs, la, running=.false.)
+      names = ''
+      do i = 1, size(runs)
+         if (runs(i)%state == state_planned) names = names // ' ' // trim(runs(i)%name)
+      end do
+      write (la%unit, '(a)') 'accuracy: next,' // names // ': predicted ' // real_short(sum(cost)) // &
+         ' s of cpu, ' // real_short(max(maxval(cost), sum(cost)/la%cpus)) // ' s of wall; then more levels ' // &
+         'while the target is not met, within the cap of ' // real_short(la%cap) // ' s of cpu'
+      flush (la%unit)
+   end subroutine state_price
 
    !> The next run to start: the planned one predicted dearest, or while
    !> nothing is known of the costs the cheapest (level 0, which teaches
@@ -235,6 +239,17 @@ contains
       end do
    end function nearest_anchor
 
+   !> What each result's error is relative to: its own size, and for the
+   !> time of the peak the contact duration, the event's own time scale
+   !> (a time measured from the first contact is not more accurate for
+   !> being late).
+   pure function error_scale(q) result(scale)
+      real(dp), intent(in) :: q(nq)                !< the results
+      real(dp) :: scale(nq)
+      scale = abs(q)
+      scale(iq_peak_time) = abs(q(iq_duration))
+   end function error_scale
+
    !> The name of the ladder run (k, j): t<k>_m<j>.
    pure function ladder_name(k, j) result(name)
       integer, intent(in) :: k, j                  !< its time and mesh levels
@@ -287,6 +302,7 @@ contains
       character(len=8192), allocatable :: args(:)
       integer :: i
       args = [character(len=8192) :: '--single']       ! one run: the deck's &accuracy left aside
+      if (la%restart) args = [args, [character(len=8192) :: '--restart']]
       do i = 1, size(la%user_settings)
          call add(trim(la%user_settings(i)))
       end do

@@ -1,27 +1,42 @@
-!> Child processes of an accuracy run (src/accuracy/accuracy_driver.f90):
-!> the program runs itself, through the C library (src/system/c_library.f90),
-!> never through a shell.
-!>
-!>  - spawn_program: posix_spawn(3) of a program with an argument vector,
-!>    its standard output and error into a log file; the arguments are
-!>    passed as they are, one each, so nothing in them (a deck's path, a
-!>    prefix) is ever interpreted;
-!>  - wait_child: waitpid(2) for any child, with its exit status (128 + N
-!>    for a child the signal N ended, as a shell reports it);
-!>  - program_path: the running program, /proc/self/exe (readlink(2)),
-!>    else the command's argument 0;
-!>  - usable_cpus: the CPUs the process may run on, sched_getaffinity(2),
-!>    or Slurm's SLURM_CPUS_PER_TASK / SLURM_CPUS_ON_NODE when set and
-!>    smaller.
+!> Child processes of an accuracy run, through the C library, never a shell:
+!>  - spawn_program: posix_spawn(3) with an argument vector, each argument
+!>    as it is, the output into a log file (never through a link), the
+!>    child in a process group of its own;
+!>  - wait_child: waitpid(2) for any child (128 + N for a signal N);
+!>  - pass_stops_to_children: a stop signal (src/system/process_stop.f90) is
+!>    recorded (stop_caught) and sent on to every child's group: the
+!>    children end after their step, their restart points saved;
+!>  - die_with_parent: a child (IMPACT_PARENT_PID in its environment) is
+!>    killed with SIGKILL when its parent ends, however (PR_SET_PDEATHSIG);
+!>  - program_path, usable_cpus: /proc/self/exe; the CPUs the process may
+!>    use (sched_getaffinity, or Slurm's count when smaller).
+!> The children and the signal caught are module state, as in process_stop:
+!> a signal handler reaches nothing else.
 module child_process
-   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_ptr, c_null_ptr, c_null_char, c_loc, c_size_t, c_long
-   use c_library, only: spawn_actions_t, cpu_set_t, c_environ, c_posix_spawn, c_spawn_actions_init, &
-      c_spawn_actions_destroy, c_spawn_actions_addopen, c_spawn_actions_adddup2, c_waitpid, c_readlink, &
-      c_sched_getaffinity, o_write_no_follow
+   use, intrinsic :: iso_c_binding, only: c_int, c_int16_t, c_char, c_ptr, c_null_ptr, c_null_char, c_loc, c_size_t, &
+      c_long, c_funptr, c_funloc
+   use c_library, only: spawn_actions_t, spawn_attr_t, cpu_set_t, c_posix_spawn, c_spawn_actions_init, &
+      c_spawn_actions_destroy, c_spawn_actions_addopen, c_spawn_actions_adddup2, c_spawnattr_init, &
+      c_spawnattr_destroy, c_spawnattr_setflags, c_spawnattr_setpgroup, c_waitpid, c_readlink, &
+      c_sched_getaffinity, c_kill, c_getpid, c_getppid, c_prctl, c_signal, c_exit, o_write_no_follow
+   use process_stop, only: stop_signals
    use number_text, only: int_str
    implicit none
    private
-   public :: spawn_program, wait_child, program_path, usable_cpus
+   public :: spawn_program, wait_child, program_path, usable_cpus, pass_stops_to_children, stop_caught, &
+             die_with_parent
+
+   !> The environment variable that makes a child die with its parent.
+   character(len=*), parameter :: parent_variable = 'IMPACT_PARENT_PID'
+   !> POSIX_SPAWN_SETPGROUP (glibc), PR_SET_PDEATHSIG, SIGKILL.
+   integer(c_int16_t), parameter :: spawn_setpgroup = 2_c_int16_t
+   integer(c_int), parameter :: pr_set_pdeathsig = 1, sigkill = 9
+   !> ELOOP (Linux): what open(2) with O_NOFOLLOW says of a symbolic link.
+   integer(c_int), parameter :: eloop = 40
+   !> Children held at most (their process groups), and the signal caught (0: none).
+   integer, parameter :: max_children = 256
+   integer(c_int), volatile, save :: children(max_children) = 0
+   integer(c_int), volatile, save :: stopped = 0
 
    !> Permissions of a log file created here, before the umask: rw-rw-rw-.
    integer(c_int), parameter :: log_mode = int(o'666', c_int)
@@ -34,7 +49,9 @@ contains
 
    !> Starts the program `path` with the arguments `args` (argv[0] = path),
    !> its standard output and standard error written to `log_path`
-   !> (created, or emptied), standard input and the environment inherited.
+   !> (created, or emptied), standard input and the environment inherited
+   !> with IMPACT_PARENT_PID (die_with_parent), in a process group of its
+   !> own, which a stop signal reaches.
    subroutine spawn_program(path, args, log_path, pid, stat, errmsg)
       character(len=*), intent(in) :: path          !< the program
       character(len=*), intent(in) :: args(:)       !< its arguments, trailing blanks not part of them
@@ -43,25 +60,36 @@ contains
       integer, intent(out) :: stat                  !< 0, or the C library's error number
       character(len=*), intent(inout) :: errmsg     !< what failed
       type(spawn_actions_t) :: actions
+      type(spawn_attr_t) :: attr
       character(kind=c_char), allocatable, target :: chars(:)
-      type(c_ptr), allocatable :: argv(:)
+      character(kind=c_char), allocatable, target :: env(:)
+      type(c_ptr), allocatable :: argv(:), envp(:)
       integer(c_int) :: cpid, r
       integer :: i, at, ignored
 
       call pack_strings()
+      call child_environment(env, envp)
       pid = -1
       r = c_spawn_actions_init(actions)
-      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, c_text(log_path), o_write_no_follow, &
-                                             log_mode)
+      if (r == 0) r = c_spawnattr_init(attr)
+      if (r == 0) r = c_spawnattr_setflags(attr, spawn_setpgroup)
+      if (r == 0) r = c_spawnattr_setpgroup(attr, 0_c_int)          ! its own group, led by itself
+      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, c_text(log_path), &
+                                             o_write_no_follow, log_mode)
       if (r == 0) r = c_spawn_actions_adddup2(actions, fd_out, fd_err)
-      if (r == 0) r = c_posix_spawn(cpid, c_text(path), actions, c_null_ptr, argv, c_environ)
+      if (r == 0) r = c_posix_spawn(cpid, c_text(path), actions, attr, argv, envp)
       ignored = c_spawn_actions_destroy(actions)
+      ignored = c_spawnattr_destroy(attr)
       stat = r
       if (r /= 0) then
          errmsg = 'cannot start ' // path // ' (posix_spawn: error ' // int_str(r) // ')'
+         if (r == eloop) errmsg = log_path // ' is a symbolic link: a run writes no file through a link'
          return
       end if
       pid = cpid
+      i = findloc(children, 0_c_int, dim=1)
+      if (i > 0) children(i) = cpid
+      if (stopped /= 0) ignored = c_kill(-cpid, stopped)             ! a stop came while it started
 
    contains
 
@@ -89,6 +117,42 @@ contains
 
    end subroutine spawn_program
 
+   !> The environment of a child: IMPACT_PARENT_PID=<this process>, then
+   !> the process's own (/proc/self/environ), as C strings in env, envp
+   !> the pointers to them and a null pointer.
+   subroutine child_environment(env, envp)
+      character(kind=c_char), allocatable, target, intent(out) :: env(:)   !< the strings
+      type(c_ptr), allocatable, intent(out) :: envp(:)                    !< their pointers
+      character(kind=c_char), allocatable :: more(:)
+      character(len=:), allocatable :: ours
+      integer :: u, ios, n, i, k
+      ours = parent_variable // '=' // int_str(int(c_getpid())) // c_null_char
+      allocate (env(len(ours) + 4096))
+      n = len(ours)
+      env(:n) = transfer(ours, env, n)
+      open (newunit=u, file='/proc/self/environ', access='stream', form='unformatted', action='read', iostat=ios)
+      do while (ios == 0)
+         if (n == size(env)) then
+            allocate (more(2*n))
+            more(:n) = env
+            call move_alloc(more, env)
+         end if
+         read (u, iostat=ios) env(n + 1)
+         if (ios == 0) n = n + 1
+      end do
+      if (ios > 0 .or. env(n) /= c_null_char) n = len(ours)   ! unreadable: ours alone
+      close (u, iostat=ios)
+      allocate (envp(count(env(:n) == c_null_char) + 1))
+      envp(1) = c_loc(env(1))
+      k = 1
+      do i = 1, n - 1
+         if (env(i) /= c_null_char) cycle
+         k = k + 1
+         envp(k) = c_loc(env(i + 1))
+      end do
+      envp(size(envp)) = c_null_ptr
+   end subroutine child_environment
+
    !> Waits for any child of the process to end.
    subroutine wait_child(pid, exit_code)
       integer, intent(out) :: pid          !< the child that ended, -1 when there is none
@@ -101,12 +165,56 @@ contains
          pid = -1
          return
       end if
+      where (children == r) children = 0
       if (iand(status, 127) == 0) then
          exit_code = iand(ishft(status, -8), 255)
       else
          exit_code = 128 + iand(status, 127)
       end if
    end subroutine wait_child
+
+   !> From now on a stop signal is recorded (stop_caught) and sent on to
+   !> every child's process group.
+   subroutine pass_stops_to_children()
+      type(c_funptr) :: previous
+      integer :: k
+      stopped = 0
+      do k = 1, size(stop_signals)
+         previous = c_signal(stop_signals(k), c_funloc(on_stop))
+      end do
+   end subroutine pass_stops_to_children
+
+   !> The handler: records the signal and sends it to the children (kill(2)
+   !> is all it calls, which POSIX allows in a handler).
+   subroutine on_stop(signum) bind(c)
+      integer(c_int), value :: signum   !< the signal received
+      integer :: k
+      integer(c_int) :: r
+      stopped = signum
+      do k = 1, max_children
+         if (children(k) > 0) r = c_kill(-children(k), signum)
+      end do
+   end subroutine on_stop
+
+   !> The stop signal caught since pass_stops_to_children, 0 if none.
+   integer function stop_caught() result(signum)
+      signum = int(stopped)
+   end function stop_caught
+
+   !> In a child of pass_stops_to_children's process: SIGKILL when the
+   !> parent ends, and at once when it has already ended. To be called at
+   !> the start of the program; nothing without IMPACT_PARENT_PID.
+   subroutine die_with_parent()
+      character(len=24) :: text
+      integer :: length, st, parent
+      integer(c_int) :: r
+      call get_environment_variable(parent_variable, text, length, st)
+      if (st /= 0 .or. length == 0) return
+      read (text, *, iostat=st) parent
+      if (st /= 0) return
+      r = c_prctl(pr_set_pdeathsig, int(sigkill, c_long))
+      if (c_getppid() /= parent) call c_exit(128_c_int + sigkill)
+   end subroutine die_with_parent
 
    !> The path of the running program: /proc/self/exe, or the command's
    !> argument 0 when that cannot be read.

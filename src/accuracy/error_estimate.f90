@@ -1,50 +1,18 @@
 !> The discretisation error of a result from a ladder of runs that differ
-!> in one parameter only: the time step (dt, dt/2, dt/4, ...) or the
-!> element size (the mesh refined by a factor each level).
-!>
-!> With the last three levels h1 > h2 > h3 and their values q1, q2, q3,
-!> d1 = q1 - q2 and d2 = q2 - q3, a result in the asymptotic range
-!> behaves as q = Q + C h^p, and the observed order p solves
-!>    (h1^p - h2^p) / (h2^p - h3^p) = d1 / d2
-!> (p = log(d1/d2)/log(r) for a constant ratio r; solved here by
-!> bisection, the ratios of a mesh ladder being rounded counts).
-!>
-!>  - In range (d1, d2 of one sign, order_low <= p <= order_high): the
-!>    error of q3 is Richardson's, |d2| h3^p/(h2^p - h3^p), with p no
-!>    larger than the method's order (a higher observed order is not
-!>    trusted), times richardson_safety (Roache's factor of safety of the
-!>    grid convergence index for three grids, 1.25).
-!>  - Monotone but slower than order_low: the larger of Richardson's error
-!>    with the observed order (a result that converges slowly is not near
-!>    its limit) and the safe bound below; Richardson's error, which grows
-!>    without bound as p -> 0, taken at most slow_cap times the larger
-!>    difference: an order near 0 over three levels is mostly noise (an
-!>    iteration's tolerance, a time read off the steps) or the log tail
-!>    below, which has its own bound.
-!>  - Otherwise (the differences change sign: a rippled, oscillating or
-!>    noisy result; or the order is above order_high, as when the error
-!>    crosses zero between levels): the safe bound, safe_factor times the
-!>    larger of |d1| and |d2|, never an extrapolation.
-!>  - Two levels: two_level_factor times |d| (Roache's factor for two
-!>    grids); one level: no estimate (huge). Two levels whose order p is
-!>    known to be in its asymptotic range (another ladder of the same
-!>    method shows it): Roache's grid convergence index for two grids,
-!>    two_level_factor |d| / (r^p - 1), r the ratio of their sizes
-!>    (two_grid_index).
-!> A resolution floor (the time step, for a time read off the steps) is
-!> added to the estimate of the finest level.
-!>
-!> A result that depends on a length the mesh does not resolve yet (the
-!> Hertz contact disc of radius a under an element of size s > a: the
-!> plate sees a point force, under which a Mindlin plate's deflection,
-!> and the force and strains with it, change like ln(1/h) as the mesh is
-!> refined, without an algebraic order) keeps changing by about its last
-!> difference per level until s = a: log_tail, the larger of the last two
-!> differences times the levels still to go, ln(s/a)/ln(h_{n-1}/h_n), and
-!> one more (the change does not stop at once where s = a), is then the
-!> least error the mesh axis may claim. A coarser level i of the
-!> same ladder has the error |q_i - q_n| plus the finest level's
-!> (level_error): the triangle inequality, no model.
+!> in one parameter (the time step, or the element size). From the last
+!> three levels h1 > h2 > h3, q1, q2, q3, the observed order p solves
+!> (h1^p - h2^p)/(h2^p - h3^p) = d1/d2 (d1 = q1 - q2, d2 = q2 - q3):
+!>  - in range (order_low <= p <= order_high): Richardson's error at
+!>    min(p, the method's order) times richardson_safety (Roache, 1.25);
+!>  - monotone but slower: Richardson's at p (capped at slow_cap times the
+!>    larger difference), no less than the safe bound;
+!>  - otherwise: the safe bound, safe_factor times the larger difference;
+!>    never an extrapolation;
+!>  - two levels: two_level_factor |d| (Roache's Fs = 3), or his two-grid
+!>    index at a known order (two_grid_index); one level: huge.
+!> A floor (the step, for a time read off the steps) is added; log_tail
+!> bounds a result that changes like ln(1/h) until the Hertz disc is
+!> resolved; level_error gives a coarser level's error.
 module error_estimate
    use kinds, only: dp
    implicit none

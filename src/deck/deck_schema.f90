@@ -220,13 +220,13 @@ module deck_schema
       deck_var_t('accuracy', 'target', kind_real, '-', '', '(0, 0.5]', 'relative error every result must ' &
          // 'reach: the run refines dt and the mesh on a ladder of runs until it estimates so (impact ' &
          // '--accuracy TOL; src/accuracy/); not given: one plain run, no estimate'), &
-      deck_var_t('accuracy', 'max_cpu_s', kind_real, 's', '3600', '(0, inf)', &
-         'cpu time all the runs of an accuracy run may take together; reached: the run says so'), &
+      deck_var_t('accuracy', 'max_cpu_s', kind_real, 's', '', '(0, inf)', &
+         'cpu time all the runs of an accuracy run may take together; not given: 100 times its first run''s'), &
       deck_var_t('accuracy', 'mesh_factor', kind_real, '-', '1.5', '[1.2, 2]', &
          'ratio of the element counts of successive meshes of the accuracy ladder'), &
-      deck_var_t('accuracy', 'results', kind_path, '-', 'all', '', 'the results that must meet the target, ' &
-         // 'their summary keys joined by + or blanks (peak_force_N, max_deflection_mm, contact_duration_us, ' &
-         // 'time_of_peak_us, max_strain_y_back, max_failure_index) or ''all''; each gets its error') ]
+      deck_var_t('accuracy', 'results', kind_path, '-', 'default', '', 'the results that must meet the target, ' &
+         // 'summary keys joined by + (peak_force_N, max_deflection_mm, contact_duration_us, time_of_peak_us, ' &
+         // 'max_strain_y_back, max_failure_index), ''default'' (the first three, max_failure_index) or ''all''') ]
 
    !> Everything the deck sets, as the program reads it (SI units). The
    !> defaults are deck_vars' (default_deck in src/deck/input_deck.f90).

@@ -16,9 +16,11 @@ module c_library
              c_statvfs, c_getrlimit, c_signal, c_exit, c_isatty
    public :: c_open, c_close, c_fsync, c_unlink, c_write
    public :: statx_t, c_statx
-   public :: spawn_actions_t, cpu_set_t, c_environ, c_posix_spawn, c_spawn_actions_init, c_spawn_actions_destroy, &
+   public :: spawn_actions_t, cpu_set_t, c_posix_spawn, c_spawn_actions_init, c_spawn_actions_destroy, &
              c_spawn_actions_addopen, c_spawn_actions_adddup2, c_waitpid, c_readlink, c_sched_getaffinity, &
-             o_wronly, o_creat, o_trunc, o_write_no_follow
+             o_wronly, o_creat, o_trunc, o_nofollow, o_write_no_follow
+   public :: spawn_attr_t, c_spawnattr_init, c_spawnattr_destroy, c_spawnattr_setflags, c_spawnattr_setpgroup, &
+             c_kill, c_getpid, c_getppid, c_prctl
 
    !> struct statvfs (<sys/statvfs.h>): eleven unsigned longs (read as
    !> signed: sizes below 2^63) and six ints.
@@ -39,20 +41,22 @@ module c_library
       integer(c_int64_t) :: opaque(16) = 0
    end type spawn_actions_t
 
+   !> posix_spawnattr_t (<spawn.h>): opaque, 336 bytes in glibc; 512 reserved here.
+   type, bind(c) :: spawn_attr_t
+      integer(c_int64_t) :: opaque(64) = 0
+   end type spawn_attr_t
+
    !> cpu_set_t (<sched.h>): a mask of 1024 CPUs, one bit each.
    type, bind(c) :: cpu_set_t
       integer(c_int64_t) :: bits(16) = 0
    end type cpu_set_t
 
-   !> open(2) flags (Linux, <fcntl.h>): write only, create, truncate.
-   integer(c_int), parameter :: o_wronly = 1, o_creat = int(o'100', c_int), o_trunc = int(o'1000', c_int)
-   !> ... and do not follow a symbolic link (O_NOFOLLOW: open fails on one);
-   !> with the three before: a file written anew, never through a link.
-   integer(c_int), parameter :: o_nofollow = int(o'400000', c_int)
+   !> open(2) flags (Linux, <fcntl.h>): write only, create, truncate, no symbolic
+   !> link (open fails on one); the four together: a file written anew, never
+   !> through a link.
+   integer(c_int), parameter :: o_wronly = 1, o_creat = int(o'100', c_int), o_trunc = int(o'1000', c_int), &
+                                o_nofollow = int(o'400000', c_int)
    integer(c_int), parameter :: o_write_no_follow = ior(o_wronly, ior(o_creat, ior(o_trunc, o_nofollow)))
-
-   !> char **environ (<unistd.h>): the process's environment, passed on to a child.
-   type(c_ptr), bind(c, name='environ') :: c_environ
 
    interface
       ! <stdio.h>
@@ -226,13 +230,12 @@ module c_library
       !> int posix_spawn(pid_t *pid, const char *path, const posix_spawn_file_actions_t *actions,
       !>                 const posix_spawnattr_t *attr, char *const argv[], char *const envp[])
       function c_posix_spawn(pid, path, actions, attr, argv, envp) bind(c, name='posix_spawn') result(r)
-         import :: c_int, c_char, c_ptr, spawn_actions_t
+         import :: c_int, c_char, c_ptr, spawn_actions_t, spawn_attr_t
          integer(c_int), intent(out) :: pid
          character(kind=c_char), intent(in) :: path(*)
          type(spawn_actions_t), intent(in) :: actions
-         type(c_ptr), value :: attr
-         type(c_ptr), intent(in) :: argv(*)
-         type(c_ptr), value :: envp
+         type(spawn_attr_t), intent(in) :: attr
+         type(c_ptr), intent(in) :: argv(*), envp(*)
          integer(c_int) :: r
       end function c_posix_spawn
       !> int posix_spawn_file_actions_init(posix_spawn_file_actions_t *actions)
@@ -273,6 +276,56 @@ module c_library
          integer(c_int), intent(out) :: status
          integer(c_int) :: r
       end function c_waitpid
+      !> int posix_spawnattr_init(posix_spawnattr_t *attr)
+      function c_spawnattr_init(attr) bind(c, name='posix_spawnattr_init') result(r)
+         import :: c_int, spawn_attr_t
+         type(spawn_attr_t), intent(inout) :: attr
+         integer(c_int) :: r
+      end function c_spawnattr_init
+      !> int posix_spawnattr_destroy(posix_spawnattr_t *attr)
+      function c_spawnattr_destroy(attr) bind(c, name='posix_spawnattr_destroy') result(r)
+         import :: c_int, spawn_attr_t
+         type(spawn_attr_t), intent(inout) :: attr
+         integer(c_int) :: r
+      end function c_spawnattr_destroy
+      !> int posix_spawnattr_setflags(posix_spawnattr_t *attr, short flags)
+      function c_spawnattr_setflags(attr, flags) bind(c, name='posix_spawnattr_setflags') result(r)
+         import :: c_int, c_int16_t, spawn_attr_t
+         type(spawn_attr_t), intent(inout) :: attr
+         integer(c_int16_t), value :: flags
+         integer(c_int) :: r
+      end function c_spawnattr_setflags
+      !> int posix_spawnattr_setpgroup(posix_spawnattr_t *attr, pid_t pgroup)
+      function c_spawnattr_setpgroup(attr, pgroup) bind(c, name='posix_spawnattr_setpgroup') result(r)
+         import :: c_int, spawn_attr_t
+         type(spawn_attr_t), intent(inout) :: attr
+         integer(c_int), value :: pgroup
+         integer(c_int) :: r
+      end function c_spawnattr_setpgroup
+      ! <signal.h>, <unistd.h>, <sys/prctl.h>
+      !> int kill(pid_t pid, int sig)  (async-signal-safe)
+      function c_kill(pid, sig) bind(c, name='kill') result(r)
+         import :: c_int
+         integer(c_int), value :: pid, sig
+         integer(c_int) :: r
+      end function c_kill
+      !> pid_t getpid(void)
+      function c_getpid() bind(c, name='getpid') result(r)
+         import :: c_int
+         integer(c_int) :: r
+      end function c_getpid
+      !> pid_t getppid(void)
+      function c_getppid() bind(c, name='getppid') result(r)
+         import :: c_int
+         integer(c_int) :: r
+      end function c_getppid
+      !> int prctl(int option, unsigned long arg2, ...)  (the options used take one argument)
+      function c_prctl(option, arg2) bind(c, name='prctl') result(r)
+         import :: c_int, c_long
+         integer(c_int), value :: option
+         integer(c_long), value :: arg2
+         integer(c_int) :: r
+      end function c_prctl
       ! <sched.h>
       !> int sched_getaffinity(pid_t pid, size_t cpusetsize, cpu_set_t *mask)
       function c_sched_getaffinity(pid, size, mask) bind(c, name='sched_getaffinity') result(r)

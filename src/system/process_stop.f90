@@ -56,7 +56,7 @@ module process_stop
    implicit none
    private
    public :: catch_stop_signals, remove_on_stop, stop_after_step, stop_signal_caught, keep_file_size_errors, &
-             exit_program
+             exit_program, stop_signals
 
    !> The stop signals, by their numbers on Linux (<signal.h>): SIGHUP,
    !> SIGINT, SIGUSR1, SIGUSR2, SIGTERM.
