@@ -176,7 +176,7 @@ setup-run:
 	@sh tools/setup-debian run
 
 # The README's two commands in a fresh Debian 12 tree (tools/fresh-check:
-# what it needs, about 25 minutes); before each release.
+# what it needs, about 15 minutes); before each release.
 .PHONY: fresh-check
 fresh-check:
 	@sh tools/fresh-check $(FRESH_DIR)
