@@ -60,7 +60,6 @@ module deck_text
    implicit none
    private
    public :: item_t, group_text_t, read_deck_text, split_value_text, lower_case, shown_text
-   public :: max_deck_bytes, max_shown
 
    !> The longest deck (bytes): 1 MiB. A deck is a few kilobytes; this
    !> bounds the reading of a wrong file (README, "Stability, bad input,

@@ -30,7 +30,7 @@ module cholmod_binding
    implicit none
    private
    public :: cholmod_handle_t, cholmod_live_handles, chol_set_matrix, chol_analyze, chol_factorize, &
-             chol_diagonal, chol_solve, chol_copy, chol_release, chol_failure
+             chol_diagonal, chol_solve, chol_copy, chol_release
 
    !> Return codes of the shim (src/linalg/cholmod_shim.c).
    integer(c_int), parameter :: code_ok = 0, no_handle = 1, no_memory = 2, too_large = 3, invalid = 4, &

@@ -45,10 +45,8 @@ module skyline_matrix
    implicit none
    private
    public :: skyline_matrix_t
-   public :: skyline_init, skyline_zero, skyline_in_profile, skyline_add, &
-             skyline_get, skyline_first_row, skyline_half_bandwidth, &
-             skyline_matvec, skyline_factor, skyline_solve, &
-             skyline_axpy
+   public :: skyline_init, skyline_zero, skyline_in_profile, skyline_add, skyline_get, &
+             skyline_half_bandwidth, skyline_matvec, skyline_factor, skyline_solve, skyline_axpy
 
    !> Symmetric matrix in skyline storage (see module header).
    type :: skyline_matrix_t

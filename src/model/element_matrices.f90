@@ -32,12 +32,10 @@ module element_matrices
    use shear_strain, only: shear_rule_t, shear_operator_t, shear_operator
    implicit none
    private
-   public :: element_geometry_t, element_geometry, element_mass, &
-             element_stiffness, element_nonlinear_force, element_internal_force, &
-             element_strain_energy, element_inplane_strain, element_gauss_point, point_derivs, &
-             element_tangent_stiffness, element_pressure_load, &
-             element_mass_integrals, element_mass_product, &
-             ngp_full, nfe_elem
+   public :: element_geometry_t, element_geometry, element_mass, element_stiffness, &
+             element_nonlinear_force, element_internal_force, element_strain_energy, &
+             element_inplane_strain, element_gauss_point, point_derivs, element_tangent_stiffness, &
+             element_pressure_load, element_mass_integrals, ngp_full, nfe_elem
 
    !> Gauss points of the full (3x3) rule.
    integer, parameter :: ngp_full = 9
@@ -136,8 +134,7 @@ contains
    !> The one block of the consistent mass matrix, S_ij = int phi_i phi_j dA
    !> (m^2), 3x3 Gauss: element_mass places P S, R S and I S on the
    !> freedoms (Appendix B). Kept per element, it gives M x element by
-   !> element (element_mass_product) without the zeros inside the band of
-   !> the assembled matrix.
+   !> element without the zeros inside the band of the assembled matrix.
    pure function element_mass_integrals(geo) result(s)
       type(element_geometry_t), intent(in) :: geo   !< element geometry
       real(dp) :: s(nen, nen)                       !< S_ij (m^2)
@@ -149,33 +146,6 @@ contains
          end do
       end do gauss_points
    end function element_mass_integrals
-
-   !> The element mass matrix times an element vector, me xe, from
-   !> S = element_mass_integrals(geo): the same numbers as matmul(me, xe)
-   !> with me from element_mass, in five products with the 9 x 9 S instead
-   !> of one with the 45 x 45 me.
-   pure subroutine element_mass_product(lmt, s, xe, ye)
-      type(laminate_t), intent(in) :: lmt           !< inertias P (kg/m^2), R (kg/m), I (kg) (eq. 9)
-      real(dp), intent(in) :: s(nen, nen)           !< S_ij = int phi_i phi_j dA (m^2)
-      real(dp), intent(in) :: xe(nfe_elem)          !< element vector (u, v, w, psi_x, psi_y by node)
-      real(dp), intent(out) :: ye(nfe_elem)         !< me xe
-      real(dp) :: sx(5, nen)
-      integer :: i, j
-      ! sx(k, i) = sum_j S_ij x_k(j) for the fields k = u, v, w, psi_x, psi_y
-      sx = 0.0_dp
-      do j = 1, nen
-         do i = 1, nen
-            sx(:, i) = sx(:, i) + s(i, j)*xe(5*j-4:5*j)
-         end do
-      end do
-      do i = 1, nen
-         ye(5*i-4) = lmt%p*sx(1, i) + lmt%r*sx(4, i)
-         ye(5*i-3) = lmt%p*sx(2, i) + lmt%r*sx(5, i)
-         ye(5*i-2) = lmt%p*sx(3, i)
-         ye(5*i-1) = lmt%i*sx(4, i) + lmt%r*sx(1, i)
-         ye(5*i)   = lmt%i*sx(5, i) + lmt%r*sx(2, i)
-      end do
-   end subroutine element_mass_product
 
    !> Linear stiffness [K_L] (Appendix B): membrane and bending with 3x3
    !> Gauss points, transverse shear by the element's shear rule.

@@ -62,8 +62,8 @@ module mesh
    use shape_functions, only: nen, node_xi
    implicit none
    private
-   public :: mesh_t, ndof_node, nfe, build_mesh, apply_boundary, &
-             freedom_name, describe_equation, element_freedoms, locate_point
+   public :: mesh_t, ndof_node, nfe, build_mesh, apply_boundary, freedom_name, describe_equation, &
+             locate_point
 
    !> Freedoms per node (u, v, w, psi_x, psi_y).
    integer, parameter :: ndof_node = 5

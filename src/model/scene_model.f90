@@ -89,10 +89,9 @@ module scene_model
    use storage_choice, only: resolve_storage, sparse_crossover
    implicit none
    private
-   public :: scene_t, ncouplings, coupling_names, coupling_tol, wh_nonlinear, &
-             model_laminate, laminate_couplings, choose_domain, energy_balance, &
-             choose_theory, write_scene_report, theory_warning, point_stiffness, &
-             impact_element_size, bending_deflection, choose_storage
+   public :: scene_t, ncouplings, coupling_names, coupling_tol, wh_nonlinear, model_laminate, &
+             choose_domain, energy_balance, choose_theory, write_scene_report, theory_warning, &
+             point_stiffness, impact_element_size, bending_deflection, choose_storage
 
    !> Couplings below this fraction of the diagonal terms are rounding (-).
    real(dp), parameter :: coupling_tol = 1.0e-9_dp

@@ -52,7 +52,7 @@ module scene_settings
    use number_text, only: real_short, int_str
    implicit none
    private
-   public :: settings_t, scene_settings_of, choose_settings, hertz_contact_time, plate_period, bending_wavelength
+   public :: settings_t, scene_settings_of, choose_settings, hertz_contact_time, plate_period
 
    !> Time steps in the shorter of the Hertz contact time and the plate's period (module header).
    real(dp), parameter :: steps_per_time = 160.0_dp

@@ -65,7 +65,7 @@ module hdf5_io
    public :: h5io_start, h5io_create, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_exists, h5io_delete
    public :: h5io_set_attr, h5io_update_attr, h5io_write, h5io_rewrite
    public :: h5io_check, h5io_fail, h5io_attr_path, h5io_vlen_string_type
-   public :: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_open_dataset, h5io_series_length, &
+   public :: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_open_dataset, &
              h5io_cut_series, h5io_read_series, h5io_close_dataset
    public :: h5io_view_column
    public :: h5io_real, h5io_integer

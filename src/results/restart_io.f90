@@ -21,9 +21,9 @@ module restart_io
    use contact_load, only: load_pattern_t
    implicit none
    private
-   public :: tag_len, put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, &
-             put_flag, take_flag, put_reals, take_reals, put_ints, take_ints, put_impactor, take_impactor, &
-             put_pattern, take_pattern, put_seal, seal_holds, crc32
+   public :: put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, &
+             put_flag, take_flag, put_reals, take_reals, put_ints, take_ints, put_impactor, &
+             take_impactor, put_pattern, take_pattern, put_seal, seal_holds
 
    !> Characters of a tag.
    integer, parameter :: tag_len = 8

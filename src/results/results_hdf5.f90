@@ -102,8 +102,8 @@ module results_hdf5
       xdmf_grow, xdmf_cut, xdmf_peak, xdmf_close
    implicit none
    private
-   public :: results_file_t, results_open, results_reopen, results_append_history, results_state, results_tick, &
-             results_flush, results_leave, results_closing, results_finish, nodal_values, field_units
+   public :: results_file_t, results_open, results_reopen, results_append_history, results_state, &
+             results_tick, results_flush, results_leave, results_closing, results_finish
 
    integer, parameter :: units_len = 8
    !> Units of the nodal fields u, v, w, psi_x, psi_y.

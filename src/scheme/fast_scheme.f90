@@ -66,7 +66,7 @@ module fast_scheme
    use fixed_point, only: fp_start
    implicit none
    private
-   public :: fast_step, predicted_displacements
+   public :: fast_step
 
    !> Steps between two measurements of the contraction theta (module
    !> header): a measurement costs one more solution, so 1/measure_every

@@ -42,7 +42,7 @@ module substeps
    use fixed_point, only: fp_report
    implicit none
    private
-   public :: fast_step_or_substeps, max_halvings
+   public :: fast_step_or_substeps
 
    !> The most halvings of a step that did not converge: sub-steps down to
    !> dt/2^max_halvings (2 + 4 + 8 + 16 = 30 sub-steps and 5 factorizations

@@ -52,7 +52,7 @@ module failure_criteria
    public :: strength_t, criterion_hashin, criterion_max_stress, criterion_tsai_wu, criterion_code
    public :: mode_none, mode_fibre_tension, mode_fibre_compression, mode_matrix_tension, &
              mode_matrix_compression, mode_shear_12, mode_shear_23, nmode, mode_names
-   public :: failure_index, failure_indices, hashin_index, max_stress_index, tsai_wu_index
+   public :: failure_index, failure_indices
 
    !> Ply strengths (Pa), all positive.
    type :: strength_t
