@@ -32,11 +32,11 @@ program impact
    use step_trace, only: trace_t, trace_parse, trace_step, trace_iteration
    use run_report, only: echo_model, usage, usage_line, version_text, say_large_chosen_mesh
    use build_info, only: code_version
-   use result_files, only: results_claim_t, result_suffixes, claim_results, release_results, claim_left_empty
+   use result_files, only: results_claim_t, release_results
    use other_analyses, only: run_other_analysis
-   use process_stop, only: catch_stop_signals, remove_on_stop, stop_after_step, stop_signal_caught, &
+   use process_stop, only: catch_stop_signals, stop_after_step, stop_signal_caught, &
       keep_file_size_errors, exit_program
-   use restart_point, only: restart_file, restart_save, restart_check, restart_resume, restart_discard
+   use restart_point, only: restart_file, restart_save, restart_check, restart_resume, claim_run_files
    use number_text, only: int_str
    use c_library, only: c_isatty
    use accuracy_driver, only: run_accuracy
@@ -204,7 +204,6 @@ contains
    !> ends there; an impact run claims its result files before any work.
    subroutine read_input()
       type(options_t) :: opts
-      type(deck_t) :: claimed
       integer :: accuracy_exit            ! the exit status of an accuracy run
       call parse_command_line(opts, stat, errmsg)
       if (stat /= 0) call bad_usage(errmsg)
@@ -247,15 +246,8 @@ contains
       if (opts%restart .and. .not. (restarting .or. check_only)) write (output_unit, '(a)') &
          'restart: no restart point ' // restart_file(deck) // ': the run starts at step 0'
       if (check_only) return
-      claimed = deck
-      ! a restart continues the run's own files, or the claim a run killed in its set-up left
-      claimed%overwrite = deck%overwrite .or. restarting
-      if (opts%restart .and. .not. claimed%overwrite) &
-         claimed%overwrite = claim_left_empty(deck%prefix, result_suffixes(deck%analysis_kind))
-      call claim_results(claimed, result_suffixes(deck%analysis_kind), claim, stat, errmsg)
+      call claim_run_files(deck, opts%restart, restarting, claim, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
-      call remove_on_stop(claim%first)                      ! a stop in the set-up leaves it only if written
-      if (.not. restarting) call restart_discard(deck)      ! an earlier run's restart point
    end subroutine read_input
 
    !> A solver failure or a step of scheme 'fast' that did not converge, even

@@ -24,7 +24,8 @@ module restart_point
    use contact_load, only: load_pattern_t
    use contact_iteration, only: contact_iteration_t
    use newmark, only: plate_state_t, impactor_t
-   use result_files, only: reserve_summary
+   use result_files, only: reserve_summary, results_claim_t, result_suffixes, claim_results, claim_left_empty
+   use process_stop, only: remove_on_stop
    use results_hdf5, only: results_reopen
    use run_recorder, only: record_t, record_save_state, record_load_state
    use restart_io, only: put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, put_flag, &
@@ -32,7 +33,7 @@ module restart_point
       put_seal, seal_holds
    implicit none
    private
-   public :: restart_file, restart_save, restart_check, restart_resume, restart_discard
+   public :: restart_file, restart_save, restart_check, restart_resume, claim_run_files
 
    !> The layout of the file; a restart point of another is refused.
    integer, parameter :: layout = 3
@@ -49,6 +50,28 @@ contains
       character(len=:), allocatable :: path
       path = deck%prefix // '.restart'
    end function restart_file
+
+   !> Claims the run's result files before any work (claim_results): a
+   !> restart continues the run's own files, or the claim a run killed in its
+   !> set-up left; a stop in the set-up leaves the first file only if it was
+   !> written; a run that starts afresh discards an earlier run's restart point.
+   subroutine claim_run_files(deck, restart_asked, restarting, claim, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      logical, intent(in) :: restart_asked          !< --restart was given
+      logical, intent(in) :: restarting             !< the run continues from a restart point
+      type(results_claim_t), intent(out) :: claim   !< the claim, held until release_results
+      integer, intent(out) :: stat                  !< 0 when the run may write its results
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      type(deck_t) :: claimed
+      claimed = deck
+      claimed%overwrite = deck%overwrite .or. restarting
+      if (restart_asked .and. .not. claimed%overwrite) &
+         claimed%overwrite = claim_left_empty(deck%prefix, result_suffixes(deck%analysis_kind))
+      call claim_results(claimed, result_suffixes(deck%analysis_kind), claim, stat, errmsg)
+      if (stat /= 0) return
+      call remove_on_stop(claim%first)
+      if (.not. restarting) call restart_discard(deck)
+   end subroutine claim_run_files
 
    !> A run that starts afresh removes an earlier run's restart point, which
    !> its files no longer match.
