@@ -15,7 +15,6 @@ program impact
    use, intrinsic :: iso_fortran_env, only: input_unit, output_unit, error_unit
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t, accuracy_wanted
-   use deck_echo, only: write_schema, write_deck_table
    use command_line, only: options_t, parse_command_line, read_input_deck
    use input_deck, only: validate_deck
    use scene_settings, only: choose_settings
@@ -30,7 +29,7 @@ program impact
       newmark_update, impactor_moved
    use run_recorder, only: record_t, record_open, record_step, record_close
    use step_trace, only: trace_t, trace_parse, trace_step, trace_iteration
-   use run_report, only: echo_model, usage, usage_line, version_text, say_large_chosen_mesh
+   use run_report, only: echo_model, write_answer, usage_line, say_large_chosen_mesh
    use build_info, only: code_version
    use result_files, only: results_claim_t, release_results
    use other_analyses, only: run_other_analysis
@@ -207,12 +206,7 @@ contains
       integer :: accuracy_exit            ! the exit status of an accuracy run
       call parse_command_line(opts, stat, errmsg)
       if (stat /= 0) call bad_usage(errmsg)
-      select case (opts%action)
-      case ('help');       call usage(output_unit)
-      case ('version');    call version_text(output_unit, code_version)
-      case ('schema');     call write_schema(output_unit)
-      case ('deck-table'); call write_deck_table(output_unit)
-      end select
+      call write_answer(opts%action, output_unit, code_version)     ! --help, --version, --schema, --deck-table
       if (opts%action /= 'run') stop
       check_only = opts%check
       restarting = opts%restart .and. .not. check_only

@@ -1,13 +1,13 @@
 !> What the program says on the terminal before any work: the usage
-!> (impact --help), the notice of a large mesh the program chose, and the
-!> echo of the run (after Bathe's STAP: every
+!> (impact --help) and the other options' answers, the notice of a large
+!> mesh the program chose, and the echo of the run (after Bathe's STAP: every
 !> value of the deck with its symbol and unit, the derived sizes, the
 !> laminate, and the scene report of src/model/scene_model.f90).
 module run_report
    use kinds, only: dp
    use number_text, only: int_str, real_short
    use deck_schema, only: deck_t, deck_groups, is_given, strength_given, toughness_given
-   use deck_echo, only: echo_deck
+   use deck_echo, only: echo_deck, write_schema, write_deck_table
    use input_deck, only: model_size
    use storage_choice, only: resolve_storage
    use progress_line, only: duration_text
@@ -17,7 +17,7 @@ module run_report
    use delamination, only: write_delamination_scene
    implicit none
    private
-   public :: echo_model, usage, usage_line, version_text, say_large_chosen_mesh
+   public :: echo_model, write_answer, usage_line, say_large_chosen_mesh
 
    !> The usage in one line: the first of impact --help, and what a wrong
    !> command line gets after its message.
@@ -107,6 +107,20 @@ contains
          // ' GiB for the matrices' // time // ': give &mesh nx, ny for a coarser mesh'
       flush (unit)
    end subroutine say_large_chosen_mesh
+
+   !> The answer of an option that asks instead of running (command_line's
+   !> action): --help, --version, --schema, --deck-table; nothing for 'run'.
+   subroutine write_answer(action, u, version)
+      character(len=*), intent(in) :: action     !< 'help', 'version', 'schema', 'deck-table' or 'run'
+      integer, intent(in) :: u                   !< open formatted unit
+      character(len=*), intent(in) :: version    !< the build's version (src/system/build_info.f90)
+      select case (action)
+      case ('help');       call usage(u)
+      case ('version');    call version_text(u, version)
+      case ('schema');     call write_schema(u)
+      case ('deck-table'); call write_deck_table(u)
+      end select
+   end subroutine write_answer
 
    !> impact --version: the version the build recorded (one line, as scripts
    !> read it), then the copyright and the licence (LICENSE).
