@@ -9,32 +9,14 @@
 !> nonlinearly under it (eq. 19, 18), move the impactor (eq. 21), compute
 !> the indentation and the law's force (eq. 13, 11, 12), and repeat until
 !> the assumed and computed forces agree (eq. 17). Each box is one call;
-!> the file of each is named after it (README, "From the paper to the code").
-!>
-!> The deck is Fortran namelist text, read by the project's own reader
-!> (src/deck/deck_text.f90) and not by `read (unit, nml=...)`: gfortran's
-!> namelist read names neither the group, the variable nor the line of a
-!> bad value, passes over a misspelt group or a repeated one without a
-!> word, merges array elements into the defaults, and cannot tell a value
-!> given from its default; a deck's every mistake must come back as one
-!> line naming the deck, the group and the variable (the measured details
-!> are in that file's header).
-!>
-!> A stop signal ends the set-up at once, leaving no result, and the run
-!> after its step, every result written (src/system/process_stop.f90);
-!> restart points let impact --restart continue a stopped or killed run
-!> where it stopped (src/results/restart_point.f90).
-!>
+!> the file of each is named after it (docs/ALGORITHM.md).
 !> Usage: impact [options] [deck.nml]     (no deck: standard input; --help)
 program impact
    use, intrinsic :: iso_fortran_env, only: input_unit, output_unit, error_unit
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t, accuracy_wanted
-   use deck_echo, only: write_schema, write_deck_table
    use command_line, only: options_t, parse_command_line, read_input_deck
-   use input_deck, only: validate_deck, model_size
-   use storage_choice, only: resolve_storage
-   use progress_line, only: duration_text
+   use input_deck, only: validate_deck
    use scene_settings, only: choose_settings
    use plate_model, only: model_t, build_model, release_assembled, mass_times
    use plate_solver, only: solver_t, solver_init, plate_solve
@@ -47,14 +29,14 @@ program impact
       newmark_update, impactor_moved
    use run_recorder, only: record_t, record_open, record_step, record_close
    use step_trace, only: trace_t, trace_parse, trace_step, trace_iteration
-   use run_report, only: echo_model, usage, usage_line, version_text
+   use run_report, only: echo_model, write_answer, usage_line, say_large_chosen_mesh
    use build_info, only: code_version
-   use result_files, only: results_claim_t, result_suffixes, claim_results, release_results, claim_left_empty
+   use result_files, only: results_claim_t, release_results
    use other_analyses, only: run_other_analysis
-   use process_stop, only: catch_stop_signals, remove_on_stop, stop_after_step, stop_signal_caught, &
+   use process_stop, only: catch_stop_signals, stop_after_step, stop_signal_caught, &
       keep_file_size_errors, exit_program
-   use restart_point, only: restart_file, restart_save, restart_check, restart_resume, restart_discard
-   use number_text, only: int_str, real_short
+   use restart_point, only: restart_file, restart_save, restart_check, restart_resume, claim_run_files
+   use number_text, only: int_str
    use c_library, only: c_isatty
    use accuracy_driver, only: run_accuracy
    use child_process, only: die_with_parent
@@ -186,8 +168,7 @@ program impact
          end do contact_iterations
          ! -- eq. (17) met, or 'plain' goes on with F_cont; else the run stops
          call contact_outcome(cit, imp_new, ok)
-         if (.not. ok) call fail_in_run('time step did not converge: the contact iteration (eq. 17): ' &
-                                        // contact_report(cit))
+         if (.not. ok) call fail_in_run('time step did not converge: the contact iteration (eq. 17): ' // contact_report(cit))
       else
          ! -- scheme 'fast': the contact equation inside each eq. (19) iteration (sub-steps if it fails)
          call fast_step_or_substeps(solver, model, nm, mb, plate, imp, hist, d_new, imp_new, cit, step_nm, ok, &
@@ -197,8 +178,7 @@ program impact
       end if
       ! -- accept the step: Newmark update (eq. 20; after sub-steps, the last one's), impactor, contact
       call newmark_update(step_nm, plate%d, d_new, plate%v, plate%a)
-      plate%d = d_new
-      imp = imp_new
+      plate%d = d_new;  imp = imp_new
       call record_step(rec, step, model, solver, plate, imp, hist, cit, cit%iterations, cit%converged, stat, errmsg)
       if (stat /= 0) call fail_in_run(errmsg)
       call contact_commit(model%law, hist, cit%alpha)
@@ -223,16 +203,10 @@ contains
    !> ends there; an impact run claims its result files before any work.
    subroutine read_input()
       type(options_t) :: opts
-      type(deck_t) :: claimed
       integer :: accuracy_exit            ! the exit status of an accuracy run
       call parse_command_line(opts, stat, errmsg)
       if (stat /= 0) call bad_usage(errmsg)
-      select case (opts%action)
-      case ('help');       call usage(output_unit)
-      case ('version');    call version_text(output_unit, code_version)
-      case ('schema');     call write_schema(output_unit)
-      case ('deck-table'); call write_deck_table(output_unit)
-      end select
+      call write_answer(opts%action, output_unit, code_version)     ! --help, --version, --schema, --deck-table
       if (opts%action /= 'run') stop
       check_only = opts%check
       restarting = opts%restart .and. .not. check_only
@@ -248,7 +222,7 @@ contains
       call choose_settings(deck)            ! dt, nx, ny the deck does not give: from the scene
       call validate_deck(deck, stat, errmsg)   ! (the chosen ones checked as given ones)
       if (stat /= 0) call fail(errmsg)
-      call say_large_chosen_mesh()
+      call say_large_chosen_mesh(deck, output_unit)
       if (accuracy_wanted(deck) .and. .not. check_only) then     ! a ladder of runs (src/accuracy/)
          call run_accuracy(opts, deck, output_unit, accuracy_exit, stat, errmsg)
          if (stat /= 0) call fail(errmsg)
@@ -266,40 +240,9 @@ contains
       if (opts%restart .and. .not. (restarting .or. check_only)) write (output_unit, '(a)') &
          'restart: no restart point ' // restart_file(deck) // ': the run starts at step 0'
       if (check_only) return
-      claimed = deck
-      ! a restart continues the run's own files, or the claim a run killed in its set-up left
-      claimed%overwrite = deck%overwrite .or. restarting
-      if (opts%restart .and. .not. claimed%overwrite) &
-         claimed%overwrite = claim_left_empty(deck%prefix, result_suffixes(deck%analysis_kind))
-      call claim_results(claimed, result_suffixes(deck%analysis_kind), claim, stat, errmsg)
+      call claim_run_files(deck, opts%restart, restarting, claim, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
-      call remove_on_stop(claim%first)                      ! a stop in the set-up leaves it only if written
-      if (.not. restarting) call restart_discard(deck)      ! an earlier run's restart point
    end subroutine read_input
-
-   !> A mesh the program chose (no nx, ny in the deck) of more than
-   !> large_model equations: said before the set-up builds it, which may
-   !> take minutes, with its size, its memory and, in sparse storage, the
-   !> set-up's cpu time: set_up_s (measured: an 80 x 60 full plate, 94 605
-   !> equations, on one core of the 2-core test machine; a 40 x 30 one took
-   !> 0.8 s, 23 305 equations) times the equations' ratio to the power
-   !> set_up_growth (CHOLMOD's factorization of a plate's matrix).
-   subroutine say_large_chosen_mesh()
-      real(dp), parameter :: large_model = 1.0e5_dp, set_up_neq = 94605.0_dp, set_up_s = 4.8_dp, &
-                             set_up_growth = 1.3_dp
-      real(dp) :: neq, memory
-      character(len=:), allocatable :: time
-      if (len_trim(deck%mesh_chosen) == 0) return
-      call model_size(deck, neq, memory)
-      if (neq <= large_model) return
-      time = ''
-      if (resolve_storage(deck%storage, nint(min(neq, 1.0e9_dp)), .false.) == 'sparse') time = ' and about ' &
-         // duration_text(set_up_s*(neq/set_up_neq)**set_up_growth) // ' of set-up on one core'
-      write (output_unit, '(a)') 'mesh chosen: ' // int_str(deck%nx) // ' x ' // int_str(deck%ny) &
-         // ' elements, about ' // int_str(nint(neq)) // ' equations, ' // real_short(memory/1024.0_dp**3) &
-         // ' GiB for the matrices' // time // ': give &mesh nx, ny for a coarser mesh'
-      flush (output_unit)
-   end subroutine say_large_chosen_mesh
 
    !> A solver failure or a step of scheme 'fast' that did not converge, even
    !> in sub-steps, stops the run (errmsg: the iteration's report).

@@ -2,34 +2,11 @@
 !> natural frequencies and mode shapes of the plate,
 !>     K_L phi = omega^2 M phi,     phi^T M phi = 1,
 !> with K_L and M the banded matrices of the impact analysis (eq. 15; the
-!> consistent mass with rotary inertia, Appendix B). K_L is also the
-!> tangent stiffness of the von Karman plate at rest, so the frequencies are
-!> those of small vibrations about the flat plate in either theory.
-!>
-!> Solver: LAPACK dsbgvx (generalized symmetric-definite banded
-!> eigenproblem, eigenvalues il..iu = 1..count and their vectors): split
-!> Cholesky factorisation of M (dpbstf), reduction to a standard banded
-!> problem (dsbgst) and to tridiagonal form (dsbtrd), bisection and inverse
-!> iteration. K_L and M are used in the upper band storage of
-!> src/linalg/band_matrix.f90 (global_matrix_t%band%ab), which is LAPACK's layout
-!> with uplo = 'U', ka = kb = kd. With the mode shapes (`&modes shapes`,
-!> the default) the reduction keeps an n x n orthogonal matrix: memory
-!> 8 n^2 bytes and time of order n^2 kd (n = 1400: 16 MB, 2 s; n = 2800:
-!> 63 MB, 25 s). Frequencies alone (shapes = .false.) need neither: time
-!> of order n kd^2, a fraction of a second for the same models.
-!>
-!> Free edges: K_L is singular (rigid-body modes); M is positive definite,
-!> so dsbgvx still applies, and the rigid-body modes come out with omega^2
-!> zero to rounding (written as frequencies sign(omega^2) sqrt|omega^2|).
-!>
-!> Each mode's kinetic energy, phi^T M phi = 1, is split between the
-!> freedoms: w (flexural), u, v (in-plane) and psi_x, psi_y (rotation;
-!> thickness-shear modes); with R = 0 (symmetric laminate) the three parts
-!> add up to 1.
-!>
-!> Results (written by src/analyses/other_analyses.f90): `<prefix>_modes.dat` (one
-!> row per mode) and `<prefix>_mode_shapes.dat` (w of each mode at the
-!> nodes of the model, scaled to a largest |w| of 1).
+!> consistent mass with rotary inertia, Appendix B): small vibrations about
+!> the flat plate in either theory. Solver (LAPACK dsbgvx), free edges and
+!> the split of each mode's kinetic energy: above modal_solve.
+!> Results (written by src/analyses/other_analyses.f90): `<prefix>_modes.dat`
+!> and `<prefix>_mode_shapes.dat`. More: docs/ANALYSES.md.
 module modal_analysis
    use kinds, only: dp, pi, msg_len
    use plate_model, only: model_t
@@ -66,6 +43,26 @@ module modal_analysis
 
 contains
 
+   !> Solver: LAPACK dsbgvx (generalized symmetric-definite banded
+   !> eigenproblem, eigenvalues il..iu = 1..count and their vectors): split
+   !> Cholesky factorisation of M (dpbstf), reduction to a standard banded
+   !> problem (dsbgst) and to tridiagonal form (dsbtrd), bisection and inverse
+   !> iteration. K_L and M are used in the upper band storage of
+   !> src/linalg/band_matrix.f90 (global_matrix_t%band%ab), which is LAPACK's layout
+   !> with uplo = 'U', ka = kb = kd. With the mode shapes (`&modes shapes`,
+   !> the default) the reduction keeps an n x n orthogonal matrix: memory
+   !> 8 n^2 bytes and time of order n^2 kd (docs/ANALYSES.md). Frequencies
+   !> alone (shapes = .false.) need neither: time of order n kd^2.
+   !>
+   !> Free edges: K_L is singular (rigid-body modes); M is positive definite,
+   !> so dsbgvx still applies, and the rigid-body modes come out with omega^2
+   !> zero to rounding (written as frequencies sign(omega^2) sqrt|omega^2|).
+   !>
+   !> Each mode's kinetic energy, phi^T M phi = 1, is split between the
+   !> freedoms: w (flexural), u, v (in-plane) and psi_x, psi_y (rotation;
+   !> thickness-shear modes); with R = 0 (symmetric laminate) the three parts
+   !> add up to 1.
+   !>
    !> The lowest `count` eigenpairs of K_L phi = omega^2 M phi (band storage).
    subroutine modal_solve(model, count, vectors, res, stat, errmsg)
       type(model_t), intent(in) :: model           !< model: K_L and M in band storage

@@ -1,25 +1,12 @@
 !> Transient analysis (`&analysis kind = 'pressure'`): the plate at rest,
 !> loaded at t = 0 by the load of `&load` (a uniform or sinusoidal pressure,
-!> or a central force) held constant to t_end.
-!>
-!> The time integration is the impact analysis's, without the impactor:
-!> Newmark's constant average acceleration rule with Akay's constant
-!> left-hand matrix, eq. (19)-(20),
+!> or a central force) held constant to t_end. The time integration is the
+!> impact analysis's without the impactor: Newmark's rule with Akay's
+!> constant left-hand matrix, eq. (19)-(20),
 !>     (K_L + 4/dt^2 M) D^{n+1}_{t+dt} = F + M {b} - K_N(D^n) D^n,
-!> iterated to eq. (18) (plate_solve; one solve in the linear theory).
-!> The load jumps at t = 0, so the initial acceleration is M^-1 F (the
-!> plate at rest, f_int = 0): starting from zero acceleration instead would
-!> smear the jump over the first step and cost the rule its second order.
-!>
-!> Energy: the work of the constant load is W = F . D; the kinetic and
-!> strain energies are those of the impact analysis (whole plate). For the
-!> linear theory the average acceleration rule keeps W - KE - U = 0 to
-!> rounding; for the von Karman theory to within the eq. (18) tolerance and
-!> O(dt^2).
-!>
+!> iterated to eq. (18); its start and energy: above pressure_solve.
 !> Results (written by src/analyses/other_analyses.f90):
-!> `<prefix>_pressure_history.dat`, one row per output step (`&output
-!> every`).
+!> `<prefix>_pressure_history.dat`. More: docs/ANALYSES.md.
 module pressure_analysis
    use number_text, only: int_str
    use kinds, only: dp
@@ -47,8 +34,18 @@ module pressure_analysis
 
 contains
 
+   !> The load jumps at t = 0, so the initial acceleration is M^-1 F (the
+   !> plate at rest, f_int = 0): starting from zero acceleration instead would
+   !> smear the jump over the first step and cost the rule its second order.
+   !>
+   !> Energy: the work of the constant load is W = F . D; the kinetic and
+   !> strain energies are those of the impact analysis (whole plate). For the
+   !> linear theory the average acceleration rule keeps W - KE - U = 0 to
+   !> rounding; for the von Karman theory to within the eq. (18) tolerance and
+   !> O(dt^2).
+   !>
    !> Integrates nstep steps of dt from rest under the load f applied at
-   !> t = 0 (module header). Energies are computed every `every` steps (and
+   !> t = 0 (as above). Energies are computed every `every` steps (and
    !> at the last); the other rows keep zero energies.
    subroutine pressure_solve(model, f, dt, nstep, every, res, stat, errmsg)
       type(model_t), intent(in) :: model           !< model

@@ -1,30 +1,14 @@
 !> Static analysis (`&analysis kind = 'static'`): the plate under the load
 !> of `&load`, linear or with von Karman large deflection.
-!>
 !> Linear theory: K_L D = F, one Cholesky factorisation of K_L.
-!>
 !> Nonlinear theory: Newton's method in `&load increments` equal load
-!> increments. In increment i (load factor lambda = i/n):
+!> increments (why not Akay's iteration: above static_solve). In increment
+!> i (load factor lambda = i/n):
 !>     K_T(D^k) dD = lambda F - f_int(D^k),   D^{k+1} = D^k + dD,
-!> f_int(D) = K_L D + K_N(D) D (eq. 15, the internal force of the impact
-!> analysis) and K_T its exact derivative (element_tangent_stiffness), until
-!> the eq. (18) measure sum dD^2 <= C_r2 sum (D^{k+1} - D_{i-1})^2, with
-!> C_r2 = `&analysis cr2` and at most `max_nonlinear_iter` iterations.
-!>
-!> Why Newton and not the impact analysis's Akay iteration: Akay's scheme
-!> keeps the left-hand matrix constant and moves K_N(D) D to the right-hand
-!> side, a fixed-point iteration. In a time step the matrix holds 4/dt^2 M,
-!> which dominates K_N and makes the iteration contract. In statics the
-!> matrix is K_L alone: once the deflection is of the order of the
-!> thickness the membrane stiffness K_N exceeds the bending stiffness K_L
-!> and the iteration D <- K_L^-1 (F - K_N(D) D) diverges - exactly the
-!> range of the nonlinear validation (w0/h up to 3 and more). Newton
-!> converges there, quadratically, for the price of a factorisation of K_T
-!> per iteration (band storage, cheap next to the time loop of an impact).
-!>
-!> Results (written by src/analyses/other_analyses.f90): `<prefix>_static.dat`, one
-!> row per load increment, and `<prefix>_deflection.dat`, the nodal
-!> displacements at the full load.
+!> f_int(D) = K_L D + K_N(D) D (eq. 15) and K_T its exact derivative, until
+!> the eq. (18) measure sum dD^2 <= C_r2 sum (D^{k+1} - D_{i-1})^2.
+!> Results (written by src/analyses/other_analyses.f90): `<prefix>_static.dat`
+!> and `<prefix>_deflection.dat`. More: docs/ANALYSES.md.
 module static_analysis
    use number_text, only: int_str, real_str
    use kinds, only: dp
@@ -49,6 +33,17 @@ module static_analysis
 
 contains
 
+   !> Why Newton and not the impact analysis's Akay iteration: Akay's scheme
+   !> keeps the left-hand matrix constant and moves K_N(D) D to the right-hand
+   !> side, a fixed-point iteration. In a time step the matrix holds 4/dt^2 M,
+   !> which dominates K_N and makes the iteration contract. In statics the
+   !> matrix is K_L alone: once the deflection is of the order of the
+   !> thickness the membrane stiffness K_N exceeds the bending stiffness K_L
+   !> and the iteration D <- K_L^-1 (F - K_N(D) D) diverges - exactly the
+   !> range of the nonlinear validation (w0/h up to 3 and more). Newton
+   !> converges there, quadratically, for the price of a factorisation of K_T
+   !> per iteration (band storage, cheap next to the time loop of an impact).
+   !>
    !> The plate under the loads lambda_i F, lambda_i = i/increments: linear
    !> (one solve, scaled) or Newton in each increment (module header).
    !> On failure res holds the increments completed.

@@ -1,22 +1,14 @@
-!> The command line of `impact` (impact --help prints it):
+!> The command line of `impact`:
 !>
 !>   impact [options] [deck.nml]       no deck: the deck is read from standard input
-!>     --check               read, echo, build and factor; no time steps (a data check)
-!>     --overwrite           replace an earlier run's results (as &output overwrite = .true.)
-!>     --restart             continue the run at the deck's prefix from its restart point
-!>                           (src/results/restart_point.f90)
-!>     --set group.var=value a deck variable, set after the deck is read (repeatable);
-!>                           the deck with every --set is then checked once, as a deck
-!>     --trace STEP[,STEP]   the teaching trace of those steps (src/results/step_trace.f90)
-!>     --accuracy TOL        every result to a relative error TOL: a ladder of runs
-!>                           (as &accuracy target = TOL; src/accuracy/accuracy_driver.f90)
-!>     --single              one run of the deck as it stands, its &accuracy target
-!>                           left aside (how an accuracy run starts the runs of its ladder)
+!>     --check  --overwrite  --restart  --set group.var=value (repeatable)
+!>     --trace STEP[,STEP]  --accuracy TOL  --single
 !>     --schema, --deck-table, --version, --help
 !>
-!> Options may stand before or after the deck (impact deck.nml --check is
-!> a data check); one deck only: a second one, an unknown option or a
-!> missing value is an error (the caller prints the usage line).
+!> Options may stand before or after the deck; one deck only: a second
+!> one, an unknown option or a missing value is an error (the caller prints
+!> the usage line). What each option does: `impact --help`
+!> (src/results/run_report.f90) and docs/DECK.md. Not from the paper.
 module command_line
    use input_deck, only: deck_t, read_deck, read_deck_file, set_variable, validate_deck
    use deck_schema, only: not_given_real

@@ -1,51 +1,17 @@
-!> The deck's variables, declared once: the schema.
+!> The deck's variables, declared once: the schema. Every variable of
+!> every namelist group has one entry in `deck_vars` (group, name, kind,
+!> unit, default, admissible range, meaning); the reader, the range checks,
+!> the echo, the `/deck` attributes of <prefix>.h5, `impact --schema` and
+!> the deck table of docs/DECK.md are derived from it. The values live in
+!> `deck_t`, one component per variable, connected by `deck_bind`.
 !>
-!> Every variable of every namelist group has one entry in `deck_vars`
-!> below: its group, name, kind, unit, default, admissible values and
-!> meaning. Everything else is derived from that table: the reader (names,
-!> kinds, defaults), the range checks and their messages, the echo, the
-!> `/deck` attributes of `<prefix>.h5`, `impact --schema` (what tools/sweep
-!> reads) and the deck table of the docs/DECK.md (`make deck-table`; a test keeps
-!> the two in step). The values themselves live in `deck_t`, one component
-!> per variable, where the program reads them; `deck_bind` connects each
-!> entry to its component.
-!>
-!> Adding a variable: its entry in deck_vars, its component in deck_t and
-!> its line in deck_bind (all in this file), and any check that relates it
-!> to other variables in the check_* routines that validate_deck calls
-!> (src/deck/input_deck.f90).
-!>
-!> The `range` of an entry: for numbers an interval, '(0, inf)', '[1, 3]',
-!> ... (round brackets exclude the bound), checked on every value, with
-!> non-finite values refused; for words the admissible words, 'a | b | c';
-!> for texts (kind_path) the empty range (any text without control
-!> characters); for logicals none; for a list of reals (kind_reals) an
-!> interval every value must lie in ('[-360, 360]' for the ply angles).
-!> Every number a reader produces is finite: NaN, Inf and numbers beyond
-!> the range of a double (1e400) are refused in every real, of a deck and
-!> of --set, before any range is looked at; so are integers beyond
-!> +-huge(0) (src/deck/input_deck.f90, convert).
-!>
-!> "Not given". A default '' makes a variable optional: until the deck (or
-!> --set) gives it, it has no value and the program decides (k4, k5:
-!> Whitney's method; the six strengths of &strength: without them no ply
-!> stresses and no failure criterion, strength_given). "Not given" is kept
-!> in the variable's component as a value no reader produces, so that no
-!> value a deck can write means it: NaN for a real (not_given_real()),
-!> not_given_integer (-huge(0) - 1) for an integer. Ask whether a variable
-!> has a value with is_given(deck, 'group', 'name') (or a named function
-!> built on it, strength_given); compare with the sentinel nowhere else.
-!> The range checks and the /deck attributes of <prefix>.h5 skip a
-!> variable that is not given (value_t%given), and the echo shows it as
-!> '(not given)'.
-!>
-!> Making a real or an integer optional (e.g. &analysis dt, &mesh nx):
-!> its default '' in deck_vars, nothing else here (deck_bind keeps the
-!> sentinel of every optional real and integer); then every reader
-!> of the value asks is_given first, and a deck_t made in code without
-!> default_deck sets the sentinel itself. deck_t%given tells a different
-!> thing: which variables the deck or --set wrote (a default written out
-!> counts: criterion = 'hashin' needs the strengths).
+!> Adding a variable: its entry in deck_vars, its component in deck_t, its
+!> line in deck_bind, and any check across variables in validate_deck
+!> (src/deck/input_deck.f90). A default '' makes a variable optional: "not
+!> given" is kept as a value no reader produces (NaN, not_given_integer);
+!> ask is_given (or strength_given), never compare with the sentinel.
+!> deck_t%given tells which variables the deck or --set wrote.
+!> Not from the paper. More: docs/DECK.md.
 module deck_schema
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
    use kinds, only: dp

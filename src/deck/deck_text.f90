@@ -1,66 +1,21 @@
 !> The text of a deck: its namelist groups and their assignments, found
 !> with their line numbers, before anything is known of what they mean
-!> (src/deck/input_deck.f90 checks them against the schema, src/deck/deck_schema.f90).
+!> (src/deck/input_deck.f90 checks them against src/deck/deck_schema.f90).
 !>
-!> The syntax is Fortran's namelist input, the part of it a deck needs:
-!>
-!>     ! a comment, to the end of the line
-!>     &group  name = value, name = value1, value2, ...
-!>             name = 'a string', name = .true. /
-!>
-!> A group starts at '&name' and ends at '/' (or '&end'); names are
-!> case-insensitive; values are separated by commas or blanks and may run
-!> over several lines; strings are quoted with ' or " (a doubled quote
-!> stands for itself); '!' outside a string starts a comment. A repeat
-!> count is Fortran's: r*c is r copies of the value c (r*'text' of a
-!> string), r a whole number from 1; an item_t keeps c once with its count
-!> (the reader of values expands it, src/deck/input_deck.f90), so that a scalar
-!> given 2*0.01 is two values and refused, and angles = 10*0, 4*45 is 14
-!> plies. A UTF-8 byte-order mark at the start of the deck is passed over.
-!>
-!> Stricter than a compiler's namelist reader, so that nothing in a deck is
-!> silently ignored or merged: outside the groups only blank lines and
-!> comments (text after a group's '/' is an error, not a comment); each
-!> assignment names one variable (no array elements, name(3) = ...) and has
-!> at least one value, no empty one between commas and no null value r*
-!> (Fortran's "leave it as it was"); a string ends on its line; a deck is
-!> at most max_deck_bytes (1 MiB) long, so that a wrong file (/dev/zero, a
-!> binary) ends the reading at once. An error comes back as the line it is
-!> on and what is wrong; the deck's text in it is shown by shown_text, its
-!> control bytes and bytes that are not UTF-8 escaped (\x00), so that the
-!> message stays one readable line.
-!>
-!> The reading takes time in proportion to the deck's length (the lines,
-!> the strings, the tokens, the groups and the assignments grow by
-!> doubling), whatever the deck holds.
-!>
-!> Why a reader of our own and not `read (unit, nml=...)`: gfortran's
-!> namelist read (tried with gfortran 12) answers a bad value, `a = abc`,
-!> with "Cannot match namelist object name abc", naming neither the group,
-!> the variable nor the line, and without iostat= stops the program there
-!> with a backtrace; it passes over a misspelt group (&plaet), text before
-!> a group and after its '/', and reads only the first of a group given
-!> twice and the last of a variable given twice, all without a word; it
-!> merges `angles(3) = 7` into the list it had, leaves the elements past a
-!> shorter list as they were, and cuts a string longer than its variable
-!> (a deferred-length one too, to its current length); and a variable
-!> given its default value cannot be told from one not given (deck_t%given:
-!> &strength criterion = 'hashin' is refused without the strengths,
-!> although 'hashin' is its default).
-!>
-!> The reading is in two halves: the tokenizer (scan_line and the routines
-!> under it) turns the characters of each line into tokens and finds where
-!> the groups start and end; the group builder (begin_group, end_group,
-!> build_assignments and the routines under it) makes the groups and, at
-!> each group's end, turns its tokens into its assignments. The first
-!> error stops both. split_value_text reads the value of a command line's
-!> --set group.name=value by the same rules (quotes, commas, repeat counts).
+!> The syntax is Fortran's namelist input, the part a deck needs ('&group
+!> name = value, ... /', quotes, '!' comments, repeat counts r*c), read
+!> stricter than a compiler's namelist reader so that nothing is silently
+!> ignored, merged or cut; an error comes back as its line and what is
+!> wrong, the deck's text shown escaped on one line (shown_text). Two
+!> halves: the tokenizer (scan_line and below) and the group builder
+!> (begin_group, end_group, build_assignments). split_value_text reads a
+!> --set value by the same rules. The time is linear in the deck's length.
+!> Not from the paper. More: docs/DECK.md.
 module deck_text
    use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor
    implicit none
    private
    public :: item_t, group_text_t, read_deck_text, split_value_text, lower_case, shown_text
-   public :: max_deck_bytes, max_shown
 
    !> The longest deck (bytes): 1 MiB. A deck is a few kilobytes; this
    !> bounds the reading of a wrong file (README, "Stability, bad input,

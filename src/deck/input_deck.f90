@@ -1,24 +1,14 @@
 !> The input deck: a namelist file, read from standard input or a path,
-!> checked against the schema of src/deck/deck_schema.f90 (every variable, its
-!> kind, unit, default and admissible values) and then as a whole.
+!> checked against the schema of src/deck/deck_schema.f90 (every variable,
+!> its kind, unit, default and admissible values) and then as a whole
+!> (validate_deck). SI units; an absent group or variable keeps its
+!> default; names and keywords are case-insensitive.
 !>
-!> Usage: `./impact < input/clamped.nml` or `./impact input/clamped.nml`.
-!> SI units. One group per concern; a group that is absent, and a variable
-!> that is absent from its group, keep the default; names and keywords are
-!> case-insensitive (keywords are stored in lower case).
-!>
-!> Nothing in a deck is silently dropped, merged or cut: an empty deck, a
-!> group or a variable given twice, a name the schema does not know, text
-!> outside the groups, a value of the wrong kind, a list where one value is
-!> expected (2*0.01 is two values: Fortran's repeat count), a word or path
-!> longer than its variable holds, NaN, Inf or a number beyond a double in
-!> any real (NaN is the "not given" of src/deck/deck_schema.f90, which no
-!> deck can write), a deck longer than 1 MiB, each stops the reading with
-!> one message
+!> Nothing in a deck is silently dropped, merged or cut: each fault stops
+!> the reading with one message
 !>     <deck>: &group: variable = value: what is wrong
-!> (<deck>: line N: what, for text outside any group), and so does every
-!> value outside its admissible range (the schema's `range`) and every
-!> combination the program cannot run (validate_deck).
+!> Usage: `./impact < input/clamped.nml` or `./impact input/clamped.nml`.
+!> Not from the paper. More: docs/DECK.md.
 module input_deck
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use, intrinsic :: iso_fortran_env, only: int64

@@ -1,39 +1,8 @@
-!> Symmetric positive definite band matrix in LAPACK's upper band storage.
-!>
-!> Storage scheme (the only place it is documented)
-!> ------------------------------------------------
-!> A symmetric matrix A of order n with half-bandwidth kd (A(i,j) = 0 when
-!> |i - j| > kd) keeps only its upper triangle inside the band, column by
-!> column, in the array ab(kd+1, n):
-!>
-!>     ab(kd+1+i-j, j) = A(i,j)    for  max(1, j-kd) <= i <= j
-!>
-!> so the diagonal is the last row of ab and the k-th superdiagonal is row
-!> kd+1-k. Example, n = 5, kd = 2:
-!>
-!>          A (upper triangle)               ab (kd+1 = 3 rows, n = 5 columns)
-!>     | a11 a12 a13  .   .  |         row 1:   *    *   a13  a24  a35
-!>     |     a22 a23 a24  .  |         row 2:   *   a12  a23  a34  a45
-!>     |         a33 a34 a35 |         row 3:  a11  a22  a33  a44  a55  <- diagonal
-!>     |             a44 a45 |
-!>     | sym             a55 |         (* = unused, kept zero)
-!>
-!> A(i,j) and A(j,i) are one stored number: band_add(a, i, j, v) with i > j
-!> adds v to the same entry as band_add(a, j, i, v). An assembly loop over
-!> a full symmetric element matrix must therefore add each global pair once
-!> (for instance only the pairs with row <= column).
-!>
-!> This layout is what LAPACK dpbtrf/dpbtrs and BLAS dsbmv read with
-!> uplo = 'U' and ldab = kd+1. band_factor overwrites ab in place with the
-!> Cholesky factor U (A = U^T U, same layout); afterwards the matrix can
-!> only be solved with, not added into or multiplied with, until band_zero.
-!>
-!> Pivot rule (shared with skyline_matrix, so both storages reject the same
-!> matrices): equation j fails when its pivot d_j = U(j,j)**2, the diagonal
-!> of D in A = L D L^T, is not greater than pivot_rel_tol * |A(j,j)|, with
-!> A(j,j) the diagonal before factorisation. This catches negative and zero
-!> pivots (dpbtrf's own test) and also pivots that are zero up to rounding,
-!> such as an unrestrained rigid-body mode.
+!> Symmetric positive definite band matrix in LAPACK's upper band storage,
+!> factored in place by Cholesky (dpbtrf, dpbtrs; dsbmv for products): one
+!> of the storages of the global matrices (src/linalg/global_matrix.f90)
+!> that solve the linear system of eq. (19). The storage scheme and the
+!> pivot rule: the comment above band_matrix_t.
 module band_matrix
    use kinds, only: dp, msg_len
    use, intrinsic :: iso_fortran_env, only: int64
@@ -47,7 +16,41 @@ module band_matrix
    !> (64 machine epsilons, about 1.4e-14: all digits of d_j lost).
    real(dp), parameter :: pivot_rel_tol = 64 * epsilon(1.0_dp)
 
-   !> Symmetric band matrix, upper band storage (see module header).
+   !> Storage scheme (the only place it is documented)
+   !> ------------------------------------------------
+   !> A symmetric matrix A of order n with half-bandwidth kd (A(i,j) = 0 when
+   !> |i - j| > kd) keeps only its upper triangle inside the band, column by
+   !> column, in the array ab(kd+1, n):
+   !>
+   !>     ab(kd+1+i-j, j) = A(i,j)    for  max(1, j-kd) <= i <= j
+   !>
+   !> so the diagonal is the last row of ab and the k-th superdiagonal is row
+   !> kd+1-k. Example, n = 5, kd = 2:
+   !>
+   !>          A (upper triangle)               ab (kd+1 = 3 rows, n = 5 columns)
+   !>     | a11 a12 a13  .   .  |         row 1:   *    *   a13  a24  a35
+   !>     |     a22 a23 a24  .  |         row 2:   *   a12  a23  a34  a45
+   !>     |         a33 a34 a35 |         row 3:  a11  a22  a33  a44  a55  <- diagonal
+   !>     |             a44 a45 |
+   !>     | sym             a55 |         (* = unused, kept zero)
+   !>
+   !> A(i,j) and A(j,i) are one stored number: band_add(a, i, j, v) with i > j
+   !> adds v to the same entry as band_add(a, j, i, v). An assembly loop over
+   !> a full symmetric element matrix must therefore add each global pair once
+   !> (for instance only the pairs with row <= column).
+   !>
+   !> This layout is what LAPACK dpbtrf/dpbtrs and BLAS dsbmv read with
+   !> uplo = 'U' and ldab = kd+1. band_factor overwrites ab in place with the
+   !> Cholesky factor U (A = U^T U, same layout); afterwards the matrix can
+   !> only be solved with, not added into or multiplied with, until band_zero.
+   !>
+   !> Pivot rule (shared with skyline_matrix, so both storages reject the same
+   !> matrices): equation j fails when its pivot d_j = U(j,j)**2, the diagonal
+   !> of D in A = L D L^T, is not greater than pivot_rel_tol * |A(j,j)|, with
+   !> A(j,j) the diagonal before factorisation. This catches negative and zero
+   !> pivots (dpbtrf's own test) and also pivots that are zero up to rounding,
+   !> such as an unrestrained rigid-body mode.
+   !> Symmetric band matrix, upper band storage (as above).
    type :: band_matrix_t
       integer :: n = 0  !< order of the matrix (number of equations).
       integer :: kd = 0  !< half-bandwidth: A(i,j) = 0 for |i-j| > kd.
@@ -188,7 +191,7 @@ contains
 
    !> Cholesky factorisation in place (LAPACK dpbtrf), A = U^T U.
    !>
-   !> On a failed pivot (see module header) stat = 1, bad_eq is the
+   !> On a failed pivot (the rule above band_matrix_t) stat = 1, bad_eq is the
    !> equation and errmsg says "matrix not positive definite at equation N";
    !> the matrix is then left unusable (not flagged factored).
    subroutine band_factor(a, stat, errmsg, bad_eq)
@@ -335,7 +338,7 @@ contains
       a%ab = a%ab + alpha * b%ab
    end subroutine band_axpy
 
-   !> The pivot rule (module header) at equation j: stat = 1 and the
+   !> The pivot rule (above band_matrix_t) at equation j: stat = 1 and the
    !> message when the pivot d_j is not greater than pivot_rel_tol |A(j,j)|
    !> (NaN fails too), else stat = 0 (band, and sparse_matrix's CHOLMOD factor).
    pure subroutine check_pivot(j, pivot, ajj, stat, errmsg)

@@ -1,36 +1,23 @@
 !> CHOLMOD (SuiteSparse's sparse Cholesky) as the sparse storage calls it:
 !> Fortran interfaces (bind(c)) to the flat C functions of
 !> src/linalg/cholmod_shim.c, and a handle type that owns one factorization.
+!> The shim is compiled against the installed cholmod.h, so that only
+!> integers, doubles and arrays cross the language boundary (CHOLMOD's
+!> structs change between releases); its header lists the return codes.
 !>
-!> Why a C shim and not interfaces to cholmod_l_* themselves: CHOLMOD is
-!> driven through structs declared in its header (cholmod_common has some
-!> 300 fields, whose layout changes between SuiteSparse releases and build
-!> options); a Fortran mirror of them would break silently on another
-!> machine. The shim is compiled against the installed cholmod.h, so only
-!> integers, doubles and arrays cross the language boundary (the shim's
-!> header says more, and lists its return codes, the codes below).
-!>
-!> Ownership: a cholmod_handle_t holds only the key of its factorization
-!> in the shim's table, and the factorization lives until chol_release
-!> (the owner's explicit release: global_release, global_init). An
-!> assignment copies the key, not the factorization (chol_copy copies
-!> that); releasing is idempotent, and a key whose factorization is gone is
-!> refused by every call (code no_handle), never followed, so a stale copy
-!> fails with a message instead of touching freed memory.
-!>
-!> Why not a final procedure and a defined assignment, which would make
-!> the release automatic: gfortran 12 (Debian 12's) finalizes temporaries
-!> of the right-hand side of an intrinsic assignment (which would release
-!> the original's factorization) and skips the default initialization of
-!> an intent(out) argument whose type has a finalizable component
-!> (measured here); so the release is explicit, as for a C resource.
+!> A cholmod_handle_t holds only the key of its factorization in the shim's
+!> table; the factorization lives until chol_release, which is explicit (a
+!> final procedure is not used: gfortran 12 finalizes the right-hand side's
+!> temporaries of an assignment). An assignment copies the key (chol_copy
+!> the factorization); a key whose factorization is gone is refused.
+!> Not from the paper. More: docs/PERFORMANCE.md ("Sparse storage (CHOLMOD)").
 module cholmod_binding
    use, intrinsic :: iso_c_binding, only: c_int, c_long_long, c_double
    use kinds, only: dp
    implicit none
    private
    public :: cholmod_handle_t, cholmod_live_handles, chol_set_matrix, chol_analyze, chol_factorize, &
-             chol_diagonal, chol_solve, chol_copy, chol_release, chol_failure
+             chol_diagonal, chol_solve, chol_copy, chol_release
 
    !> Return codes of the shim (src/linalg/cholmod_shim.c).
    integer(c_int), parameter :: code_ok = 0, no_handle = 1, no_memory = 2, too_large = 3, invalid = 4, &

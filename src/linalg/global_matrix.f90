@@ -1,41 +1,16 @@
-!> The global (structure) matrices of the model, in a storage chosen at run
-!> time: 'band' (module band_matrix, LAPACK band Cholesky), 'skyline'
-!> (module skyline_matrix, COLSOL's active-column L D L^T) or 'sparse'
-!> (module sparse_matrix: compressed sparse columns of the upper triangle,
-!> CHOLMOD's supernodal Cholesky after a fill-reducing ordering); 'auto'
-!> picks band or sparse by the number of equations (module storage_choice).
-!> Each storage scheme is documented in the header of its own module.
-!>
-!> The structure is found from the element freedom table elem_eq(nfe,nelem)
-!> (global equation number of each element freedom, 0 = constrained): for
-!> band storage the half-bandwidth kd = max over elements of (largest -
-!> smallest equation), for skyline storage the first row of each column
-!> m_j = min over the elements that hold j of their smallest equation, for
-!> sparse storage the pattern itself: the pairs of equations that an element
-!> couples (the rows i <= j of each column j).
-!>
-!> What stays after global_factor: band and skyline overwrite A with its
-!> factor in place; sparse keeps CHOLMOD's factor and the pattern and
-!> releases the values of A (a factored matrix is only solved with).
-!> CHOLMOD's factor is C memory, released by global_release (and by
-!> global_init), not at the end of a scope: a local sparse matrix that was
-!> factored is released before it goes (band and skyline need nothing). A
-!> copy by global_copy has its own factor; an assignment shares it.
-!>
-!> Typical use (Newmark, constant effective stiffness):
-!>     global_init(K, ...); global_init(M, ...)       same storage, same elem_eq
-!>     global_assemble(K, ke, elem_eq(:,e)) for every element, M likewise
-!>     global_copy(Keff, K); global_axpy_matrix(Keff, 4/dt**2, M)
-!>     global_factor(Keff, ...)                        once
-!>     global_solve(Keff, r, ...)                      every step
-!>
-!> Errors: every failure returns stat /= 0 with errmsg. global_assemble,
-!> global_axpy_matrix and global_matvec take stat and errmsg as optional
-!> arguments; without them a failed assembly or addition changes nothing
-!> and is recorded in the matrix (deferred_error), to be reported by the
-!> next global_factor or global_solve, and a failed product returns NaN.
-!> global_factor returns only the equation number of a failed pivot
-!> (bad_eq); the caller maps it to a node and a freedom.
+!> The global (structure) matrices of the model, [M], [K_L] and the
+!> effective stiffness K_L + 4/dt^2 M of eq. (19), in a storage chosen at run
+!> time: 'band' (band_matrix), 'skyline' (skyline_matrix) or 'sparse'
+!> (sparse_matrix, CHOLMOD); 'auto' picks by the number of equations
+!> (storage_choice). Each storage scheme is documented in its own module.
+!> The structure comes from the element freedom table elem_eq (0 =
+!> constrained). Use: global_init, global_assemble per element, global_copy
+!> and global_axpy_matrix for K_L + a0 M, global_factor once,
+!> global_solve every step; global_release frees CHOLMOD's factor.
+!> Errors: stat /= 0 and errmsg; without the optional stat a failed
+!> assembly is recorded and reported by the next factor or solve; a failed
+!> pivot returns its equation (bad_eq), which the caller names.
+!> More: docs/ALGORITHM.md.
 module global_matrix
    use kinds, only: dp, msg_len
    use number_text, only: int_str

@@ -1,43 +1,9 @@
 !> Symmetric matrix in active-column (skyline, profile) storage, with the
 !> in-place L D L^T factorisation and solution of Bathe's COLSOL, written
-!> out from the mathematics for teaching.
-!>
-!> Storage scheme (the only place it is documented)
-!> ------------------------------------------------
-!> Only the upper triangle is kept. Column j is stored from its diagonal
-!> UP to its first nonzero row m_j = first_row(j), consecutively, in one
-!> packed array a(1:nwk); maxa(j) is the address of the diagonal A(j,j), and
-!> maxa(n+1) = nwk + 1 closes the last column (Bathe's convention):
-!>
-!>     a(maxa(j) + j - i) = A(i,j)      for  m_j <= i <= j
-!>     column height  j - m_j = maxa(j+1) - maxa(j) - 1   (off-diagonals)
-!>     nwk = maxa(n+1) - 1                                (stored reals)
-!>
-!> Worked example, n = 5 (. = zero outside the profile, not stored;
-!> 0 = zero inside the profile, stored, may fill in during factorisation):
-!>
-!>          col:  1    2    3    4    5        first_row m_j = 1 1 2 1 4
-!>     row 1  | a11  a12   .   a14   .  |
-!>     row 2  |      a22  a23   0    .  |
-!>     row 3  |           a33  a34   .  |
-!>     row 4  |                a44  a45 |
-!>     row 5  | sym                 a55 |
-!>
-!>     address  1  |  2   3  |  4   5  |  6   7   8   9  | 10  11
-!>     a      = a11| a22 a12 | a33 a23 | a44 a34  0  a14 | a55 a45
-!>     maxa   = 1, 2, 4, 6, 10, 12          nwk = 11
-!>
-!> e.g. A(1,4) is at maxa(4) + 4 - 1 = 9, A(4,5) at maxa(5) + 5 - 4 = 11.
-!> A(i,j) and A(j,i) are one stored number (skyline_add mirrors i > j).
-!>
-!> After skyline_factor the same addresses hold A = L D L^T (L unit lower
-!> triangular, D diagonal): a(maxa(j)) = d_j and a(maxa(j) + j - i) = l_ij,
-!> meaning L(j,i), for m_j <= i < j. L has the profile of A (no fill-in
-!> outside it), which is why the profile is the storage.
-!>
-!> Pivot rule (the same as band_matrix, so both storages reject the same
-!> matrices): equation j fails when d_j <= pivot_rel_tol * |A(j,j)|, A(j,j)
-!> the diagonal before factorisation; this includes d_j <= 0.
+!> out from the mathematics for teaching: one of the storages of the global
+!> matrices (src/linalg/global_matrix.f90) that solve the linear system of
+!> eq. (19). The storage scheme and the pivot rule: the comment above
+!> skyline_matrix_t.
 module skyline_matrix
    use kinds, only: dp, msg_len
    use band_matrix, only: pivot_rel_tol
@@ -45,12 +11,46 @@ module skyline_matrix
    implicit none
    private
    public :: skyline_matrix_t
-   public :: skyline_init, skyline_zero, skyline_in_profile, skyline_add, &
-             skyline_get, skyline_first_row, skyline_half_bandwidth, &
-             skyline_matvec, skyline_factor, skyline_solve, &
-             skyline_axpy
+   public :: skyline_init, skyline_zero, skyline_in_profile, skyline_add, skyline_get, &
+             skyline_half_bandwidth, skyline_matvec, skyline_factor, skyline_solve, skyline_axpy
 
-   !> Symmetric matrix in skyline storage (see module header).
+   !> Storage scheme (the only place it is documented)
+   !> ------------------------------------------------
+   !> Only the upper triangle is kept. Column j is stored from its diagonal
+   !> UP to its first nonzero row m_j = first_row(j), consecutively, in one
+   !> packed array a(1:nwk); maxa(j) is the address of the diagonal A(j,j), and
+   !> maxa(n+1) = nwk + 1 closes the last column (Bathe's convention):
+   !>
+   !>     a(maxa(j) + j - i) = A(i,j)      for  m_j <= i <= j
+   !>     column height  j - m_j = maxa(j+1) - maxa(j) - 1   (off-diagonals)
+   !>     nwk = maxa(n+1) - 1                                (stored reals)
+   !>
+   !> Worked example, n = 5 (. = zero outside the profile, not stored;
+   !> 0 = zero inside the profile, stored, may fill in during factorisation):
+   !>
+   !>          col:  1    2    3    4    5        first_row m_j = 1 1 2 1 4
+   !>     row 1  | a11  a12   .   a14   .  |
+   !>     row 2  |      a22  a23   0    .  |
+   !>     row 3  |           a33  a34   .  |
+   !>     row 4  |                a44  a45 |
+   !>     row 5  | sym                 a55 |
+   !>
+   !>     address  1  |  2   3  |  4   5  |  6   7   8   9  | 10  11
+   !>     a      = a11| a22 a12 | a33 a23 | a44 a34  0  a14 | a55 a45
+   !>     maxa   = 1, 2, 4, 6, 10, 12          nwk = 11
+   !>
+   !> e.g. A(1,4) is at maxa(4) + 4 - 1 = 9, A(4,5) at maxa(5) + 5 - 4 = 11.
+   !> A(i,j) and A(j,i) are one stored number (skyline_add mirrors i > j).
+   !>
+   !> After skyline_factor the same addresses hold A = L D L^T (L unit lower
+   !> triangular, D diagonal): a(maxa(j)) = d_j and a(maxa(j) + j - i) = l_ij,
+   !> meaning L(j,i), for m_j <= i < j. L has the profile of A (no fill-in
+   !> outside it), which is why the profile is the storage.
+   !>
+   !> Pivot rule (the same as band_matrix, so both storages reject the same
+   !> matrices): equation j fails when d_j <= pivot_rel_tol * |A(j,j)|, A(j,j)
+   !> the diagonal before factorisation; this includes d_j <= 0.
+   !> Symmetric matrix in skyline storage (as above).
    type :: skyline_matrix_t
       integer :: n = 0  !< order of the matrix (number of equations).
       integer, allocatable :: maxa(:)  !< address of the diagonal of column j in a; maxa(n+1) = nwk + 1.
@@ -204,7 +204,7 @@ contains
 
    !> In-place L D L^T factorisation, column by column (COLSOL's algorithm).
    !>
-   !> On a failed pivot (see module header) stat = 1, bad_eq is the
+   !> On a failed pivot (the rule above skyline_matrix_t) stat = 1, bad_eq is the
    !> equation and errmsg says "matrix not positive definite at equation N";
    !> the matrix is then left unusable (not flagged factored).
    subroutine skyline_factor(sky, stat, errmsg, bad_eq)

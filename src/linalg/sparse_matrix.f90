@@ -1,56 +1,10 @@
 !> Symmetric positive definite matrix in compressed sparse columns, factored
 !> by CHOLMOD's supernodal Cholesky with a fill-reducing ordering
-!> (SuiteSparse, through src/linalg/cholmod_binding.f90).
-!>
-!> Storage scheme (the only place it is documented)
-!> ------------------------------------------------
-!> Only the upper triangle is kept, and in it only the pairs (i, j), i <= j,
-!> that some element couples (both equations are freedoms of one element;
-!> the diagonal always). Column j holds its rows ascending, the diagonal
-!> last, in the packed arrays rowind and val:
-!>
-!>     val(p) = A(rowind(p), j)    for  colptr(j) <= p < colptr(j+1)
-!>     nnz = colptr(n+1) - 1       (stored reals)
-!>
-!> Example, n = 5, elements holding equations {1, 2, 4} and {3, 4, 5}:
-!>
-!>          col:  1    2    3    4    5
-!>     row 1  | a11  a12   .   a14   .  |      colptr = 1, 2, 4, 5, 9, 12
-!>     row 2  |      a22   .   a24   .  |      rowind = 1 | 1 2 | 3 | 1 2 3 4 | 3 4 5
-!>     row 3  |           a33  a34  a35 |      val    = a11 | a12 a22 | a33 |
-!>     row 4  |                a44  a45 |               a14 a24 a34 a44 | a35 a45 a55
-!>     row 5  | sym                 a55 |
-!>
-!> The pattern comes from the element freedom table alone (sparse_init),
-!> so M, K_L and K_L + 4/dt^2 M of one model share it. A(i,j) and A(j,i) are
-!> one stored number (sparse_add mirrors i > j). For a plate this keeps
-!> about 40 reals per equation where band storage keeps kd + 1 (hundreds to
-!> thousands).
-!>
-!> Factorization: CHOLMOD orders the equations to reduce the fill (its
-!> default: AMD, and METIS' nested dissection when AMD leaves much fill),
-!> finds the structure of the factor (the symbolic factorization, done once
-!> per matrix and kept, so that a refactorization after sparse_zero costs
-!> only the numbers; another matrix of a pattern seen last reuses its
-!> ordering, src/linalg/cholmod_shim.c), and computes P A P^T = L L^T supernode by supernode
-!> with dense BLAS. Before the numeric factorization the analysis gives the
-!> factor's size, which is checked against the machine's memory. The
-!> factored matrix keeps the factor and the pattern, not the values of A
-!> (released: the steps need only the factor), until sparse_zero.
-!>
-!> The factorization lives in CHOLMOD's memory until sparse_release: the
-!> matrix holds its key (module cholmod_binding says why the release is
-!> explicit). An assignment b = a shares it; sparse_copy_factor gives b its
-!> own copy.
-!>
-!> Pivot rule (the one of band_matrix and skyline_matrix): equation j fails
-!> when its pivot d_j = L(k,k)**2 (k its place in the order of elimination)
-!> is not greater than pivot_rel_tol * |A(j,j)|; the first failure in the
-!> order of elimination is reported, or the column at which CHOLMOD found a
-!> pivot <= 0, whichever comes first. The elimination order is not that of
-!> band storage, so for a singular matrix (a mechanism) the equation named
-!> may be another of the same mechanism; a matrix with one bad equation is
-!> named alike by all storages.
+!> (SuiteSparse, through src/linalg/cholmod_binding.f90): one of the
+!> storages of the global matrices (src/linalg/global_matrix.f90) that solve
+!> the linear system of eq. (19). The storage scheme, the factorization, the
+!> ownership of the factor and the pivot rule: the comment above
+!> sparse_matrix_t. More: docs/PERFORMANCE.md ("Sparse storage (CHOLMOD)").
 module sparse_matrix
    use, intrinsic :: iso_c_binding, only: c_long_long
    use, intrinsic :: iso_fortran_env, only: int64
@@ -69,7 +23,56 @@ module sparse_matrix
    !> Bytes in a GiB, for the messages.
    real(dp), parameter :: gib = 1024.0_dp**3
 
-   !> Symmetric matrix in compressed sparse columns (see module header).
+   !> Storage scheme (the only place it is documented)
+   !> ------------------------------------------------
+   !> Only the upper triangle is kept, and in it only the pairs (i, j), i <= j,
+   !> that some element couples (both equations are freedoms of one element;
+   !> the diagonal always). Column j holds its rows ascending, the diagonal
+   !> last, in the packed arrays rowind and val:
+   !>
+   !>     val(p) = A(rowind(p), j)    for  colptr(j) <= p < colptr(j+1)
+   !>     nnz = colptr(n+1) - 1       (stored reals)
+   !>
+   !> Example, n = 5, elements holding equations {1, 2, 4} and {3, 4, 5}:
+   !>
+   !>          col:  1    2    3    4    5
+   !>     row 1  | a11  a12   .   a14   .  |      colptr = 1, 2, 4, 5, 9, 12
+   !>     row 2  |      a22   .   a24   .  |      rowind = 1 | 1 2 | 3 | 1 2 3 4 | 3 4 5
+   !>     row 3  |           a33  a34  a35 |      val    = a11 | a12 a22 | a33 |
+   !>     row 4  |                a44  a45 |               a14 a24 a34 a44 | a35 a45 a55
+   !>     row 5  | sym                 a55 |
+   !>
+   !> The pattern comes from the element freedom table alone (sparse_init),
+   !> so M, K_L and K_L + 4/dt^2 M of one model share it. A(i,j) and A(j,i) are
+   !> one stored number (sparse_add mirrors i > j). For a plate this keeps
+   !> about 40 reals per equation where band storage keeps kd + 1 (hundreds to
+   !> thousands).
+   !>
+   !> Factorization: CHOLMOD orders the equations to reduce the fill (its
+   !> default: AMD, and METIS' nested dissection when AMD leaves much fill),
+   !> finds the structure of the factor (the symbolic factorization, done once
+   !> per matrix and kept, so that a refactorization after sparse_zero costs
+   !> only the numbers; another matrix of a pattern seen last reuses its
+   !> ordering, src/linalg/cholmod_shim.c), and computes P A P^T = L L^T supernode by supernode
+   !> with dense BLAS. Before the numeric factorization the analysis gives the
+   !> factor's size, which is checked against the machine's memory. The
+   !> factored matrix keeps the factor and the pattern, not the values of A
+   !> (released: the steps need only the factor), until sparse_zero.
+   !>
+   !> The factorization lives in CHOLMOD's memory until sparse_release: the
+   !> matrix holds its key (module cholmod_binding says why the release is
+   !> explicit). An assignment b = a shares it; sparse_copy_factor gives b its
+   !> own copy.
+   !>
+   !> Pivot rule (the one of band_matrix and skyline_matrix): equation j fails
+   !> when its pivot d_j = L(k,k)**2 (k its place in the order of elimination)
+   !> is not greater than pivot_rel_tol * |A(j,j)|; the first failure in the
+   !> order of elimination is reported, or the column at which CHOLMOD found a
+   !> pivot <= 0, whichever comes first. The elimination order is not that of
+   !> band storage, so for a singular matrix (a mechanism) the equation named
+   !> may be another of the same mechanism; a matrix with one bad equation is
+   !> named alike by all storages.
+   !> Symmetric matrix in compressed sparse columns (as above).
    type :: sparse_matrix_t
       integer :: n = 0  !< order of the matrix (number of equations).
       integer(c_long_long), allocatable :: colptr(:)  !< start of column j in rowind and val, colptr(n+1) = nnz + 1.
@@ -84,7 +87,7 @@ module sparse_matrix
 
 contains
 
-   !> The pattern of the element freedom table (module header) and a zero
+   !> The pattern of the element freedom table (above sparse_matrix_t) and a zero
    !> matrix on it.
    subroutine sparse_init(a, n, elem_eq, stat, errmsg)
       type(sparse_matrix_t), intent(out) :: a  !< the matrix, (re)defined here.

@@ -7,23 +7,11 @@
 !>   alpha_0 = beta (alpha_m - alpha_p) if alpha_m > alpha_p, else 0    eq. (12)
 !>   alpha = w_impactor - w_plate at the impact point                   eq. (13)
 !>
-!> F_m and alpha_m are the largest force and indentation reached so far
-!> (F_m = k alpha_m^1.5), alpha_0 the permanent indentation.
-!>
-!> Which curve applies (the paper gives the three curves, not the switching
-!> rule; this is the rule used here, chosen so that F(alpha) is continuous
-!> and the law never creates energy):
-!>  - alpha >= alpha_m: the loading curve (a new maximum);
-!>  - below alpha_m after a maximum: the unloading curve, both ways (a partial
-!>    unload that turns back retraces it elastically);
-!>  - once the unloading has reached alpha_0 (the impactor has left the
-!>    plate), the next contact follows the reloading curve up to alpha_m, and
-!>    beyond alpha_m the loading curve again.
-!> All three curves give F = 0 for alpha <= alpha_0 (no tension).
-!>
-!> The history is committed once per converged time step (contact_commit);
-!> contact_force evaluates a trial indentation against the committed
-!> history, so the contact iteration of a step never changes the history.
+!> F_m and alpha_m are the largest force and indentation reached so far,
+!> alpha_0 the permanent indentation. Which curve applies (the paper does
+!> not say): above contact_branch. The history is committed once per
+!> converged step (contact_commit); the contact iteration only reads it.
+!> More: docs/MODEL.md.
 module contact_law
    use kinds, only: dp
    implicit none
@@ -79,7 +67,7 @@ contains
    !> force f would follow after the committed history: the inverse of
    !> contact_force. Above F_m (or before any contact) the loading curve;
    !> below it the unloading curve, or the reloading curve once the impactor
-   !> has left the plate (the switching rule of the module header). 0 for
+   !> has left the plate (the switching rule above contact_branch). 0 for
    !> f <= 0. It gives the contact area of an assumed force (contact_load).
    elemental function law_indentation(law, hist, f) result(alpha)
       type(contact_law_t), intent(in) :: law       !< law constants
@@ -121,6 +109,21 @@ contains
       end select
    end function law_tangent
 
+   !> Which curve applies (the paper gives the three curves, not the switching
+   !> rule; this is the rule used here, chosen so that F(alpha) is continuous
+   !> and the law never creates energy):
+   !>  - alpha >= alpha_m: the loading curve (a new maximum);
+   !>  - below alpha_m after a maximum: the unloading curve, both ways (a partial
+   !>    unload that turns back retraces it elastically);
+   !>  - once the unloading has reached alpha_0 (the impactor has left the
+   !>    plate), the next contact follows the reloading curve up to alpha_m, and
+   !>    beyond alpha_m the loading curve again.
+   !> All three curves give F = 0 for alpha <= alpha_0 (no tension).
+   !>
+   !> The history is committed once per converged time step (contact_commit);
+   !> contact_force evaluates a trial indentation against the committed
+   !> history, so the contact iteration of a step never changes the history.
+   !>
    !> The branch of the law that a trial indentation alpha follows.
    elemental function contact_branch(hist, alpha) result(branch)
       type(contact_history_t), intent(in) :: hist  !< committed history

@@ -1,51 +1,17 @@
 !> How the contact force enters the plate: the load of eq. (10), and the
 !> plate deflection under the impactor of eq. (13) that goes with it.
-!>
 !>  - 'point' (the paper's eq. 10, F delta w_p): the force at the impact
-!>    node, and the deflection of that node. The Mindlin plate has no finite
-!>    deflection under a point force (it grows like ln(1/r) at the load),
-!>    so this load has no mesh-converged answer: the deflection under the
-!>    impactor grows as the elements there shrink (docs/VALIDATION.md).
-!>  - 'hertz' (the default): the force spread over the contact area, a disc
-!>    of radius a = sqrt(R alpha) (R the nose radius, alpha the indentation)
-!>    with Hertz's pressure
+!>    node and that node's deflection; under a point force the Mindlin
+!>    plate's deflection has no mesh-converged answer (docs/VALIDATION.md).
+!>  - 'hertz' (the default): the force spread over the contact disc of
+!>    radius a = sqrt(R alpha) with Hertz's pressure
 !>        p(r) = 3 F / (2 pi a^2) sqrt(1 - r^2/a^2),
-!>    integrated into the consistent load vector f_i = int phi_i p dA over
-!>    the elements the disc covers (on the w freedoms); the deflection under
-!>    the impactor is the pressure-weighted mean w_p = (1/F) int p w dA,
-!>    the work-conjugate of that load. When the disc is small against the
-!>    element this is the point force; when the mesh resolves it the answer
-!>    converges.
-!>
-!> The contact radius belongs to a force: a = sqrt(R alpha(F)), alpha(F) the
-!> law's indentation at F after the committed history (law_indentation in
-!> module contact_law, the inverse of eq. 11-12), so that the load is a
-!> fixed function of the force in the contact iterations; at convergence
-!> F = F_law(alpha) and a = sqrt(R alpha). It is kept at most R.
-!>
-!> A load pattern is the load vector of a unit contact force on the whole
-!> plate, over the few equations it touches: F c_j on equation eq(j). On a
-!> quarter or half model it carries the model's share, sum c_j = 1/sym_factor
-!> (less what falls on held freedoms, which the supports take).
-!>
-!> The pattern as a function of a: on the structured mesh (elements between
-!> straight grid lines) the reference coordinates of a disc point r = a s
-!> (cos t, sin t) are affine in a as long as the point stays in its
-!> element, so each coefficient c_j(a) is a polynomial of degree 4 in a
-!> (a product of two quadratic Lagrange polynomials, summed over the
-!> points). load_pattern keeps these polynomials in the pattern with the
-!> interval of a in which no point changes element, and evaluates them
-!> while a stays in it; it builds them again (one pass over the disc points)
-!> only when a leaves it. The contact iterations call it for many close
-!> radii in every step.
-!>
-!> The quadrature of the disc: n_radial Gauss-Legendre points in t, with
-!> r = a sin t (which turns sqrt(1 - s^2) s ds into cos^2 t sin t dt, a smooth
-!> integrand), times n_angular equally spaced angles offset by half a
-!> spacing, so that no point lies on a symmetry line and each quadrant holds
-!> exactly a quarter of the points (n_angular is a multiple of 4). The
-!> weights are scaled so that the points the model keeps carry its share
-!> exactly.
+!>    as the consistent load f_i = int phi_i p dA on the w freedoms, and the
+!>    work-conjugate deflection w_p = (1/F) int p w dA.
+!> The radius belongs to a force: a = sqrt(R alpha(F)), alpha(F) the law's
+!> indentation after the committed history (law_indentation), at most R.
+!> The load pattern, its polynomials in a and the disc's quadrature: above
+!> load_pattern. More: docs/MODEL.md.
 module contact_load
    use kinds, only: dp, pi
    use mesh, only: mesh_t, locate_point
@@ -58,7 +24,7 @@ module contact_load
 
    !> Kinds of load, by code (&contact load = 'point', 'hertz').
    integer, parameter :: load_point = 1, load_hertz = 2
-   !> Points of the disc quadrature (module header): radial, angular.
+   !> Points of the disc quadrature (above load_pattern): radial, angular.
    integer, parameter :: n_radial = 8, n_angular = 48
 
    !> The contact load of a run.
@@ -81,7 +47,7 @@ module contact_load
       integer, allocatable :: eq(:)           !< their numbers
       real(dp), allocatable :: c(:)           !< load on each per newton of contact force (-)
       real(dp) :: total = 1.0_dp              !< the model's share of the force, held freedoms included
-      !> c_j(a) = sum_p poly(p, j) a^p while valid(1) <= a <= valid(2) (module header)
+      !> c_j(a) = sum_p poly(p, j) a^p while valid(1) <= a <= valid(2) (above load_pattern)
       real(dp), allocatable :: poly(:,:)      !< (0:4, equations) the polynomials
       real(dp) :: valid(2) = [1.0_dp, -1.0_dp]   !< their interval of a (m); empty: none
       real(dp) :: built_for(6) = 0.0_dp       !< the contact load and mesh they belong to (load_key)
@@ -124,6 +90,29 @@ contains
       cl%wt = cl%wt/sum(cl%wt)
    end subroutine contact_load_init
 
+   !> A load pattern is the load vector of a unit contact force on the whole
+   !> plate, over the few equations it touches: F c_j on equation eq(j). On a
+   !> quarter or half model it carries the model's share, sum c_j = 1/sym_factor
+   !> (less what falls on held freedoms, which the supports take).
+   !>
+   !> The pattern as a function of a: on the structured mesh (elements between
+   !> straight grid lines) the reference coordinates of a disc point r = a s
+   !> (cos t, sin t) are affine in a as long as the point stays in its
+   !> element, so each coefficient c_j(a) is a polynomial of degree 4 in a
+   !> (a product of two quadratic Lagrange polynomials, summed over the
+   !> points). load_pattern keeps these polynomials in the pattern with the
+   !> interval of a in which no point changes element, and evaluates them
+   !> while a stays in it; it builds them again (one pass over the disc points)
+   !> only when a leaves it. The contact iterations call it for many close
+   !> radii in every step.
+   !>
+   !> The quadrature of the disc: n_radial Gauss-Legendre points in t, with
+   !> r = a sin t (which turns sqrt(1 - s^2) s ds into cos^2 t sin t dt, a smooth
+   !> integrand), times n_angular equally spaced angles offset by half a
+   !> spacing, so that no point lies on a symmetry line and each quadrant holds
+   !> exactly a quarter of the points (n_angular is a multiple of 4). The
+   !> weights are scaled so that the points the model keeps carry its share
+   !>
    !> The load pattern of the contact radius a (m) on the mesh m (module
    !> header); the point force when the load is 'point' or a = 0.
    pure subroutine load_pattern(cl, m, a, pat)
@@ -153,7 +142,7 @@ contains
    end subroutine load_pattern
 
    !> The polynomials c_j(a) of the pattern about the radius r and the
-   !> interval of a in which they hold (module header): each disc point in
+   !> interval of a in which they hold (above load_pattern): each disc point in
    !> the element that holds it at r, its shape functions along the ray as
    !> products of quadratics in a.
    pure subroutine pattern_polynomials(cl, m, r, pat)

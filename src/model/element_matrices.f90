@@ -1,29 +1,15 @@
 !> Element matrices of the 9-node Mindlin / von Karman plate element
-!> (paper eq. 2, 10, 14, 15 and Appendix B).
+!> (paper eq. 2, 4, 10, 14, 15 and Appendix B): [M], [K_L], the nonlinear
+!> force K_N(d) d, the internal force and the strain energy.
 !>
-!> Freedoms of an element: 45, node by node (u, v, w, psi_x, psi_y of local
-!> node 1, then node 2, ...). At a point, with phi_i the shape functions:
-!>
+!> Freedoms of an element: 45, node by node (u, v, w, psi_x, psi_y). At a point:
 !>   membrane   eps0  = Bm d + eps_nl,  eps_nl = (w,x^2/2, w,y^2/2, w,x w,y)  eq. (2)
 !>   bending    kappa = Bb d = (psi_x,x, psi_y,y, psi_x,y + psi_y,x)
 !>   shear      gamma = Bs d = (psi_y + w,y, psi_x + w,x)  = (eps4, eps5)
 !>   resultants N = A eps0 + B kappa,  M = B eps0 + D kappa,  Q = Abar gamma   eq. (4)
-!>
-!> Integration: 3x3 Gauss points for the membrane, bending and inertia
-!> terms; the transverse shear terms by the element's shear rule (module
-!> shear_strain): the paper's selective 2x2 rule (section 2.3), or the
-!> MITC9 assumed shear strain at 3x3 points (the default), or the others
-!> there. gamma = Bs d below stands for the rule's discrete operator.
-!>
-!> Matrices (eq. 15, Appendix B):
-!>   [M]   = int N^T diag(P, P, P, I, I) N  (+ R coupling u-psi_x, v-psi_y)
-!>   [K_L] = int [Bm; Bb]^T [A B; B D] [Bm; Bb] + int Bs^T Abar Bs
-!>   [K_N(d)] d = f_int(d) - K_L d, where f_int = dU/dd is the internal force
-!>          of the von Karman strains. With Bnl d' = d eps_nl / dd . d'
-!>          (rows: w,x phi_i,x ; w,y phi_i,y ; w,x phi_i,y + w,y phi_i,x on
-!>          the w freedoms):
-!>   K_N(d) d = int Bm^T (A eps_nl) + Bb^T (B eps_nl) + Bnl^T N
-!>   which is Appendix B's [K_N] blocks times d, evaluated without forming them.
+!> 3x3 Gauss points for membrane, bending and inertia; transverse shear by
+!> the element's shear rule (src/model/shear_strain.f90). The matrices of
+!> eq. (15): above element_nonlinear_force. More: docs/MODEL.md.
 module element_matrices
    use kinds, only: dp
    use materials, only: laminate_t
@@ -32,12 +18,10 @@ module element_matrices
    use shear_strain, only: shear_rule_t, shear_operator_t, shear_operator
    implicit none
    private
-   public :: element_geometry_t, element_geometry, element_mass, &
-             element_stiffness, element_nonlinear_force, element_internal_force, &
-             element_strain_energy, element_inplane_strain, element_gauss_point, point_derivs, &
-             element_tangent_stiffness, element_pressure_load, &
-             element_mass_integrals, element_mass_product, &
-             ngp_full, nfe_elem
+   public :: element_geometry_t, element_geometry, element_mass, element_stiffness, &
+             element_nonlinear_force, element_internal_force, element_strain_energy, &
+             element_inplane_strain, element_gauss_point, point_derivs, element_tangent_stiffness, &
+             element_pressure_load, element_mass_integrals, ngp_full, nfe_elem
 
    !> Gauss points of the full (3x3) rule.
    integer, parameter :: ngp_full = 9
@@ -136,8 +120,7 @@ contains
    !> The one block of the consistent mass matrix, S_ij = int phi_i phi_j dA
    !> (m^2), 3x3 Gauss: element_mass places P S, R S and I S on the
    !> freedoms (Appendix B). Kept per element, it gives M x element by
-   !> element (element_mass_product) without the zeros inside the band of
-   !> the assembled matrix.
+   !> element without the zeros inside the band of the assembled matrix.
    pure function element_mass_integrals(geo) result(s)
       type(element_geometry_t), intent(in) :: geo   !< element geometry
       real(dp) :: s(nen, nen)                       !< S_ij (m^2)
@@ -149,33 +132,6 @@ contains
          end do
       end do gauss_points
    end function element_mass_integrals
-
-   !> The element mass matrix times an element vector, me xe, from
-   !> S = element_mass_integrals(geo): the same numbers as matmul(me, xe)
-   !> with me from element_mass, in five products with the 9 x 9 S instead
-   !> of one with the 45 x 45 me.
-   pure subroutine element_mass_product(lmt, s, xe, ye)
-      type(laminate_t), intent(in) :: lmt           !< inertias P (kg/m^2), R (kg/m), I (kg) (eq. 9)
-      real(dp), intent(in) :: s(nen, nen)           !< S_ij = int phi_i phi_j dA (m^2)
-      real(dp), intent(in) :: xe(nfe_elem)          !< element vector (u, v, w, psi_x, psi_y by node)
-      real(dp), intent(out) :: ye(nfe_elem)         !< me xe
-      real(dp) :: sx(5, nen)
-      integer :: i, j
-      ! sx(k, i) = sum_j S_ij x_k(j) for the fields k = u, v, w, psi_x, psi_y
-      sx = 0.0_dp
-      do j = 1, nen
-         do i = 1, nen
-            sx(:, i) = sx(:, i) + s(i, j)*xe(5*j-4:5*j)
-         end do
-      end do
-      do i = 1, nen
-         ye(5*i-4) = lmt%p*sx(1, i) + lmt%r*sx(4, i)
-         ye(5*i-3) = lmt%p*sx(2, i) + lmt%r*sx(5, i)
-         ye(5*i-2) = lmt%p*sx(3, i)
-         ye(5*i-1) = lmt%i*sx(4, i) + lmt%r*sx(1, i)
-         ye(5*i)   = lmt%i*sx(5, i) + lmt%r*sx(2, i)
-      end do
-   end subroutine element_mass_product
 
    !> Linear stiffness [K_L] (Appendix B): membrane and bending with 3x3
    !> Gauss points, transverse shear by the element's shear rule.
@@ -199,8 +155,18 @@ contains
       end do transverse_shear
    end subroutine element_stiffness
 
+   !> Matrices (eq. 15, Appendix B):
+   !>   [M]   = int N^T diag(P, P, P, I, I) N  (+ R coupling u-psi_x, v-psi_y)
+   !>   [K_L] = int [Bm; Bb]^T [A B; B D] [Bm; Bb] + int Bs^T Abar Bs
+   !>   [K_N(d)] d = f_int(d) - K_L d, where f_int = dU/dd is the internal force
+   !>          of the von Karman strains. With Bnl d' = d eps_nl / dd . d'
+   !>          (rows: w,x phi_i,x ; w,y phi_i,y ; w,x phi_i,y + w,y phi_i,x on
+   !>          the w freedoms):
+   !>   K_N(d) d = int Bm^T (A eps_nl) + Bb^T (B eps_nl) + Bnl^T N
+   !>   which is Appendix B's [K_N] blocks times d, evaluated without forming them.
+   !>
    !> The nonlinear term K_N(d) d of eq. (15) and (19) for the element
-   !> displacements de (see the module header).
+   !> displacements de (as above).
    pure subroutine element_nonlinear_force(lmt, geo, de, fn)
       type(laminate_t), intent(in) :: lmt           !< A, B, D
       type(element_geometry_t), intent(in) :: geo   !< element geometry
@@ -315,7 +281,7 @@ contains
    !> Newton's method in the static analysis (src/analyses/static_analysis.f90):
    !>   K_T = K_L + int [ Bnl^T A Bm + Bm^T A Bnl + Bnl^T A Bnl + Bnl^T B Bb
    !>                     + Bb^T B Bnl + G^T [Nx Nxy; Nxy Ny] G ]        (3x3 points)
-   !> with Bnl(d) the rows of d eps_nl/d d (module header), G = (phi_i,x;
+   !> with Bnl(d) the rows of d eps_nl/d d (above element_nonlinear_force), G = (phi_i,x;
    !> phi_i,y) on the w freedoms and N = A (eps0 + eps_nl) + B kappa the
    !> membrane forces at d: the derivative of K_L d + K_N(d) d (eq. 15, 19).
    pure subroutine element_tangent_stiffness(lmt, geo, de, kt)

@@ -1,29 +1,13 @@
 !> The element work of a time step, all elements at once: the nonlinear
 !> term K_N(D) D of eq. (19), the mass product M x (eq. 15, for M {b} of
 !> eq. 20 and the kinetic energy) and the strain energy of the output steps.
-!> The same sums as the element routines of module element_matrices (whose
-!> formulas they follow, and against which test_element_work checks them),
-!> arranged so that the compiler vectorises them: the elements are the
-!> inner, contiguous index of every array, and each loop runs over a block
-!> of elements with the Gauss points and nodes outside. One pass gathers
-!> the element values, computes the strains at all Gauss points of the
-!> block, and scatters the forces back (docs/PERFORMANCE.md, "The element
-!> work of a step").
-!>
-!> The mesh's elements are rectangles (src/model/mesh.f90: straight grid lines,
-!> mid-side nodes halfway): then d phi/dx = 2/h_x d phi/d xi at every Gauss
-!> point, the same 9 x 9 table for every element times its own factor, and
-!> the gradients and the nodal forces of a block of elements are each one
-!> matrix product with that table (BLAS dgemm: the five fields of all the
-!> block's elements at once). work_build checks it, element by element,
-!> and otherwise keeps each element's own derivatives.
-!>
-!> M x uses the assembled scalar mass S_ij = int phi_i phi_j dA over the
-!> nodes (compressed rows): the consistent mass matrix is P S, R S and I S
-!> on the freedoms (Appendix B), so M x is one product of S with the five
-!> fields at once, without the zeros inside the band of [M].
-!>
-!> Built once with the model (work_build); then only read.
+!> The same sums as the element routines of src/model/element_matrices.f90
+!> (tests/test_element_work.pf checks them), arranged so that the compiler
+!> vectorises them: the elements are the inner, contiguous index of every
+!> array, each loop runs over a block of elements. Rectangles share one
+!> derivative table (above find_rectangles); M x uses the scalar mass S_ij
+!> (above assemble_scalar_mass). Built once with the model (work_build);
+!> then only read. More: docs/PERFORMANCE.md, "The element work of a step".
 module element_work
    use kinds, only: dp
    use materials, only: laminate_t
@@ -130,9 +114,17 @@ contains
       call assemble_scalar_mass(m, geo, w)
    end subroutine work_build
 
+   !> The mesh's elements are rectangles (src/model/mesh.f90: straight grid lines,
+   !> mid-side nodes halfway): then d phi/dx = 2/h_x d phi/d xi at every Gauss
+   !> point, the same 9 x 9 table for every element times its own factor, and
+   !> the gradients and the nodal forces of a block of elements are each one
+   !> matrix product with that table (BLAS dgemm: the five fields of all the
+   !> block's elements at once). work_build checks it, element by element,
+   !> and otherwise keeps each element's own derivatives.
+   !>
    !> Whether every element's derivatives are one table scaled by its own
    !> factors, dx(e, :, :) = sx(e) rdx, dy(e, :, :) = sy(e) rdy, to rounding
-   !> (rectangles: module header). The table is the first element's with
+   !> (as above). The table is the first element's with
    !> its factor taken out: the largest |dx| of an element is sx times the
    !> largest |d phi/d xi| at the 3x3 points, the same for all.
    subroutine find_rectangles(w)
@@ -153,6 +145,11 @@ contains
       end do
    end subroutine find_rectangles
 
+   !> M x uses the assembled scalar mass S_ij = int phi_i phi_j dA over the
+   !> nodes (compressed rows): the consistent mass matrix is P S, R S and I S
+   !> on the freedoms (Appendix B), so M x is one product of S with the five
+   !> fields at once, without the zeros inside the band of [M].
+   !>
    !> S_ij = sum over elements of int phi_i phi_j dA, in compressed rows:
    !> for each node the nodes of its elements (marked once each).
    subroutine assemble_scalar_mass(m, geo, w)

@@ -1,21 +1,15 @@
-!> Lamina and laminate stiffness: the constitutive part of the model.
-!>
-!> Paper, section 2.1:
-!>  - eq. (3)  the lamina law {sigma}_k = [Qbar_ij]_k {eps}_k, with Qbar the
-!>             plane-stress stiffness rotated by the ply angle theta
-!>             (Jones, Mechanics of Composite Materials, ch. 2);
+!> Lamina and laminate stiffness: the constitutive part of the model
+!> (paper section 2.1).
+!>  - eq. (3)  the lamina law {sigma}_k = [Qbar_ij]_k {eps}_k, Qbar the
+!>             plane-stress stiffness rotated by the ply angle (Jones, ch. 2);
 !>  - eq. (4)  {N; M} = [A B; B D]{eps0; kappa},  {Q2; Q1} = [Abar]{eps4; eps5};
-!>  - eq. (6)  (A, B, D) = int (1, z, z^2) Qbar dz,
-!>             Abar_ij = int k_i k_j Qbar_ij dz  (i, j = 4, 5): the shear
-!>             correction factors of Table 1 enter as products, so squared
-!>             in Abar44 and Abar55;
+!>  - eq. (6)  (A, B, D) = int (1, z, z^2) Qbar dz, Abar_ij = int k_i k_j
+!>             Qbar_ij dz (i, j = 4, 5: Table 1's factors enter squared);
 !>  - eq. (9)  (P, R, I) = int rho (1, z, z^2) dz.
-!>
-!> Conventions: engineering strains ordered (1, 2, 6) in-plane and (4, 5)
-!> transverse shear, eps4 = gamma_yz, eps5 = gamma_xz. Ply angles are measured
-!> from the x axis, plies listed from z = -h/2 to z = +h/2, all of equal
-!> thickness h/nply. The z axis points the way the impactor moves (as w does),
-!> so z = -h/2 is the impacted face and z = +h/2 the back face.
+!> Strains ordered (1, 2, 6) in-plane, (4, 5) transverse shear, eps4 =
+!> gamma_yz, eps5 = gamma_xz. Ply angles from the x axis, plies listed from
+!> z = -h/2 (the impacted face; z points the way the impactor moves) to
+!> z = +h/2, all of thickness h/nply. More: docs/MODEL.md.
 module materials
    use kinds, only: dp, pi
    implicit none

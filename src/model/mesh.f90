@@ -1,69 +1,20 @@
-!> Mesh, freedoms and boundary conditions (paper Fig. 4).
-!>
-!> Coordinates are measured from the plate centre: the plate is
-!> -a/2 <= x <= a/2, -b/2 <= y <= b/2, and the impact point is (x_i, y_i)
-!> (&impactor x0, y0; the centre by default). The modelled domain is:
-!>  - 'quarter': 0 <= x <= a/2, 0 <= y <= b/2, the impact point at the
-!>    centre, the corner (0, 0); the lines x = 0 and y = 0 are symmetry lines
-!>    (section 2.4, 3.1);
-!>  - 'half': symmetric about one centre line through the impact point: about
-!>    y = 0 (the x axis; 0 <= y <= b/2 modelled) when y_i = 0, else about
-!>    x = 0 (the y axis; 0 <= x <= a/2 modelled), which needs x_i = 0; a
-!>    'half' at the centre is therefore the half y >= 0;
-!>  - 'full': the whole plate;
-!>  - 'strip': the quarter's rectangle, but y = b/2 is a symmetry line
-!>    too, so the model is a plate infinitely long along y in cylindrical
-!>    bending, of span a between its x edges (TWK Arts. 2-3; the
-!>    validation's strip). y = 0 and y = b/2 hold v and psi_y.
-!>
-!> Element counts and sizes: nx x ny elements on the modelled domain. The
-!> impact point is always a corner node of the elements around it (a node
-!> line runs through x_i and one through y_i): where the domain extends on
-!> both sides of it along x, the stretch of length L_lo below it gets
-!> n_lo = nint(nx L_lo/a) elements, at least 1 and at most nx - 1, and the
-!> stretch above the other nx - n_lo (nx >= 2 is needed; likewise along y).
-!> So a centred quarter nx x ny, half 2nx x ny and full 2nx x 2ny are
-!> mirror images of each other. With quarter_counts (the scene's 'auto'
-!> domain), nx and ny are read as the quarter plate's counts and doubled
-!> along each direction in which the domain spans both sides of a centre
-!> line, so the chosen domain keeps the quarter's element size. Within a
-!> stretch of n elements the sizes grow geometrically away from the impact
-!> point, s_k = s_1 g^(k-1), k = 1..n, with g = grading (1: uniform) and
-!> s_1 = L (g - 1)/(g^n - 1); a symmetry line is such a stretch's start.
-!> Mid-side and centre nodes sit at the middle of their element
-!> (straight-sided, affine elements).
-!>
-!> Freedoms per node, in this order everywhere in the code (eq. 1):
-!>    1 u,  2 v,  3 w,  4 psi_x,  5 psi_y.
-!> w and z point the way the impactor moves.
-!>
-!> Node numbering: the grid node (i, j), i = 0..2 mesh%nx along x and
-!> j = 0..2 mesh%ny along y (mesh%nx, mesh%ny: the elements of the modelled
-!> domain), is numbered running first along the direction with fewer nodes,
-!> which keeps the half-bandwidth at about 5 (2 min(nx,ny) + 2) + 4.
-!> Equation numbers: eq(k, node) is the global equation of freedom k of node,
-!> 0 where the freedom is held; equations follow the node numbering.
-!>
-!> Boundary conditions (section 2.4; the in-plane condition of "simply
-!> supported" and the tangential rotation the paper leaves open, docs/MODEL.md,
-!> "Choices the paper leaves open"):
-!>  - 'clamped':          u = v = w = psi_x = psi_y = 0;
-!>  - 'simply_supported': w = 0 and the rotation along the edge psi_s = 0
-!>    (psi_y on x = const edges, psi_x on y = const edges: the "hard" simple
-!>    support of Navier's solution); in-plane 'immovable' also holds u = v = 0,
-!>    'movable' leaves them free;
-!>  - 'free':             nothing held;
-!>  - symmetry lines (quarter, half, strip): a mirror image about x = 0 has
-!>    u, psi_x odd and v, w, psi_y even in x, so x = 0 holds u and psi_x;
-!>    likewise y = 0 holds v and psi_y. Which laminates allow it is the
-!>    business of src/model/scene_model.f90.
+!> Mesh, freedoms and boundary conditions (paper Fig. 4, section 2.4).
+!> Coordinates from the plate centre; the modelled domain is a 'quarter',
+!> 'half', 'full' plate or a 'strip' (cylindrical bending), the impact point
+!> always a corner node, element sizes graded away from it (above
+!> build_mesh). Freedoms per node, in this order everywhere (eq. 1):
+!>    1 u,  2 v,  3 w,  4 psi_x,  5 psi_y;   w and z point the way the impactor moves.
+!> Nodes are numbered first along the direction with fewer nodes (half-
+!> bandwidth about 5 (2 min(nx,ny) + 2) + 4); eq(k, node) is the equation
+!> of freedom k, 0 where held. The edges (clamped, simply supported, free)
+!> and the symmetry lines: above apply_boundary. More: docs/MODEL.md.
 module mesh
    use kinds, only: dp, msg_len
    use shape_functions, only: nen, node_xi
    implicit none
    private
-   public :: mesh_t, ndof_node, nfe, build_mesh, apply_boundary, &
-             freedom_name, describe_equation, element_freedoms, locate_point
+   public :: mesh_t, ndof_node, nfe, build_mesh, apply_boundary, freedom_name, describe_equation, &
+             locate_point
 
    !> Freedoms per node (u, v, w, psi_x, psi_y).
    integer, parameter :: ndof_node = 5
@@ -97,11 +48,44 @@ module mesh
 
 contains
 
-   !> Lays out nodes and elements of the modelled domain (Fig. 4; module
-   !> header: domains, element counts and grading).
+   !> Coordinates are measured from the plate centre: the plate is
+   !> -a/2 <= x <= a/2, -b/2 <= y <= b/2, and the impact point is (x_i, y_i)
+   !> (&impactor x0, y0; the centre by default). The modelled domain is:
+   !>  - 'quarter': 0 <= x <= a/2, 0 <= y <= b/2, the impact point at the
+   !>    centre, the corner (0, 0); the lines x = 0 and y = 0 are symmetry lines
+   !>    (section 2.4, 3.1);
+   !>  - 'half': symmetric about one centre line through the impact point: about
+   !>    y = 0 (the x axis; 0 <= y <= b/2 modelled) when y_i = 0, else about
+   !>    x = 0 (the y axis; 0 <= x <= a/2 modelled), which needs x_i = 0; a
+   !>    'half' at the centre is therefore the half y >= 0;
+   !>  - 'full': the whole plate;
+   !>  - 'strip': the quarter's rectangle, but y = b/2 is a symmetry line
+   !>    too, so the model is a plate infinitely long along y in cylindrical
+   !>    bending, of span a between its x edges (TWK Arts. 2-3; the
+   !>    validation's strip). y = 0 and y = b/2 hold v and psi_y.
+   !>
+   !> Element counts and sizes: nx x ny elements on the modelled domain. The
+   !> impact point is always a corner node of the elements around it (a node
+   !> line runs through x_i and one through y_i): where the domain extends on
+   !> both sides of it along x, the stretch of length L_lo below it gets
+   !> n_lo = nint(nx L_lo/a) elements, at least 1 and at most nx - 1, and the
+   !> stretch above the other nx - n_lo (nx >= 2 is needed; likewise along y).
+   !> So a centred quarter nx x ny, half 2nx x ny and full 2nx x 2ny are
+   !> mirror images of each other. With quarter_counts (the scene's 'auto'
+   !> domain), nx and ny are read as the quarter plate's counts and doubled
+   !> along each direction in which the domain spans both sides of a centre
+   !> line, so the chosen domain keeps the quarter's element size. Within a
+   !> stretch of n elements the sizes grow geometrically away from the impact
+   !> point, s_k = s_1 g^(k-1), k = 1..n, with g = grading (1: uniform) and
+   !> s_1 = L (g - 1)/(g^n - 1); a symmetry line is such a stretch's start.
+   !> Mid-side and centre nodes sit at the middle of their element
+   !> (straight-sided, affine elements).
+   !>
+   !> Lays out nodes and elements of the modelled domain (Fig. 4; the
+   !> domains, element counts and grading as above).
    subroutine build_mesh(a, b, nx, ny, domain, m, stat, errmsg, x0, y0, grading, quarter_counts)
       real(dp), intent(in) :: a, b            !< plate size along x and y (m)
-      integer, intent(in) :: nx, ny           !< elements along x and y of the domain (module header)
+      integer, intent(in) :: nx, ny           !< elements along x and y of the domain (as above)
       character(len=*), intent(in) :: domain  !< 'quarter', 'half', 'full' or 'strip'
       type(mesh_t), intent(out) :: m          !< the mesh
       integer, intent(out) :: stat            !< 0 on success
@@ -110,7 +94,7 @@ contains
       !> ratio of successive element sizes away from the impact point (-); absent: 1, uniform
       real(dp), intent(in), optional :: grading
       !> nx, ny are the quarter plate's counts, doubled where the domain spans
-      !> both sides of a centre line (module header); absent: false
+      !> both sides of a centre line (as above); absent: false
       logical, intent(in), optional :: quarter_counts
       real(dp), allocatable :: xl(:), yl(:)
       integer :: i, j, ie, je, e, k, n, ngx, ngy, ix, jy, ncx, ncy
@@ -143,7 +127,7 @@ contains
       case ('quarter', 'strip')
          m%sym_x = .true.;  m%sym_y = .true.
       case ('half')
-         m%sym_y = m%y_impact == 0.0_dp          ! about y = 0 when possible (module header)
+         m%sym_y = m%y_impact == 0.0_dp          ! about y = 0 when possible (as above)
          m%sym_x = .not. m%sym_y
       case ('full')
          m%sym_x = .false.;  m%sym_y = .false.
@@ -214,7 +198,7 @@ contains
       m%impact_elem = 1 + ix + m%nx*jy
    end subroutine build_mesh
 
-   !> Element corner lines of one direction (module header): from the lower
+   !> Element corner lines of one direction (above build_mesh): from the lower
    !> edge (or the symmetry line) to the upper edge, graded away from the
    !> impact point, which is line `at`.
    pure subroutine node_lines(half, n, p, sym, grading, lines, at)
@@ -260,6 +244,20 @@ contains
       d(n) = len
    end function graded_offsets
 
+   !> Boundary conditions (section 2.4; the in-plane condition of "simply
+   !> supported" and the tangential rotation the paper leaves open, docs/MODEL.md,
+   !> "Choices the paper leaves open"):
+   !>  - 'clamped':          u = v = w = psi_x = psi_y = 0;
+   !>  - 'simply_supported': w = 0 and the rotation along the edge psi_s = 0
+   !>    (psi_y on x = const edges, psi_x on y = const edges: the "hard" simple
+   !>    support of Navier's solution); in-plane 'immovable' also holds u = v = 0,
+   !>    'movable' leaves them free;
+   !>  - 'free':             nothing held;
+   !>  - symmetry lines (quarter, half, strip): a mirror image about x = 0 has
+   !>    u, psi_x odd and v, w, psi_y even in x, so x = 0 holds u and psi_x;
+   !>    likewise y = 0 holds v and psi_y. Which laminates allow it is the
+   !>    business of src/model/scene_model.f90.
+   !>
    !> Holds the freedoms of the edges and symmetry lines and numbers the
    !> remaining equations.
    subroutine apply_boundary(m, edges, inplane, stat, errmsg)
@@ -342,7 +340,7 @@ contains
 
    !> The element that holds the point p of the modelled domain, and p's
    !> reference coordinates (xi, eta) in it (the elements are straight-sided
-   !> rectangles on the grid lines: module header). e = 0 when p lies
+   !> rectangles on the grid lines: above build_mesh). e = 0 when p lies
    !> outside the domain.
    pure subroutine locate_point(m, p, e, xi)
       type(mesh_t), intent(in) :: m       !< mesh

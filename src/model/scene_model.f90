@@ -1,81 +1,17 @@
 !> Model only what the scene requires: the choices the code makes before a
-!> run (the modelled domain, the theory, the shear correction factors) and
-!> the scene report that shows how far the scene is from each
-!> simplification. The docs/MODEL.md, "How the code decides", is the user's view.
-!>
-!> Domain. A mirror image about the centre line x = 0 maps the plate onto
-!> itself (the plate is centred, all its edges are alike) and maps the
-!> fields as u -> -u, psi_x -> -psi_x, v, w, psi_y -> themselves, so that
-!> eps_x, eps_y, kappa_x, kappa_y, gamma_yz keep their sign and gamma_xy,
-!> kappa_xy, gamma_xz change it. The laminate law is unchanged by the mirror
-!> image only if it couples no sign-keeping resultant with a sign-changing
-!> strain:
-!>    A16 = A26 = 0,  B16 = B26 = 0,  D16 = D26 = 0,  Abar45 = 0;
-!> B11, B12, B22, B66 (an unsymmetric cross-ply) are allowed. The mirror
-!> image about y = 0 needs exactly the same terms to vanish, so a laminate
-!> allows both mirror lines or neither; the impact point decides which lines
-!> run through it. The von Karman terms and the inertias (R = 0 here) keep
-!> the symmetry. Hence, with 'auto':
-!>  - quarter: the impact point at the centre (x0 = y0 = 0) and the
-!>    laminate mirror-symmetric;
-!>  - half: the laminate mirror-symmetric and the impact point on one
-!>    centre line only: about y = 0 if y0 = 0, about x = 0 if x0 = 0;
-!>  - full: otherwise.
-!> With 'auto', &mesh nx, ny are the quarter plate's counts, doubled along
-!> each direction in which the chosen domain spans both sides of a centre
-!> line, so the choice keeps the element size (src/model/mesh.f90).
-!> "Zero" means below coupling_tol relative to the matching diagonal terms
-!> (rounding of the ply sums). D16 and D26 may instead be accepted as zero
-!> by the deck (&mesh average_bend_twist = .true.): the paper's averaging
-!> argument (section 3.1), the centre response of the layup being the mean
-!> of those of the layup and its mirror image, whose D16, D26 have the
-!> other sign. A forced 'quarter', 'half' or 'strip' (&mesh domain) implies
-!> that acceptance; A16, A26, B16, B26 and Abar45 are never averaged away.
-!> The averaging applies only on a reduced domain: a full plate keeps its
-!> D16, D26. &laminate bend_twist = 'drop' sets D16 = D26 = 0 everywhere
-!> (so 'auto' may pick a reduced domain), 'keep' never (so 'auto' picks a
-!> reduced domain only if they vanish; a forced one is refused by the deck).
-!>
-!> Theory. The static estimate of the deflection w at the impact point (an
-!> energy balance, below) is compared with the thickness h: the von Karman
-!> terms stiffen a plate whose edges hold it in its plane by a fraction of
-!> about 0.49 (w/h)^2 of its bending stiffness (clamped circular plate under
-!> a uniform load, immovable edges: Timoshenko & Woinowsky-Krieger, Theory
-!> of Plates and Shells, section 97); above w/h = wh_nonlinear = 0.2 that is
-!> 2 % or more, more than the paper's 6 x 9 mesh error (about 1 %), so 'auto' chooses
-!> the nonlinear theory there and the linear one below (the paper's clamped
-!> plate: linear and nonlinear peak forces 1.1 % apart at an estimated
-!> w/h = 0.21, 0.4 % at 0.12; docs/validation/model_choice.md). After a
-!> linear run the largest bending deflection met is compared with the same
-!> threshold.
-!>
-!> Static estimate (energy balance of a quasi-static impact, the impactor's
-!> energy shared by the plate's bending spring and the Hertz contact):
-!>    1/2 m v^2 = F^2/(2 K) + (2/5) F^(5/3) / k^(2/3)
-!> gives the peak force F, the deflection w = F/K and the indentation
-!> alpha = (F/k)^(2/3) (loading law, eq. 11); K is the plate's static
-!> stiffness at the impact point, 1/w of the linear model K_L under a unit
-!> force there (impact_driver: point_stiffness), which includes the shear
-!> deflection of this mesh. Free edges have no static stiffness: their K is
-!> that of the same plate simply supported, which overstates the deflection
-!> (the plate's inertia, not its edges, holds a free plate during the
-!> contact). The estimate ignores the plate's inertia; it is best for an
-!> impactor much heavier than the plate (the mass ratio is reported) and
-!> otherwise overstates w (docs/validation/model_choice.md measures by how
-!> much).
-!>
-!> Contact radius: Hertz, a = sqrt(R alpha), R the nose radius, alpha at the
-!> estimated peak force. With &contact load = 'hertz' (the default) the
-!> force is spread over that disc (src/model/contact_load.f90), whatever the
-!> element size. With the paper's point force (load = 'point') it is
-!> applied at the impact node, which is consistent only while a is much
-!> smaller than the element there: an element smaller than the contact's
-!> diameter (a/element > max_radius_ratio = 0.5) resolves a point load that
-!> the contact does not apply (under a point force the Mindlin plate's
-!> deflection grows without bound, logarithmically, as the mesh is refined
-!> there, and the slopes at the point steepen, which slows and can stop the
-!> convergence of the eq. (19) iteration: docs/validation/model_choice.md,
-!> section 5); the report warns.
+!> run and the scene report that shows how far the scene is from each
+!> simplification.
+!>  - the modelled domain: a quarter or a half plate where the laminate
+!>    and the impact point are mirror-symmetric (the paper's section 3.1;
+!>    above laminate_couplings);
+!>  - the theory: von Karman's where the static estimate of w/h exceeds
+!>    wh_nonlinear (above choose_theory), from the energy balance of a
+!>    quasi-static impact with the loading law, eq. (11) (above energy_balance);
+!>  - the Hertz contact radius against the element size, for the paper's
+!>    point force (above write_scene_report).
+!> The shear correction factors come from src/model/shear_correction.f90.
+!> More: docs/MODEL.md, "How the code decides"; the measurements:
+!> docs/validation/model_choice.md.
 module scene_model
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use kinds, only: dp, msg_len
@@ -89,16 +25,15 @@ module scene_model
    use storage_choice, only: resolve_storage, sparse_crossover
    implicit none
    private
-   public :: scene_t, ncouplings, coupling_names, coupling_tol, wh_nonlinear, &
-             model_laminate, laminate_couplings, choose_domain, energy_balance, &
-             choose_theory, write_scene_report, theory_warning, point_stiffness, &
-             impact_element_size, bending_deflection, choose_storage
+   public :: scene_t, ncouplings, coupling_names, coupling_tol, wh_nonlinear, model_laminate, &
+             choose_domain, energy_balance, choose_theory, write_scene_report, theory_warning, &
+             point_stiffness, impact_element_size, bending_deflection, choose_storage
 
    !> Couplings below this fraction of the diagonal terms are rounding (-).
    real(dp), parameter :: coupling_tol = 1.0e-9_dp
-   !> w/h above which the von Karman terms are needed (module header) (-).
+   !> w/h above which the von Karman terms are needed (above choose_theory) (-).
    real(dp), parameter :: wh_nonlinear = 0.2_dp
-   !> Contact radius / element size above which the report warns (module header) (-).
+   !> Contact radius / element size above which the report warns (above write_scene_report) (-).
    real(dp), parameter :: max_radius_ratio = 0.5_dp
    !> The couplings a mirror image reverses, each relative to its diagonal terms.
    integer, parameter :: ncouplings = 7
@@ -177,7 +112,40 @@ contains
       scene%energy = 0.5_dp*deck%mass*deck%velocity**2
    end subroutine model_laminate
 
-   !> The couplings that a mirror image reverses (module header), each
+   !> Domain. A mirror image about the centre line x = 0 maps the plate onto
+   !> itself (the plate is centred, all its edges are alike) and maps the
+   !> fields as u -> -u, psi_x -> -psi_x, v, w, psi_y -> themselves, so that
+   !> eps_x, eps_y, kappa_x, kappa_y, gamma_yz keep their sign and gamma_xy,
+   !> kappa_xy, gamma_xz change it. The laminate law is unchanged by the mirror
+   !> image only if it couples no sign-keeping resultant with a sign-changing
+   !> strain:
+   !>    A16 = A26 = 0,  B16 = B26 = 0,  D16 = D26 = 0,  Abar45 = 0;
+   !> B11, B12, B22, B66 (an unsymmetric cross-ply) are allowed. The mirror
+   !> image about y = 0 needs exactly the same terms to vanish, so a laminate
+   !> allows both mirror lines or neither; the impact point decides which lines
+   !> run through it. The von Karman terms and the inertias (R = 0 here) keep
+   !> the symmetry. Hence, with 'auto':
+   !>  - quarter: the impact point at the centre (x0 = y0 = 0) and the
+   !>    laminate mirror-symmetric;
+   !>  - half: the laminate mirror-symmetric and the impact point on one
+   !>    centre line only: about y = 0 if y0 = 0, about x = 0 if x0 = 0;
+   !>  - full: otherwise.
+   !> With 'auto', &mesh nx, ny are the quarter plate's counts, doubled along
+   !> each direction in which the chosen domain spans both sides of a centre
+   !> line, so the choice keeps the element size (src/model/mesh.f90).
+   !> "Zero" means below coupling_tol relative to the matching diagonal terms
+   !> (rounding of the ply sums). D16 and D26 may instead be accepted as zero
+   !> by the deck (&mesh average_bend_twist = .true.): the paper's averaging
+   !> argument (section 3.1), the centre response of the layup being the mean
+   !> of those of the layup and its mirror image, whose D16, D26 have the
+   !> other sign. A forced 'quarter', 'half' or 'strip' (&mesh domain) implies
+   !> that acceptance; A16, A26, B16, B26 and Abar45 are never averaged away.
+   !> The averaging applies only on a reduced domain: a full plate keeps its
+   !> D16, D26. &laminate bend_twist = 'drop' sets D16 = D26 = 0 everywhere
+   !> (so 'auto' may pick a reduced domain), 'keep' never (so 'auto' picks a
+   !> reduced domain only if they vanish; a forced one is refused by the deck).
+   !>
+   !> The couplings that a mirror image reverses (as above), each
    !> relative to its diagonal terms, in the order of coupling_names.
    pure function laminate_couplings(lmt) result(c)
       type(laminate_t), intent(in) :: lmt   !< the laminate
@@ -191,7 +159,7 @@ contains
       c(7) = abs(lmt%as(1,2))/sqrt(lmt%as(1,1)*lmt%as(2,2))
    end function laminate_couplings
 
-   !> The modelled domain (module header): 'auto' picks the smallest the
+   !> The modelled domain (above laminate_couplings): 'auto' picks the smallest the
    !> scene allows; a forced domain is checked against the laminate. Sets
    !> scene%domain, scene%averaged and scene%domain_reason. A laminate that
    !> forbids a forced reduced domain is an error naming the deck, &mesh
@@ -284,7 +252,22 @@ contains
 
    end subroutine choose_domain
 
-   !> The energy balance of a quasi-static impact (module header):
+   !> Static estimate (energy balance of a quasi-static impact, the impactor's
+   !> energy shared by the plate's bending spring and the Hertz contact):
+   !>    1/2 m v^2 = F^2/(2 K) + (2/5) F^(5/3) / k^(2/3)
+   !> gives the peak force F, the deflection w = F/K and the indentation
+   !> alpha = (F/k)^(2/3) (loading law, eq. 11); K is the plate's static
+   !> stiffness at the impact point, 1/w of the linear model K_L under a unit
+   !> force there (impact_driver: point_stiffness), which includes the shear
+   !> deflection of this mesh. Free edges have no static stiffness: their K is
+   !> that of the same plate simply supported, which overstates the deflection
+   !> (the plate's inertia, not its edges, holds a free plate during the
+   !> contact). The estimate ignores the plate's inertia; it is best for an
+   !> impactor much heavier than the plate (the mass ratio is reported) and
+   !> otherwise overstates w (docs/validation/model_choice.md measures by how
+   !> much).
+   !>
+   !> The energy balance of a quasi-static impact (as above):
    !> 1/2 m v^2 = F^2/(2K) + (2/5) F^(5/3)/k^(2/3), solved for F by
    !> bisection (the right side grows with F); w = F/K, alpha = (F/k)^(2/3).
    pure subroutine energy_balance(energy, stiffness, k_contact, force, deflection, indentation)
@@ -324,7 +307,19 @@ contains
 
    end subroutine energy_balance
 
-   !> The theory: the deck's, or with 'auto' the estimate's (module header):
+   !> Theory. The static estimate of the deflection w at the impact point (an
+   !> energy balance, below) is compared with the thickness h: the von Karman
+   !> terms stiffen a plate whose edges hold it in its plane by a fraction of
+   !> about 0.49 (w/h)^2 of its bending stiffness (clamped circular plate under
+   !> a uniform load, immovable edges: Timoshenko & Woinowsky-Krieger, Theory
+   !> of Plates and Shells, section 97); above w/h = wh_nonlinear = 0.2 that is
+   !> 2 % or more, more than the paper's 6 x 9 mesh error, so 'auto' chooses
+   !> the nonlinear theory there and the linear one below (measured:
+   !> docs/validation/model_choice.md). After a
+   !> linear run the largest bending deflection met is compared with the same
+   !> threshold.
+   !>
+   !> The theory: the deck's, or with 'auto' the estimate's (as above):
    !> nonlinear when w/h > wh_nonlinear.
    pure subroutine choose_theory(requested, w_over_h, theory, reason)
       character(len=*), intent(in) :: requested     !< &analysis theory: 'linear', 'nonlinear' or 'auto'
@@ -397,6 +392,19 @@ contains
          // ": its deflection needed the nonlinear theory (&analysis theory = 'nonlinear' or 'auto')"
    end subroutine theory_warning
 
+   !> Contact radius: Hertz, a = sqrt(R alpha), R the nose radius, alpha at the
+   !> estimated peak force. With &contact load = 'hertz' (the default) the
+   !> force is spread over that disc (src/model/contact_load.f90), whatever the
+   !> element size. With the paper's point force (load = 'point') it is
+   !> applied at the impact node, which is consistent only while a is much
+   !> smaller than the element there: an element smaller than the contact's
+   !> diameter (a/element > max_radius_ratio = 0.5) resolves a point load that
+   !> the contact does not apply (under a point force the Mindlin plate's
+   !> deflection grows without bound, logarithmically, as the mesh is refined
+   !> there, and the slopes at the point steepen, which slows and can stop the
+   !> convergence of the eq. (19) iteration: docs/validation/model_choice.md,
+   !> section 5); the report warns.
+   !>
    !> The scene report, before the run: every choice with its reason and the
    !> distance from each simplification.
    subroutine write_scene_report(scene, unit)
@@ -456,7 +464,7 @@ contains
    end subroutine write_scene_report
 
    !> The plate's static stiffness at the impact point, K = 1/w under a unit
-   !> force on the whole plate (module header): K_L of the model's mesh,
+   !> force on the whole plate (above energy_balance): K_L of the model's mesh,
    !> factored here once more (not counted among the run's factorisations);
    !> free edges are replaced by simply supported ones. When the edges the
    !> estimate holds are the model's own (clamped; simply supported and

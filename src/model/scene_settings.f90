@@ -1,50 +1,11 @@
 !> Settings from the scene: the time step &analysis dt and the mesh &mesh nx,
-!> ny of a deck that does not give them (issue 22, item 4), chosen before any
-!> model exists from closed-form estimates, aiming at 1 % on the peak force
-!> and the largest deflection. A deck that gives them runs them.
-!>
-!> The chicken-and-egg: the static estimate of src/model/scene_model.f90
-!> (point_stiffness) needs a mesh; the choice here needs none. It uses:
-!>  - the Hertz contact time of the impactor against a rigid plate
-!>    (Johnson, Contact Mechanics, 1985, section 11.4, eq. 11.24 with the
-!>    law F = k alpha^1.5 of eq. 11):
-!>       alpha_m = (5 m v^2 / (4 k))^(2/5),   T_H = 2.9432 alpha_m / v;
-!>    the plate's compliance only lengthens the contact, so T_H is the
-!>    shortest time scale of the contact;
-!>  - the plate's fundamental period T_1 = 2 pi / omega_1 from Warburton's
-!>    formula for a specially orthotropic plate (Warburton 1954; Leissa,
-!>    Vibration of Plates, 1969, section 4.3; Dickinson 1978):
-!>       omega_1^2 = pi^4 / (rho h) [D11 G^4/a^4 + 2 (D12 + 2 D66) H^2/(a^2 b^2) + D22 G^4/b^4]
-!>    with G = H = 1 for simply supported edges (exact, Navier) and G =
-!>    1.506, H = 1.248 for clamped ones; free edges take the simply
-!>    supported value (D16, D26 are left out: an estimate);
-!>  - the bending wavelength at the contact's frequency, the wave that the
-!>    mesh must carry during the contact (Kirchhoff plate, D = sqrt(D11 D22)):
-!>       lambda = 2 pi (D / (rho h omega^2))^(1/4),   omega = 2 pi / T;
-!>  - the Hertz contact radius a = sqrt(R alpha_m) and the impactor's mass
-!>    against the plate's, reported with the choice.
-!>
-!> The step (of the impact and the pressure analyses; the static and modal
-!> ones have none, their dt stays not given): dt = min(T_H, T_1) / steps_per_time
-!> (T_1 alone for the pressure analysis), rounded down to two
-!> significant digits (the average-acceleration rule's period error
-!> grows as (omega dt)^2 / 12). On the paper's plate (243 g at 3 m/s,
-!> T_H = 321 us) dt = T_H/128 = 2.5 us moves the peak force by up to 0.4 %
-!> (simply supported or clamped, linear or nonlinear), 5 us = T_H/64 by
-!> 1-1.8 % (docs/ACCURACY.md, "Settings from the scene"): steps_per_time =
-!> 160 keeps the step's share below about 0.4 %.
-!>
-!> The mesh: elements no larger than lambda / elements_per_wavelength
-!> (nine-node elements: two node spacings each) and no larger than the
-!> shorter side of the quarter plate / min_elements_side, the paper's
-!> 9 x 6 quarter on its plate, whose peak force lies within about 0.15 % of
-!> the exact modal solution (docs/VALIDATION.md). Finer than that the peak
-!> changes little until the elements resolve the Hertz disc (radius ~1 mm),
-!> which uniform meshes do only at many times the cost, so the disc is not
-!> a criterion (its load is spread over the element, &contact load =
-!> 'hertz'). The counts are those of the domain the deck's nx, ny count:
-!> the quarter with domain 'auto', 'quarter' or 'strip'; the half with
-!> 'half'; the whole plate with 'full' (src/model/mesh.f90).
+!> ny of a deck that does not give them, chosen before any model exists
+!> from closed-form estimates (the Hertz contact time with the law of
+!> eq. 11, the plate's fundamental period, the bending wavelength: above
+!> hertz_contact_time), aiming at 1 % on the peak force and the largest
+!> deflection; the rules: above scene_settings_of. A deck that gives them
+!> runs them. Not from the paper. More: docs/MODEL.md, "Settings from the
+!> scene".
 module scene_settings
    use kinds, only: dp, pi
    use deck_schema, only: deck_t, is_given
@@ -52,13 +13,13 @@ module scene_settings
    use number_text, only: real_short, int_str
    implicit none
    private
-   public :: settings_t, scene_settings_of, choose_settings, hertz_contact_time, plate_period, bending_wavelength
+   public :: settings_t, scene_settings_of, choose_settings, hertz_contact_time, plate_period
 
-   !> Time steps in the shorter of the Hertz contact time and the plate's period (module header).
+   !> Time steps in the shorter of the Hertz contact time and the plate's period (above scene_settings_of).
    real(dp), parameter :: steps_per_time = 160.0_dp
-   !> Elements per bending wavelength at the contact's frequency (module header).
+   !> Elements per bending wavelength at the contact's frequency (above scene_settings_of).
    real(dp), parameter :: elements_per_wavelength = 10.0_dp
-   !> Elements along the shorter side of the quarter plate, at least (module header).
+   !> Elements along the shorter side of the quarter plate, at least (above scene_settings_of).
    real(dp), parameter :: min_elements_side = 6.0_dp
    !> Johnson's factor of the Hertz contact time, eq. 11.24 (-).
    real(dp), parameter :: hertz_time_factor = 2.9432_dp
@@ -87,8 +48,29 @@ module scene_settings
 
 contains
 
+   !> The chicken-and-egg: the static estimate of src/model/scene_model.f90
+   !> (point_stiffness) needs a mesh; the choice here needs none. It uses:
+   !>  - the Hertz contact time of the impactor against a rigid plate
+   !>    (Johnson, Contact Mechanics, 1985, section 11.4, eq. 11.24 with the
+   !>    law F = k alpha^1.5 of eq. 11):
+   !>       alpha_m = (5 m v^2 / (4 k))^(2/5),   T_H = 2.9432 alpha_m / v;
+   !>    the plate's compliance only lengthens the contact, so T_H is the
+   !>    shortest time scale of the contact;
+   !>  - the plate's fundamental period T_1 = 2 pi / omega_1 from Warburton's
+   !>    formula for a specially orthotropic plate (Warburton 1954; Leissa,
+   !>    Vibration of Plates, 1969, section 4.3; Dickinson 1978):
+   !>       omega_1^2 = pi^4 / (rho h) [D11 G^4/a^4 + 2 (D12 + 2 D66) H^2/(a^2 b^2) + D22 G^4/b^4]
+   !>    with G = H = 1 for simply supported edges (exact, Navier) and G =
+   !>    1.506, H = 1.248 for clamped ones; free edges take the simply
+   !>    supported value (D16, D26 are left out: an estimate);
+   !>  - the bending wavelength at the contact's frequency, the wave that the
+   !>    mesh must carry during the contact (Kirchhoff plate, D = sqrt(D11 D22)):
+   !>       lambda = 2 pi (D / (rho h omega^2))^(1/4),   omega = 2 pi / T;
+   !>  - the Hertz contact radius a = sqrt(R alpha_m) and the impactor's mass
+   !>    against the plate's, reported with the choice.
+   !>
    !> Hertz contact time of an impactor of mass m at speed v against a rigid
-   !> plate, F = k alpha^1.5 (module header; Johnson 1985, eq. 11.24) (s).
+   !> plate, F = k alpha^1.5 (above; Johnson 1985, eq. 11.24) (s).
    pure real(dp) function hertz_contact_time(mass, velocity, k) result(t)
       real(dp), intent(in) :: mass       !< impactor mass (kg)
       real(dp), intent(in) :: velocity   !< impact velocity (m/s)
@@ -102,7 +84,7 @@ contains
       alpha = (1.25_dp*mass*velocity**2/k)**0.4_dp
    end function hertz_indentation
 
-   !> Fundamental period of the plate, Warburton's formula (module header) (s).
+   !> Fundamental period of the plate, Warburton's formula (above hertz_contact_time) (s).
    pure real(dp) function plate_period(lmt, a, b, edges) result(t)
       type(laminate_t), intent(in) :: lmt       !< the laminate (D, inertia P)
       real(dp), intent(in) :: a, b              !< plate sides (m)
@@ -117,7 +99,7 @@ contains
       t = 2.0_dp*pi/sqrt(omega2)
    end function plate_period
 
-   !> Bending wavelength of the plate at the period t (module header) (m).
+   !> Bending wavelength of the plate at the period t (above hertz_contact_time) (m).
    pure real(dp) function bending_wavelength(lmt, t) result(lambda)
       type(laminate_t), intent(in) :: lmt       !< the laminate (D, inertia P)
       real(dp), intent(in) :: t                 !< period (s)
@@ -126,7 +108,23 @@ contains
       lambda = 2.0_dp*pi*(sqrt(lmt%d(1,1)*lmt%d(2,2))/(lmt%p*omega**2))**0.25_dp
    end function bending_wavelength
 
-   !> The settings the scene of `deck` calls for (module header), whether or
+   !> The step (of the impact and the pressure analyses; the static and modal
+   !> ones have none, their dt stays not given): dt = min(T_H, T_1) /
+   !> steps_per_time (T_1 alone for the pressure analysis), rounded down to two
+   !> significant digits (the average-acceleration rule's period error grows as
+   !> (omega dt)^2 / 12; what the step costs in the peak force:
+   !> docs/MODEL.md, "Settings from the scene").
+   !>
+   !> The mesh: elements no larger than lambda / elements_per_wavelength
+   !> (nine-node elements: two node spacings each) and no larger than the
+   !> shorter side of the quarter plate / min_elements_side, the paper's
+   !> 9 x 6 quarter on its plate (docs/VALIDATION.md). The Hertz disc is not a
+   !> criterion (its load is spread over the element, &contact load =
+   !> 'hertz'). The counts are those of the domain the deck's nx, ny count:
+   !> the quarter with domain 'auto', 'quarter' or 'strip'; the half with
+   !> 'half'; the whole plate with 'full' (src/model/mesh.f90).
+   !>
+   !> The settings the scene of `deck` calls for (as above), whether or
    !> not the deck gives them; the reasons say which estimate decided.
    pure function scene_settings_of(deck) result(s)
       type(deck_t), intent(in) :: deck          !< the validated deck
@@ -195,7 +193,7 @@ contains
       end if
    end subroutine choose_settings
 
-   !> Lengths along x and y of the domain that &mesh nx, ny count (module header) (m).
+   !> Lengths along x and y of the domain that &mesh nx, ny count (above scene_settings_of) (m).
    pure function domain_span(deck) result(span)
       type(deck_t), intent(in) :: deck          !< the deck
       real(dp) :: span(2)

@@ -2,39 +2,12 @@
 !> Whitney, "Shear correction factors for orthotropic laminates under static
 !> load", J. Appl. Mech. 40 (1973) 302-304): the k4, k5 of the paper's
 !> Table 1 and eq. (6), computed from the layup when the deck does not give
-!> them.
+!> them. The method (cylindrical bending, equilibrium, complementary
+!> energy) is written out above whitney_factor_squared.
 !>
-!> The method, per direction (written for xz, the factor k5; yz and k4 swap
-!> 1 <-> 2 and 4 <-> 5):
-!>
-!>  1. Cylindrical bending about y (epsilon_y = gamma_xy = 0, N_x = 0): the
-!>     bending stress of ply k is
-!>        sigma_x(z) = Qbar11_k (z - z_n) M_x / Dt11,
-!>     with the neutral surface z_n = B11/A11 and Dt11 = D11 - B11^2/A11
-!>     (z_n = 0 and Dt11 = D11 for a symmetric laminate).
-!>  2. Equilibrium, d sigma_x/dx + d tau_xz/dz = 0 with dM_x/dx = Q_x, gives
-!>     the shear stress that vanishes on both faces:
-!>        tau_xz(z) = (Q_x/Dt11) F(z),   F(z) = -int_{-h/2}^{z} Qbar11 (zeta - z_n) dzeta,
-!>     F(+h/2) = -(B11 - z_n A11) = 0.
-!>  3. Energy: the complementary energy of that stress per unit area,
-!>        1/2 int tau_xz^2 S55 dz = 1/2 (Q_x/Dt11)^2 int F^2 S55 dz,
-!>     where S55 = Qbar44/(Qbar44 Qbar55 - Qbar45^2) is the ply's transverse
-!>     shear compliance under tau_xz alone (tau_yz = 0), equals that of the
-!>     first-order theory, 1/2 Q_x^2/(k5^2 int Qbar55 dz). Hence
-!>        k5^2 = Dt11^2 / ( int Qbar55 dz * int F^2 S55 dz ).
-!>     For a homogeneous plate F = Q11 (z^2 - h^2/4)/2 and k^2 = 5/6.
-!>
-!> The integrals are exact: F is a quadratic in z within a ply, so F^2 is a
-!> quartic and the 3-point Gauss rule (exact to degree 5) integrates it ply
-!> by ply.
-!>
-!> Which quantity the paper tabulates: k, the square root of Whitney's
-!> energy factor k^2. With the paper's lamina (Table 3) and layup
-!> [0/45/0/-45/0]2s this method gives k4 = 0.8635 and k5 = 0.8785 against
-!> Table 1's 0.864 and 0.879, while k^2 would be 0.746 and 0.772; the
-!> paper's eq. (6) multiplies by k_i k_j, so Abar44 = k4^2 int Qbar44 dz is
-!> Whitney's corrected stiffness. (Using 1/Qbar55 instead of S55 in step 3
-!> gives k = 0.882 and 0.908, further from the table.)
+!> The paper tabulates k, the square root of Whitney's energy factor k^2:
+!> its eq. (6) multiplies by k_i k_j, so Abar44 = k4^2 int Qbar44 dz is
+!> Whitney's corrected stiffness. Against Table 1: docs/MODEL.md.
 module shear_correction
    use kinds, only: dp
    use materials, only: lamina_t, lamina_qbar, lamina_qbar_shear
@@ -49,7 +22,7 @@ module shear_correction
 contains
 
    !> Shear correction factors k4 (yz) and k5 (xz) of a layup by Whitney's
-   !> method (module header): the factors whose products enter
+   !> method (above whitney_factor_squared): the factors whose products enter
    !> Abar_ij = int k_i k_j Qbar_ij dz of eq. (6).
    pure subroutine whitney_shear_factors(lam, angles, h, k4, k5)
       type(lamina_t), intent(in) :: lam    !< the lamina, the same in every ply
@@ -74,7 +47,31 @@ contains
       k5 = sqrt(whitney_factor_squared(q11, g55, s55, h))
    end subroutine whitney_shear_factors
 
-   !> Whitney's k^2 of one direction (module header, steps 1-3) for plies of
+   !> The method, per direction (written for xz, the factor k5; yz and k4 swap
+   !> 1 <-> 2 and 4 <-> 5):
+   !>
+   !>  1. Cylindrical bending about y (epsilon_y = gamma_xy = 0, N_x = 0): the
+   !>     bending stress of ply k is
+   !>        sigma_x(z) = Qbar11_k (z - z_n) M_x / Dt11,
+   !>     with the neutral surface z_n = B11/A11 and Dt11 = D11 - B11^2/A11
+   !>     (z_n = 0 and Dt11 = D11 for a symmetric laminate).
+   !>  2. Equilibrium, d sigma_x/dx + d tau_xz/dz = 0 with dM_x/dx = Q_x, gives
+   !>     the shear stress that vanishes on both faces:
+   !>        tau_xz(z) = (Q_x/Dt11) F(z),   F(z) = -int_{-h/2}^{z} Qbar11 (zeta - z_n) dzeta,
+   !>     F(+h/2) = -(B11 - z_n A11) = 0.
+   !>  3. Energy: the complementary energy of that stress per unit area,
+   !>        1/2 int tau_xz^2 S55 dz = 1/2 (Q_x/Dt11)^2 int F^2 S55 dz,
+   !>     where S55 = Qbar44/(Qbar44 Qbar55 - Qbar45^2) is the ply's transverse
+   !>     shear compliance under tau_xz alone (tau_yz = 0), equals that of the
+   !>     first-order theory, 1/2 Q_x^2/(k5^2 int Qbar55 dz). Hence
+   !>        k5^2 = Dt11^2 / ( int Qbar55 dz * int F^2 S55 dz ).
+   !>     For a homogeneous plate F = Q11 (z^2 - h^2/4)/2 and k^2 = 5/6.
+   !>
+   !> The integrals are exact: F is a quadratic in z within a ply, so F^2 is a
+   !> quartic and the 3-point Gauss rule (exact to degree 5) integrates it ply
+   !> by ply.
+   !>
+   !> Whitney's k^2 of one direction (steps 1-3 above) for plies of
    !> equal thickness h/n, listed bottom to top:
    !>    k^2 = Dt^2 / ( int G dz * int F(z)^2 S dz ).
    pure function whitney_factor_squared(q_bend, g_shear, s_shear, h) result(k2)

@@ -1,43 +1,14 @@
 !> The transverse shear strains of the 9-node element, gamma = (eps4, eps5)
 !> = (psi_y + w,y, psi_x + w,x) (eq. 2), as the element evaluates them:
 !> the discrete shear operator and the points that integrate its energy.
-!>
-!> With the plain displacement interpolation the 9-node element locks in
-!> shear when the plate is thin; each rule below is a way out, and they
-!> differ in what they leave behind (docs/VALIDATION.md, "The element"):
-!>
-!>  - 'selective'  (the paper's rule, section 2.3): the shear energy at 2x2
-!>    Gauss points. It does not lock, but leaves one zero-energy mode per
-!>    element (a zig-zag of w with zero slope at the 2x2 points) and near
-!>    mechanisms in assembled meshes, which a point force excites: the
-!>    answer drifts as the mesh is refined.
-!>  - 'full':      3x3 points, the plain element: no spurious mode, locks
-!>    when the plate is thin.
-!>  - 'stabilized': (1 - eps) 'selective' + eps 'full' (eps = &mesh
-!>    stabilization): gives the mode a little stiffness.
-!>  - 'mitc9':     an assumed covariant shear strain field, tied to the
-!>    displacements at the points below (MITC9: Bucalem & Bathe, Int. J.
-!>    Numer. Meth. Engng 36, 1993; the same tying as Huang & Hinton's
-!>    assumed-strain 9-node element, Eng. Comput. 1, 1984), integrated at
-!>    3x3 points. Neither locks nor leaves a mechanism: one element has
-!>    exactly the rigid-body zero eigenvalues, and it passes the patch
-!>    test. The default ('auto').
-!>
-!> MITC9. With g_xi = (x,xi, y,xi) and g_eta the covariant base vectors of
-!> the isoparametric map (J(i,:) = g_i), the covariant shear strains are
-!>     e_xi  = gamma . g_xi  = w,xi  + psi_x x,xi  + psi_y y,xi
-!>     e_eta = gamma . g_eta = w,eta + psi_x x,eta + psi_y y,eta
-!> (no inverse Jacobian: they are exact at any point of the element). The
-!> assumed field takes e_xi linear in xi and quadratic in eta, e_eta the
-!> other way round, interpolated from their values at the tying points
-!>     e_xi:   xi = -r, +r  x  eta = -s, 0, +s
-!>     e_eta:  xi = -s, 0, +s  x  eta = -r, +r,    r = 1/sqrt(3), s = sqrt(3/5)
-!> with the Lagrange polynomials through those points, and at an
-!> integration point (gamma_x, gamma_y) = J^-1 (e_xi, e_eta).
+!> The rules against shear locking ('selective', the paper's section 2.3;
+!> 'full'; 'stabilized'; 'mitc9', the default): above the rule codes;
+!> MITC9's assumed covariant field: above add_mitc9_point.
 !>
 !> The operator: at shear point g, gamma(:) = sum over the nodes i of
 !>     b(:, 1, i, g) w_i + b(:, 2, i, g) psi_x_i + b(:, 3, i, g) psi_y_i,
 !> rows (eps4, eps5); the shear energy is 1/2 sum_g wj(g) gamma^T Abar gamma.
+!> More: docs/VALIDATION.md, "The element".
 module shear_strain
    use kinds, only: dp
    use shape_functions, only: nen, shape9, shape9_derivs
@@ -47,6 +18,27 @@ module shear_strain
    public :: shear_rule_t, shear_operator_t, shear_operator, shear_rule_names, &
              shear_selective, shear_stabilized, shear_full, shear_mitc9, shear_rule_code
 
+   !> With the plain displacement interpolation the 9-node element locks in
+   !> shear when the plate is thin; each rule below is a way out, and they
+   !> differ in what they leave behind (docs/VALIDATION.md, "The element"):
+   !>
+   !>  - 'selective'  (the paper's rule, section 2.3): the shear energy at 2x2
+   !>    Gauss points. It does not lock, but leaves one zero-energy mode per
+   !>    element (a zig-zag of w with zero slope at the 2x2 points) and near
+   !>    mechanisms in assembled meshes, which a point force excites: the
+   !>    answer drifts as the mesh is refined.
+   !>  - 'full':      3x3 points, the plain element: no spurious mode, locks
+   !>    when the plate is thin.
+   !>  - 'stabilized': (1 - eps) 'selective' + eps 'full' (eps = &mesh
+   !>    stabilization): gives the mode a little stiffness.
+   !>  - 'mitc9':     an assumed covariant shear strain field, tied to the
+   !>    displacements at tying points (add_mitc9_point; MITC9: Bucalem & Bathe, Int. J.
+   !>    Numer. Meth. Engng 36, 1993; the same tying as Huang & Hinton's
+   !>    assumed-strain 9-node element, Eng. Comput. 1, 1984), integrated at
+   !>    3x3 points. Neither locks nor leaves a mechanism: one element has
+   !>    exactly the rigid-body zero eigenvalues, and it passes the patch
+   !>    test. The default ('auto').
+   !>
    !> The rules, by code.
    integer, parameter :: shear_selective = 1, shear_stabilized = 2, shear_full = 3, shear_mitc9 = 4
    !> Their names in the deck (&mesh shear_rule), in the order of the codes.
@@ -61,7 +53,7 @@ module shear_strain
       real(dp) :: eps = 0.0_dp             !< fraction of 3x3 shear of 'stabilized' (-)
    end type shear_rule_t
 
-   !> The discrete shear strain operator of one element (module header).
+   !> The discrete shear strain operator of one element (as above).
    type :: shear_operator_t
       integer :: npoint = 0                                !< shear points used
       real(dp) :: b(2, 3, nen, max_shear_points) = 0.0_dp  !< (eps4|eps5, w|psi_x|psi_y, node, point) (1/m or -)
@@ -144,8 +136,20 @@ contains
       op%wj(op%npoint) = w*det
    end subroutine add_displacement_point
 
+   !> MITC9. With g_xi = (x,xi, y,xi) and g_eta the covariant base vectors of
+   !> the isoparametric map (J(i,:) = g_i), the covariant shear strains are
+   !>     e_xi  = gamma . g_xi  = w,xi  + psi_x x,xi  + psi_y y,xi
+   !>     e_eta = gamma . g_eta = w,eta + psi_x x,eta + psi_y y,eta
+   !> (no inverse Jacobian: they are exact at any point of the element). The
+   !> assumed field takes e_xi linear in xi and quadratic in eta, e_eta the
+   !> other way round, interpolated from their values at the tying points
+   !>     e_xi:   xi = -r, +r  x  eta = -s, 0, +s
+   !>     e_eta:  xi = -s, 0, +s  x  eta = -r, +r,    r = 1/sqrt(3), s = sqrt(3/5)
+   !> with the Lagrange polynomials through those points, and at an
+   !> integration point (gamma_x, gamma_y) = J^-1 (e_xi, e_eta).
+   !>
    !> Adds to op the point pt (reference coordinates, weight w) with gamma
-   !> of the MITC9 assumed field (module header); ok false when det J <= 0.
+   !> of the MITC9 assumed field (as above); ok false when det J <= 0.
    pure subroutine add_mitc9_point(xe, pt, w, op, ok)
       real(dp), intent(in) :: xe(2, nen), pt(2), w
       type(shear_operator_t), intent(inout) :: op

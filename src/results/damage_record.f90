@@ -1,44 +1,12 @@
 !> Where and when damage starts: the ply stresses of the impact run at
-!> every Gauss point of every ply, their failure index, and what the run
-!> records of them. Only with &strength (the six strengths given,
-!> strength_given); without it damage_open leaves the record inactive and
-!> nothing here runs.
-!>
-!> At every step the history records (damage_step, from the run recorder;
-!> &output every, 1 by default: every step): at each 3 x 3 Gauss
-!> point of each element (those of the membrane and bending terms, where the
-!> paper's strain gauge is, Fig. 9b) the laminate strains and their
-!> gradients give the stresses on both faces of every ply
-!> (src/strength/ply_stress.f90: in-plane from eq. 2-3 with the von Karman strains in
-!> the nonlinear theory, transverse shear from equilibrium), and the
-!> criterion of &strength their failure index (src/strength/failure_criteria.f90).
-!> Kept: the step's largest index and its mode (history columns
-!> failure_index, failure_mode); the largest index of each ply at each point
-!> over the run and its mode (the damage map), and the first time it reached
-!> 1; the run's largest index, and the first step at which any index
-!> reached 1 (the onset), with its ply, mode and point. At every step
-!> (damage_peak): the displacements at the largest contact force, whose
-!> stresses are written at the end.
-!>
-!> The cost: about 10^3 floating-point operations per Gauss point and
-!> evaluation for a 20-ply laminate of three ply angles; evaluated at the
-!> history's steps only, so &output every bounds it (docs/STRENGTH.md, "Ply stresses
-!> and failure", gives the measured share of a run).
-!>
-!> Delamination (src/strength/delamination.f90), with or without
-!> &strength: the regime, and with g2c the first step whose contact force
-!> passed the threshold (damage_peak); with &strength, Choi & Chang's index
-!> of every interface from the ply averages, with the failure indices.
-!>
-!> At the end (damage_close): the summary's items (impact_regime,
-!> mass_ratio, the delamination thresholds and onset; with &strength
-!> max_failure_index, the largest stresses max_abs_s11_MPa ...
-!> max_abs_t13_MPa, failure_onset_us, failure_mode, failure_ply,
-!> failure_x_mm, failure_y_mm, max_delamination_index,
-!> delamination_interface, delamination_x_mm, delamination_y_mm)
-!> and, in <prefix>.h5, the group /strength (damage_write, layout there);
-!> with <prefix>.xdmf, the same on a grid of the laminate, which ParaView
-!> and meshio show (/xdmf/plies, src/results/xdmf_plies.f90).
+!> every Gauss point of every ply (eq. 2-3, src/strength/ply_stress.f90),
+!> their failure index (src/strength/failure_criteria.f90), the delamination
+!> threshold and index (src/strength/delamination.f90), and what the run
+!> records of them: at every history step (above damage_step), at the
+!> largest contact force (above damage_peak) and at the end (above
+!> damage_close). Only with &strength (the six strengths given); without
+!> it damage_open leaves the record inactive. The cost is bounded by
+!> &output every. More: docs/STRENGTH.md, "Ply stresses and failure".
 module damage_record
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t, strength_given, is_given
@@ -124,7 +92,23 @@ contains
       dmg%d_peak = 0.0_dp
    end subroutine damage_open
 
-   !> The failure indices of the state d at time t (module header): the
+   !> At every step the history records (damage_step, from the run recorder;
+   !> &output every, 1 by default: every step): at each 3 x 3 Gauss
+   !> point of each element (those of the membrane and bending terms, where the
+   !> paper's strain gauge is, Fig. 9b) the laminate strains and their
+   !> gradients give the stresses on both faces of every ply
+   !> (src/strength/ply_stress.f90: in-plane from eq. 2-3 with the von Karman strains in
+   !> the nonlinear theory, transverse shear from equilibrium), and the
+   !> criterion of &strength their failure index (src/strength/failure_criteria.f90).
+   !> Kept: the step's largest index and its mode (history columns
+   !> failure_index, failure_mode); the largest index of each ply at each point
+   !> over the run and its mode (the damage map), and the first time it reached
+   !> 1; the run's largest index, and the first step at which any index
+   !> reached 1 (the onset), with its ply, mode and point. At every step
+   !> (damage_peak): the displacements at the largest contact force, whose
+   !> stresses are written at the end.
+   !>
+   !> The failure indices of the state d at time t (as above): the
    !> step's largest, the damage map, the onset.
    subroutine damage_step(dmg, model, t, d)
       type(damage_t), intent(inout) :: dmg          !< the record
@@ -183,6 +167,11 @@ contains
       end if
    end subroutine damage_step
 
+   !> Delamination (src/strength/delamination.f90), with or without
+   !> &strength: the regime, and with g2c the first step whose contact force
+   !> passed the threshold (damage_peak); with &strength, Choi & Chang's index
+   !> of every interface from the ply averages, with the failure indices.
+   !>
    !> Keeps the displacements of the largest contact force so far (every
    !> step: a copy, the stresses follow at the end).
    subroutine damage_peak(dmg, step, t, f, d)
@@ -254,7 +243,17 @@ contains
       end do
    end function damage_points
 
-   !> The summary's items (module header) and /strength in <prefix>.h5.
+   !> At the end (damage_close): the summary's items (impact_regime,
+   !> mass_ratio, the delamination thresholds and onset; with &strength
+   !> max_failure_index, the largest stresses max_abs_s11_MPa ...
+   !> max_abs_t13_MPa, failure_onset_us, failure_mode, failure_ply,
+   !> failure_x_mm, failure_y_mm, max_delamination_index,
+   !> delamination_interface, delamination_x_mm, delamination_y_mm)
+   !> and, in <prefix>.h5, the group /strength (damage_write, layout there);
+   !> with <prefix>.xdmf, the same on a grid of the laminate, which ParaView
+   !> and meshio show (/xdmf/plies, src/results/xdmf_plies.f90).
+   !>
+   !> The summary's items (as above) and /strength in <prefix>.h5.
    !> failure_mode, failure_ply, failure_x_mm, failure_y_mm say where
    !> damage started (the onset) or, when no index reached 1, where the
    !> largest one was.

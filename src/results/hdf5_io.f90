@@ -1,48 +1,14 @@
 !> Thin checked wrappers over HDF5-Fortran for the results files
-!> (src/results/results_hdf5.f90, src/results/results_xdmf.f90) and the tools that
-!> read them (tools/h5export.f90).
-!>
-!> Every routine returns `stat` (0 on success) and, on failure, `errmsg`, a
-!> message naming the operation and the object; the library's own error
-!> printing is switched off by h5io_start, so a failure reads as one line of
-!> the caller's. The arguments recur: `loc` is the file or group a path
-!> starts from, `name` a path relative to it (`obj` and `name` an object's
-!> path and its attribute's name), `did` an open dataset.
-!>
-!> What is written, and how a reader sees it:
-!>  - attributes are scalars (dataspace SCALAR: h5py gives a number or a
-!>    str, not a one-element array), or 1-D arrays (h5io_set_attr with an
-!>    array); strings are variable-length UTF-8 (h5py gives str);
-!>  - every dataset is chunked and checksummed (HDF5's Fletcher32 filter):
-!>    raw data damaged on disk is reported when it is read ("checksum
-!>    failure"), not handed out; the metadata of the latest file format
-!>    (h5io_create with latest) carries its own checksums;
-!>  - fixed datasets are written whole, one chunk each;
-!>  - series are extendible chunked datasets that grow by a block of
-!>    entries per h5io_append_block: rank 1
-!>    (n) for a history column, rank 2 (nrow, n) in
-!>    Fortran order, i.e. (n, nrow) in C order, h5py and h5dump, for a field
-!>    of nrow nodes per snapshot.
-!> Arrays keep Fortran order on disk: a Fortran x(m, n) reads as x[n, m] in
-!> h5py and h5dump (C order).
-!>
-!> Files. h5io_create makes a file (the latest file format when asked: what
-!> HDF5's single-writer/multiple-reader mode, SWMR, needs); h5io_open opens
-!> it again for writing, with `swmr` in SWMR mode: then only existing
-!> datasets and attributes may change (datasets grow, values are
-!> rewritten; no object or attribute is created), and HDF5 writes its
-!> metadata in an order that keeps the file consistent on disk at every
-!> instant, whatever kills the process (src/results/results_hdf5.f90).
-!> Neither takes HDF5's own file lock (a reader holding the file must not
-!> make the run fail; runs are kept apart by their claim,
-!> src/results/result_files.f90), and h5io_open clears the marks a killed
-!> writer leaves in the superblock (what `h5clear -s` does).
-!>
-!> Nothing is cached here: the caller holds the file and dataset ids. This
-!> is the write half, what the program needs, with the reads the program
-!> itself makes (h5io_read_series: a restart); the tools that read a results
-!> file (tools/h5export.f90, the tests) have the read half,
-!> tools/hdf5_read.f90, over the same messages (h5io_check, h5io_fail).
+!> (src/results/results_hdf5.f90, src/results/results_xdmf.f90) and the
+!> tools that read them (tools/h5export.f90).
+!> Every routine returns `stat` (0 on success) and, on failure, `errmsg`
+!> naming the operation and the object; the library's own error printing
+!> is off (h5io_start). `loc` is the file or group a path starts from,
+!> `name` a path relative to it, `did` an open dataset. What is written and
+!> how a reader sees it: above h5io_start; files, SWMR and locks: above
+!> h5io_create. Nothing is cached here: the caller holds the ids. This is
+!> the write half (with the reads a restart needs); tools/hdf5_read.f90 is
+!> the read half. Not from the paper. More: docs/OUTPUT.md.
 module hdf5_io
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char, c_bool, c_int, c_int64_t
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, h5fclose_f, &
@@ -65,7 +31,7 @@ module hdf5_io
    public :: h5io_start, h5io_create, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_exists, h5io_delete
    public :: h5io_set_attr, h5io_update_attr, h5io_write, h5io_rewrite
    public :: h5io_check, h5io_fail, h5io_attr_path, h5io_vlen_string_type
-   public :: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_open_dataset, h5io_series_length, &
+   public :: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_open_dataset, &
              h5io_cut_series, h5io_read_series, h5io_close_dataset
    public :: h5io_view_column
    public :: h5io_real, h5io_integer
@@ -109,6 +75,23 @@ contains
 
    ! ------------------------------------------------------------ files, groups
 
+   !> What is written, and how a reader sees it:
+   !>  - attributes are scalars (dataspace SCALAR: h5py gives a number or a
+   !>    str, not a one-element array), or 1-D arrays (h5io_set_attr with an
+   !>    array); strings are variable-length UTF-8 (h5py gives str);
+   !>  - every dataset is chunked and checksummed (HDF5's Fletcher32 filter):
+   !>    raw data damaged on disk is reported when it is read ("checksum
+   !>    failure"), not handed out; the metadata of the latest file format
+   !>    (h5io_create with latest) carries its own checksums;
+   !>  - fixed datasets are written whole, one chunk each;
+   !>  - series are extendible chunked datasets that grow by a block of
+   !>    entries per h5io_append_block: rank 1
+   !>    (n) for a history column, rank 2 (nrow, n) in
+   !>    Fortran order, i.e. (n, nrow) in C order, h5py and h5dump, for a field
+   !>    of nrow nodes per snapshot.
+   !> Arrays keep Fortran order on disk: a Fortran x(m, n) reads as x[n, m] in
+   !> h5py and h5dump (C order).
+   !>
    !> Opens the HDF5 library (its predefined types) and switches off its own
    !> error printing. Safe to call more than once.
    subroutine h5io_start(stat, errmsg)
@@ -120,6 +103,18 @@ contains
       call h5io_check(err, 'cannot initialise the HDF5 library', '', stat, errmsg)
    end subroutine h5io_start
 
+   !> Files. h5io_create makes a file (the latest file format when asked: what
+   !> HDF5's single-writer/multiple-reader mode, SWMR, needs); h5io_open opens
+   !> it again for writing, with `swmr` in SWMR mode: then only existing
+   !> datasets and attributes may change (datasets grow, values are
+   !> rewritten; no object or attribute is created), and HDF5 writes its
+   !> metadata in an order that keeps the file consistent on disk at every
+   !> instant, whatever kills the process (src/results/results_hdf5.f90).
+   !> Neither takes HDF5's own file lock (a reader holding the file must not
+   !> make the run fail; runs are kept apart by their claim,
+   !> src/results/result_files.f90), and h5io_open clears the marks a killed
+   !> writer leaves in the superblock (what `h5clear -s` does).
+   !>
    !> Creates the file `path` anew for writing; fid is its id. What has the
    !> name is removed first (a link itself, never what it points to) and
    !> the file created exclusively (O_EXCL): nothing is written through a
@@ -145,7 +140,7 @@ contains
    end subroutine h5io_create
 
    !> Opens the existing file `path` (made by h5io_create with latest) for
-   !> writing; with `swmr` in SWMR mode (module header). The marks a killed
+   !> writing; with `swmr` in SWMR mode (as above). The marks a killed
    !> writer left in its superblock are cleared.
    subroutine h5io_open(path, swmr, fid, stat, errmsg)
       character(len=*), intent(in) :: path

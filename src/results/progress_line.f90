@@ -1,21 +1,11 @@
 !> The run's progress on standard error: the step, the simulated time, the
 !> percentage and an estimate of the time left.
-!>
 !> On a terminal (isatty(2)) one line is rewritten in place ('\r'), at most
-!> `terminal_rate` times a second, and cleared when the run ends, so that
-!> the summary that follows on standard output reads as before. When
-!> standard error is not a terminal (a batch job's log, a pipe, a test) a
-!> plain line is written every `log_interval` seconds of wall time and
-!> nothing else: a short run writes none, a long one a line now and then
-!> that a log reader can follow (`tail -f slurm-*.out`).
-!>
-!> The estimate is the wall time per step times the steps left: the steps
-!> of an impact cost about the same (one back substitution each for scheme
-!> 'fast'), but the first one can cost far more (the response columns of
-!> scheme 'fast'; the first contact), so the steps are timed from the end
-!> of the first one recorded, and the line gives no estimate until
-!> `timed_steps` steps are timed (before, a 10 s run of 1200 steps whose
-!> first step took 0.26 s was first said to have "5 min 12 s left").
+!> `terminal_rate` times a second, and cleared when the run ends; otherwise
+!> (a batch log, a pipe) a plain line every `log_interval` seconds of wall
+!> time. The estimate is the wall time per step times the steps left, timed
+!> from the end of the first step (which can cost far more) and given only
+!> once `timed_steps` steps are timed. Not from the paper. More: README.md.
 module progress_line
    use, intrinsic :: iso_fortran_env, only: error_unit, int64
    use kinds, only: dp

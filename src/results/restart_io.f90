@@ -1,19 +1,13 @@
 !> The pieces of a restart file (src/results/restart_point.f90): a stream of
-!> unformatted records (access = 'stream', the machine's own layout), each
-!> part behind an eight-character tag that the reader checks, so that a
-!> file of another layout is refused, not misread. Every routine keeps the
-!> first failure in `stat` (the iostat; nothing is read or written after
-!> it), so a part is a list of calls and one test at its end.
-!>
-!> What is written: texts (their length, then their characters), reals and
-!> integers (one, or a vector with its size), logicals (as 0 or 1), an
-!> impactor (eq. 16, 21) and a contact load pattern (src/model/contact_load.f90:
-!> its equations and coefficients, and the polynomials it keeps as a cache,
-!> which a restarted run must find as they were to give the same bits).
-!>
-!> The seal: the file's last 8 bytes, the CRC-32 (IEEE 802.3, zlib's) of
-!> every byte before them (put_seal), checked before a part is read
-!> (seal_holds): a bit changed anywhere, the seal's own included, is found.
+!> unformatted records, each part behind an eight-character tag that the
+!> reader checks, so that a file of another layout is refused, not misread.
+!> Every routine keeps the first failure in `stat`, so a part is a list of
+!> calls and one test at its end. Written: texts, reals, integers,
+!> logicals, an impactor (eq. 16, 21) and a contact load pattern with its
+!> cached polynomials (a restarted run must find them as they were to give
+!> the same bits). The seal: the file's last 8 bytes, the CRC-32 (zlib's)
+!> of every byte before them (put_seal, seal_holds). Not from the paper.
+!> More: docs/ROBUSTNESS.md.
 module restart_io
    use, intrinsic :: iso_fortran_env, only: int8, int64
    use kinds, only: dp
@@ -21,9 +15,9 @@ module restart_io
    use contact_load, only: load_pattern_t
    implicit none
    private
-   public :: tag_len, put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, &
-             put_flag, take_flag, put_reals, take_reals, put_ints, take_ints, put_impactor, take_impactor, &
-             put_pattern, take_pattern, put_seal, seal_holds, crc32
+   public :: put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, &
+             put_flag, take_flag, put_reals, take_reals, put_ints, take_ints, put_impactor, &
+             take_impactor, put_pattern, take_pattern, put_seal, seal_holds
 
    !> Characters of a tag.
    integer, parameter :: tag_len = 8

@@ -1,52 +1,13 @@
 !> Restart points: `impact --restart deck.nml` continues the run recorded
 !> at the deck's prefix from its last restart point, appending to the same
 !> files, and ends as the run would have ended had it never stopped: the
-!> same history rows, bit for bit, and the same summary.
-!>
-!> A restart of a run that completed (its restart point at its last step,
-!> t_end unchanged) writes nothing and exits 0 (src/impact.f90).
-!>
-!> A restart point is <prefix>.restart, written when the files are flushed
-!> (once a second at the end of a step, src/results/results_hdf5.f90's
-!> results_tick), at the first step (step 0, so that a run that has
-!> written anything has one) and at the end of a run that completed or was
-!> stopped by a signal (src/impact.f90). It holds everything the time loop
-!> carries from one step to the next:
-!>
-!>   the deck        every variable as text (the fewest digits that read
-!>                   back to the same double), to refuse a restart with
-!>                   another deck: only &analysis t_end may change (and
-!>                   &output overwrite, which a restart sets)
-!>   the state       the step, the cpu time so far, the plate's {D}, {V},
-!>                   {A}, the impactor, the contact's history (alpha_m, F_m,
-!>                   alpha_0), the contact pattern with the polynomials it
-!>                   keeps (src/model/contact_load.f90)
-!>   the solver      its counters, the contraction estimates of scheme
-!>                   'fast' (src/scheme/fast_scheme.f90: without them the
-!>                   restarted run would probe at other steps and differ)
-!>                   and the equations of its response columns, which a
-!>                   restart computes again (the same back substitutions of
-!>                   the same factors: the same bits)
-!>   the record      the summary's running figures and maxima, the
-!>                   energies, the warnings given, the history file's
-!>                   length, the damage maps (src/results/run_recorder.f90,
-!>                   record_save_state)
-!>   the results     the rows and snapshots <prefix>.h5 holds, and its peak
-!>
-!> It is written whole to <prefix>.restart.tmp, forced to the disk
-!> (fsync) and renamed over <prefix>.restart, then the directory is forced
-!> too: the file is the previous restart point or the new one, never a
-!> part. A restart cuts the history file back to its length at the restart
-!> point and <prefix>.h5 to its rows and snapshots (a run killed after its
-!> last restart point wrote more), and makes the XDMF views anew.
-!>
-!> The file is a stream of tagged parts (src/results/restart_io.f90) in the
-!> machine's own layout: a restart continues a run on the machine and with
-!> the build that made it (a restart point of another layout is refused).
-!> Its last 8 bytes are the CRC-32 of all before them (restart_io's seal):
-!> a restart point with a bit changed anywhere is refused whole, before
-!> anything is read from it. The temporary name is removed first and the
-!> file created exclusively: no write goes through a link put there.
+!> same history rows, bit for bit, and the same summary. A restart of a run
+!> that completed writes nothing and exits 0 (src/impact.f90).
+!> A restart point, <prefix>.restart, holds everything the time loop
+!> carries from one step to the next (the deck, the state, the solver, the
+!> record, the results' lengths), written when the files are flushed;
+!> what, when and how it is made safe: above restart_save. Not from the
+!> paper. More: docs/ROBUSTNESS.md.
 module restart_point
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char
@@ -63,7 +24,8 @@ module restart_point
    use contact_load, only: load_pattern_t
    use contact_iteration, only: contact_iteration_t
    use newmark, only: plate_state_t, impactor_t
-   use result_files, only: reserve_summary
+   use result_files, only: reserve_summary, results_claim_t, result_suffixes, claim_results, claim_left_empty
+   use process_stop, only: remove_on_stop
    use results_hdf5, only: results_reopen
    use run_recorder, only: record_t, record_save_state, record_load_state
    use restart_io, only: put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, put_flag, &
@@ -71,7 +33,7 @@ module restart_point
       put_seal, seal_holds
    implicit none
    private
-   public :: restart_file, restart_save, restart_check, restart_resume, restart_discard
+   public :: restart_file, restart_save, restart_check, restart_resume, claim_run_files
 
    !> The layout of the file; a restart point of another is refused.
    integer, parameter :: layout = 3
@@ -89,6 +51,28 @@ contains
       path = deck%prefix // '.restart'
    end function restart_file
 
+   !> Claims the run's result files before any work (claim_results): a
+   !> restart continues the run's own files, or the claim a run killed in its
+   !> set-up left; a stop in the set-up leaves the first file only if it was
+   !> written; a run that starts afresh discards an earlier run's restart point.
+   subroutine claim_run_files(deck, restart_asked, restarting, claim, stat, errmsg)
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      logical, intent(in) :: restart_asked          !< --restart was given
+      logical, intent(in) :: restarting             !< the run continues from a restart point
+      type(results_claim_t), intent(out) :: claim   !< the claim, held until release_results
+      integer, intent(out) :: stat                  !< 0 when the run may write its results
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      type(deck_t) :: claimed
+      claimed = deck
+      claimed%overwrite = deck%overwrite .or. restarting
+      if (restart_asked .and. .not. claimed%overwrite) &
+         claimed%overwrite = claim_left_empty(deck%prefix, result_suffixes(deck%analysis_kind))
+      call claim_results(claimed, result_suffixes(deck%analysis_kind), claim, stat, errmsg)
+      if (stat /= 0) return
+      call remove_on_stop(claim%first)
+      if (.not. restarting) call restart_discard(deck)
+   end subroutine claim_run_files
+
    !> A run that starts afresh removes an earlier run's restart point, which
    !> its files no longer match.
    subroutine restart_discard(deck)
@@ -98,7 +82,49 @@ contains
       r = c_unlink(restart_file(deck) // '.tmp' // c_null_char)
    end subroutine restart_discard
 
-   !> Writes the restart point after step `step` (module header): the files
+   !> A restart point is <prefix>.restart, written when the files are flushed
+   !> (once a second at the end of a step, src/results/results_hdf5.f90's
+   !> results_tick), at the first step (step 0, so that a run that has
+   !> written anything has one) and at the end of a run that completed or was
+   !> stopped by a signal (src/impact.f90). It holds everything the time loop
+   !> carries from one step to the next:
+   !>
+   !>   the deck        every variable as text (the fewest digits that read
+   !>                   back to the same double), to refuse a restart with
+   !>                   another deck: only &analysis t_end may change (and
+   !>                   &output overwrite, which a restart sets)
+   !>   the state       the step, the cpu time so far, the plate's {D}, {V},
+   !>                   {A}, the impactor, the contact's history (alpha_m, F_m,
+   !>                   alpha_0), the contact pattern with the polynomials it
+   !>                   keeps (src/model/contact_load.f90)
+   !>   the solver      its counters, the contraction estimates of scheme
+   !>                   'fast' (src/scheme/fast_scheme.f90: without them the
+   !>                   restarted run would probe at other steps and differ)
+   !>                   and the equations of its response columns, which a
+   !>                   restart computes again (the same back substitutions of
+   !>                   the same factors: the same bits)
+   !>   the record      the summary's running figures and maxima, the
+   !>                   energies, the warnings given, the history file's
+   !>                   length, the damage maps (src/results/run_recorder.f90,
+   !>                   record_save_state)
+   !>   the results     the rows and snapshots <prefix>.h5 holds, and its peak
+   !>
+   !> It is written whole to <prefix>.restart.tmp, forced to the disk
+   !> (fsync) and renamed over <prefix>.restart, then the directory is forced
+   !> too: the file is the previous restart point or the new one, never a
+   !> part. A restart cuts the history file back to its length at the restart
+   !> point and <prefix>.h5 to its rows and snapshots (a run killed after its
+   !> last restart point wrote more), and makes the XDMF views anew.
+   !>
+   !> The file is a stream of tagged parts (src/results/restart_io.f90) in the
+   !> machine's own layout: a restart continues a run on the machine and with
+   !> the build that made it (a restart point of another layout is refused).
+   !> Its last 8 bytes are the CRC-32 of all before them (restart_io's seal):
+   !> a restart point with a bit changed anywhere is refused whole, before
+   !> anything is read from it. The temporary name is removed first and the
+   !> file created exclusively: no write goes through a link put there.
+   !>
+   !> Writes the restart point after step `step` (as above): the files
    !> hold every step to it (they were just flushed).
    subroutine restart_save(deck, step, cpu_s, plate, imp, hist, cit, solver, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
@@ -151,7 +177,7 @@ contains
    end subroutine restart_save
 
    !> A restart's first look at the run's restart point: whether there is
-   !> one, and that it was written with this deck (module header) by this
+   !> one, and that it was written with this deck (above restart_save) by this
    !> layout, and its step (the run's last step: the run completed); stat
    !> /= 0 with the differences named otherwise.
    subroutine restart_check(deck, found, step, stat, errmsg)
@@ -184,7 +210,7 @@ contains
    end subroutine restart_check
 
    !> Continues the run from its restart point: the state, the solver, the
-   !> record and the files as they were there (module header); `step` is
+   !> record and the files as they were there (above restart_save); `step` is
    !> the last step made, cpu_s the cpu time spent before.
    subroutine restart_resume(deck, model, last_step, solver, plate, imp, hist, cit, rec, step, cpu_s, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
@@ -335,7 +361,7 @@ contains
       end do variables
    end subroutine compare_deck
 
-   !> The solver's state that carries from step to step (module header).
+   !> The solver's state that carries from step to step (above restart_save).
    subroutine put_solver(u, solver, stat)
       integer, intent(in) :: u                      !< the restart file
       type(solver_t), intent(in) :: solver          !< the plate solver

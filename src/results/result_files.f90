@@ -1,29 +1,13 @@
 !> The result files of every analysis, in one place: which files a run
-!> claims before any work, how a column file is opened and headed, the
-!> history's columns (one table for <prefix>_history.dat and the
-!> /history datasets of <prefix>.h5), and the summary's items (one list for
+!> claims before any work (claim_results: nothing lost, nothing written
+!> through a link; above it), how a column file is opened and headed, the
+!> history's columns (one table for <prefix>_history.dat and the /history
+!> datasets of <prefix>.h5), and the summary's items (one list for
 !> <prefix>_summary.dat and /summary of <prefix>.h5).
-!>
 !> A column file: a title line, the deck echo ('# ' lines), one line per
 !> column with its meaning and unit, then the column names on one '#' line,
 !> then the rows. The summary: 'key = value' lines after the echo, the unit
-!> in the key's name (peak_force_N).
-!>
-!> Nothing lost: before any work a run claims its files (claim_results,
-!> the list of each analysis in result_suffixes): it checks their names
-!> against the file system's NAME_MAX and PATH_MAX, creates the prefix's
-!> directories (by the C library, no shell), refuses to start when one of
-!> its files exists, the results of another run, unless &output overwrite
-!> = .true. (or impact --overwrite), and whenever one of them, or the
-!> temporary name it is written under, is a symbolic link (a write would
-!> change the file the link points to, with overwrite or, for a dangling
-!> link, even without) or no regular file; creates its first file
-!> exclusively (of two runs started together with one prefix, one wins,
-!> the other stops before it writes anything) and holds a lock on it until
-!> it ends (two runs that both overwrite cannot write at once either).
-!> The files are then opened by name (a Fortran unit, HDF5), each checked
-!> again just before (open_columns) or written under a temporary name,
-!> created exclusively, and renamed into place (the summary).
+!> in the key's name (peak_force_N). Not from the paper. More: docs/OUTPUT.md.
 module result_files
    use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
@@ -148,6 +132,22 @@ contains
       end select
    end function result_suffixes
 
+   !> Nothing lost: before any work a run claims its files (claim_results,
+   !> the list of each analysis in result_suffixes): it checks their names
+   !> against the file system's NAME_MAX and PATH_MAX, creates the prefix's
+   !> directories (by the C library, no shell), refuses to start when one of
+   !> its files exists, the results of another run, unless &output overwrite
+   !> = .true. (or impact --overwrite), and whenever one of them, or the
+   !> temporary name it is written under, is a symbolic link (a write would
+   !> change the file the link points to, with overwrite or, for a dangling
+   !> link, even without) or no regular file; creates its first file
+   !> exclusively (of two runs started together with one prefix, one wins,
+   !> the other stops before it writes anything) and holds a lock on it until
+   !> it ends (two runs that both overwrite cannot write at once either).
+   !> The files are then opened by name (a Fortran unit, HDF5), each checked
+   !> again just before (open_columns) or written under a temporary name,
+   !> created exclusively, and renamed into place (the summary).
+   !>
    !> Before any work: the prefix is a usable path, its names fit the file
    !> system (NAME_MAX, PATH_MAX), its directories exist (created), no
    !> result file of this run exists unless the deck says &output overwrite

@@ -1,86 +1,17 @@
 !> The full results of a run in one HDF5 file, <prefix>.h5, beside the column
-!> files (&output hdf5 = .true., the default).
-!>
-!> Layout (SI units; every number carries its unit: datasets in a `units`
-!> attribute, attributes in a companion attribute `<name>_units`; '-' for
-!> dimensionless). Arrays are shown in C order, as h5dump and h5py show them:
-!>
-!>   /                       code_version, created, title
-!>   /deck                   source, echo (the deck echo, every value with its unit)
-!>   /deck/<group>           one attribute per namelist variable, and <variable>_units
-!>   /mesh                   domain, nx, ny, nnode, nelem, neq, impact_node, sym_factor,
-!>                           x0, x1, y0, y1 (extent of the modelled domain, m),
-!>                           freedoms ('u v w psi_x psi_y'), node_order
-!>   /mesh/coordinates       (nnode, 2)    x, y of each node (m)
-!>   /mesh/connectivity      (nelem, 9)    nodes of each element, numbered from 1
-!>   /mesh/freedom_map       (nnode, 5)    equation of u, v, w, psi_x, psi_y; 0 = held
-!>   /mesh/grid              (2ny+1, 2nx+1) node at grid point (j, i), i along x
-!>   /history                every, rows: the rows every column holds whole (a
-!>                           killed run's columns may hold a block more)
-!>   /history/<column>       (nrow)        one extendible dataset per history column,
-!>                           appended block by block (see the flushes below)
-!>   /fields                 fields_every, snapshots: those every dataset holds whole
-!>   /fields/time, step, force  (nsnap)    snapshot times (s), steps, contact force (N)
-!>   /fields/u, v, w, psi_x, psi_y  (nsnap, nnode)  nodal values (m, m, m, rad, rad),
-!>                           every fields_every steps and at the last step
-!>   /peak                   step, time, force: the step of the largest contact force;
-!>   /peak/u, v, w, psi_x, psi_y  (nnode)  the nodal values at that step, rewritten
-!>                           whenever the force passes its previous largest value
-!>   /summary                status ('running' until the run ends), then the figures
-!>                           of <prefix>_summary.dat in SI units
-!>   /strength               only with &strength: the damage map and the ply stresses
-!>                           at the peak force, written at the end by src/results/damage_record.f90
-!>                           (layout there); the history then has the columns
-!>                           failure_index and failure_mode too (history_width)
-!>
-!>   /xdmf                   what <prefix>.xdmf (ParaView, VisIt, meshio) needs
-!>                           besides: src/results/results_xdmf.f90
-!>
-!> The fields are those of the modelled domain (a quarter of the plate when
-!> &mesh domain = 'quarter'); held freedoms are 0.
-!>
-!> The file is in HDF5 1.10's format (older libraries do not read it) and
-!> every dataset is checksummed (Fletcher32, src/results/hdf5_io.f90): damaged
-!> data is reported when read, never handed out.
-!>
-!> A file that opens at every instant. results_open makes the file under a
-!> temporary name, <prefix>.h5.tmp, writes all but what grows (the deck,
-!> the mesh, the empty series, /peak, /summary status = 'running'), closes
-!> it and renames it into place; from then on the file is open only while
-!> it is written, once a second, and written then in HDF5's SWMR mode
-!> (single writer, multiple readers), which changes existing datasets and
-!> attributes only and orders the writes of HDF5's metadata so that the
-!> file on disk is consistent at every instant: a run killed (SIGKILL,
-!> OOM, a node lost) leaves a <prefix>.h5 that opens and reads, with every
-!> step up to its last flush (all but the last second) and /summary status
-!> = 'running'; another process reads it while the run goes (h5py with
-!> swmr=True at any time; any reader between the writes). A kill in the
-!> middle of a write (a few ms in the second) leaves the file consistent
-!> too, but marked as open for writing: SWMR readers (h5py's swmr=True,
-!> tools/hdf5_read.f90) open it, others after `h5clear -s <prefix>.h5`, and
-!> impact --restart clears the mark. The XDMF views, objects that SWMR mode
-!> cannot create, are in their own file (src/results/results_xdmf.f90). The
-!> end of a run writes /summary (results_finish), attributes SWMR mode
-!> cannot make, with the file open as usual, a few ms.
-!>
-!> Output that costs little and loses nothing: the history rows, the
-!> snapshots and the peak state wait in memory and are written in blocks by
-!> results_flush: at the end of a step once flush_seconds of wall time have
-!> passed since the last flush (results_tick, which then says a restart
-!> point is due: src/results/restart_point.f90), when the buffers are full
-!> (flush_rows rows, or buffer_bytes of snapshots), on a warning
-!> (src/results/run_recorder.f90), and at the end, whatever the end
-!> (completed, failed, stopped by a signal). Writing a row costs a copy
-!> into memory; a flush costs an opening of the file and one write per
-!> dataset (docs/PERFORMANCE.md, "What the output costs").
-!>
+!> files (&output hdf5 = .true., the default): the deck, the mesh, the
+!> history's columns, the nodal fields every fields_every steps, the state
+!> at the largest contact force (/peak), the summary, and with &strength
+!> /strength (src/results/damage_record.f90). SI units, every number with
+!> its unit; HDF5 1.10's format, every dataset checksummed. The layout:
+!> docs/OUTPUT.md. A file that opens at every instant (SWMR): above
+!> results_open; output in blocks, once a second: above results_tick.
 !> Usage (src/results/run_recorder.f90): results_open after the history file is
 !> open (or results_reopen for a restart), results_append_history after
-!> every history row, results_state after every step (a snapshot every
-!> fields_every steps), results_tick at the end of every step,
-!> results_flush when the file must be up to date now, results_closing and
-!> results_finish at the end (also after a failure). With hdf5 = .false.
-!> they write nothing.
+!> every history row, results_state after every step, results_tick at the
+!> end of every step, results_flush when the file must be up to date now,
+!> results_closing and results_finish at the end (also after a failure).
+!> With hdf5 = .false. they write nothing. Not from the paper.
 module results_hdf5
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char
@@ -102,8 +33,8 @@ module results_hdf5
       xdmf_grow, xdmf_cut, xdmf_peak, xdmf_close
    implicit none
    private
-   public :: results_file_t, results_open, results_reopen, results_append_history, results_state, results_tick, &
-             results_flush, results_leave, results_closing, results_finish, nodal_values, field_units
+   public :: results_file_t, results_open, results_reopen, results_append_history, results_state, &
+             results_tick, results_flush, results_leave, results_closing, results_finish
 
    integer, parameter :: units_len = 8
    !> Units of the nodal fields u, v, w, psi_x, psi_y.
@@ -138,7 +69,7 @@ module results_hdf5
       type(xdmf_t) :: xdmf                              !< <prefix>.xdmf, for ParaView (src/results/results_xdmf.f90)
       integer :: rows_written = 0                       !< history rows in the file
       integer :: snaps_written = 0                      !< snapshots in the file
-      !> what waits for the next flush (module header)
+      !> what waits for the next flush (above results_tick)
       integer :: nrow = 0                               !< history rows waiting
       real(dp), allocatable :: rows(:,:)                !< (ncol, flush_rows) the rows, SI
       integer :: nsnap = 0                              !< snapshots waiting
@@ -170,10 +101,30 @@ contains
       rf%peak_fields = 0.0_dp
    end subroutine prepare
 
+   !> A file that opens at every instant. results_open makes the file under a
+   !> temporary name, <prefix>.h5.tmp, writes all but what grows (the deck,
+   !> the mesh, the empty series, /peak, /summary status = 'running'), closes
+   !> it and renames it into place; from then on the file is open only while
+   !> it is written, once a second, and written then in HDF5's SWMR mode
+   !> (single writer, multiple readers), which changes existing datasets and
+   !> attributes only and orders the writes of HDF5's metadata so that the
+   !> file on disk is consistent at every instant: a run killed (SIGKILL,
+   !> OOM, a node lost) leaves a <prefix>.h5 that opens and reads, with every
+   !> step up to its last flush (all but the last second) and /summary status
+   !> = 'running'; another process reads it while the run goes (h5py with
+   !> swmr=True at any time; any reader between the writes). A kill in the
+   !> middle of a write (a few ms in the second) leaves the file consistent
+   !> too, but marked as open for writing: SWMR readers (h5py's swmr=True,
+   !> tools/hdf5_read.f90) open it, others after `h5clear -s <prefix>.h5`, and
+   !> impact --restart clears the mark. The XDMF views, objects that SWMR mode
+   !> cannot create, are in their own file (src/results/results_xdmf.f90). The
+   !> end of a run writes /summary (results_finish), attributes SWMR mode
+   !> cannot make, with the file open as usual, a few ms.
+   !>
    !> Creates <prefix>.h5 (when deck%hdf5) and writes the deck, the mesh, the
    !> code version and the empty growing datasets; the summary says
    !> 'running'. Made under a temporary name and renamed into place once
-   !> whole (module header): a failure leaves no <prefix>.h5.
+   !> whole (as above): a failure leaves no <prefix>.h5.
    subroutine results_open(deck, msh, rf, stat, errmsg)
       !> The effective deck.
       type(deck_t), intent(in) :: deck
@@ -300,7 +251,7 @@ contains
    end subroutine results_reopen
 
    !> Appends one history row (SI units, in the order of history_columns)
-   !> to /history: it waits in memory for the next flush (module header),
+   !> to /history: it waits in memory for the next flush (above results_tick),
    !> made now when the rows fill their buffer.
    subroutine results_append_history(rf, row, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file
@@ -345,9 +296,20 @@ contains
       rf%peak_waiting = .true.
    end subroutine results_state
 
+   !> Output that costs little and loses nothing: the history rows, the
+   !> snapshots and the peak state wait in memory and are written in blocks by
+   !> results_flush: at the end of a step once flush_seconds of wall time have
+   !> passed since the last flush (results_tick, which then says a restart
+   !> point is due: src/results/restart_point.f90), when the buffers are full
+   !> (flush_rows rows, or buffer_bytes of snapshots), on a warning
+   !> (src/results/run_recorder.f90), and at the end, whatever the end
+   !> (completed, failed, stopped by a signal). Writing a row costs a copy
+   !> into memory; a flush costs an opening of the file and one write per
+   !> dataset (docs/PERFORMANCE.md, "What the output costs").
+   !>
    !> The end of a step: once flush_seconds have passed since the last
    !> flush, the file is flushed and `due` says that a restart point is due
-   !> (module header); the same clock runs without an HDF5 file.
+   !> (above results_tick); the same clock runs without an HDF5 file.
    subroutine results_tick(rf, due, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file
       logical, intent(out) :: due                   !< a flush was made: the files hold every step so far
@@ -363,7 +325,7 @@ contains
    end subroutine results_tick
 
    !> Writes what waits in memory (history rows, snapshots, the peak) in one
-   !> opening of the file in SWMR mode (module header): on return the file
+   !> opening of the file in SWMR mode (above results_open): on return the file
    !> on disk holds every row given so far, and /history rows and /fields
    !> snapshots say so; then the XDMF views of the new snapshots.
    subroutine results_flush(rf, stat, errmsg)

@@ -1,78 +1,17 @@
 !> <prefix>.xdmf beside <prefix>.h5: an XDMF 3 description of the results
-!> file's mesh and nodal fields, so that ParaView, VisIt and meshio open a
-!> run (docs/OUTPUT.md, "Looking at the fields"). The XML holds no numbers of its
-!> own: every array is a dataset of <prefix>.h5 or <prefix>.xdmf.h5, named
-!> by its path.
-!>
-!>   mesh        9-node quadrilaterals (XDMF Quadrilateral_9, VTK's
-!>               biquadratic quad: the node order of src/model/shape_functions.f90,
-!>               corners counter-clockwise, mid-sides, centre), points x, y (m)
-!>   time steps  one per snapshot of /fields (Temporal collection, time in
-!>               s): the nodal fields u, v, w (m), psi_x, psi_y (rad), and
-!>               peak_u ... peak_psi_y, the state of the step of the largest
-!>               contact force so far (/peak)
-!>   plies       with &strength, at the end of the run: the damage map and
-!>               the ply stresses at the peak force on a grid of the
-!>               laminate, a temporal collection before the fields' one
-!>               (src/results/xdmf_plies.f90, written into /xdmf/plies)
-!>
-!> What XDMF readers need that <prefix>.h5 did not have: in its group /xdmf,
-!>
-!>   /xdmf/cells          (nelem, 9)   element nodes numbered from 0 (XDMF
-!>                                     counts from 0, /mesh/connectivity from 1)
-!>
-!> and, in a file of its own, <prefix>.xdmf.h5,
-!>
-!>   /fields/<b>/<f>/<k>  (nnode)      field f of snapshot k: a virtual dataset
-!>                                     (HDF5 1.10) showing row k of
-!>                                     <prefix>.h5's /fields/<f>, no copy;
-!>                                     readers see a plain dataset. b numbers
-!>                                     the batch of snapshots the results
-!>                                     file wrote in one flush
-!>                                     (src/results/results_hdf5.f90): a group that is
-!>                                     complete before the XML names it and
-!>                                     never changed after
-!>
-!> A view is an object, made when its snapshot is written: <prefix>.h5 is
-!> written in HDF5's SWMR mode, which makes no object (src/results/results_hdf5.f90),
-!> hence their file of their own, which names <prefix>.h5 without its
-!> directory (HDF5 finds it beside itself). Debian 12's ParaView (5.11)
-!> does not apply the XDMF hyperslabs and functions of an Attribute, and
-!> meshio reads only whole datasets; a plain dataset per snapshot is what
-!> every reader takes, hence the views.
-!>
-!> &output xdmf = 'whole' mirrors a quarter or half into the whole
-!> plate (about x = 0 and y = 0, src/model/mesh.f90): u, psi_x change sign across
-!> x = 0 and v, psi_y across y = 0, which no view can do, so the whole
-!> plate's fields are written as data, in <prefix>.h5: /xdmf/coordinates
-!> (nnode_whole, 2), /xdmf/cells, /xdmf/fields/<f> (nsnap, nnode_whole)
-!> growing with /fields, and /xdmf/peak/<f>, about 4 (quarter) or 2 (half)
-!> times the modelled fields; the views show rows of /xdmf/fields/<f>.
-!> Nodes on the symmetry lines are shared, elements keep the
-!> counter-clockwise order. &output xdmf = 'none' writes neither the XML,
-!> nor /xdmf, nor the views.
-!>
-!> Cost: the views are nothing at the default fields_every and the largest
-!> part of the output of a small run with a snapshot every step (docs/OUTPUT.md,
-!> "Looking at the fields").
-!>
-!> As the run goes: after a batch of snapshots <prefix>.xdmf.h5 is flushed
-!> and the XML is written to <prefix>.xdmf.tmp and renamed over
-!> <prefix>.xdmf (one step: a reader sees the old file or the new one),
-!> after the first batch and then at most once per xdmf_rewrite_interval of
-!> wall-clock time (the XML grows with every snapshot; rewriting it each
-!> time would cost the square of their number), and at the end. A killed
-!> run's XDMF opens, with the snapshots up to its last rewrite and status
-!> 'running': the views it names sit in batch groups that later writes
-!> leave alone. (A kill while HDF5 flushes <prefix>.xdmf.h5 can still
-!> leave its newest structures half written: a run restarted
-!> (src/results/restart_point.f90) makes the file anew.)
-!>
+!> file's mesh (9-node quadrilaterals) and nodal fields, one time step per
+!> snapshot, so that ParaView, VisIt and meshio open a run; with &strength
+!> also the plies (src/results/xdmf_plies.f90). The XML holds no numbers of
+!> its own: every array is a dataset of <prefix>.h5 or of <prefix>.xdmf.h5
+!> (a view of each snapshot, no copy; why views, and &output xdmf =
+!> 'whole': above xdmf_t). The XML is rewritten by rename after a batch of
+!> snapshots, at most once per xdmf_rewrite_interval (above xdmf_snapshots).
 !> Usage (src/results/results_hdf5.f90): xdmf_open while <prefix>.h5 is made, then
 !> xdmf_start; for each batch of snapshots appended to /fields, xdmf_grow
 !> in the same writing, then xdmf_snapshots and xdmf_batch_close;
 !> xdmf_peak when /peak is rewritten; xdmf_close at the end. A restart:
 !> xdmf_cut while <prefix>.h5 is cut back, then xdmf_resume.
+!> Not from the paper. More: docs/OUTPUT.md, "Looking at the fields".
 module results_xdmf
    use, intrinsic :: iso_fortran_env, only: int64
    use hdf5, only: hid_t
@@ -106,6 +45,25 @@ module results_xdmf
    integer, parameter :: element_di(nen) = [0, 2, 2, 0, 1, 2, 1, 0, 1]
    integer, parameter :: element_dj(nen) = [0, 0, 2, 2, 0, 1, 2, 1, 1]
 
+   !> A view is an object, made when its snapshot is written: <prefix>.h5 is
+   !> written in HDF5's SWMR mode, which makes no object (src/results/results_hdf5.f90),
+   !> hence their file of their own, which names <prefix>.h5 without its
+   !> directory (HDF5 finds it beside itself). Debian 12's ParaView (5.11)
+   !> does not apply the XDMF hyperslabs and functions of an Attribute, and
+   !> meshio reads only whole datasets; a plain dataset per snapshot is what
+   !> every reader takes, hence the views.
+   !>
+   !> &output xdmf = 'whole' mirrors a quarter or half into the whole
+   !> plate (about x = 0 and y = 0, src/model/mesh.f90): u, psi_x change sign across
+   !> x = 0 and v, psi_y across y = 0, which no view can do, so the whole
+   !> plate's fields are written as data, in <prefix>.h5: /xdmf/coordinates
+   !> (nnode_whole, 2), /xdmf/cells, /xdmf/fields/<f> (nsnap, nnode_whole)
+   !> growing with /fields, and /xdmf/peak/<f>, about 4 (quarter) or 2 (half)
+   !> times the modelled fields; the views show rows of /xdmf/fields/<f>.
+   !> Nodes on the symmetry lines are shared, elements keep the
+   !> counter-clockwise order. &output xdmf = 'none' writes neither the XML,
+   !> nor /xdmf, nor the views.
+   !>
    !> The XDMF file of a results file.
    type :: xdmf_t
       logical :: active = .false.                   !< <prefix>.xdmf is being written
@@ -161,7 +119,7 @@ contains
 
    !> Writes /xdmf into <prefix>.h5 while it is made (fid, /mesh written):
    !> the cells numbered from 0; for the whole plate its points, /peak and
-   !> the empty growing fields (module header); nothing for xdmf = 'none'.
+   !> the empty growing fields (above xdmf_t); nothing for xdmf = 'none'.
    subroutine xdmf_open(x, deck, msh, fid, stat, errmsg)
       type(xdmf_t), intent(out) :: x                !< the XDMF file, ready for xdmf_start on return
       type(deck_t), intent(in) :: deck              !< the effective deck (prefix, xdmf)
@@ -286,6 +244,18 @@ contains
       end do fields
    end subroutine xdmf_grow
 
+   !> As the run goes: after a batch of snapshots <prefix>.xdmf.h5 is flushed
+   !> and the XML is written to <prefix>.xdmf.tmp and renamed over
+   !> <prefix>.xdmf (one step: a reader sees the old file or the new one),
+   !> after the first batch and then at most once per xdmf_rewrite_interval of
+   !> wall-clock time (the XML grows with every snapshot; rewriting it each
+   !> time would cost the square of their number), and at the end. A killed
+   !> run's XDMF opens, with the snapshots up to its last rewrite and status
+   !> 'running': the views it names sit in batch groups that later writes
+   !> leave alone. (A kill while HDF5 flushes <prefix>.xdmf.h5 can still
+   !> leave its newest structures half written: a run restarted
+   !> (src/results/restart_point.f90) makes the file anew.)
+   !>
    !> A batch of snapshots, just written to <prefix>.h5 after its first
    !> `before`: the group /fields/<b> of <prefix>.xdmf.h5, its groups of the
    !> fields, and each snapshot's views.
@@ -325,7 +295,7 @@ contains
    end subroutine xdmf_snapshots
 
    !> Ends a batch: <prefix>.xdmf.h5 flushed, the XML rewritten when due
-   !> (module header).
+   !> (above xdmf_snapshots).
    subroutine xdmf_batch_close(x, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file
       integer, intent(out) :: stat                  !< 0 on success

@@ -1,45 +1,18 @@
 !> The run recorder of the impact analysis (Fig. 3, "output"): everything a
-!> run writes, kept out of the time loop. It owns the history file, the
-!> HDF5 results file, the energy bookkeeping, the summary's figures, the
-!> warnings and &analysis stop_on_warning. No module state: all of it is in
-!> the record_t the main program holds.
-!>
+!> run writes, kept out of the time loop: the history file, the HDF5
+!> results file, the energy bookkeeping (above add_contact_work), the
+!> summary's figures (peaks refined between the steps: above
+!> update_maxima), the warnings and &analysis stop_on_warning. No module
+!> state: all of it is in the record_t the main program holds.
 !>   record_open   before the first step: the files, row 0 (the impactor
 !>                 touching the plate at v0)
 !>   record_step   after every accepted step: energies, summary figures,
-!>                 history row (every &output every steps), field
-!>                 snapshots and the peak state in <prefix>.h5, warnings;
+!>                 history row, snapshots and the peak state, warnings;
 !>                 sets rec%stop when the run must end here (a divergence,
-!>                 or a warning with stop_on_warning; a stop signal is
-!>                 the time loop's own guard, src/impact.f90)
+!>                 or a warning with stop_on_warning)
 !>   record_close  at the end, or when a run fails: the summary, in
 !>                 <prefix>_summary.dat and /summary, with its status
-!>
-!> The summary's peak force and its time, largest deflection and largest
-!> strain are refined between the steps: the vertex of the parabola through
-!> the largest sample and its two neighbours (row 0 counts as a sample), or
-!> the sample itself at the ends of the record or where the three are not
-!> concave (src/results/step_peak.f90); the sampled peak force and its time
-!> (the step of /peak in <prefix>.h5) are kept as *_sampled keys. The first
-!> contact lasts from the first touch (t = 0, the indentation 0 there) to
-!> where the indentation less the permanent indentation, alpha - alpha_0,
-!> crosses 0, linear between the last step with force and the first without
-!> (the force itself is 0 at that step and its law F ~ (alpha - alpha_0)^q
-!> leaves it with slope 0, so a line through the forces would give the step).
-!>
-!> Energies (whole plate, J): the impactor's kinetic energy; the plate's
-!> kinetic and strain energy; the work of the contact force on the plate,
-!> the trapezoidal rule of the load vectors at both ends of a step,
-!> 1/2 (F_t p_t + F_t+dt p_t+dt)^T (D_t+dt - D_t) (which Newmark's rule
-!> balances exactly against the plate's energy in the linear theory); the
-!> energy the contact took, the impactor's work 1/2 (F_t + F_t+dt) dw_r less
-!> that; and the balance, E0 less the four, which measures what the
-!> integration lost (+) or created (-). A run whose balance goes below -E0
-!> (it created more energy than the impact brought) has diverged and stops;
-!> so does one whose state is not finite. The energies are computed on the
-!> history rows only (every &output every steps: a strain energy and an
-!> M x each), so with every > 1 the summary's energy maxima, the energy
-!> warnings and the divergence stop see those rows.
+!> More: docs/OUTPUT.md.
 module run_recorder
    use, intrinsic :: iso_fortran_env, only: error_unit, int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
@@ -290,11 +263,25 @@ contains
       if (stat == 0) call results_tick(rec%h5, rec%restart_due, stat, errmsg)
    end subroutine record_step
 
+   !> Energies (whole plate, J): the impactor's kinetic energy; the plate's
+   !> kinetic and strain energy; the work of the contact force on the plate,
+   !> the trapezoidal rule of the load vectors at both ends of a step,
+   !> 1/2 (F_t p_t + F_t+dt p_t+dt)^T (D_t+dt - D_t) (which Newmark's rule
+   !> balances exactly against the plate's energy in the linear theory); the
+   !> energy the contact took, the impactor's work 1/2 (F_t + F_t+dt) dw_r less
+   !> that; and the balance, E0 less the four, which measures what the
+   !> integration lost (+) or created (-). A run whose balance goes below -E0
+   !> (it created more energy than the impact brought) has diverged and stops;
+   !> so does one whose state is not finite. The energies are computed on the
+   !> history rows only (every &output every steps: a strain energy and an
+   !> M x each), so with every > 1 the summary's energy maxima, the energy
+   !> warnings and the divergence stop see those rows.
+   !>
    !> The energies of every step: the contact force's work on the plate, by
    !> the trapezoidal rule of the load vectors at both ends of the step,
    !> 1/2 (F_t p_t + F_t+dt p_t+dt)^T (D_t+dt - D_t), and the energy the
    !> contact took, the impactor's work 1/2 (F_t + F_t+dt) dw_r less that
-   !> (module header); the step's end becomes the next one's start.
+   !> (as above); the step's end becomes the next one's start.
    subroutine add_contact_work(rec, plate, imp, cit)
       type(record_t), intent(inout) :: rec               !< the record
       type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
@@ -311,6 +298,18 @@ contains
       rec%d_prev = plate%d
    end subroutine add_contact_work
 
+   !> The summary's peak force and its time, largest deflection and largest
+   !> strain are refined between the steps: the vertex of the parabola through
+   !> the largest sample and its two neighbours (row 0 counts as a sample), or
+   !> the sample itself at the ends of the record or where the three are not
+   !> concave (src/results/step_peak.f90); the sampled peak force and its time
+   !> (the step of /peak in <prefix>.h5) are kept as *_sampled keys. The first
+   !> contact lasts from the first touch (t = 0, the indentation 0 there) to
+   !> where the indentation less the permanent indentation, alpha - alpha_0,
+   !> crosses 0, linear between the last step with force and the first without
+   !> (the force itself is 0 at that step and its law F ~ (alpha - alpha_0)^q
+   !> leaves it with slope 0, so a line through the forces would give the step).
+   !>
    !> The summary's running figures of every step: the samples of the peak
    !> force, the largest deflection and strain (src/results/step_peak.f90
    !> refines them between the steps), the contacts and the first one's
@@ -353,7 +352,7 @@ contains
    !> The contacts (a step with force after one without starts one), and
    !> the first contact's start and end, each where the indentation less the
    !> permanent indentation, alpha - alpha_0, crosses 0 between the step
-   !> before and this one (zero_crossing; module header): the start of the
+   !> before and this one (zero_crossing; above update_maxima): the start of the
    !> first contact is t = 0, where the impactor touches the plate with
    !> alpha = 0. rec%alpha_prev is still the step before's indentation.
    subroutine first_contact_bounds(rec, t, f, alpha, alpha_0)
@@ -377,7 +376,7 @@ contains
 
    !> The history row of the step (every &output every steps, and the last),
    !> to the history file and <prefix>.h5; a run whose energy balance goes
-   !> below -E0 has diverged and stops here (module header).
+   !> below -E0 has diverged and stops here (above add_contact_work).
    subroutine history_row(rec, fig, model, plate, imp, hist, cit, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(in) :: fig            !< the step
@@ -683,7 +682,7 @@ contains
       duration = 0.0_dp
       if (rec%contacts >= 1) duration = merge(rec%first_contact_end, real(rec%steps, dp)*rec%dt, ended) &
                                         - rec%first_contact_start
-      ! -- the peaks, refined between the steps (module header)
+      ! -- the peaks, refined between the steps (above update_maxima)
       call peak_between(rec%force_peak, t_peak, f_peak)
       call peak_between(rec%deflection_peak, t_other, w_max)
       call peak_between(rec%strain_peak, t_other, e_max)
@@ -750,7 +749,7 @@ contains
       integer, intent(in) :: unit                   !< where they go (standard output)
       real(dp) :: f_peak, t_peak, w_max, t_w
 
-      call peak_between(rec%force_peak, t_peak, f_peak)          ! as in the summary (module header)
+      call peak_between(rec%force_peak, t_peak, f_peak)          ! as in the summary (above update_maxima)
       call peak_between(rec%deflection_peak, t_w, w_max)
       write (unit, '(a)') 'history: ' // rec%hist_path
       write (unit, '(a)') 'summary: ' // deck%prefix // '_summary.dat'

@@ -1,17 +1,23 @@
 !> What the program says on the terminal before any work: the usage
-!> (impact --help), and the echo of the run (after Bathe's STAP: every
+!> (impact --help) and the other options' answers, the notice of a large
+!> mesh the program chose, and the echo of the run (after Bathe's STAP: every
 !> value of the deck with its symbol and unit, the derived sizes, the
 !> laminate, and the scene report of src/model/scene_model.f90).
 module run_report
+   use kinds, only: dp
+   use number_text, only: int_str, real_short
    use deck_schema, only: deck_t, deck_groups, is_given, strength_given, toughness_given
-   use deck_echo, only: echo_deck
+   use deck_echo, only: echo_deck, write_schema, write_deck_table
+   use input_deck, only: model_size
+   use storage_choice, only: resolve_storage
+   use progress_line, only: duration_text
    use plate_model, only: model_t
    use global_matrix, only: global_bandwidth, global_stored_entries
    use scene_model, only: write_scene_report
    use delamination, only: write_delamination_scene
    implicit none
    private
-   public :: echo_model, usage, usage_line, version_text
+   public :: echo_model, write_answer, usage_line, say_large_chosen_mesh
 
    !> The usage in one line: the first of impact --help, and what a wrong
    !> command line gets after its message.
@@ -75,6 +81,46 @@ contains
       write (u, '(a)') 'Report bugs to the impact developers, with the deck, the command line and the first line'
       write (u, '(a)') 'of impact --version (README.md, "Reporting bugs").'
    end subroutine usage
+
+   !> A mesh the program chose (no nx, ny in the deck) of more than
+   !> large_model equations: said before the set-up builds it, which may
+   !> take minutes, with its size, its memory and, in sparse storage, the
+   !> set-up's cpu time: set_up_s (measured: an 80 x 60 full plate, 94 605
+   !> equations, on one core of the 2-core test machine; a 40 x 30 one took
+   !> 0.8 s, 23 305 equations) times the equations' ratio to the power
+   !> set_up_growth (CHOLMOD's factorization of a plate's matrix).
+   subroutine say_large_chosen_mesh(deck, unit)
+      type(deck_t), intent(in) :: deck              !< the deck, nx and ny given or chosen
+      integer, intent(in) :: unit                   !< where it is said (standard output)
+      real(dp), parameter :: large_model = 1.0e5_dp, set_up_neq = 94605.0_dp, set_up_s = 4.8_dp, &
+                             set_up_growth = 1.3_dp
+      real(dp) :: neq, memory
+      character(len=:), allocatable :: time
+      if (len_trim(deck%mesh_chosen) == 0) return
+      call model_size(deck, neq, memory)
+      if (neq <= large_model) return
+      time = ''
+      if (resolve_storage(deck%storage, nint(min(neq, 1.0e9_dp)), .false.) == 'sparse') time = ' and about ' &
+         // duration_text(set_up_s*(neq/set_up_neq)**set_up_growth) // ' of set-up on one core'
+      write (unit, '(a)') 'mesh chosen: ' // int_str(deck%nx) // ' x ' // int_str(deck%ny) &
+         // ' elements, about ' // int_str(nint(neq)) // ' equations, ' // real_short(memory/1024.0_dp**3) &
+         // ' GiB for the matrices' // time // ': give &mesh nx, ny for a coarser mesh'
+      flush (unit)
+   end subroutine say_large_chosen_mesh
+
+   !> The answer of an option that asks instead of running (command_line's
+   !> action): --help, --version, --schema, --deck-table; nothing for 'run'.
+   subroutine write_answer(action, u, version)
+      character(len=*), intent(in) :: action     !< 'help', 'version', 'schema', 'deck-table' or 'run'
+      integer, intent(in) :: u                   !< open formatted unit
+      character(len=*), intent(in) :: version    !< the build's version (src/system/build_info.f90)
+      select case (action)
+      case ('help');       call usage(u)
+      case ('version');    call version_text(u, version)
+      case ('schema');     call write_schema(u)
+      case ('deck-table'); call write_deck_table(u)
+      end select
+   end subroutine write_answer
 
    !> impact --version: the version the build recorded (one line, as scripts
    !> read it), then the copyright and the licence (LICENSE).

@@ -1,25 +1,11 @@
-!> The summary's extremes between the steps (issue 22, item 3): a run
-!> samples its force, deflection and strain once per step, so the largest
-!> sample misses the true peak by up to O(dt^2) in value and dt/2 in time,
-!> and jumps from one step to the next as dt changes. These pure kernels
-!> refine the samples:
-!>
-!>   parabola_vertex  the vertex of the parabola through three samples (the
-!>                    largest and its two neighbours): an error O(dt^3) in
-!>                    the value at a smooth maximum, and a time that moves
-!>                    smoothly with dt
-!>   zero_crossing    where the straight line through two samples crosses 0
-!>                    (the end of a contact, from the indentation less the
-!>                    permanent indentation: src/results/run_recorder.f90)
-!>   peak_sample      keeps, sample by sample, what parabola_vertex needs:
-!>                    the largest sample, the one before and the one after
-!>   peak_between     the refined extreme of the samples kept: the vertex,
-!>                    or the largest sample itself at either end of the
-!>                    record or where the three do not make a concave
-!>                    parabola (a flat or a kinked top)
-!>
-!> The largest sample is the first of equal ones, and a NaN sample, once
-!> taken, stays the largest (a run whose state is not finite shows it).
+!> The summary's extremes between the steps: a run samples its force,
+!> deflection and strain once per step, so the largest sample misses the
+!> true peak by up to O(dt^2) in value and dt/2 in time, and jumps from one
+!> step to the next as dt changes. These pure kernels refine the samples:
+!> the vertex of the parabola through the largest and its two neighbours
+!> (O(dt^3) at a smooth maximum), and where a line through two samples
+!> crosses 0 (the end of a contact). The kernels: above peak_track_t.
+!> Not from the paper. More: docs/OUTPUT.md.
 module step_peak
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
    use kinds, only: dp
@@ -28,6 +14,20 @@ module step_peak
    public :: peak_track_t, peak_sample, peak_between, parabola_vertex, zero_crossing, peak_state, peak_restore, &
       peak_state_size
 
+   !>   parabola_vertex  the vertex of the parabola through three samples (the
+   !>                    largest and its two neighbours): an error O(dt^3) in
+   !>                    the value at a smooth maximum, and a time that moves
+   !>                    smoothly with dt
+   !>   zero_crossing    where the straight line through two samples crosses 0
+   !>                    (the end of a contact, from the indentation less the
+   !>                    permanent indentation: src/results/run_recorder.f90)
+   !>   peak_sample      keeps, sample by sample, what parabola_vertex needs:
+   !>                    the largest sample, the one before and the one after
+   !>   peak_between     the refined extreme of the samples kept: the vertex,
+   !>                    or the largest sample itself at either end of the
+   !>                    record or where the three do not make a concave
+   !>                    parabola (a flat or a kinked top)
+   !>
    !> The samples a peak is refined from (peak_sample, peak_between).
    type :: peak_track_t
       integer :: samples = 0              !< samples taken so far
@@ -95,6 +95,9 @@ contains
       end if
    end function zero_crossing
 
+   !> The largest sample is the first of equal ones, and a NaN sample, once
+   !> taken, stays the largest (a run whose state is not finite shows it).
+   !>
    !> Takes the sample (t, v), t after every earlier one: it becomes the
    !> largest when it exceeds the largest so far (or is a NaN), the last
    !> sample then its neighbour before; the first sample after the largest

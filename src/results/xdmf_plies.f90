@@ -1,54 +1,14 @@
 !> The ply fields of a run with &strength as a grid of <prefix>.xdmf, so
 !> that ParaView, VisIt and meshio show the damage map and the ply stresses
-!> at the peak force beside the nodal fields (README, "Looking at the
-!> fields"; the values are those of /strength, src/results/damage_record.f90).
-!>
-!> The grid, the laminate: one hexahedron per Gauss point, ply and ply face.
-!> In the plane, the cell of a 3 x 3 Gauss point is the part of its element
-!> that the point's weight stands for: xi, eta cut at -1, -4/9, 4/9, 1 (the
-!> weights 5/9, 8/9, 5/9), mapped by the element's shape functions, so the
-!> cells tile the modelled domain and each holds its point. Through the
-!> thickness, ply k is cut at its middle: the lower half holds the values of
-!> its face towards the impacted face (face 2k-1 of /strength/peak), the
-!> upper half those of the other face (2k). z is the plate's thickness
-!> coordinate turned over (z_view = -z, m): the nodal grid's w points the way
-!> the impactor moves, towards -z in ParaView (Warp By Scalar, normal 0 0 -1),
-!> so the impacted face, ply 1, is on top at z = +h/2.
-!>
-!> Cell c = 2 nply (p - 1) + 2 (k - 1) + f of point p, ply k, face f holds
-!> (XDMF cell attributes; each name carries its unit):
-!>
-!>   ply, face, ply_angle (deg)       where the cell is (face 1: towards the
-!>                                    impacted face, 2: away from it)
-!>   damage_map (-)                   the largest failure index of the ply at
-!>                                    the point over the run, damage_mode its
-!>                                    mode (the codes of failure_criteria),
-!>                                    onset_time (s) the first time it reached
-!>                                    1 (-1 never): /strength/damage_map, ...
-!>   peak_sigma_11 (Pa), peak_sigma_22 (Pa), peak_tau_12 (Pa),
-!>   peak_tau_23 (Pa), peak_tau_13 (Pa), peak_failure_index (-)
-!>                                    at the step of the largest contact force,
-!>                                    material axes: /strength/peak
-!>   delamination_index (-)           Choi & Chang's largest index over the run
-!>                                    of the interface the half-ply touches (0
-!>                                    on the laminate's faces):
-!>                                    /strength/delamination_map
-!>
-!> In <prefix>.h5, /xdmf/plies: points (npts, 3) m, cells (ncell, 8) numbered
-!> from 0 (VTK's hexahedron order), and one dataset (ncell) per attribute,
-!> copies in cell order (a reader takes one value per cell; meshio does not
-!> reshape). On the paper's 6 x 9 quarter and 20 plies, 19 440 cells, about
-!> 4 MB. The grid covers the modelled domain, also with &output xdmf =
-!> 'whole' (a quarter's ply stresses do not mirror into the whole plate:
-!> a +45 ply mirrors into a -45 one).
-!>
-!> In the XML (plies_collection, called by src/results/results_xdmf.f90 when
-!> it writes the file), a temporal collection "plies" before the nodal
-!> fields' "fields", with the same times: the values do not change with
-!> time, but ParaView's XDMF 3 readers read the top-level temporal
-!> collections only, and meshio's time-series reader takes the last
-!> collection of the file, which stays "fields". ParaView shows two blocks,
-!> the laminate (first) and the plate.
+!> at the peak force beside the nodal fields (the values of /strength,
+!> src/results/damage_record.f90). The grid is the laminate: one hexahedron
+!> per Gauss point, ply and ply face (above laminate_grid), written into
+!> /xdmf/plies of <prefix>.h5 with one dataset per cell attribute (ply,
+!> face, ply_angle, damage_map, damage_mode, onset_time, the peak stresses
+!> and failure index, delamination_index), and a temporal collection
+!> "plies" before the fields' (above plies_collection). It covers the
+!> modelled domain, also with &output xdmf = 'whole' (a +45 ply mirrors
+!> into a -45 one). Not from the paper. More: docs/OUTPUT.md, "The ply fields".
 module xdmf_plies
    use hdf5, only: hid_t
    use kinds, only: dp
@@ -87,7 +47,7 @@ module xdmf_plies
 
 contains
 
-   !> Writes /xdmf/plies into the open results file fid (module header) and
+   !> Writes /xdmf/plies into the open results file fid (above laminate_grid) and
    !> makes p active. z(0:nply) the ply interfaces (m, z(0) = -h/2 the
    !> impacted face), angle the ply angles (deg); the damage map fi_max,
    !> mode_max, onset (nply, npoint); at the peak force sigma (5, 2, nply,
@@ -170,8 +130,20 @@ contains
 
    end subroutine plies_write
 
+   !> The grid, the laminate: one hexahedron per Gauss point, ply and ply face.
+   !> In the plane, the cell of a 3 x 3 Gauss point is the part of its element
+   !> that the point's weight stands for: xi, eta cut at -1, -4/9, 4/9, 1 (the
+   !> weights 5/9, 8/9, 5/9), mapped by the element's shape functions, so the
+   !> cells tile the modelled domain and each holds its point. Through the
+   !> thickness, ply k is cut at its middle: the lower half holds the values of
+   !> its face towards the impacted face (face 2k-1 of /strength/peak), the
+   !> upper half those of the other face (2k). z is the plate's thickness
+   !> coordinate turned over (z_view = -z, m): the nodal grid's w points the way
+   !> the impactor moves, towards -z in ParaView (Warp By Scalar, normal 0 0 -1),
+   !> so the impacted face, ply 1, is on top at z = +h/2.
+   !>
    !> The laminate's points xyz (3, npts) (m) and hexahedra cells (8, ncell)
-   !> numbered from 0 (module header): per element a 4 x 4 lattice of the
+   !> numbered from 0 (as above): per element a 4 x 4 lattice of the
    !> cut lines (plies_cut) at 2 nply + 1 levels (the ply interfaces and
    !> middles, from the impacted face); per Gauss point, ply and face a
    !> hexahedron, its lower face first, counter-clockwise seen from above.
@@ -185,7 +157,7 @@ contains
 
       nply = size(z) - 1
       nl = 2*nply + 1
-      ! -- the levels from the impacted face, z turned over (module header)
+      ! -- the levels from the impacted face, z turned over (above laminate_grid)
       do k = 1, nply
          zl(2*k - 2) = -z(k - 1)
          zl(2*k - 1) = -0.5_dp*(z(k - 1) + z(k))
@@ -230,9 +202,17 @@ contains
 
    end subroutine laminate_grid
 
+   !> In the XML (plies_collection, called by src/results/results_xdmf.f90 when
+   !> it writes the file), a temporal collection "plies" before the nodal
+   !> fields' "fields", with the same times: the values do not change with
+   !> time, but ParaView's XDMF 3 readers read the top-level temporal
+   !> collections only, and meshio's time-series reader takes the last
+   !> collection of the file, which stays "fields". ParaView shows two blocks,
+   !> the laminate (first) and the plate.
+   !>
    !> The temporal collection "plies" of the XML on unit u: at each of the
    !> times (the nodal fields' snapshot times, as the XML gives them), the
-   !> laminate with its cell attributes (module header). h5 is the results
+   !> laminate with its cell attributes (as above). h5 is the results
    !> file as the XML names it, with ':/' appended.
    subroutine plies_collection(p, u, h5, times)
       type(xdmf_plies_t), intent(in) :: p           !< the grid (active)

@@ -2,23 +2,11 @@
 !> assume a contact force, solve the plate under it (src/scheme/plate_solver.f90),
 !> move the impactor (eq. 21), compute the indentation (eq. 13) and the
 !> law's force (eq. 11-12), and repeat with a new assumed force until the
-!> two agree (eq. 17).
-!>
-!> The paper does not say how the assumed force is updated (§2.3 reads as
-!> the plain fixed point F_assum <- F_cont). &analysis force_update:
-!>  - 'bracketed' (the default): the residual r(F) = F - F_cont(F) grows with
-!>    F (a harder push stops the impactor sooner and deflects the plate
-!>    more), so the root is bracketed: the law's force is taken until it is,
-!>    then regula falsi with the Illinois modification. It always converges.
-!>  - 'fixed_point': F <- F_cont while |r| falls by at least max_contraction
-!>    per iteration, then the bracketed update (a fall-back, warned).
-!>  - 'plain': F <- F_cont and nothing else, the paper's words; a step that
-!>    does not meet eq. (17) in max_contact_iter iterations keeps its last
-!>    force and the run goes on (counted; docs/PAPER.md "Time step and
-!>    divergence" shows where it diverges, and why).
-!>
+!> two agree (eq. 17). How the assumed force is updated (the paper does
+!> not say; &analysis force_update): above force_bracket_t.
 !> The contact area belongs to the assumed force (module contact_load): a
 !> disc of radius sqrt(R alpha(F)), alpha(F) the law's indentation at F.
+!> More: docs/ALGORITHM.md.
 module contact_iteration
    use kinds, only: dp
    use plate_model, only: model_t
@@ -30,6 +18,19 @@ module contact_iteration
    public :: contact_iteration_t, force_bracket_t, contact_start, contact_next, contact_cut, contact_area, &
              contact_indentation, contact_converged, contact_outcome, contact_report, bracket_update
 
+   !> The paper does not say how the assumed force is updated (§2.3 reads as
+   !> the plain fixed point F_assum <- F_cont). &analysis force_update:
+   !>  - 'bracketed' (the default): the residual r(F) = F - F_cont(F) grows with
+   !>    F (a harder push stops the impactor sooner and deflects the plate
+   !>    more), so the root is bracketed: the law's force is taken until it is,
+   !>    then regula falsi with the Illinois modification. It always converges.
+   !>  - 'fixed_point': F <- F_cont while |r| falls by at least max_contraction
+   !>    per iteration, then the bracketed update (a fall-back, warned).
+   !>  - 'plain': F <- F_cont and nothing else, the paper's words; a step that
+   !>    does not meet eq. (17) in max_contact_iter iterations keeps its last
+   !>    force and the run goes on (counted; docs/PAPER.md "Time step and
+   !>    divergence" shows where it diverges, and why).
+   !>
    !> The contact iteration's knowledge of the root of r(F) = F - F_cont(F).
    type :: force_bracket_t
       real(dp) :: lo = 0.0_dp, hi = huge(1.0_dp)  !< bracket (N)
@@ -105,7 +106,7 @@ contains
    end subroutine contact_indentation
 
    !> The step's outcome after the contact loop: accepted when eq. (17) was
-   !> met. With force_update = 'plain' (the paper's words, module header) a
+   !> met. With force_update = 'plain' (the paper's words, above force_bracket_t) a
    !> step that did not meet it but whose plate was solved is accepted all
    !> the same with the law's last force, F_assum <- F_cont, as the
    !> impactor's force at t+dt (counted as unconverged in the summary). Any
@@ -119,7 +120,7 @@ contains
    end subroutine contact_outcome
 
    !> The next assumed force after an iteration that did not meet eq. (17)
-   !> (module header: force_update), and its contact area.
+   !> (above force_bracket_t: force_update), and its contact area.
    subroutine contact_next(cit, model, hist)
       type(contact_iteration_t), intent(inout) :: cit  !< the iteration: f_assum, f_cont of the last
       type(model_t), intent(in) :: model               !< model

@@ -1,60 +1,18 @@
 !> scheme = 'fast' (the default): one call for the whole step, the
 !> alternative to the two nested loops of the paper's flowchart
-!> (src/scheme/contact_iteration.f90 and src/scheme/plate_solver.f90). The contact force
-!> is solved inside each iteration of eq. (19) instead of around the whole
-!> nonlinear solution; it gives the paper's answer to the tolerances
-!> (docs/PERFORMANCE.md) with fewer plate solutions, because the contact
-!> equation is scalar. In iteration n,
-!>
+!> (src/scheme/contact_iteration.f90, src/scheme/plate_solver.f90): the
+!> contact force is solved inside each iteration of eq. (19), a scalar
+!> equation, and gives the paper's answer to the tolerances with fewer
+!> plate solutions. In iteration n,
 !>   D_0 = (K_L + 4/dt^2 M)^-1 (M b - K_N(D^n) D^n)         eq. (19), F = 0
 !>   D(F) = D_0 + F g,  g = (K_L + 4/dt^2 M)^-1 p(F)        p the contact load
 !>   w_r(F) = w_r + v dt - (F_t + F) dt^2/(4m)              eq. (21)
 !>   alpha(F) = w_r(F) - w_p(D(F)), linear in F             eq. (13)
-!>
 !> and F = F_law(alpha(F)) (eq. 11-12) is solved to rounding
-!> (solve_contact_equation). With Hertz's load the pattern p depends on F
-!> through the contact radius; the scalar equation is then solved again
-!> with the pattern of its root until the root stops moving (p changes with
-!> F^(1/3): two or three passes). g comes from the columns of
-!> contact_response, without a solve once the contact's equations are
-!> known. At the end of every iteration eq. (17) holds exactly. The linear
-!> theory needs one back substitution per step.
-!>
-!> One solve per step (the nonlinear theory). The first iterate is
-!> extrapolated, D^0 = D_t + dt V_t (predicted_displacements), and the
-!> first solution D^1 is the step's answer when the iteration's error is
-!> below the tolerance. Eq. (18) compares two successive iterates, so taken
-!> literally it needs a second solution to accept the first; but the change
-!> the next iteration would make is the contraction theta of the iteration
-!> times this one's, |D^2 - D^1| ~ theta |D^1 - D^0|, and theta changes
-!> slowly from step to step (it grows with the deflection). So D^1 is
-!> accepted when eq. (18) holds for that estimate,
-!>
-!>   theta^2 sum (D^1 - D^0)^2 < C_r2 sum (D^1 - D_t)^2,
-!>
-!> theta^2 = ratio(2)/ratio(1), the larger of the last two measured (the
-!> stopping test of the simplified Newton iteration of implicit Runge-Kutta
-!> codes, with the rate of earlier steps: Hairer and Wanner, Solving ODEs
-!> II, section IV.8). theta is measured by a probe, in the first steps and
-!> every measure_every steps: the second solution is made, and when it
-!> meets eq. (18) (|D^2 - D^1| small) it has only measured the first, which
-!> stays the step's answer. A step whose estimate fails, or whose probe
-!> does not meet eq. (18), iterates on with the paper's test and takes the
-!> converged iterate; from the fifth iterate on the iterates are combined
-!> by Anderson mixing (module fixed_point), which the plain iteration of
-!> eq. (19) needs where the deflection is large: on a thin clamped plate
-!> (w/h up to 4) it took 5 to 18 solutions in a step, more on finer meshes
-!> (docs/PERFORMANCE.md, "Large deflections").
-!>
-!> Why the probe keeps D^1: the average acceleration rule turns any change
-!> of the step's error from one step to the next into a velocity error
-!> that it never damps (V_t+dt = 2/dt (D_t+dt - D_t) - V_t), which the next
-!> predictor carries. A run that takes one solution in most steps and two
-!> in some has such jumps; one that always takes the first has an error
-!> that changes smoothly. On the paper's scene (input/clamped.nml, probes
-!> every 8 steps) keeping the probe's D^2 took 1.27 solutions per step and
-!> ended 9e-5 away from the paper's scheme in the peak force; keeping D^1
-!> takes 1.11 and ends 2e-7 away.
+!> (solve_contact_equation), again with the pattern of its root until it
+!> stops moving; eq. (17) then holds exactly. One solve per step, accepted
+!> by eq. (18) with the contraction measured by probes: above
+!> first_contraction. More: docs/PERFORMANCE.md.
 module fast_scheme
    use kinds, only: dp
    use plate_model, only: model_t
@@ -66,7 +24,7 @@ module fast_scheme
    use fixed_point, only: fp_start
    implicit none
    private
-   public :: fast_step, predicted_displacements
+   public :: fast_step
 
    !> Steps between two measurements of the contraction theta (module
    !> header): a measurement costs one more solution, so 1/measure_every
@@ -149,7 +107,7 @@ contains
          end do contact_passes
          call contact_area(model, hist, f, cit%pattern)
          call add_pattern_response(solver, cit%pattern, f, rhs)
-         ! -- eq. (18), also on the estimated next change (module header)
+         ! -- eq. (18), also on the estimated next change (above first_contraction)
          call iteration_end(solver, model, plate%d, rhs, d, converged, done, stat, errmsg)
          if (solver%iterations == 1) then
             d_first = rhs;  f_first = f;  alpha_first = alpha
@@ -167,7 +125,39 @@ contains
       cit%iterations = 1;  cit%solved = converged;  cit%converged = converged
    end subroutine fast_step
 
-   !> theta^2 for the rate test of a step's first solution (module header):
+   !> One solve per step (the nonlinear theory). The first iterate is
+   !> extrapolated, D^0 = D_t + dt V_t (predicted_displacements), and the
+   !> first solution D^1 is the step's answer when the iteration's error is
+   !> below the tolerance. Eq. (18) compares two successive iterates, so taken
+   !> literally it needs a second solution to accept the first; but the change
+   !> the next iteration would make is the contraction theta of the iteration
+   !> times this one's, |D^2 - D^1| ~ theta |D^1 - D^0|, and theta changes
+   !> slowly from step to step (it grows with the deflection). So D^1 is
+   !> accepted when eq. (18) holds for that estimate,
+   !>
+   !>   theta^2 sum (D^1 - D^0)^2 < C_r2 sum (D^1 - D_t)^2,
+   !>
+   !> theta^2 = ratio(2)/ratio(1), the larger of the last two measured (the
+   !> stopping test of the simplified Newton iteration of implicit Runge-Kutta
+   !> codes, with the rate of earlier steps: Hairer and Wanner, Solving ODEs
+   !> II, section IV.8). theta is measured by a probe, in the first steps and
+   !> every measure_every steps: the second solution is made, and when it
+   !> meets eq. (18) (|D^2 - D^1| small) it has only measured the first, which
+   !> stays the step's answer. A step whose estimate fails, or whose probe
+   !> does not meet eq. (18), iterates on with the paper's test and takes the
+   !> converged iterate; from the fifth iterate on the iterates are combined
+   !> by Anderson mixing (module fixed_point), which the plain iteration of
+   !> eq. (19) needs where the deflection is large (docs/PERFORMANCE.md,
+   !> "Large deflections").
+   !>
+   !> Why the probe keeps D^1: the average acceleration rule turns any change
+   !> of the step's error from one step to the next into a velocity error
+   !> that it never damps (V_t+dt = 2/dt (D_t+dt - D_t) - V_t), which the next
+   !> predictor carries. A run that takes one solution in most steps and two
+   !> in some has such jumps; one that always takes the first has an error
+   !> that changes smoothly, and takes fewer solutions.
+   !>
+   !> theta^2 for the rate test of a step's first solution (as above):
    !> the larger of the last two measured, or 1 (the paper's eq. 18: go on
    !> and measure theta) in the first steps, every measure_every steps, or
    !> when a measurement is missing.

@@ -1,59 +1,9 @@
 !> The guard of Akay's nonlinear iteration (eq. 19, stopped by eq. 18) and
-!> its fall-back.
-!>
-!> Eq. (19) is a fixed-point iteration D^{n+1} = G(D^n): the nonlinear
-!> stiffness is moved to the right-hand side so that the left-hand matrix
-!> K_L + 4/dt^2 M never changes. It converges when the nonlinear (membrane)
-!> stiffness is small against K_L + 4/dt^2 M; with large deflections, thin
-!> plates or long time steps the iteration matrix -(K_L + 4/dt^2 M)^-1 K_N'
-!> has eigenvalues beyond -1 and the plain iteration oscillates with a
-!> growing amplitude (docs/STABILITY.md). The guard watches the residual
-!> R = G(D) - D of every iteration and stops the plain iteration when
-!>  - a residual is not finite (NaN or Inf),
-!>  - the residual grew in growth_limit iterations in a row (divergence), or
-!>  - the residual fell by less than a factor progress_factor over the last
-!>    stagnation_window iterations (stagnation).
-!> It then falls back to Anderson mixing (Walker & Ni, SIAM J. Numer. Anal.
-!> 49, 2011): the next iterate combines the last anderson_depth iterates so
-!> as to minimise the linearised residual, a quasi-Newton step that needs no
-!> new factorisation and converges where the plain iteration diverges
-!> (for a linear problem it is GMRES). Mixing restarts from the iterate with
-!> the smallest residual so far. If mixing too diverges, stagnates or runs
-!> out of iterations, the guard says so (state) and the caller stops the run
-!> with a diagnostic: never a silent wrong answer.
-!>
-!> With guard%accelerate (scheme 'fast', src/scheme/fast_scheme.f90) the
-!> mixing is not a fall-back but the iteration itself from its fifth
-!> iterate on: the first four are plain (most steps need no more, and
-!> they measure the plain map's contraction for the rate test below),
-!> every later one combines the iterates so far (Anderson acceleration).
-!> Where the deflection is large the plain map contracts slowly, and more
-!> slowly on finer meshes; accelerated, its iterations stay few
-!> (docs/PERFORMANCE.md, "Large deflections"). The mixing's own tests
-!> apply from the start; when they fail there is nothing further to fall
-!> back to, and the caller's sub-steps take over (src/scheme/substeps.f90).
-!>
-!> Convergence is eq. (18) on the residual of the map,
-!>   sum (G(D) - D)^2 <= C_r2 sum (G(D) - D_t)^2,
-!> which is the paper's test for the plain iteration (there D^{n+1} = G(D^n)),
-!> or the residual at the rounding level of D (round_floor), below which no
-!> iteration can go. With guard%rate_test (scheme 'fast', src/scheme/fast_scheme.f90)
-!> G(D) is also accepted when eq. (18) holds for the change the next
-!> iteration would make, estimated with the contraction theta of the map:
-!>   theta^2 sum (G(D) - D)^2 <= C_r2 sum (G(D) - D_t)^2,
-!> theta^2 = guard%theta2_first (given by the caller) for the first
-!> iteration; from the third on the iteration's own, the larger of the last
-!> two quotients ratio(n)/ratio(n-1) (the contraction is not the same from
-!> one iteration to the next: the first removes the predictor's fast modes,
-!> and the ratios may alternate between a large and a small fall, so one
-!> quotient alone can promise far more than the next iteration gives); never
-!> for the second (its quotient is the first's: the paper's test decides);
-!> accelerated, from the fifth on the fourth's (the test bounds the error
-!> of G(D) by theta/(1 - theta) |G(D) - D|, theta the contraction of the
-!> map however D was found, and the falls of the mixed iterates are not
-!> the map's); never after the fall-back; and only while the ratio itself
-!> is below rate_test_max_ratio.
-!>
+!> its fall-back: a residual that is not finite, grows or stagnates ends the
+!> plain iteration, and Anderson mixing takes over (above fp_guard_t); with
+!> guard%accelerate it is the iteration itself from the fifth iterate (above
+!> fp_next); convergence is eq. (18) on the map's residual, or its estimate
+!> with the contraction (above fp_check). Never a silent wrong answer.
 !> Usage, once per plate solution:
 !>     call fp_start(guard, n, max_iter, cr2)
 !>     do
@@ -62,6 +12,7 @@
 !>        if (guard%state /= fp_iterating) exit      ! converged or failed
 !>        call fp_next(guard, d, g, stat, errmsg)    ! d <- next iterate
 !>     end do
+!> More: docs/STABILITY.md.
 module fixed_point
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: dp, msg_len
@@ -97,7 +48,7 @@ module fixed_point
    !> Previous iterates combined by Anderson mixing.
    integer, parameter :: anderson_depth = 5
    !> Accelerated, the last plain iteration: the mixing makes the next
-   !> iterate (module header).
+   !> iterate (above fp_next).
    integer, parameter :: first_mixed = 4
    !> Relative size below which the least-squares problem of the mixing is
    !> treated as rank deficient (dgelsy's rcond).
@@ -108,6 +59,27 @@ module fixed_point
    !> is over a third of the step's is not trusted to the estimate.
    real(dp), parameter :: rate_test_max_ratio = 0.1_dp
 
+   !> Eq. (19) is a fixed-point iteration D^{n+1} = G(D^n): the nonlinear
+   !> stiffness is moved to the right-hand side so that the left-hand matrix
+   !> K_L + 4/dt^2 M never changes. It converges when the nonlinear (membrane)
+   !> stiffness is small against K_L + 4/dt^2 M; with large deflections, thin
+   !> plates or long time steps the iteration matrix -(K_L + 4/dt^2 M)^-1 K_N'
+   !> has eigenvalues beyond -1 and the plain iteration oscillates with a
+   !> growing amplitude (docs/STABILITY.md). The guard watches the residual
+   !> R = G(D) - D of every iteration and stops the plain iteration when
+   !>  - a residual is not finite (NaN or Inf),
+   !>  - the residual grew in growth_limit iterations in a row (divergence), or
+   !>  - the residual fell by less than a factor progress_factor over the last
+   !>    stagnation_window iterations (stagnation).
+   !> It then falls back to Anderson mixing (Walker & Ni, SIAM J. Numer. Anal.
+   !> 49, 2011): the next iterate combines the last anderson_depth iterates so
+   !> as to minimise the linearised residual, a quasi-Newton step that needs no
+   !> new factorisation and converges where the plain iteration diverges
+   !> (for a linear problem it is GMRES). Mixing restarts from the iterate with
+   !> the smallest residual so far. If mixing too diverges, stagnates or runs
+   !> out of iterations, the guard says so (state) and the caller stops the run
+   !> with a diagnostic: never a silent wrong answer.
+   !>
    !> The state of one fixed-point iteration and its history.
    type :: fp_guard_t
       integer :: state = fp_iterating     !< fp_iterating, fp_converged or why it stopped
@@ -115,7 +87,7 @@ module fixed_point
       integer :: max_iter = 0             !< limit of the iterations
       real(dp) :: cr2 = 0.0_dp            !< tolerance of eq. (18)
       real(dp) :: ratio = huge(1.0_dp)    !< last eq. (18) ratio sum R^2 / sum (G - D_t)^2
-      logical :: rate_test = .false.      !< also accept on the estimated next change (module header)
+      logical :: rate_test = .false.      !< also accept on the estimated next change (above fp_check)
       logical :: accelerate = .false.     !< Anderson mixing from the fifth iterate on, not only as a fall-back
       real(dp) :: theta2_first = 1.0_dp   !< theta^2 of the rate test's first iteration
       real(dp) :: ratios_before(2) = huge(1.0_dp)  !< the eq. (18) ratios of the two iterations before the last
@@ -194,6 +166,27 @@ contains
          guard%dg(n, anderson_depth), guard%f_last(n), guard%g_last(n))
    end subroutine fp_start
 
+   !> Convergence is eq. (18) on the residual of the map,
+   !>   sum (G(D) - D)^2 <= C_r2 sum (G(D) - D_t)^2,
+   !> which is the paper's test for the plain iteration (there D^{n+1} = G(D^n)),
+   !> or the residual at the rounding level of D (round_floor), below which no
+   !> iteration can go. With guard%rate_test (scheme 'fast', src/scheme/fast_scheme.f90)
+   !> G(D) is also accepted when eq. (18) holds for the change the next
+   !> iteration would make, estimated with the contraction theta of the map:
+   !>   theta^2 sum (G(D) - D)^2 <= C_r2 sum (G(D) - D_t)^2,
+   !> theta^2 = guard%theta2_first (given by the caller) for the first
+   !> iteration; from the third on the iteration's own, the larger of the last
+   !> two quotients ratio(n)/ratio(n-1) (the contraction is not the same from
+   !> one iteration to the next: the first removes the predictor's fast modes,
+   !> and the ratios may alternate between a large and a small fall, so one
+   !> quotient alone can promise far more than the next iteration gives); never
+   !> for the second (its quotient is the first's: the paper's test decides);
+   !> accelerated, from the fifth on the fourth's (the test bounds the error
+   !> of G(D) by theta/(1 - theta) |G(D) - D|, theta the contraction of the
+   !> map however D was found, and the falls of the mixed iterates are not
+   !> the map's); never after the fall-back; and only while the ratio itself
+   !> is below rate_test_max_ratio.
+   !>
    !> Records the iteration D -> G(D): eq. (18), and the divergence and
    !> stagnation tests. Leaves state = fp_converged, fp_iterating (go on;
    !> the fall-back may just have been engaged), or the reason to stop.
@@ -289,6 +282,17 @@ contains
       if (it >= guard%max_iter) guard%state = fp_limit
    end subroutine fp_check
 
+   !> With guard%accelerate (scheme 'fast', src/scheme/fast_scheme.f90) the
+   !> mixing is not a fall-back but the iteration itself from its fifth
+   !> iterate on: the first four are plain (most steps need no more, and
+   !> they measure the plain map's contraction for the rate test below),
+   !> every later one combines the iterates so far (Anderson acceleration).
+   !> Where the deflection is large the plain map contracts slowly, and more
+   !> slowly on finer meshes; accelerated, its iterations stay few
+   !> (docs/PERFORMANCE.md, "Large deflections"). The mixing's own tests
+   !> apply from the start; when they fail there is nothing further to fall
+   !> back to, and the caller's sub-steps take over (src/scheme/substeps.f90).
+   !>
    !> The next iterate: G(D) for the plain iteration of eq. (19); after the
    !> fall-back, Anderson mixing of the last iterates (the first mixing
    !> iterate is the best iterate so far); accelerated, plain up to the

@@ -9,7 +9,6 @@
 !>   {V}_{t+dt} = {V}_t + dt/2 ({A}_t + {A}_{t+dt})
 !> The rule is unconditionally stable and has no amplitude decay for a
 !> linear system; its period elongation is (omega dt)^2/12 to leading order.
-!>
 !> Impactor (w positive the way it moves, m w'' + F = 0, eq. 16):
 !>   w''_{t,t+dt} = -(F_t + F_{t+dt})/(2 m)                               eq. (21)
 !>   w_{t+dt} = w_t + w'_t dt + w''_{t,t+dt} dt^2/2

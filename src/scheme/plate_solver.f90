@@ -1,9 +1,7 @@
 !> The plate solution of a time step (Fig. 3, "nonlinear plate solution"):
 !> Akay's constant-coefficient iteration of eq. (19), stopped by eq. (18),
 !> on the left-hand matrix K_L + 4/dt^2 M that is factored once per run (and
-!> again only around a step of scheme 'fast' taken in sub-steps,
-!> src/scheme/substeps.f90).
-!>
+!> again only around a step taken in sub-steps, src/scheme/substeps.f90).
 !>   (K_L + 4/dt^2 M) D^{n+1} = F + M b - K_N(D^n) D^n        eq. (19)
 !>   sum (D^{n+1} - D^n)^2 / sum (D^{n+1} - D_t)^2 < C_r2      eq. (18)
 !>

@@ -1,35 +1,9 @@
-!> scheme = 'fast': a time step whose iteration does not converge is taken
-!> again in sub-steps before the run gives up (issue 22, "no needless stop").
-!> The paper's scheme ('paper') has none: it is kept as published.
-!>
-!> A step of the run's dt whose eq. (19) iteration (with the contact
-!> equation, src/scheme/fast_scheme.f90) ends without meeting eq. (18),
-!> even with its fall-back, is taken again from the state at t in 2^k
-!> sub-steps of dt/2^k, k = 1, 2, ..., max_halvings, until every sub-step
-!> converges. A shorter step makes the iteration contract faster: its map
-!> D -> (K_L + 4/dt^2 M)^-1 (F + M b - K_N(D) D) has the nonlinear term
-!> against a left-hand matrix whose mass part grows as 1/dt^2, and the
-!> step's change, the iteration's start, shrinks. For each k the left-hand
-!> matrix K_L + 4/dt_sub^2 M is factored anew (module plate_solver,
-!> solver_refactor: the old factor released first, never two at once), and
-!> after the sub-steps the run's K_L + 4/dt^2 M is factored again, with the
-!> same bits as at the set-up. Each sub-step is a fast_step with its own
-!> M {b}; between sub-steps the plate is updated by Newmark's rule of the
-!> sub-step (eq. 20) and the contact history committed, as the time loop
-!> does between steps (src/impact.f90).
-!>
-!> Only the whole step is recorded: the caller accepts the last sub-step
-!> as it accepts a step, with the Newmark constants of that sub-step
-!> (step_nm), so the step's history row is at t + dt and the plate's
-!> velocities and accelerations are the sub-steps' own. The scheme's
-!> contraction estimate is measured afresh in the sub-steps, and again on
-!> the run's step after them (the steps that follow probe until they have
-!> two measurements: the estimate of the steps before a step that did not
-!> converge is no longer the iteration's). The solver's response columns
-!> of the run's matrix are kept aside during the sub-steps and put back
-!> after (the sub-steps' own are dropped), so the steps that follow use the
-!> same columns as before. solver%substeps tells the recorder how many
-!> sub-steps the step took (src/results/run_recorder.f90, substepped_steps).
+!> scheme = 'fast': a time step whose eq. (19) iteration does not meet
+!> eq. (18), even with its fall-back, is taken again from the state at t in
+!> 2^k sub-steps of dt/2^k, k = 1 .. max_halvings, before the run gives up
+!> (above take_substeps); only the whole step is recorded (above
+!> fast_step_or_substeps). The paper's scheme ('paper') has none: it is
+!> kept as published. More: docs/STABILITY.md.
 module substeps
    use kinds, only: dp
    use number_text, only: int_str
@@ -42,7 +16,7 @@ module substeps
    use fixed_point, only: fp_report
    implicit none
    private
-   public :: fast_step_or_substeps, max_halvings
+   public :: fast_step_or_substeps
 
    !> The most halvings of a step that did not converge: sub-steps down to
    !> dt/2^max_halvings (2 + 4 + 8 + 16 = 30 sub-steps and 5 factorizations
@@ -57,6 +31,19 @@ module substeps
 
 contains
 
+   !> Only the whole step is recorded: the caller accepts the last sub-step
+   !> as it accepts a step, with the Newmark constants of that sub-step
+   !> (step_nm), so the step's history row is at t + dt and the plate's
+   !> velocities and accelerations are the sub-steps' own. The scheme's
+   !> contraction estimate is measured afresh in the sub-steps, and again on
+   !> the run's step after them (the steps that follow probe until they have
+   !> two measurements: the estimate of the steps before a step that did not
+   !> converge is no longer the iteration's). The solver's response columns
+   !> of the run's matrix are kept aside during the sub-steps and put back
+   !> after (the sub-steps' own are dropped), so the steps that follow use the
+   !> same columns as before. solver%substeps tells the recorder how many
+   !> sub-steps the step took (src/results/run_recorder.f90, substepped_steps).
+   !>
    !> One time step of scheme 'fast' (module fast_scheme), taken again in
    !> sub-steps when its iteration does not converge (module header). On
    !> exit, when the step was sub-stepped, plate, imp and hist are the state
@@ -124,6 +111,22 @@ contains
          // 'the time step (&analysis dt) is far too long for the scene, or the scene beyond the model'
    end subroutine fast_step_or_substeps
 
+   !> A step of the run's dt whose eq. (19) iteration (with the contact
+   !> equation, src/scheme/fast_scheme.f90) ends without meeting eq. (18),
+   !> even with its fall-back, is taken again from the state at t in 2^k
+   !> sub-steps of dt/2^k, k = 1, 2, ..., max_halvings, until every sub-step
+   !> converges. A shorter step makes the iteration contract faster: its map
+   !> D -> (K_L + 4/dt^2 M)^-1 (F + M b - K_N(D) D) has the nonlinear term
+   !> against a left-hand matrix whose mass part grows as 1/dt^2, and the
+   !> step's change, the iteration's start, shrinks. For each k the left-hand
+   !> matrix K_L + 4/dt_sub^2 M is factored anew (module plate_solver,
+   !> solver_refactor: the old factor released first, never two at once), and
+   !> after the sub-steps the run's K_L + 4/dt^2 M is factored again, with the
+   !> same bits as at the set-up. Each sub-step is a fast_step with its own
+   !> M {b}; between sub-steps the plate is updated by Newmark's rule of the
+   !> sub-step (eq. 20) and the contact history committed, as the time loop
+   !> does between steps (src/impact.f90).
+   !>
    !> n sub-steps of scheme 'fast' with the constants sub_nm, from plate,
    !> imp and hist: each sub-step but the last accepted as the time loop
    !> accepts a step (Newmark's update, eq. 20; the impactor; the contact

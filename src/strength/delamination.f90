@@ -18,7 +18,7 @@ module delamination
    implicit none
    private
    public :: effective_stiffness, threshold_load, impact_regime, choi_chang_index, interface_indices
-   public :: dynamic_factor, small_mass_ratio, large_mass_ratio, choi_chang_da
+   public :: dynamic_factor
    public :: delamination_t, delamination_open, delamination_force, delamination_point, write_delamination_scene
 
    !> Small-mass dynamic threshold over the static one (-).

@@ -1,50 +1,13 @@
 !> Failure criteria of a unidirectional ply: the failure index of one
-!> stress state in the ply's material axes, and the mode it names.
-!>
-!> Stresses in the material axes (1 along the fibres, 2 across them in the
-!> ply's plane, 3 through the thickness), in the paper's order of eq. (3):
-!>     sigma = (sigma_11, sigma_22, tau_12, tau_23, tau_13)   (1, 2, 6, 4, 5)
-!> sigma_33 = 0, the plate theory's (eq. 3 has no normal stress through the
-!> thickness; under the impactor the contact pressure is not in it).
-!>
-!> Strengths (Pa, all positive): Xt, Xc along the fibres in tension and
-!> compression, Yt, Yc across them, S12 the in-plane (axial) shear strength,
-!> which also holds tau_13 (a transversely isotropic ply: S13 = S12), S23 the
-!> transverse shear strength.
-!>
-!> The failure index is 1 at failure, below 1 safe:
-!>  - 'hashin', Z. Hashin, "Failure criteria for unidirectional fiber
-!>    composites", J. Appl. Mech. 47 (1980) 329-334, eq. (23)-(26) with
-!>    sigma_33 = 0 (S_A = S12, S_T = S23):
-!>      fibre tension (sigma_11 >= 0)  (s11/Xt)^2 + (t12^2 + t13^2)/S12^2
-!>      fibre compression (s11 < 0)    (s11/Xc)^2
-!>      matrix tension (s22 >= 0)      (s22/Yt)^2 + t23^2/S23^2 + (t12^2 + t13^2)/S12^2
-!>      matrix compression (s22 < 0)   (s22/(2 S23))^2 + ((Yc/(2 S23))^2 - 1) s22/Yc
-!>                                     + t23^2/S23^2 + (t12^2 + t13^2)/S12^2
-!>    the index is the larger of the fibre mode and the matrix mode the
-!>    signs select; it is quadratic in the stresses (its square root is
-!>    about the stress ratio).
-!>  - 'max_stress', the maximum stress criterion (R. M. Jones, Mechanics of
-!>    Composite Materials, 1975, ch. 2, the paper's reference 17): the largest of
-!>    s11/Xt or -s11/Xc, s22/Yt or -s22/Yc, |t12|/S12, |t13|/S12, |t23|/S23;
-!>    linear in the stresses.
-!>  - 'tsai_wu', S. W. Tsai and E. M. Wu, "A general theory of strength for
-!>    anisotropic materials", J. Compos. Mater. 5 (1971) 58-80: with
-!>      F1 = 1/Xt - 1/Xc, F11 = 1/(Xt Xc), F2 = 1/Yt - 1/Yc, F22 = 1/(Yt Yc),
-!>      F66 = F55 = 1/S12^2, F44 = 1/S23^2, F12 = -sqrt(F11 F22)/2
-!>    (the interaction term of Tsai & Hahn, Introduction to Composite
-!>    Materials, 1980), the quadratic part a = F11 s11^2 + F22 s22^2 +
-!>    2 F12 s11 s22 + F66 t12^2 + F44 t23^2 + F55 t13^2 and the linear part
-!>    b = F1 s11 + F2 s22 fail at a + b = 1. The index is the inverse of the
-!>    strength ratio R (the factor on the stresses that reaches failure,
-!>    a R^2 + b R = 1): 1/R = (b + sqrt(b^2 + 4 a))/2, linear in the
-!>    stresses and 1 exactly when a + b = 1. The criterion names no mode;
-!>    the mode given is the one of the largest stress ratio (max_stress).
-!>
+!> stress state in the ply's material axes (1 at failure, below 1 safe),
+!> and the mode it names. Not from the paper, which stops at the ply
+!> stresses of eq. (3); the criteria: Hashin (1980), maximum stress (Jones
+!> 1975, the paper's reference 17), Tsai-Wu (1971), written out above
+!> failure_index; the stresses and strengths: above strength_t.
 !> Modes: mode_none (no stress), mode_fibre_tension, mode_fibre_compression,
 !> mode_matrix_tension, mode_matrix_compression, mode_shear_12 (tau_12 or
 !> tau_13 against S12), mode_shear_23 (tau_23 against S23); mode_names
-!> gives their words.
+!> gives their words. More: docs/STRENGTH.md.
 module failure_criteria
    use kinds, only: dp
    implicit none
@@ -52,8 +15,19 @@ module failure_criteria
    public :: strength_t, criterion_hashin, criterion_max_stress, criterion_tsai_wu, criterion_code
    public :: mode_none, mode_fibre_tension, mode_fibre_compression, mode_matrix_tension, &
              mode_matrix_compression, mode_shear_12, mode_shear_23, nmode, mode_names
-   public :: failure_index, failure_indices, hashin_index, max_stress_index, tsai_wu_index
+   public :: failure_index, failure_indices
 
+   !> Stresses in the material axes (1 along the fibres, 2 across them in the
+   !> ply's plane, 3 through the thickness), in the paper's order of eq. (3):
+   !>     sigma = (sigma_11, sigma_22, tau_12, tau_23, tau_13)   (1, 2, 6, 4, 5)
+   !> sigma_33 = 0, the plate theory's (eq. 3 has no normal stress through the
+   !> thickness; under the impactor the contact pressure is not in it).
+   !>
+   !> Strengths (Pa, all positive): Xt, Xc along the fibres in tension and
+   !> compression, Yt, Yc across them, S12 the in-plane (axial) shear strength,
+   !> which also holds tau_13 (a transversely isotropic ply: S13 = S12), S23 the
+   !> transverse shear strength.
+   !>
    !> Ply strengths (Pa), all positive.
    type :: strength_t
       real(dp) :: xt = 0.0_dp    !< tensile strength along the fibres
@@ -66,7 +40,7 @@ module failure_criteria
 
    !> The criteria.
    integer, parameter :: criterion_hashin = 1, criterion_max_stress = 2, criterion_tsai_wu = 3
-   !> The modes (module header).
+   !> The modes (above).
    integer, parameter :: mode_none = 0, mode_fibre_tension = 1, mode_fibre_compression = 2, &
       mode_matrix_tension = 3, mode_matrix_compression = 4, mode_shear_12 = 5, mode_shear_23 = 6, nmode = 6
    character(len=18), parameter :: mode_names(0:nmode) = [character(len=18) :: 'none', 'fibre_tension', &
@@ -86,6 +60,35 @@ contains
       end select
    end function criterion_code
 
+   !> The failure index is 1 at failure, below 1 safe:
+   !>  - 'hashin', Z. Hashin, "Failure criteria for unidirectional fiber
+   !>    composites", J. Appl. Mech. 47 (1980) 329-334, eq. (23)-(26) with
+   !>    sigma_33 = 0 (S_A = S12, S_T = S23):
+   !>      fibre tension (sigma_11 >= 0)  (s11/Xt)^2 + (t12^2 + t13^2)/S12^2
+   !>      fibre compression (s11 < 0)    (s11/Xc)^2
+   !>      matrix tension (s22 >= 0)      (s22/Yt)^2 + t23^2/S23^2 + (t12^2 + t13^2)/S12^2
+   !>      matrix compression (s22 < 0)   (s22/(2 S23))^2 + ((Yc/(2 S23))^2 - 1) s22/Yc
+   !>                                     + t23^2/S23^2 + (t12^2 + t13^2)/S12^2
+   !>    the index is the larger of the fibre mode and the matrix mode the
+   !>    signs select; it is quadratic in the stresses (its square root is
+   !>    about the stress ratio).
+   !>  - 'max_stress', the maximum stress criterion (R. M. Jones, Mechanics of
+   !>    Composite Materials, 1975, ch. 2, the paper's reference 17): the largest of
+   !>    s11/Xt or -s11/Xc, s22/Yt or -s22/Yc, |t12|/S12, |t13|/S12, |t23|/S23;
+   !>    linear in the stresses.
+   !>  - 'tsai_wu', S. W. Tsai and E. M. Wu, "A general theory of strength for
+   !>    anisotropic materials", J. Compos. Mater. 5 (1971) 58-80: with
+   !>      F1 = 1/Xt - 1/Xc, F11 = 1/(Xt Xc), F2 = 1/Yt - 1/Yc, F22 = 1/(Yt Yc),
+   !>      F66 = F55 = 1/S12^2, F44 = 1/S23^2, F12 = -sqrt(F11 F22)/2
+   !>    (the interaction term of Tsai & Hahn, Introduction to Composite
+   !>    Materials, 1980), the quadratic part a = F11 s11^2 + F22 s22^2 +
+   !>    2 F12 s11 s22 + F66 t12^2 + F44 t23^2 + F55 t13^2 and the linear part
+   !>    b = F1 s11 + F2 s22 fail at a + b = 1. The index is the inverse of the
+   !>    strength ratio R (the factor on the stresses that reaches failure,
+   !>    a R^2 + b R = 1): 1/R = (b + sqrt(b^2 + 4 a))/2, linear in the
+   !>    stresses and 1 exactly when a + b = 1. The criterion names no mode;
+   !>    the mode given is the one of the largest stress ratio (max_stress).
+   !>
    !> The failure index and mode of the stress state sigma under criterion.
    pure subroutine failure_index(str, criterion, sigma, fi, mode)
       type(strength_t), intent(in) :: str     !< ply strengths (Pa)
@@ -130,7 +133,7 @@ contains
       end select
    end subroutine failure_indices
 
-   !> Hashin (1980), eq. (23)-(26) with sigma_33 = 0 (module header).
+   !> Hashin (1980), eq. (23)-(26) with sigma_33 = 0 (above failure_index).
    pure subroutine hashin_index(str, sigma, fi, mode)
       type(strength_t), intent(in) :: str     !< ply strengths (Pa)
       real(dp), intent(in) :: sigma(5)        !< (s11, s22, t12, t23, t13) (Pa)
@@ -179,7 +182,7 @@ contains
       if (all(sigma == 0.0_dp)) mode = mode_none
    end subroutine hashin_scaled
 
-   !> The maximum stress criterion (module header).
+   !> The maximum stress criterion (above failure_index).
    pure subroutine max_stress_index(str, sigma, fi, mode)
       type(strength_t), intent(in) :: str     !< ply strengths (Pa)
       real(dp), intent(in) :: sigma(5)        !< (s11, s22, t12, t23, t13) (Pa)
@@ -206,7 +209,7 @@ contains
       if (fi == 0.0_dp) mode = mode_none
    end subroutine max_stress_index
 
-   !> Tsai-Wu (1971) as the inverse strength ratio (module header).
+   !> Tsai-Wu (1971) as the inverse strength ratio (above failure_index).
    pure subroutine tsai_wu_index(str, sigma, fi, mode)
       type(strength_t), intent(in) :: str     !< ply strengths (Pa)
       real(dp), intent(in) :: sigma(5)        !< (s11, s22, t12, t23, t13) (Pa)

@@ -1,47 +1,16 @@
 !> Ply stresses through the thickness of the laminate, at a point of the
 !> plate, in every ply's material axes, on both faces of every ply.
-!>
-!> In-plane (eq. 2, 3): the laminate strains at the point, membrane eps0
-!> (with the von Karman terms in the nonlinear theory) and curvatures kappa,
-!> give eps = eps0 + z kappa and in ply k the stress {sigma_x, sigma_y,
-!> tau_xy} = [Qbar]_k (eps0 + z kappa) of eq. (3), rotated into the ply's
-!> axes (Jones 1975, the paper's reference 17, ch. 2):
-!>     s11 = c^2 sx + s^2 sy + 2 c s txy,   s22 = s^2 sx + c^2 sy - 2 c s txy,
-!>     t12 = -c s sx + c s sy + (c^2 - s^2) txy,      c, s = cos, sin theta.
-!>
-!> Transverse shear from equilibrium: eq. (3)'s own shear stresses
-!> Qbar_44,55 (eps4, eps5) are constant in each ply and do not vanish on the
-!> faces; the stresses that do are those of the first two equations of
-!> eq. (7) (in-plane inertia aside), integrated from the impacted face
-!> z = -h/2, where the contact is frictionless:
-!>     tau_xz(z) = -int_{-h/2}^{z} (sigma_x,x + tau_xy,y) dzeta
-!>               = -[G_1j(z) eps0_j,x + H_1j(z) kappa_j,x + G_3j(z) eps0_j,y + H_3j(z) kappa_j,y],
-!>     tau_yz(z) = -[G_3j(z) eps0_j,x + H_3j(z) kappa_j,x + G_2j(z) eps0_j,y + H_2j(z) kappa_j,y],
-!> with G(z) = int_{-h/2}^{z} Qbar dzeta and H(z) = int_{-h/2}^{z} Qbar zeta
-!> dzeta, the integrals of eq. (6) (G(h/2) = A, H(h/2) = B) taken up to z:
-!> the same integration of Qbar that Whitney's shear correction does
-!> (src/model/shear_correction.f90) in cylindrical bending, here with every
-!> gradient of the laminate strains. At z = +h/2 the integral leaves
-!> -(N_x,x + N_xy,y), the membrane force the in-plane inertia P u'' carries
-!> (and the rounding of the discrete equilibrium); the density is the same
-!> in every ply, so that force is spread through the thickness as
-!> (z + h/2)/h and subtracted: both faces are then free of shear. The
-!> gradients eps0_j,x, kappa_j,y, ... come from the second derivatives of
-!> the element's shape functions (element_second_derivatives); in the
-!> nonlinear theory eps0 holds the von Karman terms and so do its
-!> gradients ((w,x^2/2),x = w,x w,xx, ...). The shear stresses are then
-!> rotated: t13 = c t_xz + s t_yz, t23 = -s t_xz + c t_yz.
-!>
-!> Plies: listed from z = -h/2 (the impacted face) to +h/2, each h/n thick
-!> (src/model/materials.f90); face 1 of ply k is its bottom z_{k-1}, face 2 its
-!> top z_k. Stresses come as (s11, s22, t12, t23, t13), the order of
-!> src/strength/failure_criteria.f90.
-!>
-!> The strain state at a point is the 18 numbers
-!>     e = (eps0(3), kappa(3), eps0_,x(3), kappa_,x(3), eps0_,y(3), kappa_,y(3)),
-!> (1, 2, 6 order each, eps0 with the von Karman terms when nonlinear), and
-!> every stress is linear in it: ply_stack_init tabulates the coefficients
-!> once per laminate, ply_stresses applies them.
+!> In-plane (eq. 2, 3): {sigma_x, sigma_y, tau_xy} = [Qbar]_k (eps0 + z kappa)
+!> in ply k, rotated into the ply's axes (Jones 1975, ch. 2). Transverse
+!> shear from equilibrium, the first two equations of eq. (7) integrated
+!> from the impacted face, so that both faces are free of shear (above
+!> ply_stack_init). Plies from z = -h/2 (the impacted face) to +h/2, each
+!> h/n thick; face 1 of ply k is its bottom, face 2 its top. Stresses come
+!> as (s11, s22, t12, t23, t13), the order of failure_criteria.
+!> The strain state at a point is 18 numbers, (eps0, kappa, eps0_,x,
+!> kappa_,x, eps0_,y, kappa_,y), and every stress is linear in it:
+!> ply_stack_init tabulates the coefficients once per laminate,
+!> ply_stresses applies them. More: docs/STRENGTH.md.
 module ply_stress
    use kinds, only: dp, pi
    use materials, only: lamina_t, lamina_qbar
@@ -57,7 +26,7 @@ module ply_stress
    !> Gauss points of an element (3 x 3, those of the membrane and bending terms).
    integer, parameter :: ngp = 9
 
-   !> The laminate's through-thickness tables (module header). Plies of the
+   !> The laminate's through-thickness tables (above ply_stack_init). Plies of the
    !> same angle share their stiffness: the products with the strain state
    !> are formed once per angle.
    type :: ply_stack_t
@@ -74,8 +43,31 @@ module ply_stress
 
 contains
 
+   !> Transverse shear from equilibrium: eq. (3)'s own shear stresses
+   !> Qbar_44,55 (eps4, eps5) are constant in each ply and do not vanish on the
+   !> faces; the stresses that do are those of the first two equations of
+   !> eq. (7) (in-plane inertia aside), integrated from the impacted face
+   !> z = -h/2, where the contact is frictionless:
+   !>     tau_xz(z) = -int_{-h/2}^{z} (sigma_x,x + tau_xy,y) dzeta
+   !>               = -[G_1j(z) eps0_j,x + H_1j(z) kappa_j,x + G_3j(z) eps0_j,y + H_3j(z) kappa_j,y],
+   !>     tau_yz(z) = -[G_3j(z) eps0_j,x + H_3j(z) kappa_j,x + G_2j(z) eps0_j,y + H_2j(z) kappa_j,y],
+   !> with G(z) = int_{-h/2}^{z} Qbar dzeta and H(z) = int_{-h/2}^{z} Qbar zeta
+   !> dzeta, the integrals of eq. (6) (G(h/2) = A, H(h/2) = B) taken up to z:
+   !> the same integration of Qbar that Whitney's shear correction does
+   !> (src/model/shear_correction.f90) in cylindrical bending, here with every
+   !> gradient of the laminate strains. At z = +h/2 the integral leaves
+   !> -(N_x,x + N_xy,y), the membrane force the in-plane inertia P u'' carries
+   !> (and the rounding of the discrete equilibrium); the density is the same
+   !> in every ply, so that force is spread through the thickness as
+   !> (z + h/2)/h and subtracted: both faces are then free of shear. The
+   !> gradients eps0_j,x, kappa_j,y, ... come from the second derivatives of
+   !> the element's shape functions (element_second_derivatives); in the
+   !> nonlinear theory eps0 holds the von Karman terms and so do its
+   !> gradients ((w,x^2/2),x = w,x w,xx, ...). The shear stresses are then
+   !> rotated: t13 = c t_xz + s t_yz, t23 = -s t_xz + c t_yz.
+   !>
    !> The tables of a laminate of one lamina, plies h/n thick, angles bottom
-   !> to top (module header).
+   !> to top (above).
    pure subroutine ply_stack_init(lam, angles, h, stack)
       type(lamina_t), intent(in) :: lam          !< the lamina
       real(dp), intent(in) :: angles(:)          !< ply angles from x, z = -h/2 first (deg)

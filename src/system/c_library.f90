@@ -16,9 +16,9 @@ module c_library
              c_statvfs, c_getrlimit, c_signal, c_exit, c_isatty
    public :: c_open, c_close, c_fsync, c_unlink, c_write
    public :: statx_t, c_statx
-   public :: spawn_actions_t, cpu_set_t, c_posix_spawn, c_spawn_actions_init, c_spawn_actions_destroy, &
-             c_spawn_actions_addopen, c_spawn_actions_adddup2, c_waitpid, c_readlink, c_sched_getaffinity, &
-             o_wronly, o_creat, o_trunc, o_nofollow, o_write_no_follow
+   public :: spawn_actions_t, cpu_set_t, c_posix_spawn, c_spawn_actions_init, &
+             c_spawn_actions_destroy, c_spawn_actions_addopen, c_spawn_actions_adddup2, c_waitpid, &
+             c_readlink, c_sched_getaffinity, o_write_no_follow
    public :: spawn_attr_t, c_spawnattr_init, c_spawnattr_destroy, c_spawnattr_setflags, c_spawnattr_setpgroup, &
              c_kill, c_getpid, c_getppid, c_prctl
 

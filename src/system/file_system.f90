@@ -1,36 +1,14 @@
-!> What the program asks of the file system, through the C library (ISO C
-!> binding, src/system/c_library.f90), never through a shell: a path is only ever a name here, so
-!> nothing in it is interpreted.
+!> What the program asks of the file system, through the C library
+!> (src/system/c_library.f90), never through a shell: a path is only ever a
+!> name here, so nothing in it is interpreted.
 !>
-!>  - make_directories: `mkdir -p` of a path's directories, by mkdir(2);
-!>  - path_problem: a path the program refuses to use (empty, control
-!>    characters);
-!>  - lock_file / unlock_file: an exclusive advisory lock (flock(2)) on an
-!>    existing file, held until unlocked or the process ends (the kernel
-!>    releases it then, even after a kill), so that two runs never write
-!>    one file;
-!>  - rename_file: rename(2), which replaces a file by another in one step;
-!>  - truncate_file: truncate(2), which cuts a file to a length (a row
-!>    half written when the disk filled up);
-!>  - file_size, and file_probe_t (open_probe, probe_size, close_probe) to
-!>    read it often: the length of a file as it is on disk, whatever a
-!>    Fortran unit still holds in its buffer (gfortran 12 reports neither a
-!>    failed write(2) under FLUSH nor the size on disk through INQUIRE on
-!>    the unit); a probe keeps the file open, so one reading is one lseek(2);
-!>  - path_kind: what a name is, the name itself and not what a link points
-!>    to (statx(2) with AT_SYMLINK_NOFOLLOW): missing, a regular file, a
-!>    symbolic link, a directory or something else;
-!>  - prefix_problem, name_problem: a results prefix that names a directory
-!>    ('out/', '.', 'out/..': the files would be hidden, out/_history.dat),
-!>    a name longer than the file system takes (NAME_MAX, PATH_MAX);
-!>  - create_new_file: creates a file exclusively (O_CREAT | O_EXCL, which
-!>    also refuses a symbolic link, even a dangling one), remove_file:
-!>    unlink(2), which removes a link itself and never what it points to.
-!>
-!> No write through a symbolic link: the result files are created
-!> exclusively or replaced by rename(2), their names checked with path_kind
-!> before (src/results/result_files.f90), and a lock is taken on the file
-!> the name holds, never on what a link points to (lock_file).
+!> Directories (make_directories), exclusive advisory locks (lock_file,
+!> flock(2)), rename, truncate, the size of a file as it is on disk
+!> (file_size, file_probe_t), what a name is without following a link
+!> (path_kind), paths and prefixes the program refuses (path_problem,
+!> prefix_problem, name_problem), exclusive creation and removal
+!> (create_new_file, remove_file). No write goes through a symbolic link.
+!> Not from the paper. More: docs/ROBUSTNESS.md.
 module file_system
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char, c_ptr, c_null_ptr, c_associated, c_int64_t
    use, intrinsic :: iso_fortran_env, only: int64

@@ -2,19 +2,13 @@
 !> the formats.
 !>
 !>  - real_str: the fewest significant digits that read back to the same
-!>    double (0.15, 1.2e11, 2.5e-6): the deck's echo and its messages;
-!>  - real_short: rounded to four significant digits: warnings;
-!>  - int_str: an integer without blanks;
+!>    double (the deck's echo and its messages);
+!>  - real_short: four significant digits (warnings); int_str: an integer;
 !>  - put_es16_7e3, put_f16_4, put_i6: a number as the edit descriptors
-!>    es16.7e3, f16.4 and i6 write it, byte for byte, some 10-20 times
-!>    faster than gfortran's formatted write (the history's rows,
-!>    src/results/result_files.f90). The digits come from one product with
-!>    an exact power of ten (or a few roundings away from it); a number whose
-!>    product lies within a margin of a rounding boundary (a digit ...5
-!>    exactly, or the change of exponent), and every number these fast
-!>    paths do not cover (NaN, Inf, -0, huge or tiny, a field overflow), is
-!>    written by the formatted write itself, so the text is always the
-!>    run-time's (tests/test_number_text.pf compares millions of values).
+!>    es16.7e3, f16.4 and i6 write it, byte for byte, without the formatted
+!>    write (the history's rows); a number near a rounding boundary, or one
+!>    the fast path does not cover, is written by the formatted write itself.
+!> Not from the paper. The proof: tests/test_number_text.pf.
 module number_text
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan

@@ -1,53 +1,18 @@
-!> How the process stops: on a stop signal, at once during the set-up and
-!> after the step during the run; or at once with an exit status.
+!> How the process stops: on a stop signal (SIGTERM, SIGINT, SIGHUP,
+!> SIGUSR1, SIGUSR2), at once during the set-up and after the step during
+!> the run; or at once with an exit status (exit_program, through _exit(2)).
 !>
-!> Stop signals: SIGTERM (a batch system's time limit, e.g. Slurm's), SIGINT
-!> (Ctrl-C), SIGHUP (the terminal gone), SIGUSR1 and SIGUSR2 (what batch
-!> systems send before a limit: Slurm's --signal, PBS, LSF). The program
-!> catches them from its first instruction (catch_stop_signals) through the
-!> C library's signal(); the handler, on_signal, stays installed, and what
-!> it does depends on the phase:
-!>
-!>  - the set-up (reading the deck, building the model, factoring the
-!>    matrix: 23 s on a 72 x 48 full plate, in LAPACK's dpbtrf, which no
-!>    flag reaches): nothing is computed that must be kept, so the handler
-!>    ends the process itself, at once: it removes the result files the run
-!>    has claimed and not yet written (remove_on_stop: still empty), writes
-!>    'impact: stopped by signal N during set-up' on standard error and
-!>    exits with status 128 + N. It uses only calls that POSIX allows in a
-!>    handler (open, lseek, close, unlink, write, _exit), on texts prepared
-!>    before (no allocation, no Fortran I/O). A job stopped in its set-up
-!>    leaves nothing behind, so the same job requeued starts afresh.
-!>  - the run (stop_after_step, called before the first result is written):
-!>    the handler only records the signal's number (an assignment is all a
-!>    handler may safely do while the program writes); the time loop
-!>    (src/impact.f90) asks stop_signal_caught() after every step and ends
-!>    the run there, its results written and a restart point saved, exit
-!>    status 128 + N. The same signal often comes twice (timeout(1) sends it
-!>    to the program and to its process group; Slurm to every process of
-!>    the job): the second must not kill the run while it writes. SIGKILL
-!>    still ends a step that hangs.
-!>
-!> keep_file_size_errors ignores SIGXFSZ: a write past the process's
-!> file-size limit (ulimit -f) then fails with EFBIG, which the writer
-!> reports (src/results/run_recorder.f90), instead of killing the process with its
-!> files half written.
-!>
-!> Module state, the one exception in this code to "no saved hidden state":
-!> the phase, the signal caught and the set-up's files and message. A
-!> signal handler receives nothing but the signal's number and can reach
-!> nothing but global data, so they must live here; the phase and the signal
-!> are volatile because they change outside the normal flow of the program.
-!>
-!> The exit status. Fortran 2008's `error stop 1` prints "ERROR STOP 1" after the program's
-!> own message, and gfortran adds a note on the floating-point flags; a
-!> failed run must say one line (docs/ROBUSTNESS.md, "Stability, bad input, nothing
-!> lost"). exit_program flushes standard output and error and ends the
-!> process at once, through the C library's _exit(2): no exit handler runs,
-!> in particular not HDF5's, which would try to close a results file a
-!> failed write left behind and rewrite its metadata for data that is not
-!> there (src/results/results_hdf5.f90), or crash in the attempt. So the caller
-!> closes its own files first; every path of src/impact.f90 does.
+!> In the set-up the handler removes the result files the run has claimed,
+!> says 'impact: stopped by signal N during set-up' and exits with status
+!> 128 + N, using only async-signal-safe calls on texts prepared before. In
+!> the run it only records the signal; the time loop asks
+!> stop_signal_caught() after every step and ends the run with its results
+!> and a restart point. keep_file_size_errors ignores SIGXFSZ, so that a
+!> write past ulimit -f fails with EFBIG and is reported. The phase and the
+!> signal are module state, the one exception to "no hidden state": a
+!> handler can reach nothing else.
+!> Not from the paper. More: docs/ROBUSTNESS.md ("Stability, bad input,
+!> nothing lost").
 module process_stop
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_funptr, c_funloc, c_intptr_t, c_size_t, c_long, &
       c_int64_t, c_null_char
