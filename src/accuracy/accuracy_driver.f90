@@ -66,7 +66,6 @@ contains
       type(deck_t) :: claimed                       ! the deck, overwriting with --restart
       integer(int64) :: wall0, wall1, rate
       integer :: i, ignored
-
       exit_code = 1
       call system_clock(wall0, rate)
       if (deck%analysis_kind /= 'impact') then
@@ -194,7 +193,6 @@ contains
       type(settings_t) :: est
       real(dp) :: a, side(2), counted(2), g, lo
       integer :: n(2), d, it
-
       why = ''
       est = scene_settings_of(deck)
       a = est%contact_radius
@@ -304,7 +302,6 @@ contains
       type(choice_t) :: c
       logical :: more, ran
       character(len=224) :: why
-
       out%target = deck%accuracy_target
       call targeted_results(deck, out%targeted, stat, errmsg)
       if (stat /= 0) return

@@ -9,8 +9,7 @@ module accuracy_ladder
    use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_grid_index, &
       continued_value
    use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, predicted_run_cost, &
-      error_scale
-   use history_reader, only: maxima_t
+      error_scale, is_ladder, maxima_t
    implicit none
    private
    public :: axis_t, judged_t, choice_t, build_axis, judge_run, choose_run, final_run, ladder_run, time_partner, &
@@ -63,8 +62,7 @@ contains
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< time and mesh level
       do i = 1, size(runs)
-         if (runs(i)%k == k .and. runs(i)%j == j .and. runs(i)%role /= 'theory' .and. &
-             runs(i)%role /= 'bend_twist') return
+         if (runs(i)%k == k .and. runs(i)%j == j .and. is_ladder(runs(i))) return
       end do
       i = 0
    end function ladder_run
@@ -154,7 +152,6 @@ contains
       integer :: i, i0, ik, ij, im
       real(dp) :: below(nq)
       logical :: measured, known, two
-
       if (k >= tx%levels) then                     ! the next time level, not yet planned
          jd = judge_next_time(runs, tx, mx, target, active)
          return
@@ -250,7 +247,7 @@ contains
    !> The error of the time of the peak from the choice of the maximum: the largest |t_i - t_peak|
    !> over the other maxima within the peak force's error of it, F_i >= F - e_F (0 without).
    pure real(dp) function peak_spread(mx, t_peak, f_peak, e_force) result(spread)
-      type(maxima_t), intent(in) :: mx            !< the run's maxima (src/accuracy/history_reader.f90)
+      type(maxima_t), intent(in) :: mx            !< the run's maxima
       real(dp), intent(in) :: t_peak              !< the time of the peak (us)
       real(dp), intent(in) :: f_peak              !< the peak force (N)
       real(dp), intent(in) :: e_force             !< its error (N)
@@ -357,7 +354,6 @@ contains
       real(dp) :: cost, best_cost, best_worst
       integer :: kk, jj, p
       logical :: done
-
       best_cost = huge(1.0_dp);  best_worst = huge(1.0_dp)
       do kk = 0, merge(tx%levels, tx%levels - 1, more_time)
          do jj = 0, merge(0, mx%levels - 1, kk == tx%levels)

@@ -13,7 +13,7 @@ module accuracy_report
       write_column_block
    use summary_reader, only: summary_t, read_summary
    use accuracy_runs, only: run_t, launcher_t, nq, iq_peak_time, result_keys, result_units, state_done, &
-      error_scale, state_skipped, state_stopped
+      error_scale, state_skipped, state_stopped, is_ladder
    use accuracy_ladder, only: axis_t, judged_t, judge_run
    implicit none
    private
@@ -113,8 +113,8 @@ contains
          err_time = err;  err_mesh = err
          q = runs(i)%q
          if (runs(i)%state /= state_done) q = ieee_value(q, ieee_quiet_nan)
-         if (runs(i)%state == state_done .and. runs(i)%role /= 'theory' .and. runs(i)%role /= 'bend_twist' &
-             .and. runs(i)%k < tx%levels .and. runs(i)%j < mx%levels) then
+         if (runs(i)%state == state_done .and. is_ladder(runs(i)) .and. runs(i)%k < tx%levels .and. &
+             runs(i)%j < mx%levels) then
             jd = judge_run(runs, tx, mx, runs(i)%k, runs(i)%j, out%target, out%targeted)
             err = jd%err;  err_time = jd%err_time;  err_mesh = jd%err_mesh
          end if
@@ -171,7 +171,6 @@ contains
       type(run_t) :: r
       integer :: i, iq
       real(dp) :: reference(nq)
-
       r = runs(out%chosen)
       reference = error_scale(out%jd%value)
       call read_summary(la%dir // trim(r%name) // '_summary.dat', s, stat, errmsg)
