@@ -68,16 +68,11 @@ contains
       integer :: i, ignored
       exit_code = 1
       call system_clock(wall0, rate)
-      if (deck%analysis_kind /= 'impact') then
-         stat = 1
-         errmsg = deck%source // ": &accuracy: target needs &analysis kind = 'impact'"
-         return
-      end if
-      if (len(opts%deck_path) == 0) then
-         stat = 1
-         errmsg = '--accuracy: give the deck as a file (its runs read it again), not on standard input'
-         return
-      end if
+      stat = 1
+      if (len(opts%deck_path) == 0) errmsg = '--accuracy: give the deck as a file (its runs read it again), ' // &
+         'not on standard input'
+      if (deck%analysis_kind /= 'impact') errmsg = deck%source // ": &accuracy: target needs &analysis kind = 'impact'"
+      if (deck%analysis_kind /= 'impact' .or. len(opts%deck_path) == 0) return
       call pass_stops_to_children()                 ! a stop ends the runs going, keeps those done
       claimed = deck
       claimed%overwrite = deck%overwrite .or. opts%restart
@@ -150,12 +145,8 @@ contains
       la%every_step = strength_given(deck)
       la%restart = opts%restart
       la%cpus = usable_cpus()
-      la%cap = huge(1.0_dp)
-      if (deck%given(find_var('accuracy', 'max_cpu_s'))) then
-         la%cap = deck%accuracy_max_cpu_s
-      else
-         la%cap_times = default_cap_times
-      end if
+      if (deck%given(find_var('accuracy', 'max_cpu_s'))) la%cap = deck%accuracy_max_cpu_s
+      if (.not. deck%given(find_var('accuracy', 'max_cpu_s'))) la%cap_times = default_cap_times
       la%gauge = model%gauge_xy                     ! the strain at one point on every mesh
       la%unit = unit
       base = deck
@@ -197,8 +188,7 @@ contains
       est = scene_settings_of(deck)
       a = est%contact_radius
       if (deck%given(find_var('mesh', 'grading')) .or. maxval(impact_element) <= a) return
-      ! each direction: the longer side from the impact point, and the share of
-      ! the count across it (the deck's mesh is uniform: its grading is 1)
+      ! each direction: the longer side from the impact point, the share of the count across it
       side = [max(msh%x1 - msh%x_impact, msh%x_impact - msh%x0), max(msh%y1 - msh%y_impact, msh%y_impact - msh%y0)]
       counted = real(nint(side/impact_element), dp)/real([deck%nx, deck%ny], dp)
       ! the counts that bring the element at the impact point to a with ladder_grading
@@ -252,9 +242,7 @@ contains
       end if
       r%k = k;  r%j = j
       r%name = ladder_name(k, j)
-      r%role = 'combined'
-      if (j == 0) r%role = 'time'
-      if (k == 0 .and. j > 0) r%role = 'mesh'
+      r%role = merge('time    ', merge('mesh    ', 'combined', k == 0), j == 0)
       r%dt = deck%dt/2.0_dp**k
       r%nx = mesh_count(deck%nx, deck%accuracy_mesh_factor, j)
       r%ny = mesh_count(deck%ny, deck%accuracy_mesh_factor, j)
@@ -336,13 +324,11 @@ contains
          call say_errors(la%unit, runs, tx, mx, out)
          c = choose_run(runs, la, tx, mx, out%target, out%targeted, can_halve_dt(deck, tx))
          k = c%k;  j = c%j
-         i = ladder_run(runs, k, j)
-         if (c%found .and. i > 0) then
-            if (runs(i)%state == state_done .and. time_partner(runs, k, j) < 0 .and. .not. cross_needed(runs, k, j)) then
-               out%met = .true.
-               out%status = 'met'
-               exit
-            end if
+         if (c%found .and. done_run(runs, k, j) .and. time_partner(runs, k, j) < 0 .and. &
+             .not. cross_needed(runs, k, j)) then
+            out%met = .true.
+            out%status = 'met'
+            exit
          end if
          if (c%found) then                          ! within the cap: the chosen run and its partner
             partner = time_partner(runs, k, j)
@@ -400,11 +386,11 @@ contains
       type(choice_t), intent(in) :: choice          !< choose_run's (beyond the cap: the candidate, its cost)
       character(len=:), allocatable :: status
       character(len=:), allocatable :: what
-      real(dp) :: c, ci, cost
-      integer :: i, pick, partner, kj(2)
-      kj = choice%beyond_kj;  cost = choice%beyond_cost
+      real(dp) :: c, cost(size(runs))
+      integer :: pick, partner, kj(2)
+      kj = choice%beyond_kj
       if (choice%beyond_cap .and. kj(2) >= 0) then
-         c = cost
+         c = choice%beyond_cost
          what = ''
          if (.not. done_run(runs, kj(1), kj(2))) what = level_text(kj(1))
          partner = time_partner(runs, kj(1), kj(2))
@@ -415,19 +401,14 @@ contains
          what = what // ' on the mesh ' // int_str(runs(mx%run(kj(2) + 1))%nx) // ' x ' // &
                 int_str(runs(mx%run(kj(2) + 1))%ny)
       else
-         pick = 0;  c = huge(1.0_dp)
-         do i = 1, size(runs)
-            if (runs(i)%state /= state_skipped) cycle
-            ci = predicted_run_cost(runs(i), la)
-            if (ci < c) then
-               pick = i;  c = ci
-            end if
-         end do
+         cost = merge(predicted_run_cost(runs, la), huge(1.0_dp), runs%state == state_skipped)
+         pick = minloc(cost, mask=cost < huge(1.0_dp), dim=1)
          if (pick == 0) then
             status = 'cap reached: the next run would take the cpu time of all runs past &accuracy max_cpu_s = ' // &
                      real_short(la%cap) // ' s; the results carry the errors reached'
             return
          end if
+         c = cost(pick)
          what = trim(runs(pick)%name) // ' (dt ' // real_short(runs(pick)%dt*1.0e6_dp) // ' us) on the mesh ' // &
                 int_str(runs(pick)%nx) // ' x ' // int_str(runs(pick)%ny)
       end if

@@ -7,7 +7,7 @@
 module accuracy_ladder
    use kinds, only: dp
    use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_grid_index, &
-      continued_value
+      continued_value, last_difference
    use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, predicted_run_cost, &
       error_scale, is_ladder, maxima_t
    implicit none
@@ -77,22 +77,16 @@ contains
       integer, intent(in), optional :: first      !< the time axis from this time level (0 if absent)
       integer :: l, i, iq, j0, k0
       real(dp) :: floor, tail
-      j0 = 0
+      j0 = 0;  k0 = 0
       if (present(mesh)) j0 = mesh
-      k0 = 0
       if (present(first)) k0 = first
       allocate (ax%run(0), ax%h(0))
       l = 0
       do
+         if (.not. done_run(runs, merge(k0 + l, 0, which == axis_time), merge(j0, l, which == axis_time))) exit
          i = ladder_run(runs, merge(k0 + l, 0, which == axis_time), merge(j0, l, which == axis_time))
-         if (i == 0) exit
-         if (runs(i)%state /= state_done) exit
          ax%run = [ax%run, i]
-         if (which == axis_time) then
-            ax%h = [ax%h, runs(i)%dt]
-         else
-            ax%h = [ax%h, 1.0_dp/sqrt(real(runs(i)%nx, dp)*real(runs(i)%ny, dp))]
-         end if
+         ax%h = [ax%h, merge(runs(i)%dt, 1.0_dp/sqrt(real(runs(i)%nx, dp)*real(runs(i)%ny, dp)), which == axis_time)]
          l = l + 1
       end do
       ax%levels = l
@@ -101,9 +95,7 @@ contains
       do iq = 1, nq
          if (.not. active(iq)) cycle
          floor = 0.0_dp
-         if (time_results(iq)) then
-            if (on_steps(runs(ax%run)%q(iq), runs(ax%run)%dt)) floor = runs(ax%run(l))%dt*1.0e6_dp   ! in us
-         end if
+         if (time_results(iq) .and. on_steps(runs(ax%run)%q(iq), runs(ax%run)%dt)) floor = runs(ax%run(l))%dt*1.0e6_dp
          ax%finest(iq) = ladder_estimate(ax%h, runs(ax%run)%q(iq), order_theory(which), order_low(which), &
                                          order_high(which), floor)
          if (which == axis_mesh) then
@@ -119,16 +111,6 @@ contains
          end do
       end do
    end subroutine build_axis
-
-   !> The larger of the last two differences of a ladder.
-   pure real(dp) function last_difference(q)
-      real(dp), intent(in) :: q(:)                !< the result at each level
-      integer :: n
-      n = size(q)
-      last_difference = 0.0_dp
-      if (n >= 2) last_difference = abs(q(n - 1) - q(n))
-      if (n >= 3) last_difference = max(last_difference, abs(q(n - 2) - q(n - 1)))
-   end function last_difference
 
    !> True when every time (us) is a whole number of its run's step (s).
    pure logical function on_steps(t_us, dt)
@@ -157,10 +139,7 @@ contains
          return
       end if
       i0 = tx%run(1);  ik = tx%run(k + 1);  ij = mx%run(j + 1)
-      i = ladder_run(runs, k, j)
-      if (i > 0) then
-         if (runs(i)%state /= state_done) i = 0
-      end if
+      i = merge(ladder_run(runs, k, j), 0, done_run(runs, k, j))
       if (i > 0) then
          jd%value = runs(i)%q
          jd%err_cross = max(abs(runs(i)%q - runs(ik)%q - runs(ij)%q + runs(i0)%q), largest_cross(runs, tx, mx))
@@ -298,11 +277,7 @@ contains
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< the run's levels
       p = -1
-      if (j == 0) return
-      if (k > 0) then
-         if (done_run(runs, k - 1, j)) return
-      end if
-      if (done_run(runs, k + 1, j)) return
+      if (j == 0 .or. done_run(runs, k - 1, j) .or. done_run(runs, k + 1, j)) return
       p = merge(k - 1, 1, k > 0)
    end function time_partner
 
@@ -319,8 +294,8 @@ contains
       integer, intent(in) :: k, j                 !< its levels
       integer :: i
       i = ladder_run(runs, k, j)
-      done_run = i > 0
-      if (done_run) done_run = runs(i)%state == state_done
+      done_run = .false.
+      if (i > 0) done_run = runs(i)%state == state_done
    end function done_run
 
    !> The largest interaction of the combined runs done (0 when there is none).

@@ -188,17 +188,11 @@ contains
       type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
       logical, intent(in) :: running               !< of the runs going, else of the planned
       real(dp) :: cost(size(runs))
-      integer :: i, wanted
-      wanted = merge(state_running, state_planned, running)
-      cost = 0.0_dp
-      do i = 1, size(runs)
-         if (runs(i)%state /= wanted) cycle
-         cost(i) = predicted_run_cost(runs(i), la)
-      end do
+      cost = merge(predicted_run_cost(runs, la), 0.0_dp, runs%state == merge(state_running, state_planned, running))
    end function predicted_cost
 
    !> The cost model's prediction of a run's cpu time (s; 0 while nothing is known).
-   pure real(dp) function predicted_run_cost(run, la)
+   elemental real(dp) function predicted_run_cost(run, la)
       type(run_t), intent(in) :: run               !< the run (its k, nx, ny, cost_factor)
       type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
       integer :: a

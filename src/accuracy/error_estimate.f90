@@ -10,7 +10,7 @@ module error_estimate
    implicit none
    private
    public :: estimate_t, ladder_estimate, observed_order, level_error, log_tail, two_grid_index, continued_value
-   public :: safe_factor
+   public :: safe_factor, last_difference
 
    !> Factors of safety (module header) (-).
    real(dp), parameter :: richardson_safety = 1.25_dp, safe_factor = 1.5_dp, two_level_factor = 3.0_dp, &
@@ -126,14 +126,21 @@ contains
       real(dp), intent(in) :: q(:)             !< the result at each level
       real(dp), intent(in) :: size_ratio       !< the finest level's element over the length (s/a)
       integer :: n
-      real(dp) :: d
       n = size(q)
       log_tail = 0.0_dp
       if (n < 2 .or. size_ratio <= 1.0_dp) return
-      d = abs(q(n - 1) - q(n))
-      if (n >= 3) d = max(d, abs(q(n - 2) - q(n - 1)))
-      log_tail = d*(log(size_ratio)/log(h(n - 1)/h(n)) + 1.0_dp)
+      log_tail = last_difference(q)*(log(size_ratio)/log(h(n - 1)/h(n)) + 1.0_dp)
    end function log_tail
+
+   !> The larger of the last two differences of a ladder.
+   pure real(dp) function last_difference(q)
+      real(dp), intent(in) :: q(:)                !< the result at each level
+      integer :: n
+      n = size(q)
+      last_difference = 0.0_dp
+      if (n >= 2) last_difference = abs(q(n - 1) - q(n))
+      if (n >= 3) last_difference = max(last_difference, abs(q(n - 2) - q(n - 1)))
+   end function last_difference
 
    !> Roache's grid convergence index of the finer of two levels of known order p.
    pure real(dp) function two_grid_index(h, q, p) result(e)

@@ -263,7 +263,7 @@ contains
       end do
    contains
       !> A run at the settings of run i stays within the cap.
-      logical function fits(i)
+      pure logical function fits(i)
          integer, intent(in) :: i
          fits = la%c_base < 0.0_dp .or. la%spent + cost(i) <= la%cap
       end function fits
