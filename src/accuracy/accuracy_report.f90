@@ -111,16 +111,13 @@ contains
          type(judged_t) :: jd
          err = ieee_value(err, ieee_quiet_nan)
          err_time = err;  err_mesh = err
-         q = runs(i)%q
-         if (runs(i)%state /= state_done) q = ieee_value(q, ieee_quiet_nan)
+         q = merge(runs(i)%q, err, runs(i)%state == state_done)
          if (runs(i)%state == state_done .and. is_ladder(runs(i)) .and. runs(i)%k < tx%levels .and. &
-             runs(i)%j < mx%levels) then
+             runs(i)%j < mx%levels) then                  ! the results not estimated NaN
             jd = judge_run(runs, tx, mx, runs(i)%k, runs(i)%j, out%target, out%targeted)
-            err = jd%err;  err_time = jd%err_time;  err_mesh = jd%err_mesh
+            err = merge(jd%err, err, out%estimated);  err_time = merge(jd%err_time, err, out%estimated)
+            err_mesh = merge(jd%err_mesh, err_time, out%estimated)
          end if
-         where (.not. out%estimated)
-            err = ieee_value(err, ieee_quiet_nan);  err_time = err;  err_mesh = err
-         end where
          h_rel = sqrt(real(runs(1)%nx, dp)*real(runs(1)%ny, dp)/(real(runs(i)%nx, dp)*real(runs(i)%ny, dp)))
          write (u, '(a,1x,a,2(1x,i3),es15.6e3,2(1x,i5),f9.5,f9.5,es12.4,1x,i1,1x,a,24es16.7e3)') &
             trim(runs(i)%name), trim(runs(i)%role), runs(i)%k, runs(i)%j, runs(i)%dt*1.0e6_dp, runs(i)%nx, &

@@ -175,11 +175,8 @@ contains
       if (.not. any(runs%state == state_planned)) return
       if (la%c_base < 0.0_dp .and. running > 0) return
       cost = predicted_cost(runs, la, running=.false.)
-      if (la%c_base < 0.0_dp) then
-         i = minloc(cost, mask=runs%state == state_planned, dim=1)
-      else
-         i = maxloc(cost, mask=runs%state == state_planned, dim=1)
-      end if
+      if (la%c_base < 0.0_dp) i = minloc(cost, mask=runs%state == state_planned, dim=1)
+      if (la%c_base >= 0.0_dp) i = maxloc(cost, mask=runs%state == state_planned, dim=1)
    end function next_run
 
    !> The predicted cost of each run planned (or going: running) (s); 0 for the others.
@@ -213,13 +210,10 @@ contains
       if (.not. allocated(la%anchors)) return
       best = huge(1)
       do i = 1, size(la%anchors)
-         if (la%anchors(i)%nx /= run%nx .or. la%anchors(i)%ny /= run%ny) cycle
-         if (la%anchors(i)%cost_factor /= run%cost_factor) cycle
+         if (any([la%anchors(i)%nx, la%anchors(i)%ny] /= [run%nx, run%ny]) .or. &
+             la%anchors(i)%cost_factor /= run%cost_factor) cycle
          d = abs(la%anchors(i)%k - run%k)
-         if (d > best) cycle
-         if (d == best) then                       ! as near: the finer
-            if (la%anchors(i)%k < la%anchors(a)%k) cycle
-         end if
+         if (d > best .or. (d == best .and. la%anchors(i)%k < la%anchors(max(a, 1))%k)) cycle   ! as near: the finer
          a = i;  best = d
       end do
    end function nearest_anchor
