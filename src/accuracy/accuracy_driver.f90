@@ -11,7 +11,6 @@ module accuracy_driver
    use deck_schema, only: deck_t, strength_given, find_var
    use command_line, only: options_t
    use number_text, only: int_str, real_short
-   use scene_model, only: scene_t
    use plate_model, only: model_t, build_model
    use mesh, only: mesh_t
    use scene_settings, only: settings_t, scene_settings_of
@@ -23,7 +22,7 @@ module accuracy_driver
       state_skipped, predicted_run_cost, ladder_name, error_scale
    use accuracy_ladder, only: axis_t, judged_t, choice_t, build_axis, judge_run, choose_run, final_run, ladder_run, &
       time_partner, cross_needed, done_run, axis_time, axis_mesh
-   use accuracy_report, only: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
+   use accuracy_report, only: accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
       report_terminal
    use model_comparison, only: compare_models
    implicit none
@@ -57,11 +56,9 @@ contains
       character(len=*), intent(inout) :: errmsg     !< what failed
       type(results_claim_t) :: claim
       type(launcher_t) :: la
-      type(scene_t) :: scene
       type(run_t), allocatable :: runs(:)
       type(axis_t) :: tx, mx
       type(accuracy_outcome_t) :: out
-      type(comparison_t) :: cmp(2)
       type(deck_t) :: base                          ! the deck with level 0's mesh (ladder_mesh)
       type(deck_t) :: claimed                       ! the deck, overwriting with --restart
       integer(int64) :: wall0, wall1, rate
@@ -82,22 +79,22 @@ contains
       do i = 3, size(own_files)                     ! a plain run's files: not the run chosen's
          call remove_file(deck%prefix // trim(own_files(i)), ignored)
       end do
-      call set_up(opts, deck, unit, base, la, scene, runs, stat, errmsg)
+      call set_up(opts, deck, unit, base, la, runs, stat, errmsg)
       if (stat == 0) call climb(base, la, runs, tx, mx, out, stat, errmsg)
-      if (stat == 0 .and. stop_caught() == 0) call compare_models(base, scene, la, runs, tx, mx, out, cmp, stat, errmsg)
+      if (stat == 0 .and. stop_caught() == 0) call compare_models(base, la, runs, tx, mx, out, stat, errmsg)
       if (stat == 0 .and. stop_caught() /= 0) then
          out%status = 'stopped by signal ' // int_str(stop_caught()) // ': the results carry the errors reached; ' // &
                       'impact --restart continues the ladder'
          out%met = .false.
          out%stop_signal = stop_caught()
-         cmp%what = ['theory    ', 'bend_twist']
-         where (cmp%run == 0 .and. len_trim(cmp%note) == 0) cmp%note = 'the run was stopped'
+         out%cmp%what = ['theory    ', 'bend_twist']
+         where (out%cmp%run == 0 .and. len_trim(out%cmp%note) == 0) out%cmp%note = 'the run was stopped'
       end if
       call system_clock(wall1)
       out%wall_s = real(wall1 - wall0, dp)/real(rate, dp)
       if (stat == 0 .and. out%chosen > 0) call write_accuracy_table(deck, runs, tx, mx, out, stat, errmsg)
-      if (stat == 0 .and. out%chosen > 0) call write_accuracy_summary(deck, la, runs, out, cmp, stat, errmsg)
-      if (stat == 0 .and. out%chosen > 0) call report_terminal(unit, la, runs, out, cmp)
+      if (stat == 0 .and. out%chosen > 0) call write_accuracy_summary(deck, la, runs, out, stat, errmsg)
+      if (stat == 0 .and. out%chosen > 0) call report_terminal(unit, la, runs, out)
       call release_results(claim, discard=stat /= 0 .or. out%chosen == 0)
       if (stat == 0) exit_code = merge(0, exit_not_met, out%met)
       if (stop_caught() /= 0) exit_code = 128 + stop_caught()
@@ -120,13 +117,12 @@ contains
    end subroutine take_dead_claim
 
    !> The launcher, the scene of the deck's model, level 0's mesh and the first levels planned.
-   subroutine set_up(opts, deck, unit, base, la, scene, runs, stat, errmsg)
+   subroutine set_up(opts, deck, unit, base, la, runs, stat, errmsg)
       type(options_t), intent(in) :: opts           !< the command line
       type(deck_t), intent(in) :: deck              !< the deck
       integer, intent(in) :: unit                   !< standard output
       type(deck_t), intent(out) :: base             !< the deck with level 0's mesh
       type(launcher_t), intent(out) :: la           !< the launcher
-      type(scene_t), intent(out) :: scene           !< the scene of the deck's model
       type(run_t), allocatable, intent(out) :: runs(:)   !< the runs planned
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
@@ -136,12 +132,12 @@ contains
       integer :: l
       call build_model(deck, model, stat, errmsg)
       if (stat /= 0) return
-      scene = model%scene
+      la%scene = model%scene
       la%exe = program_path()
       la%deck_path = opts%deck_path
       la%user_settings = opts%settings
       la%dir = deck%prefix // '_acc/'
-      la%theory = scene%theory
+      la%theory = la%scene%theory
       la%every_step = strength_given(deck)
       la%restart = opts%restart
       la%cpus = usable_cpus()
@@ -150,7 +146,7 @@ contains
       la%gauge = model%gauge_xy                     ! the strain at one point on every mesh
       la%unit = unit
       base = deck
-      la%impact_element = scene%element_size
+      la%impact_element = la%scene%element_size
       call ladder_mesh(deck, model%msh, base, la%impact_element, why)
       la%n0 = base%nx*base%ny
       call make_directories(la%dir(:len(la%dir) - 1), stat, iomsg)
@@ -162,7 +158,7 @@ contains
       if (la%cap_times == 0) cap = real_short(la%cap) // ' s of cpu'
       write (unit, '(a)') 'accuracy: target ' // real_short(deck%accuracy_target) // ' (relative), cap ' // &
          cap // ', ' // int_str(la%cpus) // ' runs at a time; theory ' // &
-         trim(la%theory) // ', domain ' // trim(scene%domain) // '; runs in ' // la%dir
+         trim(la%theory) // ', domain ' // trim(la%scene%domain) // '; runs in ' // la%dir
       if (len(why) > 0) write (unit, '(a)') 'accuracy: ' // why
       allocate (runs(0))
       do l = 0, first_levels - 1

@@ -106,9 +106,7 @@ contains
                ax%finest(iq)%how = 'contact disc unresolved: ln tail'
             end if
          end if
-         do i = 1, l
-            ax%err(i, iq) = level_error(runs(ax%run)%q(iq), i, ax%finest(iq)%error)
-         end do
+         ax%err(:, iq) = [(level_error(runs(ax%run)%q(iq), i, ax%finest(iq)%error), i = 1, l)]
       end do
    end subroutine build_axis
 

@@ -44,6 +44,7 @@ module accuracy_report
       logical :: estimated(nq) = .false.           !< the results estimated
       logical :: targeted(nq) = .false.            !< of which those that must meet the target
       real(dp) :: wall_s = 0.0_dp                  !< wall time of the accuracy run (s)
+      type(comparison_t) :: cmp(2)                 !< the models compared
    end type accuracy_outcome_t
 
    !> Columns of <prefix>_accuracy.dat before the results.
@@ -155,12 +156,11 @@ contains
    end subroutine write_estimates
 
    !> <prefix>_summary.dat (module header).
-   subroutine write_accuracy_summary(deck, la, runs, out, cmp, stat, errmsg)
+   subroutine write_accuracy_summary(deck, la, runs, out, stat, errmsg)
       type(deck_t), intent(in) :: deck             !< the accuracy run's deck
       type(launcher_t), intent(in) :: la           !< the launcher (its directory, its spending)
       type(run_t), intent(in) :: runs(:)           !< the runs
       type(accuracy_outcome_t), intent(in) :: out  !< the outcome
-      type(comparison_t), intent(in) :: cmp(:)     !< the models compared
       integer, intent(out) :: stat                 !< 0 on success
       character(len=*), intent(inout) :: errmsg    !< what failed
       type(summary_t) :: s
@@ -202,8 +202,8 @@ contains
                                           out%jd%err_maxima(iq))
          call put(trim(result_keys(iq)) // '_relative_error', '-', relative(out%jd%err(iq), reference(iq)))
       end do
-      do i = 1, size(cmp)
-         call comparison_items(items, cmp(i), runs, out)
+      do i = 1, size(out%cmp)
+         call comparison_items(items, out%cmp(i), runs, out)
       end do
       call summary_integer(items, 'accuracy_runs', count(runs%state == state_done))
       call summary_real(items, 'accuracy_cpu_s', 'accuracy_cpu', 's', la%spent, 1.0_dp)
@@ -243,12 +243,11 @@ contains
    end subroutine comparison_items
 
    !> The accuracy run's words on standard output.
-   subroutine report_terminal(unit, la, runs, out, cmp)
+   subroutine report_terminal(unit, la, runs, out)
       integer, intent(in) :: unit                  !< standard output
       type(launcher_t), intent(in) :: la           !< the launcher
       type(run_t), intent(in) :: runs(:)           !< the runs
       type(accuracy_outcome_t), intent(in) :: out  !< the outcome
-      type(comparison_t), intent(in) :: cmp(:)     !< the models compared
       type(run_t) :: r
       integer :: iq, i
       character(len=msg_len) :: line
@@ -274,8 +273,8 @@ contains
             out%jd%err_time(iq), ', mesh ', out%jd%err_mesh(iq), ')'
          write (unit, '(a)') '  ' // trim(line)
       end do
-      do i = 1, size(cmp)
-         call comparison_lines(unit, cmp(i), runs, out)
+      do i = 1, size(out%cmp)
+         call comparison_lines(unit, out%cmp(i), runs, out)
       end do
       write (unit, '(a)') 'accuracy: ' // int_str(count(runs%state == state_done)) // ' runs, cpu ' // &
          real_short(la%spent) // ' s (' // real_short(la%spent/max(r%cpu_s, tiny(1.0_dp))) // ' times the run chosen), wall ' // &

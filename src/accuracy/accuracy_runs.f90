@@ -12,6 +12,7 @@ module accuracy_runs
    use summary_reader, only: summary_t, read_summary, summary_value, summary_has, summary_index
    use child_process, only: spawn_program, wait_child, stop_caught
    use result_files, only: history_columns
+   use scene_model, only: scene_t
    implicit none
    private
    public :: nq, iq_force, iq_peak_time, result_keys, result_units, run_t, launcher_t, run_planned, maxima_t, force_maxima
@@ -72,6 +73,7 @@ module accuracy_runs
       character(len=:), allocatable :: dir        !< '<prefix>_acc/'
       character(len=8192), allocatable :: user_settings(:)   !< the user's --set values, in order
       character(len=32) :: theory = ''            !< the theory of every ladder run
+      type(scene_t) :: scene                      !< the scene of the deck's model (domain, D16, D26)
       logical :: every_step = .false.             !< history every step (&strength: the failure index)
       logical :: restart = .false.                !< --restart: each run continues from its restart point
       integer :: cpus = 1                         !< runs at a time

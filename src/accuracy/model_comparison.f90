@@ -24,14 +24,12 @@ contains
    !> Step 4 (module header): the comparisons first at coarse_base, kept where their verdict is
    !> settled (verdict_settled) or the chosen settings pass the cap, else made again there
    !> (variant_bases). The report names the run compared with.
-   subroutine compare_models(deck, scene, la, runs, tx, mx, out, cmp, stat, errmsg)
+   subroutine compare_models(deck, la, runs, tx, mx, out, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
-      type(scene_t), intent(in) :: scene            !< the scene of the deck's model
       type(launcher_t), intent(inout) :: la         !< the launcher
       type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
       type(axis_t), intent(in) :: tx, mx            !< the time and mesh axes
-      type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the run chosen)
-      type(comparison_t), intent(out) :: cmp(2)     !< the two comparisons
+      type(accuracy_outcome_t), intent(inout) :: out   !< the outcome (the run chosen); its comparisons out
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
       character(len=*), parameter :: past_cap = 'a run at its settings would pass &accuracy max_cpu_s'
@@ -39,13 +37,14 @@ contains
       real(dp) :: slack(nq)
       integer :: coarse, i, base(2)
       logical :: again(2)
+      associate (cmp => out%cmp)
       again = .true.                                ! made (again) at the chosen settings
       slack = 0.0_dp
       coarse = coarse_base(runs, out%chosen)
       if (coarse /= out%chosen) then
          slack = change_slack(runs, tx, mx, out, coarse)
-         call make_variants(deck, scene, la, runs, variant_bases(deck, scene, runs, la, coarse, again), again, &
-                            first, stat, errmsg)
+         call make_variants(deck, la, runs, variant_bases(deck, la%scene, runs, la, coarse, again), again, first, &
+                            stat, errmsg)
          if (stat /= 0) return
          cmp = first
          do i = 1, 2
@@ -57,7 +56,7 @@ contains
                cmp(i)%at = coarse_words(.true., change_band(model_changes(first(i), runs, out), slack), out)
             end if
          end do
-         base = variant_bases(deck, scene, runs, la, out%chosen, again)
+         base = variant_bases(deck, la%scene, runs, la, out%chosen, again)
          do i = 1, 2
             if (.not. again(i) .or. base(i) == out%chosen) cycle
             again(i) = .false.                      ! the chosen settings would pass the cap
@@ -66,8 +65,8 @@ contains
          end do
          if (.not. any(again)) return
       end if
-      call make_variants(deck, scene, la, runs, variant_bases(deck, scene, runs, la, out%chosen, again), again, &
-                         second, stat, errmsg)
+      call make_variants(deck, la, runs, variant_bases(deck, la%scene, runs, la, out%chosen, again), again, second, &
+                         stat, errmsg)
       if (stat /= 0) return
       do i = 1, 2
          if (.not. again(i)) cycle
@@ -80,6 +79,7 @@ contains
             cmp(i)%at = coarse_words(.false., change_band(model_changes(cmp(i), runs, out), slack), out)
          end if
       end do
+      end associate
    contains
       !> The comparison's variant was made and has results.
       logical function made(c)
@@ -90,9 +90,8 @@ contains
    end subroutine compare_models
 
    !> The variants wanted (theory, bend-twist), each at the settings of its run base(i), run.
-   subroutine make_variants(deck, scene, la, runs, base, want, cmp, stat, errmsg)
+   subroutine make_variants(deck, la, runs, base, want, cmp, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
-      type(scene_t), intent(in) :: scene            !< the scene of the deck's model
       type(launcher_t), intent(inout) :: la         !< the launcher
       type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
       integer, intent(in) :: base(2)                !< the runs compared with: the theory's, the bend-twist's
@@ -118,7 +117,7 @@ contains
       end if
       cmp(2)%what = 'bend_twist'
       r = planned_copy(runs(base(2)))
-      call bend_twist_variant(deck, scene, runs(base(2)), r, cmp(2))
+      call bend_twist_variant(deck, la%scene, runs(base(2)), r, cmp(2))
       if (want(2) .and. len_trim(cmp(2)%note) == 0) then
          runs = [runs, r]
          cmp(2)%run = size(runs)
