@@ -277,8 +277,8 @@ contains
          call comparison_lines(unit, out%cmp(i), runs, out)
       end do
       write (unit, '(a)') 'accuracy: ' // int_str(count(runs%state == state_done)) // ' runs, cpu ' // &
-         real_short(la%spent) // ' s (' // real_short(la%spent/max(r%cpu_s, tiny(1.0_dp))) // ' times the run chosen), wall ' // &
-         real_short(out%wall_s) // ' s on ' // int_str(la%cpus) // &
+         real_short(la%spent) // ' s (' // real_short(la%spent/max(r%cpu_s, tiny(1.0_dp))) // &
+         ' times the run chosen), wall ' // real_short(out%wall_s) // ' s on ' // int_str(la%cpus) // &
          ' CPUs; every run: ' // la%dir // '; summary: ' // la%dir(:len(la%dir) - 5) // '_summary.dat'
    end subroutine report_terminal
 
@@ -304,24 +304,18 @@ contains
       write (unit, '(a)') 'model: ' // trim(c%what) // ': ' // trim(c%compared) // ' changes' // trim(line)
       if (c%base /= out%chosen) write (unit, '(a)') 'model: ' // trim(c%what) // ': compared at run ' // &
          trim(runs(c%base)%name) // ', not at the run chosen: ' // trim(c%at)
-      line = 'model: ' // trim(c%what) // ': '
-      if (model_required(change, out)) then
-         line = trim(line) // ' more than the target ' // real_short(out%target) // ': the scene requires '
-         if (c%chosen_richer) then
-            line = trim(line) // ' the model of the run chosen (' // trim(c%richer) // ')'
-         else
-            line = trim(line) // ' the other model (' // trim(c%richer) // '): the results above are the ' // &
-                   'simpler model''s (' // trim(c%simpler) // '), and the fuller one moves them by more than the target'
-         end if
-      else
-         line = trim(line) // ' within the target ' // real_short(out%target) // ': '
-         if (c%chosen_richer) then
-            line = trim(line) // ' the simpler model (' // trim(c%simpler) // ') would do as well'
-         else
-            line = trim(line) // ' the model of the run chosen (' // trim(c%simpler) // ') does as well as the ' // &
-                   'fuller one (' // trim(c%richer) // ')'
-         end if
-      end if
+      line = 'model: ' // trim(c%what) // ': within the target ' // real_short(out%target) // ': '
+      if (model_required(change, out)) line = 'model: ' // trim(c%what) // ': more than the target ' // &
+         real_short(out%target) // ': the scene requires '
+      if (model_required(change, out) .and. c%chosen_richer) line = trim(line) // ' the model of the run chosen (' // &
+         trim(c%richer) // ')'
+      if (model_required(change, out) .and. .not. c%chosen_richer) line = trim(line) // ' the other model (' // &
+         trim(c%richer) // '): the results above are the simpler model''s (' // trim(c%simpler) // &
+         '), and the fuller one moves them by more than the target'
+      if (.not. model_required(change, out) .and. c%chosen_richer) line = trim(line) // ' the simpler model (' // &
+         trim(c%simpler) // ') would do as well'
+      if (.not. model_required(change, out) .and. .not. c%chosen_richer) line = trim(line) // &
+         ' the model of the run chosen (' // trim(c%simpler) // ') does as well as the fuller one (' // trim(c%richer) // ')'
       write (unit, '(a)') trim(line)
    end subroutine comparison_lines
 
