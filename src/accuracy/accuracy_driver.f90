@@ -1,16 +1,9 @@
-!> An accuracy run: `impact --accuracy TOL deck.nml` (or &accuracy target):
-!> each result with an estimate of its discretisation error, dt and the
-!> mesh refined the cheapest way until the results targeted are within TOL
-!> or the cap stops it (docs/ACCURACY.md).
-!>  1. the ladder: level 0 (ladder_mesh), dt halved on mesh 0, the mesh
-!>     refined at dt0, each run a child process (src/accuracy/accuracy_runs.f90);
-!>  2. the error of each axis and of each run (src/accuracy/accuracy_ladder.f90);
-!>  3. the cheapest run that meets the target (choose_run), else an axis
-!>     refined (refine), within the cap;
-!>  4. the models compared (src/accuracy/model_comparison.f90);
-!>  5. <prefix>_summary.dat, <prefix>_accuracy.dat (src/accuracy/accuracy_report.f90).
-!> A stop signal ends the runs going and keeps those done (the report with
-!> the errors reached); --restart continues each run from its restart point.
+!> An accuracy run, `impact --accuracy TOL deck.nml` (docs/ACCURACY.md): dt and
+!> the mesh refined the cheapest way until the results targeted are within TOL
+!> or the cap stops it. 1. the ladder's runs (accuracy_runs); 2. the errors
+!> (accuracy_ladder); 3. the cheapest run that meets the target, else an axis
+!> refined; 4. the models compared (model_comparison); 5. the report
+!> (accuracy_report). A stop signal keeps the runs done; --restart continues.
 !> Exit status 0 when met, exit_not_met (3) when not, 128 + N after signal N.
 module accuracy_driver
    use, intrinsic :: iso_fortran_env, only: int64, error_unit
@@ -18,7 +11,6 @@ module accuracy_driver
    use deck_schema, only: deck_t, strength_given, find_var
    use command_line, only: options_t
    use number_text, only: int_str, real_short
-   use scene_model, only: scene_t
    use plate_model, only: model_t, build_model
    use mesh, only: mesh_t
    use scene_settings, only: settings_t, scene_settings_of
@@ -29,41 +21,32 @@ module accuracy_driver
    use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, state_failed, &
       state_skipped, predicted_run_cost, ladder_name, error_scale
    use accuracy_ladder, only: axis_t, judged_t, choice_t, build_axis, judge_run, choose_run, final_run, ladder_run, &
-      time_partner, cross_needed, &
-      done_run, axis_time, axis_mesh
-   use accuracy_report, only: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
+      time_partner, cross_needed, done_run, axis_time, axis_mesh
+   use accuracy_report, only: accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
       report_terminal
    use model_comparison, only: compare_models
    implicit none
    private
-   public :: run_accuracy, exit_not_met, ladder_mesh, targeted_results
+   public :: run_accuracy, ladder_mesh, targeted_results
 
    !> Exit status of an accuracy run that did not meet its target.
    integer, parameter :: exit_not_met = 3
-   !> The files of the prefix an accuracy run claims: its own, then those
-   !> of a plain run, which it removes (the run chosen's are in <prefix>_acc/).
+   !> The files of the prefix an accuracy run claims: its own, then a plain run's, removed.
    character(len=*), parameter :: own_files(6) = [character(len=16) :: '_accuracy.dat', '_summary.dat', &
       '_history.dat', '.h5', '.xdmf', '.restart']
-   !> The ladder's limits: time levels (dt0/2^10), mesh levels, the smallest
-   !> dt and the largest element count of the deck's schema.
+   !> The ladder's limits: time levels, mesh levels, the smallest dt, the most elements.
    integer, parameter :: max_time_levels = 11, max_mesh_levels = 12, max_elements = 10000
    real(dp), parameter :: min_dt = 1.0e-10_dp
-   !> The cap when the deck gives none, in runs of level 0: the first
-   !> three levels of both axes cost about 25 to 60 of them (steps 1 + 2 + 4,
-   !> meshes about 4 and 13, the model comparisons), which leaves room for
-   !> a level or two more on each axis, and no more (a user who wants more
-   !> sets &accuracy max_cpu_s; the status says what the next run costs).
+   !> The cap when the deck gives none, in runs of level 0 (docs/ACCURACY.md: why).
    integer, parameter :: default_cap_times = 100
    !> Levels of each axis at the start.
    integer, parameter :: first_levels = 3
-   !> Grading of level 0's mesh when the ladder grades it (ladder_mesh) (-).
+   !> Grading of level 0's mesh when the ladder grades it (-).
    real(dp), parameter :: ladder_grading = 1.25_dp
 
 contains
 
-   !> The accuracy run of the deck (module header). stat /= 0 with errmsg
-   !> on an error (bad use, a run that failed); exit_code 0 when the target
-   !> was met, exit_not_met otherwise.
+   !> The accuracy run of the deck (module header).
    subroutine run_accuracy(opts, deck, unit, exit_code, stat, errmsg)
       type(options_t), intent(in) :: opts           !< the command line (the deck's path, the --set values)
       type(deck_t), intent(in) :: deck              !< the deck, as read and checked
@@ -73,28 +56,20 @@ contains
       character(len=*), intent(inout) :: errmsg     !< what failed
       type(results_claim_t) :: claim
       type(launcher_t) :: la
-      type(scene_t) :: scene
       type(run_t), allocatable :: runs(:)
       type(axis_t) :: tx, mx
       type(accuracy_outcome_t) :: out
-      type(comparison_t) :: cmp(2)
       type(deck_t) :: base                          ! the deck with level 0's mesh (ladder_mesh)
       type(deck_t) :: claimed                       ! the deck, overwriting with --restart
       integer(int64) :: wall0, wall1, rate
       integer :: i, ignored
-
       exit_code = 1
       call system_clock(wall0, rate)
-      if (deck%analysis_kind /= 'impact') then
-         stat = 1
-         errmsg = deck%source // ": &accuracy: target needs &analysis kind = 'impact'"
-         return
-      end if
-      if (len(opts%deck_path) == 0) then
-         stat = 1
-         errmsg = '--accuracy: give the deck as a file (its runs read it again), not on standard input'
-         return
-      end if
+      stat = 1
+      if (len(opts%deck_path) == 0) errmsg = '--accuracy: give the deck as a file (its runs read it again), ' // &
+         'not on standard input'
+      if (deck%analysis_kind /= 'impact') errmsg = deck%source // ": &accuracy: target needs &analysis kind = 'impact'"
+      if (deck%analysis_kind /= 'impact' .or. len(opts%deck_path) == 0) return
       call pass_stops_to_children()                 ! a stop ends the runs going, keeps those done
       claimed = deck
       claimed%overwrite = deck%overwrite .or. opts%restart
@@ -104,15 +79,22 @@ contains
       do i = 3, size(own_files)                     ! a plain run's files: not the run chosen's
          call remove_file(deck%prefix // trim(own_files(i)), ignored)
       end do
-      call set_up(opts, deck, unit, base, la, scene, runs, stat, errmsg)
+      call set_up(opts, deck, unit, base, la, runs, stat, errmsg)
       if (stat == 0) call climb(base, la, runs, tx, mx, out, stat, errmsg)
-      if (stat == 0 .and. stop_caught() == 0) call compare_models(base, scene, la, runs, tx, mx, out, cmp, stat, errmsg)
-      if (stat == 0 .and. stop_caught() /= 0) call stopped_outcome(out, cmp)
+      if (stat == 0 .and. stop_caught() == 0) call compare_models(base, la, runs, tx, mx, out, stat, errmsg)
+      if (stat == 0 .and. stop_caught() /= 0) then
+         out%status = 'stopped by signal ' // int_str(stop_caught()) // ': the results carry the errors reached; ' // &
+                      'impact --restart continues the ladder'
+         out%met = .false.
+         out%stop_signal = stop_caught()
+         out%cmp%what = ['theory    ', 'bend_twist']
+         where (out%cmp%run == 0 .and. len_trim(out%cmp%note) == 0) out%cmp%note = 'the run was stopped'
+      end if
       call system_clock(wall1)
       out%wall_s = real(wall1 - wall0, dp)/real(rate, dp)
       if (stat == 0 .and. out%chosen > 0) call write_accuracy_table(deck, runs, tx, mx, out, stat, errmsg)
-      if (stat == 0 .and. out%chosen > 0) call write_accuracy_summary(deck, la, runs, out, cmp, stat, errmsg)
-      if (stat == 0 .and. out%chosen > 0) call report_terminal(unit, la, runs, out, cmp)
+      if (stat == 0 .and. out%chosen > 0) call write_accuracy_summary(deck, la, runs, out, stat, errmsg)
+      if (stat == 0 .and. out%chosen > 0) call report_terminal(unit, la, runs, out)
       call release_results(claim, discard=stat /= 0 .or. out%chosen == 0)
       if (stat == 0) exit_code = merge(0, exit_not_met, out%met)
       if (stop_caught() /= 0) exit_code = 128 + stop_caught()
@@ -120,9 +102,7 @@ contains
          int_str(stop_caught()) // ' before the first run of the ladder ended: no results written'
    end subroutine run_accuracy
 
-   !> The claim of a run killed before it wrote anything (kill -9): the
-   !> file `path` empty and locked by no process; removed, so that it
-   !> blocks neither a rerun nor --restart.
+   !> Removes the claim of a run killed before it wrote anything (`path` empty, unlocked).
    subroutine take_dead_claim(path)
       character(len=*), intent(in) :: path          !< the first file of the claim
       type(file_lock_t) :: lock
@@ -136,33 +116,13 @@ contains
       call unlock_file(lock)
    end subroutine take_dead_claim
 
-   !> The outcome of a run stopped by a signal: its status, and the models
-   !> not compared.
-   subroutine stopped_outcome(out, cmp)
-      type(accuracy_outcome_t), intent(inout) :: out   !< the outcome
-      type(comparison_t), intent(inout) :: cmp(2)   !< the comparisons
-      integer :: i
-      out%status = 'stopped by signal ' // int_str(stop_caught()) // ': the results carry the errors reached; ' // &
-                   'impact --restart continues the ladder'
-      out%met = .false.
-      out%stop_signal = stop_caught()
-      cmp%what = ['theory    ', 'bend_twist']
-      do i = 1, 2
-         if (cmp(i)%run == 0 .and. len_trim(cmp(i)%note) == 0) cmp(i)%note = 'the run was stopped'
-      end do
-   end subroutine stopped_outcome
-
-   !> The launcher (the program, the CPUs, the cap, the theory of every
-   !> run, the strain gauge of the deck's mesh), the scene of the deck's
-   !> model (its domain, D16 and D26), level 0's mesh (ladder_mesh) and
-   !> the first levels of both axes planned.
-   subroutine set_up(opts, deck, unit, base, la, scene, runs, stat, errmsg)
+   !> The launcher, the scene of the deck's model, level 0's mesh and the first levels planned.
+   subroutine set_up(opts, deck, unit, base, la, runs, stat, errmsg)
       type(options_t), intent(in) :: opts           !< the command line
       type(deck_t), intent(in) :: deck              !< the deck
       integer, intent(in) :: unit                   !< standard output
       type(deck_t), intent(out) :: base             !< the deck with level 0's mesh
       type(launcher_t), intent(out) :: la           !< the launcher
-      type(scene_t), intent(out) :: scene           !< the scene of the deck's model
       type(run_t), allocatable, intent(out) :: runs(:)   !< the runs planned
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
@@ -170,29 +130,23 @@ contains
       character(len=msg_len) :: iomsg
       character(len=:), allocatable :: why, cap
       integer :: l
-
-      ! -- the model of the deck's settings: the theory 'auto' picks, pinned for every run
       call build_model(deck, model, stat, errmsg)
       if (stat /= 0) return
-      scene = model%scene
+      la%scene = model%scene
       la%exe = program_path()
       la%deck_path = opts%deck_path
       la%user_settings = opts%settings
       la%dir = deck%prefix // '_acc/'
-      la%theory = scene%theory
+      la%theory = la%scene%theory
       la%every_step = strength_given(deck)
       la%restart = opts%restart
       la%cpus = usable_cpus()
-      la%cap = huge(1.0_dp)
-      if (deck%given(find_var('accuracy', 'max_cpu_s'))) then
-         la%cap = deck%accuracy_max_cpu_s
-      else
-         la%cap_times = default_cap_times
-      end if
+      if (deck%given(find_var('accuracy', 'max_cpu_s'))) la%cap = deck%accuracy_max_cpu_s
+      if (.not. deck%given(find_var('accuracy', 'max_cpu_s'))) la%cap_times = default_cap_times
       la%gauge = model%gauge_xy                     ! the strain at one point on every mesh
       la%unit = unit
       base = deck
-      la%impact_element = scene%element_size
+      la%impact_element = la%scene%element_size
       call ladder_mesh(deck, model%msh, base, la%impact_element, why)
       la%n0 = base%nx*base%ny
       call make_directories(la%dir(:len(la%dir) - 1), stat, iomsg)
@@ -204,7 +158,7 @@ contains
       if (la%cap_times == 0) cap = real_short(la%cap) // ' s of cpu'
       write (unit, '(a)') 'accuracy: target ' // real_short(deck%accuracy_target) // ' (relative), cap ' // &
          cap // ', ' // int_str(la%cpus) // ' runs at a time; theory ' // &
-         trim(la%theory) // ', domain ' // trim(scene%domain) // '; runs in ' // la%dir
+         trim(la%theory) // ', domain ' // trim(la%scene%domain) // '; runs in ' // la%dir
       if (len(why) > 0) write (unit, '(a)') 'accuracy: ' // why
       allocate (runs(0))
       do l = 0, first_levels - 1
@@ -213,20 +167,10 @@ contains
       end do
    end subroutine set_up
 
-   !> Level 0's mesh: the deck's, unless the deck leaves &mesh grading to
-   !> the program (does not write it) and its element at the impact point
-   !> is larger than the Hertz contact radius a of the scene's estimate
-   !> (src/model/scene_settings.f90: against a rigid plate, an upper
-   !> bound). Then the mesh is graded by ladder_grading away from the
-   !> impact point, with the deck's counts raised until that element is
-   !> no larger than a along each side (counts that need no raising: the
-   !> least grading that brings the element to a): the results at and near the
-   !> contact (the back-face strain, the peak force) converge once the
-   !> disc is resolved, which uniform meshes reach only at many times the
-   !> cost (on the paper's clamped plate the strain at its gauge changed
-   !> by 1.4 % between 46 x 30 and 68 x 46 uniform quarters, 140 s of cpu,
-   !> and by 0.006 % between 32 x 27 and 47 x 41 graded by 1.10 and 1.07).
-   !> The family is then refined as one (plan).
+   !> Level 0's mesh: the deck's, unless the deck gives no &mesh grading and its element at
+   !> the impact point is larger than the Hertz radius a (scene_settings' estimate): then graded
+   !> by ladder_grading, the counts raised until that element is at most a (or, with no raising,
+   !> the least grading that does). Why: docs/PERFORMANCE.md, level 0 graded.
    subroutine ladder_mesh(deck, msh, base, impact_element, why)
       type(deck_t), intent(in) :: deck              !< the deck
       type(mesh_t), intent(in) :: msh               !< the deck's mesh
@@ -236,13 +180,11 @@ contains
       type(settings_t) :: est
       real(dp) :: a, side(2), counted(2), g, lo
       integer :: n(2), d, it
-
       why = ''
       est = scene_settings_of(deck)
       a = est%contact_radius
       if (deck%given(find_var('mesh', 'grading')) .or. maxval(impact_element) <= a) return
-      ! each direction: the longer side from the impact point, and the share of
-      ! the count across it (the deck's mesh is uniform: its grading is 1)
+      ! each direction: the longer side from the impact point, the share of the count across it
       side = [max(msh%x1 - msh%x_impact, msh%x_impact - msh%x0), max(msh%y1 - msh%y_impact, msh%y_impact - msh%y0)]
       counted = real(nint(side/impact_element), dp)/real([deck%nx, deck%ny], dp)
       ! the counts that bring the element at the impact point to a with ladder_grading
@@ -272,8 +214,7 @@ contains
          ' mm; the deck''s ' // int_str(deck%nx) // ' x ' // int_str(deck%ny) // ' does not resolve it, and ' // &
          'gives no &mesh grading)'
    contains
-      !> The sides of the element at the impact point with grading gg and
-      !> the counts n: side (g - 1)/(g^m - 1), m = counted n across the side.
+      !> The sides of the element at the impact point with grading gg: side (g - 1)/(g^m - 1).
       pure function first_element(gg) result(e)
          real(dp), intent(in) :: gg
          real(dp) :: e(2)
@@ -281,11 +222,8 @@ contains
       end function first_element
    end subroutine ladder_mesh
 
-   !> Adds the ladder run (k, j) to the runs (unless it is there; one the
-   !> cap turned away is planned again: the costs may have changed). A graded
-   !> mesh is refined as one family: the grading g0^(nx0/nx), so that the
-   !> ratio of the largest element to the smallest stays, and every
-   !> element shrinks by about the factor of the counts.
+   !> Plans the ladder run (k, j) unless it is there (one the cap turned away: again). A graded
+   !> mesh is refined as one family: the grading g0^(nx0/nx) keeps its largest over its smallest.
    subroutine plan(runs, deck, la, k, j)
       type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
       type(deck_t), intent(in) :: deck              !< the deck (level 0)
@@ -300,9 +238,7 @@ contains
       end if
       r%k = k;  r%j = j
       r%name = ladder_name(k, j)
-      r%role = 'combined'
-      if (j == 0) r%role = 'time'
-      if (k == 0 .and. j > 0) r%role = 'mesh'
+      r%role = merge('time    ', merge('mesh    ', 'combined', k == 0), j == 0)
       r%dt = deck%dt/2.0_dp**k
       r%nx = mesh_count(deck%nx, deck%accuracy_mesh_factor, j)
       r%ny = mesh_count(deck%ny, deck%accuracy_mesh_factor, j)
@@ -312,8 +248,7 @@ contains
       runs = [runs, r]
    end subroutine plan
 
-   !> The size of the first of n elements graded by g (s, g s, g^2 s, ...)
-   !> over a unit length (src/model/mesh.f90, graded_offsets).
+   !> The size of the first of n elements graded by g over a unit length (mesh, graded_offsets).
    pure real(dp) function first_size(n, g) result(s)
       integer, intent(in) :: n                      !< elements
       real(dp), intent(in) :: g                     !< ratio of successive sizes
@@ -324,8 +259,7 @@ contains
       end if
    end function first_size
 
-   !> Elements along one side at mesh level j: n0 factor^j rounded, each
-   !> level at least one more than the last.
+   !> Elements along one side at mesh level j: n0 factor^j rounded, at least one more a level.
    pure integer function mesh_count(n0, factor, j) result(n)
       integer, intent(in) :: n0                     !< level 0's count
       real(dp), intent(in) :: factor                !< &accuracy mesh_factor
@@ -337,14 +271,9 @@ contains
       end do
    end function mesh_count
 
-   !> Steps 1-3 of the module header: runs the planned runs, estimates,
-   !> chooses, refines, until the target is met, the cap is reached or the
-   !> ladder cannot be refined; the outcome names the run whose results
-   !> are given. The cap is reached when the candidate that would meet the
-   !> target does not fit it, or when a pass made no run after the cap
-   !> turned one away: every pass that goes on has made a run, so the
-   !> climb ends (a run turned away while dearer ones were predicted to
-   !> go may be planned again once their real cost is known).
+   !> Steps 1-3: runs, estimates, chooses, refines until the target is met, the cap is reached
+   !> (the candidate does not fit it, or a pass made no run after the cap turned one away) or
+   !> the ladder cannot be refined.
    subroutine climb(deck, la, runs, tx, mx, out, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
       type(launcher_t), intent(inout) :: la         !< the launcher
@@ -357,7 +286,6 @@ contains
       type(choice_t) :: c
       logical :: more, ran
       character(len=224) :: why
-
       out%target = deck%accuracy_target
       call targeted_results(deck, out%targeted, stat, errmsg)
       if (stat /= 0) return
@@ -367,14 +295,22 @@ contains
          if (stat /= 0) return
          ran = count(runs%state == state_done) > done_before
          if (stop_caught() /= 0 .and. runs(1)%state /= state_done) return   ! out%chosen 0: nothing to give
-         call check_failures(runs, la, stat, errmsg)
-         if (stat /= 0) return
+         i = findloc(runs%state, state_failed, dim=1)
+         if (i > 0) then
+            stat = 1
+            errmsg = 'accuracy: the run ' // trim(runs(i)%name) // ' (dt ' // real_short(runs(i)%dt) // ' s, mesh ' // &
+               int_str(runs(i)%nx) // ' x ' // int_str(runs(i)%ny) // ') failed, exit status ' // &
+               int_str(runs(i)%exit_code) // ': ' // trim(runs(i)%status) // '; see ' // la%dir // trim(runs(i)%name) // &
+               '.log'
+            return
+         end if
          if (runs(1)%state /= state_done) then
             stat = 1
             errmsg = 'accuracy: the first run did not finish within &accuracy max_cpu_s = ' // real_short(la%cap) // ' s'
             return
          end if
-         call contact_radii(deck, runs)
+         where (runs%state == state_done .and. runs%has(1)) runs%contact_radius = &   ! Hertz: sqrt(R (F/k)^(2/3))
+            sqrt(0.5_dp*deck%diameter*(max(runs%q(1), 0.0_dp)/deck%k)**(2.0_dp/3.0_dp))
          out%estimated = runs(1)%has
          out%estimated(nq) = out%estimated(nq) .and. strength_given(deck)
          out%targeted = out%targeted .and. out%estimated
@@ -384,13 +320,11 @@ contains
          call say_errors(la%unit, runs, tx, mx, out)
          c = choose_run(runs, la, tx, mx, out%target, out%targeted, can_halve_dt(deck, tx))
          k = c%k;  j = c%j
-         i = ladder_run(runs, k, j)
-         if (c%found .and. i > 0) then
-            if (runs(i)%state == state_done .and. time_partner(runs, k, j) < 0 .and. .not. cross_needed(runs, k, j)) then
-               out%met = .true.
-               out%status = 'met'
-               exit
-            end if
+         if (c%found .and. done_run(runs, k, j) .and. time_partner(runs, k, j) < 0 .and. &
+             .not. cross_needed(runs, k, j)) then
+            out%met = .true.
+            out%status = 'met'
+            exit
          end if
          if (c%found) then                          ! within the cap: the chosen run and its partner
             partner = time_partner(runs, k, j)
@@ -416,8 +350,7 @@ contains
       out%jd = judge_run(runs, tx, mx, k, j, out%target, out%targeted)
    end subroutine climb
 
-   !> One line of progress: the relative errors of the results targeted,
-   !> of the best run done so far (final_run).
+   !> One line of progress: the relative errors targeted of the best run so far.
    subroutine say_errors(unit, runs, tx, mx, out)
       integer, intent(in) :: unit                   !< standard output
       type(run_t), intent(in) :: runs(:)            !< the runs
@@ -440,11 +373,8 @@ contains
       flush (unit)
    end subroutine say_errors
 
-   !> The status of a climb stopped at the cap (climb): the run that would
-   !> come next, the candidate that meets the target beyond the cap
-   !> (beyond: (k, j) = kj, its cost with its time partner's) or else the
-   !> cheapest run the cap turned away, with its predicted cpu time and the
-   !> total it would bring, so that a user sees what a larger max_cpu_s buys.
+   !> The status at the cap: the run that would come next (the candidate beyond the cap, else the
+   !> cheapest the cap turned away), its predicted cpu time and the total it would bring.
    function cap_status(runs, la, mx, choice) result(status)
       type(run_t), intent(in) :: runs(:)            !< the runs
       type(launcher_t), intent(in) :: la            !< the launcher (cost model, cap, spent)
@@ -452,12 +382,11 @@ contains
       type(choice_t), intent(in) :: choice          !< choose_run's (beyond the cap: the candidate, its cost)
       character(len=:), allocatable :: status
       character(len=:), allocatable :: what
-      real(dp) :: c, ci, cost
-      integer :: i, pick, partner, kj(2)
-      kj = choice%beyond_kj;  cost = choice%beyond_cost
+      real(dp) :: c, cost(size(runs))
+      integer :: pick, partner, kj(2)
+      kj = choice%beyond_kj
       if (choice%beyond_cap .and. kj(2) >= 0) then
-         ! the candidate, unless it is done, and its time partner, when it needs one (choose_run's cost)
-         c = cost
+         c = choice%beyond_cost
          what = ''
          if (.not. done_run(runs, kj(1), kj(2))) what = level_text(kj(1))
          partner = time_partner(runs, kj(1), kj(2))
@@ -468,28 +397,21 @@ contains
          what = what // ' on the mesh ' // int_str(runs(mx%run(kj(2) + 1))%nx) // ' x ' // &
                 int_str(runs(mx%run(kj(2) + 1))%ny)
       else
-         pick = 0;  c = huge(1.0_dp)
-         do i = 1, size(runs)
-            if (runs(i)%state /= state_skipped) cycle
-            ci = predicted_run_cost(runs(i), la)
-            if (ci < c) then
-               pick = i;  c = ci
-            end if
-         end do
+         cost = merge(predicted_run_cost(runs, la), huge(1.0_dp), runs%state == state_skipped)
+         pick = minloc(cost, mask=cost < huge(1.0_dp), dim=1)
          if (pick == 0) then
             status = 'cap reached: the next run would take the cpu time of all runs past &accuracy max_cpu_s = ' // &
                      real_short(la%cap) // ' s; the results carry the errors reached'
             return
          end if
+         c = cost(pick)
          what = trim(runs(pick)%name) // ' (dt ' // real_short(runs(pick)%dt*1.0e6_dp) // ' us) on the mesh ' // &
                 int_str(runs(pick)%nx) // ' x ' // int_str(runs(pick)%ny)
       end if
       status = 'cap reached: next, ' // what // ', predicted at ' // real_short(c) // ' s of cpu, ' // &
                real_short(la%spent + c) // ' s in all, past &accuracy max_cpu_s = ' // real_short(la%cap) // &
                ' s; the results carry the errors reached'
-
    contains
-
       !> 't<k>_m<j> (dt ... us)': time level k on the candidate's mesh.
       function level_text(k) result(text)
          integer, intent(in) :: k                  !< time level
@@ -498,11 +420,8 @@ contains
       end function level_text
    end function cap_status
 
-   !> The results that must meet the target: &accuracy results, 'default'
-   !> (or nothing: those that converge smoothly, the peak force, the largest
-   !> deflection, the contact duration and with &strength the largest
-   !> failure index), 'all', or summary keys separated by blanks, commas or
-   !> '+' (on the command line: --set accuracy.results=peak_force_N+max_deflection_mm).
+   !> The results that must meet the target: &accuracy results, 'default' (or nothing), 'all',
+   !> or summary keys separated by blanks, commas or '+'.
    subroutine targeted_results(deck, targeted, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
       logical, intent(out) :: targeted(nq)          !< which of result_keys
@@ -516,8 +435,8 @@ contains
          if (rest(cut:cut) == ',' .or. rest(cut:cut) == '+') rest(cut:cut) = ' '
       end do
       targeted = trim(adjustl(rest)) == 'all'
-      if (trim(adjustl(rest)) == 'default' .or. len_trim(rest) == 0) targeted = [.true., .true., .true., .false., &
-                                                                                  .false., .true.]
+      if (trim(adjustl(rest)) == 'default' .or. len_trim(rest) == 0) &
+         targeted = [.true., .true., .true., .false., .false., .true.]
       if (any(targeted)) return
       do
          rest = trim(adjustl(rest))
@@ -538,41 +457,8 @@ contains
       end do
    end subroutine targeted_results
 
-   !> The Hertz contact radius at each run's peak force, a = sqrt(R alpha),
-   !> alpha = (F/k)^(2/3) (the loading law, eq. 11).
-   pure subroutine contact_radii(deck, runs)
-      type(deck_t), intent(in) :: deck              !< the deck (k, the nose's diameter)
-      type(run_t), intent(inout) :: runs(:)         !< the runs
-      integer :: i
-      do i = 1, size(runs)
-         if (runs(i)%state /= state_done .or. .not. runs(i)%has(1)) cycle
-         runs(i)%contact_radius = sqrt(0.5_dp*deck%diameter*(max(runs(i)%q(1), 0.0_dp)/deck%k)**(2.0_dp/3.0_dp))
-      end do
-   end subroutine contact_radii
-
-   !> A ladder run that failed (diverged, ...) stops the accuracy run:
-   !> its status and its log are named.
-   subroutine check_failures(runs, la, stat, errmsg)
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      type(launcher_t), intent(in) :: la            !< the launcher
-      integer, intent(out) :: stat                  !< 0 when none failed
-      character(len=*), intent(inout) :: errmsg     !< the first failure
-      integer :: i
-      stat = 0
-      i = findloc(runs%state, state_failed, dim=1)
-      if (i == 0) return
-      stat = 1
-      errmsg = 'accuracy: the run ' // trim(runs(i)%name) // ' (dt ' // real_short(runs(i)%dt) // ' s, mesh ' // &
-         int_str(runs(i)%nx) // ' x ' // int_str(runs(i)%ny) // ') failed, exit status ' // &
-         int_str(runs(i)%exit_code) // ': ' // trim(runs(i)%status) // '; see ' // la%dir // trim(runs(i)%name) // '.log'
-   end subroutine check_failures
-
-   !> No run meets the target: refine the axis whose part of the error of
-   !> the finest run (k, j) is more than half the target for some result
-   !> (the larger part when neither is); more is false when neither axis
-   !> can be refined, or when the mesh would be refined only for a time
-   !> read off the steps whose mesh part is its step dt0, which no mesh
-   !> lowers (why says so: a smaller dt in the deck would).
+   !> No run meets the target: refines the axis whose part of the finest run's error is over half
+   !> the target (else the larger part); not the mesh for a time read off dt0's steps (why).
    subroutine refine(deck, la, runs, tx, mx, out, more, why)
       type(deck_t), intent(in) :: deck             !< the deck
       type(launcher_t), intent(in) :: la           !< the launcher (the element at the impact point)
@@ -585,7 +471,6 @@ contains
       logical :: time, mesh, can_time, can_mesh, step_bound(nq)
       real(dp) :: allowed, reference(nq)
       integer :: iq
-
       jd = judge_run(runs, tx, mx, tx%levels - 1, mx%levels - 1, out%target, out%targeted)
       reference = error_scale(jd%value)
       time = .false.;  mesh = .false.;  step_bound = .false.
@@ -595,7 +480,6 @@ contains
          allowed = out%target*reference(iq)
          if (jd%err(iq) <= allowed) cycle
          if (jd%err_time(iq) > 0.5_dp*allowed) time = .true.
-         ! a time read off the steps whose mesh part is the mesh axis's step
          step_bound(iq) = mx%finest(iq)%floor > 0.5_dp*allowed
          if (jd%err_mesh(iq) > 0.5_dp*allowed .and. .not. step_bound(iq)) mesh = .true.
          if (jd%err_time(iq) <= 0.5_dp*allowed .and. jd%err_mesh(iq) <= 0.5_dp*allowed) then
@@ -621,7 +505,7 @@ contains
          ' us, cannot show it to the target; give a smaller dt in the deck'
    end subroutine refine
 
-   !> True when the time axis may have one more level (the ladder's limits).
+   !> True when the time axis may have one more level.
    pure logical function can_halve_dt(deck, tx)
       type(deck_t), intent(in) :: deck             !< the deck (dt0)
       type(axis_t), intent(in) :: tx               !< the time axis

@@ -1,35 +1,23 @@
-!> The ladder of an accuracy run: the time axis (dt0/2^k on mesh 0, runs
-!> (k, 0)), the mesh axis (nx, ny times mesh_factor^j at dt0, runs (0, j))
-!> and the runs that combine them, (k, j). Each axis gives the error of
-!> every level (src/accuracy/error_estimate.f90): time at Newmark's order 2
-!> (range 1.5-2.7), mesh at no order above 2 trusted (range 1-2.5, h =
-!> 1/sqrt(nx ny)); a time read off the steps has the step added; while the
-!> element at the impact point is larger than the Hertz radius, the log
-!> tail bounds the mesh error from below. The error of a run (k, j): its
-!> time level's plus its mesh level's plus the interaction, |q(k,j) -
-!> q(k,0) - q(0,j) + q(0,0)|, no less than the largest measured; on a finer
-!> mesh its time error measured there too (time_on_mesh, time_partner).
-!> judge_run gives them; choose_run the cheapest run within the target and
-!> the cap, the next time level on mesh 0 among the candidates
-!> (judge_next_time).
+!> The ladder of an accuracy run: the time axis (dt0/2^k on mesh 0, runs (k, 0)), the mesh
+!> axis (nx, ny times mesh_factor^j at dt0, runs (0, j)) and the runs that combine them.
+!> Each axis gives the error of every level (error_estimate); the error of a run (k, j) is
+!> its time level's plus its mesh level's plus the interaction |q(k,j) - q(k,0) - q(0,j) +
+!> q(0,0)|, no less than the largest measured; on a finer mesh its time error is measured
+!> there too (time_on_mesh). choose_run gives the cheapest run within the target and the cap.
 module accuracy_ladder
    use kinds, only: dp
    use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_grid_index, &
-      continued_value
+      continued_value, last_difference
    use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, predicted_run_cost, &
-      error_scale
-   use history_reader, only: maxima_t
+      error_scale, is_ladder, maxima_t
    implicit none
    private
    public :: axis_t, judged_t, choice_t, build_axis, judge_run, choose_run, final_run, ladder_run, time_partner, &
-             cross_needed, &
-             done_run, peak_spread, &
-      axis_time, axis_mesh, time_results
+             cross_needed, done_run, peak_spread, axis_time, axis_mesh
 
    !> The two axes.
    integer, parameter :: axis_time = 1, axis_mesh = 2
-   !> The results that are times read off the steps (result_keys of
-   !> src/accuracy/accuracy_runs.f90): the contact's duration, the time of the peak.
+   !> The results that are times read off the steps: the contact's duration, the time of the peak.
    logical, parameter :: time_results(nq) = [.false., .false., .true., .true., .false., .false.]
    !> Orders: the method's, and the asymptotic range, of each axis.
    real(dp), parameter :: order_theory(2) = [2.0_dp, 2.0_dp], order_low(2) = [1.5_dp, 1.0_dp], &
@@ -74,14 +62,12 @@ contains
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< time and mesh level
       do i = 1, size(runs)
-         if (runs(i)%k == k .and. runs(i)%j == j .and. runs(i)%role /= 'theory' .and. &
-             runs(i)%role /= 'bend_twist') return
+         if (runs(i)%k == k .and. runs(i)%j == j .and. is_ladder(runs(i))) return
       end do
       i = 0
    end function ladder_run
 
-   !> The axis (axis_time or axis_mesh) from the runs done, with the error
-   !> of each level of each active result.
+   !> The axis (axis_time or axis_mesh) from the runs done, the error of each level.
    subroutine build_axis(runs, which, active, ax, mesh, first)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: which                !< axis_time or axis_mesh
@@ -91,22 +77,16 @@ contains
       integer, intent(in), optional :: first      !< the time axis from this time level (0 if absent)
       integer :: l, i, iq, j0, k0
       real(dp) :: floor, tail
-      j0 = 0
+      j0 = 0;  k0 = 0
       if (present(mesh)) j0 = mesh
-      k0 = 0
       if (present(first)) k0 = first
       allocate (ax%run(0), ax%h(0))
       l = 0
       do
+         if (.not. done_run(runs, merge(k0 + l, 0, which == axis_time), merge(j0, l, which == axis_time))) exit
          i = ladder_run(runs, merge(k0 + l, 0, which == axis_time), merge(j0, l, which == axis_time))
-         if (i == 0) exit
-         if (runs(i)%state /= state_done) exit
          ax%run = [ax%run, i]
-         if (which == axis_time) then
-            ax%h = [ax%h, runs(i)%dt]
-         else
-            ax%h = [ax%h, 1.0_dp/sqrt(real(runs(i)%nx, dp)*real(runs(i)%ny, dp))]
-         end if
+         ax%h = [ax%h, merge(runs(i)%dt, 1.0_dp/sqrt(real(runs(i)%nx, dp)*real(runs(i)%ny, dp)), which == axis_time)]
          l = l + 1
       end do
       ax%levels = l
@@ -115,9 +95,7 @@ contains
       do iq = 1, nq
          if (.not. active(iq)) cycle
          floor = 0.0_dp
-         if (time_results(iq)) then
-            if (on_steps(runs(ax%run)%q(iq), runs(ax%run)%dt)) floor = runs(ax%run(l))%dt*1.0e6_dp   ! in us
-         end if
+         if (time_results(iq) .and. on_steps(runs(ax%run)%q(iq), runs(ax%run)%dt)) floor = runs(ax%run(l))%dt*1.0e6_dp
          ax%finest(iq) = ladder_estimate(ax%h, runs(ax%run)%q(iq), order_theory(which), order_low(which), &
                                          order_high(which), floor)
          if (which == axis_mesh) then
@@ -128,24 +106,11 @@ contains
                ax%finest(iq)%how = 'contact disc unresolved: ln tail'
             end if
          end if
-         do i = 1, l
-            ax%err(i, iq) = level_error(runs(ax%run)%q(iq), i, ax%finest(iq)%error)
-         end do
+         ax%err(:, iq) = [(level_error(runs(ax%run)%q(iq), i, ax%finest(iq)%error), i = 1, l)]
       end do
    end subroutine build_axis
 
-   !> The larger of the last two differences of a ladder.
-   pure real(dp) function last_difference(q)
-      real(dp), intent(in) :: q(:)                !< the result at each level
-      integer :: n
-      n = size(q)
-      last_difference = 0.0_dp
-      if (n >= 2) last_difference = abs(q(n - 1) - q(n))
-      if (n >= 3) last_difference = max(last_difference, abs(q(n - 2) - q(n - 1)))
-   end function last_difference
-
-   !> True when every time (us) is a whole number of its run's step (s):
-   !> a time read off the steps.
+   !> True when every time (us) is a whole number of its run's step (s).
    pure logical function on_steps(t_us, dt)
       real(dp), intent(in) :: t_us(:)             !< the times (us)
       real(dp), intent(in) :: dt(:)               !< the steps of their runs (s)
@@ -154,14 +119,9 @@ contains
       on_steps = all(abs(steps - anint(steps)) <= 1.0e-6_dp*max(1.0_dp, abs(steps)))
    end function on_steps
 
-   !> The results of run (k, j) and their errors; the interaction of the
-   !> step and the mesh no less than the largest measured (a mesh error
-   !> taken at dt0 need not hold at a small step: the peak force of a
-   !> light impactor on a thin plate moved by -0.4 % with the mesh at dt0,
-   !> +1.4 % at dt0/16); for a run not done, its
-   !> results predicted as q(k,0) + q(0,j) - q(0,0), and its time error on a finer mesh no less
-   !> than the one measured there at dt x 2 over 2^2 (the method's order);
-   !> for k = tx%levels (j = 0), the next time level (judge_next_time).
+   !> The results of run (k, j) and their errors, the interaction no less than the largest
+   !> measured (docs/PERFORMANCE.md); a run not done predicted as q(k,0) + q(0,j) - q(0,0), its
+   !> time error no less than its mesh's at 2 dt over 2^2; k = tx%levels: judge_next_time.
    function judge_run(runs, tx, mx, k, j, target, active) result(jd)
       type(run_t), intent(in) :: runs(:)          !< the runs
       type(axis_t), intent(in) :: tx, mx          !< the time and mesh axes
@@ -172,16 +132,12 @@ contains
       integer :: i, i0, ik, ij, im
       real(dp) :: below(nq)
       logical :: measured, known, two
-
       if (k >= tx%levels) then                     ! the next time level, not yet planned
          jd = judge_next_time(runs, tx, mx, target, active)
          return
       end if
       i0 = tx%run(1);  ik = tx%run(k + 1);  ij = mx%run(j + 1)
-      i = ladder_run(runs, k, j)
-      if (i > 0) then
-         if (runs(i)%state /= state_done) i = 0
-      end if
+      i = merge(ladder_run(runs, k, j), 0, done_run(runs, k, j))
       if (i > 0) then
          jd%value = runs(i)%q
          jd%err_cross = max(abs(runs(i)%q - runs(ik)%q - runs(ij)%q + runs(i0)%q), largest_cross(runs, tx, mx))
@@ -203,16 +159,9 @@ contains
       call weigh(jd, runs(im), target, active, measured)
    end function judge_run
 
-   !> The next time level on mesh 0, (tx%levels, 0), before it is planned:
-   !> for a result whose time axis converges monotonically at an observed
-   !> order p no faster than its range (in range, or slower), its value
-   !> continued by that order (d/2^p past the finest, d its last
-   !> difference, for dt halved), and its error
-   !> what the axis's rule would give with that level added (its floor,
-   !> the step, halved); for any other result the finest level's value
-   !> and error (a safe bound predicts no gain). Its mesh error mesh 0's,
-   !> the interaction the largest measured. The value: continued_value of
-   !> src/accuracy/error_estimate.f90.
+   !> The next time level on mesh 0 before it is planned: a result converging at an order p
+   !> no faster than its range continued by p (continued_value), its error the axis's rule with
+   !> that level added; any other result the finest level's (a safe bound predicts no gain).
    function judge_next_time(runs, tx, mx, target, active) result(jd)
       type(run_t), intent(in) :: runs(:)          !< the runs
       type(axis_t), intent(in) :: tx, mx          !< the time and mesh axes (tx%levels >= 1)
@@ -241,10 +190,8 @@ contains
       call weigh(jd, runs(tx%run(n)), target, active, .true.)
    end function judge_next_time
 
-   !> A judgement's last steps: the error the sum of its parts, plus for
-   !> the time of the peak the spread of the maxima of maxima_run (peak_spread);
-   !> the worst ratio of error to target over the active results; whether
-   !> it meets the target (measured: its time error known on its mesh).
+   !> A judgement's sum, the spread of the maxima added to the time of the peak, the worst ratio
+   !> of error to target and whether it meets the target (measured: its time error on its mesh).
    pure subroutine weigh(jd, maxima_run, target, active, measured)
       type(judged_t), intent(inout) :: jd         !< the judgement, its parts set
       type(run_t), intent(in) :: maxima_run       !< the run whose maxima count
@@ -274,18 +221,10 @@ contains
       jd%time_measured = measured
    end subroutine weigh
 
-   !> The error of the time of the peak from the choice of the maximum:
-   !> another local maximum of the force within the peak force's error of
-   !> the peak, F_i >= F - e_F, could be the highest (the maxima of one
-   !> record come from the same discretisation and their errors move
-   !> together, so one error bar, not two, separates them; a swap the
-   !> ladder's runs already show is in its differences), so the time of
-   !> the peak may be any of theirs: the largest |t_i - t_peak| over them.
-   !> The highest maximum of the record is the peak itself (its sample,
-   !> which the parabola refines). 0 when the peak stands out, and without
-   !> maxima.
+   !> The error of the time of the peak from the choice of the maximum: the largest |t_i - t_peak|
+   !> over the other maxima within the peak force's error of it, F_i >= F - e_F (0 without).
    pure real(dp) function peak_spread(mx, t_peak, f_peak, e_force) result(spread)
-      type(maxima_t), intent(in) :: mx            !< the run's maxima (src/accuracy/history_reader.f90)
+      type(maxima_t), intent(in) :: mx            !< the run's maxima
       real(dp), intent(in) :: t_peak              !< the time of the peak (us)
       real(dp), intent(in) :: f_peak              !< the peak force (N)
       real(dp), intent(in) :: e_force             !< its error (N)
@@ -299,16 +238,8 @@ contains
       end do
    end function peak_spread
 
-   !> The time error of run (k, j), j > 0, measured on its own mesh: from
-   !> the time levels done on mesh j next to each other, k among them (at
-   !> least two: k with k - 1 or k + 1), by the rule of the time axis, and
-   !> no less than the time axis's on mesh 0. The time error depends on
-   !> the mesh (finer elements at the contact carry faster responses), so
-   !> a run without a neighbouring time level on its mesh is not measured
-   !> (time_partner names the run that would measure it).
-   !> Two levels, where mesh 0's time axis is in its asymptotic range:
-   !> Roache's grid convergence index at the method's order (two_grid_index
-   !> of src/accuracy/error_estimate.f90; r = 2: |d|); else the axis's rule.
+   !> The time error of run (k, j), j > 0, from the time levels done on mesh j next to k (at
+   !> least two), no less than mesh 0's; two levels in the asymptotic range: two_grid_index.
    subroutine time_on_mesh(runs, k, j, active, asymptotic, err_time, measured, two)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< the run's levels
@@ -338,25 +269,17 @@ contains
       end do
    end subroutine time_on_mesh
 
-   !> The time level whose run on mesh j would measure the time error of
-   !> run (k, j) (time_on_mesh): k - 1 (the cheaper neighbour), or 1 for
+   !> The time level whose run on mesh j would measure run (k, j)'s time error: k - 1, or 1 for
    !> k = 0; -1 when none is needed (j = 0, or a neighbour is done).
    pure integer function time_partner(runs, k, j) result(p)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< the run's levels
       p = -1
-      if (j == 0) return
-      if (k > 0) then
-         if (done_run(runs, k - 1, j)) return
-      end if
-      if (done_run(runs, k + 1, j)) return
+      if (j == 0 .or. done_run(runs, k - 1, j) .or. done_run(runs, k + 1, j)) return
       p = merge(k - 1, 1, k > 0)
    end function time_partner
 
-   !> Whether run (k, j) needs the combined run (1, 1) made to bound its
-   !> interaction of the step and the mesh: it lies on mesh 0 at a smaller
-   !> step than dt0, its mesh error measured at dt0, and no interaction has
-   !> been measured yet.
+   !> Whether run (k, j) (mesh 0, below dt0) needs the run (1, 1): no interaction measured yet.
    pure logical function cross_needed(runs, k, j)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< the run's levels
@@ -369,12 +292,11 @@ contains
       integer, intent(in) :: k, j                 !< its levels
       integer :: i
       i = ladder_run(runs, k, j)
-      done_run = i > 0
-      if (done_run) done_run = runs(i)%state == state_done
+      done_run = .false.
+      if (i > 0) done_run = runs(i)%state == state_done
    end function done_run
 
-   !> The largest interaction |q(k,j) - q(k,0) - q(0,j) + q(0,0)| of the
-   !> combined runs done (0 when there is none).
+   !> The largest interaction of the combined runs done (0 when there is none).
    function largest_cross(runs, tx, mx) result(c)
       type(run_t), intent(in) :: runs(:)          !< the runs
       type(axis_t), intent(in) :: tx, mx          !< the axes
@@ -389,16 +311,10 @@ contains
       end do
    end function largest_cross
 
-   !> The cheapest run (k, j) of the axes whose results all meet the
-   !> target: its cost is that of the runs still to make for it, itself
-   !> and its time partner (time_partner); a run done and measured costs
-   !> nothing; on mesh 0 below dt0, the run (1, 1) too while no interaction
-   !> is measured (cross_needed). With more_time, the next time level on mesh 0 (tx%levels, 0)
-   !> is a candidate too (judge_next_time). A candidate whose cost would
-   !> take the cpu time past the cap is not taken (beyond_cap says one met
-   !> the target); one that costs nothing is, even past the cap; a run the
-   !> cap turned away before is costed as one to make. Not found: (k, j)
-   !> the run done with the smallest worst ratio (the best there is).
+   !> The cheapest run (k, j) that meets the target: its cost the runs still to make for it,
+   !> its time partner and the run (1, 1) while cross_needed; with more_time the next time level
+   !> too. One past the cap is not taken (beyond_cap); not found: the done run with the least
+   !> worst ratio.
    function choose_run(runs, la, tx, mx, target, active, more_time) result(c)
       type(run_t), intent(in) :: runs(:)          !< the runs
       type(launcher_t), intent(in) :: la          !< the launcher (its cost model, the cap, the cpu time spent)
@@ -411,7 +327,6 @@ contains
       real(dp) :: cost, best_cost, best_worst
       integer :: kk, jj, p
       logical :: done
-
       best_cost = huge(1.0_dp);  best_worst = huge(1.0_dp)
       do kk = 0, merge(tx%levels, tx%levels - 1, more_time)
          do jj = 0, merge(0, mx%levels - 1, kk == tx%levels)
@@ -438,10 +353,8 @@ contains
          end do
       end do
       c%beyond_cap = c%beyond_kj(1) >= 0 .and. .not. c%found
-
    contains
-
-      !> The predicted cost of the run (k, j): dt of time level k on mesh j.
+      !> The predicted cost of the run (k, j).
       real(dp) function run_cost(kr, jr)
          integer, intent(in) :: kr, jr            !< its levels
          type(run_t) :: probe                     ! what the cost model reads: k, nx, ny (a ladder run's domain)
@@ -451,9 +364,7 @@ contains
       end function run_cost
    end function choose_run
 
-   !> The final choice among the runs done: the one meeting the target
-   !> (its time error measured) with the smallest worst ratio, else the
-   !> one with the smallest worst ratio.
+   !> The run done meeting the target with the least worst ratio, else the least worst ratio.
    function final_run(runs, tx, mx, target, active) result(kj)
       type(run_t), intent(in) :: runs(:)          !< the runs
       type(axis_t), intent(in) :: tx, mx          !< the axes

@@ -1,18 +1,8 @@
-!> What an accuracy run (src/accuracy/accuracy_driver.f90) writes:
-!>
-!>  - <prefix>_summary.dat: the summary of the run chosen, as a plain
-!>    run writes it (its items copied, the accuracy run's deck echoed),
-!>    then the accuracy's keys: the target and whether it was met, the run
-!>    chosen and its settings, for every result its error `<key>_error`
-!>    (the result's unit; `_error_dt`, `_error_mesh` the two parts) and
-!>    the relative changes the simpler or fuller models make
-!>    (`<key>_change_theory`, `<key>_change_bend_twist`), the runs and
-!>    their total cpu time;
-!>  - <prefix>_accuracy.dat: one row per run, its settings, cpu time,
-!>    results and their errors (a '#' header names each column and its
-!>    unit), then the estimates of each axis as '#' lines
-!>    (postproc/accuracy.gp draws it);
-!>  - on standard output, the same in a few lines.
+!> What an accuracy run writes (docs/ACCURACY.md): <prefix>_summary.dat, the run chosen's
+!> summary then the accuracy's keys (target, status, the run chosen, each result's `_error`,
+!> `_error_dt`, `_error_mesh`, the models' `_change_theory`, `_change_bend_twist`, the cost);
+!> <prefix>_accuracy.dat, one row per run and the axes' estimates as '#' lines
+!> (postproc/accuracy.gp); and the same in a few lines on standard output.
 module accuracy_report
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: dp, msg_len
@@ -22,9 +12,8 @@ module accuracy_report
    use result_files, only: summary_item_t, summary_real, summary_integer, summary_text, write_summary_file, &
       write_column_block
    use summary_reader, only: summary_t, read_summary
-   use accuracy_runs, only: run_t, launcher_t, nq, iq_peak_time, result_keys, result_units, state_done, state_failed, &
-      error_scale, &
-      state_skipped, state_stopped
+   use accuracy_runs, only: run_t, launcher_t, nq, iq_peak_time, result_keys, result_units, state_done, &
+      error_scale, state_skipped, state_stopped, is_ladder
    use accuracy_ladder, only: axis_t, judged_t, judge_run
    implicit none
    private
@@ -55,14 +44,17 @@ module accuracy_report
       logical :: estimated(nq) = .false.           !< the results estimated
       logical :: targeted(nq) = .false.            !< of which those that must meet the target
       real(dp) :: wall_s = 0.0_dp                  !< wall time of the accuracy run (s)
+      type(comparison_t) :: cmp(2)                 !< the models compared
    end type accuracy_outcome_t
 
    !> Columns of <prefix>_accuracy.dat before the results.
    integer, parameter :: nfixed = 12
-   !> Whose the time error of a run chosen without it measured on its mesh is,
-   !> and why (the summary's time_error_measured, the terminal).
+   !> Whose the time error is of a run chosen without it measured on its mesh, and why.
    character(len=*), parameter :: unmeasured_time = &
       'mesh 0''s (the cap left no neighbouring time level on the chosen mesh)'
+   !> A run's state as a word (state_planned, ... of accuracy_runs).
+   character(len=7), parameter :: state_words(0:5) = [character(len=7) :: 'planned', 'planned', 'done', 'failed', &
+      'skipped', 'stopped']
 
 contains
 
@@ -112,9 +104,7 @@ contains
       call write_estimates(u, tx, mx, out%estimated)
       close (u, iostat=stat, iomsg=iomsg)
       if (stat /= 0) errmsg = deck%prefix // '_accuracy.dat: ' // trim(iomsg)
-
    contains
-
       !> The row of run i.
       subroutine write_row(i)
          integer, intent(in) :: i                  !< the run
@@ -122,28 +112,22 @@ contains
          type(judged_t) :: jd
          err = ieee_value(err, ieee_quiet_nan)
          err_time = err;  err_mesh = err
-         q = runs(i)%q
-         if (runs(i)%state /= state_done) q = ieee_value(q, ieee_quiet_nan)
-         if (runs(i)%state == state_done .and. runs(i)%role /= 'theory' .and. runs(i)%role /= 'bend_twist' &
-             .and. runs(i)%k < tx%levels .and. runs(i)%j < mx%levels) then
+         q = merge(runs(i)%q, err, runs(i)%state == state_done)
+         if (runs(i)%state == state_done .and. is_ladder(runs(i)) .and. runs(i)%k < tx%levels .and. &
+             runs(i)%j < mx%levels) then                  ! the results not estimated NaN
             jd = judge_run(runs, tx, mx, runs(i)%k, runs(i)%j, out%target, out%targeted)
-            err = jd%err;  err_time = jd%err_time;  err_mesh = jd%err_mesh
+            err = merge(jd%err, err, out%estimated);  err_time = merge(jd%err_time, err, out%estimated)
+            err_mesh = merge(jd%err_mesh, err_time, out%estimated)
          end if
-         where (.not. out%estimated)
-            err = ieee_value(err, ieee_quiet_nan);  err_time = err;  err_mesh = err
-         end where
          h_rel = sqrt(real(runs(1)%nx, dp)*real(runs(1)%ny, dp)/(real(runs(i)%nx, dp)*real(runs(i)%ny, dp)))
          write (u, '(a,1x,a,2(1x,i3),es15.6e3,2(1x,i5),f9.5,f9.5,es12.4,1x,i1,1x,a,24es16.7e3)') &
             trim(runs(i)%name), trim(runs(i)%role), runs(i)%k, runs(i)%j, runs(i)%dt*1.0e6_dp, runs(i)%nx, &
             runs(i)%ny, runs(i)%grading, h_rel, runs(i)%cpu_s, merge(1, 0, i == out%chosen), &
-            state_word(runs(i)%state), q, err, err_time, err_mesh
+            state_words(runs(i)%state), q, err, err_time, err_mesh
       end subroutine write_row
-
    end subroutine write_accuracy_table
 
-   !> The estimates of both axes as '#' lines: result, axis, levels,
-   !> observed order, asymptotic or not, the rule, the error of the
-   !> finest level.
+   !> The estimates of the finest level of both axes as '#' lines.
    subroutine write_estimates(u, tx, mx, active)
       integer, intent(in) :: u                     !< the open file
       type(axis_t), intent(in) :: tx, mx           !< the axes
@@ -172,12 +156,11 @@ contains
    end subroutine write_estimates
 
    !> <prefix>_summary.dat (module header).
-   subroutine write_accuracy_summary(deck, la, runs, out, cmp, stat, errmsg)
+   subroutine write_accuracy_summary(deck, la, runs, out, stat, errmsg)
       type(deck_t), intent(in) :: deck             !< the accuracy run's deck
       type(launcher_t), intent(in) :: la           !< the launcher (its directory, its spending)
       type(run_t), intent(in) :: runs(:)           !< the runs
       type(accuracy_outcome_t), intent(in) :: out  !< the outcome
-      type(comparison_t), intent(in) :: cmp(:)     !< the models compared
       integer, intent(out) :: stat                 !< 0 on success
       character(len=*), intent(inout) :: errmsg    !< what failed
       type(summary_t) :: s
@@ -185,7 +168,6 @@ contains
       type(run_t) :: r
       integer :: i, iq
       real(dp) :: reference(nq)
-
       r = runs(out%chosen)
       reference = error_scale(out%jd%value)
       call read_summary(la%dir // trim(r%name) // '_summary.dat', s, stat, errmsg)
@@ -194,54 +176,50 @@ contains
       do i = 1, size(s%keys)
          call summary_text(items, trim(s%keys(i)), trim(s%texts(i)))
       end do
-      call summary_real(items, 'accuracy_target', 'accuracy_target', '-', out%target, 1.0_dp)
+      call put('accuracy_target', '-', out%target)
       call summary_text(items, 'accuracy_status', trim(out%status))
       if (out%stop_signal > 0) call summary_integer(items, 'accuracy_stop_signal', out%stop_signal)
       call summary_text(items, 'accuracy_values', 'of the run chosen, not extrapolated')
-      call summary_text(items, 'time_error_measured', trim(time_words(out%jd%time_measured)))
+      if (out%jd%time_measured) then
+         call summary_text(items, 'time_error_measured', 'true')
+      else
+         call summary_text(items, 'time_error_measured', 'false: ' // unmeasured_time)
+      end if
       if (out%jd%two_levels) call summary_text(items, 'time_error_estimate', &
                                                'two levels: Roache''s grid convergence index, Fs = 3')
       call summary_text(items, 'chosen_run', la%dir // trim(r%name))
       call summary_real(items, 'chosen_dt_us', 'chosen_dt', 's', r%dt, 1.0e6_dp)
       call summary_integer(items, 'chosen_nx', r%nx)
       call summary_integer(items, 'chosen_ny', r%ny)
-      call summary_real(items, 'chosen_grading', 'chosen_grading', '-', r%grading, 1.0_dp)
+      call put('chosen_grading', '-', r%grading)
       call summary_text(items, 'chosen_theory', trim(la%theory))
       do iq = 1, nq
          if (.not. out%estimated(iq)) cycle
-         call summary_real(items, trim(result_keys(iq)) // '_error', trim(result_keys(iq)) // '_error', &
-                           trim(result_units(iq)), out%jd%err(iq), 1.0_dp)
-         call summary_real(items, trim(result_keys(iq)) // '_error_dt', trim(result_keys(iq)) // '_error_dt', &
-                           trim(result_units(iq)), out%jd%err_time(iq), 1.0_dp)
-         call summary_real(items, trim(result_keys(iq)) // '_error_mesh', trim(result_keys(iq)) // '_error_mesh', &
-                           trim(result_units(iq)), out%jd%err_mesh(iq), 1.0_dp)
-         if (iq == iq_peak_time) call summary_real(items, trim(result_keys(iq)) // '_error_maxima', &
-            trim(result_keys(iq)) // '_error_maxima', trim(result_units(iq)), out%jd%err_maxima(iq), 1.0_dp)
-         call summary_real(items, trim(result_keys(iq)) // '_relative_error', trim(result_keys(iq)) // &
-                           '_relative_error', '-', relative(out%jd%err(iq), reference(iq)), 1.0_dp)
+         call put(trim(result_keys(iq)) // '_error', trim(result_units(iq)), out%jd%err(iq))
+         call put(trim(result_keys(iq)) // '_error_dt', trim(result_units(iq)), out%jd%err_time(iq))
+         call put(trim(result_keys(iq)) // '_error_mesh', trim(result_units(iq)), out%jd%err_mesh(iq))
+         if (iq == iq_peak_time) call put(trim(result_keys(iq)) // '_error_maxima', trim(result_units(iq)), &
+                                          out%jd%err_maxima(iq))
+         call put(trim(result_keys(iq)) // '_relative_error', '-', relative(out%jd%err(iq), reference(iq)))
       end do
-      do i = 1, size(cmp)
-         call comparison_items(items, cmp(i), runs, out)
+      do i = 1, size(out%cmp)
+         call comparison_items(items, out%cmp(i), runs, out)
       end do
       call summary_integer(items, 'accuracy_runs', count(runs%state == state_done))
       call summary_real(items, 'accuracy_cpu_s', 'accuracy_cpu', 's', la%spent, 1.0_dp)
-      call summary_real(items, 'accuracy_cpu_in_chosen_runs', 'accuracy_cpu_in_chosen_runs', '-', &
-                        in_chosen_runs(la, runs(out%chosen)), 1.0_dp)
+      call put('accuracy_cpu_in_chosen_runs', '-', la%spent/max(r%cpu_s, tiny(1.0_dp)))   ! in runs of the chosen
       call summary_real(items, 'accuracy_wall_s', 'accuracy_wall', 's', out%wall_s, 1.0_dp)
       call write_summary_file(deck, items, stat, errmsg)
+   contains
+      !> A real item whose key is its name, in the result's unit.
+      subroutine put(key, unit, value)
+         character(len=*), intent(in) :: key, unit
+         real(dp), intent(in) :: value
+         call summary_real(items, key, key, unit, value, 1.0_dp)
+      end subroutine put
    end subroutine write_accuracy_summary
 
-   !> The cpu time of all runs over the run chosen's: the accuracy run's
-   !> cost in runs of the settings it chose (what one run would have cost
-   !> a user who knew them).
-   pure real(dp) function in_chosen_runs(la, chosen)
-      type(launcher_t), intent(in) :: la           !< the launcher (its spending)
-      type(run_t), intent(in) :: chosen            !< the run chosen
-      in_chosen_runs = la%spent/max(chosen%cpu_s, tiny(1.0_dp))
-   end function in_chosen_runs
-
-   !> The summary's items of one model compared: what, and the relative
-   !> change of each result (or why it was not compared).
+   !> The summary's items of one model compared: what, and the relative change of each result.
    subroutine comparison_items(items, c, runs, out)
       type(summary_item_t), allocatable, intent(inout) :: items(:)   !< the summary
       type(comparison_t), intent(in) :: c          !< the comparison
@@ -249,12 +227,8 @@ contains
       type(accuracy_outcome_t), intent(in) :: out  !< the outcome
       real(dp) :: change(nq)
       integer :: iq
-      if (c%run == 0) then
-         call summary_text(items, trim(c%what) // '_compared', 'none: ' // trim(c%note))
-         return
-      end if
-      if (runs(c%run)%state /= state_done) then
-         call summary_text(items, trim(c%what) // '_compared', 'none: ' // not_done(runs(c%run)))
+      if (c%run == 0 .or. len(not_compared(c, runs)) > 0) then
+         call summary_text(items, trim(c%what) // '_compared', 'none: ' // not_compared(c, runs))
          return
       end if
       call summary_text(items, trim(c%what) // '_compared', trim(c%compared))
@@ -268,14 +242,12 @@ contains
       end do
    end subroutine comparison_items
 
-   !> The accuracy run's words on standard output: the results with their
-   !> errors, the models compared, the spending.
-   subroutine report_terminal(unit, la, runs, out, cmp)
+   !> The accuracy run's words on standard output.
+   subroutine report_terminal(unit, la, runs, out)
       integer, intent(in) :: unit                  !< standard output
       type(launcher_t), intent(in) :: la           !< the launcher
       type(run_t), intent(in) :: runs(:)           !< the runs
       type(accuracy_outcome_t), intent(in) :: out  !< the outcome
-      type(comparison_t), intent(in) :: cmp(:)     !< the models compared
       type(run_t) :: r
       integer :: iq, i
       character(len=msg_len) :: line
@@ -301,19 +273,16 @@ contains
             out%jd%err_time(iq), ', mesh ', out%jd%err_mesh(iq), ')'
          write (unit, '(a)') '  ' // trim(line)
       end do
-      do i = 1, size(cmp)
-         call comparison_lines(unit, cmp(i), runs, out)
+      do i = 1, size(out%cmp)
+         call comparison_lines(unit, out%cmp(i), runs, out)
       end do
       write (unit, '(a)') 'accuracy: ' // int_str(count(runs%state == state_done)) // ' runs, cpu ' // &
-         real_short(la%spent) // ' s (' // real_short(in_chosen_runs(la, r)) // ' times the run chosen), wall ' // &
-         real_short(out%wall_s) // ' s on ' // int_str(la%cpus) // &
+         real_short(la%spent) // ' s (' // real_short(la%spent/max(r%cpu_s, tiny(1.0_dp))) // &
+         ' times the run chosen), wall ' // real_short(out%wall_s) // ' s on ' // int_str(la%cpus) // &
          ' CPUs; every run: ' // la%dir // '; summary: ' // la%dir(:len(la%dir) - 5) // '_summary.dat'
    end subroutine report_terminal
 
-   !> The terminal's lines of one model compared, with its verdict
-   !> (model_needed): the scene requires the fuller model when a result
-   !> that must meet the target changes by more than the target, whichever
-   !> of the two the run chosen has; else the simpler does as well.
+   !> The terminal's lines of one model compared, with its verdict (model_required).
    subroutine comparison_lines(unit, c, runs, out)
       integer, intent(in) :: unit                  !< standard output
       type(comparison_t), intent(in) :: c          !< the comparison
@@ -322,12 +291,8 @@ contains
       real(dp) :: change(nq)
       character(len=msg_len) :: line
       integer :: iq
-      if (c%run == 0) then
-         write (unit, '(a)') 'model: ' // trim(c%what) // ': not compared: ' // trim(c%note)
-         return
-      end if
-      if (runs(c%run)%state /= state_done) then
-         write (unit, '(a)') 'model: ' // trim(c%what) // ': not compared: ' // not_done(runs(c%run))
+      if (c%run == 0 .or. len(not_compared(c, runs)) > 0) then
+         write (unit, '(a)') 'model: ' // trim(c%what) // ': not compared: ' // not_compared(c, runs)
          return
       end if
       change = model_changes(c, runs, out)
@@ -339,29 +304,22 @@ contains
       write (unit, '(a)') 'model: ' // trim(c%what) // ': ' // trim(c%compared) // ' changes' // trim(line)
       if (c%base /= out%chosen) write (unit, '(a)') 'model: ' // trim(c%what) // ': compared at run ' // &
          trim(runs(c%base)%name) // ', not at the run chosen: ' // trim(c%at)
-      line = 'model: ' // trim(c%what) // ': '
-      if (model_required(change, out)) then
-         line = trim(line) // ' more than the target ' // real_short(out%target) // ': the scene requires '
-         if (c%chosen_richer) then
-            line = trim(line) // ' the model of the run chosen (' // trim(c%richer) // ')'
-         else
-            line = trim(line) // ' the other model (' // trim(c%richer) // '): the results above are the ' // &
-                   'simpler model''s (' // trim(c%simpler) // '), and the fuller one moves them by more than the target'
-         end if
-      else
-         line = trim(line) // ' within the target ' // real_short(out%target) // ': '
-         if (c%chosen_richer) then
-            line = trim(line) // ' the simpler model (' // trim(c%simpler) // ') would do as well'
-         else
-            line = trim(line) // ' the model of the run chosen (' // trim(c%simpler) // ') does as well as the ' // &
-                   'fuller one (' // trim(c%richer) // ')'
-         end if
-      end if
+      line = 'model: ' // trim(c%what) // ': within the target ' // real_short(out%target) // ': '
+      if (model_required(change, out)) line = 'model: ' // trim(c%what) // ': more than the target ' // &
+         real_short(out%target) // ': the scene requires '
+      if (model_required(change, out) .and. c%chosen_richer) line = trim(line) // ' the model of the run chosen (' // &
+         trim(c%richer) // ')'
+      if (model_required(change, out) .and. .not. c%chosen_richer) line = trim(line) // ' the other model (' // &
+         trim(c%richer) // '): the results above are the simpler model''s (' // trim(c%simpler) // &
+         '), and the fuller one moves them by more than the target'
+      if (.not. model_required(change, out) .and. c%chosen_richer) line = trim(line) // ' the simpler model (' // &
+         trim(c%simpler) // ') would do as well'
+      if (.not. model_required(change, out) .and. .not. c%chosen_richer) line = trim(line) // &
+         ' the model of the run chosen (' // trim(c%simpler) // ') does as well as the fuller one (' // trim(c%richer) // ')'
       write (unit, '(a)') trim(line)
    end subroutine comparison_lines
 
-   !> The relative change of each result estimated that the other model
-   !> of comparison c makes (0 for the others).
+   !> The relative change of each result estimated that the other model of c makes (else 0).
    pure function model_changes(c, runs, out) result(change)
       type(comparison_t), intent(in) :: c          !< the comparison (its runs done)
       type(run_t), intent(in) :: runs(:)           !< the runs
@@ -375,17 +333,14 @@ contains
       end do
    end function model_changes
 
-   !> Whether the two models of a comparison differ by more than the target:
-   !> a result that must meet the target changes by more than the target.
+   !> Whether a result that must meet the target changes by more than the target.
    pure logical function model_required(change, out)
       real(dp), intent(in) :: change(nq)           !< the relative changes (model_changes)
       type(accuracy_outcome_t), intent(in) :: out  !< the outcome (the target, the results targeted)
       model_required = any(out%targeted .and. abs(change) > out%target)
    end function model_required
 
-   !> The verdict of comparison c: the simplest model the scene allows,
-   !> the fuller one (c%richer) when the models differ by more than the
-   !> target (model_required), else the simpler (c%simpler).
+   !> The verdict of comparison c: the fuller model when model_required, else the simpler.
    pure function model_needed(c, change, out) result(name)
       type(comparison_t), intent(in) :: c          !< the comparison
       real(dp), intent(in) :: change(nq)           !< the relative changes (model_changes)
@@ -398,31 +353,23 @@ contains
       end if
    end function model_needed
 
-   !> Why a run has no results: skipped for the cap, stopped, or failed.
-   function not_done(run) result(text)
-      type(run_t), intent(in) :: run               !< the run
+   !> Why comparison c has no results ('' when it has): none made, or its run skipped,
+   !> stopped or failed.
+   function not_compared(c, runs) result(text)
+      type(comparison_t), intent(in) :: c          !< the comparison
+      type(run_t), intent(in) :: runs(:)           !< the runs
       character(len=:), allocatable :: text
-      if (run%state == state_skipped) then
-         text = 'the run ' // trim(run%name) // ' would pass &accuracy max_cpu_s'
-      else if (run%state == state_stopped) then
-         text = 'the run ' // trim(run%name) // ' was stopped'
-      else
-         text = 'the run ' // trim(run%name) // ' failed (' // trim(run%status) // ')'
+      text = ''
+      if (c%run == 0) then
+         text = trim(c%note)
+      else if (runs(c%run)%state == state_skipped) then
+         text = 'the run ' // trim(runs(c%run)%name) // ' would pass &accuracy max_cpu_s'
+      else if (runs(c%run)%state == state_stopped) then
+         text = 'the run ' // trim(runs(c%run)%name) // ' was stopped'
+      else if (runs(c%run)%state /= state_done) then
+         text = 'the run ' // trim(runs(c%run)%name) // ' failed (' // trim(runs(c%run)%status) // ')'
       end if
-   end function not_done
-
-   !> The state of a run as a word: done, failed, skipped, stopped or planned.
-   pure function state_word(state) result(word)
-      integer, intent(in) :: state                 !< the run's state
-      character(len=7) :: word
-      select case (state)
-      case (state_done);    word = 'done'
-      case (state_failed);  word = 'failed'
-      case (state_skipped); word = 'skipped'
-      case (state_stopped); word = 'stopped'
-      case default;         word = 'planned'
-      end select
-   end function state_word
+   end function not_compared
 
    !> err/|value|, 0 when both are 0, huge when only value is.
    pure real(dp) function relative(err, value)
@@ -436,17 +383,5 @@ contains
          relative = huge(1.0_dp)
       end if
    end function relative
-
-   !> Whether the time error of the run chosen was measured on its own
-   !> mesh (src/accuracy/accuracy_ladder.f90, time_on_mesh), in words.
-   pure function time_words(measured) result(text)
-      logical, intent(in) :: measured              !< measured on its mesh
-      character(len=:), allocatable :: text
-      if (measured) then
-         text = 'true'
-      else
-         text = 'false: ' // unmeasured_time
-      end if
-   end function time_words
 
 end module accuracy_report

@@ -1,32 +1,25 @@
-!> The runs of an accuracy run: each is the program itself on the same deck,
-!> a child process (src/accuracy/child_process.f90): impact --single
-!> [--restart] [the user's --set ...] --set output.prefix='<prefix>_acc/<run>'
-!> and its dt, nx, ny, grading, gauge, theory, variant; its output in
-!> <prefix>_acc/<run>.log, its results read from its summary.
-!> run_planned starts the planned runs, as many at a time as the process
-!> has CPUs, the dearest first once the costs are known, each only when the
-!> cpu time spent and predicted stays within the cap; a stop signal ends
-!> them (state_stopped). The cost model: on a mesh already run, the run
-!> there at the nearest time level k' times 2^(k - k'); else c 2^k
-!> (n/n0)^gamma times the variant's factor, gamma the slope of log cost
-!> against log n between the two finest meshes done at dt0, c fitted to
-!> the costliest run done (measurements: docs/PERFORMANCE.md).
+!> The runs of an accuracy run: each the program itself, a child process (child_process):
+!> impact --single [--restart] [the user's --set ...] --set output.prefix='<prefix>_acc/<run>'
+!> and its settings; its output in <prefix>_acc/<run>.log, its results read from its summary.
+!> run_planned starts them, as many at a time as there are CPUs, the dearest first, each only
+!> within the cap. The cost model: on a mesh already run, that run's cost times 2^(k - k');
+!> else c 2^k (n/n0)^gamma, gamma fitted between the two finest meshes at dt0, c to the
+!> costliest run done (docs/PERFORMANCE.md).
 module accuracy_runs
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: dp, msg_len
    use number_text, only: int_str, real_str, real_short
    use summary_reader, only: summary_t, read_summary, summary_value, summary_has, summary_index
    use child_process, only: spawn_program, wait_child, stop_caught
-   use history_reader, only: maxima_t, force_maxima
+   use result_files, only: history_columns
+   use scene_model, only: scene_t
    implicit none
    private
-   public :: nq, iq_force, iq_peak_time, result_keys, result_units, run_t, launcher_t, run_planned, run_settings, quoted
-   public :: state_planned, state_running, state_done, state_failed, state_skipped, state_stopped, predicted_cost, &
-             fit_costs
-   public :: predicted_run_cost, ladder_name, error_scale, iq_duration
+   public :: nq, iq_force, iq_peak_time, result_keys, result_units, run_t, launcher_t, run_planned, maxima_t, force_maxima
+   public :: state_planned, state_done, state_failed, state_skipped, state_stopped, predicted_cost, fit_costs
+   public :: predicted_run_cost, ladder_name, error_scale, is_ladder
 
-   !> The results an accuracy run estimates: their summary keys (the unit
-   !> in the key) and units; the last only with &strength.
+   !> The results an accuracy run estimates: their summary keys and units (the last: &strength).
    integer, parameter :: nq = 6
    character(len=*), parameter :: result_keys(nq) = [character(len=19) :: 'peak_force_N', 'max_deflection_mm', &
       'contact_duration_us', 'time_of_peak_us', 'max_strain_y_back', 'max_failure_index']
@@ -41,6 +34,14 @@ module accuracy_runs
    integer, parameter :: max_variant = 4
    !> The cost model's exponent of the element count before two meshes are measured, and its bounds.
    real(dp), parameter :: gamma_default = 1.8_dp, gamma_min = 1.0_dp, gamma_max = 3.0_dp
+   !> The force's local maxima kept by force_maxima: those at least this fraction of the largest (-).
+   real(dp), parameter :: kept_fraction = 0.5_dp
+
+   !> The local maxima of a run's force (a row above the one before and not below the one after).
+   type :: maxima_t
+      real(dp), allocatable :: t_us(:)            !< their times (us)
+      real(dp), allocatable :: f_n(:)             !< their forces (N)
+   end type maxima_t
 
    !> One run of the ladder, or a model variant at the chosen settings.
    type :: run_t
@@ -72,6 +73,7 @@ module accuracy_runs
       character(len=:), allocatable :: dir        !< '<prefix>_acc/'
       character(len=8192), allocatable :: user_settings(:)   !< the user's --set values, in order
       character(len=32) :: theory = ''            !< the theory of every ladder run
+      type(scene_t) :: scene                      !< the scene of the deck's model (domain, D16, D26)
       logical :: every_step = .false.             !< history every step (&strength: the failure index)
       logical :: restart = .false.                !< --restart: each run continues from its restart point
       integer :: cpus = 1                         !< runs at a time
@@ -90,10 +92,8 @@ module accuracy_runs
 
 contains
 
-   !> Starts the planned runs, at most la%cpus at a time, the cheapest
-   !> first, within the cap (module header), and waits until every run
-   !> started has ended; reads each one's summary. stat /= 0 when a run
-   !> could not be started or read (a run that fails is state_failed).
+   !> Starts the planned runs within the cap (module header) and waits for all; stat /= 0 when a
+   !> run could not be started (a run that fails is state_failed).
    subroutine run_planned(runs, la, stat, errmsg)
       type(run_t), intent(inout) :: runs(:)        !< the runs
       type(launcher_t), intent(inout) :: la        !< the launcher
@@ -101,7 +101,6 @@ contains
       character(len=*), intent(inout) :: errmsg    !< what failed
       integer :: i, pid, code, running
       logical :: known
-
       stat = 0
       running = 0
       do
@@ -114,7 +113,9 @@ contains
                la%cap_reached = .true.
                cycle launch
             end if
-            call start_run(runs(i), la, stat, errmsg)
+            call spawn_program(la%exe, run_settings(runs(i), la), la%dir // trim(runs(i)%name) // '.log', runs(i)%pid, &
+                               stat, errmsg)
+            runs(i)%state = merge(state_running, state_failed, stat == 0)
             if (stat == 0) running = running + 1
          end do launch
          if (running == 0) exit
@@ -146,9 +147,7 @@ contains
       end if
    end subroutine run_planned
 
-   !> Once the first run is done: the cap, when it is a multiple of that
-   !> run, and on standard output the runs planned, their predicted cpu
-   !> and wall time, and the cap.
+   !> Once the first run is done: the cap, when a multiple of it, and the price on standard output.
    subroutine state_price(runs, la)
       type(run_t), intent(in) :: runs(:)           !< the runs
       type(launcher_t), intent(inout) :: la        !< the launcher (its cost model, known now)
@@ -167,10 +166,8 @@ contains
       flush (la%unit)
    end subroutine state_price
 
-   !> The next run to start: the planned one predicted dearest, or while
-   !> nothing is known of the costs the cheapest (level 0, which teaches
-   !> the cost model) alone; none (0) while nothing is known and a run is
-   !> going.
+   !> The next run to start: the planned one predicted dearest, or while nothing is known of the
+   !> costs the cheapest alone (0 while a run is going).
    integer function next_run(runs, la, running) result(i)
       type(run_t), intent(in) :: runs(:)           !< the runs
       type(launcher_t), intent(in) :: la           !< the launcher
@@ -180,33 +177,21 @@ contains
       if (.not. any(runs%state == state_planned)) return
       if (la%c_base < 0.0_dp .and. running > 0) return
       cost = predicted_cost(runs, la, running=.false.)
-      if (la%c_base < 0.0_dp) then
-         i = minloc(cost, mask=runs%state == state_planned, dim=1)
-      else
-         i = maxloc(cost, mask=runs%state == state_planned, dim=1)
-      end if
+      if (la%c_base < 0.0_dp) i = minloc(cost, mask=runs%state == state_planned, dim=1)
+      if (la%c_base >= 0.0_dp) i = maxloc(cost, mask=runs%state == state_planned, dim=1)
    end function next_run
 
-   !> The predicted cost of each run (s): of those planned (running false)
-   !> or of those going (running true); 0 for the others.
+   !> The predicted cost of each run planned (or going: running) (s); 0 for the others.
    function predicted_cost(runs, la, running) result(cost)
       type(run_t), intent(in) :: runs(:)           !< the runs
       type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
       logical, intent(in) :: running               !< of the runs going, else of the planned
       real(dp) :: cost(size(runs))
-      integer :: i, wanted
-      wanted = merge(state_running, state_planned, running)
-      cost = 0.0_dp
-      do i = 1, size(runs)
-         if (runs(i)%state /= wanted) cycle
-         cost(i) = predicted_run_cost(runs(i), la)
-      end do
+      cost = merge(predicted_run_cost(runs, la), 0.0_dp, runs%state == merge(state_running, state_planned, running))
    end function predicted_cost
 
-   !> The cost model's prediction of a run's cpu time (s; 0 while nothing
-   !> is known of the costs): from a run done on its mesh, else from c
-   !> and gamma (module header).
-   pure real(dp) function predicted_run_cost(run, la)
+   !> The cost model's prediction of a run's cpu time (s; 0 while nothing is known).
+   elemental real(dp) function predicted_run_cost(run, la)
       type(run_t), intent(in) :: run               !< the run (its k, nx, ny, cost_factor)
       type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
       integer :: a
@@ -214,12 +199,11 @@ contains
       if (a > 0) then
          predicted_run_cost = la%anchors(a)%cpu_s*2.0_dp**(run%k - la%anchors(a)%k)
       else
-         predicted_run_cost = max(la%c_base, 0.0_dp)*relative_cost(run, la)
+         predicted_run_cost = max(la%c_base, 0.0_dp)*relative_cost(run, la%n0, la%gamma)
       end if
    end function predicted_run_cost
 
-   !> The run done on the run's mesh at the time level nearest its own,
-   !> the finer of two as near (0: no run done on that mesh).
+   !> The run done on the run's mesh at the time level nearest its own, the finer of two (0: none).
    pure integer function nearest_anchor(run, la) result(a)
       type(run_t), intent(in) :: run               !< the run
       type(launcher_t), intent(in) :: la           !< the launcher (its anchors)
@@ -228,21 +212,15 @@ contains
       if (.not. allocated(la%anchors)) return
       best = huge(1)
       do i = 1, size(la%anchors)
-         if (la%anchors(i)%nx /= run%nx .or. la%anchors(i)%ny /= run%ny) cycle
-         if (la%anchors(i)%cost_factor /= run%cost_factor) cycle
+         if (any([la%anchors(i)%nx, la%anchors(i)%ny] /= [run%nx, run%ny]) .or. &
+             la%anchors(i)%cost_factor /= run%cost_factor) cycle
          d = abs(la%anchors(i)%k - run%k)
-         if (d > best) cycle
-         if (d == best) then                       ! as near: the finer
-            if (la%anchors(i)%k < la%anchors(a)%k) cycle
-         end if
+         if (d > best .or. (d == best .and. la%anchors(i)%k < la%anchors(max(a, 1))%k)) cycle   ! as near: the finer
          a = i;  best = d
       end do
    end function nearest_anchor
 
-   !> What each result's error is relative to: its own size, and for the
-   !> time of the peak the contact duration, the event's own time scale
-   !> (a time measured from the first contact is not more accurate for
-   !> being late).
+   !> What each result's error is relative to: its size; for the time of the peak the duration.
    pure function error_scale(q) result(scale)
       real(dp), intent(in) :: q(nq)                !< the results
       real(dp) :: scale(nq)
@@ -257,12 +235,19 @@ contains
       name = 't' // int_str(k) // '_m' // int_str(j)
    end function ladder_name
 
-   !> A run's cost relative to the level-0 run (module header).
-   pure real(dp) function relative_cost(run, la)
+   !> A run's cost relative to the level-0 run of n0 elements (module header).
+   pure real(dp) function relative_cost(run, n0, gamma)
       type(run_t), intent(in) :: run               !< the run
-      type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
-      relative_cost = 2.0_dp**run%k*(real(run%nx, dp)*real(run%ny, dp)/real(la%n0, dp)*run%cost_factor)**la%gamma
+      integer, intent(in) :: n0                    !< level 0's elements
+      real(dp), intent(in) :: gamma                !< the exponent of the element count
+      relative_cost = 2.0_dp**run%k*(real(run%nx, dp)*real(run%ny, dp)/real(n0, dp)*run%cost_factor)**gamma
    end function relative_cost
+
+   !> True for a run of the ladder, false for a model variant.
+   elemental logical function is_ladder(run)
+      type(run_t), intent(in) :: run               !< the run
+      is_ladder = run%role /= 'theory' .and. run%role /= 'bend_twist'
+   end function is_ladder
 
    !> The cost model fitted to the runs done (module header).
    subroutine fit_costs(runs, la)
@@ -270,32 +255,23 @@ contains
       type(launcher_t), intent(inout) :: la        !< the launcher
       integer :: i, finest, next
       real(dp) :: ratio
-      finest = 0;  next = 0                        ! the two finest meshes done at dt0
-      do i = 1, size(runs)
-         if (runs(i)%state /= state_done .or. runs(i)%role == 'theory' .or. runs(i)%role == 'bend_twist') cycle
-         if (runs(i)%k /= 0) cycle
-         if (finest == 0) then
-            finest = i
-         else if (runs(i)%j > runs(finest)%j) then
-            next = finest;  finest = i
-         else if (next == 0) then
-            next = i
-         else if (runs(i)%j > runs(next)%j) then
-            next = i
-         end if
-      end do
+      logical :: at_dt0(size(runs))
+      at_dt0 = runs%state == state_done .and. is_ladder(runs) .and. runs%k == 0   ! the two finest meshes there
+      finest = maxloc(runs%j, mask=at_dt0, dim=1)
+      if (finest > 0) at_dt0(finest) = .false.
+      next = maxloc(runs%j, mask=at_dt0, dim=1)
       if (next > 0) then
          ratio = real(runs(finest)%nx, dp)*real(runs(finest)%ny, dp)/(real(runs(next)%nx, dp)*real(runs(next)%ny, dp))
          if (ratio > 1.0_dp .and. runs(next)%cpu_s > 0.0_dp .and. runs(finest)%cpu_s > 0.0_dp) &
             la%gamma = min(gamma_max, max(gamma_min, log(runs(finest)%cpu_s/runs(next)%cpu_s)/log(ratio)))
       end if
-      la%anchors = pack(runs, runs%state == state_done .and. runs%role /= 'theory' .and. runs%role /= 'bend_twist')
+      la%anchors = pack(runs, runs%state == state_done .and. is_ladder(runs))
       ! c from the costliest run done: the best guide to the costly runs to come
       i = maxloc(runs%cpu_s, mask=runs%state == state_done, dim=1)
-      if (i > 0) la%c_base = runs(i)%cpu_s/relative_cost(runs(i), la)
+      if (i > 0) la%c_base = runs(i)%cpu_s/relative_cost(runs(i), la%n0, la%gamma)
    end subroutine fit_costs
 
-   !> The arguments of a run (module header), without the program.
+   !> The arguments of a run, without the program.
    function run_settings(run, la) result(args)
       type(run_t), intent(in) :: run               !< the run
       type(launcher_t), intent(in) :: la           !< the launcher
@@ -342,20 +318,6 @@ contains
       q = q // "'"
    end function quoted
 
-   !> Starts one run.
-   subroutine start_run(run, la, stat, errmsg)
-      type(run_t), intent(inout) :: run            !< the run
-      type(launcher_t), intent(in) :: la           !< the launcher
-      integer, intent(out) :: stat                 !< 0 on success
-      character(len=*), intent(inout) :: errmsg    !< what failed
-      call spawn_program(la%exe, run_settings(run, la), la%dir // trim(run%name) // '.log', run%pid, stat, errmsg)
-      if (stat == 0) then
-         run%state = state_running
-      else
-         run%state = state_failed
-      end if
-   end subroutine start_run
-
    !> A run that ended: its summary read, its state, one line of progress.
    subroutine finish_run(run, la)
       type(run_t), intent(inout) :: run            !< the run
@@ -365,7 +327,6 @@ contains
       character(len=:), allocatable :: line
       integer :: stat, iq, i
       real(dp) :: nan
-
       nan = ieee_value(nan, ieee_quiet_nan)
       call read_summary(la%dir // trim(run%name) // '_summary.dat', s, stat, errmsg)
       run%state = merge(state_done, state_failed, stat == 0 .and. run%exit_code == 0)
@@ -388,5 +349,40 @@ contains
       write (la%unit, '(a)') line
       flush (la%unit)
    end subroutine finish_run
+
+   !> The force's maxima in a run's history file (history_columns), those of at least
+   !> kept_fraction of the largest; none when it cannot be read.
+   subroutine force_maxima(path, mx)
+      character(len=*), intent(in) :: path        !< <prefix>_history.dat
+      type(maxima_t), intent(out) :: mx           !< its maxima
+      character(len=4096) :: line
+      real(dp), allocatable :: row(:)
+      real(dp) :: t(3), f(3)
+      integer :: u, ios, ct, cf, rows
+      allocate (mx%t_us(0), mx%f_n(0))
+      ct = findloc(history_columns%name, 'time', dim=1)
+      cf = findloc(history_columns%name, 'force', dim=1)
+      allocate (row(max(ct, cf)))
+      open (newunit=u, file=path, status='old', action='read', iostat=ios)
+      if (ios /= 0) return
+      rows = 0
+      t = 0.0_dp;  f = 0.0_dp
+      do
+         read (u, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         if (line(1:1) == '#' .or. len_trim(line) == 0) cycle
+         read (line, *, iostat=ios) row
+         if (ios /= 0) exit
+         rows = rows + 1
+         t = [t(2:3), row(ct)];  f = [f(2:3), row(cf)]
+         if (rows >= 3 .and. f(2) > f(1) .and. f(2) >= f(3)) then
+            mx%t_us = [mx%t_us, t(2)];  mx%f_n = [mx%f_n, f(2)]
+         end if
+      end do
+      close (u)
+      if (size(mx%f_n) == 0) return
+      mx%t_us = pack(mx%t_us, mx%f_n >= kept_fraction*maxval(mx%f_n))
+      mx%f_n = pack(mx%f_n, mx%f_n >= kept_fraction*maxval(mx%f_n))
+   end subroutine force_maxima
 
 end module accuracy_runs

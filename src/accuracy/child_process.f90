@@ -1,17 +1,10 @@
-!> Child processes of an accuracy run, through the C library, never a shell:
-!>  - spawn_program: posix_spawn(3) with an argument vector, each argument
-!>    as it is, the output into a log file (never through a link), the
-!>    child in a process group of its own;
-!>  - wait_child: waitpid(2) for any child (128 + N for a signal N);
-!>  - pass_stops_to_children: a stop signal (src/system/process_stop.f90) is
-!>    recorded (stop_caught) and sent on to every child's group: the
-!>    children end after their step, their restart points saved;
-!>  - die_with_parent: a child (IMPACT_PARENT_PID in its environment) is
-!>    killed with SIGKILL when its parent ends, however (PR_SET_PDEATHSIG);
-!>  - program_path, usable_cpus: /proc/self/exe; the CPUs the process may
-!>    use (sched_getaffinity, or Slurm's count when smaller).
-!> The children and the signal caught are module state, as in process_stop:
-!> a signal handler reaches nothing else.
+!> Child processes of an accuracy run, through the C library, never a shell: spawn_program
+!> (posix_spawn(3), an argument vector, the output into a log file never through a link, the
+!> child in a process group of its own); wait_child (waitpid(2)); pass_stops_to_children (a
+!> stop signal recorded, stop_caught, and sent on to every child's group); die_with_parent
+!> (PR_SET_PDEATHSIG in a child with IMPACT_PARENT_PID); program_path; usable_cpus
+!> (sched_getaffinity, or Slurm's count when smaller). The children and the signal caught
+!> are module state, as in process_stop: a signal handler reaches nothing else.
 module child_process
    use, intrinsic :: iso_c_binding, only: c_int, c_int16_t, c_char, c_ptr, c_null_ptr, c_null_char, c_loc, c_size_t, &
       c_long, c_funptr, c_funloc
@@ -33,11 +26,10 @@ module child_process
    integer(c_int), parameter :: pr_set_pdeathsig = 1, sigkill = 9
    !> ELOOP (Linux): what open(2) with O_NOFOLLOW says of a symbolic link.
    integer(c_int), parameter :: eloop = 40
-   !> Children held at most (their process groups), and the signal caught (0: none).
+   !> Children held at most, and the signal caught (0: none).
    integer, parameter :: max_children = 256
    integer(c_int), volatile, save :: children(max_children) = 0
    integer(c_int), volatile, save :: stopped = 0
-
    !> Permissions of a log file created here, before the umask: rw-rw-rw-.
    integer(c_int), parameter :: log_mode = int(o'666', c_int)
    !> Standard output and standard error.
@@ -47,11 +39,8 @@ module child_process
 
 contains
 
-   !> Starts the program `path` with the arguments `args` (argv[0] = path),
-   !> its standard output and standard error written to `log_path`
-   !> (created, or emptied), standard input and the environment inherited
-   !> with IMPACT_PARENT_PID (die_with_parent), in a process group of its
-   !> own, which a stop signal reaches.
+   !> Starts the program `path` with `args`, its output and errors into `log_path` (emptied),
+   !> the environment inherited with IMPACT_PARENT_PID, in a process group of its own.
    subroutine spawn_program(path, args, log_path, pid, stat, errmsg)
       character(len=*), intent(in) :: path          !< the program
       character(len=*), intent(in) :: args(:)       !< its arguments, trailing blanks not part of them
@@ -66,7 +55,6 @@ contains
       type(c_ptr), allocatable :: argv(:), envp(:)
       integer(c_int) :: cpid, r
       integer :: i, at, ignored
-
       call pack_strings()
       call child_environment(env, envp)
       pid = -1
@@ -90,11 +78,8 @@ contains
       i = findloc(children, 0_c_int, dim=1)
       if (i > 0) children(i) = cpid
       if (stopped /= 0) ignored = c_kill(-cpid, stopped)             ! a stop came while it started
-
    contains
-
-      !> path and args as C strings in chars, and argv: the pointers to
-      !> them, then a null pointer.
+      !> path and args as C strings in chars, argv their pointers and a null pointer.
       subroutine pack_strings()
          allocate (chars(len_trim(path) + sum(len_trim(args)) + size(args) + 1), argv(size(args) + 2))
          at = 1
@@ -104,7 +89,6 @@ contains
          end do
          argv(size(args) + 2) = c_null_ptr
       end subroutine pack_strings
-
       !> One string into the buffer, its pointer the n-th of argv.
       subroutine put(text, n)
          character(len=*), intent(in) :: text      !< the string (trailing blanks dropped)
@@ -114,12 +98,9 @@ contains
          argv(n) = c_loc(chars(at))
          at = at + len_trim(text) + 1
       end subroutine put
-
    end subroutine spawn_program
 
-   !> The environment of a child: IMPACT_PARENT_PID=<this process>, then
-   !> the process's own (/proc/self/environ), as C strings in env, envp
-   !> the pointers to them and a null pointer.
+   !> A child's environment: IMPACT_PARENT_PID=<pid>, then /proc/self/environ; envp the pointers.
    subroutine child_environment(env, envp)
       character(kind=c_char), allocatable, target, intent(out) :: env(:)   !< the strings
       type(c_ptr), allocatable, intent(out) :: envp(:)                    !< their pointers
@@ -173,8 +154,7 @@ contains
       end if
    end subroutine wait_child
 
-   !> From now on a stop signal is recorded (stop_caught) and sent on to
-   !> every child's process group.
+   !> From now on a stop signal is recorded (stop_caught) and sent on to every child's group.
    subroutine pass_stops_to_children()
       type(c_funptr) :: previous
       integer :: k
@@ -184,8 +164,7 @@ contains
       end do
    end subroutine pass_stops_to_children
 
-   !> The handler: records the signal and sends it to the children (kill(2)
-   !> is all it calls, which POSIX allows in a handler).
+   !> The handler: records the signal and sends it on (kill(2), which POSIX allows in a handler).
    subroutine on_stop(signum) bind(c)
       integer(c_int), value :: signum   !< the signal received
       integer :: k
@@ -201,9 +180,7 @@ contains
       signum = int(stopped)
    end function stop_caught
 
-   !> In a child of pass_stops_to_children's process: SIGKILL when the
-   !> parent ends, and at once when it has already ended. To be called at
-   !> the start of the program; nothing without IMPACT_PARENT_PID.
+   !> With IMPACT_PARENT_PID: SIGKILL when the parent ends, or at once when it has ended already.
    subroutine die_with_parent()
       character(len=24) :: text
       integer :: length, st, parent
@@ -216,8 +193,7 @@ contains
       if (c_getppid() /= parent) call c_exit(128_c_int + sigkill)
    end subroutine die_with_parent
 
-   !> The path of the running program: /proc/self/exe, or the command's
-   !> argument 0 when that cannot be read.
+   !> The path of the running program: /proc/self/exe, else the command's argument 0.
    function program_path() result(path)
       character(len=:), allocatable :: path
       character(kind=c_char) :: buf(max_path)
@@ -234,33 +210,23 @@ contains
       if (length > 0) call get_command_argument(0, path)
    end function program_path
 
-   !> The CPUs the process may run on (at least 1): the affinity mask's,
-   !> or Slurm's count for the task when it is set and smaller.
+   !> The CPUs the process may run on (at least 1): the affinity mask's, or Slurm's when smaller.
    integer function usable_cpus() result(n)
       type(cpu_set_t) :: mask
-      integer :: i, slurm
+      integer :: i, slurm, length, st
+      character(len=32) :: text
       character(len=*), parameter :: slurm_vars(2) = [character(len=19) :: 'SLURM_CPUS_PER_TASK', 'SLURM_CPUS_ON_NODE']
       n = 1
       if (c_sched_getaffinity(0_c_int, int(storage_size(mask)/8, c_size_t), mask) == 0) &
          n = max(1, sum([(popcnt(mask%bits(i)), i = 1, size(mask%bits))]))
       do i = 1, size(slurm_vars)
-         slurm = environment_count(trim(slurm_vars(i)))
-         if (slurm > 0) n = min(n, slurm)
+         call get_environment_variable(trim(slurm_vars(i)), text, length, st)
+         if (st /= 0 .or. length == 0) cycle
+         slurm = 0
+         read (text, *, iostat=st) slurm
+         if (st == 0 .and. slurm > 0) n = min(n, slurm)
       end do
    end function usable_cpus
-
-   !> A positive count from the environment variable `name`, 0 when it is
-   !> not set or not a positive integer.
-   integer function environment_count(name) result(count)
-      character(len=*), intent(in) :: name    !< the variable
-      character(len=32) :: text
-      integer :: length, st, ios
-      count = 0
-      call get_environment_variable(name, text, length, st)
-      if (st /= 0 .or. length == 0) return
-      read (text, *, iostat=ios) count
-      if (ios /= 0 .or. count < 0) count = 0
-   end function environment_count
 
    !> text as a C string (null-terminated).
    pure function c_text(text) result(c)

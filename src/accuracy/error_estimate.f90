@@ -1,24 +1,16 @@
-!> The discretisation error of a result from a ladder of runs that differ
-!> in one parameter (the time step, or the element size). From the last
-!> three levels h1 > h2 > h3, q1, q2, q3, the observed order p solves
-!> (h1^p - h2^p)/(h2^p - h3^p) = d1/d2 (d1 = q1 - q2, d2 = q2 - q3):
-!>  - in range (order_low <= p <= order_high): Richardson's error at
-!>    min(p, the method's order) times richardson_safety (Roache, 1.25);
-!>  - monotone but slower: Richardson's at p (capped at slow_cap times the
-!>    larger difference), no less than the safe bound;
-!>  - otherwise: the safe bound, safe_factor times the larger difference;
-!>    never an extrapolation;
-!>  - two levels: two_level_factor |d| (Roache's Fs = 3), or his two-grid
-!>    index at a known order (two_grid_index); one level: huge.
-!> A floor (the step, for a time read off the steps) is added; log_tail
-!> bounds a result that changes like ln(1/h) until the Hertz disc is
-!> resolved; level_error gives a coarser level's error.
+!> The discretisation error of a result from a ladder of runs that differ in one parameter
+!> (dt, or the element size). From the last three levels the observed order p solves
+!> (h1^p - h2^p)/(h2^p - h3^p) = d1/d2: in range, Richardson's error at min(p, the method's
+!> order) times richardson_safety; monotone but slower, Richardson's at p (at most slow_cap
+!> times the larger difference), no less than the safe bound; otherwise the safe bound,
+!> safe_factor times the larger difference, never an extrapolation. Two levels:
+!> two_level_factor |d| (Roache's Fs = 3); one level: huge. A floor is added.
 module error_estimate
    use kinds, only: dp
    implicit none
    private
    public :: estimate_t, ladder_estimate, observed_order, level_error, log_tail, two_grid_index, continued_value
-   public :: richardson_safety, safe_factor, slow_cap
+   public :: safe_factor, last_difference
 
    !> Factors of safety (module header) (-).
    real(dp), parameter :: richardson_safety = 1.25_dp, safe_factor = 1.5_dp, two_level_factor = 3.0_dp, &
@@ -48,7 +40,6 @@ contains
       type(estimate_t) :: e
       real(dp) :: d1, d2, p, safe
       integer :: n
-
       n = size(q)
       e%floor = floor
       if (n < 2) then
@@ -84,9 +75,7 @@ contains
             e%how = 'order too high: 1.5 x largest diff.'
          end if
       end if
-
    contains
-
       !> Richardson's error of the finest level at order po.
       pure real(dp) function richardson(po)
          real(dp), intent(in) :: po       !< the order
@@ -98,12 +87,9 @@ contains
             richardson = abs(d2)*ratio/(1.0_dp - ratio)
          end if
       end function richardson
-
    end function ladder_estimate
 
-   !> The order p of (h1^p - h2^p)/(h2^p - h3^p) = ratio (h1 > h2 > h3,
-   !> ratio > 0), by bisection within [order_min, order_max]; a bound of
-   !> that interval when the ratio is outside the range it spans.
+   !> The order p of (h1^p - h2^p)/(h2^p - h3^p) = ratio > 0 by bisection in [order_min, order_max].
    pure real(dp) function observed_order(h, ratio) result(p)
       real(dp), intent(in) :: h(3)           !< the three sizes, decreasing
       real(dp), intent(in) :: ratio          !< d1/d2, positive
@@ -111,14 +97,8 @@ contains
       integer :: it
       lo = order_min
       hi = order_max
-      if (ratio <= f(lo)) then
-         p = lo
-         return
-      end if
-      if (ratio >= f(hi)) then
-         p = hi
-         return
-      end if
+      p = merge(lo, hi, ratio <= f(lo))
+      if (ratio <= f(lo) .or. ratio >= f(hi)) return
       do it = 1, 100
          p = 0.5_dp*(lo + hi)
          if (f(p) < ratio) then
@@ -128,9 +108,7 @@ contains
          end if
       end do
       p = 0.5_dp*(lo + hi)
-
    contains
-
       !> (h1^x - h2^x)/(h2^x - h3^x), scaled by h3 (it grows with x).
       pure real(dp) function f(x)
          real(dp), intent(in) :: x          !< the order
@@ -139,29 +117,32 @@ contains
          b = (h(2)/h(3))**x
          f = (a - b)/(b - 1.0_dp)
       end function f
-
    end function observed_order
 
-   !> The change still to come on a mesh that does not resolve a length
-   !> (module header): 0 when it does (size_ratio <= 1) or with fewer than
-   !> two levels.
+   !> The change still to come, like ln(1/h), on a mesh that does not resolve a length (the
+   !> Hertz disc): 0 when it does (size_ratio <= 1) or with fewer than two levels.
    pure real(dp) function log_tail(h, q, size_ratio)
       real(dp), intent(in) :: h(:)             !< element size of each level, decreasing
       real(dp), intent(in) :: q(:)             !< the result at each level
       real(dp), intent(in) :: size_ratio       !< the finest level's element over the length (s/a)
       integer :: n
-      real(dp) :: d
       n = size(q)
       log_tail = 0.0_dp
       if (n < 2 .or. size_ratio <= 1.0_dp) return
-      d = abs(q(n - 1) - q(n))
-      if (n >= 3) d = max(d, abs(q(n - 2) - q(n - 1)))
-      log_tail = d*(log(size_ratio)/log(h(n - 1)/h(n)) + 1.0_dp)
+      log_tail = last_difference(q)*(log(size_ratio)/log(h(n - 1)/h(n)) + 1.0_dp)
    end function log_tail
 
-   !> Roache's grid convergence index of the finer of two levels whose
-   !> order p is known (module header): two_level_factor |q1 - q2| / (r^p - 1),
-   !> r = h1/h2.
+   !> The larger of the last two differences of a ladder.
+   pure real(dp) function last_difference(q)
+      real(dp), intent(in) :: q(:)                !< the result at each level
+      integer :: n
+      n = size(q)
+      last_difference = 0.0_dp
+      if (n >= 2) last_difference = abs(q(n - 1) - q(n))
+      if (n >= 3) last_difference = max(last_difference, abs(q(n - 2) - q(n - 1)))
+   end function last_difference
+
+   !> Roache's grid convergence index of the finer of two levels of known order p.
    pure real(dp) function two_grid_index(h, q, p) result(e)
       real(dp), intent(in) :: h(2)             !< step or element size of the two levels, decreasing
       real(dp), intent(in) :: q(2)             !< the result at each
@@ -169,10 +150,7 @@ contains
       e = two_level_factor*abs(q(1) - q(2))/((h(1)/h(2))**p - 1.0_dp)
    end function two_grid_index
 
-   !> The value of the next level of a ladder that goes on converging at
-   !> order p (module header: q = Q + C h^p through the last two levels):
-   !> q_n - (q_{n-1} - q_n) (h_{n+1}^p - h_n^p)/(h_n^p - h_{n-1}^p), the
-   !> last difference over r^p for a constant ratio r.
+   !> The value of the next level of a ladder that goes on converging at order p.
    pure real(dp) function continued_value(h, q, p) result(q_next)
       real(dp), intent(in) :: h(3)             !< sizes of the last two levels and the next, decreasing
       real(dp), intent(in) :: q(2)             !< the result at the last two levels
@@ -180,8 +158,7 @@ contains
       q_next = q(2) - (q(1) - q(2))*(h(3)**p - h(2)**p)/(h(2)**p - h(1)**p)
    end function continued_value
 
-   !> The error of level i of a ladder whose finest level n has the error
-   !> e_finest: |q_i - q_n| + e_finest.
+   !> The error of level i of a ladder whose finest level has the error e_finest.
    pure real(dp) function level_error(q, i, e_finest)
       real(dp), intent(in) :: q(:)           !< the result at each level
       integer, intent(in) :: i               !< the level

@@ -1,15 +1,10 @@
-!> Which model a scene needs (step 4 of src/accuracy/accuracy_driver.f90):
-!> one run with the other theory (linear against von Karman) and, when the
-!> laminate has D16, D26, one with the other bend-twist model (the paper's
-!> averaged reduced plate against the full plate that keeps them); their
-!> relative changes say which model the scene requires
-!> (src/accuracy/accuracy_report.f90, model_needed). First on the chosen
-!> mesh at dt0, 2^k times cheaper than at the chosen dt0/2^k; again at the
-!> chosen settings only when the change at dt0, give or take twice the time
-!> errors of both steps and a tenth of the change, could turn the verdict.
-!> When a run at the chosen settings would pass the cap, each comparison at
-!> the costliest ladder run whose variant fits, the full plate priced at
-!> its own elements and beside the theory's variant.
+!> Which model a scene needs (step 4 of accuracy_driver): one run with the other theory
+!> (linear against von Karman) and, when the laminate has D16, D26, one with the other
+!> bend-twist model (the paper's averaged plate against the full plate that keeps them); their
+!> relative changes give the verdict (accuracy_report, model_needed). First on the chosen mesh
+!> at dt0, 2^k times cheaper; again at the chosen settings only when the change, within its
+!> band (change_band), could turn the verdict. Past the cap: at the costliest ladder run whose
+!> variant fits.
 module model_comparison
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t
@@ -17,7 +12,7 @@ module model_comparison
    use materials, only: laminate_t
    use scene_model, only: scene_t, model_laminate, choose_domain, coupling_tol
    use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, &
-      predicted_run_cost
+      predicted_run_cost, is_ladder
    use accuracy_ladder, only: axis_t, judged_t, judge_run, ladder_run
    use accuracy_report, only: comparison_t, accuracy_outcome_t, model_changes, model_required
    implicit none
@@ -26,25 +21,15 @@ module model_comparison
 
 contains
 
-   !> Step 4 of the module header: the other theory and the other
-   !> bend-twist model, run together. First at the chosen mesh's run at
-   !> the ladder's first step (coarse_base): a model's change hardly
-   !> depends on the step, and that run costs 2^k times less than the
-   !> chosen run at dt0/2^k. A comparison whose verdict that change
-   !> settles (verdict_settled) stays there; the others are made again at
-   !> the chosen settings when the cap allows, and keep the first
-   !> comparison when it does not. When the chosen run is at dt0 (or its
-   !> mesh has no run there), at the chosen settings, or, each comparison
-   !> for itself, at the costliest ladder run done whose variant the cap
-   !> still allows (variant_bases). The report names the run compared with.
-   subroutine compare_models(deck, scene, la, runs, tx, mx, out, cmp, stat, errmsg)
+   !> Step 4 (module header): the comparisons first at coarse_base, kept where their verdict is
+   !> settled (verdict_settled) or the chosen settings pass the cap, else made again there
+   !> (variant_bases). The report names the run compared with.
+   subroutine compare_models(deck, la, runs, tx, mx, out, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
-      type(scene_t), intent(in) :: scene            !< the scene of the deck's model
       type(launcher_t), intent(inout) :: la         !< the launcher
       type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
       type(axis_t), intent(in) :: tx, mx            !< the time and mesh axes
-      type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the run chosen)
-      type(comparison_t), intent(out) :: cmp(2)     !< the two comparisons
+      type(accuracy_outcome_t), intent(inout) :: out   !< the outcome (the run chosen); its comparisons out
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
       character(len=*), parameter :: past_cap = 'a run at its settings would pass &accuracy max_cpu_s'
@@ -52,14 +37,14 @@ contains
       real(dp) :: slack(nq)
       integer :: coarse, i, base(2)
       logical :: again(2)
-
+      associate (cmp => out%cmp)
       again = .true.                                ! made (again) at the chosen settings
       slack = 0.0_dp
       coarse = coarse_base(runs, out%chosen)
       if (coarse /= out%chosen) then
          slack = change_slack(runs, tx, mx, out, coarse)
-         call make_variants(deck, scene, la, runs, variant_bases(deck, scene, runs, la, coarse, again), again, &
-                            first, stat, errmsg)
+         call make_variants(deck, la, runs, variant_bases(deck, la%scene, runs, la, coarse, again), again, first, &
+                            stat, errmsg)
          if (stat /= 0) return
          cmp = first
          do i = 1, 2
@@ -71,7 +56,7 @@ contains
                cmp(i)%at = coarse_words(.true., change_band(model_changes(first(i), runs, out), slack), out)
             end if
          end do
-         base = variant_bases(deck, scene, runs, la, out%chosen, again)
+         base = variant_bases(deck, la%scene, runs, la, out%chosen, again)
          do i = 1, 2
             if (.not. again(i) .or. base(i) == out%chosen) cycle
             again(i) = .false.                      ! the chosen settings would pass the cap
@@ -80,8 +65,8 @@ contains
          end do
          if (.not. any(again)) return
       end if
-      call make_variants(deck, scene, la, runs, variant_bases(deck, scene, runs, la, out%chosen, again), again, &
-                         second, stat, errmsg)
+      call make_variants(deck, la, runs, variant_bases(deck, la%scene, runs, la, out%chosen, again), again, second, &
+                         stat, errmsg)
       if (stat /= 0) return
       do i = 1, 2
          if (.not. again(i)) cycle
@@ -94,24 +79,19 @@ contains
             cmp(i)%at = coarse_words(.false., change_band(model_changes(cmp(i), runs, out), slack), out)
          end if
       end do
-
+      end associate
    contains
-
       !> The comparison's variant was made and has results.
       logical function made(c)
          type(comparison_t), intent(in) :: c
          made = .false.
          if (c%run > 0) made = runs(c%run)%state == state_done
       end function made
-
    end subroutine compare_models
 
-   !> The variants of the models of want (theory, bend-twist), each at the
-   !> settings of its run base(i), planned and run together; cmp says
-   !> what each compares.
-   subroutine make_variants(deck, scene, la, runs, base, want, cmp, stat, errmsg)
+   !> The variants wanted (theory, bend-twist), each at the settings of its run base(i), run.
+   subroutine make_variants(deck, la, runs, base, want, cmp, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
-      type(scene_t), intent(in) :: scene            !< the scene of the deck's model
       type(launcher_t), intent(inout) :: la         !< the launcher
       type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
       integer, intent(in) :: base(2)                !< the runs compared with: the theory's, the bend-twist's
@@ -121,9 +101,7 @@ contains
       character(len=*), intent(inout) :: errmsg     !< what failed
       type(run_t) :: r
       character(len=16) :: other
-
       cmp%base = base
-      ! -- the theory
       cmp(1)%what = 'theory'
       cmp(1)%richer = 'nonlinear';  cmp(1)%simpler = 'linear'
       cmp(1)%chosen_richer = la%theory /= 'linear'
@@ -137,10 +115,9 @@ contains
          runs = [runs, r]
          cmp(1)%run = size(runs)
       end if
-      ! -- D16, D26
       cmp(2)%what = 'bend_twist'
       r = planned_copy(runs(base(2)))
-      call bend_twist_variant(deck, scene, runs(base(2)), r, cmp(2))
+      call bend_twist_variant(deck, la%scene, runs(base(2)), r, cmp(2))
       if (want(2) .and. len_trim(cmp(2)%note) == 0) then
          runs = [runs, r]
          cmp(2)%run = size(runs)
@@ -148,7 +125,7 @@ contains
       call run_planned(runs, la, stat, errmsg)
    end subroutine make_variants
 
-   !> A run at the settings of run c, planned: nothing of c's outcome.
+   !> A run at the settings of run c, planned.
    pure function planned_copy(c) result(r)
       type(run_t), intent(in) :: c                  !< the run
       type(run_t) :: r
@@ -157,12 +134,9 @@ contains
       r%exit_code = 0;  r%pid = -1
    end function planned_copy
 
-   !> The runs the two comparisons are made at, near run x: for each one
-   !> wanted, x when its variant fits the cap, else the costliest ladder
-   !> run done whose variant does (comparison_base), each variant priced
-   !> as it would run (the full plate of the bend-twist model at its own
-   !> elements). The theory's comes first; the bend-twist variant must
-   !> fit beside it.
+   !> The runs the two comparisons are made at: x, or where a variant does not fit the cap the
+   !> costliest ladder run done whose variant does (comparison_base), the bend-twist's beside
+   !> the theory's, each priced as it would run.
    function variant_bases(deck, scene, runs, la, x, want) result(base)
       type(deck_t), intent(in) :: deck              !< the deck
       type(scene_t), intent(in) :: scene            !< the scene of the deck's model
@@ -175,7 +149,6 @@ contains
       type(run_t) :: r
       type(comparison_t) :: c
       integer :: i
-
       do i = 1, size(runs)
          cost_theory(i) = predicted_run_cost(runs(i), la)
          r = planned_copy(runs(i))
@@ -191,9 +164,7 @@ contains
       if (want(2)) base(2) = comparison_base(runs, la, x, cost_bt + reserve)
    end function variant_bases
 
-   !> The run on the chosen run's mesh at the ladder's first step, dt0:
-   !> the ladder's mesh axis runs every mesh there. The chosen run itself
-   !> when it is at dt0 or that run is not done.
+   !> The run on the chosen run's mesh at dt0, or the chosen one when that is not done.
    integer function coarse_base(runs, chosen) result(coarse)
       type(run_t), intent(in) :: runs(:)            !< the runs
       integer, intent(in) :: chosen                 !< the run chosen
@@ -205,11 +176,8 @@ contains
       end if
    end function coarse_base
 
-   !> How far a model's relative change at run coarse may lie from the
-   !> change at the chosen settings, for each result: the two runs of the
-   !> change each move by at most their time errors between the two steps,
-   !> the variant's taken as large as the base's (it differs from the base
-   !> by the change itself), so 2 (e_t(coarse) + e_t(chosen)) / |q|.
+   !> How far a model's change at run coarse may lie from that at the chosen settings:
+   !> 2 (e_t(coarse) + e_t(chosen)) / |q|, the variant's time error taken as the base's.
    function change_slack(runs, tx, mx, out, coarse) result(slack)
       type(run_t), intent(in) :: runs(:)            !< the runs
       type(axis_t), intent(in) :: tx, mx            !< the time and mesh axes
@@ -225,13 +193,8 @@ contains
       end where
    end function change_slack
 
-   !> The band about a model's changes within which the change at the
-   !> chosen step lies: slack (change_slack), and change_share of the
-   !> change itself for the variant's own time error, which the base's
-   !> does not bound when the models differ (by hand, 55 results of seven
-   !> scenes of check 12: the linear plate's strain in heavy_slow_thick
-   !> changed by 1.30 % at 5 us and 1.42 % at 1.25 us, where slack alone
-   !> is 0.105 %).
+   !> The band about a model's changes within which the change at the chosen step lies: slack,
+   !> and change_share of the change for the variant's own time error (docs/PERFORMANCE.md).
    pure function change_band(change, slack) result(band)
       real(dp), intent(in) :: change(nq)            !< the relative changes (model_changes)
       real(dp), intent(in) :: slack(nq)             !< change_slack
@@ -240,11 +203,8 @@ contains
       band = slack + change_share*abs(change)
    end function change_band
 
-   !> Whether the verdict of comparison c (model_required) would be the
-   !> same for every change within its band (change_band) of the one
-   !> measured: a result that must meet the target changes by more than
-   !> target + band, or every one by at most target - band. A comparison
-   !> not made settles nothing.
+   !> Whether the verdict of c (model_required) is the same for every change within its band;
+   !> a comparison not made settles nothing.
    logical function verdict_settled(c, runs, out, slack) result(settled)
       type(comparison_t), intent(in) :: c           !< the comparison
       type(run_t), intent(in) :: runs(:)            !< the runs
@@ -260,9 +220,7 @@ contains
                 .not. model_required(abs(change) + band, out)
    end function verdict_settled
 
-   !> Why a comparison stays at the chosen mesh's run at dt0 (settled: its
-   !> verdict is settled, else the chosen settings would pass the cap),
-   !> with the band of the results targeted.
+   !> Why a comparison stays at the chosen mesh's run at dt0, with the bands targeted.
    function coarse_words(settled, band, out) result(text)
       logical, intent(in) :: settled                !< verdict_settled
       real(dp), intent(in) :: band(nq)              !< change_band
@@ -284,11 +242,8 @@ contains
       end if
    end function coarse_words
 
-   !> The run a model is compared at: the chosen one, or when a run at
-   !> its settings would pass the cap, the costliest ladder run done at
-   !> whose settings one still fits (the chosen one when none does: its
-   !> variant is then skipped, and the report says so). cost(i): what the
-   !> variant at run i's settings is predicted to cost (s).
+   !> The run a model is compared at: the chosen one, else the costliest ladder run done whose
+   !> variant, predicted to cost cost(i), fits the cap (the chosen one when none does).
    integer function comparison_base(runs, la, chosen, cost) result(base)
       type(run_t), intent(in) :: runs(:)            !< the runs
       type(launcher_t), intent(in) :: la            !< the launcher (its spending and cap)
@@ -298,8 +253,7 @@ contains
       base = chosen
       if (fits(chosen)) return
       do i = 1, size(runs)
-         if (runs(i)%state /= state_done .or. runs(i)%role == 'theory' .or. runs(i)%role == 'bend_twist') cycle
-         if (.not. fits(i)) cycle
+         if (runs(i)%state /= state_done .or. .not. is_ladder(runs(i)) .or. .not. fits(i)) cycle
          if (base == chosen) then
             base = i
          else if (cost(i) > cost(base)) then
@@ -308,14 +262,13 @@ contains
       end do
    contains
       !> A run at the settings of run i stays within the cap.
-      logical function fits(i)
+      pure logical function fits(i)
          integer, intent(in) :: i
          fits = la%c_base < 0.0_dp .or. la%spent + cost(i) <= la%cap
       end function fits
    end function comparison_base
 
-   !> The run of the other bend-twist model at the settings of run c
-   !> (module header, step 4), or a note why there is none.
+   !> The run of the other bend-twist model at the settings of run c, or a note why there is none.
    subroutine bend_twist_variant(deck, scene, c, r, cmp)
       type(deck_t), intent(in) :: deck              !< the deck
       type(scene_t), intent(in) :: scene            !< the scene of the deck's model
@@ -324,7 +277,6 @@ contains
       type(comparison_t), intent(inout) :: cmp      !< what it compares, or the note
       real(dp) :: quarters
       integer :: fx, fy
-
       r%role = 'bend_twist';  r%variant = ''
       cmp%richer = 'keep';  cmp%simpler = 'drop'           ! &laminate bend_twist
       cmp%chosen_richer = .not. scene%averaged
@@ -350,8 +302,7 @@ contains
          r%variant(1) = "mesh.domain='full'"
          r%variant(2) = 'mesh.average_bend_twist=.false.'
          r%variant(3) = "laminate.bend_twist='keep'"
-         ! nx, ny count the full plate's elements; a ladder run's count the
-         ! quarter's, doubled across the centre lines of an 'auto' domain
+         ! a ladder run's counts the quarter's, doubled across the centre lines of an 'auto' domain
          r%cost_factor = merge(1.0_dp/quarters, 1.0_dp, deck%domain == 'auto')
          r%name = trim(c%name) // '_bend_twist_keep'
          cmp%compared = 'the full plate with D16, D26 kept instead of D16 = D26 = 0 (' // trim(scene%domain) // ')'
@@ -364,8 +315,7 @@ contains
       end if
    end subroutine bend_twist_variant
 
-   !> The quarters of the domain 'auto' picks for the deck once D16 and
-   !> D26 are dropped (1 quarter, 2 half, 4 full).
+   !> The quarters of the domain 'auto' picks once D16 and D26 are dropped (1, 2 or 4).
    real(dp) function reduced_quarters(deck) result(quarters)
       type(deck_t), intent(in) :: deck              !< the deck
       type(deck_t) :: d

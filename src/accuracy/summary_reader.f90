@@ -1,6 +1,5 @@
-!> Reads a run's <prefix>_summary.dat (src/results/result_files.f90,
-!> write_summary_file): after the title and the deck's echo ('#' lines),
-!> one 'key = value' line per item, the unit in the key's name.
+!> Reads a run's <prefix>_summary.dat (result_files, write_summary_file): after the '#'
+!> lines, one 'key = value' line per item, the unit in the key's name.
 module summary_reader
    use kinds, only: dp, msg_len
    implicit none
@@ -63,8 +62,7 @@ contains
       i = 0
    end function summary_index
 
-   !> The number of the key (its unit the key's), `fallback` when the key
-   !> is absent or its value is not a number ('none').
+   !> The number of the key, `fallback` when the key is absent or its value is not a number.
    real(dp) function summary_value(s, key, fallback) result(x)
       type(summary_t), intent(in) :: s               !< the summary
       character(len=*), intent(in) :: key            !< the key
