@@ -192,7 +192,7 @@ def main():
     w('# Model choices: Whitney factors, domains, symmetry, scene estimate, graded meshes')
     w('')
     w('Written by `make validate-model` (validation/model_choice/run.py); the decks and')
-    w('outputs are in build/validation/model_choice/. Issue 8: model only what a scene')
+    w('outputs are in build/validation/model_choice/. Model only what a scene')
     w('requires. The section "How the code decides" of docs/MODEL.md explains the rules.')
     w('')
 
