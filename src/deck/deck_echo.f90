@@ -1,15 +1,17 @@
 !> The deck as people read it, from the one schema (src/deck/deck_schema.f90):
 !> the echo of a run's effective values (terminal, the head of every result
 !> file, /deck of <prefix>.h5), the deck table of docs/DECK.md (make deck-table,
-!> impact --deck-table) and the tab-separated schema (impact --schema, read
-!> by tools/impact_files.py).
+!> impact --deck-table), the tab-separated schema (impact --schema, read
+!> by tools/impact_files.py) and the schema in the words of input_deck's messages.
 module deck_echo
+   use kinds, only: dp
    use number_text, only: real_str, int_str, list_str
    use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, strength_given, accuracy_wanted, &
       toughness_given, words_quoted, kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names
    implicit none
    private
    public :: echo_deck, write_deck_table, write_schema, deck_value_text
+   public :: unknown_name, interval, interval_text
 
    !> Width of the echo's lines (the group column included), and of its group column.
    integer, parameter :: echo_width = 100, group_column = 11
@@ -183,5 +185,89 @@ contains
       end do
    end subroutine write_schema
 
+   ! ======================================= the schema in a message's words
+
+   !> The message on an unknown group, or an unknown variable of a known group.
+   function unknown_name(group, name) result(text)
+      character(len=*), intent(in) :: group, name
+      character(len=:), allocatable :: text
+      if (any(deck_groups == group)) then
+         text = '&' // group // ': ' // name // ': unknown variable (the variables of &' // group // ' are ' &
+            // variable_list(group) // ')'
+      else
+         text = '&' // group // ': unknown namelist group (the groups are ' // group_list() // ')'
+      end if
+   end function unknown_name
+
+   !> The groups as '&plate, &lamina, ...'.
+   function group_list() result(list)
+      character(len=:), allocatable :: list
+      integer :: i
+      list = '&' // trim(deck_groups(1))
+      do i = 2, size(deck_groups)
+         list = list // ', &' // trim(deck_groups(i))
+      end do
+   end function group_list
+
+   !> The variables of a group as 'a, b, h'.
+   function variable_list(group) result(list)
+      character(len=*), intent(in) :: group
+      character(len=:), allocatable :: list
+      integer :: iv
+      list = ''
+      do iv = 1, size(deck_vars)
+         if (deck_vars(iv)%group /= group) cycle
+         if (len(list) > 0) list = list // ', '
+         list = list // trim(deck_vars(iv)%name)
+      end do
+   end function variable_list
+
+   !> The bounds of an interval text.
+   pure subroutine interval(range, lo, hi, lo_open, hi_open)
+      character(len=*), intent(in) :: range
+      real(dp), intent(out) :: lo, hi
+      logical, intent(out) :: lo_open, hi_open
+      character(len=len(range)) :: r
+      integer :: comma
+      r = adjustl(range)
+      comma = index(r, ',')
+      lo_open = r(1:1) == '('
+      hi_open = r(len_trim(r):len_trim(r)) == ')'
+      lo = bound(r(2:comma - 1))
+      hi = bound(r(comma + 1:len_trim(r) - 1))
+   contains
+      pure real(dp) function bound(text)
+         character(len=*), intent(in) :: text
+         integer :: ios
+         select case (trim(adjustl(text)))
+         case ('inf');  bound = huge(1.0_dp)
+         case ('-inf'); bound = -huge(1.0_dp)
+         case default
+            read (text, *, iostat=ios) bound
+            if (ios /= 0) bound = 0.0_dp
+         end select
+      end function bound
+   end subroutine interval
+
+   !> What the interval asks, in words: 'must be positive (m)', 'must be in [1, 3]', ...
+   pure function interval_text(range, unit) result(text)
+      character(len=*), intent(in) :: range, unit
+      character(len=:), allocatable :: text
+      real(dp) :: lo, hi
+      logical :: lo_open, hi_open
+      call interval(range, lo, hi, lo_open, hi_open)
+      if (hi == huge(1.0_dp) .and. lo == 0.0_dp .and. lo_open) then
+         text = 'must be positive'
+      else if (hi == huge(1.0_dp) .and. lo == 0.0_dp) then
+         text = 'must be zero or positive'
+      else if (hi == huge(1.0_dp) .and. lo == -huge(1.0_dp)) then
+         text = 'must be finite'
+      else if (hi == huge(1.0_dp) .and. .not. lo_open) then
+         text = 'must be at least ' // real_str(lo)
+      else
+         text = 'must be in ' // trim(adjustl(range))
+      end if
+      if (trim(unit) /= '-' .and. len_trim(unit) > 0) text = text // ' (' // trim(unit) // ')'
+   end function interval_text
 
 end module deck_echo

@@ -1,25 +1,18 @@
-!> The text of a deck: its namelist groups and their assignments, found
-!> with their line numbers, before anything is known of what they mean
-!> (src/deck/input_deck.f90 checks them against src/deck/deck_schema.f90).
-!>
-!> The syntax is Fortran's namelist input, the part a deck needs ('&group
-!> name = value, ... /', quotes, '!' comments, repeat counts r*c), read
-!> stricter than a compiler's namelist reader so that nothing is silently
-!> ignored, merged or cut; an error comes back as its line and what is
-!> wrong, the deck's text shown escaped on one line (shown_text). Two
-!> halves: the tokenizer (scan_line and below) and the group builder
-!> (begin_group, end_group, build_assignments). split_value_text reads a
-!> --set value by the same rules. The time is linear in the deck's length.
-!> Not from the paper. More: docs/DECK.md.
+!> The text of a deck: its namelist groups and assignments with their line
+!> numbers, before their meaning (input_deck checks them against the schema).
+!> Fortran's namelist syntax as a deck needs it ('&group name = value, ... /',
+!> quotes, '!' comments, r*c), read stricter than a compiler's, so that
+!> nothing is silently ignored; an error comes back as its line and what is
+!> wrong. Time linear in the deck's length. More: docs/DECK.md.
 module deck_text
-   use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor
+   use, intrinsic :: iso_fortran_env, only: iostat_end
+   use number_text, only: int_str
+   use file_system, only: read_line
    implicit none
    private
    public :: item_t, group_text_t, read_deck_text, split_value_text, lower_case, shown_text
 
-   !> The longest deck (bytes): 1 MiB. A deck is a few kilobytes; this
-   !> bounds the reading of a wrong file (README, "Stability, bad input,
-   !> nothing lost").
+   !> The longest deck (bytes): 1 MiB, which bounds the reading of a wrong file.
    integer, parameter :: max_deck_bytes = 1048576
    !> Bytes of the deck's text a message shows before it is cut ('...').
    integer, parameter :: max_shown = 60
@@ -50,10 +43,11 @@ module deck_text
 
    !> Kinds of token.
    integer, parameter :: tok_word = 1, tok_string = 2, tok_equals = 3, tok_comma = 4
-   !> Characters read per chunk of a line.
-   integer, parameter :: chunk_len = 256
-   !> Characters that end a word (besides the end of the line).
-   character(len=*), parameter :: word_ends = ' ,=/!''"' // achar(9)
+   !> Characters that end a word in a group and in a --set value.
+   character(len=*), parameter :: word_ends = ' ,=/!''"' // achar(9), value_word_ends = ' ,''"' // achar(9)
+   !> Characters of a name: a letter, then these.
+   character(len=*), parameter :: letters = 'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ', &
+      name_chars = letters // '0123456789_'
    !> Digits a repeat count may have: up to 999999999.
    integer, parameter :: max_count_digits = 9
    !> UTF-8's byte-order mark, EF BB BF.
@@ -86,10 +80,8 @@ module deck_text
 
 contains
 
-   !> Reads the deck on `unit` (formatted, sequential, read once to its end:
-   !> standard input is fine) and returns its groups. On a syntax error stat
-   !> is 1, line the line it is on (0: the whole deck) and what says what is
-   !> wrong, naming the group where there is one.
+   !> The groups of the deck on `unit` (read once to its end: standard input
+   !> is fine); on a syntax error stat = 1, its line (0: the whole deck), what.
    subroutine read_deck_text(unit, groups, stat, line, what)
       integer, intent(in) :: unit                              !< the deck's unit
       type(group_text_t), allocatable, intent(out) :: groups(:) !< its groups, in order
@@ -111,7 +103,8 @@ contains
          if (ios == iostat_end) exit lines_loop
          nline = nline + 1
          if (over) then
-            call fail(r%err, 0, 'longer than ' // size_text(max_deck_bytes) // ', the most a deck may be (a deck ' &
+            call fail(r%err, 0, 'longer than ' // int_str(max_deck_bytes/1048576) // ' MiB (' &
+               // int_str(max_deck_bytes) // ' bytes), the most a deck may be (a deck ' &
                // 'is a few kilobytes of text: is this the deck?)')
             exit lines_loop
          end if
@@ -132,61 +125,38 @@ contains
       what = r%err%what
    end subroutine read_deck_text
 
-   !> The values of a text written as a deck writes them after 'name =':
-   !> values separated by commas or blanks, strings quoted with ' or "
-   !> (a doubled quote standing for itself), repeat counts r*c; any other
-   !> character belongs to a word ('out/run' needs no quotes). For the
-   !> value of impact --set group.name=value (src/deck/input_deck.f90).
+   !> The values of impact --set group.name=value, read as after 'name =' in a
+   !> deck, but '=', '/', '&' and '!' belong to a word ('out/run' needs no quotes).
    subroutine split_value_text(text, items, stat, what)
       character(len=*), intent(in) :: text                 !< the value text
       type(item_t), allocatable, intent(out) :: items(:)   !< its values
       integer, intent(out) :: stat                         !< 0, or 1 on an error
       character(len=:), allocatable, intent(out) :: what   !< what is wrong
-      type(token_t), allocatable :: toks(:)
-      type(text_error_t) :: err
-      integer :: i, j, ntok
-      character(len=:), allocatable :: body
-      logical :: ok
+      type(reader_t) :: r
+      integer :: i, j
 
-      allocate (toks(len(text) + 1))
-      ntok = 0
+      allocate (r%toks(64))
       i = 1
-      chars: do while (i <= len(text))
+      do while (i <= len(text) .and. r%err%stat == 0)
          select case (text(i:i))
          case (' ', achar(9))
             i = i + 1
          case (',')
-            ntok = ntok + 1
-            toks(ntok) = token_t(tok_comma, ',', 1)
+            call push(r, tok_comma, ',', 1)
             i = i + 1
          case ('''', '"')
-            call scan_quoted(text, i, body, ok)
-            if (.not. ok) then
-               call fail(err, 1, 'a string has no closing ' // text(i:i))
-               exit chars
-            end if
-            ntok = ntok + 1
-            toks(ntok)%kind = tok_string
-            toks(ntok)%text = body
-            toks(ntok)%line = 1
-            toks(ntok)%glued = glued_to_count(text, i, toks(:ntok - 1))
-            i = i + 2 + len(body) + count_quotes(body, text(i:i))
+            call scan_string(r, text, i, 1)
          case default
-            j = i
-            do while (j < len(text))
-               if (index(' ,''"' // achar(9), text(j+1:j+1)) > 0) exit
-               j = j + 1
-            end do
-            ntok = ntok + 1
-            toks(ntok) = token_t(tok_word, text(i:j), 1)
+            j = word_end(text, i, value_word_ends)
+            call push(r, tok_word, text(i:j), 1)
             i = j + 1
          end select
-      end do chars
-      if (err%stat == 0) call make_items(toks(:ntok), 'the value', items, err)
+      end do
+      if (r%err%stat == 0) call make_items(r%toks(:r%ntok), 'the value', items, r%err)
       if (.not. allocated(items)) allocate (items(0))
-      stat = err%stat
+      stat = r%err%stat
       what = ''
-      if (err%stat /= 0) what = err%what
+      if (stat /= 0) what = r%err%what
    end subroutine split_value_text
 
    ! ============================================================ tokenizer
@@ -272,18 +242,14 @@ contains
          call push(r, tok_comma, ',', ln)
          i = i + 1
       case default
-         j = i
-         do while (j < len(s))
-            if (index(word_ends, s(j+1:j+1)) > 0) exit
-            j = j + 1
-         end do
+         j = word_end(s, i, word_ends)
          call push(r, tok_word, s(i:j), ln)
          i = j + 1
       end select
    end subroutine scan_token
 
    !> A quoted string starting at s(i:i), a doubled quote standing for
-   !> itself; i moves past it.
+   !> itself; i moves past it (in a group, or a --set value: no group).
    subroutine scan_string(r, s, i, ln)
       type(reader_t), intent(inout) :: r        !< the reading
       character(len=*), intent(in) :: s         !< the line
@@ -292,10 +258,12 @@ contains
       character(len=:), allocatable :: body
       logical :: ok, glued
       call scan_quoted(s, i, body, ok)
-      if (.not. ok) then
+      if (.not. ok .and. r%ngroup == 0) then            ! a --set value
+         call fail(r%err, ln, 'a string has no closing ' // s(i:i))
+      else if (.not. ok) then
          call fail(r%err, ln, open_group_name(r) // ': a string has no closing ' // s(i:i) // ' on its line')
-         return
       end if
+      if (.not. ok) return
       glued = glued_to_count(s, i, r%toks(:r%ntok))
       call push(r, tok_string, body, ln)
       r%toks(r%ntok)%glued = glued
@@ -343,10 +311,7 @@ contains
       character(len=*), intent(in) :: body      !< a string's body
       character, intent(in) :: q                !< its quote
       integer :: k
-      count_quotes = 0
-      do k = 1, len(body)
-         if (body(k:k) == q) count_quotes = count_quotes + 1
-      end do
+      count_quotes = count([(body(k:k) == q, k = 1, len(body))])
    end function count_quotes
 
    !> The string whose quote is s(i:i) follows, without a blank, a word
@@ -437,21 +402,14 @@ contains
                grown(:n) = list(:n)
                call move_alloc(grown, list)
             end if
-            n = n + 1
-            call move_assignment(a, list(n))
+            n = n + 1                        ! (moved, not copied)
+            call move_alloc(a%name, list(n)%name)
+            call move_alloc(a%items, list(n)%items)
+            list(n)%line = a%line
          end if
       end do
       assignments = list(:n)
    end subroutine build_assignments
-
-   !> Moves an assignment's components (no copy of its items).
-   subroutine move_assignment(from, to)
-      type(assignment_t), intent(inout) :: from  !< left undefined
-      type(assignment_t), intent(inout) :: to    !< the assignment
-      call move_alloc(from%name, to%name)
-      call move_alloc(from%items, to%items)
-      to%line = from%line
-   end subroutine move_assignment
 
    !> The assignment that starts at toks(k): its name, '=' and its values,
    !> up to the next 'name =' or the group's end; k moves past it.
@@ -552,7 +510,7 @@ contains
       if (star < 2) return
       if (verify(word(:star - 1), '0123456789') /= 0) return
       if (star - 1 > max_count_digits) then
-         why = 'a repeat count r*c of more than ' // int_text(max_count_digits) // ' digits'
+         why = 'a repeat count r*c of more than ' // int_str(max_count_digits) // ' digits'
          return
       end if
       r = 0
@@ -634,59 +592,27 @@ contains
       err%what = message
    end subroutine fail
 
-   !> One line of any length, read in chunks into a buffer that doubles;
-   !> ios = iostat_end at the end of the file. over is true (and the
-   !> reading stops) when the line is longer than `budget` bytes.
-   subroutine read_line(unit, budget, line, ios, msg, over)
-      integer, intent(in) :: unit                          !< the deck's unit
-      integer, intent(in) :: budget                        !< bytes the line may have
-      character(len=:), allocatable, intent(out) :: line   !< the line, without its end of line
-      integer, intent(out) :: ios                          !< 0, iostat_end, or the read's error
-      character(len=*), intent(inout) :: msg               !< the read's message on an error
-      logical, intent(out) :: over                         !< the line is longer than budget
-      character(len=chunk_len) :: chunk
-      character(len=:), allocatable :: buf, grown
-      integer :: nread, n
-      allocate (character(len=chunk_len) :: buf)
-      n = 0
-      over = .false.
-      do
-         nread = 0
-         read (unit, '(a)', advance='no', iostat=ios, iomsg=msg, size=nread) chunk
-         if (ios == 0 .or. ios == iostat_eor) then
-            if (n + nread > len(buf)) then
-               allocate (character(len=2*len(buf)) :: grown)
-               grown(:n) = buf(:n)
-               call move_alloc(grown, buf)
-            end if
-            buf(n + 1:n + nread) = chunk(:nread)
-            n = n + nread
-            over = n > budget
-            if (ios == iostat_eor .or. over) exit
-         else
-            if (ios == iostat_end .and. n > 0) ios = 0    ! a last line without its end of line
-            exit
-         end if
-      end do
-      if (ios == iostat_eor) ios = 0
-      line = buf(:n)
-   end subroutine read_line
-
    !> Index of the last character of the name that starts at s(first:), or
    !> first - 1 when none does (a letter, then letters, digits and '_').
-   pure function name_end(s, first) result(last)
+   pure integer function name_end(s, first) result(last)
       character(len=*), intent(in) :: s         !< the text
       integer, intent(in) :: first              !< where the name would start
-      integer :: last
       last = first - 1
       if (first > len(s)) return
-      if (.not. is_letter(s(first:first))) return
-      last = first
-      do while (last < len(s))
-         if (.not. (is_letter(s(last+1:last+1)) .or. is_digit(s(last+1:last+1)) .or. s(last+1:last+1) == '_')) exit
-         last = last + 1
-      end do
+      if (scan(s(first:first), letters) == 0) return
+      last = verify(s(first:), name_chars)
+      last = merge(len(s), first + last - 2, last == 0)
    end function name_end
+
+   !> Index of the last character of the word that starts at s(i:i): before
+   !> the next of `ends`, or the end of s.
+   pure integer function word_end(s, i, ends) result(j)
+      character(len=*), intent(in) :: s         !< the text
+      integer, intent(in) :: i                  !< where the word starts
+      character(len=*), intent(in) :: ends      !< the characters that end it
+      j = scan(s(i+1:), ends)
+      j = merge(len(s), i + j - 1, j == 0)
+   end function word_end
 
    !> s with A-Z turned to a-z.
    pure function lower_case(s) result(lower)
@@ -703,20 +629,14 @@ contains
    !> s as a message shows it, on one readable line: printable ASCII and
    !> whole UTF-8 characters as they are; control bytes, DEL, bytes that are
    !> not UTF-8, C1 controls and the byte-order mark as \xNN; cut after
-   !> max_len bytes (default max_shown) with '...'.
-   pure function shown_text(s, max_len) result(shown)
+   !> max_shown bytes with '...'.
+   pure function shown_text(s) result(shown)
       character(len=*), intent(in) :: s             !< the text, as the deck holds it
-      integer, intent(in), optional :: max_len      !< bytes shown at most
       character(len=:), allocatable :: shown
       character(len=:), allocatable :: buf
       character(len=*), parameter :: hex = '0123456789ABCDEF'
       integer :: i, n, m, code, limit
-      limit = len(s)
-      if (present(max_len)) then
-         limit = min(limit, max_len)
-      else
-         limit = min(limit, max_shown)
-      end if
+      limit = min(len(s), max_shown)
       allocate (character(len=4*limit + 8) :: buf)
       n = 0
       i = 1
@@ -734,11 +654,8 @@ contains
             i = i + 1
          end if
       end do
-      if (limit < len(s) .and. i <= len(s)) then
-         shown = buf(:n) // '...'
-      else
-         shown = buf(:n)
-      end if
+      shown = buf(:n)
+      if (limit < len(s) .and. i <= len(s)) shown = shown // '...'
    end function shown_text
 
    !> Bytes of the whole UTF-8 character that starts at s(i:i) (a byte of
@@ -774,33 +691,5 @@ contains
       if (m == 2 .and. b0 == 194 .and. b1 <= 159) m = 0                 ! C1 controls
       if (m == 3 .and. s(i:i + 2) == byte_order_mark) m = 0
    end function utf8_length
-
-   !> n in decimal.
-   pure function int_text(n) result(text)
-      integer, intent(in) :: n                  !< the number
-      character(len=:), allocatable :: text
-      character(len=12) :: buf
-      write (buf, '(i0)') n
-      text = trim(buf)
-   end function int_text
-
-   !> A size in bytes as '1 MiB (1048576 bytes)'.
-   pure function size_text(bytes) result(text)
-      integer, intent(in) :: bytes              !< the size
-      character(len=:), allocatable :: text
-      text = int_text(bytes/1048576) // ' MiB (' // int_text(bytes) // ' bytes)'
-   end function size_text
-
-   !> c is a letter, A-Z or a-z.
-   pure logical function is_letter(c)
-      character, intent(in) :: c                !< the character
-      is_letter = (lge(c, 'a') .and. lle(c, 'z')) .or. (lge(c, 'A') .and. lle(c, 'Z'))
-   end function is_letter
-
-   !> c is a digit, 0-9.
-   pure logical function is_digit(c)
-      character, intent(in) :: c                !< the character
-      is_digit = lge(c, '0') .and. lle(c, '9')
-   end function is_digit
 
 end module deck_text

@@ -1,14 +1,8 @@
-!> The input deck: a namelist file, read from standard input or a path,
-!> checked against the schema of src/deck/deck_schema.f90 (every variable,
-!> its kind, unit, default and admissible values) and then as a whole
-!> (validate_deck). SI units; an absent group or variable keeps its
-!> default; names and keywords are case-insensitive.
-!>
-!> Nothing in a deck is silently dropped, merged or cut: each fault stops
-!> the reading with one message
-!>     <deck>: &group: variable = value: what is wrong
-!> Usage: `./impact < input/clamped.nml` or `./impact input/clamped.nml`.
-!> Not from the paper. More: docs/DECK.md.
+!> The input deck: a namelist file (standard input or a path) checked
+!> against the schema of deck_schema.f90, then as a whole (validate_deck).
+!> SI units; an absent variable keeps its default; names are case-blind.
+!> Nothing is silently dropped, merged or cut: each fault stops the reading
+!> with "<deck>: &group: variable = value: what is wrong". More: docs/DECK.md.
 module input_deck
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use, intrinsic :: iso_fortran_env, only: int64
@@ -18,6 +12,7 @@ module input_deck
    use storage_choice, only: resolve_storage, matrices_memory
    use file_system, only: path_problem, prefix_problem, nearest_directory
    use deck_text, only: item_t, group_text_t, read_deck_text, split_value_text, lower_case, shown_text
+   use deck_echo, only: unknown_name, interval, interval_text
    use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, find_var, &
       strength_given, is_given, words_of, words_quoted, &
       kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, &
@@ -34,11 +29,8 @@ module input_deck
    real(dp), parameter :: min_cr1 = 100.0_dp*epsilon(1.0_dp)
    !> Bytes in a GiB, for the messages of the size checks.
    real(dp), parameter :: mib = 1024.0_dp**2, gib = 1024.0_dp**3
-   !> What a run takes beside its three band matrices, for the check
-   !> against the process's memory limit (ulimit -v): a tenth more for the
-   !> rest of the model, and the libraries' own address space (measured:
-   !> about 135 MiB on 2 cores, most of it OpenBLAS's buffers; OpenBLAS
-   !> waits for ever, or crashes, when it cannot get them).
+   !> What a run takes beside its matrices, for the check against ulimit -v:
+   !> a tenth more for the model, and the libraries' (OpenBLAS's) buffers.
    real(dp), parameter :: model_share = 1.1_dp, library_bytes = 160.0_dp*mib
 
    !> The checks of a deck so far (validate_deck): the first failure wins,
@@ -74,11 +66,9 @@ contains
       end do
    end function default_deck
 
-   !> Reads a deck from `unit`, an open formatted sequential unit (standard
-   !> input is fine: it is read once, to its end), and checks it
-   !> (validate_deck; not with check = .false., when the command line's
-   !> settings come first). On failure stat /= 0 and errmsg is the one-line
-   !> message of the module header; deck is then incomplete.
+   !> Reads a deck from `unit` (formatted, read once to its end: standard
+   !> input is fine) and checks it unless check = .false. On failure stat /= 0,
+   !> errmsg the one-line message of the module header, deck incomplete.
    subroutine read_deck(unit, source, deck, stat, errmsg, check)
       integer, intent(in) :: unit                   !< unit to read from
       character(len=*), intent(in) :: source        !< the deck's name in messages: its path, or '<stdin>'
@@ -111,7 +101,7 @@ contains
       groups_loop: do ig = 1, size(groups)
          associate (g => groups(ig))
             if (.not. any(deck_groups == g%name)) then
-               call fail('&' // g%name // ': unknown namelist group (the groups are ' // group_list() // ')')
+               call fail(unknown_name(g%name, ''))
                return
             end if
             do jg = 1, ig - 1
@@ -125,8 +115,7 @@ contains
                associate (a => g%assignments(ia))
                   iv = find_var(g%name, a%name)
                   if (iv == 0) then
-                     call fail('&' // g%name // ': ' // a%name // ': unknown variable (the variables of &' &
-                        // g%name // ' are ' // variable_list(g%name) // ')')
+                     call fail(unknown_name(g%name, a%name))
                      return
                   end if
                   do ja = 1, ia - 1
@@ -164,9 +153,7 @@ contains
 
    end subroutine read_deck
 
-   !> Opens the deck file `path`, reads it with read_deck and closes it. A
-   !> directory or an unreadable file is refused with the same kind of
-   !> message.
+   !> read_deck of the file `path`; a directory or an unreadable file is refused.
    subroutine read_deck_file(path, deck, stat, errmsg, check)
       character(len=*), intent(in) :: path          !< the deck's path
       type(deck_t), intent(out) :: deck             !< the deck read
@@ -193,14 +180,9 @@ contains
       close (unit, iostat=ios)
    end subroutine read_deck_file
 
-   !> Sets one variable from its text, as a deck line would, and checks the
-   !> whole deck again: `impact --set group.var=value`. The text is read as
-   !> a deck's value (src/deck/deck_text.f90, split_value_text): a list ('0,
-   !> 90, 90, 0', '10*0'), a string quoted or not ('a b' quoted, out/run
-   !> without quotes). With check = .false. the deck is not checked (the
-   !> value's kind is): the command line sets all its --set values first
-   !> and then checks the deck once (src/deck/command_line.f90), so that
-   !> values checked together, as the six strengths, can be given together.
+   !> `impact --set group.var=value`: one variable from its text, read as a
+   !> deck's value (split_value_text), then the deck checked unless check =
+   !> .false. (the command line sets all its values, then checks once).
    subroutine set_variable(deck, setting, stat, errmsg, check)
       type(deck_t), intent(inout) :: deck           !< the deck, changed
       character(len=*), intent(in) :: setting       !< 'group.var=value'
@@ -223,12 +205,7 @@ contains
       text = trim(adjustl(setting(eq + 1:)))
       iv = find_var(group, name)
       if (iv == 0) then
-         if (any(deck_groups == group)) then
-            errmsg = '--set: &' // group // ': ' // name // ': unknown variable (the variables of &' // group &
-               // ' are ' // variable_list(group) // ')'
-         else
-            errmsg = '--set: &' // group // ': unknown namelist group (the groups are ' // group_list() // ')'
-         end if
+         errmsg = '--set: ' // unknown_name(group, name)
          return
       end if
       if (len(text) == 0) then
@@ -238,7 +215,7 @@ contains
       call split_value_text(text, items, stat, what)
       if (stat == 0) call convert(iv, items, v, stat, what)
       if (stat /= 0) then
-         errmsg = '--set: &' // group // ': ' // name // ' = ' // quoted_cut(text) // ': ' // what
+         errmsg = '--set: &' // group // ': ' // name // ' = ' // shown_text(text) // ': ' // what
          return
       end if
       call deck_bind(deck, iv, v, .true.)
@@ -254,15 +231,12 @@ contains
          if (.not. check) return
       end if
       call validate_deck(deck, stat, errmsg)
-      if (stat /= 0) errmsg = '--set ' // group // '.' // name // '=' // quoted_cut(text) // ': ' // trim(errmsg)
+      if (stat /= 0) errmsg = '--set ' // group // '.' // name // '=' // shown_text(text) // ': ' // trim(errmsg)
    end subroutine set_variable
 
-   !> The value of entry iv from the items of its assignment, checked for its
-   !> kind (not yet for its range: validate_deck). Repeat counts are
-   !> Fortran's: r*c is r values (a scalar given 2*0.01 is given two); every
-   !> real must be a finite number (NaN, Inf and 1e400 are refused: NaN is
-   !> the "not given" of deck_schema's header, which no deck can write),
-   !> every integer within +-huge(0).
+   !> The value of entry iv from its items, checked for its kind (the range:
+   !> validate_deck). r*c is r values; a real must be finite (NaN is the "not
+   !> given" of deck_schema, which no deck can write), an integer in +-huge(0).
    subroutine convert(iv, items, v, stat, what)
       integer, intent(in) :: iv                          !< entry of deck_vars
       type(item_t), intent(in) :: items(:)               !< the values as written
@@ -273,10 +247,7 @@ contains
       integer :: k, ios
       stat = failed
       what = ''
-      count = 0
-      do k = 1, size(items)
-         count = count + items(k)%repeat
-      end do
+      count = sum(int(items%repeat, int64))
       if (deck_vars(iv)%kind /= kind_reals .and. count /= 1) then
          what = 'one value expected, ' // int_str(int(min(count, int(huge(k), int64)))) // ' given'
          if (any(items%counted)) what = what // ' (a repeat count r*c gives r values)'
@@ -384,11 +355,7 @@ contains
       character(len=:), allocatable, intent(out) :: what !< '' or what is wrong
       integer :: k, n
       real(dp) :: x
-      n = 0
-      do k = 1, size(items)
-         n = n + items(k)%repeat
-      end do
-      allocate (list(n))
+      allocate (list(sum(items%repeat)))
       n = 0
       do k = 1, size(items)
          what = ''
@@ -405,11 +372,9 @@ contains
 
    ! ============================================================= checking
 
-   !> Checks every value of `deck` against the schema's range and the
-   !> combinations the program needs; stops at the first bad one, with the
-   !> message "<deck>: &group: variable = value: what is wrong". Keywords are
-   !> normalised to lower case without blanks (a deck built in code may set
-   !> them in any case), so the deck is intent(inout).
+   !> Checks every value against the schema's range and the combinations the
+   !> program needs, to the first bad one (the message of the module header);
+   !> keywords come back in lower case without blanks.
    subroutine validate_deck(deck, stat, errmsg)
       type(deck_t), intent(inout) :: deck           !< the deck; its keywords come back in lower case
       integer, intent(out) :: stat                  !< 0 when every value is acceptable
@@ -420,7 +385,6 @@ contains
       c%source = deck%source
       call check_entries(deck, c)
       if (c%stat == 0) call check_plate(deck, c)
-      if (c%stat == 0) call check_laminate(deck, c)
       if (c%stat == 0) call check_impactor(deck, c)
       if (c%stat == 0) call check_gauge(deck, c)
       if (c%stat == 0) call check_domain(deck, c)
@@ -449,7 +413,7 @@ contains
       end do entries
    end subroutine check_entries
 
-   !> &plate and &lamina: a thin plate, a positive definite lamina.
+   !> &plate, &lamina, &laminate: a thin plate, a positive definite lamina, a ply.
    subroutine check_plate(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -458,15 +422,8 @@ contains
       call need(c, deck%nu12**2 < deck%e1/deck%e2, 'lamina', 'nu12', real_str(deck%nu12), &
          'nu12**2 must be less than e1/e2 = ' // real_str(deck%e1/deck%e2) &
          // ' (else the lamina stiffness is not positive definite)')
-   end subroutine check_plate
-
-   !> &laminate: at least one ply (each angle is checked against the
-   !> schema's range, check_range).
-   subroutine check_laminate(deck, c)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(checks_t), intent(inout) :: c            !< the checks so far
       call need(c, size(deck%angles) >= 1, 'laminate', 'angles', '(none)', 'give at least one ply')
-   end subroutine check_laminate
+   end subroutine check_plate
 
    !> &output prefix: a name for the result files, not a directory (no
    !> hidden files, out/_history.dat), on a file system that can be written.
@@ -475,10 +432,10 @@ contains
       type(checks_t), intent(inout) :: c            !< the checks so far
       character(len=:), allocatable :: why
       why = prefix_problem(deck%prefix)
-      call need(c, len(why) == 0, 'output', 'prefix', "'" // quoted_cut(deck%prefix) // "'", why)
+      call need(c, len(why) == 0, 'output', 'prefix', "'" // shown_text(deck%prefix) // "'", why)
       if (c%stat /= 0) return
-      call need(c, .not. read_only_file_system(deck%prefix), 'output', 'prefix', "'" // quoted_cut(deck%prefix) &
-         // "'", 'is on a read-only file system (' // quoted_cut(nearest_directory(deck%prefix)) &
+      call need(c, .not. read_only_file_system(deck%prefix), 'output', 'prefix', "'" // shown_text(deck%prefix) &
+         // "'", 'is on a read-only file system (' // shown_text(nearest_directory(deck%prefix)) &
          // ' is mounted read-only): choose a prefix where the results can be written')
    end subroutine check_prefix
 
@@ -558,16 +515,10 @@ contains
    end subroutine check_analysis
 
    !> What the run would need, before any of it is allocated or written
-   !> (docs/ROBUSTNESS.md): at most max_steps
-   !> time steps; the matrices' memory, estimated from the mesh, within
-   !> the machine's; the results' size within the free space where they
-   !> go. The estimates: nodes (2 ex + 1)(2 ey + 1) for ex x ey 9-node
-   !> elements (ex = 2 nx when the domain may be doubled across a centre
-   !> line), 5 freedoms a node, half-bandwidth 10 (2 min(ex, ey) + 1),
-   !> the run's matrices in the storage it takes (src/linalg/storage_choice.f90); a
-   !> history row of 230 bytes in the text file and 130 in <prefix>.h5,
-   !> a field snapshot of 8 bytes a freedom, and in <prefix>.h5 64 KiB
-   !> and four more snapshots for the deck, the mesh and the peak state.
+   !> (docs/ROBUSTNESS.md): at most max_steps steps, the matrices' memory
+   !> (model_size) within the machine's, the results within the free space;
+   !> a history row is 230 bytes of text and 130 in <prefix>.h5, a snapshot
+   !> 8 bytes a freedom, <prefix>.h5 64 KiB and four snapshots more.
    subroutine check_needs(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -613,8 +564,9 @@ contains
          // deck%prefix // '''): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
    end subroutine check_needs
 
-   !> The size of the model of the deck's mesh (check_needs' estimates):
-   !> its equations and the memory of its matrices in the storage it takes.
+   !> The model of the deck's mesh: (2 ex + 1)(2 ey + 1) 9-node elements'
+   !> nodes (ex = 2 nx where the domain may be doubled), 5 freedoms a node,
+   !> half-bandwidth 10 (2 min(ex, ey) + 1), the matrices in their storage.
    pure subroutine model_size(deck, neq, memory)
       type(deck_t), intent(in) :: deck              !< the deck, nx and ny given or chosen
       real(dp), intent(out) :: neq                  !< the equations
@@ -685,10 +637,10 @@ contains
          call need(c, index(' ' // words_of(e%range) // ' ', ' ' // v%s // ' ') > 0 .and. len(v%s) > 0, &
             trim(e%group), trim(e%name), "'" // v%s // "'", 'must be one of ' // words_quoted(e%range))
       case (kind_path)
-         call need(c, len(v%s) <= max_path_len, trim(e%group), trim(e%name), quoted_cut(v%s), &
+         call need(c, len(v%s) <= max_path_len, trim(e%group), trim(e%name), shown_text(v%s), &
             'longer than ' // int_str(max_path_len) // ' characters')
          if (len(v%s) > 0) call need(c, len(path_problem(v%s)) == 0, trim(e%group), trim(e%name), &
-            quoted_cut(v%s), path_problem(v%s))
+            shown_text(v%s), path_problem(v%s))
       end select
    end subroutine check_range
 
@@ -705,75 +657,16 @@ contains
       c%message = c%source // ': &' // group // ': ' // name // ' = ' // value // ': ' // what
    end subroutine need
 
-   !> x lies in the interval written as '(lo, hi)', '[lo, hi]', ... and is
-   !> finite; lo and hi may be -inf, inf.
+   !> x is finite and in the interval written as '(lo, hi)', '[lo, hi]', ...
+   !> (lo and hi may be -inf, inf).
    pure logical function in_interval(x, range)
       real(dp), intent(in) :: x
       character(len=*), intent(in) :: range
       real(dp) :: lo, hi
       logical :: lo_open, hi_open
       call interval(range, lo, hi, lo_open, hi_open)
-      in_interval = ieee_is_finite(x)
-      if (.not. in_interval) return
-      if (lo_open) then
-         in_interval = x > lo
-      else
-         in_interval = x >= lo
-      end if
-      if (hi_open) then
-         in_interval = in_interval .and. x < hi
-      else
-         in_interval = in_interval .and. x <= hi
-      end if
+      in_interval = ieee_is_finite(x) .and. merge(x > lo, x >= lo, lo_open) .and. merge(x < hi, x <= hi, hi_open)
    end function in_interval
-
-   !> The bounds of an interval text.
-   pure subroutine interval(range, lo, hi, lo_open, hi_open)
-      character(len=*), intent(in) :: range
-      real(dp), intent(out) :: lo, hi
-      logical, intent(out) :: lo_open, hi_open
-      character(len=len(range)) :: r
-      integer :: comma
-      r = adjustl(range)
-      comma = index(r, ',')
-      lo_open = r(1:1) == '('
-      hi_open = r(len_trim(r):len_trim(r)) == ')'
-      lo = bound(r(2:comma - 1))
-      hi = bound(r(comma + 1:len_trim(r) - 1))
-   contains
-      pure real(dp) function bound(text)
-         character(len=*), intent(in) :: text
-         integer :: ios
-         select case (trim(adjustl(text)))
-         case ('inf');  bound = huge(1.0_dp)
-         case ('-inf'); bound = -huge(1.0_dp)
-         case default
-            read (text, *, iostat=ios) bound
-            if (ios /= 0) bound = 0.0_dp
-         end select
-      end function bound
-   end subroutine interval
-
-   !> What the interval asks, in words: 'must be positive (m)', 'must be in [1, 3]', ...
-   pure function interval_text(range, unit) result(text)
-      character(len=*), intent(in) :: range, unit
-      character(len=:), allocatable :: text
-      real(dp) :: lo, hi
-      logical :: lo_open, hi_open
-      call interval(range, lo, hi, lo_open, hi_open)
-      if (hi == huge(1.0_dp) .and. lo == 0.0_dp .and. lo_open) then
-         text = 'must be positive'
-      else if (hi == huge(1.0_dp) .and. lo == 0.0_dp) then
-         text = 'must be zero or positive'
-      else if (hi == huge(1.0_dp) .and. lo == -huge(1.0_dp)) then
-         text = 'must be finite'
-      else if (hi == huge(1.0_dp) .and. .not. lo_open) then
-         text = 'must be at least ' // real_str(lo)
-      else
-         text = 'must be in ' // trim(adjustl(range))
-      end if
-      if (trim(unit) /= '-' .and. len_trim(unit) > 0) text = text // ' (' // trim(unit) // ')'
-   end function interval_text
 
    ! ============================================================== helpers
 
@@ -789,7 +682,7 @@ contains
          text = text // item_written(items(k))
          if (len(text) > max_quoted) exit
       end do
-      text = quoted_cut(text)
+      text = shown_text(text)
    end function items_text
 
    !> An item as it was written: r*c, a string in quotes.
@@ -800,37 +693,5 @@ contains
       if (item%quoted) text = "'" // text // "'"
       if (item%counted) text = int_str(item%repeat) // '*' // text
    end function item_written
-
-   !> text as a message shows it: cut short after max_quoted characters,
-   !> its control bytes and bytes that are not UTF-8 escaped (\x00).
-   pure function quoted_cut(text) result(cut)
-      character(len=*), intent(in) :: text
-      character(len=:), allocatable :: cut
-      cut = shown_text(text, max_quoted)
-   end function quoted_cut
-
-   !> The groups as '&plate, &lamina, ...'.
-   function group_list() result(list)
-      character(len=:), allocatable :: list
-      integer :: i
-      list = '&' // trim(deck_groups(1))
-      do i = 2, size(deck_groups)
-         list = list // ', &' // trim(deck_groups(i))
-      end do
-   end function group_list
-
-   !> The variables of a group as 'a, b, h'.
-   function variable_list(group) result(list)
-      character(len=*), intent(in) :: group
-      character(len=:), allocatable :: list
-      integer :: iv
-      list = ''
-      do iv = 1, size(deck_vars)
-         if (deck_vars(iv)%group /= group) cycle
-         if (len(list) > 0) list = list // ', '
-         list = list // trim(deck_vars(iv)%name)
-      end do
-   end function variable_list
-
 
 end module input_deck

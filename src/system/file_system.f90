@@ -11,7 +11,8 @@
 !> Not from the paper. More: docs/ROBUSTNESS.md.
 module file_system
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char, c_ptr, c_null_ptr, c_associated, c_int64_t
-   use, intrinsic :: iso_fortran_env, only: int64
+   use, intrinsic :: iso_fortran_env, only: int64, iostat_end, iostat_eor
+   use number_text, only: int_str
    use c_library, only: c_mkdir, c_fopen, c_lseek, c_fclose, c_fileno, c_rename, c_truncate, c_flock
    use c_library, only: statx_t, c_statx, c_unlink
    implicit none
@@ -20,7 +21,7 @@ module file_system
    public :: short_path, path_kind, path_missing, path_regular, path_link, path_directory, path_other
    public :: create_new_file, remove_file
    public :: file_lock_t, lock_file, unlock_file, rename_file, truncate_file, file_size
-   public :: file_probe_t, open_probe, probe_size, close_probe
+   public :: file_probe_t, open_probe, probe_size, close_probe, read_line
 
    !> A lock taken by lock_file: the stream it holds open.
    type :: file_lock_t
@@ -32,6 +33,8 @@ module file_system
       type(c_ptr) :: stream = c_null_ptr
    end type file_probe_t
 
+   !> Characters read_line reads at a time.
+   integer, parameter :: chunk_len = 256
    !> lseek's whence SEEK_END: from the end of the file (<unistd.h>).
    integer(c_int), parameter :: seek_end = 2
    !> flock(2) operations (Linux, <sys/file.h>): exclusive, do not wait.
@@ -145,8 +148,8 @@ contains
       integer :: from, slash
       why = ''
       if (len(path) >= path_max) then
-         why = 'the path ' // short_path(path) // ' has ' // decimal(len(path)) // ' bytes, more than the ' &
-            // decimal(path_max - 1) // ' a path may have (PATH_MAX)'
+         why = 'the path ' // short_path(path) // ' has ' // int_str(len(path)) // ' bytes, more than the ' &
+            // int_str(path_max - 1) // ' a path may have (PATH_MAX)'
          return
       end if
       from = 1
@@ -154,8 +157,8 @@ contains
          slash = index(path(from:), '/')
          if (slash == 0) slash = len(path) - from + 2
          if (slash - 1 > name_max) then
-            why = 'the name ' // short_path(path(from:from + slash - 2)) // ' has ' // decimal(slash - 1) &
-               // ' bytes, more than the ' // decimal(name_max) // ' a file name may have on this file system ' &
+            why = 'the name ' // short_path(path(from:from + slash - 2)) // ' has ' // int_str(slash - 1) &
+               // ' bytes, more than the ' // int_str(name_max) // ' a file name may have on this file system ' &
                // '(NAME_MAX): a shorter prefix'
             return
          end if
@@ -354,13 +357,42 @@ contains
       stream = c_null_ptr
    end subroutine close_stream
 
-   !> n in decimal.
-   pure function decimal(n) result(text)
-      integer, intent(in) :: n
-      character(len=:), allocatable :: text
-      character(len=12) :: buf
-      write (buf, '(i0)') n
-      text = trim(buf)
-   end function decimal
+   !> One line of any length, read in chunks into a buffer that doubles;
+   !> ios = iostat_end at the end of the file. over is true (and the
+   !> reading stops) when the line is longer than `budget` bytes.
+   subroutine read_line(unit, budget, line, ios, msg, over)
+      integer, intent(in) :: unit                          !< an open formatted unit
+      integer, intent(in) :: budget                        !< bytes the line may have
+      character(len=:), allocatable, intent(out) :: line   !< the line, without its end of line
+      integer, intent(out) :: ios                          !< 0, iostat_end, or the read's error
+      character(len=*), intent(inout) :: msg               !< the read's message on an error
+      logical, intent(out) :: over                         !< the line is longer than budget
+      character(len=chunk_len) :: chunk
+      character(len=:), allocatable :: buf, grown
+      integer :: nread, n
+      allocate (character(len=chunk_len) :: buf)
+      n = 0
+      over = .false.
+      do
+         nread = 0
+         read (unit, '(a)', advance='no', iostat=ios, iomsg=msg, size=nread) chunk
+         if (ios == 0 .or. ios == iostat_eor) then
+            if (n + nread > len(buf)) then
+               allocate (character(len=2*len(buf)) :: grown)
+               grown(:n) = buf(:n)
+               call move_alloc(grown, buf)
+            end if
+            buf(n + 1:n + nread) = chunk(:nread)
+            n = n + nread
+            over = n > budget
+            if (ios == iostat_eor .or. over) exit
+         else
+            if (ios == iostat_end .and. n > 0) ios = 0    ! a last line without its end of line
+            exit
+         end if
+      end do
+      if (ios == iostat_eor) ios = 0
+      line = buf(:n)
+   end subroutine read_line
 
 end module file_system
