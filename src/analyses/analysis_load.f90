@@ -1,17 +1,8 @@
-!> The load of the static and pressure analyses (`&analysis kind =
-!> 'static' | 'pressure'`): the load vector of `&load`.
-!>
-!> Loads (`&load kind`), w positive the way the impactor moves:
-!>  - 'uniform':       q = q0 over the whole plate (Pa);
-!>  - 'sinusoidal':    q = q0 cos(pi x/a) cos(pi y/b), x, y measured from the
-!>                     plate centre: q0 sin(pi X/a) sin(pi Y/b) with X, Y from
-!>                     a corner, the single Navier term (Pa);
-!>  - 'central_force': a force P at the plate centre (N).
-!> Pressures are integrated consistently, f_i = int phi_i q dA, element by
-!> element (element_pressure_load); on a quarter (or strip) model the load
-!> vector is the modelled part's share, and a central force enters as
-!> P / sym_factor, as the paper's point contact force does. (The result
-!> files of every analysis: src/results/result_files.f90.)
+!> The load vector of `&load` for the static and pressure analyses, w positive
+!> the way the impactor moves: 'uniform' q = q0 (Pa); 'sinusoidal' q = q0
+!> cos(pi x/a) cos(pi y/b), x, y from the centre (the single Navier term);
+!> 'central_force' P (N). Pressures are integrated consistently, f_i = int
+!> phi_i q dA; a symmetric model takes its share (P / sym_factor).
 module analysis_load
    use kinds, only: dp, pi, msg_len
    use deck_schema, only: deck_t
@@ -33,7 +24,6 @@ contains
       character(len=*), intent(inout) :: errmsg  !< reason on failure
       real(dp) :: q(ngp_full), fe(nfe)
       integer :: e
-
       stat = 0
       f = 0.0_dp
       select case (deck%load_kind)

@@ -5,8 +5,7 @@
 !> consistent mass with rotary inertia, Appendix B): small vibrations about
 !> the flat plate in either theory. Solver (LAPACK dsbgvx), free edges and
 !> the split of each mode's kinetic energy: above modal_solve.
-!> Results (written by src/analyses/other_analyses.f90): `<prefix>_modes.dat`
-!> and `<prefix>_mode_shapes.dat`. More: docs/ANALYSES.md.
+!> More: docs/ANALYSES.md.
 module modal_analysis
    use kinds, only: dp, pi, msg_len
    use plate_model, only: model_t
@@ -43,25 +42,12 @@ module modal_analysis
 
 contains
 
-   !> Solver: LAPACK dsbgvx (generalized symmetric-definite banded
-   !> eigenproblem, eigenvalues il..iu = 1..count and their vectors): split
-   !> Cholesky factorisation of M (dpbstf), reduction to a standard banded
-   !> problem (dsbgst) and to tridiagonal form (dsbtrd), bisection and inverse
-   !> iteration. K_L and M are used in the upper band storage of
-   !> src/linalg/band_matrix.f90 (global_matrix_t%band%ab), which is LAPACK's layout
-   !> with uplo = 'U', ka = kb = kd. With the mode shapes (`&modes shapes`,
-   !> the default) the reduction keeps an n x n orthogonal matrix: memory
-   !> 8 n^2 bytes and time of order n^2 kd (docs/ANALYSES.md). Frequencies
-   !> alone (shapes = .false.) need neither: time of order n kd^2.
-   !>
-   !> Free edges: K_L is singular (rigid-body modes); M is positive definite,
-   !> so dsbgvx still applies, and the rigid-body modes come out with omega^2
-   !> zero to rounding (written as frequencies sign(omega^2) sqrt|omega^2|).
-   !>
-   !> Each mode's kinetic energy, phi^T M phi = 1, is split between the
-   !> freedoms: w (flexural), u, v (in-plane) and psi_x, psi_y (rotation;
-   !> thickness-shear modes); with R = 0 (symmetric laminate) the three parts
-   !> add up to 1.
+   !> Solver: LAPACK dsbgvx on K_L and M in band storage (LAPACK's layout,
+   !> uplo = 'U'), eigenpairs 1..count; with the shapes it keeps an n x n
+   !> matrix (8 n^2 bytes, time ~ n^2 kd), without them time ~ n kd^2. Free
+   !> edges: K_L is singular, M is not; rigid-body modes give omega^2 ~ 0.
+   !> Each mode's kinetic energy is split between w, u, v and psi_x, psi_y
+   !> (summing to 1 for a symmetric laminate).
    !>
    !> The lowest `count` eigenpairs of K_L phi = omega^2 M phi (band storage).
    subroutine modal_solve(model, count, vectors, res, stat, errmsg)
@@ -77,7 +63,6 @@ contains
       integer, parameter :: w_dof = 3
       character :: jobz
       character(len=msg_len) :: msg
-
       stat = 0
       n = model%msh%neq
       if (trim(model%stiff%storage) /= 'band' .or. trim(model%mass%storage) /= 'band') then

@@ -1,10 +1,7 @@
-!> The other analyses of the same model, chosen by &analysis kind: the
-!> static load (src/analyses/static_analysis.f90), the natural modes
-!> (src/analyses/modal_analysis.f90) and the transient pressure
-!> (src/analyses/pressure_analysis.f90). Each checks a part of the model on its own
-!> (docs/VALIDATION.md). Their modules solve (static_solve, modal_solve,
-!> pressure_solve: what the validation and the tests call); the run of
-!> each, here, reads the deck, writes its result files and reports.
+!> The runs of the other analyses of the same model (&analysis kind):
+!> static, modes and pressure, each solved by its module (what the
+!> validation and the tests call), its result files and report written here.
+!> Each checks a part of the model on its own (docs/VALIDATION.md).
 module other_analyses
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t
@@ -54,7 +51,6 @@ contains
       character(len=:), allocatable :: path, path2
       integer :: u, inc, n, solve_stat, k
       real(dp) :: de(ndof_node)
-
       report = ''
       stat = 0
       allocate (f(model%msh%neq))
@@ -119,7 +115,6 @@ contains
       character(len=48), allocatable :: texts(:)
       real(dp) :: de(ndof_node), wmax(deck%mode_count), wk
       integer :: u, j, k
-
       report = ''
       stat = 0
       call modal_solve(model, deck%mode_count, deck%mode_shapes, res, stat, errmsg)
@@ -195,7 +190,6 @@ contains
       character(len=msg_len) :: warning
       character(len=:), allocatable :: path
       integer :: u, step, nstep, peak
-
       report = ''
       stat = 0
       allocate (f(model%msh%neq))

@@ -5,8 +5,7 @@
 !> constant left-hand matrix, eq. (19)-(20),
 !>     (K_L + 4/dt^2 M) D^{n+1}_{t+dt} = F + M {b} - K_N(D^n) D^n,
 !> iterated to eq. (18); its start and energy: above pressure_solve.
-!> Results (written by src/analyses/other_analyses.f90):
-!> `<prefix>_pressure_history.dat`. More: docs/ANALYSES.md.
+!> More: docs/ANALYSES.md.
 module pressure_analysis
    use number_text, only: int_str
    use kinds, only: dp
@@ -34,19 +33,10 @@ module pressure_analysis
 
 contains
 
-   !> The load jumps at t = 0, so the initial acceleration is M^-1 F (the
-   !> plate at rest, f_int = 0): starting from zero acceleration instead would
-   !> smear the jump over the first step and cost the rule its second order.
-   !>
-   !> Energy: the work of the constant load is W = F . D; the kinetic and
-   !> strain energies are those of the impact analysis (whole plate). For the
-   !> linear theory the average acceleration rule keeps W - KE - U = 0 to
-   !> rounding; for the von Karman theory to within the eq. (18) tolerance and
-   !> O(dt^2).
-   !>
    !> Integrates nstep steps of dt from rest under the load f applied at
-   !> t = 0 (as above). Energies are computed every `every` steps (and
-   !> at the last); the other rows keep zero energies.
+   !> t = 0: the initial acceleration is M^-1 F (zero would cost the rule its
+   !> second order). The energies (W = F . D, kinetic, strain; W - KE - U = 0
+   !> to rounding in the linear theory) every `every` steps and at the last.
    subroutine pressure_solve(model, f, dt, nstep, every, res, stat, errmsg)
       type(model_t), intent(in) :: model           !< model
       real(dp), intent(in) :: f(:)                 !< load vector (N)
@@ -62,7 +52,6 @@ contains
       type(solver_t) :: solver
       integer :: step, bad_eq, solves0
       logical :: converged
-
       allocate (res%t(0:nstep), res%w_centre(0:nstep), res%kinetic(0:nstep), res%strain(0:nstep), &
                 res%work(0:nstep), res%iterations(0:nstep))
       res%t = 0.0_dp;  res%w_centre = 0.0_dp;  res%kinetic = 0.0_dp;  res%strain = 0.0_dp

@@ -7,8 +7,7 @@
 !>     K_T(D^k) dD = lambda F - f_int(D^k),   D^{k+1} = D^k + dD,
 !> f_int(D) = K_L D + K_N(D) D (eq. 15) and K_T its exact derivative, until
 !> the eq. (18) measure sum dD^2 <= C_r2 sum (D^{k+1} - D_{i-1})^2.
-!> Results (written by src/analyses/other_analyses.f90): `<prefix>_static.dat`
-!> and `<prefix>_deflection.dat`. More: docs/ANALYSES.md.
+!> More: docs/ANALYSES.md.
 module static_analysis
    use number_text, only: int_str, real_str
    use kinds, only: dp
@@ -33,16 +32,10 @@ module static_analysis
 
 contains
 
-   !> Why Newton and not the impact analysis's Akay iteration: Akay's scheme
-   !> keeps the left-hand matrix constant and moves K_N(D) D to the right-hand
-   !> side, a fixed-point iteration. In a time step the matrix holds 4/dt^2 M,
-   !> which dominates K_N and makes the iteration contract. In statics the
-   !> matrix is K_L alone: once the deflection is of the order of the
-   !> thickness the membrane stiffness K_N exceeds the bending stiffness K_L
-   !> and the iteration D <- K_L^-1 (F - K_N(D) D) diverges - exactly the
-   !> range of the nonlinear validation (w0/h up to 3 and more). Newton
-   !> converges there, quadratically, for the price of a factorisation of K_T
-   !> per iteration (band storage, cheap next to the time loop of an impact).
+   !> Why Newton and not Akay's fixed-point iteration: in a time step 4/dt^2 M
+   !> dominates K_N and the iteration contracts; in statics, once w ~ h, K_N
+   !> exceeds K_L and D <- K_L^-1 (F - K_N(D) D) diverges. Newton converges
+   !> there, for a factorisation of K_T per iteration.
    !>
    !> The plate under the loads lambda_i F, lambda_i = i/increments: linear
    !> (one solve, scaled) or Newton in each increment (module header).
@@ -58,7 +51,6 @@ contains
       real(dp) :: d(size(f)), d_start(size(f)), r(size(f)), fint(size(f)), lam, num, den
       integer :: inc, it, bad_eq
       logical :: converged
-
       allocate (res%load_factor(0:increments), res%w_centre(0:increments), &
                 res%iterations(0:increments), res%residual(0:increments))
       res%load_factor = 0.0_dp;  res%w_centre = 0.0_dp;  res%iterations = 0;  res%residual = 0.0_dp

@@ -93,7 +93,6 @@ contains
       character(len=256) :: msg
       integer :: ios, nline, bytes
       logical :: over
-
       allocate (r%groups(8), r%toks(64))
       r%err%what = ''
       nline = 0
@@ -134,7 +133,6 @@ contains
       character(len=:), allocatable, intent(out) :: what   !< what is wrong
       type(reader_t) :: r
       integer :: i, j
-
       allocate (r%toks(64))
       i = 1
       do while (i <= len(text) .and. r%err%stat == 0)

@@ -80,7 +80,6 @@ contains
       character(len=:), allocatable :: what
       integer :: line, ig, jg, ia, ja, iv
       type(value_t) :: v
-
       deck = default_deck()
       deck%source = source
       call read_deck_text(unit, groups, stat, line, what)
@@ -380,7 +379,6 @@ contains
       integer, intent(out) :: stat                  !< 0 when every value is acceptable
       character(len=*), intent(inout) :: errmsg     !< the message on failure
       type(checks_t) :: c
-
       if (.not. allocated(deck%source)) deck%source = '<deck>'
       c%source = deck%source
       call check_entries(deck, c)

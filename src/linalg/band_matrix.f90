@@ -8,7 +8,7 @@ module band_matrix
    use, intrinsic :: iso_fortran_env, only: int64
    implicit none
    private
-   public :: band_matrix_t, pivot_rel_tol, check_pivot
+   public :: band_matrix_t, check_pivot
    public :: band_init, band_zero, band_in_band, band_add, band_get, &
              band_matvec, band_factor, band_solve, band_axpy
 
@@ -44,12 +44,10 @@ module band_matrix
    !> Cholesky factor U (A = U^T U, same layout); afterwards the matrix can
    !> only be solved with, not added into or multiplied with, until band_zero.
    !>
-   !> Pivot rule (shared with skyline_matrix, so both storages reject the same
-   !> matrices): equation j fails when its pivot d_j = U(j,j)**2, the diagonal
-   !> of D in A = L D L^T, is not greater than pivot_rel_tol * |A(j,j)|, with
-   !> A(j,j) the diagonal before factorisation. This catches negative and zero
-   !> pivots (dpbtrf's own test) and also pivots that are zero up to rounding,
-   !> such as an unrestrained rigid-body mode.
+   !> Pivot rule (check_pivot, the same for every storage): equation j fails
+   !> when its pivot d_j = U(j,j)**2 is not greater than pivot_rel_tol * |A(j,j)|,
+   !> A(j,j) before factorisation: negative, zero and rounding-zero pivots
+   !> (an unrestrained rigid-body mode).
    !> Symmetric band matrix, upper band storage (as above).
    type :: band_matrix_t
       integer :: n = 0  !< order of the matrix (number of equations).
@@ -104,7 +102,6 @@ contains
       integer, intent(out) :: stat  !< 0 on success, 1 on invalid sizes or failed allocation.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
-
       stat = 0
       if (n < 1 .or. kd < 0 .or. kd > n - 1) then
          write (msg, '(a,i0,a,i0,a)') 'band_init: invalid order n = ', n, &
@@ -137,7 +134,6 @@ contains
    !> Set every entry to zero and forget any factorisation.
    subroutine band_zero(a)
       type(band_matrix_t), intent(inout) :: a  !< the matrix (its structure is kept).
-
       if (allocated(a%ab)) a%ab = 0.0_dp
       a%factored = .false.
    end subroutine band_zero
@@ -146,22 +142,17 @@ contains
    pure logical function band_in_band(a, i, j)
       type(band_matrix_t), intent(in) :: a  !< the matrix.
       integer, intent(in) :: i, j      !< row and column indices
-
       band_in_band = i >= 1 .and. i <= a%n .and. j >= 1 .and. j <= a%n &
                      .and. abs(i - j) <= a%kd
    end function band_in_band
 
-   !> Add value to A(i,j) (= A(j,i), one stored entry).
-   !>
-   !> Caller's duty: band_in_band(a, i, j) is true and a is not factored.
-   !> global_matrix checks this for every element before it adds; a pair
-   !> outside the band is not stored (never written outside ab).
+   !> Add value to A(i,j) (= A(j,i), one stored entry); a pair outside the
+   !> band is not stored (global_matrix checks before it adds).
    subroutine band_add(a, i, j, value)
       type(band_matrix_t), intent(inout) :: a  !< the matrix, added into.
       integer, intent(in) :: i, j      !< row and column indices
       real(dp), intent(in) :: value  !< value added to A(i,j).
       integer :: r, c
-
       if (.not. band_in_band(a, i, j)) return
       r = min(i, j)
       c = max(i, j)
@@ -172,7 +163,6 @@ contains
    pure real(dp) function band_get(a, i, j)
       type(band_matrix_t), intent(in) :: a  !< the matrix.
       integer, intent(in) :: i, j      !< row and column indices
-
       if (band_in_band(a, i, j)) then
          band_get = a%ab(a%kd + 1 + min(i, j) - max(i, j), max(i, j))
       else
@@ -189,11 +179,8 @@ contains
       call dsbmv('U', a%n, a%kd, 1.0_dp, a%ab, a%kd + 1, x, 1, 0.0_dp, y, 1)
    end subroutine band_matvec
 
-   !> Cholesky factorisation in place (LAPACK dpbtrf), A = U^T U.
-   !>
-   !> On a failed pivot (the rule above band_matrix_t) stat = 1, bad_eq is the
-   !> equation and errmsg says "matrix not positive definite at equation N";
-   !> the matrix is then left unusable (not flagged factored).
+   !> Cholesky factorisation in place (LAPACK dpbtrf), A = U^T U. On a failed
+   !> pivot stat = 1, bad_eq its equation; the matrix is left unusable.
    subroutine band_factor(a, stat, errmsg, bad_eq)
       type(band_matrix_t), intent(inout) :: a  !< the matrix, overwritten by its Cholesky factor.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
@@ -202,7 +189,6 @@ contains
       character(len=msg_len) :: msg
       real(dp), allocatable :: diag(:)
       integer :: info, j, last
-
       stat = 0
       bad_eq = 0
       if (.not. allocated(a%ab)) then
@@ -255,7 +241,6 @@ contains
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       integer :: info
-
       call check_solve(a, size(b), stat, errmsg)
       if (stat /= 0) return
       ! b(n) is passed to dpbtrs's b(ldb,*) by sequence association.
@@ -270,7 +255,6 @@ contains
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       integer :: info
-
       call check_solve(a, size(b, 1), stat, errmsg)
       if (stat /= 0 .or. size(b, 2) == 0) return
       call dpbtrs('U', a%n, a%kd, size(b, 2), a%ab, a%kd + 1, b, a%n, info)
@@ -284,7 +268,6 @@ contains
       integer, intent(out) :: stat  !< 0 when the solve may proceed, 1 otherwise.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
-
       stat = 0
       if (.not. a%factored) then
          stat = 1
@@ -303,7 +286,6 @@ contains
       integer, intent(out) :: stat  !< 0 when info = 0, 1 otherwise.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
-
       stat = 0
       if (info /= 0) then
          stat = 1
@@ -320,7 +302,6 @@ contains
       integer, intent(out) :: stat  !< 0 on success, 1 on failure (a unchanged).
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
-
       stat = 0
       if (a%factored .or. b%factored) then
          stat = 1

@@ -1,15 +1,9 @@
-!> CHOLMOD (SuiteSparse's sparse Cholesky) as the sparse storage calls it:
-!> Fortran interfaces (bind(c)) to the flat C functions of
-!> src/linalg/cholmod_shim.c, and a handle type that owns one factorization.
-!> The shim is compiled against the installed cholmod.h, so that only
-!> integers, doubles and arrays cross the language boundary (CHOLMOD's
-!> structs change between releases); its header lists the return codes.
-!>
-!> A cholmod_handle_t holds only the key of its factorization in the shim's
-!> table; the factorization lives until chol_release, which is explicit (a
-!> final procedure is not used: gfortran 12 finalizes the right-hand side's
-!> temporaries of an assignment). An assignment copies the key (chol_copy
-!> the factorization); a key whose factorization is gone is refused.
+!> CHOLMOD (SuiteSparse's sparse Cholesky) for the sparse storage: bind(c)
+!> interfaces to the flat C functions of cholmod_shim.c (only integers,
+!> doubles and arrays cross; its header lists the return codes), and a
+!> handle holding the key of one factorization in the shim's table, alive
+!> until chol_release (explicit: gfortran 12 finalizes an assignment's
+!> temporaries). An assignment copies the key, chol_copy the factorization.
 !> Not from the paper. More: docs/PERFORMANCE.md ("Sparse storage (CHOLMOD)").
 module cholmod_binding
    use, intrinsic :: iso_c_binding, only: c_int, c_long_long, c_double
@@ -121,7 +115,6 @@ contains
       real(dp), intent(in), optional :: values(:)  !< values of the entries, as rowind.
       real(c_double) :: none(1)
       integer(c_int) :: code
-
       stat = 0
       if (h%key == 0) h%key = impact_cholmod_new()
       if (h%key == 0) then
@@ -144,7 +137,6 @@ contains
       real(dp), intent(out) :: bytes  !< memory of the numeric factor (bytes).
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-
       call check(impact_cholmod_analyze(h%key, lnz, flops, bytes), 'the analysis', stat, errmsg)
    end subroutine chol_analyze
 
@@ -158,7 +150,6 @@ contains
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       integer(c_long_long) :: m
-
       call check(impact_cholmod_factorize(h%key, m), 'the factorization', stat, errmsg)
       minor = int(m)
    end subroutine chol_factorize
@@ -172,7 +163,6 @@ contains
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       integer(c_long_long) :: p(size(perm))
-
       call check(impact_cholmod_diagonal(h%key, size(diag, kind=c_long_long), diag, p), 'the diagonal', &
                  stat, errmsg)
       perm = int(p)
@@ -184,7 +174,6 @@ contains
       real(dp), intent(inout) :: b(:)  !< right-hand side on entry, solution on return.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-
       call check(impact_cholmod_solve(h%key, size(b, kind=c_long_long), b), 'the solve', stat, errmsg)
    end subroutine chol_solve
 
@@ -196,7 +185,6 @@ contains
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       integer(c_long_long) :: copy
-
       stat = 0
       if (src%key == 0) return
       call check(impact_cholmod_copy(src%key, copy), 'copying the factorization', stat, errmsg)
@@ -206,7 +194,6 @@ contains
    !> Release the factorization the handle holds (none afterwards).
    subroutine chol_release(h)
       type(cholmod_handle_t), intent(inout) :: h  !< the handle.
-
       call impact_cholmod_free(h%key)
       h%key = 0
    end subroutine chol_release
@@ -216,7 +203,6 @@ contains
       integer(c_int), intent(in) :: code  !< a return code of the shim.
       character(len=:), allocatable :: text
       character(len=12) :: status
-
       write (status, '(i0)') impact_cholmod_status()
       select case (code)
       case (code_ok)
@@ -242,7 +228,6 @@ contains
       character(len=*), intent(in) :: what  !< the step, for the message.
       integer, intent(out) :: stat  !< 0 for code_ok, 1 otherwise.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-
       stat = 0
       if (code == code_ok) return
       stat = 1

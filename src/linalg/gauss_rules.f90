@@ -1,9 +1,6 @@
 !> Gauss-Legendre rules on [-1, 1] and their tensor products on the square.
-!>
 !> Section 2.3 of the paper: 3x3 points for the membrane, bending and inertia
-!> terms, 2x2 for the transverse shear terms (selective reduced integration
-!> against shear locking). An n-point rule integrates polynomials of degree
-!> 2n-1 exactly.
+!> terms, 2x2 for the transverse shear (selective reduced integration).
 module gauss_rules
    use kinds, only: dp
    implicit none
@@ -27,7 +24,6 @@ contains
       real(dp), parameter :: a4o = 0.861136311594052575223946488892809_dp
       real(dp), parameter :: w4i = 0.652145154862546142626936050778001_dp
       real(dp), parameter :: w4o = 0.347854845137453857373063949221999_dp
-
       select case (n)
       case (1)
          xi = [0.0_dp];          w = [2.0_dp]
@@ -50,7 +46,6 @@ contains
       real(dp), intent(out) :: w(n*n)       !< weights, summing to 4
       real(dp) :: x(n), wx(n)
       integer :: i, j
-
       call gauss_1d(n, x, wx)
       rows: do j = 1, n
          cols: do i = 1, n

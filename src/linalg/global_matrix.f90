@@ -1,16 +1,10 @@
-!> The global (structure) matrices of the model, [M], [K_L] and the
-!> effective stiffness K_L + 4/dt^2 M of eq. (19), in a storage chosen at run
-!> time: 'band' (band_matrix), 'skyline' (skyline_matrix) or 'sparse'
-!> (sparse_matrix, CHOLMOD); 'auto' picks by the number of equations
-!> (storage_choice). Each storage scheme is documented in its own module.
-!> The structure comes from the element freedom table elem_eq (0 =
-!> constrained). Use: global_init, global_assemble per element, global_copy
-!> and global_axpy_matrix for K_L + a0 M, global_factor once,
-!> global_solve every step; global_release frees CHOLMOD's factor.
-!> Errors: stat /= 0 and errmsg; without the optional stat a failed
-!> assembly is recorded and reported by the next factor or solve; a failed
-!> pivot returns its equation (bad_eq), which the caller names.
-!> More: docs/ALGORITHM.md.
+!> The global matrices [M], [K_L] and K_L + 4/dt^2 M of eq. (19) in a
+!> storage chosen at run time: band, skyline or sparse (CHOLMOD), each
+!> documented in its module; 'auto' by storage_choice. The structure comes
+!> from the element freedom table elem_eq (0 = constrained). Use: global_init,
+!> global_assemble per element, global_axpy_matrix, global_factor once,
+!> global_solve every step. Errors: stat and errmsg; without stat a failed
+!> assembly is reported by the next factor or solve. More: docs/ALGORITHM.md.
 module global_matrix
    use kinds, only: dp, msg_len
    use number_text, only: int_str
@@ -61,7 +55,6 @@ contains
       character(len=storage_len) :: name
       integer, allocatable :: first_row(:)
       integer :: e, k, eq, lo, hi, kd
-
       call global_release(g)
       stat = 0
       if (neq < 1) then
@@ -130,7 +123,6 @@ contains
    !> error; the structure is kept.
    subroutine global_zero(g)
       type(global_matrix_t), intent(inout) :: g  !< the matrix.
-
       select case (trim(g%storage))
       case ('band')
          call band_zero(g%band)
@@ -157,7 +149,6 @@ contains
       character(len=*), intent(inout), optional :: errmsg  !< reason for the failure (optional, set only on failure).
       character(len=msg_len) :: msg
       integer :: p, q, ip, iq
-
       if (present(stat)) stat = 0
       msg = ''
       if (len_trim(g%storage) == 0) then
@@ -216,7 +207,6 @@ contains
       character(len=*), intent(inout), optional :: errmsg  !< reason for the failure (optional, set only on failure).
       character(len=msg_len) :: msg
       integer :: ierr
-
       if (present(stat)) stat = 0
       msg = ''
       ierr = 0
@@ -249,7 +239,6 @@ contains
       type(global_matrix_t), intent(in) :: src  !< the matrix copied.
       character(len=msg_len) :: msg
       integer :: stat
-
       call global_release(dst)
       dst = src
       if (src%storage /= 'sparse') return
@@ -262,7 +251,6 @@ contains
    !> before global_init.
    subroutine global_release(g)
       type(global_matrix_t), intent(inout) :: g  !< the matrix.
-
       if (g%storage == 'sparse') call sparse_release(g%sparse)
       g = global_matrix_t()
    end subroutine global_release
@@ -279,7 +267,6 @@ contains
       character(len=*), intent(inout), optional :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
       integer :: ierr
-
       if (present(stat)) stat = 0
       msg = ''
       ierr = 0
@@ -315,7 +302,6 @@ contains
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
-
       bad_eq = 0
       if (.not. usable(g, 'global_factor', stat, errmsg)) return
       select case (g%storage)
@@ -334,7 +320,6 @@ contains
       real(dp), intent(inout) :: b(:)               !< right-hand side on entry, solution on return (neq)
       integer, intent(out) :: stat                  !< 0 on success, 1 on failure
       character(len=*), intent(inout) :: errmsg     !< reason for the failure (set only on failure)
-
       if (.not. usable(g, 'global_solve', stat, errmsg)) return
       select case (g%storage)
       case ('band')
@@ -369,7 +354,6 @@ contains
    !> entry for sparse storage; 0 before global_init.
    pure integer function global_bandwidth(g)
       type(global_matrix_t), intent(in) :: g  !< the matrix.
-
       select case (trim(g%storage))
       case ('band')
          global_bandwidth = g%band%kd
@@ -387,7 +371,6 @@ contains
    !> are CHOLMOD's, g%sparse%factor_entries once analysed).
    pure integer function global_stored_entries(g)
       type(global_matrix_t), intent(in) :: g  !< the matrix.
-
       select case (trim(g%storage))
       case ('band')
          global_stored_entries = size(g%band%ab)
@@ -404,7 +387,6 @@ contains
    pure real(dp) function global_entry(g, i, j)
       type(global_matrix_t), intent(in) :: g     !< the matrix, not factored
       integer, intent(in) :: i, j                !< row and column indices
-
       select case (trim(g%storage))
       case ('band')
          global_entry = band_get(g%band, i, j)
@@ -423,7 +405,6 @@ contains
    pure logical function in_structure(g, i, j)
       type(global_matrix_t), intent(in) :: g     !< the matrix
       integer, intent(in) :: i, j                !< row and column indices
-
       select case (trim(g%storage))
       case ('band')
          in_structure = band_in_band(g%band, i, j)
@@ -439,7 +420,6 @@ contains
    !> True when the selected storage holds a factorisation.
    pure logical function is_factored(g)
       type(global_matrix_t), intent(in) :: g  !< the matrix.
-
       is_factored = g%band%factored .or. g%sky%factored .or. g%sparse%factored
    end function is_factored
 
@@ -449,7 +429,6 @@ contains
       character(len=*), intent(in) :: msg  !< what failed.
       integer, intent(out), optional :: stat  !< the caller's stat, set to 1 when present.
       character(len=*), intent(inout), optional :: errmsg  !< the caller's errmsg, set to msg when present.
-
       if (present(stat)) then
          stat = 1
          if (present(errmsg)) errmsg = msg
@@ -463,7 +442,6 @@ contains
       character(len=*), intent(in) :: s  !< the string.
       character(len=len(s)) :: t
       integer :: k
-
       t = s
       do k = 1, len(s)
          if (s(k:k) >= 'A' .and. s(k:k) <= 'Z') &

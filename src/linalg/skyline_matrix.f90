@@ -1,12 +1,10 @@
-!> Symmetric matrix in active-column (skyline, profile) storage, with the
-!> in-place L D L^T factorisation and solution of Bathe's COLSOL, written
-!> out from the mathematics for teaching: one of the storages of the global
-!> matrices (src/linalg/global_matrix.f90) that solve the linear system of
-!> eq. (19). The storage scheme and the pivot rule: the comment above
-!> skyline_matrix_t.
+!> Symmetric matrix in active-column (skyline) storage, with the in-place
+!> L D L^T factorisation and solution of Bathe's COLSOL, written out from the
+!> mathematics for teaching: a storage of global_matrix for eq. (19). The
+!> storage scheme: the comment above skyline_matrix_t.
 module skyline_matrix
    use kinds, only: dp, msg_len
-   use band_matrix, only: pivot_rel_tol
+   use band_matrix, only: check_pivot
    use, intrinsic :: iso_fortran_env, only: int64
    implicit none
    private
@@ -46,10 +44,7 @@ module skyline_matrix
    !> triangular, D diagonal): a(maxa(j)) = d_j and a(maxa(j) + j - i) = l_ij,
    !> meaning L(j,i), for m_j <= i < j. L has the profile of A (no fill-in
    !> outside it), which is why the profile is the storage.
-   !>
-   !> Pivot rule (the same as band_matrix, so both storages reject the same
-   !> matrices): equation j fails when d_j <= pivot_rel_tol * |A(j,j)|, A(j,j)
-   !> the diagonal before factorisation; this includes d_j <= 0.
+   !> The pivot rule: band_matrix's check_pivot on d_j.
    !> Symmetric matrix in skyline storage (as above).
    type :: skyline_matrix_t
       integer :: n = 0  !< order of the matrix (number of equations).
@@ -70,7 +65,6 @@ contains
       character(len=msg_len) :: msg
       integer(int64) :: nwk
       integer :: j
-
       stat = 0
       if (n < 1 .or. size(first_row) /= n) then
          write (msg, '(a,i0,a,i0)') 'skyline_init: order n = ', n, &
@@ -116,7 +110,6 @@ contains
    !> Set every entry to zero and forget any factorisation.
    subroutine skyline_zero(sky)
       type(skyline_matrix_t), intent(inout) :: sky  !< the matrix (its profile is kept).
-
       if (allocated(sky%a)) sky%a = 0.0_dp
       sky%factored = .false.
    end subroutine skyline_zero
@@ -125,7 +118,6 @@ contains
    pure integer function skyline_first_row(sky, j)
       type(skyline_matrix_t), intent(in) :: sky  !< the matrix.
       integer, intent(in) :: j  !< column, 1..n.
-
       skyline_first_row = j - (sky%maxa(j + 1) - sky%maxa(j) - 1)
    end function skyline_first_row
 
@@ -134,7 +126,6 @@ contains
    pure integer function skyline_half_bandwidth(sky)
       type(skyline_matrix_t), intent(in) :: sky  !< the matrix.
       integer :: j
-
       skyline_half_bandwidth = 0
       do j = 1, sky%n
          skyline_half_bandwidth = max(skyline_half_bandwidth, &
@@ -146,23 +137,18 @@ contains
    pure logical function skyline_in_profile(sky, i, j)
       type(skyline_matrix_t), intent(in) :: sky  !< the matrix.
       integer, intent(in) :: i, j      !< row and column indices
-
       skyline_in_profile = .false.
       if (min(i, j) < 1 .or. max(i, j) > sky%n) return
       skyline_in_profile = min(i, j) >= skyline_first_row(sky, max(i, j))
    end function skyline_in_profile
 
-   !> Add value to A(i,j) (= A(j,i), one stored entry).
-   !>
-   !> Caller's duty: skyline_in_profile(sky, i, j) is true and sky is not
-   !> factored. global_matrix checks this for every element before it adds;
-   !> a pair outside the profile is not stored (never written outside a).
+   !> Add value to A(i,j) (= A(j,i), one stored entry); a pair outside the
+   !> profile is not stored (global_matrix checks before it adds).
    subroutine skyline_add(sky, i, j, value)
       type(skyline_matrix_t), intent(inout) :: sky  !< the matrix, added into.
       integer, intent(in) :: i, j      !< row and column indices
       real(dp), intent(in) :: value  !< value added to A(i,j).
       integer :: k
-
       if (.not. skyline_in_profile(sky, i, j)) return
       k = sky%maxa(max(i, j)) + max(i, j) - min(i, j)
       sky%a(k) = sky%a(k) + value
@@ -172,7 +158,6 @@ contains
    pure real(dp) function skyline_get(sky, i, j)
       type(skyline_matrix_t), intent(in) :: sky  !< the matrix.
       integer, intent(in) :: i, j      !< row and column indices
-
       if (skyline_in_profile(sky, i, j)) then
          skyline_get = sky%a(sky%maxa(max(i, j)) + max(i, j) - min(i, j))
       else
@@ -203,19 +188,14 @@ contains
    end subroutine skyline_matvec
 
    !> In-place L D L^T factorisation, column by column (COLSOL's algorithm).
-   !>
-   !> On a failed pivot (the rule above skyline_matrix_t) stat = 1, bad_eq is the
-   !> equation and errmsg says "matrix not positive definite at equation N";
-   !> the matrix is then left unusable (not flagged factored).
+   !> On a failed pivot stat = 1, bad_eq its equation; the matrix is left unusable.
    subroutine skyline_factor(sky, stat, errmsg, bad_eq)
       type(skyline_matrix_t), intent(inout) :: sky  !< the matrix, overwritten by L (off-diagonals) and D (diagonal).
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
-      character(len=msg_len) :: msg
       real(dp) :: ajj, g, l, s
       integer :: i, j, r, mi, mj
-
       stat = 0
       bad_eq = 0
       if (.not. allocated(sky%a)) then
@@ -259,14 +239,10 @@ contains
          end do scale
          sky%a(sky%maxa(j)) = ajj - s
 
-         ! Phase 3 - pivot rule: d_j > pivot_rel_tol * |a_jj| (NaN fails too).
-         if (.not. (sky%a(sky%maxa(j)) > pivot_rel_tol * abs(ajj))) then
-            stat = 1
+         ! Phase 3 - the pivot rule on d_j.
+         call check_pivot(j, sky%a(sky%maxa(j)), ajj, stat, errmsg)
+         if (stat /= 0) then
             bad_eq = j
-            write (msg, '(a,i0,a,es10.3,a,es9.2,a,es10.3,a)') &
-               'matrix not positive definite at equation ', j, ' (pivot ', &
-               sky%a(sky%maxa(j)), ' <= ', pivot_rel_tol, ' x diagonal ', ajj, ')'
-            errmsg = msg
             return
          end if
       end do columns
@@ -281,7 +257,6 @@ contains
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
       integer :: i, j
-
       stat = 0
       if (.not. sky%factored) then
          stat = 1
@@ -324,7 +299,6 @@ contains
       type(skyline_matrix_t), intent(in) :: other  !< the matrix added, same profile as sky.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure (sky unchanged).
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-
       stat = 0
       if (sky%factored .or. other%factored) then
          stat = 1

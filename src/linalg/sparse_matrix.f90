@@ -1,10 +1,7 @@
 !> Symmetric positive definite matrix in compressed sparse columns, factored
-!> by CHOLMOD's supernodal Cholesky with a fill-reducing ordering
-!> (SuiteSparse, through src/linalg/cholmod_binding.f90): one of the
-!> storages of the global matrices (src/linalg/global_matrix.f90) that solve
-!> the linear system of eq. (19). The storage scheme, the factorization, the
-!> ownership of the factor and the pivot rule: the comment above
-!> sparse_matrix_t. More: docs/PERFORMANCE.md ("Sparse storage (CHOLMOD)").
+!> by CHOLMOD's supernodal Cholesky (cholmod_binding): a storage of
+!> global_matrix for eq. (19). The scheme, the factorization and its owner:
+!> the comment above sparse_matrix_t. More: docs/PERFORMANCE.md.
 module sparse_matrix
    use, intrinsic :: iso_c_binding, only: c_long_long
    use, intrinsic :: iso_fortran_env, only: int64
@@ -48,30 +45,15 @@ module sparse_matrix
    !> about 40 reals per equation where band storage keeps kd + 1 (hundreds to
    !> thousands).
    !>
-   !> Factorization: CHOLMOD orders the equations to reduce the fill (its
-   !> default: AMD, and METIS' nested dissection when AMD leaves much fill),
-   !> finds the structure of the factor (the symbolic factorization, done once
-   !> per matrix and kept, so that a refactorization after sparse_zero costs
-   !> only the numbers; another matrix of a pattern seen last reuses its
-   !> ordering, src/linalg/cholmod_shim.c), and computes P A P^T = L L^T supernode by supernode
-   !> with dense BLAS. Before the numeric factorization the analysis gives the
-   !> factor's size, which is checked against the machine's memory. The
-   !> factored matrix keeps the factor and the pattern, not the values of A
-   !> (released: the steps need only the factor), until sparse_zero.
-   !>
-   !> The factorization lives in CHOLMOD's memory until sparse_release: the
-   !> matrix holds its key (module cholmod_binding says why the release is
-   !> explicit). An assignment b = a shares it; sparse_copy_factor gives b its
-   !> own copy.
-   !>
-   !> Pivot rule (the one of band_matrix and skyline_matrix): equation j fails
-   !> when its pivot d_j = L(k,k)**2 (k its place in the order of elimination)
-   !> is not greater than pivot_rel_tol * |A(j,j)|; the first failure in the
-   !> order of elimination is reported, or the column at which CHOLMOD found a
-   !> pivot <= 0, whichever comes first. The elimination order is not that of
-   !> band storage, so for a singular matrix (a mechanism) the equation named
-   !> may be another of the same mechanism; a matrix with one bad equation is
-   !> named alike by all storages.
+   !> Factorization: CHOLMOD orders the equations to reduce the fill (AMD, or
+   !> METIS), analyses the factor's structure once per pattern (kept: a
+   !> refactorization after sparse_zero costs only the numbers), checks its
+   !> size against the machine's memory, and computes P A P^T = L L^T with
+   !> dense BLAS; the values of A are then released. The factor lives in
+   !> CHOLMOD's memory until sparse_release; b = a shares it,
+   !> sparse_copy_factor copies it. The pivot rule (band_matrix's check_pivot)
+   !> on d_j = L(k,k)**2 in the order of elimination: for a mechanism the
+   !> equation named may be another of the same mechanism than band's.
    !> Symmetric matrix in compressed sparse columns (as above).
    type :: sparse_matrix_t
       integer :: n = 0  !< order of the matrix (number of equations).
@@ -99,7 +81,6 @@ contains
       integer(c_long_long), allocatable :: next(:)
       character(len=msg_len) :: msg
       integer :: j
-
       call equation_elements(n, elem_eq, first, elems)
       allocate (a%colptr(n + 1), next(n), stat=stat, errmsg=msg)
       if (stat == 0) then
@@ -135,7 +116,6 @@ contains
       integer, intent(inout), optional :: rowind(:)  !< the rows, stored when present.
       integer, allocatable :: mark(:)
       integer :: i, j, k, p
-
       allocate (mark(n))
       mark = 0
       if (.not. present(rowind)) next = 0
@@ -170,7 +150,6 @@ contains
       integer, allocatable, intent(out) :: elems(:)  !< the elements, equation by equation.
       integer, allocatable :: fill(:)
       integer :: e, k, eq
-
       allocate (first(n + 1))
       first = 0
       do e = 1, size(elem_eq, 2)
@@ -200,7 +179,6 @@ contains
    !> them).
    subroutine sparse_zero(a)
       type(sparse_matrix_t), intent(inout) :: a  !< the matrix.
-
       if (.not. allocated(a%colptr)) return
       if (.not. allocated(a%val)) allocate (a%val(a%colptr(a%n + 1) - 1))
       a%val = 0.0_dp
@@ -211,7 +189,6 @@ contains
    !> keeps its pattern and, unless it was factored, its values.
    subroutine sparse_release(a)
       type(sparse_matrix_t), intent(inout) :: a  !< the matrix.
-
       call chol_release(a%chol)
       a%analysed = .false.
       a%factored = .false.
@@ -225,7 +202,6 @@ contains
       type(sparse_matrix_t), intent(inout) :: b  !< the copy, b = a done.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-
       call chol_copy(a%chol, b%chol, stat, errmsg)
       if (stat /= 0) then
          b%analysed = .false.
@@ -239,7 +215,6 @@ contains
       integer, intent(in) :: i, j  !< row and column indices.
       integer(int64) :: lo, hi, mid
       integer :: r, c
-
       pos = 0
       if (min(i, j) < 1 .or. max(i, j) > a%n) return
       r = min(i, j)
@@ -263,21 +238,16 @@ contains
    pure logical function sparse_in_pattern(a, i, j)
       type(sparse_matrix_t), intent(in) :: a  !< the matrix.
       integer, intent(in) :: i, j  !< row and column indices.
-
       sparse_in_pattern = locate(a, i, j) > 0
    end function sparse_in_pattern
 
-   !> Add value to A(i,j) (= A(j,i), one stored entry).
-   !>
-   !> Caller's duty: sparse_in_pattern(a, i, j) is true and a is not
-   !> factored (global_matrix checks both); a pair outside the pattern is
-   !> not stored.
+   !> Add value to A(i,j) (= A(j,i), one stored entry); a pair outside the
+   !> pattern is not stored (global_matrix checks before it adds).
    subroutine sparse_add(a, i, j, value)
       type(sparse_matrix_t), intent(inout) :: a  !< the matrix, added into.
       integer, intent(in) :: i, j  !< row and column indices.
       real(dp), intent(in) :: value  !< value added to A(i,j).
       integer(int64) :: p
-
       p = locate(a, i, j)
       if (p > 0) a%val(p) = a%val(p) + value
    end subroutine sparse_add
@@ -288,7 +258,6 @@ contains
       type(sparse_matrix_t), intent(in) :: a  !< the matrix.
       integer, intent(in) :: i, j  !< row and column indices.
       integer(int64) :: p
-
       sparse_get = 0.0_dp
       if (.not. allocated(a%val)) return
       p = locate(a, i, j)
@@ -304,7 +273,6 @@ contains
       integer(int64) :: p
       integer :: i, j
       real(dp) :: xj, yj
-
       y = 0.0_dp
       do j = 1, a%n
          xj = x(j)
@@ -326,7 +294,6 @@ contains
       type(sparse_matrix_t), intent(in) :: b  !< the matrix added, same pattern as a.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure (a unchanged).
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-
       stat = 0
       if (a%factored .or. b%factored .or. .not. allocated(a%val) .or. .not. allocated(b%val)) then
          stat = 1
@@ -342,13 +309,8 @@ contains
       end if
    end subroutine sparse_axpy
 
-   !> Cholesky factorization by CHOLMOD (module header): the analysis once
-   !> per pattern, the memory check, then the numbers; the values of A are
-   !> released.
-   !>
-   !> On a failed pivot (module header) stat = 1, bad_eq is the equation and
-   !> errmsg says "matrix not positive definite at equation N"; the matrix
-   !> is then left unusable (not flagged factored) until sparse_zero.
+   !> Cholesky factorization by CHOLMOD (above sparse_matrix_t). On a failed
+   !> pivot stat = 1, bad_eq its equation; the matrix is unusable until sparse_zero.
    subroutine sparse_factor(a, stat, errmsg, bad_eq)
       type(sparse_matrix_t), intent(inout) :: a  !< the matrix, replaced by its factor.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
@@ -356,7 +318,6 @@ contains
       integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
       real(dp), allocatable :: diag(:)
       integer :: minor, j
-
       stat = 0
       bad_eq = 0
       if (.not. allocated(a%val) .or. a%factored) then
@@ -389,7 +350,6 @@ contains
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       real(dp) :: flops, machine
       character(len=msg_len) :: msg
-
       call chol_analyze(a%chol, a%factor_entries, flops, a%factor_bytes, stat, errmsg)
       if (stat /= 0) return
       machine = physical_memory()
@@ -419,7 +379,6 @@ contains
       integer, allocatable :: perm(:)
       integer :: k, j
       character(len=msg_len) :: msg
-
       bad_eq = 0
       allocate (ldiag(a%n), perm(a%n))
       call chol_diagonal(a%chol, ldiag, perm, stat, errmsg)
@@ -448,7 +407,6 @@ contains
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
-
       stat = 0
       if (.not. a%factored) then
          stat = 1
@@ -466,7 +424,6 @@ contains
    pure integer function sparse_half_bandwidth(a)
       type(sparse_matrix_t), intent(in) :: a  !< the matrix.
       integer :: j
-
       sparse_half_bandwidth = 0
       if (.not. allocated(a%colptr)) return
       do j = 1, a%n
@@ -477,7 +434,6 @@ contains
    !> Number of stored entries of A (the upper triangle's pattern).
    pure integer(int64) function sparse_entries(a)
       type(sparse_matrix_t), intent(in) :: a  !< the matrix.
-
       sparse_entries = 0
       if (allocated(a%colptr)) sparse_entries = a%colptr(a%n + 1) - 1
    end function sparse_entries

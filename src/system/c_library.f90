@@ -1,11 +1,7 @@
-!> The C library as the program calls it (ISO C binding), in one place:
-!> the interfaces of its functions and the layouts of the structs they
-!> fill, those of Linux on a 64-bit machine (glibc), grouped by header.
-!> What the calls mean is said where they are made: src/system/file_system.f90
-!> (files and directories), src/system/system_limits.f90 (what the machine offers
-!> a run), src/system/process_stop.f90 (signals, the exit) and
-!> src/accuracy/child_process.f90 (child processes, the CPUs the process may
-!> use). Paths go in as C strings (with a terminating c_null_char).
+!> The C library as the program calls it (ISO C binding), in one place: its
+!> functions' interfaces and its structs, those of 64-bit Linux (glibc),
+!> by header. What the calls mean is said where they are made (file_system,
+!> system_limits, process_stop, child_process). Paths end in c_null_char.
 module c_library
    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_char, c_ptr, c_funptr, c_int64_t, c_size_t
    use, intrinsic :: iso_c_binding, only: c_int32_t, c_int16_t
@@ -50,6 +46,21 @@ module c_library
    type, bind(c) :: cpu_set_t
       integer(c_int64_t) :: bits(16) = 0
    end type cpu_set_t
+
+   !> struct statx (<linux/stat.h>, Linux 4.11, glibc 2.28): the same layout
+   !> on every architecture, unlike struct stat. The times are four
+   !> struct statx_timestamp (a 64-bit second, a 32-bit nanosecond, 32 bits
+   !> reserved), read here as pairs of 64-bit words.
+   type, bind(c) :: statx_t
+      integer(c_int32_t) :: stx_mask, stx_blksize
+      integer(c_int64_t) :: stx_attributes
+      integer(c_int32_t) :: stx_nlink, stx_uid, stx_gid
+      integer(c_int16_t) :: stx_mode, stx_spare0     !< stx_mode: unsigned, read as signed
+      integer(c_int64_t) :: stx_ino, stx_size, stx_blocks, stx_attributes_mask
+      integer(c_int64_t) :: stx_times(8)
+      integer(c_int32_t) :: stx_rdev_major, stx_rdev_minor, stx_dev_major, stx_dev_minor
+      integer(c_int64_t) :: stx_spare2(14)
+   end type statx_t
 
    !> open(2) flags (Linux, <fcntl.h>): write only, create, truncate, no symbolic
    !> link (open fails on one); the four together: a file written anew, never
@@ -191,24 +202,6 @@ module c_library
          integer(c_size_t), value :: count
          integer(c_long) :: r
       end function c_write
-   end interface
-
-   !> struct statx (<linux/stat.h>, Linux 4.11, glibc 2.28): the same layout
-   !> on every architecture, unlike struct stat. The times are four
-   !> struct statx_timestamp (a 64-bit second, a 32-bit nanosecond, 32 bits
-   !> reserved), read here as pairs of 64-bit words.
-   type, bind(c) :: statx_t
-      integer(c_int32_t) :: stx_mask, stx_blksize
-      integer(c_int64_t) :: stx_attributes
-      integer(c_int32_t) :: stx_nlink, stx_uid, stx_gid
-      integer(c_int16_t) :: stx_mode, stx_spare0     !< stx_mode: unsigned, read as signed
-      integer(c_int64_t) :: stx_ino, stx_size, stx_blocks, stx_attributes_mask
-      integer(c_int64_t) :: stx_times(8)
-      integer(c_int32_t) :: stx_rdev_major, stx_rdev_minor, stx_dev_major, stx_dev_minor
-      integer(c_int64_t) :: stx_spare2(14)
-   end type statx_t
-
-   interface
       ! <sys/stat.h> (glibc 2.28)
       !> int statx(int dirfd, const char *path, int flags, unsigned int mask, struct statx *buf)
       function c_statx(dirfd, path, flags, mask, buf) bind(c, name='statx') result(r)

@@ -1,13 +1,8 @@
-!> What the program asks of the file system, through the C library
-!> (src/system/c_library.f90), never through a shell: a path is only ever a
-!> name here, so nothing in it is interpreted.
-!>
-!> Directories (make_directories), exclusive advisory locks (lock_file,
-!> flock(2)), rename, truncate, the size of a file as it is on disk
-!> (file_size, file_probe_t), what a name is without following a link
-!> (path_kind), paths and prefixes the program refuses (path_problem,
-!> prefix_problem, name_problem), exclusive creation and removal
-!> (create_new_file, remove_file). No write goes through a symbolic link.
+!> What the program asks of the file system, through the C library, never a
+!> shell (a path is only a name): directories, advisory locks (flock(2)),
+!> rename, truncate, a file's size on disk, what a name is without following
+!> a link, the paths and prefixes refused, exclusive creation and removal,
+!> lines of any length. No write goes through a symbolic link.
 !> Not from the paper. More: docs/ROBUSTNESS.md.
 module file_system
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char, c_ptr, c_null_ptr, c_associated, c_int64_t

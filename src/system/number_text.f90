@@ -1,14 +1,8 @@
-!> Numbers as text, for messages, echoes and the summary: one place for
-!> the formats.
-!>
-!>  - real_str: the fewest significant digits that read back to the same
-!>    double (the deck's echo and its messages);
-!>  - real_short: four significant digits (warnings); int_str: an integer;
-!>  - put_es16_7e3, put_f16_4, put_i6: a number as the edit descriptors
-!>    es16.7e3, f16.4 and i6 write it, byte for byte, without the formatted
-!>    write (the history's rows); a number near a rounding boundary, or one
-!>    the fast path does not cover, is written by the formatted write itself.
-!> Not from the paper. The proof: tests/test_number_text.pf.
+!> Numbers as text, one place for the formats: real_str (the fewest digits
+!> that read back to the same double), real_short (four digits), int_str, and
+!> put_es16_7e3, put_f16_4, put_i6: the history's numbers as those edit
+!> descriptors write them, byte for byte, without the formatted write (which
+!> takes a number near a rounding boundary). The proof: tests/test_number_text.pf.
 module number_text
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
@@ -75,7 +69,6 @@ contains
       character(len=:), allocatable :: sign, digits
       real(dp) :: back
       integer :: p, epos, e, ios
-
       if (ieee_is_nan(x)) then
          s = 'NaN'
          return
@@ -144,13 +137,12 @@ contains
       real(dp), intent(in) :: x(:)
       integer, intent(in) :: max_chars              !< cut after this many characters
       character(len=:), allocatable :: s
-      integer :: i, limit
-      limit = max_chars
+      integer :: i
       s = ''
       do i = 1, size(x)
          if (i > 1) s = s // ', '
          s = s // real_str(x(i))
-         if (len(s) > limit) then
+         if (len(s) > max_chars) then
             s = s // ', ...'
             return
          end if
@@ -164,7 +156,6 @@ contains
       real(dp) :: ax, scaled
       integer(int64) :: n
       integer :: k, e, i, at
-
       ax = abs(x)
       if (x == 0.0_dp .and. sign(1.0_dp, x) > 0.0_dp) then
          text = '  0.0000000E+000'
@@ -213,7 +204,6 @@ contains
       real(dp) :: scaled
       integer(int64) :: n
       integer :: i, at
-
       if (.not. (x >= 0.0_dp .and. x < f_highest) .or. (x == 0.0_dp .and. sign(1.0_dp, x) < 0.0_dp)) then
          write (text, '(f16.4)') x                   ! negative, -0, NaN, large: the run-time's
          return
@@ -243,21 +233,12 @@ contains
    pure subroutine put_i6(n, text)
       integer, intent(in) :: n                      !< the number
       character(len=6), intent(out) :: text         !< its text
-      integer :: m, i
       if (n < -99999 .or. n > 999999) then
          write (text, '(i6)') n                      ! '******'
-         return
+      else
+         text = int_str(n)
+         text = adjustr(text)
       end if
-      text = ''
-      m = abs(n)
-      i = 6
-      do
-         text(i:i) = digit_chars(mod(m, 10) + 1:mod(m, 10) + 1)
-         m = m/10
-         i = i - 1
-         if (m == 0) exit
-      end do
-      if (n < 0) text(i:i) = '-'
    end subroutine put_i6
 
    !> ax 10**p: one rounding for |p| <= 22 (a product or a quotient with an

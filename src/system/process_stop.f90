@@ -1,18 +1,10 @@
-!> How the process stops: on a stop signal (SIGTERM, SIGINT, SIGHUP,
-!> SIGUSR1, SIGUSR2), at once during the set-up and after the step during
-!> the run; or at once with an exit status (exit_program, through _exit(2)).
-!>
-!> In the set-up the handler removes the result files the run has claimed,
-!> says 'impact: stopped by signal N during set-up' and exits with status
-!> 128 + N, using only async-signal-safe calls on texts prepared before. In
-!> the run it only records the signal; the time loop asks
-!> stop_signal_caught() after every step and ends the run with its results
-!> and a restart point. keep_file_size_errors ignores SIGXFSZ, so that a
-!> write past ulimit -f fails with EFBIG and is reported. The phase and the
-!> signal are module state, the one exception to "no hidden state": a
-!> handler can reach nothing else.
-!> Not from the paper. More: docs/ROBUSTNESS.md ("Stability, bad input,
-!> nothing lost").
+!> How the process stops: on a stop signal (SIGTERM, SIGINT, SIGHUP, SIGUSR1,
+!> SIGUSR2) at once in the set-up (the claimed result files removed, exit
+!> status 128 + N, async-signal-safe calls only) and after the step in the
+!> run (the loop asks stop_signal_caught, the run ends with its results and
+!> a restart point); or with an exit status (exit_program, _exit(2)). The
+!> phase and the signal are module state: a handler can reach nothing else.
+!> Not from the paper. More: docs/ROBUSTNESS.md.
 module process_stop
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_funptr, c_funloc, c_intptr_t, c_size_t, c_long, &
       c_int64_t, c_null_char
@@ -98,7 +90,6 @@ contains
       integer(c_int64_t) :: bytes
       integer(c_long) :: written
       integer :: k, n
-
       if (phase == after_step) then
          caught = signum
          return

@@ -1,16 +1,9 @@
-!> What the machine offers a run, asked of the C library (ISO C binding,
-!> src/system/c_library.f90):
-!> the physical memory (sysconf(3)), the memory free for a run (the
-!> kernel's MemAvailable, the control group's limit) and the memory this process may still
-!> take (getrlimit(2), RLIMIT_AS and RLIMIT_DATA: ulimit -v, ulimit -d,
-!> less what it holds now, /proc/self/statm); the free space of the file
-!> system a path is on, whether it is mounted read-only and the longest
-!> name it takes (statvfs(3): f_bavail, ST_RDONLY, f_namemax); and the
-!> largest file the process may write (getrlimit(2), RLIMIT_FSIZE). The
-!> deck's checks and the claim of the result files compare what a scene
-!> would need against them before any work (src/deck/input_deck.f90,
-!> src/results/result_files.f90, docs/ROBUSTNESS.md). A size is -1 when the system does not tell, or sets no limit;
-!> the check is then skipped.
+!> What the machine offers a run, asked of the C library: memory (physical,
+!> free, the control group's and the process's limits), a file system's
+!> free space, read-only mount and longest name, the largest file the
+!> process may write. The deck's checks and the result files compare a
+!> scene's needs against them before any work; a size is -1 when the system
+!> does not tell or sets no limit (no check then). More: docs/ROBUSTNESS.md.
 module system_limits
    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_null_char
    use kinds, only: dp
@@ -45,12 +38,9 @@ contains
    end function physical_memory
 
    !> The memory a run may take on this machine (bytes), -1 when nothing
-   !> tells: the least of its physical memory, the memory free now
-   !> (MemAvailable of /proc/meminfo: free, and the caches the kernel gives
-   !> back) and the memory limit of the process's control group (a batch
-   !> system's limit of the job; cgroup v2 memory.max, v1
-   !> memory.limit_in_bytes, of the group /proc/self/cgroup names, or of
-   !> the hierarchy's root as a container sees it).
+   !> tells: the least of its physical memory, MemAvailable (/proc/meminfo)
+   !> and the limit of the process's control group (cgroup v2 memory.max, v1
+   !> memory.limit_in_bytes, of its group or the root a container sees).
    function memory_available() result(bytes)
       real(dp) :: bytes
       character(len=1024) :: line
@@ -107,11 +97,9 @@ contains
 
    end function memory_available
 
-   !> The memory this process may still allocate under its limits (bytes):
-   !> the address space (RLIMIT_AS, ulimit -v) less what it has mapped now,
-   !> the data segment (RLIMIT_DATA, ulimit -d) less its data now, the
-   !> smaller of the two; -1 when neither is limited. The mapped sizes are
-   !> Linux's /proc/self/statm; without it the limits are taken whole.
+   !> The memory this process may still allocate (bytes), -1 when not limited:
+   !> the smaller of RLIMIT_AS (ulimit -v) less its mapped space and
+   !> RLIMIT_DATA (ulimit -d) less its data, both from /proc/self/statm.
    function memory_room() result(bytes)
       real(dp) :: bytes
       real(dp) :: mapped, data
@@ -131,11 +119,7 @@ contains
          if (c_getrlimit(resource, lim) /= 0) return
          if (lim%rlim_cur <= 0) return             ! RLIM_INFINITY
          room = max(real(lim%rlim_cur, dp) - used, 0.0_dp)
-         if (bytes < 0.0_dp) then
-            bytes = room
-         else
-            bytes = min(bytes, room)
-         end if
+         bytes = merge(room, min(bytes, room), bytes < 0.0_dp)
       end subroutine take
 
    end function memory_room
