@@ -38,8 +38,7 @@ contains
             call element_pressure_load(model%geo(e), q, fe)
             call scatter_add_element(model%msh%elem_eq(:, e), fe, f)
          end do elements
-      case ('central_force')
-         f(model%eq_impact) = model%force_share*deck%load_magnitude
+      case ('central_force'); f(model%eq_impact) = model%force_share*deck%load_magnitude
       case default
          stat = 1
          errmsg = '&load: kind = '''//trim(deck%load_kind)//''': unknown load'

@@ -48,18 +48,12 @@ contains
          i = i + 1
          arg = argument(i)
          select case (arg)
-         case ('--help', '-h')
-            opts%action = 'help'
-         case ('--version', '--schema', '--deck-table')
-            opts%action = arg(3:)
-         case ('--check')
-            opts%check = .true.
-         case ('--overwrite')
-            opts%overwrite = .true.
-         case ('--restart')
-            opts%restart = .true.
-         case ('--single')
-            opts%single = .true.
+         case ('--help', '-h'); opts%action = 'help'
+         case ('--version', '--schema', '--deck-table'); opts%action = arg(3:)
+         case ('--check'); opts%check = .true.
+         case ('--overwrite'); opts%overwrite = .true.
+         case ('--restart'); opts%restart = .true.
+         case ('--single'); opts%single = .true.
          case ('--set', '--trace', '--accuracy')
             if (i == n) then
                errmsg = arg // ' needs a value'
@@ -77,10 +71,8 @@ contains
                   return
                end if
                opts%settings = [opts%settings, argument(i)]
-            case ('--trace')
-               opts%trace = argument(i)
-            case default
-               opts%accuracy = argument(i)
+            case ('--trace'); opts%trace = argument(i)
+            case default; opts%accuracy = argument(i)
             end select
          case default
             if (arg(1:min(1, len(arg))) == '-' .and. len(arg) > 1) then

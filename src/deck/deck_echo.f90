@@ -64,12 +64,9 @@ contains
       case (kind_integer)
          text = int_str(v%i)
          if (.not. v%given) text = '(not given)'
-      case (kind_logical)
-         text = trim(merge('.true. ', '.false.', v%l))
-      case (kind_word, kind_path)
-         text = "'" // v%s // "'"
-      case (kind_reals)
-         text = list_str(v%list, huge(1))
+      case (kind_logical); text = trim(merge('.true. ', '.false.', v%l))
+      case (kind_word, kind_path); text = "'" // v%s // "'"
+      case (kind_reals); text = list_str(v%list, huge(1))
       end select
    end function deck_value_text
 
@@ -240,8 +237,7 @@ contains
          character(len=*), intent(in) :: text
          integer :: ios
          select case (trim(adjustl(text)))
-         case ('inf');  bound = huge(1.0_dp)
-         case ('-inf'); bound = -huge(1.0_dp)
+         case ('inf');  bound = huge(1.0_dp); case ('-inf'); bound = -huge(1.0_dp)
          case default
             read (text, *, iostat=ios) bound
             if (ios /= 0) bound = 0.0_dp

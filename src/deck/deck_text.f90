@@ -137,13 +137,11 @@ contains
       i = 1
       do while (i <= len(text) .and. r%err%stat == 0)
          select case (text(i:i))
-         case (' ', achar(9))
-            i = i + 1
+         case (' ', achar(9)); i = i + 1
          case (',')
             call push(r, tok_comma, ',', 1)
             i = i + 1
-         case ('''', '"')
-            call scan_string(r, text, i, 1)
+         case ('''', '"'); call scan_string(r, text, i, 1)
          case default
             j = word_end(text, i, value_word_ends)
             call push(r, tok_word, text(i:j), 1)
@@ -169,10 +167,8 @@ contains
       i = 1
       chars: do while (i <= len(s) .and. r%err%stat == 0)
          select case (s(i:i))
-         case (' ', achar(9), achar(13))
-            i = i + 1
-         case ('!')
-            exit chars
+         case (' ', achar(9), achar(13)); i = i + 1
+         case ('!'); exit chars
          case default
             if (group_open(r)) then
                call scan_token(r, s, i, ln)
@@ -231,8 +227,7 @@ contains
          end if
          call fail(r%err, ln, open_group_name(r) // ": no closing '/' before the next group " &
             // shown_text(s(i:max(i, j))))
-      case ('''', '"')
-         call scan_string(r, s, i, ln)
+      case ('''', '"'); call scan_string(r, s, i, ln)
       case ('=')
          call push(r, tok_equals, '=', ln)
          i = i + 1
@@ -547,8 +542,7 @@ contains
                   return
                end if
             end if
-         case default
-            n = n + 1
+         case default; n = n + 1
          end select
          k = k + 1
       end do values

@@ -102,25 +102,20 @@ contains
       integer, intent(out) :: stat  !< 0 on success, 1 on invalid sizes or failed allocation.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
-      stat = 0
+      stat = 1
       if (n < 1 .or. kd < 0 .or. kd > n - 1) then
          write (msg, '(a,i0,a,i0,a)') 'band_init: invalid order n = ', n, &
             ' or half-bandwidth kd = ', kd, ' (need n >= 1, 0 <= kd <= n-1)'
-         stat = 1
-         errmsg = msg
-         return
-      end if
-      if (int(kd + 1, int64) * int(n, int64) > int(huge(n), int64)) then
+      else if (int(kd + 1, int64) * int(n, int64) > int(huge(n), int64)) then
          write (msg, '(a,i0,a,i0,a)') 'band_init: band of ', kd + 1, ' x ', n, &
             ' entries exceeds the default integer range'
-         stat = 1
-         errmsg = msg
-         return
+      else
+         allocate (a%ab(kd + 1, n), stat=stat)   ! (gfortran 12's errmsg= would say "an allocated object")
+         if (stat /= 0) write (msg, '(a,i0,a,i0,a,i0,a)') 'band_init: out of memory: the band matrix of ', &
+            kd + 1, ' x ', n, ' reals (', (int(kd + 1, int64)*int(n, int64)*8_int64)/1048576_int64, &
+            ' MiB) cannot be allocated'
       end if
-      allocate (a%ab(kd + 1, n), stat=stat)
-      if (stat /= 0) then       ! (gfortran 12's errmsg= says "Attempt to allocate an allocated object")
-         write (msg, '(a,i0,a,i0,a,i0,a)') 'band_init: out of memory: the band matrix of ', kd + 1, ' x ', n, &
-            ' reals (', (int(kd + 1, int64)*int(n, int64)*8_int64)/1048576_int64, ' MiB) cannot be allocated'
+      if (stat /= 0) then
          stat = 1
          errmsg = msg
          return

@@ -205,18 +205,12 @@ contains
       character(len=12) :: status
       write (status, '(i0)') impact_cholmod_status()
       select case (code)
-      case (code_ok)
-         text = 'no failure'
-      case (no_handle)
-         text = 'the factorization was released (an assigned copy used after the original''s release?)'
-      case (no_memory)
-         text = 'out of memory'
-      case (too_large)
-         text = 'the problem is too large for CHOLMOD''s integers'
-      case (invalid)
-         text = 'invalid input (no matrix handed over, or not analysed)'
-      case default
-         text = 'CHOLMOD failed with status ' // trim(status)
+      case (code_ok); text = 'no failure'
+      case (no_handle); text = 'the factorization was released (an assigned copy used after the original''s release?)'
+      case (no_memory); text = 'out of memory'
+      case (too_large); text = 'the problem is too large for CHOLMOD''s integers'
+      case (invalid); text = 'invalid input (no matrix handed over, or not analysed)'
+      case default; text = 'CHOLMOD failed with status ' // trim(status)
       end select
    end function chol_failure
 

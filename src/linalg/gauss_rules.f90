@@ -25,16 +25,11 @@ contains
       real(dp), parameter :: w4i = 0.652145154862546142626936050778001_dp
       real(dp), parameter :: w4o = 0.347854845137453857373063949221999_dp
       select case (n)
-      case (1)
-         xi = [0.0_dp];          w = [2.0_dp]
-      case (2)
-         xi = [-a2, a2];         w = [1.0_dp, 1.0_dp]
-      case (3)
-         xi = [-a3, 0.0_dp, a3]; w = [5.0_dp, 8.0_dp, 5.0_dp]/9.0_dp
-      case (4)
-         xi = [-a4o, -a4i, a4i, a4o]; w = [w4o, w4i, w4i, w4o]
-      case default
-         xi = 0.0_dp;            w = 0.0_dp
+      case (1); xi = [0.0_dp];          w = [2.0_dp]
+      case (2); xi = [-a2, a2];         w = [1.0_dp, 1.0_dp]
+      case (3); xi = [-a3, 0.0_dp, a3]; w = [5.0_dp, 8.0_dp, 5.0_dp]/9.0_dp
+      case (4); xi = [-a4o, -a4i, a4i, a4o]; w = [w4o, w4i, w4i, w4o]
+      case default; xi = 0.0_dp;            w = 0.0_dp
       end select
    end subroutine gauss_1d
 

@@ -54,28 +54,22 @@ contains
       character(len=msg_len) :: msg
       character(len=storage_len) :: name
       integer, allocatable :: first_row(:)
-      integer :: e, k, eq, lo, hi, kd
+      integer :: e, k, eq, lo, kd, bad(2)
       call global_release(g)
-      stat = 0
+      stat = 1
       if (neq < 1) then
          write (msg, '(a,i0)') 'global_init: number of equations must be >= 1, got ', neq
-         stat = 1
+      else if (any(elem_eq < 0 .or. elem_eq > neq)) then       ! 0 (constrained) or 1..neq
+         bad = findloc(elem_eq < 0 .or. elem_eq > neq, .true.)
+         write (msg, '(a,i0,a,i0,a,i0,a,i0)') 'global_init: element ', bad(2), ' freedom ', bad(1), &
+            ' has equation ', elem_eq(bad(1), bad(2)), ' outside 0..', neq
+      else
+         stat = 0
+      end if
+      if (stat /= 0) then
          errmsg = msg
          return
       end if
-      ! Every equation number must be 0 (constrained) or 1..neq.
-      do e = 1, size(elem_eq, 2)
-         do k = 1, size(elem_eq, 1)
-            if (elem_eq(k, e) < 0 .or. elem_eq(k, e) > neq) then
-               write (msg, '(a,i0,a,i0,a,i0,a,i0)') 'global_init: element ', e, &
-                  ' freedom ', k, ' has equation ', elem_eq(k, e), &
-                  ' outside 0..', neq
-               stat = 1
-               errmsg = msg
-               return
-            end if
-         end do
-      end do
 
       name = resolve_storage(lower(trim(adjustl(storage))), neq, .false.)
       select case (trim(name))
@@ -83,19 +77,13 @@ contains
          ! kd = max over elements of (largest - smallest equation).
          kd = 0
          do e = 1, size(elem_eq, 2)
-            if (all(elem_eq(:, e) == 0)) cycle
-            lo = minval(elem_eq(:, e), mask=elem_eq(:, e) > 0)
-            hi = maxval(elem_eq(:, e))
-            kd = max(kd, hi - lo)
+            if (any(elem_eq(:, e) > 0)) kd = max(kd, maxval(elem_eq(:, e)) - minval(elem_eq(:, e), mask=elem_eq(:, e) > 0))
          end do
          call band_init(g%band, neq, kd, stat, errmsg)
          if (stat /= 0) return
       case ('skyline')
          ! m_j = min over elements holding j of their smallest equation.
-         allocate (first_row(neq))
-         do eq = 1, neq
-            first_row(eq) = eq
-         end do
+         first_row = [(eq, eq = 1, neq)]
          do e = 1, size(elem_eq, 2)
             if (all(elem_eq(:, e) == 0)) cycle
             lo = minval(elem_eq(:, e), mask=elem_eq(:, e) > 0)
@@ -124,12 +112,9 @@ contains
    subroutine global_zero(g)
       type(global_matrix_t), intent(inout) :: g  !< the matrix.
       select case (trim(g%storage))
-      case ('band')
-         call band_zero(g%band)
-      case ('skyline')
-         call skyline_zero(g%sky)
-      case ('sparse')
-         call sparse_zero(g%sparse)
+      case ('band'); call band_zero(g%band)
+      case ('skyline'); call skyline_zero(g%sky)
+      case ('sparse'); call sparse_zero(g%sparse)
       end select
       g%deferred_error = ''
    end subroutine global_zero
@@ -186,12 +171,9 @@ contains
             ip = eqs(p)
             if (ip == 0 .or. ip > iq) cycle
             select case (g%storage)
-            case ('band')
-               call band_add(g%band, ip, iq, ke(p, q))
-            case ('skyline')
-               call skyline_add(g%sky, ip, iq, ke(p, q))
-            case default
-               call sparse_add(g%sparse, ip, iq, ke(p, q))
+            case ('band'); call band_add(g%band, ip, iq, ke(p, q))
+            case ('skyline'); call skyline_add(g%sky, ip, iq, ke(p, q))
+            case default; call sparse_add(g%sparse, ip, iq, ke(p, q))
             end select
          end do
       end do columns
@@ -215,12 +197,9 @@ contains
                trim(g%storage) // "', '" // trim(other%storage) // "')"
       else
          select case (trim(g%storage))
-         case ('band')
-            call band_axpy(g%band, alpha, other%band, ierr, msg)
-         case ('skyline')
-            call skyline_axpy(g%sky, alpha, other%sky, ierr, msg)
-         case ('sparse')
-            call sparse_axpy(g%sparse, alpha, other%sparse, ierr, msg)
+         case ('band'); call band_axpy(g%band, alpha, other%band, ierr, msg)
+         case ('skyline'); call skyline_axpy(g%sky, alpha, other%sky, ierr, msg)
+         case ('sparse'); call sparse_axpy(g%sparse, alpha, other%sparse, ierr, msg)
          end select
       end if
       if (len_trim(msg) > 0) then
@@ -305,12 +284,9 @@ contains
       bad_eq = 0
       if (.not. usable(g, 'global_factor', stat, errmsg)) return
       select case (g%storage)
-      case ('band')
-         call band_factor(g%band, stat, errmsg, bad_eq)
-      case ('skyline')
-         call skyline_factor(g%sky, stat, errmsg, bad_eq)
-      case default
-         call sparse_factor(g%sparse, stat, errmsg, bad_eq)
+      case ('band'); call band_factor(g%band, stat, errmsg, bad_eq)
+      case ('skyline'); call skyline_factor(g%sky, stat, errmsg, bad_eq)
+      case default; call sparse_factor(g%sparse, stat, errmsg, bad_eq)
       end select
    end subroutine global_factor
 
@@ -322,12 +298,9 @@ contains
       character(len=*), intent(inout) :: errmsg     !< reason for the failure (set only on failure)
       if (.not. usable(g, 'global_solve', stat, errmsg)) return
       select case (g%storage)
-      case ('band')
-         call band_solve(g%band, b, stat, errmsg)
-      case ('skyline')
-         call skyline_solve(g%sky, b, stat, errmsg)
-      case default
-         call sparse_solve(g%sparse, b, stat, errmsg)
+      case ('band'); call band_solve(g%band, b, stat, errmsg)
+      case ('skyline'); call skyline_solve(g%sky, b, stat, errmsg)
+      case default; call sparse_solve(g%sparse, b, stat, errmsg)
       end select
    end subroutine global_solve
 
@@ -355,14 +328,10 @@ contains
    pure integer function global_bandwidth(g)
       type(global_matrix_t), intent(in) :: g  !< the matrix.
       select case (trim(g%storage))
-      case ('band')
-         global_bandwidth = g%band%kd
-      case ('skyline')
-         global_bandwidth = skyline_half_bandwidth(g%sky)
-      case ('sparse')
-         global_bandwidth = sparse_half_bandwidth(g%sparse)
-      case default
-         global_bandwidth = 0
+      case ('band'); global_bandwidth = g%band%kd
+      case ('skyline'); global_bandwidth = skyline_half_bandwidth(g%sky)
+      case ('sparse'); global_bandwidth = sparse_half_bandwidth(g%sparse)
+      case default; global_bandwidth = 0
       end select
    end function global_bandwidth
 
@@ -372,14 +341,10 @@ contains
    pure integer function global_stored_entries(g)
       type(global_matrix_t), intent(in) :: g  !< the matrix.
       select case (trim(g%storage))
-      case ('band')
-         global_stored_entries = size(g%band%ab)
-      case ('skyline')
-         global_stored_entries = size(g%sky%a)
-      case ('sparse')
-         global_stored_entries = int(sparse_entries(g%sparse))
-      case default
-         global_stored_entries = 0
+      case ('band'); global_stored_entries = size(g%band%ab)
+      case ('skyline'); global_stored_entries = size(g%sky%a)
+      case ('sparse'); global_stored_entries = int(sparse_entries(g%sparse))
+      case default; global_stored_entries = 0
       end select
    end function global_stored_entries
 
@@ -388,14 +353,10 @@ contains
       type(global_matrix_t), intent(in) :: g     !< the matrix, not factored
       integer, intent(in) :: i, j                !< row and column indices
       select case (trim(g%storage))
-      case ('band')
-         global_entry = band_get(g%band, i, j)
-      case ('skyline')
-         global_entry = skyline_get(g%sky, i, j)
-      case ('sparse')
-         global_entry = sparse_get(g%sparse, i, j)
-      case default
-         global_entry = 0.0_dp
+      case ('band'); global_entry = band_get(g%band, i, j)
+      case ('skyline'); global_entry = skyline_get(g%sky, i, j)
+      case ('sparse'); global_entry = sparse_get(g%sparse, i, j)
+      case default; global_entry = 0.0_dp
       end select
    end function global_entry
 
@@ -406,14 +367,10 @@ contains
       type(global_matrix_t), intent(in) :: g     !< the matrix
       integer, intent(in) :: i, j                !< row and column indices
       select case (trim(g%storage))
-      case ('band')
-         in_structure = band_in_band(g%band, i, j)
-      case ('skyline')
-         in_structure = skyline_in_profile(g%sky, i, j)
-      case ('sparse')
-         in_structure = sparse_in_pattern(g%sparse, i, j)
-      case default
-         in_structure = .false.
+      case ('band'); in_structure = band_in_band(g%band, i, j)
+      case ('skyline'); in_structure = skyline_in_profile(g%sky, i, j)
+      case ('sparse'); in_structure = sparse_in_pattern(g%sparse, i, j)
+      case default; in_structure = .false.
       end select
    end function in_structure
 

@@ -64,30 +64,23 @@ contains
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
       integer(int64) :: nwk
-      integer :: j
-      stat = 0
-      if (n < 1 .or. size(first_row) /= n) then
-         write (msg, '(a,i0,a,i0)') 'skyline_init: order n = ', n, &
-            ' with size(first_row) = ', size(first_row)
-         stat = 1
-         errmsg = msg
-         return
-      end if
+      integer :: j, k
+      stat = 1
       nwk = 0
-      do j = 1, n
-         if (first_row(j) < 1 .or. first_row(j) > j) then
-            write (msg, '(a,i0,a,i0,a)') 'skyline_init: first_row(', j, ') = ', &
-               first_row(j), ' is outside 1..j'
-            stat = 1
-            errmsg = msg
-            return
+      if (n < 1 .or. size(first_row) /= n) then
+         write (msg, '(a,i0,a,i0)') 'skyline_init: order n = ', n, ' with size(first_row) = ', size(first_row)
+      else if (any(first_row < 1 .or. first_row > [(k, k = 1, n)])) then
+         j = findloc(first_row < 1 .or. first_row > [(k, k = 1, n)], .true., dim=1)
+         write (msg, '(a,i0,a,i0,a)') 'skyline_init: first_row(', j, ') = ', first_row(j), ' is outside 1..j'
+      else
+         nwk = sum(int([(k - first_row(k) + 1, k = 1, n)], int64))
+         if (nwk >= int(huge(n), int64)) then
+            write (msg, '(a,i0,a)') 'skyline_init: profile of ', nwk, ' entries exceeds the default integer range'
+         else
+            stat = 0
          end if
-         nwk = nwk + (j - first_row(j) + 1)
-      end do
-      if (nwk >= int(huge(n), int64)) then
-         write (msg, '(a,i0,a)') 'skyline_init: profile of ', nwk, &
-            ' entries exceeds the default integer range'
-         stat = 1
+      end if
+      if (stat /= 0) then
          errmsg = msg
          return
       end if
