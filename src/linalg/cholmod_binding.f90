@@ -8,6 +8,7 @@
 module cholmod_binding
    use, intrinsic :: iso_c_binding, only: c_int, c_long_long, c_double
    use kinds, only: dp
+   use number_text, only: int_str
    implicit none
    private
    public :: cholmod_handle_t, cholmod_live_handles, chol_set_matrix, chol_analyze, chol_factorize, &
@@ -202,15 +203,13 @@ contains
    function chol_failure(code) result(text)
       integer(c_int), intent(in) :: code  !< a return code of the shim.
       character(len=:), allocatable :: text
-      character(len=12) :: status
-      write (status, '(i0)') impact_cholmod_status()
       select case (code)
       case (code_ok); text = 'no failure'
       case (no_handle); text = 'the factorization was released (an assigned copy used after the original''s release?)'
       case (no_memory); text = 'out of memory'
       case (too_large); text = 'the problem is too large for CHOLMOD''s integers'
       case (invalid); text = 'invalid input (no matrix handed over, or not analysed)'
-      case default; text = 'CHOLMOD failed with status ' // trim(status)
+      case default; text = 'CHOLMOD failed with status ' // int_str(int(impact_cholmod_status()))
       end select
    end function chol_failure
 

@@ -317,7 +317,7 @@ contains
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
       real(dp), allocatable :: diag(:)
-      integer :: minor, j
+      integer :: minor
       stat = 0
       bad_eq = 0
       if (.not. allocated(a%val) .or. a%factored) then
@@ -325,10 +325,7 @@ contains
          errmsg = 'sparse_factor: the matrix is not initialised, or is already factored'
          return
       end if
-      allocate (diag(a%n))
-      do j = 1, a%n
-         diag(j) = a%val(a%colptr(j + 1) - 1)
-      end do
+      diag = a%val(a%colptr(2:) - 1)          ! the diagonal, last in each column
       call chol_set_matrix(a%chol, a%colptr, a%rowind, stat, errmsg, a%val)
       if (stat /= 0) return
       if (.not. a%analysed) then
