@@ -89,11 +89,9 @@ contains
       stat = 0
    end subroutine parse_command_line
 
-   !> The deck the options name (a file, or standard input), the --set
-   !> values over it, --accuracy (as &accuracy target), --single (the
-   !> target not given) and --overwrite; then the whole checked once, as a
-   !> deck is (values checked together, as the six strengths, may be given
-   !> by --set together; a failure names the variable, and the --set values).
+   !> The deck the options name (a file, or standard input), with --set,
+   !> --accuracy (&accuracy target), --single (no target) and --overwrite over
+   !> it, then checked once (so the six strengths may come by --set together).
    subroutine read_input_deck(opts, unit, deck, stat, errmsg)
       type(options_t), intent(in) :: opts           !< the options
       integer, intent(in) :: unit                   !< standard input's unit

@@ -18,11 +18,8 @@ module deck_echo
 
 contains
 
-   !> True when the group concerns a deck of this analysis kind (the echo
-   !> leaves the others out: &load only for static and pressure analyses,
-   !> &modes only for modes, &contact only for the impact, &strength only
-   !> when its strengths or a toughness are given, &accuracy only for an
-   !> accuracy run).
+   !> True when the echo shows the group: &strength with its strengths or a
+   !> toughness, &accuracy for an accuracy run, the others by group_applies_kind.
    pure logical function group_applies(group, deck)
       character(len=*), intent(in) :: group         !< the group, without '&'
       type(deck_t), intent(in) :: deck              !< the deck
@@ -33,7 +30,8 @@ contains
       end select
    end function group_applies
 
-   !> True when the group concerns an analysis of this kind (group_applies).
+   !> True when the group concerns an analysis of this kind: &load static and
+   !> pressure, &modes modes, &contact the impact.
    pure logical function group_applies_kind(group, analysis_kind)
       character(len=*), intent(in) :: group         !< the group, without '&'
       character(len=*), intent(in) :: analysis_kind !< &analysis kind
@@ -79,10 +77,8 @@ contains
       if (trim(deck_vars(iv)%unit) /= '-') piece = piece // ' ' // trim(deck_vars(iv)%unit)
    end function echo_piece
 
-   !> Writes the effective values of `deck`, group by group, each line
-   !> starting with `lead` ('# ' in the output files, '' on the terminal),
-   !> 'name = value unit', the reals with the fewest digits that read back to
-   !> the same double. Groups the analysis does not use are left out.
+   !> Writes the effective values of `deck`, 'name = value unit', by group
+   !> (those the analysis uses), each line led by `lead` ('# ' in the files).
    subroutine echo_deck(deck, unit, lead)
       type(deck_t), intent(in) :: deck              !< the deck to echo
       integer, intent(in) :: unit                   !< open formatted unit

@@ -514,10 +514,8 @@ contains
       rest = word(star + 1:)
    end subroutine repeat_count
 
-   !> The values of an assignment, from toks(first) to toks(last), the token
-   !> before the next 'name =' or the group's last; n of them are values
-   !> (words or strings), the others commas. A second '=' or an empty value
-   !> between two commas is an error.
+   !> The values of an assignment, toks(first:last) up to the next 'name =':
+   !> n words or strings and commas; a second '=' or an empty value is an error.
    subroutine find_values(toks, first, where, last, n, err)
       type(token_t), intent(in) :: toks(:)      !< the group's tokens
       integer, intent(in) :: first              !< the token after '='

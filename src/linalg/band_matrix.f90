@@ -235,12 +235,7 @@ contains
       real(dp), intent(inout) :: b(:)  !< right-hand side on entry, solution on return, length n.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      integer :: info
-      call check_solve(a, size(b), stat, errmsg)
-      if (stat /= 0) return
-      ! b(n) is passed to dpbtrs's b(ldb,*) by sequence association.
-      call dpbtrs('U', a%n, a%kd, 1, a%ab, a%kd + 1, b, a%n, info)
-      call check_info(info, stat, errmsg)
+      call solve_rhs(a, size(b), 1, b, stat, errmsg)
    end subroutine band_solve_vec
 
    !> Solve A X = B for nrhs right-hand sides with the factor (dpbtrs).
@@ -249,45 +244,35 @@ contains
       real(dp), intent(inout) :: b(:,:)  !< right-hand sides b(n, nrhs) on entry, solutions on return.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      integer :: info
-      call check_solve(a, size(b, 1), stat, errmsg)
-      if (stat /= 0 .or. size(b, 2) == 0) return
-      call dpbtrs('U', a%n, a%kd, size(b, 2), a%ab, a%kd + 1, b, a%n, info)
-      call check_info(info, stat, errmsg)
+      call solve_rhs(a, size(b, 1), size(b, 2), b, stat, errmsg)
    end subroutine band_solve_mat
 
-   !> The checks before a solve: factored, right-hand side of length n.
-   subroutine check_solve(a, nb, stat, errmsg)
+   !> dpbtrs on nrhs right-hand sides of length nb (b by sequence
+   !> association), after the checks: a factored, nb = n.
+   subroutine solve_rhs(a, nb, nrhs, b, stat, errmsg)
       type(band_matrix_t), intent(in) :: a  !< the matrix to solve with.
-      integer, intent(in) :: nb  !< length of the right-hand side(s).
-      integer, intent(out) :: stat  !< 0 when the solve may proceed, 1 otherwise.
+      integer, intent(in) :: nb, nrhs  !< length and number of the right-hand sides.
+      real(dp), intent(inout) :: b(max(nb, 1), *)  !< right-hand sides on entry, solutions on return.
+      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=msg_len) :: msg
-      stat = 0
+      integer :: info
+      stat = 1
       if (.not. a%factored) then
-         stat = 1
          errmsg = 'band_solve: the matrix is not factored (call band_factor first)'
       else if (nb /= a%n) then
-         stat = 1
-         write (msg, '(a,i0,a,i0)') 'band_solve: right-hand side has length ', &
-            nb, ' but n = ', a%n
+         write (msg, '(a,i0,a,i0)') 'band_solve: right-hand side has length ', nb, ' but n = ', a%n
          errmsg = msg
-      end if
-   end subroutine check_solve
-
-   !> Turn dpbtrs's info into stat and errmsg.
-   subroutine check_info(info, stat, errmsg)
-      integer, intent(in) :: info  !< info returned by dpbtrs.
-      integer, intent(out) :: stat  !< 0 when info = 0, 1 otherwise.
-      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      character(len=msg_len) :: msg
-      stat = 0
-      if (info /= 0) then
+      else
+         stat = 0
+         if (nrhs == 0) return
+         call dpbtrs('U', a%n, a%kd, nrhs, a%ab, a%kd + 1, b, a%n, info)
+         if (info == 0) return
          stat = 1
          write (msg, '(a,i0)') 'band_solve: dpbtrs rejected argument ', -info
          errmsg = msg
       end if
-   end subroutine check_info
+   end subroutine solve_rhs
 
    !> a = a + alpha*b for two unfactored matrices of the same n and kd.
    subroutine band_axpy(a, alpha, b, stat, errmsg)

@@ -141,10 +141,8 @@ contains
       call check(impact_cholmod_analyze(h%key, lnz, flops, bytes), 'the analysis', stat, errmsg)
    end subroutine chol_analyze
 
-   !> The numeric factorization (supernodal L L^T) of the matrix handed
-   !> over, which is released afterwards. minor: the column, in the order of
-   !> elimination, at which the matrix was found not positive definite; n+1
-   !> when it was not.
+   !> The numeric factorization (supernodal L L^T) of the matrix handed over,
+   !> which is released; minor: the column (order of elimination) of a pivot <= 0.
    subroutine chol_factorize(h, minor, stat, errmsg)
       type(cholmod_handle_t), intent(in) :: h  !< the handle, analysed, with a matrix handed over.
       integer, intent(out) :: minor  !< failed column in elimination order, n+1 if none.

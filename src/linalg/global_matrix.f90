@@ -119,13 +119,9 @@ contains
       g%deferred_error = ''
    end subroutine global_zero
 
-   !> Add a symmetric element matrix: A(eqs(p), eqs(q)) += ke(p,q), skipping
-   !> constrained freedoms (eqs = 0). Each global pair is added once, from
-   !> the element pairs with eqs(p) <= eqs(q).
-   !>
-   !> Fails, adding nothing, when g is not initialised or is factored, the
-   !> sizes differ, or an equation is out of range or outside the structure
-   !> (eqs not a column of the elem_eq given to global_init).
+   !> Add a symmetric element matrix, A(eqs(p), eqs(q)) += ke(p,q) for eqs(p) <=
+   !> eqs(q) > 0. Fails, adding nothing, when g is not initialised or is
+   !> factored, the sizes differ, or an entry is outside the structure.
    subroutine global_assemble(g, ke, eqs, stat, errmsg)
       type(global_matrix_t), intent(inout) :: g  !< the global matrix, added into.
       real(dp), intent(in) :: ke(:,:)  !< symmetric element matrix ke(nfe, nfe).
@@ -234,10 +230,8 @@ contains
       g = global_matrix_t()
    end subroutine global_release
 
-   !> y = A x with the unfactored matrix.
-   !>
-   !> Fails when g is not initialised, factored or carries a deferred error,
-   !> or the sizes differ; y is then NaN.
+   !> y = A x with the unfactored matrix; y is NaN when g is not initialised,
+   !> factored or carries a deferred error, or the sizes differ.
    subroutine global_matvec(g, x, y, stat, errmsg)
       type(global_matrix_t), intent(in) :: g     !< the matrix, not factored
       real(dp), intent(in) :: x(:)               !< a vector of length neq
@@ -270,12 +264,8 @@ contains
       end if
    end subroutine global_matvec
 
-   !> Factor (band: Cholesky in place, skyline: L D L^T in place, sparse:
-   !> CHOLMOD's supernodal Cholesky, the values of A released).
-   !>
-   !> A failed pivot gives stat = 1, bad_eq = its equation and errmsg
-   !> "matrix not positive definite at equation N (...)"; the caller names
-   !> the node and freedom. All storages use the same pivot rule.
+   !> Factor in place (band: Cholesky, skyline: L D L^T, sparse: CHOLMOD). A
+   !> failed pivot gives stat = 1 and bad_eq, whose node the caller names.
    subroutine global_factor(g, stat, errmsg, bad_eq)
       type(global_matrix_t), intent(inout) :: g  !< the matrix, overwritten by its factors.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
@@ -322,9 +312,8 @@ contains
       usable = stat == 0
    end function usable
 
-   !> Half-bandwidth: kd for band storage, the largest column height
-   !> max_j (j - m_j) for skyline storage, the largest j - i of a stored
-   !> entry for sparse storage; 0 before global_init.
+   !> Half-bandwidth: the largest j - i of a stored entry (band: kd); 0 before
+   !> global_init.
    pure integer function global_bandwidth(g)
       type(global_matrix_t), intent(in) :: g  !< the matrix.
       select case (trim(g%storage))
@@ -335,9 +324,8 @@ contains
       end select
    end function global_bandwidth
 
-   !> Number of stored reals: (kd+1)*neq for band, nwk for skyline, the
-   !> entries of the upper triangle's pattern for sparse (of A: the factor's
-   !> are CHOLMOD's, g%sparse%factor_entries once analysed).
+   !> Number of stored reals of A (sparse: the pattern's; the factor's are
+   !> g%sparse%factor_entries).
    pure integer function global_stored_entries(g)
       type(global_matrix_t), intent(in) :: g  !< the matrix.
       select case (trim(g%storage))

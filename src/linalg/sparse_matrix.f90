@@ -175,8 +175,7 @@ contains
    end subroutine equation_elements
 
    !> Set every entry to zero and forget the numeric factor; the pattern and
-   !> its symbolic factorization are kept (the next factorization reuses
-   !> them).
+   !> its symbolic factorization are kept.
    subroutine sparse_zero(a)
       type(sparse_matrix_t), intent(inout) :: a  !< the matrix.
       if (.not. allocated(a%colptr)) return
@@ -194,9 +193,8 @@ contains
       a%factored = .false.
    end subroutine sparse_release
 
-   !> After b = a (which shares a's factorization): b's own copy of it.
-   !> On failure (no memory) b holds none and is neither analysed nor
-   !> factored.
+   !> After b = a (which shares a's factorization): b's own copy of it (on
+   !> failure none: b neither analysed nor factored).
    subroutine sparse_copy_factor(a, b, stat, errmsg)
       type(sparse_matrix_t), intent(in) :: a  !< the matrix copied.
       type(sparse_matrix_t), intent(inout) :: b  !< the copy, b = a done.

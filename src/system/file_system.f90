@@ -236,11 +236,9 @@ contains
    end subroutine remove_file
 
    !> Takes an exclusive lock on the existing file `path` without waiting
-   !> (flock(2) on the file opened for reading: the lock changes nothing in
-   !> it). stat = 1 when another process holds it, when the file cannot be
-   !> opened, or when the name no longer holds the file the lock is on (a
-   !> symbolic link put in its place, or another run's file renamed over
-   !> it), with the file named.
+   !> (flock(2), the file opened for reading); stat = 1, the file named, when
+   !> another process holds it, it cannot be opened, or the name no longer
+   !> holds the locked file (a symbolic link, or another run's file, in its place).
    subroutine lock_file(path, lock, stat, errmsg)
       character(len=*), intent(in) :: path          !< the file
       type(file_lock_t), intent(out) :: lock        !< the lock, held until unlock_file
