@@ -44,7 +44,6 @@ module plate_model
       type(contact_law_t) :: law               !< eq. (11)-(12) constants
       type(contact_load_t) :: cload            !< how the contact force enters the plate (module contact_load)
       logical :: nonlinear = .true.            !< von Karman terms on
-      real(dp) :: impactor_mass = 0.0_dp       !< m (kg)
       integer :: eq_impact = 0                 !< equation of w at the impact point
       real(dp) :: force_share = 1.0_dp         !< share of a force at the impact point the model carries
       integer :: gauge_elem = 0                !< element of the strain gauge (place_gauge)
@@ -79,7 +78,6 @@ contains
       if (stat /= 0) return
       if (model%scene%averaged) model%lmt = laminate_drop_bend_twist(model%lmt)
       model%law = contact_law_t(deck%k, deck%q, deck%alpha_p, deck%beta)
-      model%impactor_mass = deck%mass
       model%z_back = 0.5_dp*deck%h
       model%max_nonlinear_iter = deck%max_nonlinear_iter
       model%cr2 = deck%cr2

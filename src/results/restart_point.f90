@@ -22,8 +22,8 @@ module restart_point
    use plate_solver, only: solver_t, contact_response
    use contact_law, only: contact_history_t
    use contact_load, only: load_pattern_t
-   use contact_iteration, only: contact_iteration_t
-   use newmark, only: plate_state_t, impactor_t
+   use contact_iteration, only: step_state_t
+   use newmark, only: newmark_t
    use result_files, only: reserve_summary, results_claim_t, result_suffixes, claim_results, claim_left_empty
    use process_stop, only: remove_on_stop
    use results_hdf5, only: results_reopen
@@ -126,16 +126,12 @@ contains
    !>
    !> Writes the restart point after step `step` (as above): the files
    !> hold every step to it (they were just flushed).
-   subroutine restart_save(deck, step, cpu_s, plate, imp, hist, cit, solver, rec, stat, errmsg)
+   subroutine restart_save(deck, cpu_s, st, solver, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
-      integer, intent(in) :: step                   !< the last step made
       real(dp), intent(in) :: cpu_s                 !< cpu time of the run so far (s)
-      type(plate_state_t), intent(in) :: plate      !< {D}, {V}, {A} after it
-      type(impactor_t), intent(in) :: imp           !< the impactor after it
-      type(contact_history_t), intent(in) :: hist   !< the contact history, committed
-      type(contact_iteration_t), intent(in) :: cit  !< the contact iteration (its pattern)
+      type(step_state_t), intent(in) :: st          !< the state after the last step recorded, committed
       type(solver_t), intent(in) :: solver          !< the plate solver
-      type(record_t), intent(in) :: rec             !< the run's record
+      type(record_t), intent(in) :: rec             !< the run's record (its steps: the last step made)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure, naming the file
       character(len=:), allocatable :: path
@@ -154,15 +150,15 @@ contains
       call put_int(u, layout, stat)
       call put_deck(u, deck, stat)
       call put_tag(u, 'state', stat)
-      call put_int(u, step, stat)
+      call put_int(u, rec%steps, stat)
       call put_real(u, cpu_s, stat)
-      call put_reals(u, plate%d, stat)
-      call put_reals(u, plate%v, stat)
-      call put_reals(u, plate%a, stat)
-      call put_impactor(u, imp, stat)
-      call put_reals(u, [hist%f_m, hist%alpha_m, hist%alpha_0], stat)
-      call put_flag(u, hist%separated, stat)
-      call put_pattern(u, cit%pattern, stat)
+      call put_reals(u, st%plate%d, stat)
+      call put_reals(u, st%plate%v, stat)
+      call put_reals(u, st%plate%a, stat)
+      call put_impactor(u, st%imp, stat)
+      call put_reals(u, [st%hist%f_m, st%hist%alpha_m, st%hist%alpha_0], stat)
+      call put_flag(u, st%hist%separated, stat)
+      call put_pattern(u, st%cit%pattern, stat)
       call put_solver(u, solver, stat)
       call record_save_state(rec, u, stat)
       call put_results(u, rec, stat)
@@ -210,20 +206,15 @@ contains
    end subroutine restart_check
 
    !> Continues the run from its restart point: the state, the solver, the
-   !> record and the files as they were there (above restart_save); `step` is
-   !> the last step made, cpu_s the cpu time spent before.
-   subroutine restart_resume(deck, model, last_step, solver, plate, imp, hist, cit, rec, step, cpu_s, stat, errmsg)
+   !> record and the files as they were there (above restart_save); rec%steps
+   !> is the last step made, rec%cpu_before the cpu time spent before.
+   subroutine restart_resume(deck, model, nm, solver, st, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(model_t), intent(in) :: model            !< the model
-      integer, intent(in) :: last_step              !< the run's last step (t_end/dt)
+      type(newmark_t), intent(in) :: nm             !< Newmark's constants (the time step)
       type(solver_t), intent(inout) :: solver       !< the plate solver, factored
-      type(plate_state_t), intent(out) :: plate     !< {D}, {V}, {A}
-      type(impactor_t), intent(out) :: imp          !< the impactor
-      type(contact_history_t), intent(out) :: hist  !< the contact history
-      type(contact_iteration_t), intent(inout) :: cit   !< the contact iteration: its pattern
+      type(step_state_t), intent(inout) :: st       !< plate, impactor, contact history and pattern
       type(record_t), intent(out) :: rec            !< the run's record, its files open again
-      integer, intent(out) :: step                  !< the last step made
-      real(dp), intent(out) :: cpu_s                !< cpu time spent before (s)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=:), allocatable :: path, changed
@@ -233,6 +224,8 @@ contains
       real(dp) :: peak(2)
       real(dp), allocatable :: peak_fields(:)
       logical :: h5
+      integer :: step
+      real(dp) :: cpu_s
 
       path = restart_file(deck)
       step = 0;  cpu_s = 0.0_dp
@@ -242,16 +235,17 @@ contains
       call take_tag(u, 'state', stat)
       call take_int(u, step, stat)
       call take_real(u, cpu_s, stat)
-      call take_reals(u, plate%d, stat, model%msh%neq)
-      call take_reals(u, plate%v, stat, model%msh%neq)
-      call take_reals(u, plate%a, stat, model%msh%neq)
-      call take_impactor(u, imp, stat)
+      call take_reals(u, st%plate%d, stat, model%msh%neq)
+      call take_reals(u, st%plate%v, stat, model%msh%neq)
+      call take_reals(u, st%plate%a, stat, model%msh%neq)
+      call take_impactor(u, st%imp, stat)
       call take_reals(u, x, stat, 3)
-      if (stat == 0) hist = contact_history_t(f_m=x(1), alpha_m=x(2), alpha_0=x(3))
-      call take_flag(u, hist%separated, stat)
-      call take_pattern(u, cit%pattern, stat)
+      if (stat == 0) st%hist = contact_history_t(f_m=x(1), alpha_m=x(2), alpha_0=x(3))
+      call take_flag(u, st%hist%separated, stat)
+      call take_pattern(u, st%cit%pattern, stat)
       call take_solver(u, solver, columns, stat)
-      call record_load_state(rec, deck, model, u, stat)
+      call record_load_state(rec, deck, model, nm, u, stat)
+      rec%cpu_before = cpu_s
       h5 = .false.;  rows = 0;  snaps = 0;  peak_step = 0;  peak = 0.0_dp
       call take_results(u, h5, rows, snaps, peak_step, peak, peak_fields, stat)
       call take_tag(u, 'end', stat)
@@ -264,10 +258,15 @@ contains
          errmsg = path // ': not a restart point of this run (or damaged)'
          return
       end if
-      if (step > last_step) then
+      if (stat == 0 .and. step /= rec%steps) stat = 1
+      if (stat /= 0) then
+         errmsg = path // ': not a restart point of this run (or damaged)'
+         return
+      end if
+      if (step > rec%nstep) then
          stat = 1
          errmsg = deck%source // ': &analysis t_end = ' // real_str(deck%t_end) // ' s ends at step ' &
-            // int_str(last_step) // ', before the restart point''s step ' // int_str(step)
+            // int_str(rec%nstep) // ', before the restart point''s step ' // int_str(step)
          return
       end if
       if (h5 .neqv. deck%hdf5) then

@@ -14,17 +14,17 @@
 !>                 <prefix>_summary.dat and /summary, with its status
 !> More: docs/OUTPUT.md.
 module run_recorder
-   use, intrinsic :: iso_fortran_env, only: error_unit, int64
+   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use kinds, only: dp, msg_len
    use number_text, only: int_str, real_short
    use deck_schema, only: deck_t
    use plate_model, only: model_t, back_face_strain, max_deflection, plate_kinetic_energy, plate_strain_energy
-   use plate_solver, only: solver_t, contact_response, pattern_compliance
-   use contact_iteration, only: contact_iteration_t, contact_area
+   use plate_solver, only: solver_t
+   use contact_iteration, only: step_state_t, contact_iteration_t, contact_area
    use contact_law, only: contact_history_t, contact_branch, law_tangent, branch_none
    use contact_load, only: load_pattern_t, pattern_mean
-   use newmark, only: plate_state_t, impactor_t, impactor_compliance, newmark_init
+   use newmark, only: newmark_t, impactor_t, impactor_compliance
    use scene_model, only: theory_warning, bending_deflection
    use result_files, only: column_t, history_columns, nhist, summary_item_t, summary_real, summary_integer, &
       summary_text, open_columns, write_history_row, reserve_summary, write_summary_file, col_time, col_force, &
@@ -78,7 +78,8 @@ module run_recorder
       integer :: ncol = nhist                    !< history columns of the run (history_width)
       integer :: every = 1, fields_every = 1, nstep = 0
       logical :: stop_on_warning = .false.
-      real(dp) :: dt = 0, mass = 0, h = 0        !< time step (s), impactor mass (kg), plate thickness (m)
+      real(dp) :: dt = 0, h = 0                  !< time step (s, Newmark's), plate thickness (m)
+      real(dp) :: cpu_before = 0                 !< cpu time of the run before its restart (s)
       character(len=:), allocatable :: edges
       ! -- energies (J)
       real(dp) :: e0 = 0, contact_work = 0, contact_energy = 0
@@ -137,15 +138,16 @@ module run_recorder
 contains
 
    !> Opens the history (title, deck echo, columns) and, with &output hdf5,
-   !> <prefix>.h5; writes row 0. For scheme 'paper' it also measures the
-   !> plate's compliance under the impactor over one step (one solve), for
-   !> the summary's fixed-point diagnostics (docs/PAPER.md).
-   subroutine record_open(rec, deck, model, solver, imp, stat, errmsg)
+   !> <prefix>.h5; writes row 0. c_plate is the plate's compliance under the
+   !> impactor over one step for the summary's fixed-point diagnostics
+   !> (scheme 'paper'; -1: none, docs/PAPER.md).
+   subroutine record_open(rec, deck, model, nm, imp, c_plate, stat, errmsg)
       type(record_t), intent(out) :: rec            !< the record
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(model_t), intent(in) :: model            !< the model
-      type(solver_t), intent(inout) :: solver       !< the solver (one response for c_plate)
-      type(impactor_t), intent(in) :: imp     !< the impactor at t = 0
+      type(newmark_t), intent(in) :: nm             !< Newmark's constants (the time step)
+      type(impactor_t), intent(in) :: imp           !< the impactor at t = 0
+      real(dp), intent(in) :: c_plate               !< the plate's compliance (m/N; -1: not measured)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(contact_history_t) :: fresh
@@ -155,17 +157,13 @@ contains
       type(column_t) :: col
       integer :: c
 
-      call take_settings(rec, deck)
-      rec%e0 = 0.5_dp*deck%mass*deck%velocity**2
+      call take_settings(rec, deck, nm)
+      rec%e0 = 0.5_dp*imp%mass*imp%v**2
       rec%imp_prev = imp
       rec%d_prev = [(0.0_dp, c = 1, model%msh%neq)]
       call contact_area(model, fresh, 0.0_dp, rec%pattern_prev)
-      rec%c_impactor = impactor_compliance(newmark_init(deck%dt), imp)
-      if (deck%scheme == 'paper') then
-         call contact_response(solver, rec%pattern_prev, stat, errmsg)
-         if (stat /= 0) return
-         rec%c_plate = pattern_compliance(solver, rec%pattern_prev)
-      end if
+      rec%c_impactor = impactor_compliance(nm, imp)
+      rec%c_plate = c_plate
 
       call reserve_summary(deck, stat, errmsg)
       if (stat /= 0) return
@@ -205,30 +203,26 @@ contains
    end subroutine record_open
 
    !> The deck's settings the record keeps.
-   subroutine take_settings(rec, deck)
+   subroutine take_settings(rec, deck, nm)
       type(record_t), intent(inout) :: rec          !< the record
       type(deck_t), intent(in) :: deck              !< the effective deck
+      type(newmark_t), intent(in) :: nm             !< Newmark's constants (the time step)
       rec%every = deck%every;  rec%fields_every = deck%fields_every
-      rec%nstep = nint(deck%t_end/deck%dt)
+      rec%nstep = nint(deck%t_end/nm%dt)
       rec%stop_on_warning = deck%stop_on_warning
-      rec%dt = deck%dt;  rec%mass = deck%mass;  rec%h = deck%h
+      rec%dt = nm%dt;  rec%h = deck%h
       rec%edges = deck%edges
    end subroutine take_settings
 
-   !> Records the step just accepted (module header). ic is the step's
-   !> contact iterations, converged whether its iterations met eq. (17)
-   !> and (18) (force_update = 'plain' goes on without).
-   subroutine record_step(rec, step, model, solver, plate, imp, hist, cit, ic, converged, stat, errmsg)
+   !> Records the step just accepted (module header): plate and impactor at
+   !> t + dt, the contact history before this step's commit, the step's
+   !> contact iteration (its iterations; converged: eq. 17 and 18 met).
+   subroutine record_step(rec, step, model, solver, st, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       integer, intent(in) :: step                        !< the step
       type(model_t), intent(in) :: model                 !< the model
       type(solver_t), intent(in) :: solver               !< the solver (its counters)
-      type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
-      type(contact_history_t), intent(in) :: hist        !< the contact history before this step's commit
-      type(contact_iteration_t), intent(in) :: cit       !< the step's contact force, indentation, area
-      integer, intent(in) :: ic                          !< contact iterations of the step
-      logical, intent(in) :: converged                   !< its iterations converged
+      type(step_state_t), intent(in) :: st               !< the step accepted, its contact history not yet committed
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
       type(step_figures_t) :: fig
@@ -237,18 +231,19 @@ contains
       rec%restart_due = .false.
       fig%step = step
       fig%t = real(step, dp)*rec%dt
-      fig%ic = ic
+      fig%ic = st%cit%iterations
       rec%steps = step
       fig%solves = solver%solves - rec%solves_before
       rec%solves_before = solver%solves
 
-      call add_contact_work(rec, plate, imp, cit)
-      fig%w_plate = pattern_mean(cit%pattern, plate%d)
+      associate (plate => st%plate, imp => st%imp)
+      call add_contact_work(rec, st)
+      fig%w_plate = pattern_mean(st%cit%pattern, plate%d)
       fig%strain_y = back_face_strain(model, plate%d)
-      call update_maxima(rec, fig, model, plate, imp, hist, cit, stat, errmsg)
+      call update_maxima(rec, fig, model, st, stat, errmsg)
       if (stat /= 0) return
       if (mod(step, rec%every) == 0 .or. step == rec%nstep) then
-         call history_row(rec, fig, model, plate, imp, hist, cit, stat, errmsg)
+         call history_row(rec, fig, model, st, stat, errmsg)
          if (stat /= 0) return
       end if
       if (.not. (ieee_is_finite(fig%w_plate) .and. ieee_is_finite(imp%f) .and. ieee_is_finite(imp%w))) &
@@ -257,10 +252,11 @@ contains
       call results_state(rec%h5, step, fig%t, imp%f, plate%d, &
                          mod(step, rec%fields_every) == 0 .or. step == rec%nstep, stat, errmsg)
       if (stat /= 0) return
-      call step_warnings(rec, fig, solver, cit, converged, stat, errmsg)
+      call step_warnings(rec, fig, solver, st%cit, stat, errmsg)
       call progress_step(rec%progress, step, fig%t)
-      ! once a second the files are flushed: a restart point is due (src/results/restart_point.f90)
+      ! once a second the files are flushed: a restart point is due (src/record/restart_point.f90)
       if (stat == 0) call results_tick(rec%h5, rec%restart_due, stat, errmsg)
+      end associate
    end subroutine record_step
 
    !> Energies (whole plate, J): the impactor's kinetic energy; the plate's
@@ -282,12 +278,11 @@ contains
    !> 1/2 (F_t p_t + F_t+dt p_t+dt)^T (D_t+dt - D_t), and the energy the
    !> contact took, the impactor's work 1/2 (F_t + F_t+dt) dw_r less that
    !> (as above); the step's end becomes the next one's start.
-   subroutine add_contact_work(rec, plate, imp, cit)
+   subroutine add_contact_work(rec, st)
       type(record_t), intent(inout) :: rec               !< the record
-      type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
-      type(contact_iteration_t), intent(in) :: cit       !< the step's contact force and area
+      type(step_state_t), intent(in) :: st               !< the step accepted: plate, impactor, contact area
       real(dp) :: work
+      associate (plate => st%plate, imp => st%imp, cit => st%cit)
 
       work = 0.5_dp*(rec%imp_prev%f*pattern_mean(rec%pattern_prev, plate%d - rec%d_prev) &
                      + imp%f*pattern_mean(cit%pattern, plate%d - rec%d_prev))
@@ -296,6 +291,7 @@ contains
       rec%imp_prev = imp
       rec%pattern_prev = cit%pattern
       rec%d_prev = plate%d
+      end associate
    end subroutine add_contact_work
 
    !> The summary's peak force and its time, largest deflection and largest
@@ -317,17 +313,15 @@ contains
    !> the iterations, the bending deflection (and with free edges the rigid-
    !> body part of the deflection under the impactor, fig%w_rigid), the
    !> largest slope of the fixed-point force update, the peak's ply stresses.
-   subroutine update_maxima(rec, fig, model, plate, imp, hist, cit, stat, errmsg)
+   subroutine update_maxima(rec, fig, model, st, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(inout) :: fig         !< the step (in); its w_rigid (out)
       type(model_t), intent(in) :: model                 !< the model
-      type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
-      type(contact_history_t), intent(in) :: hist        !< the contact history before this step's commit
-      type(contact_iteration_t), intent(in) :: cit       !< the step's indentation
+      type(step_state_t), intent(in) :: st               !< the step accepted (record_step)
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
       real(dp) :: w_bend
+      associate (plate => st%plate, imp => st%imp, hist => st%hist, cit => st%cit)
 
       ! (a NaN force is not a sample: the peak force keeps the finite ones, as it always did)
       if (.not. ieee_is_nan(imp%f)) call peak_sample(rec%force_peak, fig%t, imp%f)
@@ -347,6 +341,7 @@ contains
       if (rec%c_plate >= 0.0_dp) rec%max_slope = max(rec%max_slope, &
          (rec%c_plate + rec%c_impactor)*law_tangent(model%law, hist, cit%alpha))
       call damage_peak(rec%damage, fig%step, fig%t, imp%f, plate%d)
+      end associate
    end subroutine update_maxima
 
    !> The contacts (a step with force after one without starts one), and
@@ -377,22 +372,20 @@ contains
    !> The history row of the step (every &output every steps, and the last),
    !> to the history file and <prefix>.h5; a run whose energy balance goes
    !> below -E0 has diverged and stops here (above add_contact_work).
-   subroutine history_row(rec, fig, model, plate, imp, hist, cit, stat, errmsg)
+   subroutine history_row(rec, fig, model, st, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(in) :: fig            !< the step
       type(model_t), intent(in) :: model                 !< the model
-      type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
-      type(contact_history_t), intent(in) :: hist        !< the contact history before this step's commit
-      type(contact_iteration_t), intent(in) :: cit       !< the step's indentation
+      type(step_state_t), intent(in) :: st               !< the step accepted (record_step)
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
       real(dp) :: row(nhist_strength)
+      associate (plate => st%plate, imp => st%imp, hist => st%hist, cit => st%cit)
 
       row(col_time) = fig%t;  row(col_force) = imp%f;  row(col_alpha) = cit%alpha
       row(col_w_plate) = fig%w_plate;  row(col_w_impactor) = imp%w;  row(col_v_impactor) = imp%v
       row(col_strain_y) = fig%strain_y
-      call row_energies(rec, model, plate, imp, row)
+      call row_energies(rec, model, st, row)
       row(col_branch) = contact_branch(hist, cit%alpha)
       if (imp%f <= 0.0_dp) row(col_branch) = branch_none
       row(col_contact_iter) = fig%ic
@@ -407,22 +400,22 @@ contains
       if (row(col_energy_error) < -rec%e0) call stop_here(rec, fig, 'diverged at step ' // int_str(fig%step), &
          'the run created more energy than the impact brought (energy balance ' &
          // real_short(row(col_energy_error)) // ' J, E0 = ' // real_short(rec%e0) // ' J): it has diverged')
+      end associate
    end subroutine history_row
 
    !> The energies of a history row (J, whole plate): the impactor's and the
    !> plate's kinetic energy, the plate's strain energy, the contact's work
    !> and energy (add_contact_work), and the balance E0 less the four, with
    !> the summary's largest balance, energy created (-) and energy lost (+).
-   subroutine row_energies(rec, model, plate, imp, row)
+   subroutine row_energies(rec, model, st, row)
       type(record_t), intent(inout) :: rec               !< the record
       type(model_t), intent(in) :: model                 !< the model
-      type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
+      type(step_state_t), intent(in) :: st               !< the plate and the impactor at t + dt
       real(dp), intent(inout) :: row(nhist_strength)     !< the history row: its energy columns set
 
-      row(col_ke_impactor) = 0.5_dp*rec%mass*imp%v**2
-      row(col_ke_plate) = plate_kinetic_energy(model, plate%v)
-      row(col_strain_energy) = plate_strain_energy(model, plate%d)
+      row(col_ke_impactor) = 0.5_dp*st%imp%mass*st%imp%v**2
+      row(col_ke_plate) = plate_kinetic_energy(model, st%plate%v)
+      row(col_strain_energy) = plate_strain_energy(model, st%plate%d)
       row(col_contact_work) = rec%contact_work
       row(col_contact_energy) = rec%contact_energy
       row(col_energy_error) = rec%e0 - (row(col_ke_impactor) + row(col_ke_plate) + row(col_strain_energy) &
@@ -438,12 +431,11 @@ contains
    !> through the plate, a free plate's flight, a step that did not converge
    !> and went on (force_update = 'plain'). Every step a test holds is
    !> counted for the summary (count_step); each kind is warned once (warn).
-   subroutine step_warnings(rec, fig, solver, cit, converged, stat, errmsg)
+   subroutine step_warnings(rec, fig, solver, cit, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(in) :: fig            !< the step
       type(solver_t), intent(in) :: solver               !< the solver (its fall-backs)
-      type(contact_iteration_t), intent(in) :: cit       !< the step's contact iteration
-      logical, intent(in) :: converged                   !< its iterations converged
+      type(contact_iteration_t), intent(in) :: cit       !< the step's contact iteration (converged: eq. 17, 18 met)
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
       real(dp), parameter :: none(2) = 0.0_dp
@@ -479,7 +471,7 @@ contains
             [abs(fig%w_rigid)*1.0e3_dp, rec%w_bend_max*1.0e3_dp], 'the free plate has moved {1} mm as a rigid ' &
             // 'body under the impactor, more than its largest bending deflection ({2} mm): nothing holds it, ' &
             // 'and from here on its deflections are mostly flight, not bending'), &
-         warning_check_t(warn_unconverged, .not. converged, none, 'the contact iteration (eq. 17) did not ' &
+         warning_check_t(warn_unconverged, .not. cit%converged, none, 'the contact iteration (eq. 17) did not ' &
             // 'converge in max_contact_iter iterations; with force_update = ''plain'' the step keeps its last ' &
             // 'assumed force and the run goes on (later such steps are counted in the summary, ' &
             // 'unconverged_steps)'), &
@@ -590,16 +582,13 @@ contains
    !> with the run's status and closes the files; after a linear run whose
    !> deflection needed the nonlinear theory, warns (src/model/scene_model.f90).
    !> Safe to call after any failure of record_open or record_step.
-   subroutine record_close(rec, deck, model, solver, status, hist, imp, cpu_s, unit, stat, errmsg)
-      type(record_t), intent(inout) :: rec          !< the record
+   subroutine record_close(rec, deck, model, solver, st, cpu_s, stat, errmsg)
+      type(record_t), intent(inout) :: rec          !< the record; its stop_status the run's status
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(model_t), intent(in) :: model            !< the model (its scene, for the theory warning)
       type(solver_t), intent(in) :: solver          !< the solver (its counters)
-      character(len=*), intent(in) :: status        !< 'completed', 'failed at step N (t = ...)', ...
-      type(contact_history_t), intent(in) :: hist   !< the contact history at the end
-      type(impactor_t), intent(in) :: imp     !< the impactor at the end
+      type(step_state_t), intent(in) :: st          !< the state at the end (impactor, contact history)
       real(dp), intent(in) :: cpu_s                 !< cpu time of the run (s)
-      integer, intent(in) :: unit                   !< where the last words go (standard output)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure (the first)
       type(summary_item_t), allocatable :: s(:)
@@ -608,7 +597,7 @@ contains
 
       call progress_end(rec%progress)
       call closing_warnings(rec, model)
-      call run_summary(rec, solver, status, hist, imp, s)
+      call run_summary(rec, solver, st, s)
       ! -- where the strain gauge of max_strain_y_back is (src/model/plate_model.f90, place_gauge)
       call summary_real(s, 'gauge_x_mm', 'gauge_x', 'm', model%gauge_xy(1), 1.0e3_dp)
       call summary_real(s, 'gauge_y_mm', 'gauge_y', 'm', model%gauge_xy(2), 1.0e3_dp)
@@ -629,12 +618,12 @@ contains
          stat = dstat
          errmsg = dtext
       end if
-      call results_finish(rec%h5, status, s, ios, text)
+      call results_finish(rec%h5, rec%stop_status, s, ios, text)
       if (ios /= 0 .and. stat == 0) then
          stat = ios
          errmsg = text
       end if
-      call last_words(rec, deck, cpu_s, unit)
+      call last_words(rec, deck, cpu_s, output_unit)
    end subroutine record_close
 
    !> The text after the first ' = ' of 'dt chosen = 2.0 us: ...' (the summary's value).
@@ -667,12 +656,10 @@ contains
    !> The summary's items of the run's figures, from its status to the
    !> fixed-point diagnostics (those of &strength, the warnings and the cpu
    !> time follow: record_close).
-   subroutine run_summary(rec, solver, status, hist, imp, s)
-      type(record_t), intent(in) :: rec             !< the record
+   subroutine run_summary(rec, solver, st, s)
+      type(record_t), intent(in) :: rec             !< the record (its stop_status: the run's status)
       type(solver_t), intent(in) :: solver          !< the solver (its counters)
-      character(len=*), intent(in) :: status        !< the run's status
-      type(contact_history_t), intent(in) :: hist   !< the contact history at the end
-      type(impactor_t), intent(in) :: imp     !< the impactor at the end
+      type(step_state_t), intent(in) :: st          !< the state at the end (impactor, contact history)
       type(summary_item_t), allocatable, intent(out) :: s(:)   !< the items
       real(dp) :: duration, f_peak, t_peak, w_max, e_max, t_other
       logical :: ended
@@ -687,7 +674,7 @@ contains
       call peak_between(rec%deflection_peak, t_other, w_max)
       call peak_between(rec%strain_peak, t_other, e_max)
       allocate (s(0))
-      call summary_text(s, 'status', status)
+      call summary_text(s, 'status', rec%stop_status)
       call summary_real(s, 'peak_force_N', 'peak_force', 'N', f_peak, 1.0_dp)
       call summary_real(s, 'time_of_peak_us', 'time_of_peak', 's', t_peak, 1.0e6_dp)
       call summary_real(s, 'peak_force_sampled_N', 'peak_force_sampled', 'N', rec%force_peak%v(2), 1.0_dp)
@@ -697,8 +684,8 @@ contains
       call summary_integer(s, 'contacts', rec%contacts)
       call summary_real(s, 'max_deflection_mm', 'max_deflection', 'm', w_max, 1.0e3_dp)
       call summary_real(s, 'max_strain_y_back', 'max_strain_y_back', '-', e_max, 1.0_dp)
-      call summary_real(s, 'permanent_indentation_mm', 'permanent_indentation', 'm', hist%alpha_0, 1.0e3_dp)
-      call summary_real(s, 'rebound_velocity_m_s', 'rebound_velocity', 'm/s', -imp%v, 1.0_dp)
+      call summary_real(s, 'permanent_indentation_mm', 'permanent_indentation', 'm', st%hist%alpha_0, 1.0e3_dp)
+      call summary_real(s, 'rebound_velocity_m_s', 'rebound_velocity', 'm/s', -st%imp%v, 1.0_dp)
       call summary_real(s, 'initial_energy_J', 'initial_energy', 'J', rec%e0, 1.0_dp)
       call summary_real(s, 'max_energy_error_J', 'max_energy_error', 'J', rec%max_energy_error, 1.0_dp)
       call summary_real(s, 'max_energy_created_J', 'max_energy_created', 'J', rec%energy_created, 1.0_dp)
@@ -806,10 +793,11 @@ contains
    !> A restart: the record of the deck and model (record_open's settings)
    !> with the figures record_save_state wrote; its files are opened again
    !> by the caller (src/results/restart_point.f90).
-   subroutine record_load_state(rec, deck, model, u, stat)
+   subroutine record_load_state(rec, deck, model, nm, u, stat)
       type(record_t), intent(out) :: rec            !< the record
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(model_t), intent(in) :: model            !< the model
+      type(newmark_t), intent(in) :: nm             !< Newmark's constants (the time step)
       integer, intent(in) :: u                      !< the restart file, an open stream at the record's part
       integer, intent(inout) :: stat                !< 0, or the first failure
       real(dp), allocatable :: r(:)
@@ -817,7 +805,7 @@ contains
       real(dp) :: bytes
       logical :: active
 
-      call take_settings(rec, deck)
+      call take_settings(rec, deck, nm)
       call damage_open(rec%damage, deck, model)
       rec%ncol = history_width(rec%damage%active)
       call take_tag(u, 'record', stat)

@@ -24,7 +24,7 @@ module plate_solver
    implicit none
    private
    public :: solver_t, solver_init, solver_refactor, plate_solve, solve_once, iteration_end, contact_response, &
-             add_pattern_response, pattern_compliance
+             add_pattern_response, pattern_compliance, plate_compliance
 
    !> The plate solver of a run.
    type :: solver_t
@@ -261,5 +261,18 @@ contains
          c = c + pattern%c(k)*pattern_mean(pattern, solver%resp(:, j))
       end do
    end function pattern_compliance
+
+   !> The plate's compliance under the pattern over one step (m/N, -1 when
+   !> its solve failed): pattern_compliance, its columns computed first.
+   subroutine plate_compliance(solver, pattern, c, stat, errmsg)
+      type(solver_t), intent(inout) :: solver       !< solver; its columns grow
+      type(load_pattern_t), intent(in) :: pattern   !< the contact pattern
+      real(dp), intent(out) :: c                    !< the compliance (m/N)
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      call contact_response(solver, pattern, stat, errmsg)
+      c = -1.0_dp
+      if (stat == 0) c = pattern_compliance(solver, pattern)
+   end subroutine plate_compliance
 
 end module plate_solver
