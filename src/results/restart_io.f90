@@ -1,4 +1,4 @@
-!> The pieces of a restart file (src/results/restart_point.f90): a stream of
+!> The pieces of a restart file (src/record/restart_point.f90): a stream of
 !> unformatted records, each part behind an eight-character tag that the
 !> reader checks, so that a file of another layout is refused, not misread.
 !> Every routine keeps the first failure in `stat`, so a part is a list of

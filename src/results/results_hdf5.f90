@@ -6,7 +6,7 @@
 !> its unit; HDF5 1.10's format, every dataset checksummed. The layout:
 !> docs/OUTPUT.md. A file that opens at every instant (SWMR): above
 !> results_open; output in blocks, once a second: above results_tick.
-!> Usage (src/results/run_recorder.f90): results_open after the history file is
+!> Usage (src/record/run_recorder.f90): results_open after the history file is
 !> open (or results_reopen for a restart), results_append_history after
 !> every history row, results_state after every step, results_tick at the
 !> end of every step, results_flush when the file must be up to date now,
@@ -174,7 +174,7 @@ contains
       rf%active = .true.
    end subroutine results_open
 
-   !> A restart (src/results/restart_point.f90): opens the run's <prefix>.h5
+   !> A restart (src/record/restart_point.f90): opens the run's <prefix>.h5
    !> again and cuts it back to its restart point, `rows` history rows and
    !> `snaps` snapshots, with the peak of that point (what a killed run
    !> wrote after it goes; a stopped run's /summary goes back to 'running',
@@ -300,9 +300,9 @@ contains
    !> snapshots and the peak state wait in memory and are written in blocks by
    !> results_flush: at the end of a step once flush_seconds of wall time have
    !> passed since the last flush (results_tick, which then says a restart
-   !> point is due: src/results/restart_point.f90), when the buffers are full
+   !> point is due: src/record/restart_point.f90), when the buffers are full
    !> (flush_rows rows, or buffer_bytes of snapshots), on a warning
-   !> (src/results/run_recorder.f90), and at the end, whatever the end
+   !> (src/record/run_recorder.f90), and at the end, whatever the end
    !> (completed, failed, stopped by a signal). Writing a row costs a copy
    !> into memory; a flush costs an opening of the file and one write per
    !> dataset (docs/PERFORMANCE.md, "What the output costs").

@@ -254,7 +254,7 @@ contains
    !> 'running': the views it names sit in batch groups that later writes
    !> leave alone. (A kill while HDF5 flushes <prefix>.xdmf.h5 can still
    !> leave its newest structures half written: a run restarted
-   !> (src/results/restart_point.f90) makes the file anew.)
+   !> (src/record/restart_point.f90) makes the file anew.)
    !>
    !> A batch of snapshots, just written to <prefix>.h5 after its first
    !> `before`: the group /fields/<b> of <prefix>.xdmf.h5, its groups of the

@@ -78,7 +78,7 @@ contains
       ncell = 2*nply*npoint
       call laminate_grid(msh, z, xyz, cells)
       stat = 0
-      ! a restarted run (src/results/restart_point.f90) finds the group of the run it continues
+      ! a restarted run (src/record/restart_point.f90) finds the group of the run it continues
       if (h5io_exists(fid, group)) call h5io_delete(fid, group, stat, errmsg)
       if (stat == 0) call h5io_group(fid, group, stat, errmsg)
       if (stat == 0) call h5io_write(fid, group // '/points', xyz, stat, errmsg)

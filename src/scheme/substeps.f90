@@ -42,7 +42,7 @@ contains
    !> of the run's matrix are kept aside during the sub-steps and put back
    !> after (the sub-steps' own are dropped), so the steps that follow use the
    !> same columns as before. solver%substeps tells the recorder how many
-   !> sub-steps the step took (src/results/run_recorder.f90, substepped_steps).
+   !> sub-steps the step took (src/record/run_recorder.f90, substepped_steps).
    !>
    !> One time step of scheme 'fast' (module fast_scheme), taken again in
    !> sub-steps when its iteration does not converge (module header). On

@@ -94,7 +94,7 @@ module run_recorder
       integer :: substepped_steps = 0            !< steps of scheme 'fast' taken in sub-steps (src/scheme/substeps.f90)
       logical :: in_contact = .false.
       ! the samples of the largest contact force (N), deflection under the impactor (m) and back-face
-      ! strain (-), refined between the steps by src/results/step_peak.f90
+      ! strain (-), refined between the steps by src/record/step_peak.f90
       type(peak_track_t) :: force_peak, deflection_peak, strain_peak
       ! the first contact's start and end, interpolated (s; -1: not yet), and the step's indentation (m)
       real(dp) :: first_contact_start = -1, first_contact_end = -1, alpha_prev = 0
@@ -106,7 +106,7 @@ module run_recorder
       ! slope (c_plate + c_impactor) dF/d alpha of the paper's fixed-point force update (-)
       real(dp) :: c_plate = -1, c_impactor = 0, max_slope = 0
       logical :: warned(nwarn) = .false.
-      type(progress_t) :: progress               !< the progress line on standard error (src/results/progress_line.f90)
+      type(progress_t) :: progress               !< the progress line on standard error (src/record/progress_line.f90)
       ! (a figure added here that a run carries from step to step is saved and
       ! restored by record_save_state and record_load_state: a restart)
    end type record_t
@@ -298,7 +298,7 @@ contains
    !> strain are refined between the steps: the vertex of the parabola through
    !> the largest sample and its two neighbours (row 0 counts as a sample), or
    !> the sample itself at the ends of the record or where the three are not
-   !> concave (src/results/step_peak.f90); the sampled peak force and its time
+   !> concave (src/record/step_peak.f90); the sampled peak force and its time
    !> (the step of /peak in <prefix>.h5) are kept as *_sampled keys. The first
    !> contact lasts from the first touch (t = 0, the indentation 0 there) to
    !> where the indentation less the permanent indentation, alpha - alpha_0,
@@ -307,7 +307,7 @@ contains
    !> leaves it with slope 0, so a line through the forces would give the step).
    !>
    !> The summary's running figures of every step: the samples of the peak
-   !> force, the largest deflection and strain (src/results/step_peak.f90
+   !> force, the largest deflection and strain (src/record/step_peak.f90
    !> refines them between the steps), the contacts and the first one's
    !> start and end (first_contact_bounds), the largest w/h,
    !> the iterations, the bending deflection (and with free edges the rigid-
@@ -750,7 +750,7 @@ contains
    ! ============================================================== restart
 
    !> Writes what the record carries from step to step (a restart point,
-   !> src/results/restart_point.f90): the energies, the previous step's
+   !> src/record/restart_point.f90): the energies, the previous step's
    !> impactor, pattern and plate, the summary's running figures and
    !> maxima, the warnings given, the history file's length, the
    !> delamination onset, and with &strength the damage record's maps and
@@ -792,7 +792,7 @@ contains
 
    !> A restart: the record of the deck and model (record_open's settings)
    !> with the figures record_save_state wrote; its files are opened again
-   !> by the caller (src/results/restart_point.f90).
+   !> by the caller (src/record/restart_point.f90).
    subroutine record_load_state(rec, deck, model, nm, u, stat)
       type(record_t), intent(out) :: rec            !< the record
       type(deck_t), intent(in) :: deck              !< the effective deck

@@ -105,7 +105,7 @@ contains
    !>                   the same factors: the same bits)
    !>   the record      the summary's running figures and maxima, the
    !>                   energies, the warnings given, the history file's
-   !>                   length, the damage maps (src/results/run_recorder.f90,
+   !>                   length, the damage maps (src/record/run_recorder.f90,
    !>                   record_save_state)
    !>   the results     the rows and snapshots <prefix>.h5 holds, and its peak
    !>
@@ -458,7 +458,7 @@ contains
    end subroutine take_results
 
    !> The history file cut back to its length at the restart point and
-   !> opened for appending (src/results/run_recorder.f90's rows).
+   !> opened for appending (src/record/run_recorder.f90's rows).
    subroutine reopen_history(deck, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(record_t), intent(inout) :: rec          !< the record: its history file

@@ -20,7 +20,7 @@ module step_peak
    !>                    smoothly with dt
    !>   zero_crossing    where the straight line through two samples crosses 0
    !>                    (the end of a contact, from the indentation less the
-   !>                    permanent indentation: src/results/run_recorder.f90)
+   !>                    permanent indentation: src/record/run_recorder.f90)
    !>   peak_sample      keeps, sample by sample, what parabola_vertex needs:
    !>                    the largest sample, the one before and the one after
    !>   peak_between     the refined extreme of the samples kept: the vertex,
