@@ -2,14 +2,8 @@
 !> impactor at low velocity, after I. H. Choi, C. S. Hong and I. Lee,
 !> "Nonlinear Analysis of Composite Laminates Subjected to Low-Velocity
 !> Impact", KSME Transactions (1991). Equation numbers are the paper's.
-!>
-!> The program is the paper's flowchart (Fig. 3): read the data; form the
-!> laminate, the mesh and the matrices; factor the left-hand matrix once
-!> (Akay); then in every time step assume a contact force, solve the plate
-!> nonlinearly under it (eq. 19, 18), move the impactor (eq. 21), compute
-!> the indentation and the law's force (eq. 13, 11, 12), and repeat until
-!> the assumed and computed forces agree (eq. 17). Each box is one call;
-!> the file of each is named after it (docs/ALGORITHM.md).
+!> The program is the paper's flowchart (Fig. 3), one call per box; the
+!> file of each is named after it (docs/ALGORITHM.md).
 !> Usage: impact [options] [deck.nml]     (no deck: standard input; --help)
 program impact
    use, intrinsic :: iso_fortran_env, only: input_unit, output_unit, error_unit
@@ -34,7 +28,7 @@ program impact
    use other_analyses, only: run_other_analysis
    use process_stop, only: catch_stop_signals, stop_after_step, stop_signal_caught, &
       keep_file_size_errors, exit_program
-   use restart_point, only: restart_file, restart_save, restart_check, restart_resume, claim_run_files
+   use restart_point, only: restart_save, restart_check, restart_resume, claim_run_files
    use number_text, only: int_str
    use c_library, only: c_isatty
    use accuracy_driver, only: run_accuracy
@@ -44,8 +38,7 @@ program impact
    type(deck_t) :: deck                    ! the input deck, as read and checked
    type(model_t) :: model                  ! laminate, mesh, [M], [K_L], contact law and load
    type(solver_t) :: solver                ! K_L + 4/dt^2 M factored, and the eq. (19) iteration's state
-   type(newmark_t) :: nm                   ! Newmark's constants: the time step dt, 4/dt^2, 4/dt
-   type(newmark_t) :: step_nm              ! those the step is accepted with: nm, or its last sub-step's
+   type(newmark_t) :: nm, step_nm          ! Newmark's constants (dt, 4/dt^2, 4/dt); the step's: nm or a sub-step's
    type(step_state_t) :: st                ! the step: plate, impactor, contact history and iteration
    type(record_t) :: rec                   ! the run's record: history rows, HDF5, summary maxima, warnings
    type(trace_t) :: tr                     ! --trace: the steps whose iterations are printed
@@ -56,36 +49,25 @@ program impact
    logical :: ok, check_only, restarting   ! the step converged; --check; --restart from a restart point
    character(len=msg_len) :: errmsg        ! the failure's message
 
-   ! =====================================================================
-   ! Input data: the deck (a file, or standard input), the command line's
-   ! settings over it; checked against the schema and echoed
-   ! =====================================================================
+   ! == Input data: the deck (a file, or standard input), the command line's settings over it
    call catch_stop_signals()          ! from the first instruction: a stop signal ends the set-up at once
    call die_with_parent()             ! a run of an accuracy ladder ends with its parent (src/accuracy/)
    call keep_file_size_errors()       ! past ulimit -f a write fails and the run says so
    call read_input()
    call cpu_time(cpu0)
 
-   ! =====================================================================
-   ! Laminate stiffness (eq. 6) and inertia (eq. 9); mesh and boundary
-   ! conditions (Fig. 4); [M] and [K_L] assembled (eq. 15, Appendix B)
-   ! =====================================================================
+   ! == Laminate stiffness (eq. 6), inertia (eq. 9); mesh, boundary conditions (Fig. 4); [M], [K_L] (eq. 15)
    call build_model(deck, model, stat, errmsg)
    if (stat /= 0) call fail(errmsg)
    call echo_model(deck, model, output_unit)
-
-   ! -- the other analyses of the same model (&analysis kind) end here
-   if (deck%analysis_kind /= 'impact') then
+   if (deck%analysis_kind /= 'impact') then      ! the other analyses of the same model end here
       if (.not. check_only) call run_other_analysis(deck, model, output_unit, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
       call release_results(claim, discard=.false.)
       stop
    end if
 
-   ! =====================================================================
-   ! Newmark constants; the left-hand matrix of eq. (19), K_L + 4/dt^2 M,
-   ! factored once (Akay's constant-coefficient scheme)
-   ! =====================================================================
+   ! == The left-hand matrix of eq. (19), K_L + 4/dt^2 M, factored once (Akay's constant coefficients)
    call solver_init(model, nm, solver, stat, errmsg)
    if (stat /= 0) call fail(errmsg)
    call release_assembled(model)      ! the steps need the factor; M x and K_N D are element by element
@@ -96,21 +78,15 @@ program impact
       stop
    end if
 
-   ! =====================================================================
-   ! Initial conditions: the plate at rest, the impactor touching it at its
-   ! impact velocity; or, with --restart, the run where it stopped
-   ! =====================================================================
-   st%cit = contact_iteration_t(update=deck%force_update, cr1=deck%cr1)
-   allocate (st%mb(model%msh%neq), st%d_new(model%msh%neq))
+   ! == Initial conditions: the plate at rest, the impactor touching it at v0; or, --restart, where it stopped
+   call step_start(st, model, impactor_t(mass=deck%mass, w=0.0_dp, v=deck%velocity, f=0.0_dp), &
+                   contact_iteration_t(update=deck%force_update, cr1=deck%cr1))
    call stop_after_step()             ! from here a stop signal ends the run after its step, results written
-   if (restarting) then
+   if (restarting) then               ! (the state, the solver's counters and the record as they were)
       call restart_resume(deck, model, nm, solver, st, rec, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
       first_step = rec%steps;  cpu0 = cpu0 - rec%cpu_before    ! the cpu time of the run before it stopped counts
-      write (output_unit, '(a)') 'restart: the run continues after step ' // int_str(first_step) // ' (' &
-         // restart_file(deck) // ')'
    else
-      call step_start(st, model, impactor_t(mass=deck%mass, w=0.0_dp, v=deck%velocity, f=0.0_dp))
       step = 0;  t = 0.0_dp;  first_step = 0;  c_plate = -1.0_dp
       ! -- scheme 'paper': the plate's compliance over a step, for the summary's fixed-point slope
       if (deck%scheme == 'paper') call plate_compliance(solver, st%cit%pattern, c_plate, stat, errmsg)
@@ -119,25 +95,22 @@ program impact
       call save_restart_point()
    end if
 
-   ! =====================================================================
-   ! Time integration (Fig. 3), the paper's scheme first; scheme 'fast' is
-   ! its one-call alternative (src/scheme/fast_scheme.f90)
-   ! =====================================================================
+   ! == Time integration (Fig. 3): scheme 'fast' in one call (src/scheme/fast_scheme.f90), or the paper's boxes
    time_steps: do step = first_step + 1, nstep
       t = real(step, dp)*nm%dt
       call trace_step(tr, step, t, st%imp, .false.)
       ! -- {b} of eq. (20) and M{b}, fixed for the whole step
       call mass_times(model, newmark_predictor(nm, st%plate%d, st%plate%v, st%plate%a), st%mb)
-      step_nm = nm
       if (deck%scheme == 'fast') then
          ! -- scheme 'fast': the contact equation inside each eq. (19) iteration (sub-steps if it fails)
          call fast_step_or_substeps(solver, model, nm, st, step_nm, ok, stat, errmsg)
-         call check_solver('the nonlinear iteration (eq. 19) with the contact equation')
+         if (stat /= 0) call fail_in_run('plate solution: ' // errmsg)
+         if (.not. ok) call fail_in_run('time step did not converge: ' // trim(errmsg))
          call trace_iteration(tr, step, st, solver, deck%scheme)
       else
          ! -- assume the contact force, the plate not reacting at first (section 2.3)
          call contact_start(st%cit, model, st%hist, nm, st%imp, pattern_mean(st%cit%pattern, st%plate%d))
-         st%d_new = st%plate%d
+         st%d_new = st%plate%d;  step_nm = nm
          contact_iterations: do ic = 1, deck%max_contact_iter
             st%cit%iterations = ic
             ! -- the plate under the assumed force over its contact area: eq. (19) until eq. (18)
@@ -169,22 +142,19 @@ program impact
       call trace_step(tr, step, t, st%imp, .true.)
       ! -- a divergence, or a warning with stop_on_warning; a stop signal; a restart point once a second
       if (rec%stop) call finish((rec%stop_status), rec%exit_status)   ! (a copy: finish sets it)
-      if (stop_signal_caught() > 0) call stop_on_signal()
+      if (stop_signal_caught() > 0) call finish('stopped by signal ' // int_str(stop_signal_caught()) // ' at step ' &
+                                                // int_str(step), 128 + stop_signal_caught())
       if (rec%restart_due) call save_restart_point()
    end do time_steps
 
-   ! =====================================================================
-   ! Summary
-   ! =====================================================================
+   ! == Summary
    call finish('completed', 0)
 
 contains
 
    !> The command line, the deck and its settings (src/deck/command_line.f90),
-   !> dt and the mesh chosen from the scene where the deck gives none
-   !> (src/model/scene_settings.f90); an accuracy run (&accuracy target
-   !> given) hands over to its driver and
-   !> ends there; an impact run claims its result files before any work.
+   !> dt and the mesh chosen from the scene where the deck gives none; an
+   !> accuracy run hands over to its driver; an impact run claims its files.
    subroutine read_input()
       type(options_t) :: opts
       integer :: accuracy_exit            ! the exit status of an accuracy run
@@ -215,31 +185,16 @@ contains
          call exit_program(accuracy_exit)
       end if
       tr%unit = output_unit;  tr%cr1 = deck%cr1;  tr%cr2 = deck%cr2
-      if (restarting) call restart_check(deck, restarting, first_step, stat, errmsg)
+      if (restarting) call restart_check(deck, nstep, restarting, first_step, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
-      if (restarting .and. first_step == nstep) then    ! nothing to do, nothing rewritten
-         write (output_unit, '(a)') 'restart: the run is complete: its restart point ' // restart_file(deck) &
-            // ' is at its last step, ' // int_str(first_step) // '; nothing is done (give a later &analysis ' &
-            // 't_end to continue it)'
-         stop
-      end if
-      if (opts%restart .and. .not. (restarting .or. check_only)) write (output_unit, '(a)') &
-         'restart: no restart point ' // restart_file(deck) // ': the run starts at step 0'
+      if (restarting .and. first_step == nstep) stop    ! complete (restart_check said so): nothing rewritten
       if (check_only) return
       call claim_run_files(deck, opts%restart, restarting, claim, stat, errmsg)
       if (stat /= 0) call fail(errmsg)
    end subroutine read_input
 
-   !> A solver failure or a step of scheme 'fast' that did not converge, even
-   !> in sub-steps, stops the run (errmsg: the iteration's report).
-   subroutine check_solver(what)
-      character(len=*), intent(in) :: what
-      if (stat /= 0) call fail_in_run('plate solution: ' // errmsg)
-      if (.not. ok) call fail_in_run('time step did not converge: ' // what // ': ' // trim(errmsg))
-   end subroutine check_solver
-
-   !> The end of a run: the summary with its status, the last words; a run
-   !> that completed or was stopped by a signal leaves its restart point.
+   !> The end of a run: the summary, the last words; a run that completed or
+   !> was stopped by a signal leaves its restart point.
    subroutine finish(status, exit_code)
       character(len=*), intent(in) :: status
       integer, intent(in) :: exit_code
@@ -254,40 +209,29 @@ contains
       stop
    end subroutine finish
 
-   !> A stop signal caught during the step: the run ends here, its results
-   !> written (exit status 128 + the signal's number).
-   subroutine stop_on_signal()
-      call finish('stopped by signal ' // int_str(stop_signal_caught()) // ' at step ' // int_str(step), &
-                  128 + stop_signal_caught())
-   end subroutine stop_on_signal
-
-   !> A restart point after the step just recorded (src/record/restart_point.f90):
-   !> the files were just flushed.
+   !> A restart point after the step just recorded (the files were just flushed).
    subroutine save_restart_point()
       call cpu_time(cpu1)
       call restart_save(deck, cpu1 - cpu0, st, solver, rec, stat, errmsg)
       if (stat /= 0) call fail_in_run(errmsg)
    end subroutine save_restart_point
 
-   !> Stops during the run, keeping what was computed: the history is on
-   !> disk, the summary says how far the run got.
+   !> Stops during the run: the history is on disk, the summary says how far.
    subroutine fail_in_run(message, status)
       character(len=*), intent(in) :: message
       character(len=*), intent(in), optional :: status
       character(len=80) :: where
+      character(len=:), allocatable :: note
       write (where, '(a,i0,a,es11.4,a)') 'failed at step ', step, ' (t = ', t, ' s)'
-      if (present(status)) then          ! before the first step: no results
-         where = status
-         write (error_unit, '(a/a)') 'impact: error: ' // trim(message), 'impact: ' // trim(where) // ': no step ran'
-      else
-         write (error_unit, '(a/a)') 'impact: error: ' // trim(message), 'impact: ' // trim(where) &
-            // '; results up to the last step are in ' // deck%prefix // '_history.dat'
-      end if
+      note = '; results up to the last step are in ' // deck%prefix // '_history.dat'
+      if (present(status)) where = status            ! before the first step: no results
+      if (present(status)) note = ': no step ran'
+      write (error_unit, '(a/a)') 'impact: error: ' // trim(message), 'impact: ' // trim(where) // note
       call finish(trim(where), 1)
    end subroutine fail_in_run
 
-   !> Stops before any result exists: one line, exit status 1; a result
-   !> file the claim created, still empty, is removed.
+   !> Stops before any result exists (exit status 1): a result file the
+   !> claim created, still empty, is removed.
    subroutine fail(message)
       character(len=*), intent(in) :: message
       write (error_unit, '(a)') 'impact: error: ' // trim(message)

@@ -9,7 +9,7 @@
 !> what, when and how it is made safe: above restart_save. Not from the
 !> paper. More: docs/ROBUSTNESS.md.
 module restart_point
-   use, intrinsic :: iso_fortran_env, only: int64
+   use, intrinsic :: iso_fortran_env, only: int64, output_unit
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char
    use kinds, only: dp, msg_len
    use number_text, only: int_str, real_str
@@ -33,7 +33,7 @@ module restart_point
       put_seal, seal_holds
    implicit none
    private
-   public :: restart_file, restart_save, restart_check, restart_resume, claim_run_files
+   public :: restart_save, restart_check, restart_resume, claim_run_files
 
    !> The layout of the file; a restart point of another is refused.
    integer, parameter :: layout = 3
@@ -63,6 +63,8 @@ contains
       integer, intent(out) :: stat                  !< 0 when the run may write its results
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(deck_t) :: claimed
+      if (restart_asked .and. .not. restarting) write (output_unit, '(a)') &
+         'restart: no restart point ' // restart_file(deck) // ': the run starts at step 0'
       claimed = deck
       claimed%overwrite = deck%overwrite .or. restarting
       if (restart_asked .and. .not. claimed%overwrite) &
@@ -176,8 +178,9 @@ contains
    !> one, and that it was written with this deck (above restart_save) by this
    !> layout, and its step (the run's last step: the run completed); stat
    !> /= 0 with the differences named otherwise.
-   subroutine restart_check(deck, found, step, stat, errmsg)
+   subroutine restart_check(deck, nstep, found, step, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
+      integer, intent(in) :: nstep                  !< the run's last step (t_end/dt)
       logical, intent(out) :: found                 !< there is a restart point
       integer, intent(out) :: step                  !< the step it was written after (0 if none)
       integer, intent(out) :: stat                  !< 0 when the run may continue from it
@@ -202,6 +205,9 @@ contains
          stat = 1
          errmsg = deck%source // ': --restart: the deck differs from the one of the run at its restart point (' &
             // path // '): ' // changed // '; only &analysis t_end may change'
+      else if (step == nstep) then
+         write (output_unit, '(a)') 'restart: the run is complete: its restart point ' // path // ' is at its ' &
+            // 'last step, ' // int_str(step) // '; nothing is done (give a later &analysis t_end to continue it)'
       end if
    end subroutine restart_check
 
@@ -279,6 +285,8 @@ contains
       if (stat == 0 .and. h5) call results_reopen(deck, model%msh, rows, snaps, peak_step, peak(1), peak(2), &
          reshape(peak_fields, [ndof_node, model%msh%nnode]), rec%h5, stat, errmsg)
       if (stat == 0) call reserve_summary(deck, stat, errmsg)
+      if (stat == 0) write (output_unit, '(a)') 'restart: the run continues after step ' // int_str(step) // ' (' &
+         // path // ')'
    end subroutine restart_resume
 
    ! ============================================================== parts

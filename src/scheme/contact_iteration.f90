@@ -85,14 +85,17 @@ contains
 
    !> The state at t = 0: the plate at rest, the impactor imp touching it,
    !> the contact's history fresh and its area that of imp's force.
-   subroutine step_start(st, model, imp)
-      type(step_state_t), intent(inout) :: st       !< the state (its contact iteration's settings kept)
+   subroutine step_start(st, model, imp, cit)
+      type(step_state_t), intent(out) :: st         !< the state
       type(model_t), intent(in) :: model            !< the model
       type(impactor_t), intent(in) :: imp           !< the impactor at t = 0
+      type(contact_iteration_t), intent(in) :: cit  !< the contact iteration with its settings (update, cr1)
       integer :: neq
       neq = model%msh%neq
       allocate (st%plate%d(neq), st%plate%v(neq), st%plate%a(neq), source=0.0_dp)
+      allocate (st%mb(neq), st%d_new(neq))
       st%imp = imp
+      st%cit = cit
       call contact_area(model, st%hist, imp%f, st%cit%pattern)
    end subroutine step_start
 

@@ -51,7 +51,7 @@ contains
    !> imp_new are the state at t + dt either way, for the caller to accept
    !> with step_nm (newmark_update) as it accepts a step. When no sub-step
    !> division converged either, plate, imp and hist are those at t and
-   !> errmsg says what was tried.
+   !> errmsg says which iteration failed and what was tried.
    subroutine fast_step_or_substeps(solver, model, nm, st, step_nm, converged, stat, errmsg)
       type(solver_t), intent(inout) :: solver          !< solver (its factor is the run's step's on exit)
       type(model_t), intent(in) :: model               !< model
@@ -99,8 +99,9 @@ contains
       solver%contraction = huge(1.0_dp);  solver%since_measured = 0
       if (stat /= 0 .or. converged) return
       st%plate = plate_t;  st%imp = imp_t;  st%hist = hist_t;  step_nm = nm
-      errmsg = why // '; taken again in ' // int_str(2**max_halvings) // ' sub-steps of dt/' &
-         // int_str(2**max_halvings) // ' (' // int_str(max_halvings) // ' halvings), it did not converge either: ' &
+      errmsg = 'the nonlinear iteration (eq. 19) with the contact equation: ' // why // '; taken again in ' &
+         // int_str(2**max_halvings) // ' sub-steps of dt/' // int_str(2**max_halvings) // ' (' &
+         // int_str(max_halvings) // ' halvings), it did not converge either: ' &
          // 'the time step (&analysis dt) is far too long for the scene, or the scene beyond the model'
    end subroutine fast_step_or_substeps
 
