@@ -134,8 +134,7 @@ contains
 
       ! -- the scene's static estimate, and the theory it calls for
       !    (src/model/scene_model.f90)
-      call point_stiffness(model%msh, model%lmt, model%geo, model%stiff, model%force_share, deck%edges, &
-                           model%scene%storage, model%scene, stat, errmsg)
+      call point_stiffness(model%msh, model%lmt, model%geo, model%stiff, deck%edges, model%scene, stat, errmsg)
       if (stat /= 0) return
       call energy_balance(model%scene%energy, model%scene%stiffness, deck%k, model%scene%force, &
                           model%scene%deflection, model%scene%indentation)

@@ -26,7 +26,7 @@ module restart_point
    use newmark, only: newmark_t
    use result_files, only: reserve_summary, results_claim_t, result_suffixes, claim_results, claim_left_empty
    use process_stop, only: remove_on_stop
-   use results_hdf5, only: results_reopen
+   use results_hdf5, only: results_reopen, results_point_t, results_point
    use run_recorder, only: record_t, record_save_state, record_load_state
    use restart_io, only: put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, put_flag, &
       take_flag, put_reals, take_reals, put_ints, take_ints, put_impactor, take_impactor, put_pattern, take_pattern, &
@@ -226,9 +226,8 @@ contains
       character(len=:), allocatable :: path, changed
       real(dp), allocatable :: x(:)
       integer, allocatable :: columns(:)
-      integer :: u, rows, snaps, peak_step
-      real(dp) :: peak(2)
-      real(dp), allocatable :: peak_fields(:)
+      integer :: u
+      type(results_point_t) :: pt
       logical :: h5
       integer :: step
       real(dp) :: cpu_s
@@ -252,13 +251,10 @@ contains
       call take_solver(u, solver, columns, stat)
       call record_load_state(rec, deck, model, nm, u, stat)
       rec%cpu_before = cpu_s
-      h5 = .false.;  rows = 0;  snaps = 0;  peak_step = 0;  peak = 0.0_dp
-      call take_results(u, h5, rows, snaps, peak_step, peak, peak_fields, stat)
+      h5 = .false.
+      call take_results(u, model%msh%nnode, h5, pt, stat)
       call take_tag(u, 'end', stat)
       close (u)
-      if (stat == 0 .and. h5) then
-         if (size(peak_fields) /= ndof_node*model%msh%nnode) stat = 1
-      end if
       if (stat /= 0) then
          stat = 1
          errmsg = path // ': not a restart point of this run (or damaged)'
@@ -282,8 +278,7 @@ contains
       end if
       call response_columns(solver, columns, stat, errmsg)
       if (stat == 0) call reopen_history(deck, rec, stat, errmsg)
-      if (stat == 0 .and. h5) call results_reopen(deck, model%msh, rows, snaps, peak_step, peak(1), peak(2), &
-         reshape(peak_fields, [ndof_node, model%msh%nnode]), rec%h5, stat, errmsg)
+      if (stat == 0 .and. h5) call results_reopen(deck, model%msh, pt, rec%h5, stat, errmsg)
       if (stat == 0) call reserve_summary(deck, stat, errmsg)
       if (stat == 0) write (output_unit, '(a)') 'restart: the run continues after step ' // int_str(step) // ' (' &
          // path // ')'
@@ -433,36 +428,35 @@ contains
       integer, intent(in) :: u                      !< the restart file
       type(record_t), intent(in) :: rec             !< the run's record
       integer, intent(inout) :: stat                !< 0, or the first failure
+      type(results_point_t) :: pt
       call put_tag(u, 'results', stat)
       call put_flag(u, allocated(rec%h5%path), stat)
       if (.not. allocated(rec%h5%path)) return
-      call put_ints(u, [rec%h5%rows_written + rec%h5%nrow, rec%h5%snaps_written + rec%h5%nsnap, rec%h5%peak_step], &
-         stat)
-      call put_reals(u, [rec%h5%peak_time, rec%h5%peak_force], stat)
-      call put_reals(u, reshape(rec%h5%peak_fields, [size(rec%h5%peak_fields)]), stat)
+      pt = results_point(rec%h5)
+      call put_ints(u, [pt%rows, pt%snaps, pt%peak_step], stat)
+      call put_reals(u, [pt%peak_time, pt%peak_force], stat)
+      call put_reals(u, reshape(pt%peak_fields, [size(pt%peak_fields)]), stat)
    end subroutine put_results
 
-   !> Reads what put_results wrote.
-   subroutine take_results(u, h5, rows, snaps, peak_step, peak, peak_fields, stat)
+   !> Reads what put_results wrote (nnode: the mesh's nodes).
+   subroutine take_results(u, nnode, h5, pt, stat)
       integer, intent(in) :: u                      !< the restart file, at the results' part
+      integer, intent(in) :: nnode                  !< the mesh's nodes
       logical, intent(out) :: h5                    !< the run wrote <prefix>.h5
-      integer, intent(out) :: rows, snaps           !< the rows and snapshots it holds
-      integer, intent(out) :: peak_step             !< its peak: step,
-      real(dp), intent(out) :: peak(2)              !< time (s) and force (N),
-      real(dp), allocatable, intent(out) :: peak_fields(:)   !< and fields
+      type(results_point_t), intent(out) :: pt      !< what it holds
       integer, intent(inout) :: stat                !< 0, or the first failure
-      real(dp), allocatable :: x(:)
+      real(dp), allocatable :: x(:), f(:)
       integer, allocatable :: i(:)
-      h5 = .false.;  rows = 0;  snaps = 0;  peak_step = 0;  peak = 0.0_dp
+      h5 = .false.
       call take_tag(u, 'results', stat)
       call take_flag(u, h5, stat)
       if (stat /= 0 .or. .not. h5) return
       call take_ints(u, i, stat)
       call take_reals(u, x, stat, 2)
-      call take_reals(u, peak_fields, stat)
+      call take_reals(u, f, stat, ndof_node*nnode)
       if (stat == 0 .and. size(i) /= 3) stat = 1
       if (stat /= 0) return
-      rows = i(1);  snaps = i(2);  peak_step = i(3);  peak = x
+      pt = results_point_t(i(1), i(2), i(3), x(1), x(2), reshape(f, [ndof_node, nnode]))
    end subroutine take_results
 
    !> The history file cut back to its length at the restart point and

@@ -27,10 +27,10 @@ module run_recorder
    use newmark, only: newmark_t, impactor_t, impactor_compliance
    use scene_model, only: theory_warning, bending_deflection
    use result_files, only: column_t, history_columns, nhist, summary_item_t, summary_real, summary_integer, &
-      summary_text, open_columns, write_history_row, reserve_summary, write_summary_file, col_time, col_force, &
+      summary_text, open_history, write_history_row, reserve_summary, write_summary_file, col_time, col_force, &
       col_alpha, col_w_plate, col_w_impactor, col_v_impactor, col_strain_y, col_ke_impactor, col_ke_plate, &
       col_strain_energy, col_contact_work, col_contact_energy, col_energy_error, col_branch, col_contact_iter, &
-      col_solves, nhist_strength, history_width, history_slot, col_failure_index, col_failure_mode
+      col_solves, nhist_strength, history_width, col_failure_index, col_failure_mode
    use file_system, only: truncate_file, file_probe_t, open_probe, probe_size, close_probe
    use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_tick, &
       results_flush, results_leave, results_closing, results_finish
@@ -179,8 +179,8 @@ contains
          texts(c) = col%meaning // ' (' // trim(col%file_unit) // ')'
       end do
 
-      call open_columns(deck, '_history.dat', 'impact: history of a low-velocity impact (Choi, Hong & Lee 1991)', &
-         names, texts, rec%hist_unit, rec%hist_path, stat, errmsg, align=history_slot)
+      call open_history(deck, 'impact: history of a low-velocity impact (Choi, Hong & Lee 1991)', &
+         names, texts, rec%hist_unit, rec%hist_path, stat, errmsg)
       if (stat /= 0) return
       call open_probe(rec%hist_path, rec%hist_probe, stat)
       if (stat /= 0) then

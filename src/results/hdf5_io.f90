@@ -438,11 +438,11 @@ contains
       stat = failed
       select type (x)
       type is (real(dp))
-         call create_dataset(loc, name, H5T_NATIVE_DOUBLE, dims, dims, max(dims, 1_hsize_t), did, stat, errmsg)
+         call create_dataset(loc, name, H5T_NATIVE_DOUBLE, dims, max(dims, 1_hsize_t), did, stat, errmsg)
          r = x
          if (stat == 0) call h5dwrite_f(did, H5T_NATIVE_DOUBLE, c_loc(r), err)
       type is (integer)
-         call create_dataset(loc, name, H5T_NATIVE_INTEGER, dims, dims, max(dims, 1_hsize_t), did, stat, errmsg)
+         call create_dataset(loc, name, H5T_NATIVE_INTEGER, dims, max(dims, 1_hsize_t), did, stat, errmsg)
          i = x
          if (stat == 0) call h5dwrite_f(did, H5T_NATIVE_INTEGER, c_loc(i), err)
       end select
@@ -513,23 +513,26 @@ contains
       integer(hsize_t) :: maxdims(size(dims))
       maxdims = dims
       maxdims(size(dims)) = H5S_UNLIMITED_F
-      call create_dataset(loc, name, tid, dims, maxdims, chunk, did, stat, errmsg)
+      call create_dataset(loc, name, tid, maxdims, chunk, did, stat, errmsg)
    end subroutine create_extendible
 
-   !> Creates the dataset `name` of element type tid, shape dims (largest
-   !> maxdims), stored in chunks of shape chunk, each checksummed (HDF5's
-   !> Fletcher32 filter), and returns it open as did.
-   subroutine create_dataset(loc, name, tid, dims, maxdims, chunk, did, stat, errmsg)
+   !> Creates the dataset `name` of element type tid, largest shape maxdims
+   !> (its shape, but an unlimited dimension starts empty), stored in chunks
+   !> of shape chunk, each checksummed (HDF5's Fletcher32 filter), and
+   !> returns it open as did.
+   subroutine create_dataset(loc, name, tid, maxdims, chunk, did, stat, errmsg)
       integer(hid_t), intent(in) :: loc, tid
       character(len=*), intent(in) :: name
-      integer(hsize_t), intent(in) :: dims(:), maxdims(:), chunk(:)
+      integer(hsize_t), intent(in) :: maxdims(:), chunk(:)
       integer(hid_t), intent(out) :: did
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
+      integer(hsize_t) :: dims(size(maxdims))
       integer(hid_t) :: sid, plist
       integer :: err
 
       did = -1
+      dims = merge(0_hsize_t, maxdims, maxdims == H5S_UNLIMITED_F)
       call h5screate_simple_f(size(dims), dims, sid, err, maxdims)
       call h5io_check(err, 'cannot make the dataspace of the dataset', name, stat, errmsg)
       if (stat /= 0) return

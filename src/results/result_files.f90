@@ -26,7 +26,7 @@ module result_files
              col_energy_error, col_branch, col_contact_iter, col_solves, col_failure_index, col_failure_mode
    public :: summary_item_t, summary_real, summary_integer, summary_text
    public :: results_claim_t, result_suffixes, claim_results, release_results, claim_left_empty
-   public :: open_columns, write_column_block, write_history_row, history_slot, reserve_summary, write_summary_file
+   public :: open_columns, open_history, write_column_block, write_history_row, history_slot, reserve_summary, write_summary_file
 
    !> One column of the history.
    type :: column_t
@@ -293,19 +293,17 @@ contains
 
    !> Opens <prefix><suffix> (claimed before) and writes its header: title,
    !> deck echo, the columns with their meanings, the names.
-   subroutine open_columns(deck, suffix, title, names, texts, unit, path, stat, errmsg, align)
+   subroutine open_columns(deck, suffix, title, names, texts, unit, stat, errmsg)
       type(deck_t), intent(in) :: deck            !< effective deck (echoed; prefix)
       character(len=*), intent(in) :: suffix      !< file name after the prefix, e.g. '_static.dat'
       character(len=*), intent(in) :: title       !< first line, after '# '
       character(len=*), intent(in) :: names(:)    !< column names (with their unit)
       character(len=*), intent(in) :: texts(:)    !< column meanings (with their unit)
-      integer, intent(out) :: unit                !< the open file
-      character(len=:), allocatable, intent(out) :: path   !< its path
+      integer, intent(out) :: unit                !< the open file, <prefix><suffix>
       integer, intent(out) :: stat                !< 0 on success
       character(len=*), intent(inout) :: errmsg   !< reason on failure
-      integer, intent(in), optional :: align      !< header length made a multiple of it (history_slot)
       character(len=msg_len) :: iomsg
-      integer :: pad
+      character(len=:), allocatable :: path
       path = deck%prefix // suffix
       if (path_kind(path) == path_link) then
          stat = 1
@@ -319,25 +317,43 @@ contains
             // short_path(path) // ': ' // trim(iomsg)
          return
       end if
-      call write_header(0)
-      if (.not. present(align)) return
-      ! the names line padded with blanks to end the header at a multiple of align
-      pad = int(modulo(-file_size(path), int(align, int64)))
+      call write_header(unit, deck, title, names, texts, 0)
+   end subroutine open_columns
+
+   !> The history file, opened as open_columns does, its header padded with
+   !> blanks after the names line to end at a multiple of history_slot.
+   subroutine open_history(deck, title, names, texts, unit, path, stat, errmsg)
+      type(deck_t), intent(in) :: deck            !< effective deck (echoed; prefix)
+      character(len=*), intent(in) :: title       !< first line, after '# '
+      character(len=*), intent(in) :: names(:)    !< column names (with their unit)
+      character(len=*), intent(in) :: texts(:)    !< column meanings (with their unit)
+      integer, intent(out) :: unit                !< the open file
+      character(len=:), allocatable, intent(out) :: path   !< its path
+      integer, intent(out) :: stat                !< 0 on success
+      character(len=*), intent(inout) :: errmsg   !< reason on failure
+      integer :: pad
+      path = deck%prefix // '_history.dat'
+      call open_columns(deck, '_history.dat', title, names, texts, unit, stat, errmsg)
+      if (stat /= 0) return
+      pad = int(modulo(-file_size(path), int(history_slot, int64)))
       if (pad == 0) return
       rewind (unit)
-      call write_header(pad)
+      call write_header(unit, deck, title, names, texts, pad)
+   end subroutine open_history
 
-   contains
-
-      subroutine write_header(blanks)
-         integer, intent(in) :: blanks            !< after the names line
-         write (unit, '(a)') '# ' // title
-         call echo_deck(deck, unit, '# ')
-         call write_column_block(unit, names, texts, blanks)
-         flush (unit)
-      end subroutine write_header
-
-   end subroutine open_columns
+   !> A column file's header: title, deck echo, column block (`blanks` after the names).
+   subroutine write_header(unit, deck, title, names, texts, blanks)
+      integer, intent(in) :: unit                 !< the open file
+      type(deck_t), intent(in) :: deck            !< effective deck (echoed)
+      character(len=*), intent(in) :: title       !< first line, after '# '
+      character(len=*), intent(in) :: names(:)    !< column names (with their unit)
+      character(len=*), intent(in) :: texts(:)    !< column meanings (with their unit)
+      integer, intent(in) :: blanks               !< after the names line
+      write (unit, '(a)') '# ' // title
+      call echo_deck(deck, unit, '# ')
+      call write_column_block(unit, names, texts, blanks)
+      flush (unit)
+   end subroutine write_header
 
    !> The column block of a file's header: '# columns:', a line per column
    !> (number, name, meaning), then the names on one '#' line, the last

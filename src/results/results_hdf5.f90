@@ -33,7 +33,7 @@ module results_hdf5
       xdmf_grow, xdmf_cut, xdmf_peak, xdmf_close
    implicit none
    private
-   public :: results_file_t, results_open, results_reopen, results_append_history, results_state, &
+   public :: results_file_t, results_point_t, results_point, results_open, results_reopen, results_append_history, results_state, &
              results_tick, results_flush, results_leave, results_closing, results_finish
 
    integer, parameter :: units_len = 8
@@ -83,7 +83,23 @@ module results_hdf5
       integer(int64) :: clock_rate = 1                  !< system_clock counts per second
    end type results_file_t
 
+   !> What a restart point holds of <prefix>.h5 (src/record/restart_point.f90).
+   type :: results_point_t
+      integer :: rows = 0, snaps = 0                !< history rows and snapshots in the file
+      integer :: peak_step = 0                      !< the peak: its step,
+      real(dp) :: peak_time = 0, peak_force = 0     !< time (s), force (N)
+      real(dp), allocatable :: peak_fields(:,:)     !< and nodal fields (ndof_node, nnode)
+   end type results_point_t
+
 contains
+
+   !> What the file holds once flushed, for a restart point.
+   pure function results_point(rf) result(pt)
+      type(results_file_t), intent(in) :: rf        !< the results file
+      type(results_point_t) :: pt
+      pt = results_point_t(rf%rows_written + rf%nrow, rf%snaps_written + rf%nsnap, rf%peak_step, rf%peak_time, &
+                           rf%peak_force, rf%peak_fields)
+   end function results_point
 
    !> What results_open and results_reopen share: the path, the buffers, the
    !> clock (results_file_t); nothing is opened.
@@ -175,19 +191,15 @@ contains
    end subroutine results_open
 
    !> A restart (src/record/restart_point.f90): opens the run's <prefix>.h5
-   !> again and cuts it back to its restart point, `rows` history rows and
-   !> `snaps` snapshots, with the peak of that point (what a killed run
+   !> again and cuts it back to its restart point pt, its history rows and
+   !> snapshots, with the peak of that point (what a killed run
    !> wrote after it goes; a stopped run's /summary goes back to 'running',
    !> its /strength, written at its end, goes);
    !> the XDMF views are made anew (src/results/results_xdmf.f90).
-   subroutine results_reopen(deck, msh, rows, snaps, peak_step, peak_time, peak_force, peak_fields, rf, &
-                             stat, errmsg)
+   subroutine results_reopen(deck, msh, pt, rf, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(mesh_t), intent(in) :: msh               !< the mesh with its equation numbers
-      integer, intent(in) :: rows, snaps            !< history rows and snapshots at the restart point
-      integer, intent(in) :: peak_step              !< the peak there: its step,
-      real(dp), intent(in) :: peak_time, peak_force !< time (s), force (N)
-      real(dp), intent(in) :: peak_fields(:,:)      !< and nodal fields (ndof_node, nnode)
+      type(results_point_t), intent(in) :: pt       !< the file at the restart point
       type(results_file_t), intent(out) :: rf       !< the results file, active on return when deck%hdf5
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
@@ -200,23 +212,23 @@ contains
       call system_clock(rf%flushed_at, rf%clock_rate)
       if (.not. deck%hdf5) return
       call prepare(deck, msh, rf)
-      rf%peak_step = peak_step;  rf%peak_time = peak_time;  rf%peak_force = peak_force
-      rf%peak_fields = peak_fields
+      rf%peak_step = pt%peak_step;  rf%peak_time = pt%peak_time;  rf%peak_force = pt%peak_force
+      rf%peak_fields = pt%peak_fields
       why = ''
       call h5io_start(stat, why)
       if (stat == 0) call h5io_open(rf%path, .false., rf%fid, stat, why)
       do c = 1, rf%ncol
-         call cut(rf%hist(c), 'history/' // trim(history_columns(c)%name), rows)
+         call cut(rf%hist(c), 'history/' // trim(history_columns(c)%name), pt%rows)
       end do
-      call cut(rf%snap_time, 'fields/time', snaps)
-      call cut(rf%snap_step, 'fields/step', snaps)
-      call cut(rf%snap_force, 'fields/force', snaps)
+      call cut(rf%snap_time, 'fields/time', pt%snaps)
+      call cut(rf%snap_step, 'fields/step', pt%snaps)
+      call cut(rf%snap_force, 'fields/force', pt%snaps)
       do k = 1, ndof_node
-         call cut(rf%snap_field(k), 'fields/' // trim(freedom_name(k)), snaps)
+         call cut(rf%snap_field(k), 'fields/' // trim(freedom_name(k)), pt%snaps)
       end do
-      if (stat == 0) call xdmf_cut(rf%xdmf, deck, msh, rf%fid, snaps, stat, why)
-      if (stat == 0) call h5io_update_attr(rf%fid, 'history', 'rows', rows, stat, why)
-      if (stat == 0) call h5io_update_attr(rf%fid, 'fields', 'snapshots', snaps, stat, why)
+      if (stat == 0) call xdmf_cut(rf%xdmf, deck, msh, rf%fid, pt%snaps, stat, why)
+      if (stat == 0) call h5io_update_attr(rf%fid, 'history', 'rows', pt%rows, stat, why)
+      if (stat == 0) call h5io_update_attr(rf%fid, 'fields', 'snapshots', pt%snaps, stat, why)
       if (stat == 0) call write_peak(rf, stat, why)
       if (stat == 0) then
          if (h5io_exists(rf%fid, 'strength')) call h5io_delete(rf%fid, 'strength', stat, why)
@@ -233,7 +245,7 @@ contains
          errmsg = rf%path // ': ' // trim(why)
          return
       end if
-      rf%rows_written = rows;  rf%snaps_written = snaps
+      rf%rows_written = pt%rows;  rf%snaps_written = pt%snaps
       rf%active = .true.
 
    contains

@@ -18,7 +18,7 @@ module xdmf_plies
    use hdf5_io, only: h5io_group, h5io_write, h5io_exists, h5io_delete
    implicit none
    private
-   public :: xdmf_plies_t, plies_write, plies_collection
+   public :: xdmf_plies_t, ply_maps_t, plies_write, plies_collection
 
    !> Where the cells of the 3 x 3 Gauss points are cut, along xi and eta.
    real(dp), parameter :: plies_cut(4) = [-1.0_dp, -4.0_dp/9.0_dp, 4.0_dp/9.0_dp, 1.0_dp]
@@ -45,6 +45,19 @@ module xdmf_plies
       character(len=:), allocatable :: modes        !< the mode codes' words ('0 none, 1 fibre_tension, ...')
    end type xdmf_plies_t
 
+   !> The laminate and its damage maps, per ply and Gauss point: what plies_write shows.
+   type :: ply_maps_t
+      real(dp), allocatable :: z(:)                 !< (0:nply) ply interfaces (m)
+      real(dp), allocatable :: angle(:)             !< (nply) ply angles (deg)
+      real(dp), allocatable :: fi_max(:,:)          !< (nply, npoint) largest failure index over the run (-)
+      integer, allocatable :: mode_max(:,:)         !< (nply, npoint) its mode
+      real(dp), allocatable :: onset(:,:)           !< (nply, npoint) first time it reached 1 (s, -1 never)
+      real(dp), allocatable :: sigma(:,:,:,:)       !< (5, 2, nply, npoint) stresses at the peak force (Pa)
+      real(dp), allocatable :: fi(:,:,:)            !< (2, nply, npoint) failure indices there (-)
+      real(dp), allocatable :: delam(:,:)           !< (nply - 1, npoint) interfaces' largest index (-)
+      character(len=:), allocatable :: modes        !< the mode codes' words
+   end type ply_maps_t
+
 contains
 
    !> Writes /xdmf/plies into the open results file fid (above laminate_grid) and
@@ -54,29 +67,23 @@ contains
    !> npoint) (Pa, s11 s22 t12 t23 t13, material axes) and fi (2, nply,
    !> npoint); delam (nply - 1, npoint) the interfaces' largest index;
    !> points in element order, 9 per element (ply_stress's order: xi fastest).
-   subroutine plies_write(p, fid, msh, z, angle, fi_max, mode_max, onset, sigma, fi, delam, modes, stat, errmsg)
+   subroutine plies_write(p, fid, msh, maps, stat, errmsg)
       type(xdmf_plies_t), intent(out) :: p          !< the grid, active on success
       integer(hid_t), intent(in) :: fid             !< the open results file
       type(mesh_t), intent(in) :: msh               !< the modelled mesh
-      real(dp), intent(in) :: z(0:)                 !< (0:nply) ply interfaces (m)
-      real(dp), intent(in) :: angle(:)              !< (nply) ply angles (deg)
-      real(dp), intent(in) :: fi_max(:,:)           !< (nply, npoint) largest failure index over the run (-)
-      integer, intent(in) :: mode_max(:,:)          !< (nply, npoint) its mode
-      real(dp), intent(in) :: onset(:,:)            !< (nply, npoint) first time it reached 1 (s, -1 never)
-      real(dp), intent(in) :: sigma(:,:,:,:)        !< (5, 2, nply, npoint) stresses at the peak force (Pa)
-      real(dp), intent(in) :: fi(:,:,:)             !< (2, nply, npoint) failure indices there (-)
-      real(dp), intent(in) :: delam(:,:)            !< (nply - 1, npoint) interfaces' largest index (-)
-      character(len=*), intent(in) :: modes         !< the mode codes' words
+      type(ply_maps_t), intent(in) :: maps          !< the laminate and its maps
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       real(dp), allocatable :: xyz(:,:), v(:), face_values(:,:,:)
       integer, allocatable :: cells(:,:), iv(:)
       integer :: nply, npoint, ncell, c, k
 
+      associate (angle => maps%angle, fi_max => maps%fi_max, mode_max => maps%mode_max, onset => maps%onset, &
+                 sigma => maps%sigma, fi => maps%fi, delam => maps%delam)
       nply = size(angle)
       npoint = size(fi_max, 2)
       ncell = 2*nply*npoint
-      call laminate_grid(msh, z, xyz, cells)
+      call laminate_grid(msh, maps%z, xyz, cells)
       stat = 0
       ! a restarted run (src/record/restart_point.f90) finds the group of the run it continues
       if (h5io_exists(fid, group)) call h5io_delete(fid, group, stat, errmsg)
@@ -119,7 +126,8 @@ contains
       p%npoint = npoint
       p%ncell = ncell
       p%npts = nen_lattice*msh%nelem*(2*nply + 1)
-      p%modes = modes
+      p%modes = maps%modes
+      end associate
 
    contains
 

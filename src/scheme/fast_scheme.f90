@@ -104,7 +104,8 @@ contains
          call contact_area(model, hist, f, cit%pattern)
          call add_pattern_response(solver, cit%pattern, f, rhs)
          ! -- eq. (18), also on the estimated next change (above first_contraction)
-         call iteration_end(solver, model, plate%d, rhs, d, converged, done, stat, errmsg)
+         call iteration_end(solver, model, plate%d, rhs, d, done, stat, errmsg)
+         converged = solver%converged
          if (solver%iterations == 1) then
             d_first = rhs;  f_first = f;  alpha_first = alpha
          end if
