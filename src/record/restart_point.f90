@@ -27,7 +27,9 @@ module restart_point
    use result_files, only: reserve_summary, results_claim_t, result_suffixes, claim_results, claim_left_empty
    use process_stop, only: remove_on_stop
    use results_hdf5, only: results_reopen, results_point_t, results_point
-   use run_recorder, only: record_t, record_save_state, record_load_state
+   use run_recorder, only: record_t, record_settings, nwarn
+   use progress_line, only: progress_start
+   use step_peak, only: peak_state, peak_restore, peak_state_size
    use restart_io, only: put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, put_flag, &
       take_flag, put_reals, take_reals, put_ints, take_ints, put_impactor, take_impactor, put_pattern, take_pattern, &
       put_seal, seal_holds
@@ -139,7 +141,6 @@ contains
       character(len=:), allocatable :: path
       character(len=msg_len) :: iomsg
       integer :: u, ios
-
       path = restart_file(deck)
       call remove_file(path // '.tmp', ios)          ! a link itself, never what it points to
       open (newunit=u, file=path // '.tmp', access='stream', form='unformatted', status='new', &
@@ -162,7 +163,7 @@ contains
       call put_flag(u, st%hist%separated, stat)
       call put_pattern(u, st%cit%pattern, stat)
       call put_solver(u, solver, stat)
-      call record_save_state(rec, u, stat)
+      call put_record(u, rec, stat)
       call put_results(u, rec, stat)
       call put_tag(u, 'end', stat)
       call put_seal(u, stat)
@@ -187,7 +188,6 @@ contains
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=:), allocatable :: path, changed
       integer :: u
-
       stat = 0
       step = 0
       path = restart_file(deck)
@@ -231,7 +231,6 @@ contains
       logical :: h5
       integer :: step
       real(dp) :: cpu_s
-
       path = restart_file(deck)
       step = 0;  cpu_s = 0.0_dp
       call open_point(path, u, stat, errmsg)
@@ -249,7 +248,7 @@ contains
       call take_flag(u, st%hist%separated, stat)
       call take_pattern(u, st%cit%pattern, stat)
       call take_solver(u, solver, columns, stat)
-      call record_load_state(rec, deck, model, nm, u, stat)
+      call take_record(u, deck, model, nm, rec, stat)
       rec%cpu_before = cpu_s
       h5 = .false.
       call take_results(u, model%msh%nnode, h5, pt, stat)
@@ -340,7 +339,6 @@ contains
       integer, intent(inout) :: stat                !< 0, or the first failure
       character(len=:), allocatable :: key, then, now
       integer :: n, k, iv, dot
-
       changed = ''
       now = ''            ! (else gfortran 12 at -O2 takes its length for unset in the loop)
       n = -1
@@ -421,6 +419,118 @@ contains
       call contact_response(solver, all, stat, errmsg)
       solver%response_solves = counted
    end subroutine response_columns
+
+   !> Writes what the record carries from step to step (a restart point,
+   !> src/record/restart_point.f90): energies, previous step, running figures,
+   !> warnings, the history's length, and with &strength the damage maps.
+   subroutine put_record(u, rec, stat)
+      type(record_t), intent(in) :: rec             !< the record
+      integer, intent(in) :: u                      !< the restart file, an open stream
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      call put_tag(u, 'record', stat)
+      call put_reals(u, [rec%e0, rec%contact_work, rec%contact_energy, rec%alpha_prev, &
+         rec%first_contact_start, rec%first_contact_end, rec%max_energy_error, rec%energy_created, &
+         rec%energy_lost, rec%max_w_over_h, rec%w_bend_max, &
+         rec%diverged_at, rec%c_plate, rec%c_impactor, rec%max_slope], stat)
+      call put_reals(u, [peak_state(rec%force_peak), peak_state(rec%deflection_peak), peak_state(rec%strain_peak)], &
+         stat)
+      call put_ints(u, [rec%steps, rec%contacts, rec%contact_iterations, rec%max_contact_iter, rec%max_solves, &
+         rec%unconverged_steps, rec%first_unconverged, rec%nonlinear_fallback_steps, rec%contact_fallback_steps, &
+         rec%warnings, rec%mixed_seen, rec%solves_before, merge(1, 0, rec%in_contact), rec%substepped_steps, &
+         merge(1, 0, rec%warned)], stat)
+      call put_real(u, real(rec%hist_bytes, dp), stat)
+      call put_impactor(u, rec%imp_prev, stat)
+      call put_pattern(u, rec%pattern_prev, stat)
+      call put_reals(u, rec%d_prev, stat)
+      call put_flag(u, rec%damage%active, stat)
+      call put_real(u, rec%damage%delam%onset, stat)
+      if (.not. rec%damage%active) return
+      call put_reals(u, [rec%damage%smax, rec%damage%step_fi, rec%damage%max_fi, rec%damage%max_time, &
+         rec%damage%onset, rec%damage%onset_fi, rec%damage%peak_force, rec%damage%peak_time], stat)
+      call put_ints(u, [rec%damage%step_mode, rec%damage%max_mode, rec%damage%max_ply, rec%damage%max_point, &
+         rec%damage%onset_mode, rec%damage%onset_ply, rec%damage%onset_point, rec%damage%peak_step], stat)
+      call put_reals(u, reshape(rec%damage%fi_max, [size(rec%damage%fi_max)]), stat)
+      call put_ints(u, reshape(rec%damage%mode_max, [size(rec%damage%mode_max)]), stat)
+      call put_reals(u, reshape(rec%damage%onset_time, [size(rec%damage%onset_time)]), stat)
+      call put_reals(u, rec%damage%d_peak, stat)
+      call put_reals(u, [rec%damage%delam%max_index], stat)
+      call put_ints(u, [rec%damage%delam%max_interface, rec%damage%delam%max_point], stat)
+      call put_reals(u, reshape(rec%damage%delam%map, [size(rec%damage%delam%map)]), stat)
+   end subroutine put_record
+
+   !> A restart: the record of the deck with the figures put_record
+   !> wrote; the caller opens its files again.
+   subroutine take_record(u, deck, model, nm, rec, stat)
+      type(record_t), intent(out) :: rec            !< the record
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      type(model_t), intent(in) :: model            !< the model
+      type(newmark_t), intent(in) :: nm             !< Newmark's constants (the time step)
+      integer, intent(in) :: u                      !< the restart file, an open stream at the record's part
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      real(dp), allocatable :: r(:)
+      integer, allocatable :: i(:)
+      real(dp) :: bytes
+      logical :: active
+      call record_settings(rec, deck, model, nm)
+      call take_tag(u, 'record', stat)
+      call take_reals(u, r, stat, 15)
+      if (stat /= 0) return
+      rec%e0 = r(1);  rec%contact_work = r(2);  rec%contact_energy = r(3);  rec%alpha_prev = r(4)
+      rec%first_contact_start = r(5);  rec%first_contact_end = r(6);  rec%max_energy_error = r(7)
+      rec%energy_created = r(8);  rec%energy_lost = r(9);  rec%max_w_over_h = r(10);  rec%w_bend_max = r(11)
+      rec%diverged_at = r(12);  rec%c_plate = r(13);  rec%c_impactor = r(14);  rec%max_slope = r(15)
+      call take_reals(u, r, stat, 3*peak_state_size)
+      if (stat /= 0) return
+      rec%force_peak = peak_restore(r(1:peak_state_size))
+      rec%deflection_peak = peak_restore(r(peak_state_size + 1:2*peak_state_size))
+      rec%strain_peak = peak_restore(r(2*peak_state_size + 1:))
+      call take_ints(u, i, stat)
+      if (stat == 0 .and. size(i) /= 14 + nwarn) stat = 1
+      if (stat /= 0) return
+      rec%steps = i(1);  rec%contacts = i(2);  rec%contact_iterations = i(3);  rec%max_contact_iter = i(4)
+      rec%max_solves = i(5);  rec%unconverged_steps = i(6);  rec%first_unconverged = i(7)
+      rec%nonlinear_fallback_steps = i(8);  rec%contact_fallback_steps = i(9);  rec%warnings = i(10)
+      rec%mixed_seen = i(11);  rec%solves_before = i(12);  rec%in_contact = i(13) /= 0
+      rec%substepped_steps = i(14)
+      rec%warned = i(15:) /= 0
+      call progress_start(rec%progress, rec%nstep, deck%t_end)   ! the progress line goes on
+      bytes = 0.0_dp
+      call take_real(u, bytes, stat)
+      rec%hist_bytes = nint(bytes, int64)
+      call take_impactor(u, rec%imp_prev, stat)
+      call take_pattern(u, rec%pattern_prev, stat)
+      call take_reals(u, rec%d_prev, stat, model%msh%neq)
+      active = .false.
+      call take_flag(u, active, stat)
+      if (stat == 0 .and. active .neqv. rec%damage%active) stat = 1
+      call take_real(u, rec%damage%delam%onset, stat)
+      if (stat /= 0 .or. .not. active) return
+      call take_reals(u, r, stat, 12)
+      call take_ints(u, i, stat)
+      if (stat == 0 .and. size(i) /= 8) stat = 1
+      if (stat /= 0) return
+      rec%damage%smax = r(1:5);  rec%damage%step_fi = r(6);  rec%damage%max_fi = r(7)
+      rec%damage%max_time = r(8);  rec%damage%onset = r(9);  rec%damage%onset_fi = r(10)
+      rec%damage%peak_force = r(11);  rec%damage%peak_time = r(12)
+      rec%damage%step_mode = i(1);  rec%damage%max_mode = i(2);  rec%damage%max_ply = i(3)
+      rec%damage%max_point = i(4);  rec%damage%onset_mode = i(5);  rec%damage%onset_ply = i(6)
+      rec%damage%onset_point = i(7);  rec%damage%peak_step = i(8)
+      call take_reals(u, r, stat, size(rec%damage%fi_max))
+      if (stat == 0) rec%damage%fi_max = reshape(r, shape(rec%damage%fi_max))
+      call take_ints(u, i, stat)
+      if (stat == 0 .and. size(i) /= size(rec%damage%mode_max)) stat = 1
+      if (stat == 0) rec%damage%mode_max = reshape(i, shape(rec%damage%mode_max))
+      call take_reals(u, r, stat, size(rec%damage%onset_time))
+      if (stat == 0) rec%damage%onset_time = reshape(r, shape(rec%damage%onset_time))
+      call take_reals(u, rec%damage%d_peak, stat, model%msh%neq)
+      call take_reals(u, r, stat, 1)
+      call take_ints(u, i, stat)
+      if (stat == 0 .and. size(i) /= 2) stat = 1
+      if (stat /= 0) return
+      rec%damage%delam%max_index = r(1);  rec%damage%delam%max_interface = i(1);  rec%damage%delam%max_point = i(2)
+      call take_reals(u, r, stat, size(rec%damage%delam%map))
+      if (stat == 0) rec%damage%delam%map = reshape(r, shape(rec%damage%delam%map))
+   end subroutine take_record
 
    !> What <prefix>.h5 holds at the restart point: its rows and snapshots
    !> and its peak.

@@ -58,7 +58,6 @@ contains
       real(dp), intent(out) :: vv               !< its value
       logical, intent(out) :: concave           !< the vertex is a maximum between t(1) and t(3)
       real(dp) :: d1, d2, c
-
       tv = t(2)
       vv = v(2)
       concave = .false.
@@ -86,7 +85,6 @@ contains
       real(dp), intent(in) :: y1                !< its value
       real(dp), intent(in) :: t2                !< the second sample's time (> t1)
       real(dp), intent(in) :: y2                !< its value
-
       if (y1 == y2) then
          tz = t2
       else
@@ -106,7 +104,6 @@ contains
       type(peak_track_t), intent(inout) :: p    !< the samples kept
       real(dp), intent(in) :: t                 !< the sample's time (s)
       real(dp), intent(in) :: v                 !< its value
-
       if (p%samples == 0) then
          p%t(2) = t
          p%v(2) = v
@@ -139,7 +136,6 @@ contains
       real(dp), intent(out) :: t_peak           !< time of the peak (s)
       real(dp), intent(out) :: v_peak           !< the peak
       logical :: concave
-
       t_peak = p%t(2)
       v_peak = p%v(2)
       if (p%before .and. p%after) call parabola_vertex(p%t, p%v, t_peak, v_peak, concave)
@@ -149,7 +145,6 @@ contains
    pure function peak_state(p) result(r)
       type(peak_track_t), intent(in) :: p       !< the samples kept
       real(dp) :: r(peak_state_size)            !< samples, last, times, values, before, after
-
       r = [real(p%samples, dp), p%t_last, p%v_last, p%t, p%v, merge(1.0_dp, 0.0_dp, p%before), &
            merge(1.0_dp, 0.0_dp, p%after)]
    end function peak_state
@@ -158,7 +153,6 @@ contains
    pure function peak_restore(r) result(p)
       real(dp), intent(in) :: r(peak_state_size)   !< peak_state's reals
       type(peak_track_t) :: p                      !< the samples kept
-
       p%samples = nint(r(1))
       p%t_last = r(2)
       p%v_last = r(3)

@@ -354,7 +354,6 @@ contains
       integer(hid_t) :: sid, aid
       integer :: err
       logical :: there
-
       call h5aexists_by_name_f(loc, obj, name, there, err)
       call h5io_check(err, 'cannot look for the attribute', h5io_attr_path(obj, name), stat, errmsg)
       if (stat /= 0) return
@@ -530,7 +529,6 @@ contains
       integer(hsize_t) :: dims(size(maxdims))
       integer(hid_t) :: sid, plist
       integer :: err
-
       did = -1
       dims = merge(0_hsize_t, maxdims, maxdims == H5S_UNLIMITED_F)
       call h5screate_simple_f(size(dims), dims, sid, err, maxdims)
@@ -716,7 +714,6 @@ contains
       integer(hsize_t) :: dims(rank), maxdims(rank), start(rank), count(rank)
       integer(hid_t) :: fspace, mspace
       integer :: err
-
       call h5dget_space_f(did, fspace, err)
       if (err == 0) call h5sget_simple_extent_dims_f(fspace, dims, maxdims, err)
       if (err == rank) err = 0
@@ -756,7 +753,6 @@ contains
       character(len=*), intent(inout) :: errmsg
       integer(hid_t) :: vspace, sspace, plist, did
       integer :: err
-
       call h5screate_simple_f(1, [int(nrow, hsize_t)], vspace, err)
       call h5io_check(err, 'cannot make the dataspace of the view', name, stat, errmsg)
       if (stat /= 0) return

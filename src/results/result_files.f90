@@ -164,7 +164,6 @@ contains
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=:), allocatable :: head, why
       character(len=msg_len) :: iomsg
-
       head = deck%source // ": &output: prefix = '" // short_path(deck%prefix) // "': "
       stat = 1
       why = prefix_problem(deck%prefix)

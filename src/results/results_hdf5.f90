@@ -155,7 +155,6 @@ contains
       character(len=msg_len) :: why
       integer(c_int) :: gone
       integer :: ios
-
       stat = 0
       call system_clock(rf%flushed_at, rf%clock_rate)   ! (results_tick: restart points without HDF5 too)
       if (.not. deck%hdf5) return
@@ -207,7 +206,6 @@ contains
       real(dp), allocatable :: time(:), force(:)
       integer, allocatable :: step(:)
       integer :: c, k
-
       stat = 0
       call system_clock(rf%flushed_at, rf%clock_rate)
       if (.not. deck%hdf5) return
@@ -247,9 +245,7 @@ contains
       end if
       rf%rows_written = pt%rows;  rf%snaps_written = pt%snaps
       rf%active = .true.
-
    contains
-
       !> The series `name` opened (did) and cut to n entries.
       subroutine cut(did, name, n)
          integer(hid_t), intent(inout) :: did
@@ -259,7 +255,6 @@ contains
          if (stat == 0) call h5io_cut_series(did, n, stat, why)
          if (stat /= 0 .and. index(why, "'") == 0) why = trim(why) // " '" // name // "'"
       end subroutine cut
-
    end subroutine results_reopen
 
    !> Appends one history row (SI units, in the order of history_columns)
@@ -290,7 +285,6 @@ contains
       logical, intent(in) :: snapshot               !< append it to /fields
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
-
       stat = 0
       if (.not. rf%active) return
       if (snapshot) then
@@ -347,7 +341,6 @@ contains
       character(len=msg_len) :: why
       character(len=:), allocatable :: part
       integer :: batch
-
       stat = 0
       if (.not. rf%active .or. rf%broken) return
       call system_clock(rf%flushed_at)
@@ -470,9 +463,7 @@ contains
          stat = ios
          why = text
       end if
-
    contains
-
       subroutine close_one(did)
          integer(hid_t), intent(inout) :: did
          if (did < 0) return
@@ -483,7 +474,6 @@ contains
             why = text
          end if
       end subroutine close_one
-
    end subroutine close_window
 
    !> Another of the run's writes failed (the history: a full disk, the
@@ -520,7 +510,6 @@ contains
       character(len=*), intent(inout) :: errmsg     !< reason on failure (the first)
       character(len=msg_len) :: why
       integer :: k, ios
-
       stat = 0
       call results_closing(rf)
       if (rf%broken) then
@@ -560,14 +549,11 @@ contains
          errmsg = rf%xdmf%path//': '//trim(why)
       end if
       rf%active = .false.
-
    contains
-
       subroutine put_string(name, value)
          character(len=*), intent(in) :: name, value
          if (stat == 0) call h5io_set_attr(rf%fid, 'summary', name, trim(value), stat, why)
       end subroutine put_string
-
    end subroutine results_finish
 
    !> The root's attributes: what wrote the file, and when.
@@ -577,7 +563,6 @@ contains
       character(len=*), intent(inout) :: why        !< reason on failure
       character(len=8) :: date
       character(len=10) :: clock
-
       call date_and_time(date=date, time=clock)
       call attr_text(fid, '.', 'title', 'impact: low-velocity impact of a composite laminate (Choi, Hong & Lee 1991)', &
          stat, why)
@@ -595,7 +580,6 @@ contains
       character(len=*), intent(inout) :: why        !< reason on failure
       type(column_t) :: col
       integer :: c
-
       if (stat /= 0) return
       call h5io_group(rf%fid, 'history', stat, why)
       call attr_int(rf%fid, 'history', 'every', every, 'steps', stat, why)
@@ -620,7 +604,6 @@ contains
       integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
       character(len=*), intent(inout) :: why        !< reason on failure
       integer :: k
-
       if (stat /= 0) return
       call h5io_group(rf%fid, 'fields', stat, why)
       call attr_int(rf%fid, 'fields', 'fields_every', fields_every, 'steps', stat, why)
@@ -649,7 +632,6 @@ contains
       integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
       character(len=*), intent(inout) :: why        !< reason on failure
       integer :: k, n
-
       if (stat /= 0) return
       call h5io_group(fid, 'peak', stat, why)
       call attr_int(fid, 'peak', 'step', 0, '-', stat, why)
@@ -734,7 +716,6 @@ contains
       type(deck_t) :: copy
       type(value_t) :: v
       integer :: u, ios, ig, iv
-
       stat = 0
       call h5io_group(fid, 'deck', stat, errmsg)
       ! -- the echo of the deck, as the terminal and the column files show it
@@ -780,14 +761,11 @@ contains
          end select
          call put_text(grp, name//'_units', trim(deck_vars(iv)%unit))
       end do variables
-
    contains
-
       subroutine put_text(obj, name, value)
          character(len=*), intent(in) :: obj, name, value
          if (stat == 0) call h5io_set_attr(fid, obj, name, value, stat, errmsg)
       end subroutine put_text
-
    end subroutine write_deck
 
    !> /mesh: coordinates, connectivity, freedom map, grid and sizes.
@@ -800,7 +778,6 @@ contains
       integer, intent(out) :: stat
       !> Reason on failure.
       character(len=*), intent(inout) :: errmsg
-
       stat = 0
       call h5io_group(fid, 'mesh', stat, errmsg)
       call put_text('domain', msh%domain)
@@ -827,28 +804,23 @@ contains
       if (stat == 0) call h5io_set_attr(fid, 'mesh/freedom_map', 'units', '-', stat, errmsg)
       if (stat == 0) call h5io_write(fid, 'mesh/grid', msh%grid, stat, errmsg)
       if (stat == 0) call h5io_set_attr(fid, 'mesh/grid', 'units', '-', stat, errmsg)
-
    contains
-
       subroutine put_text(name, value)
          character(len=*), intent(in) :: name, value
          if (stat == 0) call h5io_set_attr(fid, 'mesh', name, trim(value), stat, errmsg)
       end subroutine put_text
-
       subroutine put_count(name, value)
          character(len=*), intent(in) :: name
          integer, intent(in) :: value
          if (stat == 0) call h5io_set_attr(fid, 'mesh', name, value, stat, errmsg)
          call put_text(name//'_units', '-')
       end subroutine put_count
-
       subroutine put_length(name, value)
          character(len=*), intent(in) :: name
          real(dp), intent(in) :: value
          if (stat == 0) call h5io_set_attr(fid, 'mesh', name, value, stat, errmsg)
          call put_text(name//'_units', 'm')
       end subroutine put_length
-
    end subroutine write_mesh
 
 end module results_hdf5

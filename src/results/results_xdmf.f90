@@ -98,7 +98,6 @@ contains
       real(dp), allocatable, intent(out) :: xy(:,:) !< (2, nnode) the points shown (m)
       integer, allocatable, intent(out) :: cells(:,:)   !< (nen, nelem) the cells shown, from 1
       integer :: slash
-
       x%path = deck%prefix // '.xdmf'
       x%views_path = deck%prefix // '.xdmf.h5'
       slash = index(deck%prefix, '/', back=.true.)
@@ -131,7 +130,6 @@ contains
       integer, allocatable :: cells(:,:)
       integer(hid_t) :: did
       integer :: k, n
-
       stat = 0
       if (deck%xdmf == 'none') return
       call setup(x, deck, msh, xy, cells)
@@ -188,7 +186,6 @@ contains
       integer, allocatable :: cells(:,:)
       integer(hid_t) :: did
       integer :: k, ios
-
       stat = 0
       if (deck%xdmf == 'none') return
       call setup(x, deck, msh, xy, cells)
@@ -376,7 +373,6 @@ contains
       character(len=msg_len) :: iomsg
       character(len=:), allocatable :: tmp, h5, views, mesh_points, peak
       integer :: u, k, s
-
       h5 = xml_escaped(x%h5_name) // ':/'
       views = xml_escaped(x%views_name) // ':/'
       mesh_points = 'mesh/coordinates'
@@ -434,16 +430,13 @@ contains
       call rename_file(tmp, x%path, stat, errmsg)
       if (stat /= 0) return
       call system_clock(x%written_at)
-
    contains
-
       subroutine attribute(name, path)
          character(len=*), intent(in) :: name, path
          write (u, '(a)') '        <Attribute Name="' // name // '" AttributeType="Scalar" Center="Node">'
          write (u, '(a)') '          ' // data_item('Float', 8, int_str(x%nnode), path)
          write (u, '(a)') '        </Attribute>'
       end subroutine attribute
-
    end subroutine write_xml
 
    !> An HDF DataItem: type 'Int' or 'Float', bytes per value, dimensions
@@ -470,7 +463,6 @@ contains
       real(dp), allocatable, intent(out) :: parity(:,:)
       integer :: ilo, jlo, ihi, jhi, ni, i, j, n, e, k, ib, jb
       real(dp) :: sx, sy
-
       ihi = 2*msh%nx;  jhi = 2*msh%ny
       ilo = merge(-ihi, 0, msh%sym_x)
       jlo = merge(-jhi, 0, msh%sym_y)
@@ -498,15 +490,12 @@ contains
             end do
          end do elements_i
       end do elements_j
-
    contains
-
       !> The number of grid point (i, j) of the whole plate, i fastest.
       pure integer function point(i, j)
          integer, intent(in) :: i, j
          point = (j - jlo)*ni + (i - ilo) + 1
       end function point
-
    end subroutine whole_plate
 
    ! ============================================================== helpers

@@ -77,7 +77,6 @@ contains
       real(dp), allocatable :: xyz(:,:), v(:), face_values(:,:,:)
       integer, allocatable :: cells(:,:), iv(:)
       integer :: nply, npoint, ncell, c, k
-
       associate (angle => maps%angle, fi_max => maps%fi_max, mode_max => maps%mode_max, onset => maps%onset, &
                  sigma => maps%sigma, fi => maps%fi, delam => maps%delam)
       nply = size(angle)
@@ -91,7 +90,6 @@ contains
       if (stat == 0) call h5io_write(fid, group // '/points', xyz, stat, errmsg)
       if (stat == 0) call h5io_write(fid, group // '/cells', cells, stat, errmsg)
       deallocate (xyz, cells)
-
       ! -- where each cell is
       iv = reshape(spread(spread([(k, k = 1, nply)], 1, 2), 3, npoint), [ncell])
       if (stat == 0) call h5io_write(fid, group // '/ply', iv, stat, errmsg)
@@ -128,14 +126,11 @@ contains
       p%npts = nen_lattice*msh%nelem*(2*nply + 1)
       p%modes = maps%modes
       end associate
-
    contains
-
       subroutine put_real(j)
          integer, intent(in) :: j
          if (stat == 0) call h5io_write(fid, group // '/' // trim(real_sets(j)), v, stat, errmsg)
       end subroutine put_real
-
    end subroutine plies_write
 
    !> The grid, the laminate: one hexahedron per Gauss point, ply and ply face.
@@ -162,7 +157,6 @@ contains
       integer, allocatable, intent(out) :: cells(:,:)
       real(dp) :: xe(2, nen), xy(2), zl(0:2*(size(z) - 1))
       integer :: nply, nl, e, a, b, l, i, j, k, f, c, lo, n0, quad(4)
-
       nply = size(z) - 1
       nl = 2*nply + 1
       ! -- the levels from the impacted face, z turned over (above laminate_grid)
@@ -199,15 +193,12 @@ contains
             end do points_i
          end do points_j
       end do elements
-
    contains
-
       !> Point (from 0, in the element) of lattice corner (a, b) at level l.
       pure integer function lattice_point(a, b, l)
          integer, intent(in) :: a, b, l
          lattice_point = (4*b + a)*nl + l
       end function lattice_point
-
    end subroutine laminate_grid
 
    !> In the XML (plies_collection, called by src/results/results_xdmf.f90 when
@@ -229,7 +220,6 @@ contains
       character(len=*), intent(in) :: times(:)      !< the times (s), as text
       character(len=:), allocatable :: cells
       integer :: s, j
-
       if (.not. p%active) return
       cells = int_str(p%ncell)
       write (u, '(a)') '    <Grid Name="plies" GridType="Collection" CollectionType="Temporal">'
@@ -252,16 +242,13 @@ contains
          write (u, '(a)') '      </Grid>'
       end do steps
       write (u, '(a)') '    </Grid>'
-
    contains
-
       subroutine attribute(name, number_type, dataset)
          character(len=*), intent(in) :: name, number_type, dataset
          write (u, '(a)') '        <Attribute Name="' // name // '" AttributeType="Scalar" Center="Cell">'
          write (u, '(a)') '          ' // data_item(number_type, cells, h5 // group // '/' // dataset)
          write (u, '(a)') '        </Attribute>'
       end subroutine attribute
-
    end subroutine plies_collection
 
    !> An HDF DataItem of 4-byte integers or 8-byte reals.
