@@ -20,7 +20,7 @@ module run_recorder
    use newmark, only: newmark_t, impactor_t, impactor_compliance
    use scene_model, only: theory_warning, bending_deflection
    use result_files, only: column_t, history_columns, nhist, summary_item_t, summary_real, summary_integer, &
-      summary_text, open_history, write_history_row, reserve_summary, write_summary_file, col_time, col_force, &
+      summary_text, keep_failure, open_history, write_history_row, reserve_summary, write_summary_file, col_time, col_force, &
       col_alpha, col_w_plate, col_w_impactor, col_v_impactor, col_strain_y, col_ke_impactor, col_ke_plate, &
       col_strain_energy, col_contact_work, col_contact_energy, col_energy_error, col_branch, col_contact_iter, &
       col_solves, nhist_strength, history_width, col_failure_index, col_failure_mode
@@ -485,10 +485,7 @@ contains
       call progress_end(rec%progress)           ! the terminal's progress line cleared first
       write (error_unit, '(a,i0,a,es11.4,a)') 'impact: warning: step ', fig%step, ' (t = ', fig%t, ' s): ' // message
       call results_flush(rec%h5, ios, why)      ! the results up to the warning, on disk
-      if (ios /= 0 .and. stat == 0) then
-         stat = ios
-         errmsg = why
-      end if
+      call keep_failure(stat, errmsg, ios, why)
       if (rec%stop_on_warning) call stop_here(rec, fig, 'stopped at step ' // int_str(fig%step) // ' by the ' &
          // 'warning (&analysis stop_on_warning = .true.)', '')
    end subroutine warn
@@ -540,15 +537,9 @@ contains
       call close_probe(rec%hist_probe)
       if (.not. allocated(rec%hist_path)) rec%hist_path = deck%prefix // '_history.dat'
       call write_summary_file(deck, s, stat, errmsg)
-      if (dstat /= 0 .and. stat == 0) then
-         stat = dstat
-         errmsg = dtext
-      end if
+      call keep_failure(stat, errmsg, dstat, dtext)
       call results_finish(rec%h5, rec%stop_status, s, ios, text)
-      if (ios /= 0 .and. stat == 0) then
-         stat = ios
-         errmsg = text
-      end if
+      call keep_failure(stat, errmsg, ios, text)
       call last_words(rec, deck, cpu_s, output_unit)
    end subroutine record_close
 

@@ -26,7 +26,8 @@ module result_files
              col_energy_error, col_branch, col_contact_iter, col_solves, col_failure_index, col_failure_mode
    public :: summary_item_t, summary_real, summary_integer, summary_text
    public :: results_claim_t, result_suffixes, claim_results, release_results, claim_left_empty
-   public :: open_columns, open_history, write_column_block, write_history_row, history_slot, reserve_summary, write_summary_file
+   public :: keep_failure, open_columns, open_history, write_column_block, write_history_row, reserve_summary, &
+             write_summary_file
 
    !> One column of the history.
    type :: column_t
@@ -289,6 +290,17 @@ contains
    end subroutine release_results
 
    ! ======================================================== column files
+
+   !> The first failure kept: stat and errmsg take ios and text when stat is 0.
+   pure subroutine keep_failure(stat, errmsg, ios, text)
+      integer, intent(inout) :: stat              !< 0, or the first failure
+      character(len=*), intent(inout) :: errmsg   !< its reason
+      integer, intent(in) :: ios                  !< the status of the call just made
+      character(len=*), intent(in) :: text        !< its reason
+      if (ios == 0 .or. stat /= 0) return
+      stat = ios
+      errmsg = text
+   end subroutine keep_failure
 
    !> Opens <prefix><suffix> (claimed before) and writes its header: title,
    !> deck echo, the columns with their meanings, the names.

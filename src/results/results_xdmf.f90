@@ -20,8 +20,9 @@ module results_xdmf
    use deck_schema, only: deck_t
    use mesh, only: mesh_t, ndof_node, freedom_name
    use shape_functions, only: nen
-   use hdf5_io, only: h5io_create, h5io_close, h5io_group, h5io_write, h5io_rewrite, h5io_view_column, h5io_flush, &
-      h5io_set_attr, h5io_create_columns, h5io_open_dataset, h5io_append_block, h5io_cut_series, h5io_close_dataset
+   use hdf5_io, only: h5io_create, h5io_close, h5io_group, h5io_write, h5io_rewrite, h5io_flush, h5io_set_attr
+   use hdf5_series, only: h5io_view_column, h5io_create_columns, h5io_open_dataset, h5io_append_block, &
+      h5io_cut_series, h5io_close_dataset
    use file_system, only: rename_file
    use xdmf_plies, only: xdmf_plies_t, plies_collection
    implicit none
