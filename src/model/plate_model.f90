@@ -14,7 +14,7 @@ module plate_model
    use materials, only: laminate_t, laminate_drop_bend_twist
    use scene_model, only: scene_t, model_laminate, choose_domain, point_stiffness, energy_balance, &
       choose_theory, impact_element_size, choose_storage
-   use mesh, only: mesh_t, build_mesh, apply_boundary, nfe, ndof_node, locate_point
+   use mesh, only: mesh_t, mesh_layout_t, build_mesh, apply_boundary, nfe, ndof_node, locate_point
    use shape_functions, only: nen
    use shear_strain, only: shear_rule_t, shear_rule_code, shear_stabilized
    use contact_load, only: contact_load_t, contact_load_init, load_point, load_hertz
@@ -94,8 +94,8 @@ contains
       ! -- mesh, boundary conditions, equation numbers (Fig. 4)
       settled = deck                   ! nx, ny of a deck made in code that gives none: from the scene
       call choose_settings(settled)
-      call build_mesh(deck%a, deck%b, settled%nx, settled%ny, model%scene%domain, model%msh, stat, errmsg, &
-                      x0=deck%x0, y0=deck%y0, grading=deck%grading, quarter_counts=deck%domain == 'auto')
+      call build_mesh(deck%a, deck%b, settled%nx, settled%ny, mesh_layout_t(trim(model%scene%domain), deck%x0, &
+                      deck%y0, deck%grading, deck%domain == 'auto'), model%msh, stat, errmsg)
       if (stat /= 0) return
       call apply_boundary(model%msh, deck%edges, deck%inplane, stat, errmsg)
       if (stat /= 0) return

@@ -1,13 +1,10 @@
 !> Restart points: `impact --restart deck.nml` continues the run recorded
 !> at the deck's prefix from its last restart point, appending to the same
-!> files, and ends as the run would have ended had it never stopped: the
-!> same history rows, bit for bit, and the same summary. A restart of a run
-!> that completed writes nothing and exits 0 (src/impact.f90).
-!> A restart point, <prefix>.restart, holds everything the time loop
-!> carries from one step to the next (the deck, the state, the solver, the
-!> record, the results' lengths), written when the files are flushed;
-!> what, when and how it is made safe: above restart_save. Not from the
-!> paper. More: docs/ROBUSTNESS.md.
+!> files, and ends as the run would have ended had it never stopped (the
+!> same history rows, bit for bit, the same summary); a completed run's
+!> restart writes nothing. What a restart point holds, when it is written
+!> and how it is made safe: above restart_save. Not from the paper. More:
+!> docs/ROBUSTNESS.md.
 module restart_point
    use, intrinsic :: iso_fortran_env, only: int64, output_unit
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char
@@ -54,9 +51,8 @@ contains
    end function restart_file
 
    !> Claims the run's result files before any work (claim_results): a
-   !> restart continues the run's own files, or the claim a run killed in its
-   !> set-up left; a stop in the set-up leaves the first file only if it was
-   !> written; a run that starts afresh discards an earlier run's restart point.
+   !> restart continues the run's own files (or a claim a killed set-up left);
+   !> a run that starts afresh discards an earlier run's restart point.
    subroutine claim_run_files(deck, restart_asked, restarting, claim, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       logical, intent(in) :: restart_asked          !< --restart was given
@@ -77,8 +73,7 @@ contains
       if (.not. restarting) call restart_discard(deck)
    end subroutine claim_run_files
 
-   !> A run that starts afresh removes an earlier run's restart point, which
-   !> its files no longer match.
+   !> Removes an earlier run's restart point, which the files no longer match.
    subroutine restart_discard(deck)
       type(deck_t), intent(in) :: deck              !< the effective deck
       integer(c_int) :: r
@@ -86,50 +81,21 @@ contains
       r = c_unlink(restart_file(deck) // '.tmp' // c_null_char)
    end subroutine restart_discard
 
-   !> A restart point is <prefix>.restart, written when the files are flushed
-   !> (once a second at the end of a step, src/results/results_hdf5.f90's
-   !> results_tick), at the first step (step 0, so that a run that has
-   !> written anything has one) and at the end of a run that completed or was
-   !> stopped by a signal (src/impact.f90). It holds everything the time loop
-   !> carries from one step to the next:
-   !>
-   !>   the deck        every variable as text (the fewest digits that read
-   !>                   back to the same double), to refuse a restart with
-   !>                   another deck: only &analysis t_end may change (and
-   !>                   &output overwrite, which a restart sets)
-   !>   the state       the step, the cpu time so far, the plate's {D}, {V},
-   !>                   {A}, the impactor, the contact's history (alpha_m, F_m,
-   !>                   alpha_0), the contact pattern with the polynomials it
-   !>                   keeps (src/model/contact_load.f90)
-   !>   the solver      its counters, the contraction estimates of scheme
-   !>                   'fast' (src/scheme/fast_scheme.f90: without them the
-   !>                   restarted run would probe at other steps and differ)
-   !>                   and the equations of its response columns, which a
-   !>                   restart computes again (the same back substitutions of
-   !>                   the same factors: the same bits)
-   !>   the record      the summary's running figures and maxima, the
-   !>                   energies, the warnings given, the history file's
-   !>                   length, the damage maps (src/record/run_recorder.f90,
-   !>                   record_save_state)
-   !>   the results     the rows and snapshots <prefix>.h5 holds, and its peak
-   !>
-   !> It is written whole to <prefix>.restart.tmp, forced to the disk
-   !> (fsync) and renamed over <prefix>.restart, then the directory is forced
-   !> too: the file is the previous restart point or the new one, never a
-   !> part. A restart cuts the history file back to its length at the restart
-   !> point and <prefix>.h5 to its rows and snapshots (a run killed after its
-   !> last restart point wrote more), and makes the XDMF views anew.
-   !>
-   !> The file is a stream of tagged parts (src/results/restart_io.f90) in the
-   !> machine's own layout: a restart continues a run on the machine and with
-   !> the build that made it (a restart point of another layout is refused).
-   !> Its last 8 bytes are the CRC-32 of all before them (restart_io's seal):
-   !> a restart point with a bit changed anywhere is refused whole, before
-   !> anything is read from it. The temporary name is removed first and the
-   !> file created exclusively: no write goes through a link put there.
-   !>
-   !> Writes the restart point after step `step` (as above): the files
-   !> hold every step to it (they were just flushed).
+   !> <prefix>.restart is written when the files are flushed (once a second,
+   !> results_tick), at step 0 and at the end of a run that completed or was
+   !> stopped by a signal. It holds what the time loop carries from step to
+   !> step: the deck (every variable as text, to refuse another deck: only
+   !> &analysis t_end may change), the state (step, cpu time, {D}, {V}, {A},
+   !> impactor, contact history and pattern), the solver (its counters, the
+   !> contraction estimates of scheme 'fast', the equations of its response
+   !> columns, computed again: the same bits), the record (put_record) and
+   !> what <prefix>.h5 holds. It is written whole to <prefix>.restart.tmp
+   !> (created exclusively), forced to the disk and renamed over the old one,
+   !> then the directory is forced: the file is the old restart point or the
+   !> new one. A stream of tagged parts in the machine's layout
+   !> (src/results/restart_io.f90), sealed by its CRC-32: a bit changed
+   !> anywhere refuses it whole. A restart cuts the history and <prefix>.h5
+   !> back to the restart point and makes the XDMF views anew.
    subroutine restart_save(deck, cpu_s, st, solver, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       real(dp), intent(in) :: cpu_s                 !< cpu time of the run so far (s)
@@ -175,10 +141,8 @@ contains
       if (stat /= 0) errmsg = path // ': cannot write the restart point'
    end subroutine restart_save
 
-   !> A restart's first look at the run's restart point: whether there is
-   !> one, and that it was written with this deck (above restart_save) by this
-   !> layout, and its step (the run's last step: the run completed); stat
-   !> /= 0 with the differences named otherwise.
+   !> A restart's first look at the run's restart point: there is one, of
+   !> this deck and layout, and its step (at nstep: the run is complete).
    subroutine restart_check(deck, nstep, found, step, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       integer, intent(in) :: nstep                  !< the run's last step (t_end/dt)
@@ -285,8 +249,7 @@ contains
 
    ! ============================================================== parts
 
-   !> Opens a restart point for reading and checks its checksum, tag and
-   !> layout.
+   !> Opens a restart point for reading; checks its checksum, tag and layout.
    subroutine open_point(path, u, stat, errmsg)
       character(len=*), intent(in) :: path          !< <prefix>.restart
       integer, intent(out) :: u                     !< the open stream, at the deck's part
@@ -330,8 +293,7 @@ contains
       end do
    end subroutine put_deck
 
-   !> Reads the deck's part and names the variables whose values differ
-   !> from `deck`'s, but for free_vars ('' when none).
+   !> Reads the deck's part and names what differs from `deck` but free_vars.
    subroutine compare_deck(u, deck, changed, stat)
       integer, intent(in) :: u                      !< the restart file, at the deck's part
       type(deck_t), intent(in) :: deck              !< the effective deck

@@ -1,14 +1,10 @@
-!> Thin checked wrappers over HDF5-Fortran for the results files
-!> (src/results/results_hdf5.f90, src/results/results_xdmf.f90) and the
-!> tools that read them (tools/h5export.f90).
-!> Every routine returns `stat` (0 on success) and, on failure, `errmsg`
-!> naming the operation and the object; the library's own error printing
-!> is off (h5io_start). `loc` is the file or group a path starts from,
-!> `name` a path relative to it, `did` an open dataset. What is written and
-!> how a reader sees it: above h5io_start; files, SWMR and locks: above
-!> h5io_create. Nothing is cached here: the caller holds the ids. This is
-!> the write half (its series: src/results/hdf5_series.f90); tools/hdf5_read.f90
-!> is the read half. Not from the paper. More: docs/OUTPUT.md.
+!> Thin checked wrappers over HDF5-Fortran for the results files: files,
+!> groups, attributes, whole datasets (the growing ones: hdf5_series.f90).
+!> Every routine returns `stat` (0 on success) and an `errmsg` naming the
+!> operation and the object; `loc` is the file or group a path starts
+!> from, `name` a path relative to it. What is written: above h5io_start;
+!> files, SWMR, locks: above h5io_create. tools/hdf5_read.f90 is the read
+!> half. Not from the paper. More: docs/OUTPUT.md.
 module hdf5_io
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char, c_bool, c_int, c_int64_t
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, h5fclose_f, &
@@ -53,25 +49,12 @@ contains
 
    ! ------------------------------------------------------------ files, groups
 
-   !> What is written, and how a reader sees it:
-   !>  - attributes are scalars (dataspace SCALAR: h5py gives a number or a
-   !>    str, not a one-element array), or 1-D arrays (h5io_set_attr with an
-   !>    array); strings are variable-length UTF-8 (h5py gives str);
-   !>  - every dataset is chunked and checksummed (HDF5's Fletcher32 filter):
-   !>    raw data damaged on disk is reported when it is read ("checksum
-   !>    failure"), not handed out; the metadata of the latest file format
-   !>    (h5io_create with latest) carries its own checksums;
-   !>  - fixed datasets are written whole, one chunk each;
-   !>  - series are extendible chunked datasets that grow by a block of
-   !>    entries per h5io_append_block: rank 1
-   !>    (n) for a history column, rank 2 (nrow, n) in
-   !>    Fortran order, i.e. (n, nrow) in C order, h5py and h5dump, for a field
-   !>    of nrow nodes per snapshot.
-   !> Arrays keep Fortran order on disk: a Fortran x(m, n) reads as x[n, m] in
-   !> h5py and h5dump (C order).
-   !>
-   !> Opens the HDF5 library (its predefined types) and switches off its own
-   !> error printing. Safe to call more than once.
+   !> What is written: attributes are scalars (h5py gives a number or a str)
+   !> or 1-D arrays, strings variable-length UTF-8; every dataset is chunked
+   !> and checksummed (Fletcher32: damaged data is reported, not handed out),
+   !> fixed ones written whole, series grown by blocks; arrays keep Fortran
+   !> order (x(m, n) reads as x[n, m] in h5py and h5dump).
+   !> Opens the HDF5 library and switches off its error printing.
    subroutine h5io_start(stat, errmsg)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
@@ -81,24 +64,13 @@ contains
       call h5io_check(err, 'cannot initialise the HDF5 library', '', stat, errmsg)
    end subroutine h5io_start
 
-   !> Files. h5io_create makes a file (the latest file format when asked: what
-   !> HDF5's single-writer/multiple-reader mode, SWMR, needs); h5io_open opens
-   !> it again for writing, with `swmr` in SWMR mode: then only existing
-   !> datasets and attributes may change (datasets grow, values are
-   !> rewritten; no object or attribute is created), and HDF5 writes its
-   !> metadata in an order that keeps the file consistent on disk at every
-   !> instant, whatever kills the process (src/results/results_hdf5.f90).
-   !> Neither takes HDF5's own file lock (a reader holding the file must not
-   !> make the run fail; runs are kept apart by their claim,
-   !> src/results/result_files.f90), and h5io_open clears the marks a killed
-   !> writer leaves in the superblock (what `h5clear -s` does).
-   !>
-   !> Creates the file `path` anew for writing; fid is its id. What has the
-   !> name is removed first (a link itself, never what it points to) and
-   !> the file created exclusively (O_EXCL): nothing is written through a
-   !> link, even one put there in between.
-   !> With `latest`, in the latest file format (HDF5 1.10's: what SWMR needs,
-   !> with checksummed metadata; older HDF5 libraries do not read it).
+   !> Files: h5io_create makes one (with `latest` in HDF5 1.10's format, what
+   !> SWMR needs, checksummed metadata), removing what had the name first and
+   !> creating it exclusively (no write through a link); h5io_open opens it
+   !> again, with `swmr` in SWMR mode (only existing objects change, the file
+   !> consistent on disk at every instant). Neither takes HDF5's file lock
+   !> (runs are kept apart by their claim, result_files.f90); h5io_open clears
+   !> the marks a killed writer left (what `h5clear -s` does).
    subroutine h5io_create(path, latest, fid, stat, errmsg)
       character(len=*), intent(in) :: path
       logical, intent(in) :: latest
@@ -117,9 +89,7 @@ contains
       call h5pclose_f(fapl, err)
    end subroutine h5io_create
 
-   !> Opens the existing file `path` (made by h5io_create with latest) for
-   !> writing; with `swmr` in SWMR mode (as above). The marks a killed
-   !> writer left in its superblock are cleared.
+   !> Opens the existing file `path` for writing, with `swmr` in SWMR mode.
    subroutine h5io_open(path, swmr, fid, stat, errmsg)
       character(len=*), intent(in) :: path
       logical, intent(in) :: swmr
@@ -138,14 +108,10 @@ contains
       call h5pclose_f(fapl, err)
    end subroutine h5io_open
 
-   !> The file access of the results files: no HDF5 file lock (module
-   !> header); objects' metadata evicted from HDF5's cache when they are
-   !> closed (H5Pset_evict_on_close, HDF5 >= 1.10.1, no Fortran wrapper in
-   !> 1.10: the views of src/results/results_xdmf.f90, made and closed by the thousand,
-   !> would otherwise fill the cache, which every flush walks); with
-   !> `latest` the latest file format, with `clear` the superblock's marks
-   !> of a killed writer cleared on opening (the library's private property
-   !> "clear_status_flags", h5clear's way, set through H5Pset).
+   !> The results files' access: no file lock; metadata evicted from the
+   !> cache on close (H5Pset_evict_on_close: the XDMF views, made by the
+   !> thousand, would fill it); `latest` format; with `clear` a killed
+   !> writer's marks cleared on opening (the property h5clear sets).
    subroutine file_access(latest, clear, fapl, err)
       logical, intent(in) :: latest, clear
       integer(hid_t), intent(out) :: fapl
@@ -187,8 +153,7 @@ contains
       call h5io_check(err, 'cannot close the HDF5 file', '', stat, errmsg)
    end subroutine h5io_close
 
-   !> Writes everything buffered to the file fid (H5Fflush), so that a run
-   !> killed later leaves a file that opens with all it had written so far.
+   !> Writes everything buffered to the file (H5Fflush): a later kill leaves it whole.
    subroutine h5io_flush(fid, stat, errmsg)
       integer(hid_t), intent(in) :: fid
       integer, intent(out) :: stat

@@ -1,17 +1,11 @@
-!> <prefix>.xdmf beside <prefix>.h5: an XDMF 3 description of the results
-!> file's mesh (9-node quadrilaterals) and nodal fields, one time step per
-!> snapshot, so that ParaView, VisIt and meshio open a run; with &strength
-!> also the plies (src/results/xdmf_plies.f90). The XML holds no numbers of
-!> its own: every array is a dataset of <prefix>.h5 or of <prefix>.xdmf.h5
-!> (a view of each snapshot, no copy; why views, and &output xdmf =
-!> 'whole': above xdmf_t). The XML is rewritten by rename after a batch of
-!> snapshots, at most once per xdmf_rewrite_interval (above xdmf_snapshots).
-!> Usage (src/results/results_hdf5.f90): xdmf_open while <prefix>.h5 is made, then
-!> xdmf_start; for each batch of snapshots appended to /fields, xdmf_grow
-!> in the same writing, then xdmf_snapshots and xdmf_batch_close;
-!> xdmf_peak when /peak is rewritten; xdmf_close at the end. A restart:
-!> xdmf_cut while <prefix>.h5 is cut back, then xdmf_resume.
-!> Not from the paper. More: docs/OUTPUT.md, "Looking at the fields".
+!> <prefix>.xdmf beside <prefix>.h5: an XDMF 3 description of the mesh
+!> (9-node quadrilaterals) and nodal fields, one time step per snapshot, for
+!> ParaView, VisIt and meshio; with &strength the plies (xdmf_plies.f90).
+!> Every array is a dataset of <prefix>.h5 or a view in <prefix>.xdmf.h5
+!> (above xdmf_t). Called by src/results/results_hdf5.f90: xdmf_open,
+!> xdmf_start; per batch of snapshots xdmf_grow, xdmf_snapshots,
+!> xdmf_batch_close; xdmf_peak; xdmf_close; a restart: xdmf_cut,
+!> xdmf_resume. Not from the paper. More: docs/OUTPUT.md.
 module results_xdmf
    use, intrinsic :: iso_fortran_env, only: int64
    use hdf5, only: hid_t
@@ -46,26 +40,13 @@ module results_xdmf
    integer, parameter :: element_di(nen) = [0, 2, 2, 0, 1, 2, 1, 0, 1]
    integer, parameter :: element_dj(nen) = [0, 0, 2, 2, 0, 1, 2, 1, 1]
 
-   !> A view is an object, made when its snapshot is written: <prefix>.h5 is
-   !> written in HDF5's SWMR mode, which makes no object (src/results/results_hdf5.f90),
-   !> hence their file of their own, which names <prefix>.h5 without its
-   !> directory (HDF5 finds it beside itself). Debian 12's ParaView (5.11)
-   !> does not apply the XDMF hyperslabs and functions of an Attribute, and
-   !> meshio reads only whole datasets; a plain dataset per snapshot is what
-   !> every reader takes, hence the views.
-   !>
-   !> &output xdmf = 'whole' mirrors a quarter or half into the whole
-   !> plate (about x = 0 and y = 0, src/model/mesh.f90): u, psi_x change sign across
-   !> x = 0 and v, psi_y across y = 0, which no view can do, so the whole
-   !> plate's fields are written as data, in <prefix>.h5: /xdmf/coordinates
-   !> (nnode_whole, 2), /xdmf/cells, /xdmf/fields/<f> (nsnap, nnode_whole)
-   !> growing with /fields, and /xdmf/peak/<f>, about 4 (quarter) or 2 (half)
-   !> times the modelled fields; the views show rows of /xdmf/fields/<f>.
-   !> Nodes on the symmetry lines are shared, elements keep the
-   !> counter-clockwise order. &output xdmf = 'none' writes neither the XML,
-   !> nor /xdmf, nor the views.
-   !>
-   !> The XDMF file of a results file.
+   !> A view per snapshot (a plain dataset, what every reader takes: ParaView
+   !> 5.11 ignores hyperslabs, meshio reads whole datasets) in a file of its
+   !> own, as <prefix>.h5 is written in SWMR mode, which makes no object.
+   !> &output xdmf = 'whole' mirrors a quarter or half into the whole plate
+   !> (u, psi_x odd across x = 0, v, psi_y across y = 0, which no view can
+   !> do): its fields are data in /xdmf of <prefix>.h5, growing with /fields;
+   !> 'none' writes neither XML, nor /xdmf, nor views.
    type :: xdmf_t
       logical :: active = .false.                   !< <prefix>.xdmf is being written
       logical :: whole = .false.                    !< the mirrored whole plate (else the modelled domain)
@@ -243,20 +224,12 @@ contains
    end subroutine xdmf_grow
 
    !> As the run goes: after a batch of snapshots <prefix>.xdmf.h5 is flushed
-   !> and the XML is written to <prefix>.xdmf.tmp and renamed over
-   !> <prefix>.xdmf (one step: a reader sees the old file or the new one),
-   !> after the first batch and then at most once per xdmf_rewrite_interval of
-   !> wall-clock time (the XML grows with every snapshot; rewriting it each
-   !> time would cost the square of their number), and at the end. A killed
-   !> run's XDMF opens, with the snapshots up to its last rewrite and status
-   !> 'running': the views it names sit in batch groups that later writes
-   !> leave alone. (A kill while HDF5 flushes <prefix>.xdmf.h5 can still
-   !> leave its newest structures half written: a run restarted
-   !> (src/record/restart_point.f90) makes the file anew.)
-   !>
-   !> A batch of snapshots, just written to <prefix>.h5 after its first
-   !> `before`: the group /fields/<b> of <prefix>.xdmf.h5, its groups of the
-   !> fields, and each snapshot's views.
+   !> and the XML rewritten by rename (a reader sees the old or the new file),
+   !> after the first batch, then at most once per xdmf_rewrite_interval (the
+   !> XML grows with every snapshot), and at the end; a killed run's XDMF
+   !> opens, status 'running' (a restart makes <prefix>.xdmf.h5 anew).
+   !> Here: a batch of snapshots after the first `before`, their views in the
+   !> group /fields/<b> of <prefix>.xdmf.h5.
    subroutine xdmf_snapshots(x, before, step, time, force, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file
       integer, intent(in) :: before                 !< snapshots in <prefix>.h5 before the batch

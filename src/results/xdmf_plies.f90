@@ -1,14 +1,11 @@
-!> The ply fields of a run with &strength as a grid of <prefix>.xdmf, so
-!> that ParaView, VisIt and meshio show the damage map and the ply stresses
-!> at the peak force beside the nodal fields (the values of /strength,
-!> src/results/damage_record.f90). The grid is the laminate: one hexahedron
-!> per Gauss point, ply and ply face (above laminate_grid), written into
-!> /xdmf/plies of <prefix>.h5 with one dataset per cell attribute (ply,
-!> face, ply_angle, damage_map, damage_mode, onset_time, the peak stresses
-!> and failure index, delamination_index), and a temporal collection
-!> "plies" before the fields' (above plies_collection). It covers the
-!> modelled domain, also with &output xdmf = 'whole' (a +45 ply mirrors
-!> into a -45 one). Not from the paper. More: docs/OUTPUT.md, "The ply fields".
+!> The ply fields of a run with &strength as a grid of <prefix>.xdmf: the
+!> damage map and the ply stresses at the peak force (/strength,
+!> damage_record.f90) beside the nodal fields in ParaView, VisIt, meshio.
+!> The grid is the laminate, one hexahedron per Gauss point, ply and ply
+!> face (above laminate_grid), in /xdmf/plies of <prefix>.h5 with a dataset
+!> per cell attribute, and a temporal collection "plies" (above
+!> plies_collection); the modelled domain only. Not from the paper. More:
+!> docs/OUTPUT.md, "The ply fields".
 module xdmf_plies
    use hdf5, only: hid_t
    use kinds, only: dp
@@ -60,13 +57,9 @@ module xdmf_plies
 
 contains
 
-   !> Writes /xdmf/plies into the open results file fid (above laminate_grid) and
-   !> makes p active. z(0:nply) the ply interfaces (m, z(0) = -h/2 the
-   !> impacted face), angle the ply angles (deg); the damage map fi_max,
-   !> mode_max, onset (nply, npoint); at the peak force sigma (5, 2, nply,
-   !> npoint) (Pa, s11 s22 t12 t23 t13, material axes) and fi (2, nply,
-   !> npoint); delam (nply - 1, npoint) the interfaces' largest index;
-   !> points in element order, 9 per element (ply_stress's order: xi fastest).
+   !> Writes /xdmf/plies into the open results file fid and makes p active
+   !> (the maps: ply_maps_t; z(0) = -h/2 the impacted face; stresses s11 s22
+   !> t12 t23 t13 in material axes; points 9 per element, xi fastest).
    subroutine plies_write(p, fid, msh, maps, stat, errmsg)
       type(xdmf_plies_t), intent(out) :: p          !< the grid, active on success
       integer(hid_t), intent(in) :: fid             !< the open results file
@@ -133,23 +126,13 @@ contains
       end subroutine put_real
    end subroutine plies_write
 
-   !> The grid, the laminate: one hexahedron per Gauss point, ply and ply face.
-   !> In the plane, the cell of a 3 x 3 Gauss point is the part of its element
-   !> that the point's weight stands for: xi, eta cut at -1, -4/9, 4/9, 1 (the
-   !> weights 5/9, 8/9, 5/9), mapped by the element's shape functions, so the
-   !> cells tile the modelled domain and each holds its point. Through the
-   !> thickness, ply k is cut at its middle: the lower half holds the values of
-   !> its face towards the impacted face (face 2k-1 of /strength/peak), the
-   !> upper half those of the other face (2k). z is the plate's thickness
-   !> coordinate turned over (z_view = -z, m): the nodal grid's w points the way
-   !> the impactor moves, towards -z in ParaView (Warp By Scalar, normal 0 0 -1),
-   !> so the impacted face, ply 1, is on top at z = +h/2.
-   !>
-   !> The laminate's points xyz (3, npts) (m) and hexahedra cells (8, ncell)
-   !> numbered from 0 (as above): per element a 4 x 4 lattice of the
-   !> cut lines (plies_cut) at 2 nply + 1 levels (the ply interfaces and
-   !> middles, from the impacted face); per Gauss point, ply and face a
-   !> hexahedron, its lower face first, counter-clockwise seen from above.
+   !> The laminate grid: in the plane, the cell of a 3 x 3 Gauss point is the
+   !> part of its element its weight stands for (xi, eta cut at -1, -4/9, 4/9,
+   !> 1), mapped by the shape functions; through the thickness ply k is cut at
+   !> its middle, the lower half its face towards the impacted face (2k-1),
+   !> the upper the other (2k); z turned over (z_view = -z) so the impacted
+   !> face is on top. Points xyz (3, npts) (m), hexahedra cells (8, ncell)
+   !> numbered from 0, lower face first, counter-clockwise from above.
    subroutine laminate_grid(msh, z, xyz, cells)
       type(mesh_t), intent(in) :: msh
       real(dp), intent(in) :: z(0:)
@@ -201,18 +184,10 @@ contains
       end function lattice_point
    end subroutine laminate_grid
 
-   !> In the XML (plies_collection, called by src/results/results_xdmf.f90 when
-   !> it writes the file), a temporal collection "plies" before the nodal
-   !> fields' "fields", with the same times: the values do not change with
-   !> time, but ParaView's XDMF 3 readers read the top-level temporal
-   !> collections only, and meshio's time-series reader takes the last
-   !> collection of the file, which stays "fields". ParaView shows two blocks,
-   !> the laminate (first) and the plate.
-   !>
-   !> The temporal collection "plies" of the XML on unit u: at each of the
-   !> times (the nodal fields' snapshot times, as the XML gives them), the
-   !> laminate with its cell attributes (as above). h5 is the results
-   !> file as the XML names it, with ':/' appended.
+   !> The temporal collection "plies" of the XML on unit u, before the nodal
+   !> fields' (ParaView reads top-level temporal collections only; meshio the
+   !> last, "fields"): at each time, the laminate with its cell attributes;
+   !> h5 is the results file as the XML names it, with ':/' appended.
    subroutine plies_collection(p, u, h5, times)
       type(xdmf_plies_t), intent(in) :: p           !< the grid (active)
       integer, intent(in) :: u                      !< the XML file
