@@ -34,8 +34,7 @@ module run_recorder
    private
    public :: record_t, record_settings, record_open, record_step, record_close, nwarn
 
-   !> Deflection over thickness beyond which von Karman's theory of moderately
-   !> large deflections is no longer trusted (a warning, not an error).
+   !> w/h beyond which von Karman's moderately large deflections are not trusted (a warning).
    real(dp), parameter :: von_karman_limit = 5.0_dp
 
    !> Kinds of warning, each given once (later ones are counted).
@@ -86,8 +85,7 @@ module run_recorder
       real(dp) :: max_energy_error = 0, energy_created = 0, energy_lost = 0
       real(dp) :: max_w_over_h = 0
       real(dp) :: w_bend_max = 0, diverged_at = -1
-      ! compliances under the impactor over a step (m/N; c_plate -1: not measured), and the largest
-      ! slope (c_plate + c_impactor) dF/d alpha of the paper's fixed-point force update (-)
+      ! compliances under the impactor over a step (m/N; c_plate -1: none), largest fixed-point slope (-)
       real(dp) :: c_plate = -1, c_impactor = 0, max_slope = 0
       logical :: warned(nwarn) = .false.
       type(progress_t) :: progress               !< the progress line on standard error (src/record/progress_line.f90)
@@ -118,10 +116,8 @@ module run_recorder
 
 contains
 
-   !> Opens the history (title, deck echo, columns) and, with &output hdf5,
-   !> <prefix>.h5; writes row 0. c_plate is the plate's compliance under the
-   !> impactor over one step for the summary's fixed-point diagnostics
-   !> (scheme 'paper'; -1: none, docs/PAPER.md).
+   !> Opens the history and <prefix>.h5 and writes row 0; c_plate: the plate's
+   !> compliance over a step for the fixed-point diagnostics (-1: none).
    subroutine record_open(rec, deck, model, nm, imp, c_plate, stat, errmsg)
       type(record_t), intent(out) :: rec            !< the record
       type(deck_t), intent(in) :: deck              !< the effective deck
@@ -146,8 +142,7 @@ contains
       rec%c_plate = c_plate
       call reserve_summary(deck, stat, errmsg)
       if (stat /= 0) return
-      ! (filled in a loop: gfortran 12 garbles an array constructor of a
-      ! constant's components with a variable implied-do bound)
+      ! (a loop: gfortran 12 garbles an array constructor of a constant's components here)
       allocate (names(rec%ncol), texts(rec%ncol))
       do c = 1, rec%ncol
          col = history_columns(c)
@@ -193,9 +188,8 @@ contains
       rec%ncol = history_width(rec%damage%active)
    end subroutine record_settings
 
-   !> Records the step just accepted (module header): plate and impactor at
-   !> t + dt, the contact history before this step's commit, the step's
-   !> contact iteration (its iterations; converged: eq. 17 and 18 met).
+   !> Records the step just accepted: plate and impactor at t + dt, the contact
+   !> history before its commit, the step's contact iteration.
    subroutine record_step(rec, step, model, solver, st, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       integer, intent(in) :: step                        !< the step
@@ -259,13 +253,11 @@ contains
       end associate
    end subroutine add_contact_work
 
-   !> The summary's running figures of every step: the samples of the peak
-   !> force, deflection and strain, refined between the steps by the vertex of
-   !> the parabola through the largest sample and its neighbours (row 0 is a
-   !> sample; src/record/step_peak.f90; the sampled peak force is kept as
-   !> *_sampled), the contacts and the first one's bounds (first_contact_bounds),
-   !> w/h, the iterations, the bending deflection (free edges: fig%w_rigid,
-   !> the rigid-body part), the fixed-point slope, the peak's ply stresses.
+   !> The summary's running figures of every step: the samples of the peaks,
+   !> refined between the steps (src/record/step_peak.f90; row 0 a sample),
+   !> the contacts and the first one's bounds, w/h, the iterations, the
+   !> bending deflection (free edges: fig%w_rigid), the fixed-point slope, the
+   !> peak's ply stresses.
    subroutine update_maxima(rec, fig, model, st, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(inout) :: fig         !< the step (in); its w_rigid (out)
@@ -318,9 +310,8 @@ contains
       end if
    end subroutine first_contact_bounds
 
-   !> The history row of the step (every &output every steps, and the last),
-   !> to the history file and <prefix>.h5; a run whose energy balance goes
-   !> below -E0 has diverged and stops here (above add_contact_work).
+   !> The history row of the step (every &output every steps, and the last);
+   !> a balance below -E0 stops the run (diverged).
    subroutine history_row(rec, fig, model, st, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(in) :: fig            !< the step

@@ -19,9 +19,7 @@ module hdf5_series
    !> Element types of a series (h5io_create_series).
    integer, parameter :: h5io_real = 1, h5io_integer = 2
 
-   !> Appends several entries to a series at once: reals or integers to a
-   !> rank-1 series, the columns x(:, k) to a rank-2 series (one extension
-   !> and one write for all of them).
+   !> Appends entries to a series at once: reals or integers (rank 1), columns x(:, k) (rank 2).
    interface h5io_append_block
       module procedure append_reals, append_integers, append_columns
    end interface h5io_append_block
@@ -33,9 +31,8 @@ module hdf5_series
 
 contains
 
-   !> Creates the empty extendible rank-1 dataset `name` of reals or integers
-   !> (kind = h5io_real or h5io_integer), stored in chunks of `chunk` entries,
-   !> and returns it open as did (close with h5io_close_dataset).
+   !> Creates the empty rank-1 series `name` of reals or integers (kind), in
+   !> chunks of `chunk` entries, open as did (close with h5io_close_dataset).
    subroutine h5io_create_series(loc, name, kind, chunk, did, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
@@ -48,10 +45,8 @@ contains
       call create_extendible(loc, name, tid, [0_hsize_t], [int(chunk, hsize_t)], did, stat, errmsg)
    end subroutine h5io_create_series
 
-   !> Creates the empty extendible real dataset `name` of shape (nrow, 0),
-   !> growing by whole columns of nrow values, stored in chunks of as many
-   !> columns as hold `chunk_values` values (one at least), and returns it
-   !> open as did.
+   !> Creates the empty real series `name` of shape (nrow, 0), growing by
+   !> columns, in chunks of `chunk_values` values (one column at least), open as did.
    subroutine h5io_create_columns(loc, name, nrow, chunk_values, did, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
@@ -63,8 +58,7 @@ contains
          [int(nrow, hsize_t), int(max(1, chunk_values/max(nrow, 1)), hsize_t)], did, stat, errmsg)
    end subroutine h5io_create_columns
 
-   !> Creates a chunked dataset of element type tid, initial shape dims and
-   !> chunks chunk (Fortran order), its last dimension unlimited.
+   !> A chunked dataset of type tid, shape dims, chunks chunk, its last dimension unlimited.
    subroutine create_extendible(loc, name, tid, dims, chunk, did, stat, errmsg)
       integer(hid_t), intent(in) :: loc, tid
       character(len=*), intent(in) :: name
@@ -106,8 +100,7 @@ contains
       if (rank >= 1 .and. rank <= 2) n = int(dims(rank))
    end function h5io_series_length
 
-   !> Cuts the series did, which must hold at least n entries, to its first
-   !> n (a restart: what a killed run wrote after its restart point goes).
+   !> Cuts the series did (n entries at least) to its first n (a restart).
    subroutine h5io_cut_series(did, n, stat, errmsg)
       integer(hid_t), intent(in) :: did
       integer, intent(in) :: n
@@ -175,8 +168,7 @@ contains
       if (stat == 0) n = max(0, h5io_series_length(did))
    end subroutine open_series
 
-   !> Reads the n values of the open series did into buf (memory type
-   !> mem_type) and closes it.
+   !> Reads the n values of the open series did into buf (type mem_type) and closes it.
    subroutine read_series(did, mem_type, buf, n, name, stat, errmsg)
       integer(hid_t), intent(in) :: did
       integer(hid_t), intent(in) :: mem_type
@@ -220,8 +212,7 @@ contains
       call grow_and_write(did, H5T_NATIVE_INTEGER, 1, size(x), c_loc(buf), stat, errmsg)
    end subroutine append_integers
 
-   !> Appends the columns x(:, k) (of the dataset's nrow values each) to the
-   !> rank-2 series did.
+   !> Appends the columns x(:, k) (nrow values each) to the rank-2 series did.
    subroutine append_columns(did, x, stat, errmsg)
       integer(hid_t), intent(in) :: did
       real(dp), intent(in) :: x(:,:)
@@ -234,9 +225,7 @@ contains
       call grow_and_write(did, H5T_NATIVE_DOUBLE, 2, size(x, 2), c_loc(buf), stat, errmsg)
    end subroutine append_columns
 
-   !> Extends the last dimension of did by n and writes the values at buf
-   !> (memory type tid) into the new slices: n values for rank 1, n columns
-   !> for rank 2.
+   !> Extends did's last dimension by n and writes the values at buf (type tid) there.
    subroutine grow_and_write(did, tid, rank, n, buf, stat, errmsg)
       integer(hid_t), intent(in) :: did, tid
       integer, intent(in) :: rank
@@ -272,12 +261,10 @@ contains
       call h5sclose_f(fspace, err)
    end subroutine grow_and_write
 
-   !> Creates `name`, a virtual dataset (HDF5 1.10's VDS) of nrow reals
-   !> that shows column `column` (from 1) of the rank-2 series `source`
-   !> (h5io_create_columns) of the file `source_file` ('.': the same file;
-   !> a name without a directory: the file beside this one): a view, no
-   !> copy. A reader sees a plain 1-D dataset (h5py, h5dump, XDMF readers);
-   !> `source` needs at least `column` columns when the view is read.
+   !> Creates `name`, a virtual dataset (VDS) of nrow reals showing column
+   !> `column` (from 1) of the rank-2 series `source` of the file
+   !> `source_file` ('.': the same; a bare name: the file beside): a view, no
+   !> copy, read as a plain 1-D dataset.
    subroutine h5io_view_column(loc, name, source_file, source, nrow, column, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name, source_file, source

@@ -26,17 +26,15 @@ module results_xdmf
 
    !> Longest number as text (src/system/number_text.f90, real_str).
    integer, parameter :: text_len = 32
-   !> Values per chunk of the whole plate's growing fields (as
-   !> src/results/results_hdf5.f90's series).
+   !> Values per chunk of the whole plate's growing fields.
    integer, parameter :: chunk_values = 512
    !> Least wall-clock time between two rewrites of the XML during a run (s).
    real(dp), parameter :: xdmf_rewrite_interval = 1.0_dp
    !> Fields odd across x = 0 (u, psi_x) and across y = 0 (v, psi_y), by freedom.
    logical, parameter :: odd_in_x(ndof_node) = [.true., .false., .false., .true., .false.]
    logical, parameter :: odd_in_y(ndof_node) = [.false., .true., .false., .false., .true.]
-   !> Nodes of a 9-node element as (i, j) offsets on the grid from its
-   !> corner (i, j) of lowest indices: corners counter-clockwise, mid-sides,
-   !> centre (src/model/shape_functions.f90).
+   !> Nodes of a 9-node element as (i, j) offsets on the grid from its lowest
+   !> corner (src/model/shape_functions.f90's order).
    integer, parameter :: element_di(nen) = [0, 2, 2, 0, 1, 2, 1, 0, 1]
    integer, parameter :: element_dj(nen) = [0, 0, 2, 2, 0, 1, 2, 1, 1]
 
@@ -70,9 +68,8 @@ module results_xdmf
 
 contains
 
-   !> The XDMF of a run (nothing for xdmf = 'none'): its names, and for the
-   !> whole plate its points and cells (xy, cells numbered from 1), the
-   !> modelled node of each point and the sign of each field there.
+   !> The XDMF of a run (nothing for 'none'): its names; for the whole plate
+   !> its points, cells (from 1), the modelled node and each field's sign.
    subroutine setup(x, deck, msh, xy, cells)
       type(xdmf_t), intent(out) :: x                !< the XDMF file, not yet active
       type(deck_t), intent(in) :: deck              !< the effective deck (prefix, xdmf)
@@ -98,9 +95,8 @@ contains
       x%nelem = size(cells, 2)
    end subroutine setup
 
-   !> Writes /xdmf into <prefix>.h5 while it is made (fid, /mesh written):
-   !> the cells numbered from 0; for the whole plate its points, /peak and
-   !> the empty growing fields (above xdmf_t); nothing for xdmf = 'none'.
+   !> Writes /xdmf into <prefix>.h5 while it is made: cells from 0; for the
+   !> whole plate its points, /peak and the empty growing fields.
    subroutine xdmf_open(x, deck, msh, fid, stat, errmsg)
       type(xdmf_t), intent(out) :: x                !< the XDMF file, ready for xdmf_start on return
       type(deck_t), intent(in) :: deck              !< the effective deck (prefix, xdmf)
@@ -135,8 +131,7 @@ contains
       end do fields
    end subroutine xdmf_open
 
-   !> Starts <prefix>.xdmf.h5 (no view yet) and the XML without a
-   !> snapshot, once <prefix>.h5 is in place; x active on return.
+   !> Starts <prefix>.xdmf.h5 and the XML without a snapshot; x active on return.
    subroutine xdmf_start(x, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file (xdmf_open, or xdmf_cut)
       integer, intent(out) :: stat                  !< 0 on success
@@ -154,8 +149,7 @@ contains
       call write_xml(x, stat, errmsg)
    end subroutine xdmf_start
 
-   !> A restart, while <prefix>.h5 is cut back to `snaps` snapshots (fid
-   !> open): the XDMF's names, and the whole plate's fields cut alike.
+   !> A restart, while <prefix>.h5 is cut back to `snaps`: the whole plate's fields cut alike.
    subroutine xdmf_cut(x, deck, msh, fid, snaps, stat, errmsg)
       type(xdmf_t), intent(out) :: x                !< the XDMF file, ready for xdmf_resume on return
       type(deck_t), intent(in) :: deck              !< the effective deck (prefix, xdmf)
@@ -180,9 +174,8 @@ contains
       end do fields
    end subroutine xdmf_cut
 
-   !> A restart: the XDMF of the snapshots kept in <prefix>.h5 (their
-   !> times, steps, forces), <prefix>.xdmf.h5 made anew with their views in
-   !> one batch, and the XML.
+   !> A restart: the XDMF of the snapshots kept, <prefix>.xdmf.h5 made anew
+   !> with their views in one batch, and the XML.
    subroutine xdmf_resume(x, time, step, force, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file (xdmf_cut), active on return
       real(dp), intent(in) :: time(:), force(:)     !< the snapshots' times (s) and contact forces (N)
@@ -197,8 +190,7 @@ contains
       if (stat == 0) call write_xml(x, stat, errmsg)
    end subroutine xdmf_resume
 
-   !> The whole plate: the mirror of the snapshots f just appended to
-   !> /fields, appended to /xdmf/fields/<f> of <prefix>.h5 (fid, open).
+   !> The whole plate: the mirror of the snapshots f just appended to /fields.
    subroutine xdmf_grow(x, fid, f, stat, errmsg)
       type(xdmf_t), intent(in) :: x                 !< the XDMF file
       integer(hid_t), intent(in) :: fid             !< <prefix>.h5, open
@@ -265,8 +257,7 @@ contains
       end do snapshots
    end subroutine xdmf_snapshots
 
-   !> Ends a batch: <prefix>.xdmf.h5 flushed, the XML rewritten when due
-   !> (above xdmf_snapshots).
+   !> Ends a batch: <prefix>.xdmf.h5 flushed, the XML rewritten when due.
    subroutine xdmf_batch_close(x, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file
       integer, intent(out) :: stat                  !< 0 on success
@@ -296,9 +287,7 @@ contains
       path = batch_group(x%batch(s)) // '/' // trim(freedom_name(k)) // '/' // int_str(s)
    end function view_path
 
-   !> The peak state just rewritten in /peak: for the whole plate, mirrored
-   !> into /xdmf/peak of <prefix>.h5 (fid, open; the modelled domain's XML
-   !> shows /peak itself).
+   !> The peak state just rewritten: for the whole plate, mirrored into /xdmf/peak.
    subroutine xdmf_peak(x, fid, f, stat, errmsg)
       type(xdmf_t), intent(in) :: x                 !< the XDMF file
       integer(hid_t), intent(in) :: fid             !< <prefix>.h5, open
@@ -314,8 +303,7 @@ contains
       end do
    end subroutine xdmf_peak
 
-   !> The last XML, with every snapshot and the run's status, and
-   !> <prefix>.xdmf.h5 closed; x inactive after.
+   !> The last XML, with every snapshot and the status; <prefix>.xdmf.h5 closed.
    subroutine xdmf_close(x, status, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file
       character(len=*), intent(in) :: status        !< the run's status ('completed', 'failed at step N', ...)
@@ -338,8 +326,7 @@ contains
 
    ! ============================================================== the XML
 
-   !> Writes the XML to <prefix>.xdmf.tmp and renames it over <prefix>.xdmf
-   !> (the views it names flushed before).
+   !> Writes the XML to <prefix>.xdmf.tmp and renames it over <prefix>.xdmf.
    subroutine write_xml(x, stat, errmsg)
       type(xdmf_t), intent(inout) :: x
       integer, intent(out) :: stat
@@ -413,8 +400,7 @@ contains
       end subroutine attribute
    end subroutine write_xml
 
-   !> An HDF DataItem: type 'Int' or 'Float', bytes per value, dimensions
-   !> (C order, as the HDF5 file has them) and 'file:/path'.
+   !> An HDF DataItem: 'Int' or 'Float', bytes, dimensions (C order), 'file:/path'.
    pure function data_item(number_type, precision, dims, where) result(text)
       character(len=*), intent(in) :: number_type, dims, where
       integer, intent(in) :: precision
@@ -425,10 +411,9 @@ contains
 
    ! ============================================================ the mirror
 
-   !> The whole plate from the modelled domain, mirrored about x = 0 when
-   !> msh%sym_x and about y = 0 when msh%sym_y: points xy(2, n), cells
-   !> (nen, e) numbered from 1, counter-clockwise, the modelled node of
-   !> each point and the sign of each field there.
+   !> The whole plate, mirrored about x = 0 (sym_x) and y = 0 (sym_y): points
+   !> xy(2, n), cells from 1, counter-clockwise, each point's modelled node
+   !> and each field's sign there.
    subroutine whole_plate(msh, xy, cells, source, parity)
       type(mesh_t), intent(in) :: msh
       real(dp), allocatable, intent(out) :: xy(:,:)
