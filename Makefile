@@ -72,14 +72,16 @@ CHOLMOD_LIBS   ?= -lcholmod -lsuitesparseconfig
 #   strength  ply stresses and failure criteria
 #   scheme    the paper's time-step scheme: Newmark, the plate's nonlinear
 #             solution, the contact iteration, the one-call 'fast' step
-#   results   result files, HDF5 and XDMF, the run's recorder and reports
+#   results   the result files: history, summary, HDF5, XDMF, the restart file
+#   record    the run's record: energies, maxima, warnings, progress, trace,
+#             reports, and the restart point that saves it
 #   analyses  the static, modal and pressure analyses of the same model
 #   accuracy  the accuracy run: a ladder of runs of the program itself (dt
 #             halved, the mesh refined), their errors, the run chosen
 # Every file but the main program is one module named after the file; the
 # objects are flat in $(BUILD); tools/fortran-deps writes the dependencies
 # between them from their `use` statements into $(BUILD)/deps.mk.
-SRC_FOLDERS := system linalg deck model strength scheme results analyses accuracy
+SRC_FOLDERS := system linalg deck model strength scheme results record analyses accuracy
 MAIN    := src/impact.f90
 SOURCES := $(foreach d,$(SRC_FOLDERS),$(sort $(wildcard src/$(d)/*.f90)))
 OBJS    := $(patsubst %.f90,$(BUILD)/%.o,$(notdir $(SOURCES)))

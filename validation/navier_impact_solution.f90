@@ -127,7 +127,7 @@ module navier_impact_solution
    !> Newton steps below this many units of rounding of alpha end the iteration.
    real(dp), parameter :: root_ulps = 16.0_dp
 
-   !> The run's figures, as ./impact's summary names them (src/results/run_recorder.f90).
+   !> The run's figures, as ./impact's summary names them (src/record/run_recorder.f90).
    type :: run_summary_t
       real(dp) :: peak_force = 0.0_dp          !< N
       real(dp) :: time_of_peak = 0.0_dp        !< s

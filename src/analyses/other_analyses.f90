@@ -48,7 +48,6 @@ contains
       type(static_result_t) :: res
       real(dp), allocatable :: f(:)
       character(len=msg_len) :: load_unit, solve_msg
-      character(len=:), allocatable :: path, path2
       integer :: u, inc, n, solve_stat, k
       real(dp) :: de(ndof_node)
       report = ''
@@ -70,7 +69,7 @@ contains
           'pressure q0 (Pa) or central force (N): lambda * &load magnitude, in '//trim(load_unit), &
           'deflection at the plate centre (mm)', 'centre deflection / thickness (-)', &
           'Newton iterations (linear: 1 solve) (-)', '|lambda F - f_int| / |lambda F| at the end (-)'], &
-         u, path, stat, errmsg)
+         u, stat, errmsg)
       if (stat /= 0) return
       rows: do inc = 0, res%increments
          write (u, '(i6, f12.6, 3es16.7e3, i6, es12.3e3)') inc, res%load_factor(inc), &
@@ -84,7 +83,7 @@ contains
          [character(len=12) :: 'node', 'x_mm', 'y_mm', 'u_mm', 'v_mm', 'w_mm', 'psi_x_rad', 'psi_y_rad'], &
          [character(len=40) :: 'node (-)', 'x from the plate centre (mm)', 'y from the plate centre (mm)', &
           'in-plane displacement u (mm)', 'in-plane displacement v (mm)', 'deflection w (mm)', &
-          'rotation psi_x (rad)', 'rotation psi_y (rad)'], u, path2, stat, errmsg)
+          'rotation psi_x (rad)', 'rotation psi_y (rad)'], u, stat, errmsg)
       if (stat /= 0) return
       nodes: do k = 1, model%msh%nnode
          call gather_element(model%msh%eq(:, k), res%d, de)
@@ -95,8 +94,8 @@ contains
       write (report, '(a,es12.5,a,a,a,es12.5,a,f9.4,a)') 'static: load ', &
          res%load_factor(res%increments)*deck%load_magnitude, ' ', trim(load_unit), &
          ': centre deflection ', res%w_centre(res%increments)*1.0e3_dp, ' mm (w/h = ', &
-         res%w_centre(res%increments)/deck%h, ')' // new_line('a') // 'results: ' // trim(path) // &
-         ', ' // trim(path2)
+         res%w_centre(res%increments)/deck%h, ')' // new_line('a') // 'results: ' // deck%prefix // &
+         '_static.dat, ' // deck%prefix // '_deflection.dat'
       stat = solve_stat
       if (stat /= 0) errmsg = solve_msg
    end subroutine run_static
@@ -110,7 +109,6 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(modal_result_t) :: res
-      character(len=:), allocatable :: path, path2
       character(len=16), allocatable :: names(:)
       character(len=48), allocatable :: texts(:)
       real(dp) :: de(ndof_node), wmax(deck%mode_count), wk
@@ -126,7 +124,7 @@ contains
          [character(len=64) :: 'mode number, ascending frequency (-)', 'natural frequency (Hz)', &
           'circular frequency (rad/s)', 'kinetic energy share of w (-; -1: no shapes)', &
           'kinetic energy share of u, v (-; -1: no shapes)', 'kinetic energy share of psi_x, psi_y (-; -1: no shapes)'], &
-         u, path, stat, errmsg)
+         u, stat, errmsg)
       if (stat /= 0) return
       rows: do j = 1, res%count
          if (deck%mode_shapes) then
@@ -141,7 +139,7 @@ contains
       if (.not. deck%mode_shapes) then
          write (report, '(a,i0,a,es13.6,a,es13.6,a)') 'modes: ', res%count, ' frequencies from ', res%freq(1), &
             ' to ', res%freq(res%count), ' Hz (no shapes: &modes shapes = .false.)' // new_line('a') // &
-            'results: ' // trim(path)
+            'results: ' // deck%prefix // '_modes.dat'
          return
       end if
 
@@ -160,7 +158,7 @@ contains
          if (wmax(j) == 0.0_dp) wmax(j) = 1.0_dp
       end do
       call open_columns(deck, '_mode_shapes.dat', 'impact: modal analysis, mode shapes (modelled domain)', &
-         names, texts, u, path2, stat, errmsg)
+         names, texts, u, stat, errmsg)
       if (stat /= 0) return
       nodes: do k = 1, model%msh%nnode
          write (u, '(2f12.4)', advance='no') model%msh%coords(:, k)*1.0e3_dp
@@ -174,7 +172,8 @@ contains
       close (u)
 
       write (report, '(a,i0,a,es13.6,a,es13.6,a)') 'modes: ', res%count, ' frequencies from ', res%freq(1), &
-         ' to ', res%freq(res%count), ' Hz' // new_line('a') // 'results: ' // trim(path) // ', ' // trim(path2)
+         ' to ', res%freq(res%count), ' Hz' // new_line('a') // 'results: ' // deck%prefix // '_modes.dat, ' &
+         // deck%prefix // '_mode_shapes.dat'
    end subroutine run_modes
 
    !> The transient analysis: load, time integration (pressure_solve),
@@ -188,7 +187,6 @@ contains
       type(pressure_result_t) :: res
       real(dp), allocatable :: f(:)
       character(len=msg_len) :: warning
-      character(len=:), allocatable :: path
       integer :: u, step, nstep, peak
       report = ''
       stat = 0
@@ -206,7 +204,7 @@ contains
          [character(len=64) :: 'time (us)', 'deflection at the plate centre (mm)', &
           'plate kinetic energy, whole plate (J)', 'plate strain energy, whole plate (J)', &
           'work of the load F . D, whole plate (J)', 'work - kinetic - strain energy (J)', &
-          'plate solutions of the step, eq. (18)-(19) (-)'], u, path, stat, errmsg)
+          'plate solutions of the step, eq. (18)-(19) (-)'], u, stat, errmsg)
       if (stat /= 0) return
       rows: do step = 0, res%nstep
          if (mod(step, deck%every) /= 0 .and. step /= res%nstep) cycle rows
@@ -219,7 +217,7 @@ contains
       peak = maxloc(abs(res%w_centre), dim=1) - 1
       write (report, '(a,i0,a,es12.5,a,f12.3,a)') 'pressure: ', res%nstep, ' steps; largest centre deflection ', &
          res%w_centre(peak)*1.0e3_dp, ' mm at ', res%t(peak)*1.0e6_dp, ' us' // new_line('a') // &
-         'results: ' // trim(path)
+         'results: ' // deck%prefix // '_pressure_history.dat'
       if (res%unconverged > 0) then
          write (warning, '(a,i0,a)') 'warning: ', res%unconverged, &
             ' steps did not meet eq. (18) within max_nonlinear_iter'

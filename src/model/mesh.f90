@@ -13,7 +13,7 @@ module mesh
    use shape_functions, only: nen, node_xi
    implicit none
    private
-   public :: mesh_t, ndof_node, nfe, build_mesh, apply_boundary, freedom_name, describe_equation, &
+   public :: mesh_t, mesh_layout_t, ndof_node, nfe, build_mesh, apply_boundary, freedom_name, describe_equation, &
              locate_point
 
    !> Freedoms per node (u, v, w, psi_x, psi_y).
@@ -22,6 +22,16 @@ module mesh
    integer, parameter :: nfe = ndof_node*nen
    character(len=5), parameter :: dof_names(ndof_node) = &
       [character(len=5) :: 'u', 'v', 'w', 'psi_x', 'psi_y']
+
+   !> The modelled domain and where its elements are finer (build_mesh).
+   type :: mesh_layout_t
+      character(len=:), allocatable :: domain !< 'quarter', 'half', 'full' or 'strip'
+      real(dp) :: x0 = 0, y0 = 0              !< impact point from the plate centre (m)
+      real(dp) :: grading = 1.0_dp            !< ratio of successive element sizes away from it (-): 1, uniform
+      !> nx, ny are the quarter plate's counts, doubled where the domain spans
+      !> both sides of a centre line (above build_mesh)
+      logical :: quarter_counts = .false.
+   end type mesh_layout_t
 
    !> The mesh of the modelled domain and its freedom map.
    type :: mesh_t
@@ -83,19 +93,13 @@ contains
    !>
    !> Lays out nodes and elements of the modelled domain (Fig. 4; the
    !> domains, element counts and grading as above).
-   subroutine build_mesh(a, b, nx, ny, domain, m, stat, errmsg, x0, y0, grading, quarter_counts)
+   subroutine build_mesh(a, b, nx, ny, layout, m, stat, errmsg)
       real(dp), intent(in) :: a, b            !< plate size along x and y (m)
       integer, intent(in) :: nx, ny           !< elements along x and y of the domain (as above)
-      character(len=*), intent(in) :: domain  !< 'quarter', 'half', 'full' or 'strip'
+      type(mesh_layout_t), intent(in) :: layout   !< the domain, the impact point, the grading
       type(mesh_t), intent(out) :: m          !< the mesh
       integer, intent(out) :: stat            !< 0 on success
       character(len=*), intent(inout) :: errmsg  !< reason on failure
-      real(dp), intent(in), optional :: x0, y0   !< impact point from the plate centre (m); absent: the centre
-      !> ratio of successive element sizes away from the impact point (-); absent: 1, uniform
-      real(dp), intent(in), optional :: grading
-      !> nx, ny are the quarter plate's counts, doubled where the domain spans
-      !> both sides of a centre line (as above); absent: false
-      logical, intent(in), optional :: quarter_counts
       real(dp), allocatable :: xl(:), yl(:)
       integer :: i, j, ie, je, e, k, n, ngx, ngy, ix, jy, ncx, ncy
       logical :: doubled
@@ -107,10 +111,8 @@ contains
          write (errmsg, '(a,i0,a,i0)') 'mesh: needs at least one element each way, got nx = ', nx, ', ny = ', ny
          return
       end if
-      m%x_impact = 0.0_dp;  m%y_impact = 0.0_dp;  m%grading = 1.0_dp
-      if (present(x0)) m%x_impact = x0
-      if (present(y0)) m%y_impact = y0
-      if (present(grading)) m%grading = grading
+      associate (domain => layout%domain)
+      m%x_impact = layout%x0;  m%y_impact = layout%y0;  m%grading = layout%grading
       if (abs(m%x_impact) >= 0.5_dp*a .or. abs(m%y_impact) >= 0.5_dp*b) then
          stat = 1
          write (errmsg, '(a,es11.4,a,es11.4,a)') 'mesh: the impact point (', m%x_impact, ', ', m%y_impact, &
@@ -145,8 +147,7 @@ contains
       m%sym_factor = merge(2.0_dp, 1.0_dp, m%sym_x)*merge(2.0_dp, 1.0_dp, m%sym_y)
 
       ! element counts of the domain
-      doubled = .false.
-      if (present(quarter_counts)) doubled = quarter_counts
+      doubled = layout%quarter_counts
       ncx = nx;  ncy = ny
       if (doubled .and. .not. m%sym_x) ncx = 2*nx
       if (doubled .and. .not. m%sym_y) ncy = 2*ny
@@ -196,6 +197,7 @@ contains
       ! corner (the +x, +y side: the quarter's first element)
       m%impact_node = m%grid(2*ix, 2*jy)
       m%impact_elem = 1 + ix + m%nx*jy
+      end associate
    end subroutine build_mesh
 
    !> Element corner lines of one direction (above build_mesh): from the lower

@@ -14,7 +14,7 @@ module plate_model
    use materials, only: laminate_t, laminate_drop_bend_twist
    use scene_model, only: scene_t, model_laminate, choose_domain, point_stiffness, energy_balance, &
       choose_theory, impact_element_size, choose_storage
-   use mesh, only: mesh_t, build_mesh, apply_boundary, nfe, ndof_node, locate_point
+   use mesh, only: mesh_t, mesh_layout_t, build_mesh, apply_boundary, nfe, ndof_node, locate_point
    use shape_functions, only: nen
    use shear_strain, only: shear_rule_t, shear_rule_code, shear_stabilized
    use contact_load, only: contact_load_t, contact_load_init, load_point, load_hertz
@@ -44,7 +44,6 @@ module plate_model
       type(contact_law_t) :: law               !< eq. (11)-(12) constants
       type(contact_load_t) :: cload            !< how the contact force enters the plate (module contact_load)
       logical :: nonlinear = .true.            !< von Karman terms on
-      real(dp) :: impactor_mass = 0.0_dp       !< m (kg)
       integer :: eq_impact = 0                 !< equation of w at the impact point
       real(dp) :: force_share = 1.0_dp         !< share of a force at the impact point the model carries
       integer :: gauge_elem = 0                !< element of the strain gauge (place_gauge)
@@ -79,7 +78,6 @@ contains
       if (stat /= 0) return
       if (model%scene%averaged) model%lmt = laminate_drop_bend_twist(model%lmt)
       model%law = contact_law_t(deck%k, deck%q, deck%alpha_p, deck%beta)
-      model%impactor_mass = deck%mass
       model%z_back = 0.5_dp*deck%h
       model%max_nonlinear_iter = deck%max_nonlinear_iter
       model%cr2 = deck%cr2
@@ -96,8 +94,8 @@ contains
       ! -- mesh, boundary conditions, equation numbers (Fig. 4)
       settled = deck                   ! nx, ny of a deck made in code that gives none: from the scene
       call choose_settings(settled)
-      call build_mesh(deck%a, deck%b, settled%nx, settled%ny, model%scene%domain, model%msh, stat, errmsg, &
-                      x0=deck%x0, y0=deck%y0, grading=deck%grading, quarter_counts=deck%domain == 'auto')
+      call build_mesh(deck%a, deck%b, settled%nx, settled%ny, mesh_layout_t(trim(model%scene%domain), deck%x0, &
+                      deck%y0, deck%grading, deck%domain == 'auto'), model%msh, stat, errmsg)
       if (stat /= 0) return
       call apply_boundary(model%msh, deck%edges, deck%inplane, stat, errmsg)
       if (stat /= 0) return
@@ -136,8 +134,7 @@ contains
 
       ! -- the scene's static estimate, and the theory it calls for
       !    (src/model/scene_model.f90)
-      call point_stiffness(model%msh, model%lmt, model%geo, model%stiff, model%force_share, deck%edges, &
-                           model%scene%storage, model%scene, stat, errmsg)
+      call point_stiffness(model%msh, model%lmt, model%geo, model%stiff, deck%edges, model%scene, stat, errmsg)
       if (stat /= 0) return
       call energy_balance(model%scene%energy, model%scene%stiffness, deck%k, model%scene%force, &
                           model%scene%deflection, model%scene%indentation)

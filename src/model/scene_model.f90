@@ -474,15 +474,13 @@ contains
    !> 100 solves for K to 1e-7, 60 for 1 %, the cost of 3-4
    !> factorizations: docs/PERFORMANCE.md, "The set-up's second
    !> factorization".)
-   subroutine point_stiffness(msh, lmt, geo, stiff, force_share, edges, storage, scene, stat, errmsg)
+   subroutine point_stiffness(msh, lmt, geo, stiff, edges, scene, stat, errmsg)
       type(mesh_t), intent(in) :: msh                    !< the model's mesh and freedoms
       type(laminate_t), intent(in) :: lmt                !< the model's laminate
       type(element_geometry_t), intent(in) :: geo(:)     !< per-element geometry
       type(global_matrix_t), intent(in) :: stiff         !< the model's [K_L], assembled in its storage
-      real(dp), intent(in) :: force_share                !< share of the force the domain carries (-)
       character(len=*), intent(in) :: edges              !< &boundary edges
-      character(len=*), intent(in) :: storage            !< 'band', 'skyline' or 'sparse'
-      type(scene_t), intent(inout) :: scene              !< stiffness and stiffness_note set
+      type(scene_t), intent(inout) :: scene              !< its storage; stiffness and stiffness_note set
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
       type(mesh_t) :: m
@@ -508,7 +506,7 @@ contains
       if (all(m%eq == msh%eq)) then
          call global_copy(k, stiff)                 ! the model's own freedoms: its K_L as assembled
       else
-         call global_init(k, storage, m%neq, m%elem_eq, stat, errmsg)
+         call global_init(k, scene%storage, m%neq, m%elem_eq, stat, errmsg)
          if (stat /= 0) return
          call global_zero(k)
          elements: do e = 1, m%nelem
@@ -525,7 +523,7 @@ contains
       ieq = m%eq(3, m%impact_node)
       allocate (rhs(m%neq))
       rhs = 0.0_dp
-      rhs(ieq) = force_share
+      rhs(ieq) = 1.0_dp/msh%sym_factor            ! the share of the force the domain carries
       call global_solve(k, rhs, stat, errmsg)
       call global_release(k)          ! before the run's own factorization (sparse: C memory)
       if (stat /= 0) return

@@ -20,7 +20,7 @@ module damage_record
    use result_files, only: summary_item_t, summary_real, summary_integer, summary_text
    use results_hdf5, only: results_file_t
    use hdf5_io, only: h5io_group, h5io_set_attr, h5io_write
-   use xdmf_plies, only: plies_write
+   use xdmf_plies, only: ply_maps_t, plies_write
    use delamination, only: delamination_t, delamination_open, delamination_force, delamination_point, impact_regime
    implicit none
    private
@@ -68,9 +68,9 @@ contains
       type(model_t), intent(in) :: model            !< the model
       integer :: e
       dmg%strength = strength_t(deck%xt, deck%xc, deck%yt, deck%yc, deck%s12, deck%s23)
-      call delamination_open(dmg%delam, model%lmt%d, model%scene%impactor_mass/model%scene%plate_mass, &
-         is_given(deck, 'strength', 'g2c'), deck%g2c, strength_given(deck), dmg%strength, size(deck%angles), &
-         ngp*model%msh%nelem)
+      call delamination_open(dmg%delam, model%lmt%d, is_given(deck, 'strength', 'g2c'), deck%g2c, &
+         strength_given(deck), dmg%strength, size(deck%angles), ngp*model%msh%nelem)
+      dmg%delam%ratio = model%scene%impactor_mass/model%scene%plate_mass
       if (.not. strength_given(deck)) return
       dmg%active = .true.
       dmg%criterion = criterion_code(deck%criterion)
@@ -394,8 +394,8 @@ contains
          return
       end if
       ! -- the same on the laminate's grid of <prefix>.xdmf (src/results/xdmf_plies.f90)
-      if (rf%xdmf%active) call plies_write(rf%xdmf%plies, rf%fid, model%msh, dmg%stack%z, dmg%stack%angle, &
-         dmg%fi_max, dmg%mode_max, dmg%onset_time, sigma, fi, dmg%delam%map, modes, stat, why)
+      if (rf%xdmf%active) call plies_write(rf%xdmf%plies, rf%fid, model%msh, ply_maps_t(dmg%stack%z, &
+         dmg%stack%angle, dmg%fi_max, dmg%mode_max, dmg%onset_time, sigma, fi, dmg%delam%map, modes), stat, why)
       if (stat /= 0) errmsg = rf%path // ': /xdmf/plies: ' // trim(why)
 
    contains

@@ -1,29 +1,20 @@
-!> Thin checked wrappers over HDF5-Fortran for the results files
-!> (src/results/results_hdf5.f90, src/results/results_xdmf.f90) and the
-!> tools that read them (tools/h5export.f90).
-!> Every routine returns `stat` (0 on success) and, on failure, `errmsg`
-!> naming the operation and the object; the library's own error printing
-!> is off (h5io_start). `loc` is the file or group a path starts from,
-!> `name` a path relative to it, `did` an open dataset. What is written and
-!> how a reader sees it: above h5io_start; files, SWMR and locks: above
-!> h5io_create. Nothing is cached here: the caller holds the ids. This is
-!> the write half (with the reads a restart needs); tools/hdf5_read.f90 is
-!> the read half. Not from the paper. More: docs/OUTPUT.md.
+!> Thin checked wrappers over HDF5-Fortran for the results files: files,
+!> groups, attributes, whole datasets (the growing ones: hdf5_series.f90).
+!> Every routine returns `stat` (0 on success) and an `errmsg` naming the
+!> operation and the object; `loc` is the file or group a path starts
+!> from, `name` a path relative to it. What is written: above h5io_start;
+!> files, SWMR, locks: above h5io_create. tools/hdf5_read.f90 is the read
+!> half. Not from the paper. More: docs/OUTPUT.md.
 module hdf5_io
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char, c_bool, c_int, c_int64_t
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, h5fclose_f, &
       h5fflush_f, H5F_ACC_EXCL_F, H5F_ACC_RDWR_F, H5F_SCOPE_GLOBAL_F, H5F_LIBVER_LATEST_F, h5gcreate_f, &
-      h5gclose_f, h5ldelete_f, h5lexists_f, h5oopen_f, h5oclose_f, &
-      h5screate_f, h5screate_simple_f, h5sclose_f, h5sselect_hyperslab_f, h5sget_simple_extent_dims_f, &
-      H5S_SCALAR_F, H5S_UNLIMITED_F, H5S_SELECT_SET_F, &
-      h5acreate_by_name_f, h5aopen_f, h5awrite_f, h5aclose_f, h5aexists_by_name_f, &
-      h5adelete_by_name_f, &
-      h5tcopy_f, h5tset_size_f, h5tset_cset_f, h5tclose_f, &
-      H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5T_FORTRAN_S1, H5T_CSET_UTF8_F, h5tset_strpad_f, &
-      H5T_STR_NULLTERM_F, &
-      h5pcreate_f, h5pset_chunk_f, h5pset_fletcher32_f, h5pset_virtual_f, h5pset_libver_bounds_f, &
-      h5pset_file_locking_f, h5pclose_f, H5P_DATASET_CREATE_F, H5P_FILE_ACCESS_F, &
-      h5dcreate_f, h5dopen_f, h5dclose_f, h5dwrite_f, h5dread_f, h5dset_extent_f, h5dget_space_f
+      h5gclose_f, h5ldelete_f, h5lexists_f, h5oopen_f, h5oclose_f, h5screate_f, h5screate_simple_f, h5sclose_f, &
+      H5S_SCALAR_F, H5S_UNLIMITED_F, h5acreate_by_name_f, h5aopen_f, h5awrite_f, h5aclose_f, h5aexists_by_name_f, &
+      h5adelete_by_name_f, h5tcopy_f, h5tset_size_f, h5tset_cset_f, h5tclose_f, H5T_NATIVE_DOUBLE, &
+      H5T_NATIVE_INTEGER, H5T_FORTRAN_S1, H5T_CSET_UTF8_F, h5tset_strpad_f, H5T_STR_NULLTERM_F, h5pcreate_f, &
+      h5pset_chunk_f, h5pset_fletcher32_f, h5pset_libver_bounds_f, h5pset_file_locking_f, h5pclose_f, &
+      H5P_DATASET_CREATE_F, H5P_FILE_ACCESS_F, h5dcreate_f, h5dopen_f, h5dclose_f, h5dwrite_f
    use kinds, only: dp
    use file_system, only: remove_file
    implicit none
@@ -31,13 +22,7 @@ module hdf5_io
    public :: h5io_start, h5io_create, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_exists, h5io_delete
    public :: h5io_set_attr, h5io_update_attr, h5io_write, h5io_rewrite
    public :: h5io_check, h5io_fail, h5io_attr_path, h5io_vlen_string_type
-   public :: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_open_dataset, &
-             h5io_cut_series, h5io_read_series, h5io_close_dataset
-   public :: h5io_view_column
-   public :: h5io_real, h5io_integer
-
-   !> Element types of a series (h5io_create_series).
-   integer, parameter :: h5io_real = 1, h5io_integer = 2
+   public :: h5io_create_dataset
    !> Status returned on any failure.
    integer, parameter :: failed = 1
    !> The size of a variable-length string type: HDF5's H5T_VARIABLE,
@@ -59,41 +44,17 @@ module hdf5_io
       module procedure write_1d, write_2d
    end interface h5io_write
 
-   !> Appends several entries to a series at once: reals or integers to a
-   !> rank-1 series, the columns x(:, k) to a rank-2 series (one extension
-   !> and one write for all of them).
-   interface h5io_append_block
-      module procedure append_reals, append_integers, append_columns
-   end interface h5io_append_block
-
-   !> Reads a whole rank-1 series (a restart): reals or integers.
-   interface h5io_read_series
-      module procedure read_reals, read_integers
-   end interface h5io_read_series
 
 contains
 
    ! ------------------------------------------------------------ files, groups
 
-   !> What is written, and how a reader sees it:
-   !>  - attributes are scalars (dataspace SCALAR: h5py gives a number or a
-   !>    str, not a one-element array), or 1-D arrays (h5io_set_attr with an
-   !>    array); strings are variable-length UTF-8 (h5py gives str);
-   !>  - every dataset is chunked and checksummed (HDF5's Fletcher32 filter):
-   !>    raw data damaged on disk is reported when it is read ("checksum
-   !>    failure"), not handed out; the metadata of the latest file format
-   !>    (h5io_create with latest) carries its own checksums;
-   !>  - fixed datasets are written whole, one chunk each;
-   !>  - series are extendible chunked datasets that grow by a block of
-   !>    entries per h5io_append_block: rank 1
-   !>    (n) for a history column, rank 2 (nrow, n) in
-   !>    Fortran order, i.e. (n, nrow) in C order, h5py and h5dump, for a field
-   !>    of nrow nodes per snapshot.
-   !> Arrays keep Fortran order on disk: a Fortran x(m, n) reads as x[n, m] in
-   !> h5py and h5dump (C order).
-   !>
-   !> Opens the HDF5 library (its predefined types) and switches off its own
-   !> error printing. Safe to call more than once.
+   !> What is written: attributes are scalars (h5py gives a number or a str)
+   !> or 1-D arrays, strings variable-length UTF-8; every dataset is chunked
+   !> and checksummed (Fletcher32: damaged data is reported, not handed out),
+   !> fixed ones written whole, series grown by blocks; arrays keep Fortran
+   !> order (x(m, n) reads as x[n, m] in h5py and h5dump).
+   !> Opens the HDF5 library and switches off its error printing.
    subroutine h5io_start(stat, errmsg)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
@@ -103,24 +64,13 @@ contains
       call h5io_check(err, 'cannot initialise the HDF5 library', '', stat, errmsg)
    end subroutine h5io_start
 
-   !> Files. h5io_create makes a file (the latest file format when asked: what
-   !> HDF5's single-writer/multiple-reader mode, SWMR, needs); h5io_open opens
-   !> it again for writing, with `swmr` in SWMR mode: then only existing
-   !> datasets and attributes may change (datasets grow, values are
-   !> rewritten; no object or attribute is created), and HDF5 writes its
-   !> metadata in an order that keeps the file consistent on disk at every
-   !> instant, whatever kills the process (src/results/results_hdf5.f90).
-   !> Neither takes HDF5's own file lock (a reader holding the file must not
-   !> make the run fail; runs are kept apart by their claim,
-   !> src/results/result_files.f90), and h5io_open clears the marks a killed
-   !> writer leaves in the superblock (what `h5clear -s` does).
-   !>
-   !> Creates the file `path` anew for writing; fid is its id. What has the
-   !> name is removed first (a link itself, never what it points to) and
-   !> the file created exclusively (O_EXCL): nothing is written through a
-   !> link, even one put there in between.
-   !> With `latest`, in the latest file format (HDF5 1.10's: what SWMR needs,
-   !> with checksummed metadata; older HDF5 libraries do not read it).
+   !> Files: h5io_create makes one (with `latest` in HDF5 1.10's format, what
+   !> SWMR needs, checksummed metadata), removing what had the name first and
+   !> creating it exclusively (no write through a link); h5io_open opens it
+   !> again, with `swmr` in SWMR mode (only existing objects change, the file
+   !> consistent on disk at every instant). Neither takes HDF5's file lock
+   !> (runs are kept apart by their claim, result_files.f90); h5io_open clears
+   !> the marks a killed writer left (what `h5clear -s` does).
    subroutine h5io_create(path, latest, fid, stat, errmsg)
       character(len=*), intent(in) :: path
       logical, intent(in) :: latest
@@ -139,9 +89,7 @@ contains
       call h5pclose_f(fapl, err)
    end subroutine h5io_create
 
-   !> Opens the existing file `path` (made by h5io_create with latest) for
-   !> writing; with `swmr` in SWMR mode (as above). The marks a killed
-   !> writer left in its superblock are cleared.
+   !> Opens the existing file `path` for writing, with `swmr` in SWMR mode.
    subroutine h5io_open(path, swmr, fid, stat, errmsg)
       character(len=*), intent(in) :: path
       logical, intent(in) :: swmr
@@ -160,14 +108,10 @@ contains
       call h5pclose_f(fapl, err)
    end subroutine h5io_open
 
-   !> The file access of the results files: no HDF5 file lock (module
-   !> header); objects' metadata evicted from HDF5's cache when they are
-   !> closed (H5Pset_evict_on_close, HDF5 >= 1.10.1, no Fortran wrapper in
-   !> 1.10: the views of src/results/results_xdmf.f90, made and closed by the thousand,
-   !> would otherwise fill the cache, which every flush walks); with
-   !> `latest` the latest file format, with `clear` the superblock's marks
-   !> of a killed writer cleared on opening (the library's private property
-   !> "clear_status_flags", h5clear's way, set through H5Pset).
+   !> The results files' access: no file lock; metadata evicted from the
+   !> cache on close (H5Pset_evict_on_close: the XDMF views, made by the
+   !> thousand, would fill it); `latest` format; with `clear` a killed
+   !> writer's marks cleared on opening (the property h5clear sets).
    subroutine file_access(latest, clear, fapl, err)
       logical, intent(in) :: latest, clear
       integer(hid_t), intent(out) :: fapl
@@ -209,8 +153,7 @@ contains
       call h5io_check(err, 'cannot close the HDF5 file', '', stat, errmsg)
    end subroutine h5io_close
 
-   !> Writes everything buffered to the file fid (H5Fflush), so that a run
-   !> killed later leaves a file that opens with all it had written so far.
+   !> Writes everything buffered to the file (H5Fflush): a later kill leaves it whole.
    subroutine h5io_flush(fid, stat, errmsg)
       integer(hid_t), intent(in) :: fid
       integer, intent(out) :: stat
@@ -354,7 +297,6 @@ contains
       integer(hid_t) :: sid, aid
       integer :: err
       logical :: there
-
       call h5aexists_by_name_f(loc, obj, name, there, err)
       call h5io_check(err, 'cannot look for the attribute', h5io_attr_path(obj, name), stat, errmsg)
       if (stat /= 0) return
@@ -438,11 +380,11 @@ contains
       stat = failed
       select type (x)
       type is (real(dp))
-         call create_dataset(loc, name, H5T_NATIVE_DOUBLE, dims, dims, max(dims, 1_hsize_t), did, stat, errmsg)
+         call h5io_create_dataset(loc, name, H5T_NATIVE_DOUBLE, dims, max(dims, 1_hsize_t), did, stat, errmsg)
          r = x
          if (stat == 0) call h5dwrite_f(did, H5T_NATIVE_DOUBLE, c_loc(r), err)
       type is (integer)
-         call create_dataset(loc, name, H5T_NATIVE_INTEGER, dims, dims, max(dims, 1_hsize_t), did, stat, errmsg)
+         call h5io_create_dataset(loc, name, H5T_NATIVE_INTEGER, dims, max(dims, 1_hsize_t), did, stat, errmsg)
          i = x
          if (stat == 0) call h5dwrite_f(did, H5T_NATIVE_INTEGER, c_loc(i), err)
       end select
@@ -469,67 +411,22 @@ contains
       call h5dclose_f(did, err)
    end subroutine h5io_rewrite
 
-   ! ------------------------------------------------------------ series
-
-   !> Creates the empty extendible rank-1 dataset `name` of reals or integers
-   !> (kind = h5io_real or h5io_integer), stored in chunks of `chunk` entries,
-   !> and returns it open as did (close with h5io_close_dataset).
-   subroutine h5io_create_series(loc, name, kind, chunk, did, stat, errmsg)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name
-      integer, intent(in) :: kind, chunk
-      integer(hid_t), intent(out) :: did
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      integer(hid_t) :: tid
-      tid = merge(H5T_NATIVE_INTEGER, H5T_NATIVE_DOUBLE, kind == h5io_integer)
-      call create_extendible(loc, name, tid, [0_hsize_t], [int(chunk, hsize_t)], did, stat, errmsg)
-   end subroutine h5io_create_series
-
-   !> Creates the empty extendible real dataset `name` of shape (nrow, 0),
-   !> growing by whole columns of nrow values, stored in chunks of as many
-   !> columns as hold `chunk_values` values (one at least), and returns it
-   !> open as did.
-   subroutine h5io_create_columns(loc, name, nrow, chunk_values, did, stat, errmsg)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name
-      integer, intent(in) :: nrow, chunk_values
-      integer(hid_t), intent(out) :: did
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      call create_extendible(loc, name, H5T_NATIVE_DOUBLE, [int(nrow, hsize_t), 0_hsize_t], &
-         [int(nrow, hsize_t), int(max(1, chunk_values/max(nrow, 1)), hsize_t)], did, stat, errmsg)
-   end subroutine h5io_create_columns
-
-   !> Creates a chunked dataset of element type tid, initial shape dims and
-   !> chunks chunk (Fortran order), its last dimension unlimited.
-   subroutine create_extendible(loc, name, tid, dims, chunk, did, stat, errmsg)
+   !> Creates the dataset `name` of element type tid, largest shape maxdims
+   !> (its shape, but an unlimited dimension starts empty), stored in chunks
+   !> of shape chunk, each checksummed (HDF5's Fletcher32 filter), and
+   !> returns it open as did.
+   subroutine h5io_create_dataset(loc, name, tid, maxdims, chunk, did, stat, errmsg)
       integer(hid_t), intent(in) :: loc, tid
       character(len=*), intent(in) :: name
-      integer(hsize_t), intent(in) :: dims(:), chunk(:)
+      integer(hsize_t), intent(in) :: maxdims(:), chunk(:)
       integer(hid_t), intent(out) :: did
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      integer(hsize_t) :: maxdims(size(dims))
-      maxdims = dims
-      maxdims(size(dims)) = H5S_UNLIMITED_F
-      call create_dataset(loc, name, tid, dims, maxdims, chunk, did, stat, errmsg)
-   end subroutine create_extendible
-
-   !> Creates the dataset `name` of element type tid, shape dims (largest
-   !> maxdims), stored in chunks of shape chunk, each checksummed (HDF5's
-   !> Fletcher32 filter), and returns it open as did.
-   subroutine create_dataset(loc, name, tid, dims, maxdims, chunk, did, stat, errmsg)
-      integer(hid_t), intent(in) :: loc, tid
-      character(len=*), intent(in) :: name
-      integer(hsize_t), intent(in) :: dims(:), maxdims(:), chunk(:)
-      integer(hid_t), intent(out) :: did
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
+      integer(hsize_t) :: dims(size(maxdims))
       integer(hid_t) :: sid, plist
       integer :: err
-
       did = -1
+      dims = merge(0_hsize_t, maxdims, maxdims == H5S_UNLIMITED_F)
       call h5screate_simple_f(size(dims), dims, sid, err, maxdims)
       call h5io_check(err, 'cannot make the dataspace of the dataset', name, stat, errmsg)
       if (stat /= 0) return
@@ -543,246 +440,7 @@ contains
       end if
       call h5pclose_f(plist, err)
       call h5sclose_f(sid, err)
-   end subroutine create_dataset
-
-   !> Opens the existing dataset `name` (close with h5io_close_dataset).
-   subroutine h5io_open_dataset(loc, name, did, stat, errmsg)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name
-      integer(hid_t), intent(out) :: did
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      integer :: err
-      call h5dopen_f(loc, name, did, err)
-      call h5io_check(err, 'cannot open the dataset', name, stat, errmsg)
-      if (stat /= 0) did = -1
-   end subroutine h5io_open_dataset
-
-   !> The entries of the series did (its last dimension), -1 on failure.
-   integer function h5io_series_length(did) result(n)
-      integer(hid_t), intent(in) :: did
-      integer(hsize_t) :: dims(2), maxdims(2)
-      integer(hid_t) :: fspace
-      integer :: err, rank
-      n = -1
-      call h5dget_space_f(did, fspace, err)
-      if (err /= 0) return
-      call h5sget_simple_extent_dims_f(fspace, dims, maxdims, rank)
-      call h5sclose_f(fspace, err)
-      if (rank >= 1 .and. rank <= 2) n = int(dims(rank))
-   end function h5io_series_length
-
-   !> Cuts the series did, which must hold at least n entries, to its first
-   !> n (a restart: what a killed run wrote after its restart point goes).
-   subroutine h5io_cut_series(did, n, stat, errmsg)
-      integer(hid_t), intent(in) :: did
-      integer, intent(in) :: n
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      integer(hsize_t) :: dims(2), maxdims(2)
-      integer(hid_t) :: fspace
-      integer :: err, rank
-      call h5dget_space_f(did, fspace, err)
-      if (err == 0) call h5sget_simple_extent_dims_f(fspace, dims, maxdims, rank)
-      if (err == 0) call h5sclose_f(fspace, err)
-      call h5io_check(merge(0, 1, err == 0 .and. rank >= 1 .and. rank <= 2), &
-         'cannot read the extent of a series', '', stat, errmsg)
-      if (stat /= 0) return
-      if (dims(rank) < int(n, hsize_t)) then
-         call h5io_fail('a series holds fewer entries than it must', '', stat, errmsg)
-         return
-      end if
-      if (dims(rank) == int(n, hsize_t)) return
-      dims(rank) = int(n, hsize_t)
-      call h5dset_extent_f(did, dims(:rank), err)
-      call h5io_check(err, 'cannot cut a series', '', stat, errmsg)
-   end subroutine h5io_cut_series
-
-   !> The reals of the rank-1 series `name`.
-   subroutine read_reals(loc, name, x, stat, errmsg)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name
-      real(dp), allocatable, target, intent(out) :: x(:)
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      integer(hid_t) :: did
-      integer :: x_len
-      call open_series(loc, name, did, x_len, stat, errmsg)
-      if (stat /= 0) return
-      allocate (x(x_len))
-      call read_series(did, H5T_NATIVE_DOUBLE, c_loc(x), size(x), name, stat, errmsg)
-   end subroutine read_reals
-
-   !> The integers of the rank-1 series `name`.
-   subroutine read_integers(loc, name, x, stat, errmsg)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name
-      integer, allocatable, target, intent(out) :: x(:)
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      integer(hid_t) :: did
-      integer :: x_len
-      call open_series(loc, name, did, x_len, stat, errmsg)
-      if (stat /= 0) return
-      allocate (x(x_len))
-      call read_series(did, H5T_NATIVE_INTEGER, c_loc(x), size(x), name, stat, errmsg)
-   end subroutine read_integers
-
-   !> Opens the rank-1 series `name`: its dataset and its length (>= 0).
-   subroutine open_series(loc, name, did, n, stat, errmsg)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name
-      integer(hid_t), intent(out) :: did
-      integer, intent(out) :: n
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      n = 0
-      call h5io_open_dataset(loc, name, did, stat, errmsg)
-      if (stat == 0) n = max(0, h5io_series_length(did))
-   end subroutine open_series
-
-   !> Reads the n values of the open series did into buf (memory type
-   !> mem_type) and closes it.
-   subroutine read_series(did, mem_type, buf, n, name, stat, errmsg)
-      integer(hid_t), intent(in) :: did
-      integer(hid_t), intent(in) :: mem_type
-      type(c_ptr), intent(in) :: buf
-      integer, intent(in) :: n
-      character(len=*), intent(in) :: name
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      type(c_ptr) :: at
-      integer :: err
-      err = 0
-      at = buf                               ! (h5dread_f's buffer is intent(inout))
-      if (n > 0) call h5dread_f(did, mem_type, at, err)
-      call h5io_check(err, 'cannot read the dataset', name, stat, errmsg)
-      call h5dclose_f(did, err)
-   end subroutine read_series
-
-   !> Appends the reals x(:) to the rank-1 series did.
-   subroutine append_reals(did, x, stat, errmsg)
-      integer(hid_t), intent(in) :: did
-      real(dp), intent(in) :: x(:)
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      real(dp), allocatable, target :: buf(:)
-      stat = 0
-      if (size(x) == 0) return
-      buf = x
-      call grow_and_write(did, H5T_NATIVE_DOUBLE, 1, size(x), c_loc(buf), stat, errmsg)
-   end subroutine append_reals
-
-   !> Appends the integers x(:) to the rank-1 series did.
-   subroutine append_integers(did, x, stat, errmsg)
-      integer(hid_t), intent(in) :: did
-      integer, intent(in) :: x(:)
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      integer, allocatable, target :: buf(:)
-      stat = 0
-      if (size(x) == 0) return
-      buf = x
-      call grow_and_write(did, H5T_NATIVE_INTEGER, 1, size(x), c_loc(buf), stat, errmsg)
-   end subroutine append_integers
-
-   !> Appends the columns x(:, k) (of the dataset's nrow values each) to the
-   !> rank-2 series did.
-   subroutine append_columns(did, x, stat, errmsg)
-      integer(hid_t), intent(in) :: did
-      real(dp), intent(in) :: x(:,:)
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      real(dp), allocatable, target :: buf(:,:)
-      stat = 0
-      if (size(x, 2) == 0) return
-      buf = x
-      call grow_and_write(did, H5T_NATIVE_DOUBLE, 2, size(x, 2), c_loc(buf), stat, errmsg)
-   end subroutine append_columns
-
-   !> Extends the last dimension of did by n and writes the values at buf
-   !> (memory type tid) into the new slices: n values for rank 1, n columns
-   !> for rank 2.
-   subroutine grow_and_write(did, tid, rank, n, buf, stat, errmsg)
-      integer(hid_t), intent(in) :: did, tid
-      integer, intent(in) :: rank
-      integer, intent(in) :: n
-      type(c_ptr), intent(in) :: buf
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      integer(hsize_t) :: dims(rank), maxdims(rank), start(rank), count(rank)
-      integer(hid_t) :: fspace, mspace
-      integer :: err
-
-      call h5dget_space_f(did, fspace, err)
-      if (err == 0) call h5sget_simple_extent_dims_f(fspace, dims, maxdims, err)
-      if (err == rank) err = 0
-      if (err == 0) call h5sclose_f(fspace, err)
-      call h5io_check(err, 'cannot read the extent of a series', '', stat, errmsg)
-      if (stat /= 0) return
-      start = 0
-      start(rank) = dims(rank)
-      count = dims
-      count(rank) = int(n, hsize_t)
-      dims(rank) = dims(rank) + int(n, hsize_t)
-      call h5dset_extent_f(did, dims, err)
-      call h5io_check(err, 'cannot extend a series', '', stat, errmsg)
-      if (stat /= 0) return
-      call h5dget_space_f(did, fspace, err)
-      if (err == 0) call h5sselect_hyperslab_f(fspace, H5S_SELECT_SET_F, start, count, err)
-      if (err == 0) call h5screate_simple_f(rank, count, mspace, err)
-      call h5io_check(err, 'cannot select the new entry of a series', '', stat, errmsg)
-      if (stat /= 0) return
-      call h5dwrite_f(did, tid, buf, err, mem_space_id=mspace, file_space_id=fspace)
-      call h5io_check(err, 'cannot write the new entry of a series', '', stat, errmsg)
-      call h5sclose_f(mspace, err)
-      call h5sclose_f(fspace, err)
-   end subroutine grow_and_write
-
-   !> Creates `name`, a virtual dataset (HDF5 1.10's VDS) of nrow reals
-   !> that shows column `column` (from 1) of the rank-2 series `source`
-   !> (h5io_create_columns) of the file `source_file` ('.': the same file;
-   !> a name without a directory: the file beside this one): a view, no
-   !> copy. A reader sees a plain 1-D dataset (h5py, h5dump, XDMF readers);
-   !> `source` needs at least `column` columns when the view is read.
-   subroutine h5io_view_column(loc, name, source_file, source, nrow, column, stat, errmsg)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name, source_file, source
-      integer, intent(in) :: nrow, column
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      integer(hid_t) :: vspace, sspace, plist, did
-      integer :: err
-
-      call h5screate_simple_f(1, [int(nrow, hsize_t)], vspace, err)
-      call h5io_check(err, 'cannot make the dataspace of the view', name, stat, errmsg)
-      if (stat /= 0) return
-      call h5screate_simple_f(2, [int(nrow, hsize_t), int(column, hsize_t)], sspace, err, &
-         [int(nrow, hsize_t), H5S_UNLIMITED_F])
-      if (err == 0) call h5sselect_hyperslab_f(sspace, H5S_SELECT_SET_F, [0_hsize_t, int(column - 1, hsize_t)], &
-         [int(nrow, hsize_t), 1_hsize_t], err)
-      if (err == 0) call h5pcreate_f(H5P_DATASET_CREATE_F, plist, err)
-      if (err == 0) call h5pset_virtual_f(plist, vspace, source_file, source, sspace, err)
-      call h5io_check(err, 'cannot map the view onto '//source, name, stat, errmsg)
-      if (stat == 0) then
-         call h5dcreate_f(loc, name, H5T_NATIVE_DOUBLE, vspace, did, err, dcpl_id=plist)
-         call h5io_check(err, 'cannot create the view', name, stat, errmsg)
-         if (stat == 0) call h5dclose_f(did, err)
-         call h5pclose_f(plist, err)
-      end if
-      call h5sclose_f(sspace, err)
-      call h5sclose_f(vspace, err)
-   end subroutine h5io_view_column
-
-   !> Closes a dataset opened by h5io_create_series or h5io_create_columns.
-   subroutine h5io_close_dataset(did, stat, errmsg)
-      integer(hid_t), intent(in) :: did
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      integer :: err
-      call h5dclose_f(did, err)
-      call h5io_check(err, 'cannot close a dataset', '', stat, errmsg)
-   end subroutine h5io_close_dataset
+   end subroutine h5io_create_dataset
 
    ! ------------------------------------------------------------ messages
 

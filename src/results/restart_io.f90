@@ -1,13 +1,11 @@
-!> The pieces of a restart file (src/results/restart_point.f90): a stream of
-!> unformatted records, each part behind an eight-character tag that the
-!> reader checks, so that a file of another layout is refused, not misread.
-!> Every routine keeps the first failure in `stat`, so a part is a list of
-!> calls and one test at its end. Written: texts, reals, integers,
-!> logicals, an impactor (eq. 16, 21) and a contact load pattern with its
-!> cached polynomials (a restarted run must find them as they were to give
-!> the same bits). The seal: the file's last 8 bytes, the CRC-32 (zlib's)
-!> of every byte before them (put_seal, seal_holds). Not from the paper.
-!> More: docs/ROBUSTNESS.md.
+!> The pieces of a restart file (src/record/restart_point.f90): a stream of
+!> unformatted records, each part behind an eight-character tag the reader
+!> checks (a file of another layout is refused, not misread); every routine
+!> keeps the first failure in `stat`. Texts, reals, integers, logicals, an
+!> impactor (eq. 16, 21), a contact load pattern with its cached
+!> polynomials (the same bits after a restart), and the seal: the last 8
+!> bytes, zlib's CRC-32 of all before them. Not from the paper. More:
+!> docs/ROBUSTNESS.md.
 module restart_io
    use, intrinsic :: iso_fortran_env, only: int8, int64
    use kinds, only: dp

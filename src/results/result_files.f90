@@ -1,13 +1,11 @@
-!> The result files of every analysis, in one place: which files a run
-!> claims before any work (claim_results: nothing lost, nothing written
-!> through a link; above it), how a column file is opened and headed, the
-!> history's columns (one table for <prefix>_history.dat and the /history
-!> datasets of <prefix>.h5), and the summary's items (one list for
-!> <prefix>_summary.dat and /summary of <prefix>.h5).
-!> A column file: a title line, the deck echo ('# ' lines), one line per
-!> column with its meaning and unit, then the column names on one '#' line,
-!> then the rows. The summary: 'key = value' lines after the echo, the unit
-!> in the key's name (peak_force_N). Not from the paper. More: docs/OUTPUT.md.
+!> The result files of every analysis: the claim before any work (above
+!> claim_results), the column files and their headers, the history's
+!> columns (one table for <prefix>_history.dat and /history of <prefix>.h5)
+!> and the summary's items (one list for <prefix>_summary.dat and /summary).
+!> A column file: a title, the deck echo ('# ' lines), a line per column
+!> with its meaning and unit, the names on one '#' line, the rows; the
+!> summary: 'key = value' lines, the unit in the key (peak_force_N). Not
+!> from the paper. More: docs/OUTPUT.md.
 module result_files
    use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
@@ -26,7 +24,8 @@ module result_files
              col_energy_error, col_branch, col_contact_iter, col_solves, col_failure_index, col_failure_mode
    public :: summary_item_t, summary_real, summary_integer, summary_text
    public :: results_claim_t, result_suffixes, claim_results, release_results, claim_left_empty
-   public :: open_columns, write_column_block, write_history_row, history_slot, reserve_summary, write_summary_file
+   public :: keep_failure, open_columns, open_history, write_column_block, write_history_row, reserve_summary, &
+             write_summary_file
 
    !> One column of the history.
    type :: column_t
@@ -94,12 +93,9 @@ module result_files
    !> a few kilobytes.
    integer, parameter :: summary_reserve = 65536
 
-   !> Bytes of a history row on disk, newline included: the row, blanks, the
-   !> newline. A power of two, and the header padded to a multiple of it, so
-   !> that no row straddles a 4 KiB page: a write(2) within one page is whole
-   !> or absent, even under SIGKILL (Linux cuts a write at a page boundary
-   !> when a fatal signal arrives), and a killed run's rows are all whole.
-   !> Holds the widest row, with &strength's two columns.
+   !> Bytes of a history row on disk (the widest, newline included): a power
+   !> of two, the header padded to a multiple of it, so that no row straddles
+   !> a 4 KiB page and a killed run's rows are all whole.
    integer, parameter :: history_slot = 256
 
    !> Kinds of summary item.
@@ -132,30 +128,15 @@ contains
       end select
    end function result_suffixes
 
-   !> Nothing lost: before any work a run claims its files (claim_results,
-   !> the list of each analysis in result_suffixes): it checks their names
-   !> against the file system's NAME_MAX and PATH_MAX, creates the prefix's
-   !> directories (by the C library, no shell), refuses to start when one of
-   !> its files exists, the results of another run, unless &output overwrite
-   !> = .true. (or impact --overwrite), and whenever one of them, or the
-   !> temporary name it is written under, is a symbolic link (a write would
-   !> change the file the link points to, with overwrite or, for a dangling
-   !> link, even without) or no regular file; creates its first file
-   !> exclusively (of two runs started together with one prefix, one wins,
-   !> the other stops before it writes anything) and holds a lock on it until
-   !> it ends (two runs that both overwrite cannot write at once either).
-   !> The files are then opened by name (a Fortran unit, HDF5), each checked
-   !> again just before (open_columns) or written under a temporary name,
-   !> created exclusively, and renamed into place (the summary).
-   !>
-   !> Before any work: the prefix is a usable path, its names fit the file
-   !> system (NAME_MAX, PATH_MAX), its directories exist (created), no
-   !> result file of this run exists unless the deck says &output overwrite
-   !> = .true., and none, nor the temporary name it is written under
-   !> (<file>.tmp), is a symbolic link or anything but a regular file (no
-   !> write goes through a link, not even with overwrite); then the first
-   !> file is created exclusively when it does not exist and locked for the
-   !> run. Messages name the deck, &output, the prefix and the file.
+   !> Nothing lost: before any work a run claims its files (result_suffixes):
+   !> their names fit the file system (NAME_MAX, PATH_MAX), the prefix's
+   !> directories are created, no file of the run exists unless &output
+   !> overwrite, and none, nor its temporary name <file>.tmp, is a symbolic
+   !> link or anything but a regular file (no write goes through a link);
+   !> then the first file is created exclusively (of two runs with one prefix
+   !> one wins) and locked until the run ends. Each file is checked again
+   !> when it is opened (open_columns) or written under its temporary name
+   !> and renamed (the summary). Messages name the deck, the prefix, the file.
    subroutine claim_results(deck, suffixes, claim, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< effective deck (prefix, overwrite)
       character(len=*), intent(in) :: suffixes(:)   !< the run's file names after the prefix
@@ -164,7 +145,6 @@ contains
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=:), allocatable :: head, why
       character(len=msg_len) :: iomsg
-
       head = deck%source // ": &output: prefix = '" // short_path(deck%prefix) // "': "
       stat = 1
       why = prefix_problem(deck%prefix)
@@ -202,9 +182,7 @@ contains
    end subroutine claim_results
 
    !> A run killed in its set-up left its claim and nothing else: the first
-   !> file exists, empty, and no other result file does (a restart of it
-   !> starts at step 0 over that file; the lock still tells a run that is
-   !> in its set-up now).
+   !> file exists, empty, and no other result file does.
    logical function claim_left_empty(prefix, suffixes) result(left)
       character(len=*), intent(in) :: prefix        !< the prefix
       character(len=*), intent(in) :: suffixes(:)   !< the run's file names after it
@@ -216,10 +194,8 @@ contains
       end do
    end function claim_left_empty
 
-   !> Why the run's file names cannot be made on the file system the prefix
-   !> is on, '' when they can: a part of the prefix or a file's name
-   !> (with .tmp, the longest) longer than NAME_MAX, a path longer than
-   !> PATH_MAX.
+   !> Why the run's file names cannot be made where the prefix is ('' when
+   !> they can): a name (with .tmp) beyond NAME_MAX, a path beyond PATH_MAX.
    function names_problem(prefix, suffixes) result(why)
       character(len=*), intent(in) :: prefix        !< the prefix
       character(len=*), intent(in) :: suffixes(:)   !< the file names after it
@@ -232,10 +208,9 @@ contains
       why = name_problem(prefix // trim(suffixes(longest)) // temporary, name_max(prefix), path_max)
    end function names_problem
 
-   !> Why the run cannot write its files, '' when it can: one of them, or
-   !> the temporary name it is written under, is a symbolic link (even a
-   !> dangling one), a directory or another kind of file; one exists and
-   !> overwrite is false (the results of another run).
+   !> Why the run cannot write its files ('' when it can): one of them or its
+   !> temporary name is a link, a directory or another kind of file, or one
+   !> exists and overwrite is false.
    function files_problem(prefix, suffixes, overwrite) result(why)
       character(len=*), intent(in) :: prefix        !< the prefix
       character(len=*), intent(in) :: suffixes(:)   !< the file names after it
@@ -273,9 +248,8 @@ contains
       if (read_only_file_system(prefix)) note = ' (the file system is read-only)'
    end function read_only_note
 
-   !> Ends a claim: the lock is released; with `discard`, the first file is
-   !> removed when the claim created it and nothing has been written to it
-   !> (a run that failed before its results began leaves nothing behind).
+   !> Ends a claim: the lock released; with `discard`, the first file removed
+   !> when the claim created it and it is still empty.
    subroutine release_results(claim, discard)
       type(results_claim_t), intent(inout) :: claim  !< the claim
       logical, intent(in) :: discard                 !< remove the first file if still as created
@@ -291,21 +265,30 @@ contains
 
    ! ======================================================== column files
 
+   !> The first failure kept: stat and errmsg take ios and text when stat is 0.
+   pure subroutine keep_failure(stat, errmsg, ios, text)
+      integer, intent(inout) :: stat              !< 0, or the first failure
+      character(len=*), intent(inout) :: errmsg   !< its reason
+      integer, intent(in) :: ios                  !< the status of the call just made
+      character(len=*), intent(in) :: text        !< its reason
+      if (ios == 0 .or. stat /= 0) return
+      stat = ios
+      errmsg = text
+   end subroutine keep_failure
+
    !> Opens <prefix><suffix> (claimed before) and writes its header: title,
    !> deck echo, the columns with their meanings, the names.
-   subroutine open_columns(deck, suffix, title, names, texts, unit, path, stat, errmsg, align)
+   subroutine open_columns(deck, suffix, title, names, texts, unit, stat, errmsg)
       type(deck_t), intent(in) :: deck            !< effective deck (echoed; prefix)
       character(len=*), intent(in) :: suffix      !< file name after the prefix, e.g. '_static.dat'
       character(len=*), intent(in) :: title       !< first line, after '# '
       character(len=*), intent(in) :: names(:)    !< column names (with their unit)
       character(len=*), intent(in) :: texts(:)    !< column meanings (with their unit)
-      integer, intent(out) :: unit                !< the open file
-      character(len=:), allocatable, intent(out) :: path   !< its path
+      integer, intent(out) :: unit                !< the open file, <prefix><suffix>
       integer, intent(out) :: stat                !< 0 on success
       character(len=*), intent(inout) :: errmsg   !< reason on failure
-      integer, intent(in), optional :: align      !< header length made a multiple of it (history_slot)
       character(len=msg_len) :: iomsg
-      integer :: pad
+      character(len=:), allocatable :: path
       path = deck%prefix // suffix
       if (path_kind(path) == path_link) then
          stat = 1
@@ -319,29 +302,46 @@ contains
             // short_path(path) // ': ' // trim(iomsg)
          return
       end if
-      call write_header(0)
-      if (.not. present(align)) return
-      ! the names line padded with blanks to end the header at a multiple of align
-      pad = int(modulo(-file_size(path), int(align, int64)))
-      if (pad == 0) return
-      rewind (unit)
-      call write_header(pad)
-
-   contains
-
-      subroutine write_header(blanks)
-         integer, intent(in) :: blanks            !< after the names line
-         write (unit, '(a)') '# ' // title
-         call echo_deck(deck, unit, '# ')
-         call write_column_block(unit, names, texts, blanks)
-         flush (unit)
-      end subroutine write_header
-
+      call write_header(unit, deck, title, names, texts, 0)
    end subroutine open_columns
 
-   !> The column block of a file's header: '# columns:', a line per column
-   !> (number, name, meaning), then the names on one '#' line, the last
-   !> line of the header (followed by `blanks` blanks when given).
+   !> The history file, opened as open_columns does, its header padded with
+   !> blanks after the names line to end at a multiple of history_slot.
+   subroutine open_history(deck, title, names, texts, unit, path, stat, errmsg)
+      type(deck_t), intent(in) :: deck            !< effective deck (echoed; prefix)
+      character(len=*), intent(in) :: title       !< first line, after '# '
+      character(len=*), intent(in) :: names(:)    !< column names (with their unit)
+      character(len=*), intent(in) :: texts(:)    !< column meanings (with their unit)
+      integer, intent(out) :: unit                !< the open file
+      character(len=:), allocatable, intent(out) :: path   !< its path
+      integer, intent(out) :: stat                !< 0 on success
+      character(len=*), intent(inout) :: errmsg   !< reason on failure
+      integer :: pad
+      path = deck%prefix // '_history.dat'
+      call open_columns(deck, '_history.dat', title, names, texts, unit, stat, errmsg)
+      if (stat /= 0) return
+      pad = int(modulo(-file_size(path), int(history_slot, int64)))
+      if (pad == 0) return
+      rewind (unit)
+      call write_header(unit, deck, title, names, texts, pad)
+   end subroutine open_history
+
+   !> A column file's header: title, deck echo, column block (`blanks` after the names).
+   subroutine write_header(unit, deck, title, names, texts, blanks)
+      integer, intent(in) :: unit                 !< the open file
+      type(deck_t), intent(in) :: deck            !< effective deck (echoed)
+      character(len=*), intent(in) :: title       !< first line, after '# '
+      character(len=*), intent(in) :: names(:)    !< column names (with their unit)
+      character(len=*), intent(in) :: texts(:)    !< column meanings (with their unit)
+      integer, intent(in) :: blanks               !< after the names line
+      write (unit, '(a)') '# ' // title
+      call echo_deck(deck, unit, '# ')
+      call write_column_block(unit, names, texts, blanks)
+      flush (unit)
+   end subroutine write_header
+
+   !> The column block of a header: '# columns:', a line per column, then the
+   !> names on one '#' line (and `blanks` blanks).
    subroutine write_column_block(unit, names, texts, blanks)
       integer, intent(in) :: unit                 !< open formatted unit
       character(len=*), intent(in) :: names(:)    !< column names (with their unit)
@@ -367,9 +367,8 @@ contains
       history_width = merge(nhist_strength, nhist, with_strength)
    end function history_width
 
-   !> One row of the history, values in SI in the order of history_columns
-   !> (the first size(values) columns), written in the file's units,
-   !> flushed, and checked on disk: the file must have grown by the row.
+   !> One history row, SI values in history_columns' order, written in the
+   !> file's units, flushed, and checked on disk (the file grew by the row).
    subroutine write_history_row(unit, probe, values, bytes, stat, iomsg)
       integer, intent(in) :: unit                 !< the history file
       type(file_probe_t), intent(in) :: probe     !< the same file, open for its length on disk

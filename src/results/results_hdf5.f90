@@ -1,17 +1,10 @@
-!> The full results of a run in one HDF5 file, <prefix>.h5, beside the column
-!> files (&output hdf5 = .true., the default): the deck, the mesh, the
-!> history's columns, the nodal fields every fields_every steps, the state
-!> at the largest contact force (/peak), the summary, and with &strength
-!> /strength (src/results/damage_record.f90). SI units, every number with
-!> its unit; HDF5 1.10's format, every dataset checksummed. The layout:
-!> docs/OUTPUT.md. A file that opens at every instant (SWMR): above
-!> results_open; output in blocks, once a second: above results_tick.
-!> Usage (src/results/run_recorder.f90): results_open after the history file is
-!> open (or results_reopen for a restart), results_append_history after
-!> every history row, results_state after every step, results_tick at the
-!> end of every step, results_flush when the file must be up to date now,
-!> results_closing and results_finish at the end (also after a failure).
-!> With hdf5 = .false. they write nothing. Not from the paper.
+!> The full results of a run in one HDF5 file, <prefix>.h5 (&output hdf5):
+!> the deck, the mesh, the history's columns, the nodal fields every
+!> fields_every steps, the state at the largest force (/peak), the summary,
+!> with &strength /strength (damage_record.f90); SI units, every dataset
+!> checksummed. The layout: docs/OUTPUT.md. A file that opens at every
+!> instant: above results_open; output in blocks once a second: above
+!> results_tick. Called by src/record/run_recorder.f90. Not from the paper.
 module results_hdf5
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char
@@ -24,34 +17,29 @@ module results_hdf5
    use c_library, only: c_unlink
    use file_system, only: rename_file
    use mesh, only: mesh_t, ndof_node, freedom_name
-   use result_files, only: column_t, history_columns, nhist_strength, history_width, summary_item_t
+   use result_files, only: keep_failure, column_t, history_columns, nhist_strength, history_width, summary_item_t
    use hdf5_io, only: h5io_start, h5io_create, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
-      h5io_update_attr, h5io_write, h5io_rewrite, h5io_create_series, h5io_create_columns, h5io_append_block, &
-      h5io_open_dataset, h5io_cut_series, h5io_read_series, h5io_close_dataset, h5io_exists, h5io_delete, h5io_real, &
-      h5io_integer
+      h5io_update_attr, h5io_write, h5io_rewrite, h5io_exists, h5io_delete
+   use hdf5_series, only: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_open_dataset, &
+      h5io_cut_series, h5io_read_series, h5io_close_dataset, h5io_real, h5io_integer
    use results_xdmf, only: xdmf_t, xdmf_open, xdmf_start, xdmf_resume, xdmf_snapshots, xdmf_batch_close, &
       xdmf_grow, xdmf_cut, xdmf_peak, xdmf_close
    implicit none
    private
-   public :: results_file_t, results_open, results_reopen, results_append_history, results_state, &
+   public :: results_file_t, results_point_t, results_point, results_open, results_reopen, results_append_history, results_state, &
              results_tick, results_flush, results_leave, results_closing, results_finish
 
    integer, parameter :: units_len = 8
    !> Units of the nodal fields u, v, w, psi_x, psi_y.
    character(len=units_len), parameter :: field_units(ndof_node) = [character(len=units_len) :: &
       'm', 'm', 'm', 'rad', 'rad']
-   !> Values per chunk of a series (4 KiB): the history's columns and the
-   !> snapshots' times hold this many entries a chunk, their fields as many
-   !> whole snapshots as fit (one at least). A chunk costs its checksum and
-   !> an entry of the dataset's index: a second of a fast run's rows in
-   !> chunks of 128 took twice the time to write.
+   !> Values per chunk of a series (4 KiB); the fields' chunks hold as many
+   !> whole snapshots as fit (one at least).
    integer, parameter :: hist_chunk = 512
    !> Wall time between two flushes (s): a killed run loses at most this.
    real(dp), parameter :: flush_seconds = 1.0_dp
-   !> Rows that may wait in memory before a flush (65536 rows of 18 numbers
-   !> are 9 MB), and the memory the waiting snapshots may take (at least
-   !> min_snapshots of them): a flush costs an opening of the file, so a
-   !> fast run should make one a second, not one per block.
+   !> Rows that may wait before a flush (65536 rows of 18 numbers: 9 MB), and
+   !> the memory the waiting snapshots may take (min_snapshots at least).
    integer, parameter :: flush_rows = 65536, min_snapshots = 16
    integer(int64), parameter :: buffer_bytes = 8*1024*1024
    !> An open results file and the ids of its growing datasets.
@@ -83,10 +71,25 @@ module results_hdf5
       integer(int64) :: clock_rate = 1                  !< system_clock counts per second
    end type results_file_t
 
+   !> What a restart point holds of <prefix>.h5 (src/record/restart_point.f90).
+   type :: results_point_t
+      integer :: rows = 0, snaps = 0                !< history rows and snapshots in the file
+      integer :: peak_step = 0                      !< the peak: its step,
+      real(dp) :: peak_time = 0, peak_force = 0     !< time (s), force (N)
+      real(dp), allocatable :: peak_fields(:,:)     !< and nodal fields (ndof_node, nnode)
+   end type results_point_t
+
 contains
 
-   !> What results_open and results_reopen share: the path, the buffers, the
-   !> clock (results_file_t); nothing is opened.
+   !> What the file holds once flushed, for a restart point.
+   pure function results_point(rf) result(pt)
+      type(results_file_t), intent(in) :: rf        !< the results file
+      type(results_point_t) :: pt
+      pt = results_point_t(rf%rows_written + rf%nrow, rf%snaps_written + rf%nsnap, rf%peak_step, rf%peak_time, &
+                           rf%peak_force, rf%peak_fields)
+   end function results_point
+
+   !> What results_open and results_reopen share; nothing is opened.
    subroutine prepare(deck, msh, rf)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(mesh_t), intent(in) :: msh               !< the mesh with its equation numbers
@@ -101,45 +104,25 @@ contains
       rf%peak_fields = 0.0_dp
    end subroutine prepare
 
-   !> A file that opens at every instant. results_open makes the file under a
-   !> temporary name, <prefix>.h5.tmp, writes all but what grows (the deck,
-   !> the mesh, the empty series, /peak, /summary status = 'running'), closes
-   !> it and renames it into place; from then on the file is open only while
-   !> it is written, once a second, and written then in HDF5's SWMR mode
-   !> (single writer, multiple readers), which changes existing datasets and
-   !> attributes only and orders the writes of HDF5's metadata so that the
-   !> file on disk is consistent at every instant: a run killed (SIGKILL,
-   !> OOM, a node lost) leaves a <prefix>.h5 that opens and reads, with every
-   !> step up to its last flush (all but the last second) and /summary status
-   !> = 'running'; another process reads it while the run goes (h5py with
-   !> swmr=True at any time; any reader between the writes). A kill in the
-   !> middle of a write (a few ms in the second) leaves the file consistent
-   !> too, but marked as open for writing: SWMR readers (h5py's swmr=True,
-   !> tools/hdf5_read.f90) open it, others after `h5clear -s <prefix>.h5`, and
-   !> impact --restart clears the mark. The XDMF views, objects that SWMR mode
-   !> cannot create, are in their own file (src/results/results_xdmf.f90). The
-   !> end of a run writes /summary (results_finish), attributes SWMR mode
-   !> cannot make, with the file open as usual, a few ms.
-   !>
-   !> Creates <prefix>.h5 (when deck%hdf5) and writes the deck, the mesh, the
-   !> code version and the empty growing datasets; the summary says
-   !> 'running'. Made under a temporary name and renamed into place once
-   !> whole (as above): a failure leaves no <prefix>.h5.
+   !> A file that opens at every instant: results_open writes all but what
+   !> grows (deck, mesh, empty series, /peak, /summary status 'running') under
+   !> <prefix>.h5.tmp and renames it into place (a failure leaves no file);
+   !> from then on the file is open only while it is written, once a second,
+   !> in HDF5's SWMR mode, which keeps it consistent on disk at every instant:
+   !> a killed run leaves a file that reads, up to its last flush, status
+   !> 'running'; a kill inside a write leaves it marked open (h5clear -s, or
+   !> impact --restart, clears the mark). The XDMF views, which SWMR cannot
+   !> create, are in their own file; /summary is written at the end
+   !> (results_finish) with the file open as usual.
    subroutine results_open(deck, msh, rf, stat, errmsg)
-      !> The effective deck.
-      type(deck_t), intent(in) :: deck
-      !> The mesh with its equation numbers.
-      type(mesh_t), intent(in) :: msh
-      !> The results file, active on return when deck%hdf5.
-      type(results_file_t), intent(out) :: rf
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
+      type(deck_t), intent(in) :: deck   !< The effective deck.
+      type(mesh_t), intent(in) :: msh   !< The mesh with its equation numbers.
+      type(results_file_t), intent(out) :: rf   !< The results file, active on return when deck%hdf5.
+      integer, intent(out) :: stat   !< 0 on success.
+      character(len=*), intent(inout) :: errmsg   !< Reason on failure.
       character(len=msg_len) :: why
       integer(c_int) :: gone
       integer :: ios
-
       stat = 0
       call system_clock(rf%flushed_at, rf%clock_rate)   ! (results_tick: restart points without HDF5 too)
       if (.not. deck%hdf5) return
@@ -174,20 +157,13 @@ contains
       rf%active = .true.
    end subroutine results_open
 
-   !> A restart (src/results/restart_point.f90): opens the run's <prefix>.h5
-   !> again and cuts it back to its restart point, `rows` history rows and
-   !> `snaps` snapshots, with the peak of that point (what a killed run
-   !> wrote after it goes; a stopped run's /summary goes back to 'running',
-   !> its /strength, written at its end, goes);
-   !> the XDMF views are made anew (src/results/results_xdmf.f90).
-   subroutine results_reopen(deck, msh, rows, snaps, peak_step, peak_time, peak_force, peak_fields, rf, &
-                             stat, errmsg)
+   !> A restart (src/record/restart_point.f90): <prefix>.h5 cut back to its
+   !> restart point pt (rows, snapshots, peak); a stopped run's /summary goes
+   !> back to 'running', its /strength goes; the XDMF views are made anew.
+   subroutine results_reopen(deck, msh, pt, rf, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(mesh_t), intent(in) :: msh               !< the mesh with its equation numbers
-      integer, intent(in) :: rows, snaps            !< history rows and snapshots at the restart point
-      integer, intent(in) :: peak_step              !< the peak there: its step,
-      real(dp), intent(in) :: peak_time, peak_force !< time (s), force (N)
-      real(dp), intent(in) :: peak_fields(:,:)      !< and nodal fields (ndof_node, nnode)
+      type(results_point_t), intent(in) :: pt       !< the file at the restart point
       type(results_file_t), intent(out) :: rf       !< the results file, active on return when deck%hdf5
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
@@ -195,28 +171,27 @@ contains
       real(dp), allocatable :: time(:), force(:)
       integer, allocatable :: step(:)
       integer :: c, k
-
       stat = 0
       call system_clock(rf%flushed_at, rf%clock_rate)
       if (.not. deck%hdf5) return
       call prepare(deck, msh, rf)
-      rf%peak_step = peak_step;  rf%peak_time = peak_time;  rf%peak_force = peak_force
-      rf%peak_fields = peak_fields
+      rf%peak_step = pt%peak_step;  rf%peak_time = pt%peak_time;  rf%peak_force = pt%peak_force
+      rf%peak_fields = pt%peak_fields
       why = ''
       call h5io_start(stat, why)
       if (stat == 0) call h5io_open(rf%path, .false., rf%fid, stat, why)
       do c = 1, rf%ncol
-         call cut(rf%hist(c), 'history/' // trim(history_columns(c)%name), rows)
+         call cut(rf%hist(c), 'history/' // trim(history_columns(c)%name), pt%rows)
       end do
-      call cut(rf%snap_time, 'fields/time', snaps)
-      call cut(rf%snap_step, 'fields/step', snaps)
-      call cut(rf%snap_force, 'fields/force', snaps)
+      call cut(rf%snap_time, 'fields/time', pt%snaps)
+      call cut(rf%snap_step, 'fields/step', pt%snaps)
+      call cut(rf%snap_force, 'fields/force', pt%snaps)
       do k = 1, ndof_node
-         call cut(rf%snap_field(k), 'fields/' // trim(freedom_name(k)), snaps)
+         call cut(rf%snap_field(k), 'fields/' // trim(freedom_name(k)), pt%snaps)
       end do
-      if (stat == 0) call xdmf_cut(rf%xdmf, deck, msh, rf%fid, snaps, stat, why)
-      if (stat == 0) call h5io_update_attr(rf%fid, 'history', 'rows', rows, stat, why)
-      if (stat == 0) call h5io_update_attr(rf%fid, 'fields', 'snapshots', snaps, stat, why)
+      if (stat == 0) call xdmf_cut(rf%xdmf, deck, msh, rf%fid, pt%snaps, stat, why)
+      if (stat == 0) call h5io_update_attr(rf%fid, 'history', 'rows', pt%rows, stat, why)
+      if (stat == 0) call h5io_update_attr(rf%fid, 'fields', 'snapshots', pt%snaps, stat, why)
       if (stat == 0) call write_peak(rf, stat, why)
       if (stat == 0) then
          if (h5io_exists(rf%fid, 'strength')) call h5io_delete(rf%fid, 'strength', stat, why)
@@ -233,11 +208,9 @@ contains
          errmsg = rf%path // ': ' // trim(why)
          return
       end if
-      rf%rows_written = rows;  rf%snaps_written = snaps
+      rf%rows_written = pt%rows;  rf%snaps_written = pt%snaps
       rf%active = .true.
-
    contains
-
       !> The series `name` opened (did) and cut to n entries.
       subroutine cut(did, name, n)
          integer(hid_t), intent(inout) :: did
@@ -247,12 +220,9 @@ contains
          if (stat == 0) call h5io_cut_series(did, n, stat, why)
          if (stat /= 0 .and. index(why, "'") == 0) why = trim(why) // " '" // name // "'"
       end subroutine cut
-
    end subroutine results_reopen
 
-   !> Appends one history row (SI units, in the order of history_columns)
-   !> to /history: it waits in memory for the next flush (above results_tick),
-   !> made now when the rows fill their buffer.
+   !> One history row (SI, history_columns' order), kept for the next flush.
    subroutine results_append_history(rf, row, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file
       real(dp), intent(in) :: row(:)                !< the row just written to the history file, SI (rf%ncol)
@@ -266,10 +236,9 @@ contains
       rf%rows(:, rf%nrow) = row
    end subroutine results_append_history
 
-   !> The nodal fields u, v, w, psi_x, psi_y of the state at the end of a
-   !> step: a snapshot for /fields when `snapshot` is true, and the state of
-   !> /peak when the contact force exceeds the largest so far; both wait in
-   !> memory for the next flush.
+   !> The nodal fields of the state at the end of a step: a snapshot for
+   !> /fields when `snapshot`, and /peak's state when the force is the largest
+   !> so far; both kept for the next flush.
    subroutine results_state(rf, step, time, force, d, snapshot, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file
       integer, intent(in) :: step                   !< time step of the state
@@ -278,7 +247,6 @@ contains
       logical, intent(in) :: snapshot               !< append it to /fields
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
-
       stat = 0
       if (.not. rf%active) return
       if (snapshot) then
@@ -296,20 +264,10 @@ contains
       rf%peak_waiting = .true.
    end subroutine results_state
 
-   !> Output that costs little and loses nothing: the history rows, the
-   !> snapshots and the peak state wait in memory and are written in blocks by
-   !> results_flush: at the end of a step once flush_seconds of wall time have
-   !> passed since the last flush (results_tick, which then says a restart
-   !> point is due: src/results/restart_point.f90), when the buffers are full
-   !> (flush_rows rows, or buffer_bytes of snapshots), on a warning
-   !> (src/results/run_recorder.f90), and at the end, whatever the end
-   !> (completed, failed, stopped by a signal). Writing a row costs a copy
-   !> into memory; a flush costs an opening of the file and one write per
-   !> dataset (docs/PERFORMANCE.md, "What the output costs").
-   !>
-   !> The end of a step: once flush_seconds have passed since the last
-   !> flush, the file is flushed and `due` says that a restart point is due
-   !> (above results_tick); the same clock runs without an HDF5 file.
+   !> Output in blocks: rows, snapshots and the peak wait in memory for
+   !> results_flush: once flush_seconds have passed at the end of a step (a
+   !> restart point is then due; the clock runs without HDF5 too), when the
+   !> buffers are full, on a warning, at the end (docs/PERFORMANCE.md).
    subroutine results_tick(rf, due, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file
       logical, intent(out) :: due                   !< a flush was made: the files hold every step so far
@@ -324,10 +282,7 @@ contains
       rf%flushed_at = now
    end subroutine results_tick
 
-   !> Writes what waits in memory (history rows, snapshots, the peak) in one
-   !> opening of the file in SWMR mode (above results_open): on return the file
-   !> on disk holds every row given so far, and /history rows and /fields
-   !> snapshots say so; then the XDMF views of the new snapshots.
+   !> Writes what waits in one opening of the file in SWMR mode, then the XDMF views.
    subroutine results_flush(rf, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file
       integer, intent(out) :: stat                  !< 0 on success
@@ -335,7 +290,6 @@ contains
       character(len=msg_len) :: why
       character(len=:), allocatable :: part
       integer :: batch
-
       stat = 0
       if (.not. rf%active .or. rf%broken) return
       call system_clock(rf%flushed_at)
@@ -391,8 +345,7 @@ contains
       end do columns
    end subroutine write_rows
 
-   !> The waiting snapshots appended to /fields (and, for the XDMF's whole
-   !> plate, their mirror: src/results/results_xdmf.f90).
+   !> The waiting snapshots appended to /fields (and the XDMF's mirror).
    subroutine write_snapshots(rf, stat, why)
       type(results_file_t), intent(inout) :: rf     !< the results file, open
       integer, intent(out) :: stat                  !< 0 on success
@@ -415,8 +368,7 @@ contains
       if (stat == 0) call xdmf_grow(rf%xdmf, rf%fid, rf%snap_fields(:, :, :n), stat, why)
    end subroutine write_snapshots
 
-   !> /peak (its fields and step, time, force, rewritten in place) and the
-   !> XDMF's mirror of it.
+   !> /peak rewritten in place, and the XDMF's mirror of it.
    subroutine write_peak(rf, stat, why)
       type(results_file_t), intent(inout) :: rf     !< the results file, open
       integer, intent(out) :: stat                  !< 0 on success
@@ -433,9 +385,7 @@ contains
       if (stat == 0) call xdmf_peak(rf%xdmf, rf%fid, rf%peak_fields, stat, why)
    end subroutine write_peak
 
-   !> Closes the series open in the file and the file itself (its data and
-   !> metadata written, SWMR's mark cleared), keeping the first failure;
-   !> also after a failure, so that the file is left closed.
+   !> Closes the series open in the file and the file, keeping the first failure.
    subroutine close_window(rf, stat, why)
       type(results_file_t), intent(inout) :: rf     !< the results file
       integer, intent(inout) :: stat                !< 0 on success; the first failure is kept
@@ -454,38 +404,25 @@ contains
       if (rf%fid < 0) return
       call h5io_close(rf%fid, ios, text)
       rf%fid = -1
-      if (ios /= 0 .and. stat == 0) then
-         stat = ios
-         why = text
-      end if
-
+      call keep_failure(stat, why, ios, text)
    contains
-
       subroutine close_one(did)
          integer(hid_t), intent(inout) :: did
          if (did < 0) return
          call h5io_close_dataset(did, ios, text)
          did = -1
-         if (ios /= 0 .and. stat == 0) then
-            stat = ios
-            why = text
-         end if
+         call keep_failure(stat, why, ios, text)
       end subroutine close_one
-
    end subroutine close_window
 
-   !> Another of the run's writes failed (the history: a full disk, the
-   !> file-size limit): the file is written no more and left as it was at its
-   !> last flush, which opens; writing the summary into it now could leave
-   !> its metadata half written.
+   !> Another write failed (a full disk): the file is left as at its last flush.
    subroutine results_leave(rf)
       type(results_file_t), intent(inout) :: rf     !< the results file
       rf%broken = rf%active
    end subroutine results_leave
 
-   !> The end of a run, before its last words (/summary, /strength): what
-   !> waits is written, and the file is opened as usual (not SWMR) for
-   !> them, until results_finish. A file a write failed in is left alone.
+   !> The end of a run: what waits is written, and the file opened as usual
+   !> (not SWMR) for /summary and /strength until results_finish.
    subroutine results_closing(rf)
       type(results_file_t), intent(inout) :: rf     !< the results file
       character(len=msg_len) :: why
@@ -497,9 +434,8 @@ contains
       if (rf%broken) rf%active = .false.            ! (nothing more is written into it)
    end subroutine results_closing
 
-   !> Writes /summary (the items of <prefix>_summary.dat, SI units, and the
-   !> status) and closes the file, and the XDMF's last XML. A file a write
-   !> failed in is left as it was at its last flush (stat 1).
+   !> Writes /summary (the items of <prefix>_summary.dat, SI, the status),
+   !> closes the file and writes the XDMF's last XML (stat 1 after a failure).
    subroutine results_finish(rf, status, items, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file; inactive on return
       character(len=*), intent(in) :: status        !< 'completed', 'failed at step N', ...
@@ -508,12 +444,10 @@ contains
       character(len=*), intent(inout) :: errmsg     !< reason on failure (the first)
       character(len=msg_len) :: why
       integer :: k, ios
-
       stat = 0
       call results_closing(rf)
       if (rf%broken) then
-         ! a write failed (a full disk, the file-size limit): writing more would
-         ! write the file's metadata for data that is not there
+         ! a write failed: more would write the file's metadata for data not there
          stat = 1
          errmsg = rf%path//': a write failed; the file is left as it was at its last flush, unfinished'
          rf%active = .false.
@@ -521,41 +455,25 @@ contains
       end if
       if (.not. rf%active) return
       why = ''
-      call put_string('status', status)
+      call attr_text(rf%fid, 'summary', 'status', status, stat, why)
       summary_items: do k = 1, size(items)
          if (items(k)%key == 'status') cycle summary_items
          select case (items(k)%kind)
          case (1)
-            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name, items(k)%si, stat, why)
-            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name//'_units', items(k)%unit, stat, why)
+            call attr_unit(rf%fid, 'summary', items(k)%name, items(k)%si, items(k)%unit, stat, why)
          case (2)
-            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name, nint(items(k)%si), stat, why)
-            if (stat == 0) call h5io_set_attr(rf%fid, 'summary', items(k)%name//'_units', '-', stat, why)
+            call attr_unit(rf%fid, 'summary', items(k)%name, nint(items(k)%si), '-', stat, why)
          case default
-            call put_string(items(k)%name, items(k)%text)
+            call attr_text(rf%fid, 'summary', items(k)%name, items(k)%text, stat, why)
          end select
       end do summary_items
       if (stat /= 0) errmsg = rf%path//': /summary: '//trim(why)
       ios = 0
       call close_window(rf, ios, why)
-      if (ios /= 0 .and. stat == 0) then
-         stat = ios
-         errmsg = rf%path//': '//trim(why)
-      end if
+      call keep_failure(stat, errmsg, ios, rf%path//': '//trim(why))
       call xdmf_close(rf%xdmf, status, ios, why)
-      if (ios /= 0 .and. stat == 0) then
-         stat = ios
-         errmsg = rf%xdmf%path//': '//trim(why)
-      end if
+      call keep_failure(stat, errmsg, ios, rf%xdmf%path//': '//trim(why))
       rf%active = .false.
-
-   contains
-
-      subroutine put_string(name, value)
-         character(len=*), intent(in) :: name, value
-         if (stat == 0) call h5io_set_attr(rf%fid, 'summary', name, trim(value), stat, why)
-      end subroutine put_string
-
    end subroutine results_finish
 
    !> The root's attributes: what wrote the file, and when.
@@ -565,7 +483,6 @@ contains
       character(len=*), intent(inout) :: why        !< reason on failure
       character(len=8) :: date
       character(len=10) :: clock
-
       call date_and_time(date=date, time=clock)
       call attr_text(fid, '.', 'title', 'impact: low-velocity impact of a composite laminate (Choi, Hong & Lee 1991)', &
          stat, why)
@@ -574,8 +491,7 @@ contains
          clock(3:4)//':'//clock(5:6), stat, why)
    end subroutine write_root
 
-   !> /history: one empty extendible dataset per history column of the run,
-   !> with its units and meaning.
+   !> /history: an empty series per history column of the run, its units and meaning.
    subroutine create_history(rf, every, stat, why)
       type(results_file_t), intent(inout) :: rf     !< the results file (its history datasets on return)
       integer, intent(in) :: every                  !< &output every (steps between rows)
@@ -583,11 +499,10 @@ contains
       character(len=*), intent(inout) :: why        !< reason on failure
       type(column_t) :: col
       integer :: c
-
       if (stat /= 0) return
       call h5io_group(rf%fid, 'history', stat, why)
-      call attr_int(rf%fid, 'history', 'every', every, 'steps', stat, why)
-      call attr_int(rf%fid, 'history', 'rows', 0, '-', stat, why)
+      call attr_unit(rf%fid, 'history', 'every', every, 'steps', stat, why)
+      call attr_unit(rf%fid, 'history', 'rows', 0, '-', stat, why)
       columns: do c = 1, rf%ncol
          if (stat /= 0) exit columns
          col = history_columns(c)      ! (a copy, not an associate name: see src/deck/input_deck.f90)
@@ -598,9 +513,7 @@ contains
       end do columns
    end subroutine create_history
 
-   !> /fields: the empty extendible datasets of the snapshots, their times,
-   !> steps and forces, and one column of nnode values per snapshot of each
-   !> nodal field.
+   !> /fields: the empty series of the snapshots, their times, steps, forces and fields.
    subroutine create_fields(rf, fields_every, nnode, stat, why)
       type(results_file_t), intent(inout) :: rf     !< the results file (its snapshot datasets on return)
       integer, intent(in) :: fields_every           !< &output fields_every (steps between snapshots)
@@ -608,11 +521,10 @@ contains
       integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
       character(len=*), intent(inout) :: why        !< reason on failure
       integer :: k
-
       if (stat /= 0) return
       call h5io_group(rf%fid, 'fields', stat, why)
-      call attr_int(rf%fid, 'fields', 'fields_every', fields_every, 'steps', stat, why)
-      call attr_int(rf%fid, 'fields', 'snapshots', 0, '-', stat, why)
+      call attr_unit(rf%fid, 'fields', 'fields_every', fields_every, 'steps', stat, why)
+      call attr_unit(rf%fid, 'fields', 'snapshots', 0, '-', stat, why)
       if (stat == 0) call h5io_create_series(rf%fid, 'fields/time', h5io_real, hist_chunk, rf%snap_time, stat, why)
       call attr_text(rf%fid, 'fields/time', 'units', 's', stat, why)
       if (stat == 0) call h5io_create_series(rf%fid, 'fields/step', h5io_integer, hist_chunk, rf%snap_step, &
@@ -629,20 +541,18 @@ contains
       end do snapshot_fields
    end subroutine create_fields
 
-   !> /peak: the state of the step of the largest force so far, none yet
-   !> (step 0, time 0, force 0, the nodal fields 0).
+   !> /peak: the state of the step of the largest force so far (none yet: 0).
    subroutine create_peak(fid, nnode, stat, why)
       integer(hid_t), intent(in) :: fid             !< the open results file
       integer, intent(in) :: nnode                  !< nodes of the mesh
       integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
       character(len=*), intent(inout) :: why        !< reason on failure
       integer :: k, n
-
       if (stat /= 0) return
       call h5io_group(fid, 'peak', stat, why)
-      call attr_int(fid, 'peak', 'step', 0, '-', stat, why)
-      call attr_real(fid, 'peak', 'time', 0.0_dp, 's', stat, why)
-      call attr_real(fid, 'peak', 'force', 0.0_dp, 'N', stat, why)
+      call attr_unit(fid, 'peak', 'step', 0, '-', stat, why)
+      call attr_unit(fid, 'peak', 'time', 0.0_dp, 's', stat, why)
+      call attr_unit(fid, 'peak', 'force', 0.0_dp, 'N', stat, why)
       peak_fields: do k = 1, ndof_node
          if (stat /= 0) exit peak_fields
          call h5io_write(fid, 'peak/'//trim(freedom_name(k)), [(0.0_dp, n = 1, nnode)], stat, why)
@@ -650,8 +560,7 @@ contains
       end do peak_fields
    end subroutine create_peak
 
-   !> Attribute `name` of obj, the text value without its trailing blanks;
-   !> nothing after an earlier failure.
+   !> Text attribute `name` of obj, trailing blanks removed; nothing after a failure.
    subroutine attr_text(fid, obj, name, value, stat, why)
       integer(hid_t), intent(in) :: fid             !< the open results file
       character(len=*), intent(in) :: obj           !< the object ('.' for the root)
@@ -662,41 +571,23 @@ contains
       if (stat == 0) call h5io_set_attr(fid, obj, name, trim(value), stat, why)
    end subroutine attr_text
 
-   !> Integer attribute `name` of obj and its unit in `<name>_units`;
-   !> nothing after an earlier failure.
-   subroutine attr_int(fid, obj, name, value, units, stat, why)
+   !> Attribute `name` of obj, real(dp) or integer, and its unit in
+   !> `<name>_units`; nothing after a failure.
+   subroutine attr_unit(fid, obj, name, value, units, stat, why)
       integer(hid_t), intent(in) :: fid             !< the open results file
-      character(len=*), intent(in) :: obj           !< the object
-      character(len=*), intent(in) :: name          !< the attribute
-      integer, intent(in) :: value                  !< its value
+      character(len=*), intent(in) :: obj, name     !< the object, the attribute
+      class(*), intent(in) :: value                 !< its value
       character(len=*), intent(in) :: units         !< its unit
       integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
       character(len=*), intent(inout) :: why        !< reason on failure
       if (stat == 0) call h5io_set_attr(fid, obj, name, value, stat, why)
       if (stat == 0) call h5io_set_attr(fid, obj, name//'_units', units, stat, why)
-   end subroutine attr_int
+   end subroutine attr_unit
 
-   !> Real attribute `name` of obj and its unit in `<name>_units`; nothing
-   !> after an earlier failure.
-   subroutine attr_real(fid, obj, name, value, units, stat, why)
-      integer(hid_t), intent(in) :: fid             !< the open results file
-      character(len=*), intent(in) :: obj           !< the object
-      character(len=*), intent(in) :: name          !< the attribute
-      real(dp), intent(in) :: value                 !< its value
-      character(len=*), intent(in) :: units         !< its unit
-      integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
-      character(len=*), intent(inout) :: why        !< reason on failure
-      if (stat == 0) call h5io_set_attr(fid, obj, name, value, stat, why)
-      if (stat == 0) call h5io_set_attr(fid, obj, name//'_units', units, stat, why)
-   end subroutine attr_real
-
-   !> The nodal values of the freedoms: f(k, n) = d(eq(k, n)), 0 where the
-   !> freedom is held (eq = 0).
+   !> The nodal values of the freedoms, 0 where held (eq = 0).
    pure function nodal_values(eq, d) result(f)
-      !> (ndof_node, nnode) equation numbers, 0 for held freedoms.
-      integer, intent(in) :: eq(:,:)
-      !> Values by equation.
-      real(dp), intent(in) :: d(:)
+      integer, intent(in) :: eq(:,:)   !< (ndof_node, nnode) equation numbers, 0 for held freedoms.
+      real(dp), intent(in) :: d(:)   !< Values by equation.
       real(dp) :: f(size(eq, 1), size(eq, 2))
       integer :: n, k
       do n = 1, size(eq, 2)
@@ -709,9 +600,8 @@ contains
 
    ! ------------------------------------------------------------ deck, mesh
 
-   !> /deck: the echo, and one attribute per variable of the schema
-   !> (src/deck/deck_schema.f90) in /deck/<group>, with its unit in <name>_units;
-   !> an optional variable not given is the text 'not given'.
+   !> /deck: the echo, and per variable of the schema an attribute of
+   !> /deck/<group> with its unit ('not given': an optional variable not given).
    subroutine write_deck(fid, deck, stat, errmsg)
       integer(hid_t), intent(in) :: fid             !< the open results file
       type(deck_t), intent(in) :: deck              !< the effective deck
@@ -722,7 +612,6 @@ contains
       type(deck_t) :: copy
       type(value_t) :: v
       integer :: u, ios, ig, iv
-
       stat = 0
       call h5io_group(fid, 'deck', stat, errmsg)
       ! -- the echo of the deck, as the terminal and the column files show it
@@ -768,75 +657,44 @@ contains
          end select
          call put_text(grp, name//'_units', trim(deck_vars(iv)%unit))
       end do variables
-
    contains
-
       subroutine put_text(obj, name, value)
          character(len=*), intent(in) :: obj, name, value
          if (stat == 0) call h5io_set_attr(fid, obj, name, value, stat, errmsg)
       end subroutine put_text
-
    end subroutine write_deck
 
    !> /mesh: coordinates, connectivity, freedom map, grid and sizes.
    subroutine write_mesh(fid, msh, stat, errmsg)
-      !> The open results file.
-      integer(hid_t), intent(in) :: fid
-      !> The mesh with its equation numbers.
-      type(mesh_t), intent(in) :: msh
-      !> 0 on success.
-      integer, intent(out) :: stat
-      !> Reason on failure.
-      character(len=*), intent(inout) :: errmsg
-
+      integer(hid_t), intent(in) :: fid   !< The open results file.
+      type(mesh_t), intent(in) :: msh   !< The mesh with its equation numbers.
+      integer, intent(out) :: stat   !< 0 on success.
+      character(len=*), intent(inout) :: errmsg   !< Reason on failure.
       stat = 0
       call h5io_group(fid, 'mesh', stat, errmsg)
-      call put_text('domain', msh%domain)
-      call put_count('nx', msh%nx)
-      call put_count('ny', msh%ny)
-      call put_count('nnode', msh%nnode)
-      call put_count('nelem', msh%nelem)
-      call put_count('neq', msh%neq)
-      call put_count('impact_node', msh%impact_node)
-      call put_length('x0', msh%x0)
-      call put_length('x1', msh%x1)
-      call put_length('y0', msh%y0)
-      call put_length('y1', msh%y1)
-      if (stat == 0) call h5io_set_attr(fid, 'mesh', 'sym_factor', msh%sym_factor, stat, errmsg)
-      call put_text('sym_factor_units', '-')
-      call put_text('freedoms', 'u v w psi_x psi_y')
-      call put_text('node_order', '9-node Lagrange element: corners counter-clockwise from (-1,-1), '// &
-         'then mid-sides from (0,-1), then the centre (src/model/shape_functions.f90)')
+      call attr_text(fid, 'mesh', 'domain', msh%domain, stat, errmsg)
+      call attr_unit(fid, 'mesh', 'nx', msh%nx, '-', stat, errmsg)
+      call attr_unit(fid, 'mesh', 'ny', msh%ny, '-', stat, errmsg)
+      call attr_unit(fid, 'mesh', 'nnode', msh%nnode, '-', stat, errmsg)
+      call attr_unit(fid, 'mesh', 'nelem', msh%nelem, '-', stat, errmsg)
+      call attr_unit(fid, 'mesh', 'neq', msh%neq, '-', stat, errmsg)
+      call attr_unit(fid, 'mesh', 'impact_node', msh%impact_node, '-', stat, errmsg)
+      call attr_unit(fid, 'mesh', 'x0', msh%x0, 'm', stat, errmsg)
+      call attr_unit(fid, 'mesh', 'x1', msh%x1, 'm', stat, errmsg)
+      call attr_unit(fid, 'mesh', 'y0', msh%y0, 'm', stat, errmsg)
+      call attr_unit(fid, 'mesh', 'y1', msh%y1, 'm', stat, errmsg)
+      call attr_unit(fid, 'mesh', 'sym_factor', msh%sym_factor, '-', stat, errmsg)
+      call attr_text(fid, 'mesh', 'freedoms', 'u v w psi_x psi_y', stat, errmsg)
+      call attr_text(fid, 'mesh', 'node_order', '9-node Lagrange element: corners counter-clockwise from ' &
+         // '(-1,-1), then mid-sides from (0,-1), then the centre (src/model/shape_functions.f90)', stat, errmsg)
       if (stat == 0) call h5io_write(fid, 'mesh/coordinates', msh%coords, stat, errmsg)
-      if (stat == 0) call h5io_set_attr(fid, 'mesh/coordinates', 'units', 'm', stat, errmsg)
+      call attr_text(fid, 'mesh/coordinates', 'units', 'm', stat, errmsg)
       if (stat == 0) call h5io_write(fid, 'mesh/connectivity', msh%conn, stat, errmsg)
-      if (stat == 0) call h5io_set_attr(fid, 'mesh/connectivity', 'units', '-', stat, errmsg)
+      call attr_text(fid, 'mesh/connectivity', 'units', '-', stat, errmsg)
       if (stat == 0) call h5io_write(fid, 'mesh/freedom_map', msh%eq, stat, errmsg)
-      if (stat == 0) call h5io_set_attr(fid, 'mesh/freedom_map', 'units', '-', stat, errmsg)
+      call attr_text(fid, 'mesh/freedom_map', 'units', '-', stat, errmsg)
       if (stat == 0) call h5io_write(fid, 'mesh/grid', msh%grid, stat, errmsg)
-      if (stat == 0) call h5io_set_attr(fid, 'mesh/grid', 'units', '-', stat, errmsg)
-
-   contains
-
-      subroutine put_text(name, value)
-         character(len=*), intent(in) :: name, value
-         if (stat == 0) call h5io_set_attr(fid, 'mesh', name, trim(value), stat, errmsg)
-      end subroutine put_text
-
-      subroutine put_count(name, value)
-         character(len=*), intent(in) :: name
-         integer, intent(in) :: value
-         if (stat == 0) call h5io_set_attr(fid, 'mesh', name, value, stat, errmsg)
-         call put_text(name//'_units', '-')
-      end subroutine put_count
-
-      subroutine put_length(name, value)
-         character(len=*), intent(in) :: name
-         real(dp), intent(in) :: value
-         if (stat == 0) call h5io_set_attr(fid, 'mesh', name, value, stat, errmsg)
-         call put_text(name//'_units', 'm')
-      end subroutine put_length
-
+      call attr_text(fid, 'mesh/grid', 'units', '-', stat, errmsg)
    end subroutine write_mesh
 
 end module results_hdf5

@@ -1,17 +1,11 @@
-!> <prefix>.xdmf beside <prefix>.h5: an XDMF 3 description of the results
-!> file's mesh (9-node quadrilaterals) and nodal fields, one time step per
-!> snapshot, so that ParaView, VisIt and meshio open a run; with &strength
-!> also the plies (src/results/xdmf_plies.f90). The XML holds no numbers of
-!> its own: every array is a dataset of <prefix>.h5 or of <prefix>.xdmf.h5
-!> (a view of each snapshot, no copy; why views, and &output xdmf =
-!> 'whole': above xdmf_t). The XML is rewritten by rename after a batch of
-!> snapshots, at most once per xdmf_rewrite_interval (above xdmf_snapshots).
-!> Usage (src/results/results_hdf5.f90): xdmf_open while <prefix>.h5 is made, then
-!> xdmf_start; for each batch of snapshots appended to /fields, xdmf_grow
-!> in the same writing, then xdmf_snapshots and xdmf_batch_close;
-!> xdmf_peak when /peak is rewritten; xdmf_close at the end. A restart:
-!> xdmf_cut while <prefix>.h5 is cut back, then xdmf_resume.
-!> Not from the paper. More: docs/OUTPUT.md, "Looking at the fields".
+!> <prefix>.xdmf beside <prefix>.h5: an XDMF 3 description of the mesh
+!> (9-node quadrilaterals) and nodal fields, one time step per snapshot, for
+!> ParaView, VisIt and meshio; with &strength the plies (xdmf_plies.f90).
+!> Every array is a dataset of <prefix>.h5 or a view in <prefix>.xdmf.h5
+!> (above xdmf_t). Called by src/results/results_hdf5.f90: xdmf_open,
+!> xdmf_start; per batch of snapshots xdmf_grow, xdmf_snapshots,
+!> xdmf_batch_close; xdmf_peak; xdmf_close; a restart: xdmf_cut,
+!> xdmf_resume. Not from the paper. More: docs/OUTPUT.md.
 module results_xdmf
    use, intrinsic :: iso_fortran_env, only: int64
    use hdf5, only: hid_t
@@ -20,8 +14,9 @@ module results_xdmf
    use deck_schema, only: deck_t
    use mesh, only: mesh_t, ndof_node, freedom_name
    use shape_functions, only: nen
-   use hdf5_io, only: h5io_create, h5io_close, h5io_group, h5io_write, h5io_rewrite, h5io_view_column, h5io_flush, &
-      h5io_set_attr, h5io_create_columns, h5io_open_dataset, h5io_append_block, h5io_cut_series, h5io_close_dataset
+   use hdf5_io, only: h5io_create, h5io_close, h5io_group, h5io_write, h5io_rewrite, h5io_flush, h5io_set_attr
+   use hdf5_series, only: h5io_view_column, h5io_create_columns, h5io_open_dataset, h5io_append_block, &
+      h5io_cut_series, h5io_close_dataset
    use file_system, only: rename_file
    use xdmf_plies, only: xdmf_plies_t, plies_collection
    implicit none
@@ -31,40 +26,25 @@ module results_xdmf
 
    !> Longest number as text (src/system/number_text.f90, real_str).
    integer, parameter :: text_len = 32
-   !> Values per chunk of the whole plate's growing fields (as
-   !> src/results/results_hdf5.f90's series).
+   !> Values per chunk of the whole plate's growing fields.
    integer, parameter :: chunk_values = 512
    !> Least wall-clock time between two rewrites of the XML during a run (s).
    real(dp), parameter :: xdmf_rewrite_interval = 1.0_dp
    !> Fields odd across x = 0 (u, psi_x) and across y = 0 (v, psi_y), by freedom.
    logical, parameter :: odd_in_x(ndof_node) = [.true., .false., .false., .true., .false.]
    logical, parameter :: odd_in_y(ndof_node) = [.false., .true., .false., .false., .true.]
-   !> Nodes of a 9-node element as (i, j) offsets on the grid from its
-   !> corner (i, j) of lowest indices: corners counter-clockwise, mid-sides,
-   !> centre (src/model/shape_functions.f90).
+   !> Nodes of a 9-node element as (i, j) offsets on the grid from its lowest
+   !> corner (src/model/shape_functions.f90's order).
    integer, parameter :: element_di(nen) = [0, 2, 2, 0, 1, 2, 1, 0, 1]
    integer, parameter :: element_dj(nen) = [0, 0, 2, 2, 0, 1, 2, 1, 1]
 
-   !> A view is an object, made when its snapshot is written: <prefix>.h5 is
-   !> written in HDF5's SWMR mode, which makes no object (src/results/results_hdf5.f90),
-   !> hence their file of their own, which names <prefix>.h5 without its
-   !> directory (HDF5 finds it beside itself). Debian 12's ParaView (5.11)
-   !> does not apply the XDMF hyperslabs and functions of an Attribute, and
-   !> meshio reads only whole datasets; a plain dataset per snapshot is what
-   !> every reader takes, hence the views.
-   !>
-   !> &output xdmf = 'whole' mirrors a quarter or half into the whole
-   !> plate (about x = 0 and y = 0, src/model/mesh.f90): u, psi_x change sign across
-   !> x = 0 and v, psi_y across y = 0, which no view can do, so the whole
-   !> plate's fields are written as data, in <prefix>.h5: /xdmf/coordinates
-   !> (nnode_whole, 2), /xdmf/cells, /xdmf/fields/<f> (nsnap, nnode_whole)
-   !> growing with /fields, and /xdmf/peak/<f>, about 4 (quarter) or 2 (half)
-   !> times the modelled fields; the views show rows of /xdmf/fields/<f>.
-   !> Nodes on the symmetry lines are shared, elements keep the
-   !> counter-clockwise order. &output xdmf = 'none' writes neither the XML,
-   !> nor /xdmf, nor the views.
-   !>
-   !> The XDMF file of a results file.
+   !> A view per snapshot (a plain dataset, what every reader takes: ParaView
+   !> 5.11 ignores hyperslabs, meshio reads whole datasets) in a file of its
+   !> own, as <prefix>.h5 is written in SWMR mode, which makes no object.
+   !> &output xdmf = 'whole' mirrors a quarter or half into the whole plate
+   !> (u, psi_x odd across x = 0, v, psi_y across y = 0, which no view can
+   !> do): its fields are data in /xdmf of <prefix>.h5, growing with /fields;
+   !> 'none' writes neither XML, nor /xdmf, nor views.
    type :: xdmf_t
       logical :: active = .false.                   !< <prefix>.xdmf is being written
       logical :: whole = .false.                    !< the mirrored whole plate (else the modelled domain)
@@ -88,9 +68,8 @@ module results_xdmf
 
 contains
 
-   !> The XDMF of a run (nothing for xdmf = 'none'): its names, and for the
-   !> whole plate its points and cells (xy, cells numbered from 1), the
-   !> modelled node of each point and the sign of each field there.
+   !> The XDMF of a run (nothing for 'none'): its names; for the whole plate
+   !> its points, cells (from 1), the modelled node and each field's sign.
    subroutine setup(x, deck, msh, xy, cells)
       type(xdmf_t), intent(out) :: x                !< the XDMF file, not yet active
       type(deck_t), intent(in) :: deck              !< the effective deck (prefix, xdmf)
@@ -98,7 +77,6 @@ contains
       real(dp), allocatable, intent(out) :: xy(:,:) !< (2, nnode) the points shown (m)
       integer, allocatable, intent(out) :: cells(:,:)   !< (nen, nelem) the cells shown, from 1
       integer :: slash
-
       x%path = deck%prefix // '.xdmf'
       x%views_path = deck%prefix // '.xdmf.h5'
       slash = index(deck%prefix, '/', back=.true.)
@@ -117,9 +95,8 @@ contains
       x%nelem = size(cells, 2)
    end subroutine setup
 
-   !> Writes /xdmf into <prefix>.h5 while it is made (fid, /mesh written):
-   !> the cells numbered from 0; for the whole plate its points, /peak and
-   !> the empty growing fields (above xdmf_t); nothing for xdmf = 'none'.
+   !> Writes /xdmf into <prefix>.h5 while it is made: cells from 0; for the
+   !> whole plate its points, /peak and the empty growing fields.
    subroutine xdmf_open(x, deck, msh, fid, stat, errmsg)
       type(xdmf_t), intent(out) :: x                !< the XDMF file, ready for xdmf_start on return
       type(deck_t), intent(in) :: deck              !< the effective deck (prefix, xdmf)
@@ -131,7 +108,6 @@ contains
       integer, allocatable :: cells(:,:)
       integer(hid_t) :: did
       integer :: k, n
-
       stat = 0
       if (deck%xdmf == 'none') return
       call setup(x, deck, msh, xy, cells)
@@ -155,8 +131,7 @@ contains
       end do fields
    end subroutine xdmf_open
 
-   !> Starts <prefix>.xdmf.h5 (no view yet) and the XML without a
-   !> snapshot, once <prefix>.h5 is in place; x active on return.
+   !> Starts <prefix>.xdmf.h5 and the XML without a snapshot; x active on return.
    subroutine xdmf_start(x, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file (xdmf_open, or xdmf_cut)
       integer, intent(out) :: stat                  !< 0 on success
@@ -174,8 +149,7 @@ contains
       call write_xml(x, stat, errmsg)
    end subroutine xdmf_start
 
-   !> A restart, while <prefix>.h5 is cut back to `snaps` snapshots (fid
-   !> open): the XDMF's names, and the whole plate's fields cut alike.
+   !> A restart, while <prefix>.h5 is cut back to `snaps`: the whole plate's fields cut alike.
    subroutine xdmf_cut(x, deck, msh, fid, snaps, stat, errmsg)
       type(xdmf_t), intent(out) :: x                !< the XDMF file, ready for xdmf_resume on return
       type(deck_t), intent(in) :: deck              !< the effective deck (prefix, xdmf)
@@ -188,7 +162,6 @@ contains
       integer, allocatable :: cells(:,:)
       integer(hid_t) :: did
       integer :: k, ios
-
       stat = 0
       if (deck%xdmf == 'none') return
       call setup(x, deck, msh, xy, cells)
@@ -201,9 +174,8 @@ contains
       end do fields
    end subroutine xdmf_cut
 
-   !> A restart: the XDMF of the snapshots kept in <prefix>.h5 (their
-   !> times, steps, forces), <prefix>.xdmf.h5 made anew with their views in
-   !> one batch, and the XML.
+   !> A restart: the XDMF of the snapshots kept, <prefix>.xdmf.h5 made anew
+   !> with their views in one batch, and the XML.
    subroutine xdmf_resume(x, time, step, force, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file (xdmf_cut), active on return
       real(dp), intent(in) :: time(:), force(:)     !< the snapshots' times (s) and contact forces (N)
@@ -218,8 +190,7 @@ contains
       if (stat == 0) call write_xml(x, stat, errmsg)
    end subroutine xdmf_resume
 
-   !> The whole plate: the mirror of the snapshots f just appended to
-   !> /fields, appended to /xdmf/fields/<f> of <prefix>.h5 (fid, open).
+   !> The whole plate: the mirror of the snapshots f just appended to /fields.
    subroutine xdmf_grow(x, fid, f, stat, errmsg)
       type(xdmf_t), intent(in) :: x                 !< the XDMF file
       integer(hid_t), intent(in) :: fid             !< <prefix>.h5, open
@@ -245,20 +216,12 @@ contains
    end subroutine xdmf_grow
 
    !> As the run goes: after a batch of snapshots <prefix>.xdmf.h5 is flushed
-   !> and the XML is written to <prefix>.xdmf.tmp and renamed over
-   !> <prefix>.xdmf (one step: a reader sees the old file or the new one),
-   !> after the first batch and then at most once per xdmf_rewrite_interval of
-   !> wall-clock time (the XML grows with every snapshot; rewriting it each
-   !> time would cost the square of their number), and at the end. A killed
-   !> run's XDMF opens, with the snapshots up to its last rewrite and status
-   !> 'running': the views it names sit in batch groups that later writes
-   !> leave alone. (A kill while HDF5 flushes <prefix>.xdmf.h5 can still
-   !> leave its newest structures half written: a run restarted
-   !> (src/results/restart_point.f90) makes the file anew.)
-   !>
-   !> A batch of snapshots, just written to <prefix>.h5 after its first
-   !> `before`: the group /fields/<b> of <prefix>.xdmf.h5, its groups of the
-   !> fields, and each snapshot's views.
+   !> and the XML rewritten by rename (a reader sees the old or the new file),
+   !> after the first batch, then at most once per xdmf_rewrite_interval (the
+   !> XML grows with every snapshot), and at the end; a killed run's XDMF
+   !> opens, status 'running' (a restart makes <prefix>.xdmf.h5 anew).
+   !> Here: a batch of snapshots after the first `before`, their views in the
+   !> group /fields/<b> of <prefix>.xdmf.h5.
    subroutine xdmf_snapshots(x, before, step, time, force, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file
       integer, intent(in) :: before                 !< snapshots in <prefix>.h5 before the batch
@@ -294,8 +257,7 @@ contains
       end do snapshots
    end subroutine xdmf_snapshots
 
-   !> Ends a batch: <prefix>.xdmf.h5 flushed, the XML rewritten when due
-   !> (above xdmf_snapshots).
+   !> Ends a batch: <prefix>.xdmf.h5 flushed, the XML rewritten when due.
    subroutine xdmf_batch_close(x, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file
       integer, intent(out) :: stat                  !< 0 on success
@@ -325,9 +287,7 @@ contains
       path = batch_group(x%batch(s)) // '/' // trim(freedom_name(k)) // '/' // int_str(s)
    end function view_path
 
-   !> The peak state just rewritten in /peak: for the whole plate, mirrored
-   !> into /xdmf/peak of <prefix>.h5 (fid, open; the modelled domain's XML
-   !> shows /peak itself).
+   !> The peak state just rewritten: for the whole plate, mirrored into /xdmf/peak.
    subroutine xdmf_peak(x, fid, f, stat, errmsg)
       type(xdmf_t), intent(in) :: x                 !< the XDMF file
       integer(hid_t), intent(in) :: fid             !< <prefix>.h5, open
@@ -343,8 +303,7 @@ contains
       end do
    end subroutine xdmf_peak
 
-   !> The last XML, with every snapshot and the run's status, and
-   !> <prefix>.xdmf.h5 closed; x inactive after.
+   !> The last XML, with every snapshot and the status; <prefix>.xdmf.h5 closed.
    subroutine xdmf_close(x, status, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file
       character(len=*), intent(in) :: status        !< the run's status ('completed', 'failed at step N', ...)
@@ -367,8 +326,7 @@ contains
 
    ! ============================================================== the XML
 
-   !> Writes the XML to <prefix>.xdmf.tmp and renames it over <prefix>.xdmf
-   !> (the views it names flushed before).
+   !> Writes the XML to <prefix>.xdmf.tmp and renames it over <prefix>.xdmf.
    subroutine write_xml(x, stat, errmsg)
       type(xdmf_t), intent(inout) :: x
       integer, intent(out) :: stat
@@ -376,7 +334,6 @@ contains
       character(len=msg_len) :: iomsg
       character(len=:), allocatable :: tmp, h5, views, mesh_points, peak
       integer :: u, k, s
-
       h5 = xml_escaped(x%h5_name) // ':/'
       views = xml_escaped(x%views_name) // ':/'
       mesh_points = 'mesh/coordinates'
@@ -434,20 +391,16 @@ contains
       call rename_file(tmp, x%path, stat, errmsg)
       if (stat /= 0) return
       call system_clock(x%written_at)
-
    contains
-
       subroutine attribute(name, path)
          character(len=*), intent(in) :: name, path
          write (u, '(a)') '        <Attribute Name="' // name // '" AttributeType="Scalar" Center="Node">'
          write (u, '(a)') '          ' // data_item('Float', 8, int_str(x%nnode), path)
          write (u, '(a)') '        </Attribute>'
       end subroutine attribute
-
    end subroutine write_xml
 
-   !> An HDF DataItem: type 'Int' or 'Float', bytes per value, dimensions
-   !> (C order, as the HDF5 file has them) and 'file:/path'.
+   !> An HDF DataItem: 'Int' or 'Float', bytes, dimensions (C order), 'file:/path'.
    pure function data_item(number_type, precision, dims, where) result(text)
       character(len=*), intent(in) :: number_type, dims, where
       integer, intent(in) :: precision
@@ -458,10 +411,9 @@ contains
 
    ! ============================================================ the mirror
 
-   !> The whole plate from the modelled domain, mirrored about x = 0 when
-   !> msh%sym_x and about y = 0 when msh%sym_y: points xy(2, n), cells
-   !> (nen, e) numbered from 1, counter-clockwise, the modelled node of
-   !> each point and the sign of each field there.
+   !> The whole plate, mirrored about x = 0 (sym_x) and y = 0 (sym_y): points
+   !> xy(2, n), cells from 1, counter-clockwise, each point's modelled node
+   !> and each field's sign there.
    subroutine whole_plate(msh, xy, cells, source, parity)
       type(mesh_t), intent(in) :: msh
       real(dp), allocatable, intent(out) :: xy(:,:)
@@ -470,7 +422,6 @@ contains
       real(dp), allocatable, intent(out) :: parity(:,:)
       integer :: ilo, jlo, ihi, jhi, ni, i, j, n, e, k, ib, jb
       real(dp) :: sx, sy
-
       ihi = 2*msh%nx;  jhi = 2*msh%ny
       ilo = merge(-ihi, 0, msh%sym_x)
       jlo = merge(-jhi, 0, msh%sym_y)
@@ -498,15 +449,12 @@ contains
             end do
          end do elements_i
       end do elements_j
-
    contains
-
       !> The number of grid point (i, j) of the whole plate, i fastest.
       pure integer function point(i, j)
          integer, intent(in) :: i, j
          point = (j - jlo)*ni + (i - ilo) + 1
       end function point
-
    end subroutine whole_plate
 
    ! ============================================================== helpers

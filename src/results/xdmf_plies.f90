@@ -1,14 +1,11 @@
-!> The ply fields of a run with &strength as a grid of <prefix>.xdmf, so
-!> that ParaView, VisIt and meshio show the damage map and the ply stresses
-!> at the peak force beside the nodal fields (the values of /strength,
-!> src/results/damage_record.f90). The grid is the laminate: one hexahedron
-!> per Gauss point, ply and ply face (above laminate_grid), written into
-!> /xdmf/plies of <prefix>.h5 with one dataset per cell attribute (ply,
-!> face, ply_angle, damage_map, damage_mode, onset_time, the peak stresses
-!> and failure index, delamination_index), and a temporal collection
-!> "plies" before the fields' (above plies_collection). It covers the
-!> modelled domain, also with &output xdmf = 'whole' (a +45 ply mirrors
-!> into a -45 one). Not from the paper. More: docs/OUTPUT.md, "The ply fields".
+!> The ply fields of a run with &strength as a grid of <prefix>.xdmf: the
+!> damage map and the ply stresses at the peak force (/strength,
+!> damage_record.f90) beside the nodal fields in ParaView, VisIt, meshio.
+!> The grid is the laminate, one hexahedron per Gauss point, ply and ply
+!> face (above laminate_grid), in /xdmf/plies of <prefix>.h5 with a dataset
+!> per cell attribute, and a temporal collection "plies" (above
+!> plies_collection); the modelled domain only. Not from the paper. More:
+!> docs/OUTPUT.md, "The ply fields".
 module xdmf_plies
    use hdf5, only: hid_t
    use kinds, only: dp
@@ -18,7 +15,7 @@ module xdmf_plies
    use hdf5_io, only: h5io_group, h5io_write, h5io_exists, h5io_delete
    implicit none
    private
-   public :: xdmf_plies_t, plies_write, plies_collection
+   public :: xdmf_plies_t, ply_maps_t, plies_write, plies_collection
 
    !> Where the cells of the 3 x 3 Gauss points are cut, along xi and eta.
    real(dp), parameter :: plies_cut(4) = [-1.0_dp, -4.0_dp/9.0_dp, 4.0_dp/9.0_dp, 1.0_dp]
@@ -45,46 +42,47 @@ module xdmf_plies
       character(len=:), allocatable :: modes        !< the mode codes' words ('0 none, 1 fibre_tension, ...')
    end type xdmf_plies_t
 
+   !> The laminate and its damage maps, per ply and Gauss point: what plies_write shows.
+   type :: ply_maps_t
+      real(dp), allocatable :: z(:)                 !< (0:nply) ply interfaces (m)
+      real(dp), allocatable :: angle(:)             !< (nply) ply angles (deg)
+      real(dp), allocatable :: fi_max(:,:)          !< (nply, npoint) largest failure index over the run (-)
+      integer, allocatable :: mode_max(:,:)         !< (nply, npoint) its mode
+      real(dp), allocatable :: onset(:,:)           !< (nply, npoint) first time it reached 1 (s, -1 never)
+      real(dp), allocatable :: sigma(:,:,:,:)       !< (5, 2, nply, npoint) stresses at the peak force (Pa)
+      real(dp), allocatable :: fi(:,:,:)            !< (2, nply, npoint) failure indices there (-)
+      real(dp), allocatable :: delam(:,:)           !< (nply - 1, npoint) interfaces' largest index (-)
+      character(len=:), allocatable :: modes        !< the mode codes' words
+   end type ply_maps_t
+
 contains
 
-   !> Writes /xdmf/plies into the open results file fid (above laminate_grid) and
-   !> makes p active. z(0:nply) the ply interfaces (m, z(0) = -h/2 the
-   !> impacted face), angle the ply angles (deg); the damage map fi_max,
-   !> mode_max, onset (nply, npoint); at the peak force sigma (5, 2, nply,
-   !> npoint) (Pa, s11 s22 t12 t23 t13, material axes) and fi (2, nply,
-   !> npoint); delam (nply - 1, npoint) the interfaces' largest index;
-   !> points in element order, 9 per element (ply_stress's order: xi fastest).
-   subroutine plies_write(p, fid, msh, z, angle, fi_max, mode_max, onset, sigma, fi, delam, modes, stat, errmsg)
+   !> Writes /xdmf/plies into the open results file fid and makes p active
+   !> (the maps: ply_maps_t; z(0) = -h/2 the impacted face; stresses s11 s22
+   !> t12 t23 t13 in material axes; points 9 per element, xi fastest).
+   subroutine plies_write(p, fid, msh, maps, stat, errmsg)
       type(xdmf_plies_t), intent(out) :: p          !< the grid, active on success
       integer(hid_t), intent(in) :: fid             !< the open results file
       type(mesh_t), intent(in) :: msh               !< the modelled mesh
-      real(dp), intent(in) :: z(0:)                 !< (0:nply) ply interfaces (m)
-      real(dp), intent(in) :: angle(:)              !< (nply) ply angles (deg)
-      real(dp), intent(in) :: fi_max(:,:)           !< (nply, npoint) largest failure index over the run (-)
-      integer, intent(in) :: mode_max(:,:)          !< (nply, npoint) its mode
-      real(dp), intent(in) :: onset(:,:)            !< (nply, npoint) first time it reached 1 (s, -1 never)
-      real(dp), intent(in) :: sigma(:,:,:,:)        !< (5, 2, nply, npoint) stresses at the peak force (Pa)
-      real(dp), intent(in) :: fi(:,:,:)             !< (2, nply, npoint) failure indices there (-)
-      real(dp), intent(in) :: delam(:,:)            !< (nply - 1, npoint) interfaces' largest index (-)
-      character(len=*), intent(in) :: modes         !< the mode codes' words
+      type(ply_maps_t), intent(in) :: maps          !< the laminate and its maps
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       real(dp), allocatable :: xyz(:,:), v(:), face_values(:,:,:)
       integer, allocatable :: cells(:,:), iv(:)
       integer :: nply, npoint, ncell, c, k
-
+      associate (angle => maps%angle, fi_max => maps%fi_max, mode_max => maps%mode_max, onset => maps%onset, &
+                 sigma => maps%sigma, fi => maps%fi, delam => maps%delam)
       nply = size(angle)
       npoint = size(fi_max, 2)
       ncell = 2*nply*npoint
-      call laminate_grid(msh, z, xyz, cells)
+      call laminate_grid(msh, maps%z, xyz, cells)
       stat = 0
-      ! a restarted run (src/results/restart_point.f90) finds the group of the run it continues
+      ! a restarted run (src/record/restart_point.f90) finds the group of the run it continues
       if (h5io_exists(fid, group)) call h5io_delete(fid, group, stat, errmsg)
       if (stat == 0) call h5io_group(fid, group, stat, errmsg)
       if (stat == 0) call h5io_write(fid, group // '/points', xyz, stat, errmsg)
       if (stat == 0) call h5io_write(fid, group // '/cells', cells, stat, errmsg)
       deallocate (xyz, cells)
-
       ! -- where each cell is
       iv = reshape(spread(spread([(k, k = 1, nply)], 1, 2), 3, npoint), [ncell])
       if (stat == 0) call h5io_write(fid, group // '/ply', iv, stat, errmsg)
@@ -119,34 +117,22 @@ contains
       p%npoint = npoint
       p%ncell = ncell
       p%npts = nen_lattice*msh%nelem*(2*nply + 1)
-      p%modes = modes
-
+      p%modes = maps%modes
+      end associate
    contains
-
       subroutine put_real(j)
          integer, intent(in) :: j
          if (stat == 0) call h5io_write(fid, group // '/' // trim(real_sets(j)), v, stat, errmsg)
       end subroutine put_real
-
    end subroutine plies_write
 
-   !> The grid, the laminate: one hexahedron per Gauss point, ply and ply face.
-   !> In the plane, the cell of a 3 x 3 Gauss point is the part of its element
-   !> that the point's weight stands for: xi, eta cut at -1, -4/9, 4/9, 1 (the
-   !> weights 5/9, 8/9, 5/9), mapped by the element's shape functions, so the
-   !> cells tile the modelled domain and each holds its point. Through the
-   !> thickness, ply k is cut at its middle: the lower half holds the values of
-   !> its face towards the impacted face (face 2k-1 of /strength/peak), the
-   !> upper half those of the other face (2k). z is the plate's thickness
-   !> coordinate turned over (z_view = -z, m): the nodal grid's w points the way
-   !> the impactor moves, towards -z in ParaView (Warp By Scalar, normal 0 0 -1),
-   !> so the impacted face, ply 1, is on top at z = +h/2.
-   !>
-   !> The laminate's points xyz (3, npts) (m) and hexahedra cells (8, ncell)
-   !> numbered from 0 (as above): per element a 4 x 4 lattice of the
-   !> cut lines (plies_cut) at 2 nply + 1 levels (the ply interfaces and
-   !> middles, from the impacted face); per Gauss point, ply and face a
-   !> hexahedron, its lower face first, counter-clockwise seen from above.
+   !> The laminate grid: in the plane, the cell of a 3 x 3 Gauss point is the
+   !> part of its element its weight stands for (xi, eta cut at -1, -4/9, 4/9,
+   !> 1), mapped by the shape functions; through the thickness ply k is cut at
+   !> its middle, the lower half its face towards the impacted face (2k-1),
+   !> the upper the other (2k); z turned over (z_view = -z) so the impacted
+   !> face is on top. Points xyz (3, npts) (m), hexahedra cells (8, ncell)
+   !> numbered from 0, lower face first, counter-clockwise from above.
    subroutine laminate_grid(msh, z, xyz, cells)
       type(mesh_t), intent(in) :: msh
       real(dp), intent(in) :: z(0:)
@@ -154,7 +140,6 @@ contains
       integer, allocatable, intent(out) :: cells(:,:)
       real(dp) :: xe(2, nen), xy(2), zl(0:2*(size(z) - 1))
       integer :: nply, nl, e, a, b, l, i, j, k, f, c, lo, n0, quad(4)
-
       nply = size(z) - 1
       nl = 2*nply + 1
       ! -- the levels from the impacted face, z turned over (above laminate_grid)
@@ -191,29 +176,18 @@ contains
             end do points_i
          end do points_j
       end do elements
-
    contains
-
       !> Point (from 0, in the element) of lattice corner (a, b) at level l.
       pure integer function lattice_point(a, b, l)
          integer, intent(in) :: a, b, l
          lattice_point = (4*b + a)*nl + l
       end function lattice_point
-
    end subroutine laminate_grid
 
-   !> In the XML (plies_collection, called by src/results/results_xdmf.f90 when
-   !> it writes the file), a temporal collection "plies" before the nodal
-   !> fields' "fields", with the same times: the values do not change with
-   !> time, but ParaView's XDMF 3 readers read the top-level temporal
-   !> collections only, and meshio's time-series reader takes the last
-   !> collection of the file, which stays "fields". ParaView shows two blocks,
-   !> the laminate (first) and the plate.
-   !>
-   !> The temporal collection "plies" of the XML on unit u: at each of the
-   !> times (the nodal fields' snapshot times, as the XML gives them), the
-   !> laminate with its cell attributes (as above). h5 is the results
-   !> file as the XML names it, with ':/' appended.
+   !> The temporal collection "plies" of the XML on unit u, before the nodal
+   !> fields' (ParaView reads top-level temporal collections only; meshio the
+   !> last, "fields"): at each time, the laminate with its cell attributes;
+   !> h5 is the results file as the XML names it, with ':/' appended.
    subroutine plies_collection(p, u, h5, times)
       type(xdmf_plies_t), intent(in) :: p           !< the grid (active)
       integer, intent(in) :: u                      !< the XML file
@@ -221,7 +195,6 @@ contains
       character(len=*), intent(in) :: times(:)      !< the times (s), as text
       character(len=:), allocatable :: cells
       integer :: s, j
-
       if (.not. p%active) return
       cells = int_str(p%ncell)
       write (u, '(a)') '    <Grid Name="plies" GridType="Collection" CollectionType="Temporal">'
@@ -244,16 +217,13 @@ contains
          write (u, '(a)') '      </Grid>'
       end do steps
       write (u, '(a)') '    </Grid>'
-
    contains
-
       subroutine attribute(name, number_type, dataset)
          character(len=*), intent(in) :: name, number_type, dataset
          write (u, '(a)') '        <Attribute Name="' // name // '" AttributeType="Scalar" Center="Cell">'
          write (u, '(a)') '          ' // data_item(number_type, cells, h5 // group // '/' // dataset)
          write (u, '(a)') '        </Attribute>'
       end subroutine attribute
-
    end subroutine plies_collection
 
    !> An HDF DataItem of 4-byte integers or 8-byte reals.

@@ -10,12 +10,13 @@
 module contact_iteration
    use kinds, only: dp
    use plate_model, only: model_t
-   use newmark, only: newmark_t, impactor_t, impactor_moved
-   use contact_law, only: contact_history_t, contact_force, law_indentation
+   use newmark, only: newmark_t, plate_state_t, impactor_t, impactor_moved, newmark_update
+   use contact_law, only: contact_history_t, contact_force, law_indentation, contact_commit
    use contact_load, only: load_pattern_t, load_pattern, load_hertz, pattern_mean
    implicit none
    private
-   public :: contact_iteration_t, force_bracket_t, contact_start, contact_next, contact_cut, contact_area, &
+   public :: step_state_t, step_start, step_accept, contact_iteration_t, force_bracket_t, contact_start, &
+             contact_next, contact_cut, contact_area, &
              contact_indentation, contact_converged, contact_outcome, contact_report, bracket_update
 
    !> The paper does not say how the assumed force is updated (§2.3 reads as
@@ -57,6 +58,19 @@ module contact_iteration
       logical :: cut = .false.        !< a plate solution failed under an assumed force, which was cut
    end type contact_iteration_t
 
+   !> The state of a time step (Fig. 3): the plate and the impactor at t, the
+   !> contact's committed history, the step's contact iteration, and what the
+   !> step computes, M {b} of eq. (19)-(20) and the plate and impactor at t+dt.
+   type :: step_state_t
+      type(plate_state_t) :: plate          !< {D}, {V}, {A} at t
+      type(impactor_t) :: imp               !< the impactor (mass; position, velocity, force) at t
+      type(contact_history_t) :: hist       !< the contact's committed history (eq. 11-12)
+      type(contact_iteration_t) :: cit      !< the step's contact iteration (eq. 17)
+      real(dp), allocatable :: mb(:)        !< M {b} of eq. (19)-(20), fixed within the step
+      real(dp), allocatable :: d_new(:)     !< {D} at t+dt, the iterate of eq. (19)
+      type(impactor_t) :: imp_new           !< the impactor at t+dt under the step's force
+   end type step_state_t
+
    !> Smallest factor by which the law's force must shrink the contact
    !> residual per iteration (0.5: C_r1 = 0.2 % from a residual of the order
    !> of the force within about 9 iterations); below it force_update =
@@ -68,6 +82,35 @@ module contact_iteration
    real(dp), parameter :: negligible_force = 1.0e-9_dp
 
 contains
+
+   !> The state at t = 0: the plate at rest, the impactor imp touching it,
+   !> the contact's history fresh and its area that of imp's force.
+   subroutine step_start(st, model, imp, cit)
+      type(step_state_t), intent(out) :: st         !< the state
+      type(model_t), intent(in) :: model            !< the model
+      type(impactor_t), intent(in) :: imp           !< the impactor at t = 0
+      type(contact_iteration_t), intent(in) :: cit  !< the contact iteration with its settings (update, cr1)
+      integer :: neq
+      neq = model%msh%neq
+      allocate (st%plate%d(neq), st%plate%v(neq), st%plate%a(neq), source=0.0_dp)
+      allocate (st%mb(neq), st%d_new(neq))
+      st%imp = imp
+      st%cit = cit
+      call contact_area(model, st%hist, imp%f, st%cit%pattern)
+   end subroutine step_start
+
+   !> Accepts the step with the constants nm: Newmark's update (eq. 20), the
+   !> impactor at t+dt; with commit, the contact history too.
+   subroutine step_accept(st, nm, model, commit)
+      type(step_state_t), intent(inout) :: st       !< the step: its state at t becomes that at t+dt
+      type(newmark_t), intent(in) :: nm             !< Newmark constants of the step
+      type(model_t), intent(in) :: model            !< the model (its contact law)
+      logical, intent(in) :: commit                 !< commit the contact history (eq. 12)
+      call newmark_update(nm, st%plate%d, st%d_new, st%plate%v, st%plate%a)
+      st%plate%d = st%d_new
+      st%imp = st%imp_new
+      if (commit) call contact_commit(model%law, st%hist, st%cit%alpha)
+   end subroutine step_accept
 
    !> The first assumed force of a step (§2.3): the impactor indents as if the
    !> plate did not react, w_plate staying at its value at t and the impactor

@@ -17,10 +17,10 @@ module fast_scheme
    use kinds, only: dp
    use plate_model, only: model_t
    use plate_solver, only: solver_t, solve_once, iteration_end, contact_response, add_pattern_response, pattern_compliance
-   use contact_iteration, only: contact_iteration_t, contact_area
-   use contact_law, only: contact_history_t, solve_contact_equation
+   use contact_iteration, only: step_state_t, contact_area
+   use contact_law, only: solve_contact_equation
    use contact_load, only: pattern_mean, load_point
-   use newmark, only: newmark_t, plate_state_t, impactor_t, impactor_moved, impactor_compliance
+   use newmark, only: newmark_t, impactor_moved, impactor_compliance
    use fixed_point, only: fp_start
    implicit none
    private
@@ -55,26 +55,22 @@ contains
    !> after one iteration that met eq. (17): F_assum = F_cont, the
    !> indentation alpha and the contact area. The solver's contraction
    !> estimate is updated when the step measures it.
-   subroutine fast_step(solver, model, nm, mb, plate, imp, hist, d, imp_new, cit, converged, stat, errmsg)
+   subroutine fast_step(solver, model, nm, st, converged, stat, errmsg)
       type(solver_t), intent(inout) :: solver          !< solver (counts solves, its columns grow)
       type(model_t), intent(in) :: model               !< model
       type(newmark_t), intent(in) :: nm                !< Newmark constants (the step dt)
-      real(dp), intent(in) :: mb(:)                    !< M {b} of eq. (19)-(20)
-      type(plate_state_t), intent(in) :: plate         !< the plate at t (converged)
-      type(impactor_t), intent(in) :: imp              !< impactor at t
-      type(contact_history_t), intent(in) :: hist      !< committed contact history
-      real(dp), intent(out) :: d(:)                    !< the plate at t+dt
-      type(impactor_t), intent(out) :: imp_new         !< the impactor at t+dt, its force the step's
-      type(contact_iteration_t), intent(inout) :: cit  !< the step's contact (its pattern kept: a cache)
+      type(step_state_t), intent(inout) :: st          !< the step: at t and its M {b} (in), at t+dt (out)
       logical, intent(out) :: converged                !< eq. (18) met
       integer, intent(out) :: stat                     !< 0 unless the solver failed
       character(len=*), intent(inout) :: errmsg        !< reason on failure
       integer, parameter :: max_passes = 50             ! contact passes (Hertz's area) of one iteration
       real(dp), parameter :: pass_tol = 1.0e-12_dp      ! relative change of the root that ends them
-      real(dp) :: rhs(size(d)), w_r0, compliance, f, f_new, alpha, d_first(size(d)), f_first, alpha_first
+      real(dp) :: rhs(size(st%d_new)), w_r0, compliance, f, f_new, alpha, d_first(size(st%d_new)), f_first, alpha_first
       integer :: pass
       logical :: done, probing
 
+      associate (plate => st%plate, imp => st%imp, hist => st%hist, mb => st%mb, d => st%d_new, &
+                 imp_new => st%imp_new, cit => st%cit)
       d = predicted_displacements(nm, plate%d, plate%v)
       ! impactor position at t+dt (m) if the new force were zero, eq. (21)
       imp_new = impactor_moved(nm, imp, 0.0_dp)
@@ -108,7 +104,8 @@ contains
          call contact_area(model, hist, f, cit%pattern)
          call add_pattern_response(solver, cit%pattern, f, rhs)
          ! -- eq. (18), also on the estimated next change (above first_contraction)
-         call iteration_end(solver, model, plate%d, rhs, d, converged, done, stat, errmsg)
+         call iteration_end(solver, model, plate%d, rhs, d, done, stat, errmsg)
+         converged = solver%converged
          if (solver%iterations == 1) then
             d_first = rhs;  f_first = f;  alpha_first = alpha
          end if
@@ -123,6 +120,7 @@ contains
       imp_new = impactor_moved(nm, imp, f)
       cit%f_assum = f;  cit%f_cont = f;  cit%alpha = alpha
       cit%iterations = 1;  cit%solved = converged;  cit%converged = converged
+      end associate
    end subroutine fast_step
 
    !> One solve per step (the nonlinear theory). The first iterate is

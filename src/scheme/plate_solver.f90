@@ -24,7 +24,7 @@ module plate_solver
    implicit none
    private
    public :: solver_t, solver_init, solver_refactor, plate_solve, solve_once, iteration_end, contact_response, &
-             add_pattern_response, pattern_compliance
+             add_pattern_response, pattern_compliance, plate_compliance
 
    !> The plate solver of a run.
    type :: solver_t
@@ -38,6 +38,7 @@ module plate_solver
       integer :: mixed_solves = 0              !< plate solutions that needed the guard's fall-back so far
       character(len=:), allocatable :: mixing_note  !< the guard's report of the last of them
       integer :: iterations = 0                !< eq. (19) iterations of the last plate solution
+      logical :: converged = .false.           !< its last iteration met eq. (18) (iteration_end)
       real(dp), allocatable :: ratios(:)       !< their eq. (18) ratios
       !> scheme 'fast': (K_L + 4/dt^2 M)^-1 e_j for the equations j a contact
       !> load has touched so far (m/N), computed when first needed
@@ -136,7 +137,8 @@ contains
       nonlinear_iterations: do
          call solve_once(solver, model, load, d, rhs, stat, errmsg)
          if (stat /= 0) return
-         call iteration_end(solver, model, d_t, rhs, d, converged, done, stat, errmsg)
+         call iteration_end(solver, model, d_t, rhs, d, done, stat, errmsg)
+         converged = solver%converged
          if (done .or. stat /= 0) exit nonlinear_iterations
       end do nonlinear_iterations
    end subroutine plate_solve
@@ -161,20 +163,20 @@ contains
    !> The end of one iteration of eq. (19), for both schemes: the linear
    !> theory is exact after one solve; otherwise eq. (18) and the guard
    !> against divergence and stagnation decide, and the next iterate is
-   !> formed (plain substitution, or the guard's Anderson mixing fall-back).
-   subroutine iteration_end(solver, model, d_t, rhs, d, converged, done, stat, errmsg)
-      type(solver_t), intent(inout) :: solver   !< solver (its guard)
+   !> formed (plain substitution, or the guard's Anderson mixing fall-back);
+   !> solver%converged says whether eq. (18) was met.
+   subroutine iteration_end(solver, model, d_t, rhs, d, done, stat, errmsg)
+      type(solver_t), intent(inout) :: solver   !< solver (its guard; converged)
       type(model_t), intent(in) :: model        !< model (the theory)
       real(dp), intent(in) :: d_t(:)            !< converged displacements at t
       real(dp), intent(in) :: rhs(:)            !< the solution of eq. (19) from iterate d
       real(dp), intent(inout) :: d(:)           !< iterate in; next iterate, or the result, out
-      logical, intent(out) :: converged         !< eq. (18) met
       logical, intent(out) :: done              !< the iteration is over (converged or given up)
       integer, intent(out) :: stat              !< 0 unless the mixing failed
       character(len=*), intent(inout) :: errmsg !< reason on failure
       stat = 0
       done = .true.
-      converged = .true.
+      solver%converged = .true.
       solver%iterations = solver%iterations + 1
       if (.not. model%nonlinear) then
          d = rhs
@@ -183,12 +185,12 @@ contains
       end if
       call fp_check(solver%guard, d, rhs, d_t)
       solver%ratios(min(solver%iterations, solver%max_iter)) = solver%guard%ratio
-      converged = solver%guard%state == fp_converged
+      solver%converged = solver%guard%state == fp_converged
       if (solver%guard%state /= fp_iterating .and. solver%guard%mixing) then
          solver%mixed_solves = solver%mixed_solves + 1
          solver%mixing_note = fp_report(solver%guard)
       end if
-      if (converged) then
+      if (solver%converged) then
          d = rhs
       else if (solver%guard%state /= fp_iterating) then
          d = solver%guard%d_best   ! the least wrong iterate, finite
@@ -261,5 +263,18 @@ contains
          c = c + pattern%c(k)*pattern_mean(pattern, solver%resp(:, j))
       end do
    end function pattern_compliance
+
+   !> The plate's compliance under the pattern over one step (m/N, -1 when
+   !> its solve failed): pattern_compliance, its columns computed first.
+   subroutine plate_compliance(solver, pattern, c, stat, errmsg)
+      type(solver_t), intent(inout) :: solver       !< solver; its columns grow
+      type(load_pattern_t), intent(in) :: pattern   !< the contact pattern
+      real(dp), intent(out) :: c                    !< the compliance (m/N)
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      call contact_response(solver, pattern, stat, errmsg)
+      c = -1.0_dp
+      if (stat == 0) c = pattern_compliance(solver, pattern)
+   end subroutine plate_compliance
 
 end module plate_solver

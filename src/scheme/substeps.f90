@@ -9,9 +9,9 @@ module substeps
    use number_text, only: int_str
    use plate_model, only: model_t, mass_times
    use plate_solver, only: solver_t, solver_refactor
-   use contact_iteration, only: contact_iteration_t
-   use contact_law, only: contact_history_t, contact_commit
-   use newmark, only: newmark_t, plate_state_t, impactor_t, newmark_init, newmark_predictor, newmark_update
+   use contact_iteration, only: step_state_t, step_accept
+   use contact_law, only: contact_history_t
+   use newmark, only: newmark_t, plate_state_t, impactor_t, newmark_init, newmark_predictor
    use fast_scheme, only: fast_step
    use fixed_point, only: fp_report
    implicit none
@@ -42,7 +42,7 @@ contains
    !> of the run's matrix are kept aside during the sub-steps and put back
    !> after (the sub-steps' own are dropped), so the steps that follow use the
    !> same columns as before. solver%substeps tells the recorder how many
-   !> sub-steps the step took (src/results/run_recorder.f90, substepped_steps).
+   !> sub-steps the step took (src/record/run_recorder.f90, substepped_steps).
    !>
    !> One time step of scheme 'fast' (module fast_scheme), taken again in
    !> sub-steps when its iteration does not converge (module header). On
@@ -51,19 +51,12 @@ contains
    !> imp_new are the state at t + dt either way, for the caller to accept
    !> with step_nm (newmark_update) as it accepts a step. When no sub-step
    !> division converged either, plate, imp and hist are those at t and
-   !> errmsg says what was tried.
-   subroutine fast_step_or_substeps(solver, model, nm, mb, plate, imp, hist, d, imp_new, cit, step_nm, &
-                                    converged, stat, errmsg)
+   !> errmsg says which iteration failed and what was tried.
+   subroutine fast_step_or_substeps(solver, model, nm, st, step_nm, converged, stat, errmsg)
       type(solver_t), intent(inout) :: solver          !< solver (its factor is the run's step's on exit)
       type(model_t), intent(in) :: model               !< model
       type(newmark_t), intent(in) :: nm                !< Newmark constants of the run's step dt
-      real(dp), intent(in) :: mb(:)                    !< M {b} of eq. (19)-(20) for the step dt
-      type(plate_state_t), intent(inout) :: plate      !< the plate at t; at the last sub-step's start on exit
-      type(impactor_t), intent(inout) :: imp           !< the impactor at t; likewise
-      type(contact_history_t), intent(inout) :: hist   !< committed contact history; likewise
-      real(dp), intent(out) :: d(:)                    !< the plate at t+dt
-      type(impactor_t), intent(out) :: imp_new         !< the impactor at t+dt, its force the step's
-      type(contact_iteration_t), intent(inout) :: cit  !< the (last sub-)step's contact
+      type(step_state_t), intent(inout) :: st          !< the step (its state at t, M {b}; above)
       type(newmark_t), intent(out) :: step_nm          !< the constants to accept d with: nm, or the last sub-step's
       logical, intent(out) :: converged                !< eq. (18) met (in every sub-step)
       integer, intent(out) :: stat                     !< 0 unless the solver failed
@@ -79,20 +72,20 @@ contains
 
       step_nm = nm
       solver%substeps = 0
-      call fast_step(solver, model, nm, mb, plate, imp, hist, d, imp_new, cit, converged, stat, errmsg)
+      call fast_step(solver, model, nm, st, converged, stat, errmsg)
       if (stat /= 0) return
       if (converged) return
       why = fp_report(solver%guard)
-      plate_t = plate;  imp_t = imp;  hist_t = hist
+      plate_t = st%plate;  imp_t = st%imp;  hist_t = st%hist
       nresp = solver%nresp
       call move_alloc(solver%resp, resp);  call move_alloc(solver%resp_eq, resp_eq)
-      allocate (solver%resp(size(d), 0), solver%resp_eq(0))
+      allocate (solver%resp(size(st%d_new), 0), solver%resp_eq(0))
       halvings: do k = 1, max_halvings
          step_nm = newmark_init(nm%dt/2**k)
          call solver_refactor(solver, model, step_nm, stat, errmsg)
          if (stat /= 0) exit halvings
-         plate = plate_t;  imp = imp_t;  hist = hist_t
-         call take_substeps(solver, model, step_nm, 2**k, plate, imp, hist, d, imp_new, cit, converged, stat, errmsg)
+         st%plate = plate_t;  st%imp = imp_t;  st%hist = hist_t
+         call take_substeps(solver, model, step_nm, 2**k, st, converged, stat, errmsg)
          if (stat /= 0) exit halvings
          if (converged) then
             solver%substeps = 2**k
@@ -105,9 +98,10 @@ contains
       solver%nresp = nresp
       solver%contraction = huge(1.0_dp);  solver%since_measured = 0
       if (stat /= 0 .or. converged) return
-      plate = plate_t;  imp = imp_t;  hist = hist_t;  step_nm = nm
-      errmsg = why // '; taken again in ' // int_str(2**max_halvings) // ' sub-steps of dt/' &
-         // int_str(2**max_halvings) // ' (' // int_str(max_halvings) // ' halvings), it did not converge either: ' &
+      st%plate = plate_t;  st%imp = imp_t;  st%hist = hist_t;  step_nm = nm
+      errmsg = 'the nonlinear iteration (eq. 19) with the contact equation: ' // why // '; taken again in ' &
+         // int_str(2**max_halvings) // ' sub-steps of dt/' // int_str(2**max_halvings) // ' (' &
+         // int_str(max_halvings) // ' halvings), it did not converge either: ' &
          // 'the time step (&analysis dt) is far too long for the scene, or the scene beyond the model'
    end subroutine fast_step_or_substeps
 
@@ -132,34 +126,25 @@ contains
    !> accepts a step (Newmark's update, eq. 20; the impactor; the contact
    !> history committed). Stops at the first sub-step that does not
    !> converge.
-   subroutine take_substeps(solver, model, sub_nm, n, plate, imp, hist, d, imp_new, cit, converged, stat, errmsg)
+   subroutine take_substeps(solver, model, sub_nm, n, st, converged, stat, errmsg)
       type(solver_t), intent(inout) :: solver          !< solver, factored for sub_nm
       type(model_t), intent(in) :: model               !< model
       type(newmark_t), intent(in) :: sub_nm            !< Newmark constants of a sub-step
       integer, intent(in) :: n                         !< sub-steps
-      type(plate_state_t), intent(inout) :: plate      !< the plate at t in; at the last sub-step's start out
-      type(impactor_t), intent(inout) :: imp           !< the impactor, likewise
-      type(contact_history_t), intent(inout) :: hist   !< committed contact history, likewise
-      real(dp), intent(out) :: d(:)                    !< the plate at the last sub-step's end
-      type(impactor_t), intent(out) :: imp_new         !< the impactor there
-      type(contact_iteration_t), intent(inout) :: cit  !< the last sub-step's contact
+      type(step_state_t), intent(inout) :: st          !< at t in; at the last sub-step's start and end out
       logical, intent(out) :: converged                !< every sub-step met eq. (18)
       integer, intent(out) :: stat                     !< 0 unless the solver failed
       character(len=*), intent(inout) :: errmsg        !< reason on failure
-      real(dp) :: mb(size(d))                          ! M {b} of a sub-step, eq. (19)-(20)
       integer :: j                                     ! sub-step
 
       solver%contraction = huge(1.0_dp);  solver%since_measured = 0
       converged = .false.
       stat = 0
       sub_steps: do j = 1, n
-         call mass_times(model, newmark_predictor(sub_nm, plate%d, plate%v, plate%a), mb)
-         call fast_step(solver, model, sub_nm, mb, plate, imp, hist, d, imp_new, cit, converged, stat, errmsg)
+         call mass_times(model, newmark_predictor(sub_nm, st%plate%d, st%plate%v, st%plate%a), st%mb)
+         call fast_step(solver, model, sub_nm, st, converged, stat, errmsg)
          if (stat /= 0 .or. .not. converged .or. j == n) exit sub_steps
-         call newmark_update(sub_nm, plate%d, d, plate%v, plate%a)
-         plate%d = d
-         imp = imp_new
-         call contact_commit(model%law, hist, cit%alpha)
+         call step_accept(st, sub_nm, model, commit=.true.)
       end do sub_steps
    end subroutine take_substeps
 

@@ -46,16 +46,14 @@ contains
 
    !> The record of a run: its regime; its thresholds when G_IIc is given;
    !> its interfaces' map when the strengths are (none with one ply).
-   pure subroutine delamination_open(rec, d, ratio, with_g2c, g2c, with_str, str, nply, npoint)
-      type(delamination_t), intent(out) :: rec    !< the record
+   pure subroutine delamination_open(rec, d, with_g2c, g2c, with_str, str, nply, npoint)
+      type(delamination_t), intent(out) :: rec    !< the record (its ratio set by the caller)
       real(dp), intent(in) :: d(3,3)              !< bending stiffness D_ij (N m)
-      real(dp), intent(in) :: ratio               !< impactor/plate mass (-)
       logical, intent(in) :: with_g2c             !< G_IIc given
       real(dp), intent(in) :: g2c                 !< G_IIc (J/m^2), when given
       logical, intent(in) :: with_str             !< the strengths given
       type(strength_t), intent(in) :: str         !< ply strengths (Pa), when given
       integer, intent(in) :: nply, npoint         !< plies; Gauss points
-      rec%ratio = ratio
       if (with_g2c) then
          rec%threshold = .true.
          rec%p_c = threshold_load(d, g2c)

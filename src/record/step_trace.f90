@@ -8,8 +8,8 @@
 module step_trace
    use kinds, only: dp
    use plate_solver, only: solver_t
-   use contact_iteration, only: contact_iteration_t, contact_converged
-   use contact_law, only: contact_history_t, contact_branch
+   use contact_iteration, only: step_state_t, contact_converged
+   use contact_law, only: contact_branch
    use contact_load, only: pattern_mean
    use newmark, only: impactor_t
    implicit none
@@ -71,17 +71,15 @@ contains
    end subroutine trace_step
 
    !> One contact iteration ic of a traced step, box by box.
-   subroutine trace_iteration(tr, step, ic, cit, solver, imp_new, d, hist, scheme)
+   subroutine trace_iteration(tr, step, st, solver, scheme)
       type(trace_t), intent(in) :: tr
-      integer, intent(in) :: step, ic          !< the step, the contact iteration
-      type(contact_iteration_t), intent(in) :: cit   !< assumed force, area, indentation, law's force
+      integer, intent(in) :: step              !< the step
+      type(step_state_t), intent(in) :: st     !< its contact iteration, plate solution and impactor moved
       type(solver_t), intent(in) :: solver     !< the eq. (19) iterations of the plate solution
-      type(impactor_t), intent(in) :: imp_new  !< the impactor moved under the assumed force
-      real(dp), intent(in) :: d(:)             !< the plate solution
-      type(contact_history_t), intent(in) :: hist    !< committed contact history
       character(len=*), intent(in) :: scheme   !< 'paper' or 'fast'
       integer :: n
       if (.not. traced(tr, step)) return
+      associate (cit => st%cit, ic => st%cit%iterations, imp_new => st%imp_new, d => st%d_new, hist => st%hist)
       if (scheme == 'fast') then
          write (tr%unit, '(a)') "trace:   scheme 'fast': the contact equation F = F_law(alpha(F)) solved inside " &
             // 'each eq. (19) iteration (src/scheme/fast_scheme.f90)'
@@ -115,6 +113,7 @@ contains
          abs(cit%f_assum - cit%f_cont)/max(cit%f_assum, tiny(1.0_dp)), ' against C_r1 = ', tr%cr1, ': ' &
          // trim(merge('converged    ', 'not converged', &
             contact_converged(cit%f_assum, cit%f_cont, tr%cr1, hist%f_m)))
+      end associate
    end subroutine trace_iteration
 
    pure logical function traced(tr, step)

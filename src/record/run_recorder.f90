@@ -1,66 +1,50 @@
-!> The run recorder of the impact analysis (Fig. 3, "output"): everything a
-!> run writes, kept out of the time loop: the history file, the HDF5
-!> results file, the energy bookkeeping (above add_contact_work), the
-!> summary's figures (peaks refined between the steps: above
-!> update_maxima), the warnings and &analysis stop_on_warning. No module
-!> state: all of it is in the record_t the main program holds.
-!>   record_open   before the first step: the files, row 0 (the impactor
-!>                 touching the plate at v0)
-!>   record_step   after every accepted step: energies, summary figures,
-!>                 history row, snapshots and the peak state, warnings;
-!>                 sets rec%stop when the run must end here (a divergence,
-!>                 or a warning with stop_on_warning)
-!>   record_close  at the end, or when a run fails: the summary, in
-!>                 <prefix>_summary.dat and /summary, with its status
-!> More: docs/OUTPUT.md.
+!> The run's record (Fig. 3, "output"), kept out of the time loop: the
+!> history file and <prefix>.h5 (src/results/), the energy balance (above
+!> add_contact_work), the summary's figures (peaks refined between the
+!> steps: above update_maxima), the warnings and &analysis stop_on_warning.
+!> All of it is in the record_t the main program holds: record_open before
+!> the first step (row 0), record_step after every accepted step (sets
+!> rec%stop when the run must end there), record_close at the end or on a
+!> failure (the summary with its status). More: docs/OUTPUT.md.
 module run_recorder
-   use, intrinsic :: iso_fortran_env, only: error_unit, int64
+   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use kinds, only: dp, msg_len
    use number_text, only: int_str, real_short
    use deck_schema, only: deck_t
    use plate_model, only: model_t, back_face_strain, max_deflection, plate_kinetic_energy, plate_strain_energy
-   use plate_solver, only: solver_t, contact_response, pattern_compliance
-   use contact_iteration, only: contact_iteration_t, contact_area
+   use plate_solver, only: solver_t
+   use contact_iteration, only: step_state_t, contact_iteration_t, contact_area
    use contact_law, only: contact_history_t, contact_branch, law_tangent, branch_none
    use contact_load, only: load_pattern_t, pattern_mean
-   use newmark, only: plate_state_t, impactor_t, impactor_compliance, newmark_init
+   use newmark, only: newmark_t, impactor_t, impactor_compliance
    use scene_model, only: theory_warning, bending_deflection
    use result_files, only: column_t, history_columns, nhist, summary_item_t, summary_real, summary_integer, &
-      summary_text, open_columns, write_history_row, reserve_summary, write_summary_file, col_time, col_force, &
+      summary_text, keep_failure, open_history, write_history_row, reserve_summary, write_summary_file, col_time, col_force, &
       col_alpha, col_w_plate, col_w_impactor, col_v_impactor, col_strain_y, col_ke_impactor, col_ke_plate, &
       col_strain_energy, col_contact_work, col_contact_energy, col_energy_error, col_branch, col_contact_iter, &
-      col_solves, nhist_strength, history_width, history_slot, col_failure_index, col_failure_mode
+      col_solves, nhist_strength, history_width, col_failure_index, col_failure_mode
    use file_system, only: truncate_file, file_probe_t, open_probe, probe_size, close_probe
    use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_tick, &
       results_flush, results_leave, results_closing, results_finish
-   use restart_io, only: put_tag, take_tag, put_real, take_real, put_int, take_int, put_flag, take_flag, put_reals, &
-      take_reals, put_ints, take_ints, put_impactor, take_impactor, put_pattern, take_pattern
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
    use progress_line, only: progress_t, progress_start, progress_step, progress_end
-   use step_peak, only: peak_track_t, peak_sample, peak_between, zero_crossing, peak_state, peak_restore, &
-      peak_state_size
+   use step_peak, only: peak_track_t, peak_sample, peak_between, zero_crossing
    implicit none
    private
-   public :: record_t, record_open, record_step, record_close, record_save_state, record_load_state
+   public :: record_t, record_settings, record_open, record_step, record_close, nwarn
 
-   !> Deflection over thickness beyond which von Karman's theory of moderately
-   !> large deflections is no longer trusted (a warning, not an error).
+   !> w/h beyond which von Karman's moderately large deflections are not trusted (a warning).
    real(dp), parameter :: von_karman_limit = 5.0_dp
 
    !> Kinds of warning, each given once (later ones are counted).
    integer, parameter :: warn_mixing = 1, warn_contact = 2, warn_deflection = 3, warn_unconverged = 4, &
                          warn_energy = 5, warn_indentation = 6, warn_drift = 7, warn_energy_lost = 8, &
                          warn_substeps = 9, nwarn = 9
-   !> Energy the integration may create before it is warned, as a fraction
-   !> of E0 (docs/STABILITY.md, "The energy bound"): the average acceleration
-   !> rule conserves energy, so created energy is the time step's error in
-   !> the contacts and the nonlinear terms, not rounding.
+   !> Energy the integration may create (lose) before it is warned, as a
+   !> fraction of E0 (docs/STABILITY.md, "The energy bound"): the average
+   !> acceleration rule conserves energy, so both are the time step's error.
    real(dp), parameter :: energy_created_bound = 1.0e-3_dp
-   !> Energy the integration may lose before it is warned, as a fraction of
-   !> E0 (docs/STABILITY.md, "The energy bound"): the tolerances of eq. (17)
-   !> and (18) and the time step's error in the contacts take a little at
-   !> every step; more than this and the answer is no longer an impact's.
    real(dp), parameter :: energy_lost_bound = 1.0e-2_dp
 
    !> What a run has recorded so far.
@@ -78,7 +62,8 @@ module run_recorder
       integer :: ncol = nhist                    !< history columns of the run (history_width)
       integer :: every = 1, fields_every = 1, nstep = 0
       logical :: stop_on_warning = .false.
-      real(dp) :: dt = 0, mass = 0, h = 0        !< time step (s), impactor mass (kg), plate thickness (m)
+      real(dp) :: dt = 0, h = 0                  !< time step (s, Newmark's), plate thickness (m)
+      real(dp) :: cpu_before = 0                 !< cpu time of the run before its restart (s)
       character(len=:), allocatable :: edges
       ! -- energies (J)
       real(dp) :: e0 = 0, contact_work = 0, contact_energy = 0
@@ -92,8 +77,7 @@ module run_recorder
       integer :: contact_fallback_steps = 0, warnings = 0, mixed_seen = 0, solves_before = 0
       integer :: substepped_steps = 0            !< steps of scheme 'fast' taken in sub-steps (src/scheme/substeps.f90)
       logical :: in_contact = .false.
-      ! the samples of the largest contact force (N), deflection under the impactor (m) and back-face
-      ! strain (-), refined between the steps by src/results/step_peak.f90
+      ! samples of the largest force (N), deflection under the impactor (m), back-face strain (-)
       type(peak_track_t) :: force_peak, deflection_peak, strain_peak
       ! the first contact's start and end, interpolated (s; -1: not yet), and the step's indentation (m)
       real(dp) :: first_contact_start = -1, first_contact_end = -1, alpha_prev = 0
@@ -101,13 +85,11 @@ module run_recorder
       real(dp) :: max_energy_error = 0, energy_created = 0, energy_lost = 0
       real(dp) :: max_w_over_h = 0
       real(dp) :: w_bend_max = 0, diverged_at = -1
-      ! compliances under the impactor over a step (m/N; c_plate -1: not measured), and the largest
-      ! slope (c_plate + c_impactor) dF/d alpha of the paper's fixed-point force update (-)
+      ! compliances under the impactor over a step (m/N; c_plate -1: none), largest fixed-point slope (-)
       real(dp) :: c_plate = -1, c_impactor = 0, max_slope = 0
       logical :: warned(nwarn) = .false.
-      type(progress_t) :: progress               !< the progress line on standard error (src/results/progress_line.f90)
-      ! (a figure added here that a run carries from step to step is saved and
-      ! restored by record_save_state and record_load_state: a restart)
+      type(progress_t) :: progress               !< the progress line on standard error (src/record/progress_line.f90)
+      ! (what a run carries from step to step is saved for a restart: src/record/restart_point.f90)
    end type record_t
 
    !> What record_step knows of the step it records, for its parts.
@@ -121,12 +103,10 @@ module run_recorder
       real(dp) :: w_rigid = 0          !< free edges: the rigid-body part of the deflection under the impactor (m)
    end type step_figures_t
 
-   !> Longest text of a warning in its table (step_warnings; the longest is
-   !> 230 characters, and gfortran's -Wall flags a text cut short).
+   !> A line of the warnings' table (step_warnings): its kind, its test at this
+   !> step, its text ({1}, {2}: its figures; {note}: the iteration's report;
+   !> 256 characters hold the longest, 230).
    integer, parameter :: warning_text_len = 256
-   !> A line of the warnings' table (step_warnings): a warning's kind, its
-   !> test at this step and its text, in which {1} and {2} stand for its
-   !> figures and {note} for the nonlinear iteration's report (warning_text).
    type :: warning_check_t
       integer :: kind                                  !< the kind (warn_*), warned once per run
       logical :: due                                   !< its test holds at this step
@@ -136,16 +116,15 @@ module run_recorder
 
 contains
 
-   !> Opens the history (title, deck echo, columns) and, with &output hdf5,
-   !> <prefix>.h5; writes row 0. For scheme 'paper' it also measures the
-   !> plate's compliance under the impactor over one step (one solve), for
-   !> the summary's fixed-point diagnostics (docs/PAPER.md).
-   subroutine record_open(rec, deck, model, solver, imp, stat, errmsg)
+   !> Opens the history and <prefix>.h5 and writes row 0; c_plate: the plate's
+   !> compliance over a step for the fixed-point diagnostics (-1: none).
+   subroutine record_open(rec, deck, model, nm, imp, c_plate, stat, errmsg)
       type(record_t), intent(out) :: rec            !< the record
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(model_t), intent(in) :: model            !< the model
-      type(solver_t), intent(inout) :: solver       !< the solver (one response for c_plate)
-      type(impactor_t), intent(in) :: imp     !< the impactor at t = 0
+      type(newmark_t), intent(in) :: nm             !< Newmark's constants (the time step)
+      type(impactor_t), intent(in) :: imp           !< the impactor at t = 0
+      real(dp), intent(in) :: c_plate               !< the plate's compliance (m/N; -1: not measured)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(contact_history_t) :: fresh
@@ -154,35 +133,24 @@ contains
       character(len=96), allocatable :: texts(:)
       type(column_t) :: col
       integer :: c
-
-      call take_settings(rec, deck)
-      rec%e0 = 0.5_dp*deck%mass*deck%velocity**2
+      call record_settings(rec, deck, model, nm)
+      rec%e0 = 0.5_dp*imp%mass*imp%v**2
       rec%imp_prev = imp
       rec%d_prev = [(0.0_dp, c = 1, model%msh%neq)]
       call contact_area(model, fresh, 0.0_dp, rec%pattern_prev)
-      rec%c_impactor = impactor_compliance(newmark_init(deck%dt), imp)
-      if (deck%scheme == 'paper') then
-         call contact_response(solver, rec%pattern_prev, stat, errmsg)
-         if (stat /= 0) return
-         rec%c_plate = pattern_compliance(solver, rec%pattern_prev)
-      end if
-
+      rec%c_impactor = impactor_compliance(nm, imp)
+      rec%c_plate = c_plate
       call reserve_summary(deck, stat, errmsg)
       if (stat /= 0) return
-      ! -- with &strength: the ply stresses and failure indices (src/results/damage_record.f90)
-      call damage_open(rec%damage, deck, model)
-      rec%ncol = history_width(rec%damage%active)
-      ! (filled in a loop: gfortran 12 garbles an array constructor of a
-      ! constant's components with a variable implied-do bound)
+      ! (a loop: gfortran 12 garbles an array constructor of a constant's components here)
       allocate (names(rec%ncol), texts(rec%ncol))
       do c = 1, rec%ncol
          col = history_columns(c)
          names(c) = col%file_name
          texts(c) = col%meaning // ' (' // trim(col%file_unit) // ')'
       end do
-
-      call open_columns(deck, '_history.dat', 'impact: history of a low-velocity impact (Choi, Hong & Lee 1991)', &
-         names, texts, rec%hist_unit, rec%hist_path, stat, errmsg, align=history_slot)
+      call open_history(deck, 'impact: history of a low-velocity impact (Choi, Hong & Lee 1991)', &
+         names, texts, rec%hist_unit, rec%hist_path, stat, errmsg)
       if (stat /= 0) return
       call open_probe(rec%hist_path, rec%hist_probe, stat)
       if (stat /= 0) then
@@ -204,51 +172,49 @@ contains
       if (stat == 0) call results_flush(rec%h5, stat, errmsg)     ! row 0 in every file: the first restart point
    end subroutine record_open
 
-   !> The deck's settings the record keeps.
-   subroutine take_settings(rec, deck)
+   !> The settings the record keeps (of the deck, the time step) and, with
+   !> &strength, its ply stresses and failure indices (src/results/damage_record.f90).
+   subroutine record_settings(rec, deck, model, nm)
       type(record_t), intent(inout) :: rec          !< the record
       type(deck_t), intent(in) :: deck              !< the effective deck
+      type(model_t), intent(in) :: model            !< the model
+      type(newmark_t), intent(in) :: nm             !< Newmark's constants (the time step)
       rec%every = deck%every;  rec%fields_every = deck%fields_every
-      rec%nstep = nint(deck%t_end/deck%dt)
+      rec%nstep = nint(deck%t_end/nm%dt)
       rec%stop_on_warning = deck%stop_on_warning
-      rec%dt = deck%dt;  rec%mass = deck%mass;  rec%h = deck%h
+      rec%dt = nm%dt;  rec%h = deck%h
       rec%edges = deck%edges
-   end subroutine take_settings
+      call damage_open(rec%damage, deck, model)
+      rec%ncol = history_width(rec%damage%active)
+   end subroutine record_settings
 
-   !> Records the step just accepted (module header). ic is the step's
-   !> contact iterations, converged whether its iterations met eq. (17)
-   !> and (18) (force_update = 'plain' goes on without).
-   subroutine record_step(rec, step, model, solver, plate, imp, hist, cit, ic, converged, stat, errmsg)
+   !> Records the step just accepted: plate and impactor at t + dt, the contact
+   !> history before its commit, the step's contact iteration.
+   subroutine record_step(rec, step, model, solver, st, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       integer, intent(in) :: step                        !< the step
       type(model_t), intent(in) :: model                 !< the model
       type(solver_t), intent(in) :: solver               !< the solver (its counters)
-      type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
-      type(contact_history_t), intent(in) :: hist        !< the contact history before this step's commit
-      type(contact_iteration_t), intent(in) :: cit       !< the step's contact force, indentation, area
-      integer, intent(in) :: ic                          !< contact iterations of the step
-      logical, intent(in) :: converged                   !< its iterations converged
+      type(step_state_t), intent(in) :: st               !< the step accepted, its contact history not yet committed
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
       type(step_figures_t) :: fig
-
       stat = 0
       rec%restart_due = .false.
       fig%step = step
       fig%t = real(step, dp)*rec%dt
-      fig%ic = ic
+      fig%ic = st%cit%iterations
       rec%steps = step
       fig%solves = solver%solves - rec%solves_before
       rec%solves_before = solver%solves
-
-      call add_contact_work(rec, plate, imp, cit)
-      fig%w_plate = pattern_mean(cit%pattern, plate%d)
+      associate (plate => st%plate, imp => st%imp)
+      call add_contact_work(rec, st)
+      fig%w_plate = pattern_mean(st%cit%pattern, plate%d)
       fig%strain_y = back_face_strain(model, plate%d)
-      call update_maxima(rec, fig, model, plate, imp, hist, cit, stat, errmsg)
+      call update_maxima(rec, fig, model, st, stat, errmsg)
       if (stat /= 0) return
       if (mod(step, rec%every) == 0 .or. step == rec%nstep) then
-         call history_row(rec, fig, model, plate, imp, hist, cit, stat, errmsg)
+         call history_row(rec, fig, model, st, stat, errmsg)
          if (stat /= 0) return
       end if
       if (.not. (ieee_is_finite(fig%w_plate) .and. ieee_is_finite(imp%f) .and. ieee_is_finite(imp%w))) &
@@ -257,38 +223,26 @@ contains
       call results_state(rec%h5, step, fig%t, imp%f, plate%d, &
                          mod(step, rec%fields_every) == 0 .or. step == rec%nstep, stat, errmsg)
       if (stat /= 0) return
-      call step_warnings(rec, fig, solver, cit, converged, stat, errmsg)
+      call step_warnings(rec, fig, solver, st%cit, stat, errmsg)
       call progress_step(rec%progress, step, fig%t)
-      ! once a second the files are flushed: a restart point is due (src/results/restart_point.f90)
+      ! once a second the files are flushed: a restart point is due (src/record/restart_point.f90)
       if (stat == 0) call results_tick(rec%h5, rec%restart_due, stat, errmsg)
+      end associate
    end subroutine record_step
 
-   !> Energies (whole plate, J): the impactor's kinetic energy; the plate's
-   !> kinetic and strain energy; the work of the contact force on the plate,
-   !> the trapezoidal rule of the load vectors at both ends of a step,
-   !> 1/2 (F_t p_t + F_t+dt p_t+dt)^T (D_t+dt - D_t) (which Newmark's rule
-   !> balances exactly against the plate's energy in the linear theory); the
-   !> energy the contact took, the impactor's work 1/2 (F_t + F_t+dt) dw_r less
-   !> that; and the balance, E0 less the four, which measures what the
-   !> integration lost (+) or created (-). A run whose balance goes below -E0
-   !> (it created more energy than the impact brought) has diverged and stops;
-   !> so does one whose state is not finite. The energies are computed on the
-   !> history rows only (every &output every steps: a strain energy and an
-   !> M x each), so with every > 1 the summary's energy maxima, the energy
-   !> warnings and the divergence stop see those rows.
-   !>
-   !> The energies of every step: the contact force's work on the plate, by
-   !> the trapezoidal rule of the load vectors at both ends of the step,
-   !> 1/2 (F_t p_t + F_t+dt p_t+dt)^T (D_t+dt - D_t), and the energy the
-   !> contact took, the impactor's work 1/2 (F_t + F_t+dt) dw_r less that
-   !> (as above); the step's end becomes the next one's start.
-   subroutine add_contact_work(rec, plate, imp, cit)
+   !> Energies (whole plate, J): the impactor's kinetic energy, the plate's
+   !> kinetic and strain energy, the contact force's work on the plate by the
+   !> trapezoidal rule, 1/2 (F_t p_t + F_t+dt p_t+dt)^T (D_t+dt - D_t) (which
+   !> Newmark's rule balances exactly in the linear theory), the energy the
+   !> contact took, 1/2 (F_t + F_t+dt) dw_r less that work, and the balance, E0
+   !> less the four: lost (+) or created (-). Below -E0 the run has diverged
+   !> and stops, as when its state is not finite. Computed on the history rows
+   !> only (every &output every steps); the work of every step, here.
+   subroutine add_contact_work(rec, st)
       type(record_t), intent(inout) :: rec               !< the record
-      type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
-      type(contact_iteration_t), intent(in) :: cit       !< the step's contact force and area
+      type(step_state_t), intent(in) :: st               !< the step accepted: plate, impactor, contact area
       real(dp) :: work
-
+      associate (plate => st%plate, imp => st%imp, cit => st%cit)
       work = 0.5_dp*(rec%imp_prev%f*pattern_mean(rec%pattern_prev, plate%d - rec%d_prev) &
                      + imp%f*pattern_mean(cit%pattern, plate%d - rec%d_prev))
       rec%contact_work = rec%contact_work + work
@@ -296,40 +250,24 @@ contains
       rec%imp_prev = imp
       rec%pattern_prev = cit%pattern
       rec%d_prev = plate%d
+      end associate
    end subroutine add_contact_work
 
-   !> The summary's peak force and its time, largest deflection and largest
-   !> strain are refined between the steps: the vertex of the parabola through
-   !> the largest sample and its two neighbours (row 0 counts as a sample), or
-   !> the sample itself at the ends of the record or where the three are not
-   !> concave (src/results/step_peak.f90); the sampled peak force and its time
-   !> (the step of /peak in <prefix>.h5) are kept as *_sampled keys. The first
-   !> contact lasts from the first touch (t = 0, the indentation 0 there) to
-   !> where the indentation less the permanent indentation, alpha - alpha_0,
-   !> crosses 0, linear between the last step with force and the first without
-   !> (the force itself is 0 at that step and its law F ~ (alpha - alpha_0)^q
-   !> leaves it with slope 0, so a line through the forces would give the step).
-   !>
-   !> The summary's running figures of every step: the samples of the peak
-   !> force, the largest deflection and strain (src/results/step_peak.f90
-   !> refines them between the steps), the contacts and the first one's
-   !> start and end (first_contact_bounds), the largest w/h,
-   !> the iterations, the bending deflection (and with free edges the rigid-
-   !> body part of the deflection under the impactor, fig%w_rigid), the
-   !> largest slope of the fixed-point force update, the peak's ply stresses.
-   subroutine update_maxima(rec, fig, model, plate, imp, hist, cit, stat, errmsg)
+   !> The summary's running figures of every step: the samples of the peaks,
+   !> refined between the steps (src/record/step_peak.f90; row 0 a sample),
+   !> the contacts and the first one's bounds, w/h, the iterations, the
+   !> bending deflection (free edges: fig%w_rigid), the fixed-point slope, the
+   !> peak's ply stresses.
+   subroutine update_maxima(rec, fig, model, st, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(inout) :: fig         !< the step (in); its w_rigid (out)
       type(model_t), intent(in) :: model                 !< the model
-      type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
-      type(contact_history_t), intent(in) :: hist        !< the contact history before this step's commit
-      type(contact_iteration_t), intent(in) :: cit       !< the step's indentation
+      type(step_state_t), intent(in) :: st               !< the step accepted (record_step)
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
       real(dp) :: w_bend
-
-      ! (a NaN force is not a sample: the peak force keeps the finite ones, as it always did)
+      associate (plate => st%plate, imp => st%imp, hist => st%hist, cit => st%cit)
+      ! (a NaN force is not a sample: the peak force keeps the finite ones)
       if (.not. ieee_is_nan(imp%f)) call peak_sample(rec%force_peak, fig%t, imp%f)
       call peak_sample(rec%deflection_peak, fig%t, abs(fig%w_plate))
       call peak_sample(rec%strain_peak, fig%t, abs(fig%strain_y))
@@ -347,14 +285,13 @@ contains
       if (rec%c_plate >= 0.0_dp) rec%max_slope = max(rec%max_slope, &
          (rec%c_plate + rec%c_impactor)*law_tangent(model%law, hist, cit%alpha))
       call damage_peak(rec%damage, fig%step, fig%t, imp%f, plate%d)
+      end associate
    end subroutine update_maxima
 
-   !> The contacts (a step with force after one without starts one), and
-   !> the first contact's start and end, each where the indentation less the
-   !> permanent indentation, alpha - alpha_0, crosses 0 between the step
-   !> before and this one (zero_crossing; above update_maxima): the start of the
-   !> first contact is t = 0, where the impactor touches the plate with
-   !> alpha = 0. rec%alpha_prev is still the step before's indentation.
+   !> The contacts (force after a step without starts one) and the first
+   !> one's start (t = 0) and end, where alpha - alpha_0 crosses 0 between the
+   !> step before (rec%alpha_prev) and this one (the force, F ~ (alpha -
+   !> alpha_0)^q, leaves 0 with slope 0: a line through it would give the step).
    subroutine first_contact_bounds(rec, t, f, alpha, alpha_0)
       type(record_t), intent(inout) :: rec               !< the record
       real(dp), intent(in) :: t                          !< the step's time (s)
@@ -362,7 +299,6 @@ contains
       real(dp), intent(in) :: alpha                      !< its indentation (m), eq. (13)
       real(dp), intent(in) :: alpha_0                    !< the permanent indentation of the contact's law (m), eq. (12)
       real(dp) :: crossing
-
       crossing = zero_crossing(t - rec%dt, rec%alpha_prev - alpha_0, t, alpha - alpha_0)
       if (f > 0.0_dp .and. .not. rec%in_contact) then
          rec%in_contact = .true.
@@ -374,25 +310,21 @@ contains
       end if
    end subroutine first_contact_bounds
 
-   !> The history row of the step (every &output every steps, and the last),
-   !> to the history file and <prefix>.h5; a run whose energy balance goes
-   !> below -E0 has diverged and stops here (above add_contact_work).
-   subroutine history_row(rec, fig, model, plate, imp, hist, cit, stat, errmsg)
+   !> The history row of the step (every &output every steps, and the last);
+   !> a balance below -E0 stops the run (diverged).
+   subroutine history_row(rec, fig, model, st, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(in) :: fig            !< the step
       type(model_t), intent(in) :: model                 !< the model
-      type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
-      type(contact_history_t), intent(in) :: hist        !< the contact history before this step's commit
-      type(contact_iteration_t), intent(in) :: cit       !< the step's indentation
+      type(step_state_t), intent(in) :: st               !< the step accepted (record_step)
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
       real(dp) :: row(nhist_strength)
-
+      associate (plate => st%plate, imp => st%imp, hist => st%hist, cit => st%cit)
       row(col_time) = fig%t;  row(col_force) = imp%f;  row(col_alpha) = cit%alpha
       row(col_w_plate) = fig%w_plate;  row(col_w_impactor) = imp%w;  row(col_v_impactor) = imp%v
       row(col_strain_y) = fig%strain_y
-      call row_energies(rec, model, plate, imp, row)
+      call row_energies(rec, model, st, row)
       row(col_branch) = contact_branch(hist, cit%alpha)
       if (imp%f <= 0.0_dp) row(col_branch) = branch_none
       row(col_contact_iter) = fig%ic
@@ -407,22 +339,19 @@ contains
       if (row(col_energy_error) < -rec%e0) call stop_here(rec, fig, 'diverged at step ' // int_str(fig%step), &
          'the run created more energy than the impact brought (energy balance ' &
          // real_short(row(col_energy_error)) // ' J, E0 = ' // real_short(rec%e0) // ' J): it has diverged')
+      end associate
    end subroutine history_row
 
-   !> The energies of a history row (J, whole plate): the impactor's and the
-   !> plate's kinetic energy, the plate's strain energy, the contact's work
-   !> and energy (add_contact_work), and the balance E0 less the four, with
-   !> the summary's largest balance, energy created (-) and energy lost (+).
-   subroutine row_energies(rec, model, plate, imp, row)
+   !> The energies of a history row (J; above add_contact_work) and the
+   !> summary's largest balance, energy created (-) and lost (+).
+   subroutine row_energies(rec, model, st, row)
       type(record_t), intent(inout) :: rec               !< the record
       type(model_t), intent(in) :: model                 !< the model
-      type(plate_state_t), intent(in) :: plate           !< the plate at t + dt
-      type(impactor_t), intent(in) :: imp          !< the impactor at t + dt
+      type(step_state_t), intent(in) :: st               !< the plate and the impactor at t + dt
       real(dp), intent(inout) :: row(nhist_strength)     !< the history row: its energy columns set
-
-      row(col_ke_impactor) = 0.5_dp*rec%mass*imp%v**2
-      row(col_ke_plate) = plate_kinetic_energy(model, plate%v)
-      row(col_strain_energy) = plate_strain_energy(model, plate%d)
+      row(col_ke_impactor) = 0.5_dp*st%imp%mass*st%imp%v**2
+      row(col_ke_plate) = plate_kinetic_energy(model, st%plate%v)
+      row(col_strain_energy) = plate_strain_energy(model, st%plate%d)
       row(col_contact_work) = rec%contact_work
       row(col_contact_energy) = rec%contact_energy
       row(col_energy_error) = rec%e0 - (row(col_ke_impactor) + row(col_ke_plate) + row(col_strain_energy) &
@@ -432,24 +361,18 @@ contains
       rec%energy_lost = nan_max(rec%energy_lost, row(col_energy_error))
    end subroutine row_energies
 
-   !> The warnings of the step, from the table below (each warning's kind,
-   !> test and text, in the order they are given): fall-backs, deflections
-   !> beyond von Karman's theory, energy created or lost, an indentation
-   !> through the plate, a free plate's flight, a step that did not converge
-   !> and went on (force_update = 'plain'). Every step a test holds is
-   !> counted for the summary (count_step); each kind is warned once (warn).
-   subroutine step_warnings(rec, fig, solver, cit, converged, stat, errmsg)
+   !> The warnings of the step, from the table below, in the order given:
+   !> every step a test holds is counted (count_step), each kind warned once.
+   subroutine step_warnings(rec, fig, solver, cit, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(in) :: fig            !< the step
       type(solver_t), intent(in) :: solver               !< the solver (its fall-backs)
-      type(contact_iteration_t), intent(in) :: cit       !< the step's contact iteration
-      logical, intent(in) :: converged                   !< its iterations converged
+      type(contact_iteration_t), intent(in) :: cit       !< the step's contact iteration (converged: eq. 17, 18 met)
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
       real(dp), parameter :: none(2) = 0.0_dp
       type(warning_check_t) :: table(10)
       integer :: k
-
       stat = 0
       table = [ &
          warning_check_t(warn_mixing, solver%mixed_solves > rec%mixed_seen, none, 'the nonlinear iteration ' &
@@ -479,7 +402,7 @@ contains
             [abs(fig%w_rigid)*1.0e3_dp, rec%w_bend_max*1.0e3_dp], 'the free plate has moved {1} mm as a rigid ' &
             // 'body under the impactor, more than its largest bending deflection ({2} mm): nothing holds it, ' &
             // 'and from here on its deflections are mostly flight, not bending'), &
-         warning_check_t(warn_unconverged, .not. converged, none, 'the contact iteration (eq. 17) did not ' &
+         warning_check_t(warn_unconverged, .not. cit%converged, none, 'the contact iteration (eq. 17) did not ' &
             // 'converge in max_contact_iter iterations; with force_update = ''plain'' the step keeps its last ' &
             // 'assumed force and the run goes on (later such steps are counted in the summary, ' &
             // 'unconverged_steps)'), &
@@ -494,15 +417,12 @@ contains
       end do
    end subroutine step_warnings
 
-   !> The summary's count of the steps of a warning's kind (the warning
-   !> itself is given once): fall-backs of the nonlinear iteration and of the
-   !> contact iteration, steps that did not converge.
+   !> The summary's count of the steps of a warning's kind.
    subroutine count_step(rec, kind, step, solver)
       type(record_t), intent(inout) :: rec               !< the record
       integer, intent(in) :: kind                        !< the warning's kind (warn_*)
       integer, intent(in) :: step                        !< the step
       type(solver_t), intent(in) :: solver               !< the solver (its fall-backs so far)
-
       select case (kind)
       case (warn_mixing)
          rec%mixed_seen = solver%mixed_solves
@@ -517,13 +437,11 @@ contains
       end select
    end subroutine count_step
 
-   !> The text of a warning: its table's text with {1} and {2} its figures
-   !> (real_short) and {note} the nonlinear iteration's report of its fall-back.
+   !> A warning's text: {1}, {2} its figures, {note} the iteration's report.
    function warning_text(check, solver) result(text)
       type(warning_check_t), intent(in) :: check         !< the warning's line of the table
       type(solver_t), intent(in) :: solver               !< the solver (its mixing_note)
       character(len=:), allocatable :: text              !< the text
-
       text = trim(check%text)
       if (index(text, '{1}') > 0) text = replaced(text, '{1}', real_short(check%figures(1)))
       if (index(text, '{2}') > 0) text = replaced(text, '{2}', real_short(check%figures(2)))
@@ -537,14 +455,12 @@ contains
       character(len=*), intent(in) :: value              !< what replaces it
       character(len=:), allocatable :: out               !< the text with value for key
       integer :: i
-
       i = index(text, key)
       out = text(:i - 1) // value // text(i + len(key):)
    end function replaced
 
-   !> A warning on standard error naming the step and time, given once per
-   !> kind; counted in the summary. With &analysis stop_on_warning the run
-   !> stops after this step.
+   !> A warning on standard error naming the step and time, once per kind;
+   !> with &analysis stop_on_warning the run stops after this step.
    subroutine warn(rec, fig, kind, message, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(in) :: fig            !< the step
@@ -554,30 +470,24 @@ contains
       character(len=*), intent(inout) :: errmsg          !< reason on failure
       integer :: ios
       character(len=msg_len) :: why
-
       if (rec%warned(kind)) return
       rec%warned(kind) = .true.
       rec%warnings = rec%warnings + 1
       call progress_end(rec%progress)           ! the terminal's progress line cleared first
       write (error_unit, '(a,i0,a,es11.4,a)') 'impact: warning: step ', fig%step, ' (t = ', fig%t, ' s): ' // message
       call results_flush(rec%h5, ios, why)      ! the results up to the warning, on disk
-      if (ios /= 0 .and. stat == 0) then
-         stat = ios
-         errmsg = why
-      end if
+      call keep_failure(stat, errmsg, ios, why)
       if (rec%stop_on_warning) call stop_here(rec, fig, 'stopped at step ' // int_str(fig%step) // ' by the ' &
          // 'warning (&analysis stop_on_warning = .true.)', '')
    end subroutine warn
 
-   !> The run must end after this step (rec%stop), with this status in the
-   !> summary and exit status 1; the first reason given stays. A non-empty
-   !> message goes to standard error.
+   !> The run must end after this step (rec%stop) with this status and exit
+   !> status 1; the first reason stays; a message goes to standard error.
    subroutine stop_here(rec, fig, status, message)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(in) :: fig            !< the step
       character(len=*), intent(in) :: status             !< the summary's status: 'diverged at step N', ...
       character(len=*), intent(in) :: message            !< why, for standard error ('' for nothing)
-
       if (rec%stop) return
       rec%stop = .true.
       rec%stop_status = status
@@ -586,29 +496,23 @@ contains
       if (len(message) > 0) write (error_unit, '(a)') 'impact: error: step ' // int_str(fig%step) // ': ' // message
    end subroutine stop_here
 
-   !> Writes the summary (<prefix>_summary.dat and /summary of <prefix>.h5)
-   !> with the run's status and closes the files; after a linear run whose
-   !> deflection needed the nonlinear theory, warns (src/model/scene_model.f90).
-   !> Safe to call after any failure of record_open or record_step.
-   subroutine record_close(rec, deck, model, solver, status, hist, imp, cpu_s, unit, stat, errmsg)
-      type(record_t), intent(inout) :: rec          !< the record
+   !> Writes the summary (<prefix>_summary.dat, /summary) with rec%stop_status
+   !> and closes the files; safe after any failure of record_open or record_step.
+   subroutine record_close(rec, deck, model, solver, st, cpu_s, stat, errmsg)
+      type(record_t), intent(inout) :: rec          !< the record; its stop_status the run's status
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(model_t), intent(in) :: model            !< the model (its scene, for the theory warning)
       type(solver_t), intent(in) :: solver          !< the solver (its counters)
-      character(len=*), intent(in) :: status        !< 'completed', 'failed at step N (t = ...)', ...
-      type(contact_history_t), intent(in) :: hist   !< the contact history at the end
-      type(impactor_t), intent(in) :: imp     !< the impactor at the end
+      type(step_state_t), intent(in) :: st          !< the state at the end (impactor, contact history)
       real(dp), intent(in) :: cpu_s                 !< cpu time of the run (s)
-      integer, intent(in) :: unit                   !< where the last words go (standard output)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure (the first)
       type(summary_item_t), allocatable :: s(:)
       character(len=msg_len) :: text, dtext
       integer :: ios, dstat
-
       call progress_end(rec%progress)
       call closing_warnings(rec, model)
-      call run_summary(rec, solver, status, hist, imp, s)
+      call run_summary(rec, solver, st, s)
       ! -- where the strain gauge of max_strain_y_back is (src/model/plate_model.f90, place_gauge)
       call summary_real(s, 'gauge_x_mm', 'gauge_x', 'm', model%gauge_xy(1), 1.0e3_dp)
       call summary_real(s, 'gauge_y_mm', 'gauge_y', 'm', model%gauge_xy(2), 1.0e3_dp)
@@ -619,22 +523,15 @@ contains
       call damage_close(rec%damage, model, s, rec%h5, dstat, dtext)
       call summary_integer(s, 'warnings', rec%warnings)
       call summary_real(s, 'cpu_s', 'cpu', 's', cpu_s, 1.0_dp)
-
       if (rec%hist_unit >= 0) close (rec%hist_unit, iostat=ios)
       rec%hist_unit = -1
       call close_probe(rec%hist_probe)
       if (.not. allocated(rec%hist_path)) rec%hist_path = deck%prefix // '_history.dat'
       call write_summary_file(deck, s, stat, errmsg)
-      if (dstat /= 0 .and. stat == 0) then
-         stat = dstat
-         errmsg = dtext
-      end if
-      call results_finish(rec%h5, status, s, ios, text)
-      if (ios /= 0 .and. stat == 0) then
-         stat = ios
-         errmsg = text
-      end if
-      call last_words(rec, deck, cpu_s, unit)
+      call keep_failure(stat, errmsg, dstat, dtext)
+      call results_finish(rec%h5, rec%stop_status, s, ios, text)
+      call keep_failure(stat, errmsg, ios, text)
+      call last_words(rec, deck, cpu_s, output_unit)
    end subroutine record_close
 
    !> The text after the first ' = ' of 'dt chosen = 2.0 us: ...' (the summary's value).
@@ -644,15 +541,13 @@ contains
       value = trim(text(index(text, ' = ') + 3:))
    end function after_equals
 
-   !> At the end of a run: the theory warning of a linear run whose
-   !> deflection needed the nonlinear theory (src/model/scene_model.f90),
-   !> counted with the others, and the count of the warnings on standard error.
+   !> The end's warnings: a linear run whose deflection needed the nonlinear
+   !> theory (src/model/scene_model.f90), and their count, on standard error.
    subroutine closing_warnings(rec, model)
       type(record_t), intent(inout) :: rec          !< the record
       type(model_t), intent(in) :: model            !< the model (its scene)
       character(len=msg_len) :: text
       logical :: short
-
       call theory_warning(model%scene, rec%w_bend_max, short, text)
       if (short) then
          write (error_unit, '(a)') 'impact: warning: ' // trim(text)
@@ -664,19 +559,14 @@ contains
          // '; largest w/h ' // real_short(rec%max_w_over_h)
    end subroutine closing_warnings
 
-   !> The summary's items of the run's figures, from its status to the
-   !> fixed-point diagnostics (those of &strength, the warnings and the cpu
-   !> time follow: record_close).
-   subroutine run_summary(rec, solver, status, hist, imp, s)
-      type(record_t), intent(in) :: rec             !< the record
+   !> The summary's items from its status to the fixed-point diagnostics.
+   subroutine run_summary(rec, solver, st, s)
+      type(record_t), intent(in) :: rec             !< the record (its stop_status: the run's status)
       type(solver_t), intent(in) :: solver          !< the solver (its counters)
-      character(len=*), intent(in) :: status        !< the run's status
-      type(contact_history_t), intent(in) :: hist   !< the contact history at the end
-      type(impactor_t), intent(in) :: imp     !< the impactor at the end
+      type(step_state_t), intent(in) :: st          !< the state at the end (impactor, contact history)
       type(summary_item_t), allocatable, intent(out) :: s(:)   !< the items
       real(dp) :: duration, f_peak, t_peak, w_max, e_max, t_other
       logical :: ended
-
       ! -- first contact, from the first touch: its duration, or the time in contact so far
       ended = rec%contacts == 0 .or. rec%first_contact_end >= 0.0_dp
       duration = 0.0_dp
@@ -687,7 +577,7 @@ contains
       call peak_between(rec%deflection_peak, t_other, w_max)
       call peak_between(rec%strain_peak, t_other, e_max)
       allocate (s(0))
-      call summary_text(s, 'status', status)
+      call summary_text(s, 'status', rec%stop_status)
       call summary_real(s, 'peak_force_N', 'peak_force', 'N', f_peak, 1.0_dp)
       call summary_real(s, 'time_of_peak_us', 'time_of_peak', 's', t_peak, 1.0e6_dp)
       call summary_real(s, 'peak_force_sampled_N', 'peak_force_sampled', 'N', rec%force_peak%v(2), 1.0_dp)
@@ -697,8 +587,8 @@ contains
       call summary_integer(s, 'contacts', rec%contacts)
       call summary_real(s, 'max_deflection_mm', 'max_deflection', 'm', w_max, 1.0e3_dp)
       call summary_real(s, 'max_strain_y_back', 'max_strain_y_back', '-', e_max, 1.0_dp)
-      call summary_real(s, 'permanent_indentation_mm', 'permanent_indentation', 'm', hist%alpha_0, 1.0e3_dp)
-      call summary_real(s, 'rebound_velocity_m_s', 'rebound_velocity', 'm/s', -imp%v, 1.0_dp)
+      call summary_real(s, 'permanent_indentation_mm', 'permanent_indentation', 'm', st%hist%alpha_0, 1.0e3_dp)
+      call summary_real(s, 'rebound_velocity_m_s', 'rebound_velocity', 'm/s', -st%imp%v, 1.0_dp)
       call summary_real(s, 'initial_energy_J', 'initial_energy', 'J', rec%e0, 1.0_dp)
       call summary_real(s, 'max_energy_error_J', 'max_energy_error', 'J', rec%max_energy_error, 1.0_dp)
       call summary_real(s, 'max_energy_created_J', 'max_energy_created', 'J', rec%energy_created, 1.0_dp)
@@ -732,7 +622,6 @@ contains
       character(len=*), intent(in) :: name          !< its name in /summary
       real(dp), intent(in) :: time                  !< the time (s)
       logical, intent(in) :: given                  !< there is one (else 'none')
-
       if (given) then
          call summary_real(s, key, name, 's', time, 1.0e6_dp)
       else
@@ -748,7 +637,6 @@ contains
       real(dp), intent(in) :: cpu_s                 !< cpu time of the run (s)
       integer, intent(in) :: unit                   !< where they go (standard output)
       real(dp) :: f_peak, t_peak, w_max, t_w
-
       call peak_between(rec%force_peak, t_peak, f_peak)          ! as in the summary (above update_maxima)
       call peak_between(rec%deflection_peak, t_w, w_max)
       write (unit, '(a)') 'history: ' // rec%hist_path
@@ -759,126 +647,6 @@ contains
          w_max*1.0e3_dp, ' mm; cpu ', cpu_s, ' s'
    end subroutine last_words
 
-
-   ! ============================================================== restart
-
-   !> Writes what the record carries from step to step (a restart point,
-   !> src/results/restart_point.f90): the energies, the previous step's
-   !> impactor, pattern and plate, the summary's running figures and
-   !> maxima, the warnings given, the history file's length, the
-   !> delamination onset, and with &strength the damage record's maps and
-   !> maxima.
-   subroutine record_save_state(rec, u, stat)
-      type(record_t), intent(in) :: rec             !< the record
-      integer, intent(in) :: u                      !< the restart file, an open stream
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      call put_tag(u, 'record', stat)
-      call put_reals(u, [rec%e0, rec%contact_work, rec%contact_energy, rec%alpha_prev, &
-         rec%first_contact_start, rec%first_contact_end, rec%max_energy_error, rec%energy_created, &
-         rec%energy_lost, rec%max_w_over_h, rec%w_bend_max, &
-         rec%diverged_at, rec%c_plate, rec%c_impactor, rec%max_slope], stat)
-      call put_reals(u, [peak_state(rec%force_peak), peak_state(rec%deflection_peak), peak_state(rec%strain_peak)], &
-         stat)
-      call put_ints(u, [rec%steps, rec%contacts, rec%contact_iterations, rec%max_contact_iter, rec%max_solves, &
-         rec%unconverged_steps, rec%first_unconverged, rec%nonlinear_fallback_steps, rec%contact_fallback_steps, &
-         rec%warnings, rec%mixed_seen, rec%solves_before, merge(1, 0, rec%in_contact), rec%substepped_steps, &
-         merge(1, 0, rec%warned)], stat)
-      call put_real(u, real(rec%hist_bytes, dp), stat)
-      call put_impactor(u, rec%imp_prev, stat)
-      call put_pattern(u, rec%pattern_prev, stat)
-      call put_reals(u, rec%d_prev, stat)
-      call put_flag(u, rec%damage%active, stat)
-      call put_real(u, rec%damage%delam%onset, stat)
-      if (.not. rec%damage%active) return
-      call put_reals(u, [rec%damage%smax, rec%damage%step_fi, rec%damage%max_fi, rec%damage%max_time, &
-         rec%damage%onset, rec%damage%onset_fi, rec%damage%peak_force, rec%damage%peak_time], stat)
-      call put_ints(u, [rec%damage%step_mode, rec%damage%max_mode, rec%damage%max_ply, rec%damage%max_point, &
-         rec%damage%onset_mode, rec%damage%onset_ply, rec%damage%onset_point, rec%damage%peak_step], stat)
-      call put_reals(u, reshape(rec%damage%fi_max, [size(rec%damage%fi_max)]), stat)
-      call put_ints(u, reshape(rec%damage%mode_max, [size(rec%damage%mode_max)]), stat)
-      call put_reals(u, reshape(rec%damage%onset_time, [size(rec%damage%onset_time)]), stat)
-      call put_reals(u, rec%damage%d_peak, stat)
-      call put_reals(u, [rec%damage%delam%max_index], stat)
-      call put_ints(u, [rec%damage%delam%max_interface, rec%damage%delam%max_point], stat)
-      call put_reals(u, reshape(rec%damage%delam%map, [size(rec%damage%delam%map)]), stat)
-   end subroutine record_save_state
-
-   !> A restart: the record of the deck and model (record_open's settings)
-   !> with the figures record_save_state wrote; its files are opened again
-   !> by the caller (src/results/restart_point.f90).
-   subroutine record_load_state(rec, deck, model, u, stat)
-      type(record_t), intent(out) :: rec            !< the record
-      type(deck_t), intent(in) :: deck              !< the effective deck
-      type(model_t), intent(in) :: model            !< the model
-      integer, intent(in) :: u                      !< the restart file, an open stream at the record's part
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      real(dp), allocatable :: r(:)
-      integer, allocatable :: i(:)
-      real(dp) :: bytes
-      logical :: active
-
-      call take_settings(rec, deck)
-      call damage_open(rec%damage, deck, model)
-      rec%ncol = history_width(rec%damage%active)
-      call take_tag(u, 'record', stat)
-      call take_reals(u, r, stat, 15)
-      if (stat /= 0) return
-      rec%e0 = r(1);  rec%contact_work = r(2);  rec%contact_energy = r(3);  rec%alpha_prev = r(4)
-      rec%first_contact_start = r(5);  rec%first_contact_end = r(6);  rec%max_energy_error = r(7)
-      rec%energy_created = r(8);  rec%energy_lost = r(9);  rec%max_w_over_h = r(10);  rec%w_bend_max = r(11)
-      rec%diverged_at = r(12);  rec%c_plate = r(13);  rec%c_impactor = r(14);  rec%max_slope = r(15)
-      call take_reals(u, r, stat, 3*peak_state_size)
-      if (stat /= 0) return
-      rec%force_peak = peak_restore(r(1:peak_state_size))
-      rec%deflection_peak = peak_restore(r(peak_state_size + 1:2*peak_state_size))
-      rec%strain_peak = peak_restore(r(2*peak_state_size + 1:))
-      call take_ints(u, i, stat)
-      if (stat == 0 .and. size(i) /= 14 + nwarn) stat = 1
-      if (stat /= 0) return
-      rec%steps = i(1);  rec%contacts = i(2);  rec%contact_iterations = i(3);  rec%max_contact_iter = i(4)
-      rec%max_solves = i(5);  rec%unconverged_steps = i(6);  rec%first_unconverged = i(7)
-      rec%nonlinear_fallback_steps = i(8);  rec%contact_fallback_steps = i(9);  rec%warnings = i(10)
-      rec%mixed_seen = i(11);  rec%solves_before = i(12);  rec%in_contact = i(13) /= 0
-      rec%substepped_steps = i(14)
-      rec%warned = i(15:) /= 0
-      call progress_start(rec%progress, rec%nstep, deck%t_end)   ! the progress line goes on
-      bytes = 0.0_dp
-      call take_real(u, bytes, stat)
-      rec%hist_bytes = nint(bytes, int64)
-      call take_impactor(u, rec%imp_prev, stat)
-      call take_pattern(u, rec%pattern_prev, stat)
-      call take_reals(u, rec%d_prev, stat, model%msh%neq)
-      active = .false.
-      call take_flag(u, active, stat)
-      if (stat == 0 .and. active .neqv. rec%damage%active) stat = 1
-      call take_real(u, rec%damage%delam%onset, stat)
-      if (stat /= 0 .or. .not. active) return
-      call take_reals(u, r, stat, 12)
-      call take_ints(u, i, stat)
-      if (stat == 0 .and. size(i) /= 8) stat = 1
-      if (stat /= 0) return
-      rec%damage%smax = r(1:5);  rec%damage%step_fi = r(6);  rec%damage%max_fi = r(7)
-      rec%damage%max_time = r(8);  rec%damage%onset = r(9);  rec%damage%onset_fi = r(10)
-      rec%damage%peak_force = r(11);  rec%damage%peak_time = r(12)
-      rec%damage%step_mode = i(1);  rec%damage%max_mode = i(2);  rec%damage%max_ply = i(3)
-      rec%damage%max_point = i(4);  rec%damage%onset_mode = i(5);  rec%damage%onset_ply = i(6)
-      rec%damage%onset_point = i(7);  rec%damage%peak_step = i(8)
-      call take_reals(u, r, stat, size(rec%damage%fi_max))
-      if (stat == 0) rec%damage%fi_max = reshape(r, shape(rec%damage%fi_max))
-      call take_ints(u, i, stat)
-      if (stat == 0 .and. size(i) /= size(rec%damage%mode_max)) stat = 1
-      if (stat == 0) rec%damage%mode_max = reshape(i, shape(rec%damage%mode_max))
-      call take_reals(u, r, stat, size(rec%damage%onset_time))
-      if (stat == 0) rec%damage%onset_time = reshape(r, shape(rec%damage%onset_time))
-      call take_reals(u, rec%damage%d_peak, stat, model%msh%neq)
-      call take_reals(u, r, stat, 1)
-      call take_ints(u, i, stat)
-      if (stat == 0 .and. size(i) /= 2) stat = 1
-      if (stat /= 0) return
-      rec%damage%delam%max_index = r(1);  rec%damage%delam%max_interface = i(1);  rec%damage%delam%max_point = i(2)
-      call take_reals(u, r, stat, size(rec%damage%delam%map))
-      if (stat == 0) rec%damage%delam%map = reshape(r, shape(rec%damage%delam%map))
-   end subroutine record_load_state
 
    ! ============================================================== helpers
 
@@ -892,8 +660,7 @@ contains
       integer :: ios
       call write_history_row(rec%hist_unit, rec%hist_probe, row(:rec%ncol), rec%hist_bytes, stat, iomsg)
       if (stat /= 0) then
-         ! a full disk, the file-size limit: the history is cut back to its
-         ! last whole row, so that every row it keeps reads
+         ! a full disk, the file-size limit: the history is cut back to its last whole row
          errmsg = rec%hist_path // ': cannot write a row: ' // trim(iomsg)
          close (rec%hist_unit, iostat=ios)
          rec%hist_unit = -1

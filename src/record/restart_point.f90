@@ -1,15 +1,12 @@
 !> Restart points: `impact --restart deck.nml` continues the run recorded
 !> at the deck's prefix from its last restart point, appending to the same
-!> files, and ends as the run would have ended had it never stopped: the
-!> same history rows, bit for bit, and the same summary. A restart of a run
-!> that completed writes nothing and exits 0 (src/impact.f90).
-!> A restart point, <prefix>.restart, holds everything the time loop
-!> carries from one step to the next (the deck, the state, the solver, the
-!> record, the results' lengths), written when the files are flushed;
-!> what, when and how it is made safe: above restart_save. Not from the
-!> paper. More: docs/ROBUSTNESS.md.
+!> files, and ends as the run would have ended had it never stopped (the
+!> same history rows, bit for bit, the same summary); a completed run's
+!> restart writes nothing. What a restart point holds, when it is written
+!> and how it is made safe: above restart_save. Not from the paper. More:
+!> docs/ROBUSTNESS.md.
 module restart_point
-   use, intrinsic :: iso_fortran_env, only: int64
+   use, intrinsic :: iso_fortran_env, only: int64, output_unit
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char
    use kinds, only: dp, msg_len
    use number_text, only: int_str, real_str
@@ -22,18 +19,20 @@ module restart_point
    use plate_solver, only: solver_t, contact_response
    use contact_law, only: contact_history_t
    use contact_load, only: load_pattern_t
-   use contact_iteration, only: contact_iteration_t
-   use newmark, only: plate_state_t, impactor_t
+   use contact_iteration, only: step_state_t
+   use newmark, only: newmark_t
    use result_files, only: reserve_summary, results_claim_t, result_suffixes, claim_results, claim_left_empty
    use process_stop, only: remove_on_stop
-   use results_hdf5, only: results_reopen
-   use run_recorder, only: record_t, record_save_state, record_load_state
+   use results_hdf5, only: results_reopen, results_point_t, results_point
+   use run_recorder, only: record_t, record_settings, nwarn
+   use progress_line, only: progress_start
+   use step_peak, only: peak_state, peak_restore, peak_state_size
    use restart_io, only: put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, put_flag, &
       take_flag, put_reals, take_reals, put_ints, take_ints, put_impactor, take_impactor, put_pattern, take_pattern, &
       put_seal, seal_holds
    implicit none
    private
-   public :: restart_file, restart_save, restart_check, restart_resume, claim_run_files
+   public :: restart_save, restart_check, restart_resume, claim_run_files
 
    !> The layout of the file; a restart point of another is refused.
    integer, parameter :: layout = 3
@@ -52,9 +51,8 @@ contains
    end function restart_file
 
    !> Claims the run's result files before any work (claim_results): a
-   !> restart continues the run's own files, or the claim a run killed in its
-   !> set-up left; a stop in the set-up leaves the first file only if it was
-   !> written; a run that starts afresh discards an earlier run's restart point.
+   !> restart continues the run's own files (or a claim a killed set-up left);
+   !> a run that starts afresh discards an earlier run's restart point.
    subroutine claim_run_files(deck, restart_asked, restarting, claim, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       logical, intent(in) :: restart_asked          !< --restart was given
@@ -63,6 +61,8 @@ contains
       integer, intent(out) :: stat                  !< 0 when the run may write its results
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(deck_t) :: claimed
+      if (restart_asked .and. .not. restarting) write (output_unit, '(a)') &
+         'restart: no restart point ' // restart_file(deck) // ': the run starts at step 0'
       claimed = deck
       claimed%overwrite = deck%overwrite .or. restarting
       if (restart_asked .and. .not. claimed%overwrite) &
@@ -73,8 +73,7 @@ contains
       if (.not. restarting) call restart_discard(deck)
    end subroutine claim_run_files
 
-   !> A run that starts afresh removes an earlier run's restart point, which
-   !> its files no longer match.
+   !> Removes an earlier run's restart point, which the files no longer match.
    subroutine restart_discard(deck)
       type(deck_t), intent(in) :: deck              !< the effective deck
       integer(c_int) :: r
@@ -82,66 +81,32 @@ contains
       r = c_unlink(restart_file(deck) // '.tmp' // c_null_char)
    end subroutine restart_discard
 
-   !> A restart point is <prefix>.restart, written when the files are flushed
-   !> (once a second at the end of a step, src/results/results_hdf5.f90's
-   !> results_tick), at the first step (step 0, so that a run that has
-   !> written anything has one) and at the end of a run that completed or was
-   !> stopped by a signal (src/impact.f90). It holds everything the time loop
-   !> carries from one step to the next:
-   !>
-   !>   the deck        every variable as text (the fewest digits that read
-   !>                   back to the same double), to refuse a restart with
-   !>                   another deck: only &analysis t_end may change (and
-   !>                   &output overwrite, which a restart sets)
-   !>   the state       the step, the cpu time so far, the plate's {D}, {V},
-   !>                   {A}, the impactor, the contact's history (alpha_m, F_m,
-   !>                   alpha_0), the contact pattern with the polynomials it
-   !>                   keeps (src/model/contact_load.f90)
-   !>   the solver      its counters, the contraction estimates of scheme
-   !>                   'fast' (src/scheme/fast_scheme.f90: without them the
-   !>                   restarted run would probe at other steps and differ)
-   !>                   and the equations of its response columns, which a
-   !>                   restart computes again (the same back substitutions of
-   !>                   the same factors: the same bits)
-   !>   the record      the summary's running figures and maxima, the
-   !>                   energies, the warnings given, the history file's
-   !>                   length, the damage maps (src/results/run_recorder.f90,
-   !>                   record_save_state)
-   !>   the results     the rows and snapshots <prefix>.h5 holds, and its peak
-   !>
-   !> It is written whole to <prefix>.restart.tmp, forced to the disk
-   !> (fsync) and renamed over <prefix>.restart, then the directory is forced
-   !> too: the file is the previous restart point or the new one, never a
-   !> part. A restart cuts the history file back to its length at the restart
-   !> point and <prefix>.h5 to its rows and snapshots (a run killed after its
-   !> last restart point wrote more), and makes the XDMF views anew.
-   !>
-   !> The file is a stream of tagged parts (src/results/restart_io.f90) in the
-   !> machine's own layout: a restart continues a run on the machine and with
-   !> the build that made it (a restart point of another layout is refused).
-   !> Its last 8 bytes are the CRC-32 of all before them (restart_io's seal):
-   !> a restart point with a bit changed anywhere is refused whole, before
-   !> anything is read from it. The temporary name is removed first and the
-   !> file created exclusively: no write goes through a link put there.
-   !>
-   !> Writes the restart point after step `step` (as above): the files
-   !> hold every step to it (they were just flushed).
-   subroutine restart_save(deck, step, cpu_s, plate, imp, hist, cit, solver, rec, stat, errmsg)
+   !> <prefix>.restart is written when the files are flushed (once a second,
+   !> results_tick), at step 0 and at the end of a run that completed or was
+   !> stopped by a signal. It holds what the time loop carries from step to
+   !> step: the deck (every variable as text, to refuse another deck: only
+   !> &analysis t_end may change), the state (step, cpu time, {D}, {V}, {A},
+   !> impactor, contact history and pattern), the solver (its counters, the
+   !> contraction estimates of scheme 'fast', the equations of its response
+   !> columns, computed again: the same bits), the record (put_record) and
+   !> what <prefix>.h5 holds. It is written whole to <prefix>.restart.tmp
+   !> (created exclusively), forced to the disk and renamed over the old one,
+   !> then the directory is forced: the file is the old restart point or the
+   !> new one. A stream of tagged parts in the machine's layout
+   !> (src/results/restart_io.f90), sealed by its CRC-32: a bit changed
+   !> anywhere refuses it whole. A restart cuts the history and <prefix>.h5
+   !> back to the restart point and makes the XDMF views anew.
+   subroutine restart_save(deck, cpu_s, st, solver, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
-      integer, intent(in) :: step                   !< the last step made
       real(dp), intent(in) :: cpu_s                 !< cpu time of the run so far (s)
-      type(plate_state_t), intent(in) :: plate      !< {D}, {V}, {A} after it
-      type(impactor_t), intent(in) :: imp           !< the impactor after it
-      type(contact_history_t), intent(in) :: hist   !< the contact history, committed
-      type(contact_iteration_t), intent(in) :: cit  !< the contact iteration (its pattern)
+      type(step_state_t), intent(in) :: st          !< the state after the last step recorded, committed
       type(solver_t), intent(in) :: solver          !< the plate solver
-      type(record_t), intent(in) :: rec             !< the run's record
+      type(record_t), intent(in) :: rec             !< the run's record (its steps: the last step made)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure, naming the file
       character(len=:), allocatable :: path
       character(len=msg_len) :: iomsg
       integer :: u, ios
-
       path = restart_file(deck)
       call remove_file(path // '.tmp', ios)          ! a link itself, never what it points to
       open (newunit=u, file=path // '.tmp', access='stream', form='unformatted', status='new', &
@@ -154,17 +119,17 @@ contains
       call put_int(u, layout, stat)
       call put_deck(u, deck, stat)
       call put_tag(u, 'state', stat)
-      call put_int(u, step, stat)
+      call put_int(u, rec%steps, stat)
       call put_real(u, cpu_s, stat)
-      call put_reals(u, plate%d, stat)
-      call put_reals(u, plate%v, stat)
-      call put_reals(u, plate%a, stat)
-      call put_impactor(u, imp, stat)
-      call put_reals(u, [hist%f_m, hist%alpha_m, hist%alpha_0], stat)
-      call put_flag(u, hist%separated, stat)
-      call put_pattern(u, cit%pattern, stat)
+      call put_reals(u, st%plate%d, stat)
+      call put_reals(u, st%plate%v, stat)
+      call put_reals(u, st%plate%a, stat)
+      call put_impactor(u, st%imp, stat)
+      call put_reals(u, [st%hist%f_m, st%hist%alpha_m, st%hist%alpha_0], stat)
+      call put_flag(u, st%hist%separated, stat)
+      call put_pattern(u, st%cit%pattern, stat)
       call put_solver(u, solver, stat)
-      call record_save_state(rec, u, stat)
+      call put_record(u, rec, stat)
       call put_results(u, rec, stat)
       call put_tag(u, 'end', stat)
       call put_seal(u, stat)
@@ -176,19 +141,17 @@ contains
       if (stat /= 0) errmsg = path // ': cannot write the restart point'
    end subroutine restart_save
 
-   !> A restart's first look at the run's restart point: whether there is
-   !> one, and that it was written with this deck (above restart_save) by this
-   !> layout, and its step (the run's last step: the run completed); stat
-   !> /= 0 with the differences named otherwise.
-   subroutine restart_check(deck, found, step, stat, errmsg)
+   !> A restart's first look at the run's restart point: there is one, of
+   !> this deck and layout, and its step (at nstep: the run is complete).
+   subroutine restart_check(deck, nstep, found, step, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
+      integer, intent(in) :: nstep                  !< the run's last step (t_end/dt)
       logical, intent(out) :: found                 !< there is a restart point
       integer, intent(out) :: step                  !< the step it was written after (0 if none)
       integer, intent(out) :: stat                  !< 0 when the run may continue from it
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=:), allocatable :: path, changed
       integer :: u
-
       stat = 0
       step = 0
       path = restart_file(deck)
@@ -206,34 +169,32 @@ contains
          stat = 1
          errmsg = deck%source // ': --restart: the deck differs from the one of the run at its restart point (' &
             // path // '): ' // changed // '; only &analysis t_end may change'
+      else if (step == nstep) then
+         write (output_unit, '(a)') 'restart: the run is complete: its restart point ' // path // ' is at its ' &
+            // 'last step, ' // int_str(step) // '; nothing is done (give a later &analysis t_end to continue it)'
       end if
    end subroutine restart_check
 
    !> Continues the run from its restart point: the state, the solver, the
-   !> record and the files as they were there (above restart_save); `step` is
-   !> the last step made, cpu_s the cpu time spent before.
-   subroutine restart_resume(deck, model, last_step, solver, plate, imp, hist, cit, rec, step, cpu_s, stat, errmsg)
+   !> record and the files as they were there (above restart_save); rec%steps
+   !> is the last step made, rec%cpu_before the cpu time spent before.
+   subroutine restart_resume(deck, model, nm, solver, st, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(model_t), intent(in) :: model            !< the model
-      integer, intent(in) :: last_step              !< the run's last step (t_end/dt)
+      type(newmark_t), intent(in) :: nm             !< Newmark's constants (the time step)
       type(solver_t), intent(inout) :: solver       !< the plate solver, factored
-      type(plate_state_t), intent(out) :: plate     !< {D}, {V}, {A}
-      type(impactor_t), intent(out) :: imp          !< the impactor
-      type(contact_history_t), intent(out) :: hist  !< the contact history
-      type(contact_iteration_t), intent(inout) :: cit   !< the contact iteration: its pattern
+      type(step_state_t), intent(inout) :: st       !< plate, impactor, contact history and pattern
       type(record_t), intent(out) :: rec            !< the run's record, its files open again
-      integer, intent(out) :: step                  !< the last step made
-      real(dp), intent(out) :: cpu_s                !< cpu time spent before (s)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=:), allocatable :: path, changed
       real(dp), allocatable :: x(:)
       integer, allocatable :: columns(:)
-      integer :: u, rows, snaps, peak_step
-      real(dp) :: peak(2)
-      real(dp), allocatable :: peak_fields(:)
+      integer :: u
+      type(results_point_t) :: pt
       logical :: h5
-
+      integer :: step
+      real(dp) :: cpu_s
       path = restart_file(deck)
       step = 0;  cpu_s = 0.0_dp
       call open_point(path, u, stat, errmsg)
@@ -242,32 +203,35 @@ contains
       call take_tag(u, 'state', stat)
       call take_int(u, step, stat)
       call take_real(u, cpu_s, stat)
-      call take_reals(u, plate%d, stat, model%msh%neq)
-      call take_reals(u, plate%v, stat, model%msh%neq)
-      call take_reals(u, plate%a, stat, model%msh%neq)
-      call take_impactor(u, imp, stat)
+      call take_reals(u, st%plate%d, stat, model%msh%neq)
+      call take_reals(u, st%plate%v, stat, model%msh%neq)
+      call take_reals(u, st%plate%a, stat, model%msh%neq)
+      call take_impactor(u, st%imp, stat)
       call take_reals(u, x, stat, 3)
-      if (stat == 0) hist = contact_history_t(f_m=x(1), alpha_m=x(2), alpha_0=x(3))
-      call take_flag(u, hist%separated, stat)
-      call take_pattern(u, cit%pattern, stat)
+      if (stat == 0) st%hist = contact_history_t(f_m=x(1), alpha_m=x(2), alpha_0=x(3))
+      call take_flag(u, st%hist%separated, stat)
+      call take_pattern(u, st%cit%pattern, stat)
       call take_solver(u, solver, columns, stat)
-      call record_load_state(rec, deck, model, u, stat)
-      h5 = .false.;  rows = 0;  snaps = 0;  peak_step = 0;  peak = 0.0_dp
-      call take_results(u, h5, rows, snaps, peak_step, peak, peak_fields, stat)
+      call take_record(u, deck, model, nm, rec, stat)
+      rec%cpu_before = cpu_s
+      h5 = .false.
+      call take_results(u, model%msh%nnode, h5, pt, stat)
       call take_tag(u, 'end', stat)
       close (u)
-      if (stat == 0 .and. h5) then
-         if (size(peak_fields) /= ndof_node*model%msh%nnode) stat = 1
-      end if
       if (stat /= 0) then
          stat = 1
          errmsg = path // ': not a restart point of this run (or damaged)'
          return
       end if
-      if (step > last_step) then
+      if (stat == 0 .and. step /= rec%steps) stat = 1
+      if (stat /= 0) then
+         errmsg = path // ': not a restart point of this run (or damaged)'
+         return
+      end if
+      if (step > rec%nstep) then
          stat = 1
          errmsg = deck%source // ': &analysis t_end = ' // real_str(deck%t_end) // ' s ends at step ' &
-            // int_str(last_step) // ', before the restart point''s step ' // int_str(step)
+            // int_str(rec%nstep) // ', before the restart point''s step ' // int_str(step)
          return
       end if
       if (h5 .neqv. deck%hdf5) then
@@ -277,15 +241,15 @@ contains
       end if
       call response_columns(solver, columns, stat, errmsg)
       if (stat == 0) call reopen_history(deck, rec, stat, errmsg)
-      if (stat == 0 .and. h5) call results_reopen(deck, model%msh, rows, snaps, peak_step, peak(1), peak(2), &
-         reshape(peak_fields, [ndof_node, model%msh%nnode]), rec%h5, stat, errmsg)
+      if (stat == 0 .and. h5) call results_reopen(deck, model%msh, pt, rec%h5, stat, errmsg)
       if (stat == 0) call reserve_summary(deck, stat, errmsg)
+      if (stat == 0) write (output_unit, '(a)') 'restart: the run continues after step ' // int_str(step) // ' (' &
+         // path // ')'
    end subroutine restart_resume
 
    ! ============================================================== parts
 
-   !> Opens a restart point for reading and checks its checksum, tag and
-   !> layout.
+   !> Opens a restart point for reading; checks its checksum, tag and layout.
    subroutine open_point(path, u, stat, errmsg)
       character(len=*), intent(in) :: path          !< <prefix>.restart
       integer, intent(out) :: u                     !< the open stream, at the deck's part
@@ -329,8 +293,7 @@ contains
       end do
    end subroutine put_deck
 
-   !> Reads the deck's part and names the variables whose values differ
-   !> from `deck`'s, but for free_vars ('' when none).
+   !> Reads the deck's part and names what differs from `deck` but free_vars.
    subroutine compare_deck(u, deck, changed, stat)
       integer, intent(in) :: u                      !< the restart file, at the deck's part
       type(deck_t), intent(in) :: deck              !< the effective deck
@@ -338,7 +301,6 @@ contains
       integer, intent(inout) :: stat                !< 0, or the first failure
       character(len=:), allocatable :: key, then, now
       integer :: n, k, iv, dot
-
       changed = ''
       now = ''            ! (else gfortran 12 at -O2 takes its length for unset in the loop)
       n = -1
@@ -420,46 +382,157 @@ contains
       solver%response_solves = counted
    end subroutine response_columns
 
+   !> Writes what the record carries from step to step (a restart point,
+   !> src/record/restart_point.f90): energies, previous step, running figures,
+   !> warnings, the history's length, and with &strength the damage maps.
+   subroutine put_record(u, rec, stat)
+      type(record_t), intent(in) :: rec             !< the record
+      integer, intent(in) :: u                      !< the restart file, an open stream
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      call put_tag(u, 'record', stat)
+      call put_reals(u, [rec%e0, rec%contact_work, rec%contact_energy, rec%alpha_prev, &
+         rec%first_contact_start, rec%first_contact_end, rec%max_energy_error, rec%energy_created, &
+         rec%energy_lost, rec%max_w_over_h, rec%w_bend_max, &
+         rec%diverged_at, rec%c_plate, rec%c_impactor, rec%max_slope], stat)
+      call put_reals(u, [peak_state(rec%force_peak), peak_state(rec%deflection_peak), peak_state(rec%strain_peak)], &
+         stat)
+      call put_ints(u, [rec%steps, rec%contacts, rec%contact_iterations, rec%max_contact_iter, rec%max_solves, &
+         rec%unconverged_steps, rec%first_unconverged, rec%nonlinear_fallback_steps, rec%contact_fallback_steps, &
+         rec%warnings, rec%mixed_seen, rec%solves_before, merge(1, 0, rec%in_contact), rec%substepped_steps, &
+         merge(1, 0, rec%warned)], stat)
+      call put_real(u, real(rec%hist_bytes, dp), stat)
+      call put_impactor(u, rec%imp_prev, stat)
+      call put_pattern(u, rec%pattern_prev, stat)
+      call put_reals(u, rec%d_prev, stat)
+      call put_flag(u, rec%damage%active, stat)
+      call put_real(u, rec%damage%delam%onset, stat)
+      if (.not. rec%damage%active) return
+      call put_reals(u, [rec%damage%smax, rec%damage%step_fi, rec%damage%max_fi, rec%damage%max_time, &
+         rec%damage%onset, rec%damage%onset_fi, rec%damage%peak_force, rec%damage%peak_time], stat)
+      call put_ints(u, [rec%damage%step_mode, rec%damage%max_mode, rec%damage%max_ply, rec%damage%max_point, &
+         rec%damage%onset_mode, rec%damage%onset_ply, rec%damage%onset_point, rec%damage%peak_step], stat)
+      call put_reals(u, reshape(rec%damage%fi_max, [size(rec%damage%fi_max)]), stat)
+      call put_ints(u, reshape(rec%damage%mode_max, [size(rec%damage%mode_max)]), stat)
+      call put_reals(u, reshape(rec%damage%onset_time, [size(rec%damage%onset_time)]), stat)
+      call put_reals(u, rec%damage%d_peak, stat)
+      call put_reals(u, [rec%damage%delam%max_index], stat)
+      call put_ints(u, [rec%damage%delam%max_interface, rec%damage%delam%max_point], stat)
+      call put_reals(u, reshape(rec%damage%delam%map, [size(rec%damage%delam%map)]), stat)
+   end subroutine put_record
+
+   !> A restart: the record of the deck with the figures put_record
+   !> wrote; the caller opens its files again.
+   subroutine take_record(u, deck, model, nm, rec, stat)
+      type(record_t), intent(out) :: rec            !< the record
+      type(deck_t), intent(in) :: deck              !< the effective deck
+      type(model_t), intent(in) :: model            !< the model
+      type(newmark_t), intent(in) :: nm             !< Newmark's constants (the time step)
+      integer, intent(in) :: u                      !< the restart file, an open stream at the record's part
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      real(dp), allocatable :: r(:)
+      integer, allocatable :: i(:)
+      real(dp) :: bytes
+      logical :: active
+      call record_settings(rec, deck, model, nm)
+      call take_tag(u, 'record', stat)
+      call take_reals(u, r, stat, 15)
+      if (stat /= 0) return
+      rec%e0 = r(1);  rec%contact_work = r(2);  rec%contact_energy = r(3);  rec%alpha_prev = r(4)
+      rec%first_contact_start = r(5);  rec%first_contact_end = r(6);  rec%max_energy_error = r(7)
+      rec%energy_created = r(8);  rec%energy_lost = r(9);  rec%max_w_over_h = r(10);  rec%w_bend_max = r(11)
+      rec%diverged_at = r(12);  rec%c_plate = r(13);  rec%c_impactor = r(14);  rec%max_slope = r(15)
+      call take_reals(u, r, stat, 3*peak_state_size)
+      if (stat /= 0) return
+      rec%force_peak = peak_restore(r(1:peak_state_size))
+      rec%deflection_peak = peak_restore(r(peak_state_size + 1:2*peak_state_size))
+      rec%strain_peak = peak_restore(r(2*peak_state_size + 1:))
+      call take_ints(u, i, stat)
+      if (stat == 0 .and. size(i) /= 14 + nwarn) stat = 1
+      if (stat /= 0) return
+      rec%steps = i(1);  rec%contacts = i(2);  rec%contact_iterations = i(3);  rec%max_contact_iter = i(4)
+      rec%max_solves = i(5);  rec%unconverged_steps = i(6);  rec%first_unconverged = i(7)
+      rec%nonlinear_fallback_steps = i(8);  rec%contact_fallback_steps = i(9);  rec%warnings = i(10)
+      rec%mixed_seen = i(11);  rec%solves_before = i(12);  rec%in_contact = i(13) /= 0
+      rec%substepped_steps = i(14)
+      rec%warned = i(15:) /= 0
+      call progress_start(rec%progress, rec%nstep, deck%t_end)   ! the progress line goes on
+      bytes = 0.0_dp
+      call take_real(u, bytes, stat)
+      rec%hist_bytes = nint(bytes, int64)
+      call take_impactor(u, rec%imp_prev, stat)
+      call take_pattern(u, rec%pattern_prev, stat)
+      call take_reals(u, rec%d_prev, stat, model%msh%neq)
+      active = .false.
+      call take_flag(u, active, stat)
+      if (stat == 0 .and. active .neqv. rec%damage%active) stat = 1
+      call take_real(u, rec%damage%delam%onset, stat)
+      if (stat /= 0 .or. .not. active) return
+      call take_reals(u, r, stat, 12)
+      call take_ints(u, i, stat)
+      if (stat == 0 .and. size(i) /= 8) stat = 1
+      if (stat /= 0) return
+      rec%damage%smax = r(1:5);  rec%damage%step_fi = r(6);  rec%damage%max_fi = r(7)
+      rec%damage%max_time = r(8);  rec%damage%onset = r(9);  rec%damage%onset_fi = r(10)
+      rec%damage%peak_force = r(11);  rec%damage%peak_time = r(12)
+      rec%damage%step_mode = i(1);  rec%damage%max_mode = i(2);  rec%damage%max_ply = i(3)
+      rec%damage%max_point = i(4);  rec%damage%onset_mode = i(5);  rec%damage%onset_ply = i(6)
+      rec%damage%onset_point = i(7);  rec%damage%peak_step = i(8)
+      call take_reals(u, r, stat, size(rec%damage%fi_max))
+      if (stat == 0) rec%damage%fi_max = reshape(r, shape(rec%damage%fi_max))
+      call take_ints(u, i, stat)
+      if (stat == 0 .and. size(i) /= size(rec%damage%mode_max)) stat = 1
+      if (stat == 0) rec%damage%mode_max = reshape(i, shape(rec%damage%mode_max))
+      call take_reals(u, r, stat, size(rec%damage%onset_time))
+      if (stat == 0) rec%damage%onset_time = reshape(r, shape(rec%damage%onset_time))
+      call take_reals(u, rec%damage%d_peak, stat, model%msh%neq)
+      call take_reals(u, r, stat, 1)
+      call take_ints(u, i, stat)
+      if (stat == 0 .and. size(i) /= 2) stat = 1
+      if (stat /= 0) return
+      rec%damage%delam%max_index = r(1);  rec%damage%delam%max_interface = i(1);  rec%damage%delam%max_point = i(2)
+      call take_reals(u, r, stat, size(rec%damage%delam%map))
+      if (stat == 0) rec%damage%delam%map = reshape(r, shape(rec%damage%delam%map))
+   end subroutine take_record
+
    !> What <prefix>.h5 holds at the restart point: its rows and snapshots
    !> and its peak.
    subroutine put_results(u, rec, stat)
       integer, intent(in) :: u                      !< the restart file
       type(record_t), intent(in) :: rec             !< the run's record
       integer, intent(inout) :: stat                !< 0, or the first failure
+      type(results_point_t) :: pt
       call put_tag(u, 'results', stat)
       call put_flag(u, allocated(rec%h5%path), stat)
       if (.not. allocated(rec%h5%path)) return
-      call put_ints(u, [rec%h5%rows_written + rec%h5%nrow, rec%h5%snaps_written + rec%h5%nsnap, rec%h5%peak_step], &
-         stat)
-      call put_reals(u, [rec%h5%peak_time, rec%h5%peak_force], stat)
-      call put_reals(u, reshape(rec%h5%peak_fields, [size(rec%h5%peak_fields)]), stat)
+      pt = results_point(rec%h5)
+      call put_ints(u, [pt%rows, pt%snaps, pt%peak_step], stat)
+      call put_reals(u, [pt%peak_time, pt%peak_force], stat)
+      call put_reals(u, reshape(pt%peak_fields, [size(pt%peak_fields)]), stat)
    end subroutine put_results
 
-   !> Reads what put_results wrote.
-   subroutine take_results(u, h5, rows, snaps, peak_step, peak, peak_fields, stat)
+   !> Reads what put_results wrote (nnode: the mesh's nodes).
+   subroutine take_results(u, nnode, h5, pt, stat)
       integer, intent(in) :: u                      !< the restart file, at the results' part
+      integer, intent(in) :: nnode                  !< the mesh's nodes
       logical, intent(out) :: h5                    !< the run wrote <prefix>.h5
-      integer, intent(out) :: rows, snaps           !< the rows and snapshots it holds
-      integer, intent(out) :: peak_step             !< its peak: step,
-      real(dp), intent(out) :: peak(2)              !< time (s) and force (N),
-      real(dp), allocatable, intent(out) :: peak_fields(:)   !< and fields
+      type(results_point_t), intent(out) :: pt      !< what it holds
       integer, intent(inout) :: stat                !< 0, or the first failure
-      real(dp), allocatable :: x(:)
+      real(dp), allocatable :: x(:), f(:)
       integer, allocatable :: i(:)
-      h5 = .false.;  rows = 0;  snaps = 0;  peak_step = 0;  peak = 0.0_dp
+      h5 = .false.
       call take_tag(u, 'results', stat)
       call take_flag(u, h5, stat)
       if (stat /= 0 .or. .not. h5) return
       call take_ints(u, i, stat)
       call take_reals(u, x, stat, 2)
-      call take_reals(u, peak_fields, stat)
+      call take_reals(u, f, stat, ndof_node*nnode)
       if (stat == 0 .and. size(i) /= 3) stat = 1
       if (stat /= 0) return
-      rows = i(1);  snaps = i(2);  peak_step = i(3);  peak = x
+      pt = results_point_t(i(1), i(2), i(3), x(1), x(2), reshape(f, [ndof_node, nnode]))
    end subroutine take_results
 
    !> The history file cut back to its length at the restart point and
-   !> opened for appending (src/results/run_recorder.f90's rows).
+   !> opened for appending (src/record/run_recorder.f90's rows).
    subroutine reopen_history(deck, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(record_t), intent(inout) :: rec          !< the record: its history file

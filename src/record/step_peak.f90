@@ -1,11 +1,8 @@
-!> The summary's extremes between the steps: a run samples its force,
-!> deflection and strain once per step, so the largest sample misses the
-!> true peak by up to O(dt^2) in value and dt/2 in time, and jumps from one
-!> step to the next as dt changes. These pure kernels refine the samples:
-!> the vertex of the parabola through the largest and its two neighbours
-!> (O(dt^3) at a smooth maximum), and where a line through two samples
-!> crosses 0 (the end of a contact). The kernels: above peak_track_t.
-!> Not from the paper. More: docs/OUTPUT.md.
+!> The summary's extremes between the steps: the largest of the samples
+!> (once per step) misses the peak by O(dt^2) and jumps as dt changes; the
+!> vertex of the parabola through the largest and its neighbours is O(dt^3)
+!> at a smooth maximum, and a line through two samples gives where a
+!> contact ends. Pure kernels. Not from the paper. More: docs/OUTPUT.md.
 module step_peak
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
    use kinds, only: dp
@@ -14,20 +11,11 @@ module step_peak
    public :: peak_track_t, peak_sample, peak_between, parabola_vertex, zero_crossing, peak_state, peak_restore, &
       peak_state_size
 
-   !>   parabola_vertex  the vertex of the parabola through three samples (the
-   !>                    largest and its two neighbours): an error O(dt^3) in
-   !>                    the value at a smooth maximum, and a time that moves
-   !>                    smoothly with dt
-   !>   zero_crossing    where the straight line through two samples crosses 0
-   !>                    (the end of a contact, from the indentation less the
-   !>                    permanent indentation: src/results/run_recorder.f90)
-   !>   peak_sample      keeps, sample by sample, what parabola_vertex needs:
-   !>                    the largest sample, the one before and the one after
-   !>   peak_between     the refined extreme of the samples kept: the vertex,
-   !>                    or the largest sample itself at either end of the
-   !>                    record or where the three do not make a concave
-   !>                    parabola (a flat or a kinked top)
-   !>
+   !>   parabola_vertex  the vertex of the parabola through three samples
+   !>   zero_crossing    where the line through two samples crosses 0
+   !>   peak_sample      keeps the largest sample and its two neighbours
+   !>   peak_between     the refined extreme: the vertex, or the largest sample
+   !>                    at either end or where the three are not concave
    !> The samples a peak is refined from (peak_sample, peak_between).
    type :: peak_track_t
       integer :: samples = 0              !< samples taken so far
@@ -58,7 +46,6 @@ contains
       real(dp), intent(out) :: vv               !< its value
       logical, intent(out) :: concave           !< the vertex is a maximum between t(1) and t(3)
       real(dp) :: d1, d2, c
-
       tv = t(2)
       vv = v(2)
       concave = .false.
@@ -86,7 +73,6 @@ contains
       real(dp), intent(in) :: y1                !< its value
       real(dp), intent(in) :: t2                !< the second sample's time (> t1)
       real(dp), intent(in) :: y2                !< its value
-
       if (y1 == y2) then
          tz = t2
       else
@@ -95,18 +81,13 @@ contains
       end if
    end function zero_crossing
 
-   !> The largest sample is the first of equal ones, and a NaN sample, once
-   !> taken, stays the largest (a run whose state is not finite shows it).
-   !>
    !> Takes the sample (t, v), t after every earlier one: it becomes the
-   !> largest when it exceeds the largest so far (or is a NaN), the last
-   !> sample then its neighbour before; the first sample after the largest
-   !> is its neighbour after.
+   !> largest when it exceeds the largest so far (the first of equal ones) or
+   !> is a NaN (which stays); its neighbours before and after are kept.
    pure subroutine peak_sample(p, t, v)
       type(peak_track_t), intent(inout) :: p    !< the samples kept
       real(dp), intent(in) :: t                 !< the sample's time (s)
       real(dp), intent(in) :: v                 !< its value
-
       if (p%samples == 0) then
          p%t(2) = t
          p%v(2) = v
@@ -129,17 +110,14 @@ contains
       p%v_last = v
    end subroutine peak_sample
 
-   !> The largest value of the samples kept, refined between them, and its
-   !> time: the vertex of the parabola through the largest sample and its
-   !> neighbours (parabola_vertex), or the largest sample itself when it is
-   !> the first or the last one or the three are not concave. 0 at 0 before
-   !> any sample.
+   !> The largest value of the samples, refined (parabola_vertex), and its
+   !> time; the largest sample itself at the ends or where not concave; 0 at 0
+   !> before any sample.
    pure subroutine peak_between(p, t_peak, v_peak)
       type(peak_track_t), intent(in) :: p       !< the samples kept
       real(dp), intent(out) :: t_peak           !< time of the peak (s)
       real(dp), intent(out) :: v_peak           !< the peak
       logical :: concave
-
       t_peak = p%t(2)
       v_peak = p%v(2)
       if (p%before .and. p%after) call parabola_vertex(p%t, p%v, t_peak, v_peak, concave)
@@ -149,7 +127,6 @@ contains
    pure function peak_state(p) result(r)
       type(peak_track_t), intent(in) :: p       !< the samples kept
       real(dp) :: r(peak_state_size)            !< samples, last, times, values, before, after
-
       r = [real(p%samples, dp), p%t_last, p%v_last, p%t, p%v, merge(1.0_dp, 0.0_dp, p%before), &
            merge(1.0_dp, 0.0_dp, p%after)]
    end function peak_state
@@ -158,7 +135,6 @@ contains
    pure function peak_restore(r) result(p)
       real(dp), intent(in) :: r(peak_state_size)   !< peak_state's reals
       type(peak_track_t) :: p                      !< the samples kept
-
       p%samples = nint(r(1))
       p%t_last = r(2)
       p%v_last = r(3)

@@ -1,0 +1,306 @@
+!> Growing datasets of the results files over HDF5-Fortran (the rest:
+!> src/results/hdf5_io.f90, same conventions): rank-1 series (a history
+!> column), rank-2 series of columns (a nodal field per snapshot), grown by
+!> blocks, cut back and read whole for a restart, and virtual views of one
+!> column (HDF5 1.10's VDS). Not from the paper. More: docs/OUTPUT.md.
+module hdf5_series
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_loc
+   use hdf5, only: hid_t, hsize_t, h5screate_simple_f, h5sclose_f, h5sselect_hyperslab_f, &
+      h5sget_simple_extent_dims_f, H5S_UNLIMITED_F, H5S_SELECT_SET_F, H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, &
+      h5pcreate_f, h5pset_virtual_f, h5pclose_f, H5P_DATASET_CREATE_F, h5dcreate_f, h5dopen_f, h5dclose_f, &
+      h5dwrite_f, h5dread_f, h5dset_extent_f, h5dget_space_f
+   use kinds, only: dp
+   use hdf5_io, only: h5io_create_dataset, h5io_check, h5io_fail
+   implicit none
+   private
+   public :: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_open_dataset, &
+             h5io_cut_series, h5io_read_series, h5io_close_dataset, h5io_view_column, h5io_real, h5io_integer
+
+   !> Element types of a series (h5io_create_series).
+   integer, parameter :: h5io_real = 1, h5io_integer = 2
+
+   !> Appends entries to a series at once: reals or integers (rank 1), columns x(:, k) (rank 2).
+   interface h5io_append_block
+      module procedure append_reals, append_integers, append_columns
+   end interface h5io_append_block
+
+   !> Reads a whole rank-1 series (a restart): reals or integers.
+   interface h5io_read_series
+      module procedure read_reals, read_integers
+   end interface h5io_read_series
+
+contains
+
+   !> Creates the empty rank-1 series `name` of reals or integers (kind), in
+   !> chunks of `chunk` entries, open as did (close with h5io_close_dataset).
+   subroutine h5io_create_series(loc, name, kind, chunk, did, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: kind, chunk
+      integer(hid_t), intent(out) :: did
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer(hid_t) :: tid
+      tid = merge(H5T_NATIVE_INTEGER, H5T_NATIVE_DOUBLE, kind == h5io_integer)
+      call create_extendible(loc, name, tid, [0_hsize_t], [int(chunk, hsize_t)], did, stat, errmsg)
+   end subroutine h5io_create_series
+
+   !> Creates the empty real series `name` of shape (nrow, 0), growing by
+   !> columns, in chunks of `chunk_values` values (one column at least), open as did.
+   subroutine h5io_create_columns(loc, name, nrow, chunk_values, did, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: nrow, chunk_values
+      integer(hid_t), intent(out) :: did
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      call create_extendible(loc, name, H5T_NATIVE_DOUBLE, [int(nrow, hsize_t), 0_hsize_t], &
+         [int(nrow, hsize_t), int(max(1, chunk_values/max(nrow, 1)), hsize_t)], did, stat, errmsg)
+   end subroutine h5io_create_columns
+
+   !> A chunked dataset of type tid, shape dims, chunks chunk, its last dimension unlimited.
+   subroutine create_extendible(loc, name, tid, dims, chunk, did, stat, errmsg)
+      integer(hid_t), intent(in) :: loc, tid
+      character(len=*), intent(in) :: name
+      integer(hsize_t), intent(in) :: dims(:), chunk(:)
+      integer(hid_t), intent(out) :: did
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer(hsize_t) :: maxdims(size(dims))
+      maxdims = dims
+      maxdims(size(dims)) = H5S_UNLIMITED_F
+      call h5io_create_dataset(loc, name, tid, maxdims, chunk, did, stat, errmsg)
+   end subroutine create_extendible
+
+
+   !> Opens the existing dataset `name` (close with h5io_close_dataset).
+   subroutine h5io_open_dataset(loc, name, did, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name
+      integer(hid_t), intent(out) :: did
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer :: err
+      call h5dopen_f(loc, name, did, err)
+      call h5io_check(err, 'cannot open the dataset', name, stat, errmsg)
+      if (stat /= 0) did = -1
+   end subroutine h5io_open_dataset
+
+   !> The entries of the series did (its last dimension), -1 on failure.
+   integer function h5io_series_length(did) result(n)
+      integer(hid_t), intent(in) :: did
+      integer(hsize_t) :: dims(2), maxdims(2)
+      integer(hid_t) :: fspace
+      integer :: err, rank
+      n = -1
+      call h5dget_space_f(did, fspace, err)
+      if (err /= 0) return
+      call h5sget_simple_extent_dims_f(fspace, dims, maxdims, rank)
+      call h5sclose_f(fspace, err)
+      if (rank >= 1 .and. rank <= 2) n = int(dims(rank))
+   end function h5io_series_length
+
+   !> Cuts the series did (n entries at least) to its first n (a restart).
+   subroutine h5io_cut_series(did, n, stat, errmsg)
+      integer(hid_t), intent(in) :: did
+      integer, intent(in) :: n
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer(hsize_t) :: dims(2), maxdims(2)
+      integer(hid_t) :: fspace
+      integer :: err, rank
+      call h5dget_space_f(did, fspace, err)
+      if (err == 0) call h5sget_simple_extent_dims_f(fspace, dims, maxdims, rank)
+      if (err == 0) call h5sclose_f(fspace, err)
+      call h5io_check(merge(0, 1, err == 0 .and. rank >= 1 .and. rank <= 2), &
+         'cannot read the extent of a series', '', stat, errmsg)
+      if (stat /= 0) return
+      if (dims(rank) < int(n, hsize_t)) then
+         call h5io_fail('a series holds fewer entries than it must', '', stat, errmsg)
+         return
+      end if
+      if (dims(rank) == int(n, hsize_t)) return
+      dims(rank) = int(n, hsize_t)
+      call h5dset_extent_f(did, dims(:rank), err)
+      call h5io_check(err, 'cannot cut a series', '', stat, errmsg)
+   end subroutine h5io_cut_series
+
+   !> The reals of the rank-1 series `name`.
+   subroutine read_reals(loc, name, x, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name
+      real(dp), allocatable, target, intent(out) :: x(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer(hid_t) :: did
+      integer :: x_len
+      call open_series(loc, name, did, x_len, stat, errmsg)
+      if (stat /= 0) return
+      allocate (x(x_len))
+      call read_series(did, H5T_NATIVE_DOUBLE, c_loc(x), size(x), name, stat, errmsg)
+   end subroutine read_reals
+
+   !> The integers of the rank-1 series `name`.
+   subroutine read_integers(loc, name, x, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name
+      integer, allocatable, target, intent(out) :: x(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer(hid_t) :: did
+      integer :: x_len
+      call open_series(loc, name, did, x_len, stat, errmsg)
+      if (stat /= 0) return
+      allocate (x(x_len))
+      call read_series(did, H5T_NATIVE_INTEGER, c_loc(x), size(x), name, stat, errmsg)
+   end subroutine read_integers
+
+   !> Opens the rank-1 series `name`: its dataset and its length (>= 0).
+   subroutine open_series(loc, name, did, n, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name
+      integer(hid_t), intent(out) :: did
+      integer, intent(out) :: n
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      n = 0
+      call h5io_open_dataset(loc, name, did, stat, errmsg)
+      if (stat == 0) n = max(0, h5io_series_length(did))
+   end subroutine open_series
+
+   !> Reads the n values of the open series did into buf (type mem_type) and closes it.
+   subroutine read_series(did, mem_type, buf, n, name, stat, errmsg)
+      integer(hid_t), intent(in) :: did
+      integer(hid_t), intent(in) :: mem_type
+      type(c_ptr), intent(in) :: buf
+      integer, intent(in) :: n
+      character(len=*), intent(in) :: name
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      type(c_ptr) :: at
+      integer :: err
+      err = 0
+      at = buf                               ! (h5dread_f's buffer is intent(inout))
+      if (n > 0) call h5dread_f(did, mem_type, at, err)
+      call h5io_check(err, 'cannot read the dataset', name, stat, errmsg)
+      call h5dclose_f(did, err)
+   end subroutine read_series
+
+   !> Appends the reals x(:) to the rank-1 series did.
+   subroutine append_reals(did, x, stat, errmsg)
+      integer(hid_t), intent(in) :: did
+      real(dp), intent(in) :: x(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      real(dp), allocatable, target :: buf(:)
+      stat = 0
+      if (size(x) == 0) return
+      buf = x
+      call grow_and_write(did, H5T_NATIVE_DOUBLE, 1, size(x), c_loc(buf), stat, errmsg)
+   end subroutine append_reals
+
+   !> Appends the integers x(:) to the rank-1 series did.
+   subroutine append_integers(did, x, stat, errmsg)
+      integer(hid_t), intent(in) :: did
+      integer, intent(in) :: x(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer, allocatable, target :: buf(:)
+      stat = 0
+      if (size(x) == 0) return
+      buf = x
+      call grow_and_write(did, H5T_NATIVE_INTEGER, 1, size(x), c_loc(buf), stat, errmsg)
+   end subroutine append_integers
+
+   !> Appends the columns x(:, k) (nrow values each) to the rank-2 series did.
+   subroutine append_columns(did, x, stat, errmsg)
+      integer(hid_t), intent(in) :: did
+      real(dp), intent(in) :: x(:,:)
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      real(dp), allocatable, target :: buf(:,:)
+      stat = 0
+      if (size(x, 2) == 0) return
+      buf = x
+      call grow_and_write(did, H5T_NATIVE_DOUBLE, 2, size(x, 2), c_loc(buf), stat, errmsg)
+   end subroutine append_columns
+
+   !> Extends did's last dimension by n and writes the values at buf (type tid) there.
+   subroutine grow_and_write(did, tid, rank, n, buf, stat, errmsg)
+      integer(hid_t), intent(in) :: did, tid
+      integer, intent(in) :: rank
+      integer, intent(in) :: n
+      type(c_ptr), intent(in) :: buf
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer(hsize_t) :: dims(rank), maxdims(rank), start(rank), count(rank)
+      integer(hid_t) :: fspace, mspace
+      integer :: err
+      call h5dget_space_f(did, fspace, err)
+      if (err == 0) call h5sget_simple_extent_dims_f(fspace, dims, maxdims, err)
+      if (err == rank) err = 0
+      if (err == 0) call h5sclose_f(fspace, err)
+      call h5io_check(err, 'cannot read the extent of a series', '', stat, errmsg)
+      if (stat /= 0) return
+      start = 0
+      start(rank) = dims(rank)
+      count = dims
+      count(rank) = int(n, hsize_t)
+      dims(rank) = dims(rank) + int(n, hsize_t)
+      call h5dset_extent_f(did, dims, err)
+      call h5io_check(err, 'cannot extend a series', '', stat, errmsg)
+      if (stat /= 0) return
+      call h5dget_space_f(did, fspace, err)
+      if (err == 0) call h5sselect_hyperslab_f(fspace, H5S_SELECT_SET_F, start, count, err)
+      if (err == 0) call h5screate_simple_f(rank, count, mspace, err)
+      call h5io_check(err, 'cannot select the new entry of a series', '', stat, errmsg)
+      if (stat /= 0) return
+      call h5dwrite_f(did, tid, buf, err, mem_space_id=mspace, file_space_id=fspace)
+      call h5io_check(err, 'cannot write the new entry of a series', '', stat, errmsg)
+      call h5sclose_f(mspace, err)
+      call h5sclose_f(fspace, err)
+   end subroutine grow_and_write
+
+   !> Creates `name`, a virtual dataset (VDS) of nrow reals showing column
+   !> `column` (from 1) of the rank-2 series `source` of the file
+   !> `source_file` ('.': the same; a bare name: the file beside): a view, no
+   !> copy, read as a plain 1-D dataset.
+   subroutine h5io_view_column(loc, name, source_file, source, nrow, column, stat, errmsg)
+      integer(hid_t), intent(in) :: loc
+      character(len=*), intent(in) :: name, source_file, source
+      integer, intent(in) :: nrow, column
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer(hid_t) :: vspace, sspace, plist, did
+      integer :: err
+      call h5screate_simple_f(1, [int(nrow, hsize_t)], vspace, err)
+      call h5io_check(err, 'cannot make the dataspace of the view', name, stat, errmsg)
+      if (stat /= 0) return
+      call h5screate_simple_f(2, [int(nrow, hsize_t), int(column, hsize_t)], sspace, err, &
+         [int(nrow, hsize_t), H5S_UNLIMITED_F])
+      if (err == 0) call h5sselect_hyperslab_f(sspace, H5S_SELECT_SET_F, [0_hsize_t, int(column - 1, hsize_t)], &
+         [int(nrow, hsize_t), 1_hsize_t], err)
+      if (err == 0) call h5pcreate_f(H5P_DATASET_CREATE_F, plist, err)
+      if (err == 0) call h5pset_virtual_f(plist, vspace, source_file, source, sspace, err)
+      call h5io_check(err, 'cannot map the view onto '//source, name, stat, errmsg)
+      if (stat == 0) then
+         call h5dcreate_f(loc, name, H5T_NATIVE_DOUBLE, vspace, did, err, dcpl_id=plist)
+         call h5io_check(err, 'cannot create the view', name, stat, errmsg)
+         if (stat == 0) call h5dclose_f(did, err)
+         call h5pclose_f(plist, err)
+      end if
+      call h5sclose_f(sspace, err)
+      call h5sclose_f(vspace, err)
+   end subroutine h5io_view_column
+
+   !> Closes a dataset opened by h5io_create_series or h5io_create_columns.
+   subroutine h5io_close_dataset(did, stat, errmsg)
+      integer(hid_t), intent(in) :: did
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer :: err
+      call h5dclose_f(did, err)
+      call h5io_check(err, 'cannot close a dataset', '', stat, errmsg)
+   end subroutine h5io_close_dataset
+
+end module hdf5_series
