@@ -35,6 +35,11 @@ $(TEST_BUILD):
 $(TEST_BUILD)/funit.o: $(FUNIT)/funit.f90 | $(TEST_BUILD)
 	$(FC_ALL) -c $< -o $@
 
+# What the tests share (tests/test_helpers.f90), linked with them in both routes.
+HELPER_OBJS := $(TEST_BUILD)/test_helpers.o
+$(HELPER_OBJS): tests/test_helpers.f90 $(LIB) | $(TEST_BUILD)
+	$(FC_ALL) -c $< -o $@
+
 # The translator refuses what is outside the subset (tests/funit/reject/*.pf),
 # and a small suite with deliberate failures, built in a temporary directory,
 # makes the driver report them and fail (tests/funit/selfcheck/).
@@ -51,12 +56,12 @@ TEST_EXE := $(BUILD)/pfunit/impact_tests
 # pf2f90.py checks that the tests stay in the subset the default route builds;
 # pfunit.mk stops on a pFUnit older than 4.13, before anything is built.
 test-build: pfunit-check
-test-build: $(LIB) $(ORACLE_OBJS) $(TOOL_OBJS)
+test-build: $(LIB) $(ORACLE_OBJS) $(TOOL_OBJS) $(HELPER_OBJS)
 	@mkdir -p $(BUILD)/pfunit
 	$(PYTHON) $(FUNIT)/pf2f90.py --driver $(BUILD)/pfunit/subset_check.f90 $(TEST_PF)
 	$(MAKE) -C $(BUILD)/pfunit -f $(CURDIR)/$(FUNIT)/pfunit.mk impact_tests \
 	    PFUNIT_DIR='$(abspath $(PFUNIT_DIR))' FC='$(FC)' FFLAGS='$(FFLAGS)' \
-	    IMPACT_TESTS='$(abspath $(TEST_PF))' IMPACT_LIB='$(abspath $(ORACLE_OBJS) $(TOOL_OBJS) $(LIB))' \
+	    IMPACT_TESTS='$(abspath $(TEST_PF))' IMPACT_LIB='$(abspath $(ORACLE_OBJS) $(TOOL_OBJS) $(HELPER_OBJS) $(LIB))' \
 	    IMPACT_MODULES='$(abspath $(BUILD))' LAPACK='$(LIBS)'
 
 .PHONY: pfunit-check
@@ -86,9 +91,9 @@ $(TEST_BUILD)/test-list: FORCE | $(TEST_BUILD)
 $(TEST_BUILD)/funit_driver.f90: $(TEST_BUILD)/test-list $(TEST_PF) $(FUNIT)/pf2f90.py
 	$(PYTHON) $(FUNIT)/pf2f90.py --driver $@ $(TEST_PF)
 
-$(TEST_BUILD)/%.o: $(TEST_BUILD)/%.F90 $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(TOOL_OBJS) $(LIB)
+$(TEST_BUILD)/%.o: $(TEST_BUILD)/%.F90 $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(TOOL_OBJS) $(HELPER_OBJS) $(LIB)
 	$(FC_ALL) -c $< -o $@
 
-$(TEST_EXE): $(TEST_BUILD)/funit_driver.f90 $(TEST_OBJ) $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(TOOL_OBJS) $(LIB)
-	$(FC_ALL) $< $(TEST_OBJ) $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(TOOL_OBJS) $(LIB) $(LIBS) -o $@
+$(TEST_EXE): $(TEST_BUILD)/funit_driver.f90 $(TEST_OBJ) $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(TOOL_OBJS) $(HELPER_OBJS) $(LIB)
+	$(FC_ALL) $< $(TEST_OBJ) $(TEST_BUILD)/funit.o $(ORACLE_OBJS) $(TOOL_OBJS) $(HELPER_OBJS) $(LIB) $(LIBS) -o $@
 endif

@@ -35,7 +35,7 @@ program accuracy_validation
    use kinds, only: dp, msg_len
    use input_deck, only: deck_t, read_deck_file
    use number_text, only: real_short, int_str
-   use summary_reader, only: summary_t, read_summary, summary_value, summary_index
+   use result_reader, only: summary_t, read_summary, summary_value, summary_index
    use child_process, only: spawn_program, wait_child, usable_cpus
    use file_system, only: make_directories
    implicit none

@@ -57,6 +57,7 @@ program validate
       criterion_tsai_wu, mode_names
    use file_system, only: make_directories
    use child_process, only: spawn_program, wait_child
+   use result_reader, only: summary_t, read_summary, summary_value, read_columns
    use reference_solutions, only: navier_sinusoidal_ply_stresses, isotropic_sinusoidal_stresses
    use reference_solutions, only: navier_series_t, navier_fsdt, navier_fsdt_static, navier_step_centre, &
       navier_frequencies, navier_clpt_centre, strip_deflection, hertz_impact_t, hertz_impact, &
@@ -697,7 +698,7 @@ contains
          call summary_values('build/validation/rigid_target_' // trim(laws(il)) // '_summary.dat', &
             [character(len=32) :: 'peak_force_N', 'contact_duration_us', 'rebound_velocity_m_s', &
              'permanent_indentation_mm'], sval, stat)
-         call read_table('build/validation/rigid_target_' // trim(laws(il)) // '_history.dat', 16, hist, stat)
+         call read_columns('build/validation/rigid_target_' // trim(laws(il)) // '_history.dat', 16, hist, stat)
          amax = maxval(hist(3, :))*1.0e-3_dp
          got = [amax, sval(1), sval(2)*1.0e-6_dp, sval(3)/v0, sval(4)*1.0e-3_dp]
          want = [ref%alpha_m, ref%f_m, ref%duration, ref%restitution, ref%alpha_0]
@@ -811,7 +812,7 @@ contains
       real(dp) :: s(1), t_end
       integer :: i
       v = 0.0_dp
-      call read_table(prefix // '_history.dat', 16, hist, stat)
+      call read_columns(prefix // '_history.dat', 16, hist, stat)
       if (stat /= 0) return
       call summary_values(prefix // '_summary.dat', [character(len=32) :: 'contact_duration_us'], s, stat)
       if (stat /= 0) return
@@ -861,7 +862,7 @@ contains
             call record('8 energy', trim(runs(ir)) // ' did not run', 1.0_dp, tol_linear)
             cycle runs_loop
          end if
-         call read_table('build/validation/' // trim(runs(ir)) // '_history.dat', 16, h, stat)
+         call read_columns('build/validation/' // trim(runs(ir)) // '_history.dat', 16, h, stat)
          n = size(h, 2)
          emax(ir) = maxval(abs(h(13, :)))/e0
          left = h(12, n)/e0
@@ -879,7 +880,7 @@ contains
          call record('8 energy', 'energy_paper did not run', 1.0_dp, tol_loop)
          return
       end if
-      call read_table('build/validation/energy_paper_history.dat', 16, h, stat)
+      call read_columns('build/validation/energy_paper_history.dat', 16, h, stat)
       n = size(h, 2)
       ! dissipated: E0 less what the impactor and the plate hold at the end
       diss = e0 - (h(8, n) + h(9, n) + h(10, n))
@@ -942,7 +943,7 @@ contains
          call record('8 energy', 'energy_paper_hertz did not run', 1.0_dp, tol_balance)
          return
       end if
-      call read_table('build/validation/energy_paper_hertz_history.dat', 16, h, stat)
+      call read_columns('build/validation/energy_paper_hertz_history.dat', 16, h, stat)
       n = size(h, 2)
       diss = e0 - (h(8, n) + h(9, n) + h(10, n))
       loop = 0.0_dp
@@ -1203,7 +1204,7 @@ contains
             call run_program(trim(name), out_dir // '/' // trim(name) // '_summary.dat', stat)
             fe(:, im, k) = -1.0_dp
             if (stat /= 0) cycle
-            call read_table(out_dir // '/' // trim(name) // '_history.dat', 16, h, stat)
+            call read_columns(out_dir // '/' // trim(name) // '_history.dat', 16, h, stat)
             if (stat == 0) fe(:, im, k) = force_pulse(h(1, :)*1.0e-6_dp, h(2, :))
          end do
       end do models_loop
@@ -1480,44 +1481,6 @@ contains
       end if
    end subroutine run_program
 
-   !> Every numeric row of a column file (lines not starting with '#'), the
-   !> first ncol columns: table(ncol, rows).
-   subroutine read_table(path, ncol, table, stat)
-      character(len=*), intent(in) :: path
-      integer, intent(in) :: ncol
-      real(dp), allocatable, intent(out) :: table(:,:)
-      integer, intent(out) :: stat
-      character(len=2048) :: line
-      integer :: u, ios, nrow, r
-      stat = 1
-      allocate (table(ncol, 0))
-      open (newunit=u, file=path, status='old', action='read', iostat=ios)
-      if (ios /= 0) return
-      nrow = 0
-      do
-         read (u, '(a)', iostat=ios) line
-         if (ios /= 0) exit
-         if (line(1:1) /= '#' .and. len_trim(line) > 0) nrow = nrow + 1
-      end do
-      deallocate (table)
-      allocate (table(ncol, nrow))
-      rewind (u)
-      r = 0
-      do
-         read (u, '(a)', iostat=ios) line
-         if (ios /= 0) exit
-         if (line(1:1) == '#' .or. len_trim(line) == 0) cycle
-         r = r + 1
-         read (line, *, iostat=ios) table(:, r)
-         if (ios /= 0) then
-            close (u)
-            return
-         end if
-      end do
-      close (u)
-      stat = 0
-   end subroutine read_table
-
    !> Column `col` of every numeric row, at most size(values) of them.
    subroutine read_rows(path, ncol, values, col, stat)
       character(len=*), intent(in) :: path
@@ -1527,7 +1490,7 @@ contains
       real(dp), allocatable :: t(:,:)
       integer :: n
       values = 0.0_dp
-      call read_table(path, ncol, t, stat)
+      call read_columns(path, ncol, t, stat)
       if (stat /= 0) return
       n = min(size(values), size(t, 2))
       values(:n) = t(col, :n)
@@ -1540,36 +1503,24 @@ contains
       real(dp), intent(out) :: values(ncol)
       integer, intent(out) :: stat
       real(dp), allocatable :: t(:,:)
-      call read_table(path, ncol, t, stat)
+      call read_columns(path, ncol, t, stat)
       values = 0.0_dp
       if (stat == 0 .and. size(t, 2) > 0) values = t(:, size(t, 2))
       if (size(t, 2) == 0) stat = 1
    end subroutine read_last_row
 
-   !> The values of `key = value` lines of a summary file.
+   !> The values of `key = value` lines of a summary file (huge when absent).
    subroutine summary_values(path, keys, values, stat)
       character(len=*), intent(in) :: path
       character(len=*), intent(in) :: keys(:)
       real(dp), intent(out) :: values(:)
       integer, intent(out) :: stat
-      character(len=512) :: line
-      integer :: u, ios, k, eq
-      values = huge(1.0_dp)
-      stat = 1
-      open (newunit=u, file=path, status='old', action='read', iostat=ios)
-      if (ios /= 0) return
-      do
-         read (u, '(a)', iostat=ios) line
-         if (ios /= 0) exit
-         if (line(1:1) == '#') cycle
-         eq = index(line, '=')
-         if (eq == 0) cycle
-         do k = 1, size(keys)
-            if (trim(adjustl(line(:eq - 1))) == trim(keys(k))) read (line(eq + 1:), *, iostat=ios) values(k)
-         end do
-      end do
-      close (u)
-      stat = merge(0, 1, all(values /= huge(1.0_dp)))
+      type(summary_t) :: s
+      character(len=msg_len) :: errmsg
+      integer :: k
+      call read_summary(path, s, stat, errmsg)
+      values = [(summary_value(s, trim(keys(k)), huge(1.0_dp)), k = 1, size(keys))]
+      if (stat == 0) stat = merge(0, 1, all(values /= huge(1.0_dp)))
    end subroutine summary_values
 
    ! ============================================================ report

@@ -11,7 +11,7 @@ module accuracy_report
    use number_text, only: int_str, real_short
    use result_files, only: summary_item_t, summary_real, summary_integer, summary_text, write_summary_file, &
       write_column_block
-   use summary_reader, only: summary_t, read_summary
+   use result_reader, only: summary_t, read_summary
    use accuracy_runs, only: run_t, launcher_t, nq, iq_peak_time, result_keys, result_units, state_done, &
       error_scale, state_skipped, state_stopped, is_ladder
    use accuracy_ladder, only: axis_t, judged_t, judge_run

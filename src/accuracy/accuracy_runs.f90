@@ -9,7 +9,7 @@ module accuracy_runs
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: dp, msg_len
    use number_text, only: int_str, real_str, real_short
-   use summary_reader, only: summary_t, read_summary, summary_value, summary_has, summary_index
+   use result_reader, only: summary_t, read_summary, summary_value, summary_has, summary_index
    use child_process, only: spawn_program, wait_child, stop_caught
    use result_files, only: history_columns
    use scene_model, only: scene_t

@@ -179,9 +179,11 @@ module deck_schema
          // 'into the whole plate; its fields then also stored in <prefix>.h5) or ''none'' (no XDMF file)'), &
       deck_var_t('output', 'fields_every', kind_integer, '-', '40', '[1, inf)', &
          'field snapshots in <prefix>.h5 every N-th step'), &
-      deck_var_t('output', 'gauge_x', kind_real, 'm', '', '(-inf, inf)', 'the strain gauge on the back face ' &
-         // '(strain_y_back), along x from the plate centre; not given: the paper''s gauge (Fig. 9b), the ' &
-         // 'Gauss point nearest the impact point in the element at it, which moves with the mesh'), &
+      deck_var_t('output', 'gauge', kind_word, '-', 'point', 'point | paper', 'the back-face strain gauge: ''point'' ' &
+         // '(at gauge_x, gauge_y, from the element''s strain field: converges as the mesh is refined) or ' &
+         // '''paper'' (Fig. 9b: the Gauss point nearest the impact point, moves with the mesh)'), &
+      deck_var_t('output', 'gauge_x', kind_real, 'm', '', '(-inf, inf)', 'the strain gauge along x from the ' &
+         // 'plate centre; not given: the impact point''s (with gauge = ''paper'': the paper''s Gauss point''s)'), &
       deck_var_t('output', 'gauge_y', kind_real, 'm', '', '(-inf, inf)', 'the strain gauge along y, likewise'), &
       deck_var_t('accuracy', 'target', kind_real, '-', '', '(0, 0.5]', 'relative error every result must ' &
          // 'reach: the run refines dt and the mesh on a ladder of runs until it estimates so (impact ' &
@@ -240,7 +242,8 @@ module deck_schema
       integer :: every = 0, fields_every = 0
       logical :: overwrite = .false., hdf5 = .false.
       character(len=:), allocatable :: xdmf
-      real(dp) :: gauge_x = 0, gauge_y = 0          !< NaN: not given (the paper's gauge; is_given)
+      character(len=:), allocatable :: gauge
+      real(dp) :: gauge_x = 0, gauge_y = 0          !< NaN: not given (the impact point; is_given)
       ! &accuracy
       real(dp) :: accuracy_target = 0              !< NaN: not given (one plain run; accuracy_wanted)
       real(dp) :: accuracy_max_cpu_s = 0, accuracy_mesh_factor = 0
@@ -418,6 +421,7 @@ contains
       case ('output.hdf5');                call bind_logical(deck%hdf5, v, set)
       case ('output.xdmf');                call bind_text(deck%xdmf, v, set)
       case ('output.fields_every');        call bind_integer(deck%fields_every, v, set)
+      case ('output.gauge');               call bind_text(deck%gauge, v, set)
       case ('output.gauge_x');             call bind_real(deck%gauge_x, v, set)
       case ('output.gauge_y');             call bind_real(deck%gauge_y, v, set)
       case ('accuracy.target');            call bind_real(deck%accuracy_target, v, set)

@@ -278,12 +278,12 @@ contains
       eps_y = eps(2)
    end function back_face_strain
 
-   !> The strain gauge's point. The paper's (Fig. 9b), where the deck
-   !> gives none: the Gauss point nearest the impact point in the element
-   !> at it, which moves with the mesh. The deck's &output gauge_x, gauge_y
-   !> (either one; the other the paper's): a fixed point, mirrored into the
-   !> modelled domain across its symmetry lines (eps_y is even in x and y),
-   !> where the results converge as the mesh is refined.
+   !> The strain gauge's point: the deck's &output gauge_x, gauge_y, the
+   !> impact point where it gives none, mirrored into the modelled domain
+   !> across its symmetry lines (eps_y is even in x and y); the strain is the
+   !> element's field there, which converges as the mesh is refined. With
+   !> gauge = 'paper' and no point given, the paper's (Fig. 9b): the Gauss
+   !> point nearest the impact point in the element at it (moves with the mesh).
    subroutine place_gauge(deck, model, stat, errmsg)
       type(deck_t), intent(in) :: deck          !< the deck
       type(model_t), intent(inout) :: model     !< the model, its geometry built
@@ -291,14 +291,19 @@ contains
       character(len=*), intent(inout) :: errmsg !< reason on failure
       real(dp) :: p(2), xi(2), phi(nen), wj, det
       integer :: e, g
+      logical :: given
 
       stat = 0
-      e = model%msh%impact_elem
-      g = element_gauss_point(model%geo(e), model%msh%coords(:, model%msh%impact_node))
-      model%gauge_elem = e
-      model%gauge_xy = model%geo(e)%xy3(:, g)
-      model%gauge_dxy = model%geo(e)%dx3(:, :, g)
-      if (.not. (is_given(deck, 'output', 'gauge_x') .or. is_given(deck, 'output', 'gauge_y'))) return
+      given = is_given(deck, 'output', 'gauge_x') .or. is_given(deck, 'output', 'gauge_y')
+      model%gauge_xy = [model%msh%x_impact, model%msh%y_impact]
+      if (deck%gauge == 'paper') then
+         e = model%msh%impact_elem
+         g = element_gauss_point(model%geo(e), model%msh%coords(:, model%msh%impact_node))
+         model%gauge_elem = e
+         model%gauge_xy = model%geo(e)%xy3(:, g)
+         model%gauge_dxy = model%geo(e)%dx3(:, :, g)
+         if (.not. given) return
+      end if
       if (is_given(deck, 'output', 'gauge_x')) model%gauge_xy(1) = deck%gauge_x
       if (is_given(deck, 'output', 'gauge_y')) model%gauge_xy(2) = deck%gauge_y
       p = model%gauge_xy
