@@ -38,8 +38,9 @@ module accuracy_driver
    real(dp), parameter :: min_dt = 1.0e-10_dp
    !> The cap when the deck gives none, in runs of level 0 (docs/ACCURACY.md: why).
    integer, parameter :: default_cap_times = 100
-   !> Levels of each axis at the start.
-   integer, parameter :: first_levels = 3
+   !> Levels of the time and the mesh axis at the start: a third mesh level, the dearest run,
+   !> only when the two-level estimate (Roache's Fs = 3) does not meet the target.
+   integer, parameter :: first_levels(2) = [3, 2]
    !> Grading of level 0's mesh when the ladder grades it (-).
    real(dp), parameter :: ladder_grading = 1.25_dp
 
@@ -159,9 +160,9 @@ contains
          trim(la%theory) // ', domain ' // trim(la%scene%domain) // '; runs in ' // la%dir
       if (len(why) > 0) write (unit, '(a)') 'accuracy: ' // why
       allocate (lad%runs(0))
-      do l = 0, first_levels - 1
-         call plan(lad%runs, base, la, l, 0)
-         if (l > 0) call plan(lad%runs, base, la, 0, l)
+      do l = 0, maxval(first_levels) - 1
+         if (l < first_levels(1)) call plan(lad%runs, base, la, l, 0)
+         if (l > 0 .and. l < first_levels(2)) call plan(lad%runs, base, la, 0, l)
       end do
       lad%target = deck%accuracy_target
       lad%k_max = max_time_levels - 1

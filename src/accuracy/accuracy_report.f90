@@ -35,6 +35,8 @@ module accuracy_report
    !> Whose the time error is of a run chosen without it measured on its mesh, and why.
    character(len=*), parameter :: unmeasured_time = &
       'mesh 0''s (the cap left no neighbouring time level on the chosen mesh)'
+   !> The mesh error from two levels.
+   character(len=*), parameter :: two_meshes = 'two levels: 3 times their difference (Roache''s factor of safety 3)'
    !> A run's state as a word (state_planned, ... of accuracy_runs).
    character(len=7), parameter :: state_words(0:5) = [character(len=7) :: 'planned', 'planned', 'done', 'failed', &
       'skipped', 'stopped']
@@ -167,6 +169,7 @@ contains
       end if
       if (out%jd%two_levels) call summary_text(items, 'time_error_estimate', &
                                                'two levels: Roache''s grid convergence index, Fs = 3')
+      if (lad%mx%levels == 2) call summary_text(items, 'mesh_error_estimate', two_meshes)
       call summary_text(items, 'chosen_run', la%dir // trim(r%name))
       call summary_real(items, 'chosen_dt_us', 'chosen_dt', 's', r%dt, 1.0e6_dp)
       call summary_integer(items, 'chosen_nx', r%nx)
@@ -214,6 +217,7 @@ contains
       write (unit, '(a)') 'accuracy: ' // trim(out%status)
       if (out%jd%two_levels) write (unit, '(a)') 'accuracy: the time error on the chosen mesh is from two ' // &
          'time levels: Roache''s grid convergence index, factor of safety 3'
+      if (lad%mx%levels == 2) write (unit, '(a)') 'accuracy: the mesh error is from ' // two_meshes
       if (.not. out%jd%time_measured) write (unit, '(a)') 'accuracy: the time error was not measured on ' // &
          'the chosen mesh: it is ' // unmeasured_time
       if (out%jd%err_maxima(iq_peak_time) > 0.0_dp) write (unit, '(a)') 'accuracy: ' // &
