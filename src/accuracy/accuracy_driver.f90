@@ -62,16 +62,14 @@ contains
       type(deck_t) :: claimed                       ! the deck, overwriting with --restart
       integer(int64) :: wall0, wall1, rate
       integer :: i, ignored
-      exit_code = 1
+      exit_code = 1;  stat = 1
       call system_clock(wall0, rate)
-      stat = 1
       if (len(opts%deck_path) == 0) errmsg = '--accuracy: give the deck as a file (its runs read it again), ' // &
          'not on standard input'
       if (deck%analysis_kind /= 'impact') errmsg = deck%source // ": &accuracy: target needs &analysis kind = 'impact'"
       if (deck%analysis_kind /= 'impact' .or. len(opts%deck_path) == 0) return
       call pass_stops_to_children()                 ! a stop ends the runs going, keeps those done
-      claimed = deck
-      claimed%overwrite = deck%overwrite .or. opts%restart
+      claimed = deck;  claimed%overwrite = deck%overwrite .or. opts%restart
       call take_dead_claim(deck%prefix // trim(own_files(1)))
       call claim_results(claimed, own_files, claim, stat, errmsg)
       if (stat /= 0) return
@@ -84,8 +82,7 @@ contains
       if (stat == 0 .and. stop_caught() /= 0) then
          out%status = 'stopped by signal ' // int_str(stop_caught()) // ': the results carry the errors reached; ' // &
                       'impact --restart continues the ladder'
-         out%met = .false.
-         out%stop_signal = stop_caught()
+         out%met = .false.;  out%stop_signal = stop_caught()
          out%cmp%what = ['theory    ', 'bend_twist']
          where (out%cmp%run == 0 .and. len_trim(out%cmp%note) == 0) out%cmp%note = 'the run was stopped'
       end if
@@ -131,21 +128,13 @@ contains
       integer :: l
       call build_model(deck, model, stat, errmsg)
       if (stat /= 0) return
-      la%scene = model%scene
-      la%exe = program_path()
-      la%deck_path = opts%deck_path
-      la%user_settings = opts%settings
-      la%dir = deck%prefix // '_acc/'
-      la%theory = la%scene%theory
-      la%every_step = strength_given(deck)
-      la%restart = opts%restart
-      la%cpus = usable_cpus()
+      la%scene = model%scene;  la%theory = la%scene%theory;  la%exe = program_path();  la%cpus = usable_cpus()
+      la%deck_path = opts%deck_path;  la%user_settings = opts%settings;  la%restart = opts%restart
+      la%dir = deck%prefix // '_acc/';  la%every_step = strength_given(deck)
       if (deck%given(find_var('accuracy', 'max_cpu_s'))) la%cap = deck%accuracy_max_cpu_s
       if (.not. deck%given(find_var('accuracy', 'max_cpu_s'))) la%cap_times = default_cap_times
-      la%gauge = model%gauge_xy                     ! the strain at one point on every mesh
-      la%unit = unit
-      base = deck
-      la%impact_element = la%scene%element_size
+      la%gauge = model%gauge_xy;  la%unit = unit    ! the strain at one point on every mesh
+      base = deck;  la%impact_element = la%scene%element_size
       call ladder_mesh(deck, model%msh, base, la%impact_element, why)
       la%n0 = base%nx*base%ny
       call make_directories(la%dir(:len(la%dir) - 1), stat, iomsg)
@@ -210,9 +199,7 @@ contains
          end do
       end if
       impact_element = first_element(g)
-      base%nx = n(1)
-      base%ny = n(2)
-      base%grading = g
+      base%nx = n(1);  base%ny = n(2);  base%grading = g
       why = 'level 0: ' // int_str(base%nx) // ' x ' // int_str(base%ny) // ' graded by ' // &
          real_short(g) // ' (the element at the impact point ' // &
          real_short(maxval(impact_element)*1.0e3_dp) // ' mm, the Hertz radius ' // real_short(a*1.0e3_dp) // &
@@ -241,8 +228,7 @@ contains
          if (runs(i)%state == state_skipped) runs(i)%state = state_planned
          return
       end if
-      r%k = k;  r%j = j
-      r%name = ladder_name(k, j)
+      r%k = k;  r%j = j;  r%name = ladder_name(k, j)
       r%role = merge('time    ', merge('mesh    ', 'combined', k == 0), j == 0)
       r%dt = deck%dt/2.0_dp**k
       r%nx = mesh_count(deck%nx, deck%accuracy_mesh_factor, j)

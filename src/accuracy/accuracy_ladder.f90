@@ -83,8 +83,8 @@ contains
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< its levels
       integer :: i
-      i = ladder_run(runs, k, j)
       done_run = .false.
+      i = ladder_run(runs, k, j)
       if (i > 0) done_run = runs(i)%state == state_done
    end function done_run
 
@@ -168,8 +168,7 @@ contains
          jd%value = runs(i)%q
          jd%err_cross = max(abs(runs(i)%q - runs(ik)%q - runs(ij)%q + runs(i0)%q), jd%err_cross)
       end if
-      jd%err_time = lad%tx%err(k + 1, :)
-      jd%err_mesh = lad%mx%err(j + 1, :)
+      jd%err_time = lad%tx%err(k + 1, :);  jd%err_mesh = lad%mx%err(j + 1, :)
       measured = .true.
       if (j > 0) call time_on_mesh(lad, k, j, jd%err_time, measured, jd%two_levels)
       if (i == 0 .and. j > 0 .and. k > 0) then     ! a run to come: its mesh's time error at dt x 2, the order's share
@@ -193,8 +192,7 @@ contains
       integer :: n, iq
       associate (tx => lad%tx, runs => lad%runs)
       n = tx%levels
-      jd%value = runs(tx%run(n))%q
-      jd%err_time = tx%finest%error
+      jd%value = runs(tx%run(n))%q;  jd%err_time = tx%finest%error
       h(:n) = tx%h;  h(n + 1) = tx%h(n)/2.0_dp
       do iq = 1, nq
          p = tx%finest(iq)%order
@@ -203,11 +201,9 @@ contains
          q(n + 1) = continued_value(h(n - 1:n + 1), q(n - 1:n), p)
          next = ladder_estimate(h, q, order_theory(axis_time), order_low(axis_time), order_high(axis_time), &
                                 tx%finest(iq)%floor/2.0_dp)
-         jd%value(iq) = q(n + 1)
-         jd%err_time(iq) = next%error
+         jd%value(iq) = q(n + 1);  jd%err_time(iq) = next%error
       end do
-      jd%err_mesh = lad%mx%err(1, :)
-      jd%err_cross = largest_cross(lad)
+      jd%err_mesh = lad%mx%err(1, :);  jd%err_cross = largest_cross(lad)
       call weigh(jd, runs(tx%run(n)), lad, .true.)
       end associate
    end function judge_next_time
@@ -234,8 +230,7 @@ contains
          if (scale(iq) > 0.0_dp) jd%worst = max(jd%worst, jd%err(iq)/scale(iq))
          if (scale(iq) <= 0.0_dp .and. jd%err(iq) > 0.0_dp) jd%worst = huge(1.0_dp)
       end do
-      jd%meets = jd%worst <= 1.0_dp .and. measured
-      jd%time_measured = measured
+      jd%meets = jd%worst <= 1.0_dp .and. measured;  jd%time_measured = measured
    end subroutine weigh
 
    !> The error of the time of the peak from the choice of the maximum: the largest |t_i - t_peak|
@@ -271,8 +266,7 @@ contains
          k0 = k0 - 1
       end do
       call build_axis(lad%runs, axis_time, lad%targeted, ax, j, k0)
-      measured = ax%levels >= 2 .and. k - k0 < ax%levels
-      two = measured .and. ax%levels == 2
+      measured = ax%levels >= 2 .and. k - k0 < ax%levels;  two = measured .and. ax%levels == 2
       if (.not. measured) return
       do iq = 1, nq
          if (.not. lad%targeted(iq)) cycle
@@ -334,9 +328,8 @@ contains
       do kk = 0, merge(tx%levels, tx%levels - 1, tx%levels <= lad%k_max)
          do jj = 0, merge(0, mx%levels - 1, kk == tx%levels)
             jd = judge_run(lad, kk, jj)
-            done = done_run(runs, kk, jj)
+            done = done_run(runs, kk, jj);  p = time_partner(runs, kk, jj)
             cost = merge(0.0_dp, run_cost(kk, jj), done)
-            p = time_partner(runs, kk, jj)
             if (p >= 0) then
                if (.not. done_run(runs, p, jj)) cost = cost + run_cost(p, jj)
             end if

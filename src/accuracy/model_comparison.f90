@@ -51,8 +51,7 @@ contains
       real(dp) :: slack(nq)
       integer :: coarse, i, base(2)
       logical :: again(2)
-      again = .true.                                ! made (again) at the chosen settings
-      slack = 0.0_dp
+      again = .true.;  slack = 0.0_dp               ! again: made (again) at the chosen settings
       coarse = coarse_base(lad%runs, chosen)
       if (coarse /= chosen) then
          slack = change_slack(lad, chosen, coarse)
@@ -62,11 +61,9 @@ contains
          cmp = first
          do i = 1, 2
             if (first(i)%base /= coarse) then      ! even that run would pass the cap
-               cmp(i)%at = past_cap
-               again(i) = .false.
+               cmp(i)%at = past_cap;  again(i) = .false.
             else if (verdict_settled(first(i), lad, slack)) then
-               again(i) = .false.
-               cmp(i)%at = coarse_words(.true., first(i))
+               cmp(i)%at = coarse_words(.true., first(i));  again(i) = .false.
             end if
          end do
          base = variant_bases(deck, lad%runs, la, chosen, again)
@@ -132,25 +129,21 @@ contains
       type(run_t) :: r
       character(len=16) :: other
       cmp%base = base
-      cmp(1)%what = 'theory'
-      cmp(1)%richer = 'nonlinear';  cmp(1)%simpler = 'linear'
+      cmp(1)%what = 'theory';  cmp(1)%richer = 'nonlinear';  cmp(1)%simpler = 'linear'
       cmp(1)%chosen_richer = la%theory /= 'linear'
       other = merge(cmp(1)%simpler, cmp(1)%richer, cmp(1)%chosen_richer)
       cmp(1)%compared = trim(other) // ' instead of ' // trim(la%theory)
       if (want(1)) then
          r = planned_copy(runs(base(1)))
-         r%role = 'theory'
-         r%name = trim(runs(base(1))%name) // '_' // trim(other)
+         r%role = 'theory';  r%name = trim(runs(base(1))%name) // '_' // trim(other)
          r%variant(1) = "analysis.theory='" // trim(other) // "'"
-         runs = [runs, r]
-         cmp(1)%run = size(runs)
+         runs = [runs, r];  cmp(1)%run = size(runs)
       end if
       cmp(2)%what = 'bend_twist'
       r = planned_copy(runs(base(2)))
       call bend_twist_variant(deck, la%scene, runs(base(2)), r, cmp(2))
       if (want(2) .and. len_trim(cmp(2)%note) == 0) then
-         runs = [runs, r]
-         cmp(2)%run = size(runs)
+         runs = [runs, r];  cmp(2)%run = size(runs)
       end if
       call run_planned(runs, la, stat, errmsg)
    end subroutine make_variants
@@ -184,8 +177,7 @@ contains
          call bend_twist_variant(deck, la%scene, runs(i), r, c)
          cost_bt(i) = merge(predicted_run_cost(r, la), 0.0_dp, len_trim(c%note) == 0)   ! a note: no run
       end do
-      base = x
-      reserve = 0.0_dp
+      base = x;  reserve = 0.0_dp
       if (want(1)) then
          base(1) = comparison_base(runs, la, x, cost_theory)
          if (la%spent + cost_theory(base(1)) <= la%cap) reserve = cost_theory(base(1))
@@ -198,11 +190,8 @@ contains
       type(run_t), intent(in) :: runs(:)            !< the runs
       integer, intent(in) :: chosen                 !< the run chosen
       coarse = ladder_run(runs, 0, runs(chosen)%j)
-      if (coarse == 0) then
-         coarse = chosen
-      else if (runs(coarse)%state /= state_done) then
-         coarse = chosen
-      end if
+      if (coarse == 0) coarse = chosen
+      if (runs(coarse)%state /= state_done) coarse = chosen
    end function coarse_base
 
    !> How far a model's change at run coarse may lie from that at the chosen settings:
@@ -236,8 +225,7 @@ contains
       settled = .false.
       if (c%run == 0) return
       if (lad%runs(c%run)%state /= state_done) return
-      change = model_changes(c, lad)
-      band = change_band(change, slack)
+      change = model_changes(c, lad);  band = change_band(change, slack)
       settled = model_required(max(abs(change) - band, 0.0_dp), lad) .or. .not. model_required(abs(change) + band, lad)
    end function verdict_settled
 
@@ -253,11 +241,8 @@ contains
       if (fits(chosen)) return
       do i = 1, size(runs)
          if (runs(i)%state /= state_done .or. .not. is_ladder(runs(i)) .or. .not. fits(i)) cycle
-         if (base == chosen) then
-            base = i
-         else if (cost(i) > cost(base)) then
-            base = i
-         end if
+         if (base == chosen) base = i
+         if (cost(i) > cost(base)) base = i
       end do
    contains
       !> A run at the settings of run i stays within the cap.
@@ -319,8 +304,7 @@ contains
       type(laminate_t) :: lmt
       integer :: stat
       character(len=msg_len) :: errmsg
-      d = deck
-      d%bend_twist = 'drop'
+      d = deck;  d%bend_twist = 'drop'
       call model_laminate(d, lmt, s)
       call choose_domain(d, s, stat, errmsg)
       quarters = 4.0_dp
