@@ -20,10 +20,9 @@ module accuracy_driver
    use child_process, only: program_path, usable_cpus, pass_stops_to_children, stop_caught
    use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, state_failed, &
       state_skipped, predicted_run_cost, ladder_name, error_scale
-   use accuracy_ladder, only: axis_t, judged_t, choice_t, build_axis, judge_run, choose_run, final_run, ladder_run, &
-      time_partner, cross_needed, done_run, axis_time, axis_mesh
-   use accuracy_report, only: accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, &
-      report_terminal
+   use accuracy_ladder, only: ladder_t, judged_t, choice_t, build_axes, judge_run, choose_run, final_run, ladder_run, &
+      time_partner, cross_needed, done_run
+   use accuracy_report, only: accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, report_terminal
    use model_comparison, only: compare_models
    implicit none
    private
@@ -39,8 +38,9 @@ module accuracy_driver
    real(dp), parameter :: min_dt = 1.0e-10_dp
    !> The cap when the deck gives none, in runs of level 0 (docs/ACCURACY.md: why).
    integer, parameter :: default_cap_times = 100
-   !> Levels of each axis at the start.
-   integer, parameter :: first_levels = 3
+   !> Levels of the time and the mesh axis at the start: a third mesh level, the dearest run,
+   !> only when the two-level estimate (Roache's Fs = 3) does not meet the target.
+   integer, parameter :: first_levels(2) = [3, 2]
    !> Grading of level 0's mesh when the ladder grades it (-).
    real(dp), parameter :: ladder_grading = 1.25_dp
 
@@ -56,45 +56,41 @@ contains
       character(len=*), intent(inout) :: errmsg     !< what failed
       type(results_claim_t) :: claim
       type(launcher_t) :: la
-      type(run_t), allocatable :: runs(:)
-      type(axis_t) :: tx, mx
+      type(ladder_t) :: lad
       type(accuracy_outcome_t) :: out
       type(deck_t) :: base                          ! the deck with level 0's mesh (ladder_mesh)
       type(deck_t) :: claimed                       ! the deck, overwriting with --restart
       integer(int64) :: wall0, wall1, rate
       integer :: i, ignored
-      exit_code = 1
+      exit_code = 1;  stat = 1
       call system_clock(wall0, rate)
-      stat = 1
       if (len(opts%deck_path) == 0) errmsg = '--accuracy: give the deck as a file (its runs read it again), ' // &
          'not on standard input'
       if (deck%analysis_kind /= 'impact') errmsg = deck%source // ": &accuracy: target needs &analysis kind = 'impact'"
       if (deck%analysis_kind /= 'impact' .or. len(opts%deck_path) == 0) return
       call pass_stops_to_children()                 ! a stop ends the runs going, keeps those done
-      claimed = deck
-      claimed%overwrite = deck%overwrite .or. opts%restart
+      claimed = deck;  claimed%overwrite = deck%overwrite .or. opts%restart
       call take_dead_claim(deck%prefix // trim(own_files(1)))
       call claim_results(claimed, own_files, claim, stat, errmsg)
       if (stat /= 0) return
       do i = 3, size(own_files)                     ! a plain run's files: not the run chosen's
          call remove_file(deck%prefix // trim(own_files(i)), ignored)
       end do
-      call set_up(opts, deck, unit, base, la, runs, stat, errmsg)
-      if (stat == 0) call climb(base, la, runs, tx, mx, out, stat, errmsg)
-      if (stat == 0 .and. stop_caught() == 0) call compare_models(base, la, runs, tx, mx, out, stat, errmsg)
+      call set_up(opts, deck, unit, base, la, lad, stat, errmsg)
+      if (stat == 0) call climb(base, la, lad, out, stat, errmsg)
+      if (stat == 0 .and. stop_caught() == 0) call compare_models(base, la, lad, out%chosen, out%cmp, stat, errmsg)
       if (stat == 0 .and. stop_caught() /= 0) then
          out%status = 'stopped by signal ' // int_str(stop_caught()) // ': the results carry the errors reached; ' // &
                       'impact --restart continues the ladder'
-         out%met = .false.
-         out%stop_signal = stop_caught()
+         out%met = .false.;  out%stop_signal = stop_caught()
          out%cmp%what = ['theory    ', 'bend_twist']
          where (out%cmp%run == 0 .and. len_trim(out%cmp%note) == 0) out%cmp%note = 'the run was stopped'
       end if
       call system_clock(wall1)
       out%wall_s = real(wall1 - wall0, dp)/real(rate, dp)
-      if (stat == 0 .and. out%chosen > 0) call write_accuracy_table(deck, runs, tx, mx, out, stat, errmsg)
-      if (stat == 0 .and. out%chosen > 0) call write_accuracy_summary(deck, la, runs, out, stat, errmsg)
-      if (stat == 0 .and. out%chosen > 0) call report_terminal(unit, la, runs, out)
+      if (stat == 0 .and. out%chosen > 0) call write_accuracy_table(deck, lad, out, stat, errmsg)
+      if (stat == 0 .and. out%chosen > 0) call write_accuracy_summary(deck, la, lad, out, stat, errmsg)
+      if (stat == 0 .and. out%chosen > 0) call report_terminal(unit, la, lad, out)
       call release_results(claim, discard=stat /= 0 .or. out%chosen == 0)
       if (stat == 0) exit_code = merge(0, exit_not_met, out%met)
       if (stop_caught() /= 0) exit_code = 128 + stop_caught()
@@ -117,13 +113,13 @@ contains
    end subroutine take_dead_claim
 
    !> The launcher, the scene of the deck's model, level 0's mesh and the first levels planned.
-   subroutine set_up(opts, deck, unit, base, la, runs, stat, errmsg)
+   subroutine set_up(opts, deck, unit, base, la, lad, stat, errmsg)
       type(options_t), intent(in) :: opts           !< the command line
       type(deck_t), intent(in) :: deck              !< the deck
       integer, intent(in) :: unit                   !< standard output
       type(deck_t), intent(out) :: base             !< the deck with level 0's mesh
       type(launcher_t), intent(out) :: la           !< the launcher
-      type(run_t), allocatable, intent(out) :: runs(:)   !< the runs planned
+      type(ladder_t), intent(out) :: lad            !< the ladder: the first levels planned, the finest allowed
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
       type(model_t) :: model
@@ -132,21 +128,13 @@ contains
       integer :: l
       call build_model(deck, model, stat, errmsg)
       if (stat /= 0) return
-      la%scene = model%scene
-      la%exe = program_path()
-      la%deck_path = opts%deck_path
-      la%user_settings = opts%settings
-      la%dir = deck%prefix // '_acc/'
-      la%theory = la%scene%theory
-      la%every_step = strength_given(deck)
-      la%restart = opts%restart
-      la%cpus = usable_cpus()
+      la%scene = model%scene;  la%theory = la%scene%theory;  la%exe = program_path();  la%cpus = usable_cpus()
+      la%deck_path = opts%deck_path;  la%user_settings = opts%settings;  la%restart = opts%restart
+      la%dir = deck%prefix // '_acc/';  la%every_step = strength_given(deck)
       if (deck%given(find_var('accuracy', 'max_cpu_s'))) la%cap = deck%accuracy_max_cpu_s
       if (.not. deck%given(find_var('accuracy', 'max_cpu_s'))) la%cap_times = default_cap_times
-      la%gauge = model%gauge_xy                     ! the strain at one point on every mesh
-      la%unit = unit
-      base = deck
-      la%impact_element = la%scene%element_size
+      la%gauge = model%gauge_xy;  la%unit = unit    ! the strain at one point on every mesh
+      base = deck;  la%impact_element = la%scene%element_size
       call ladder_mesh(deck, model%msh, base, la%impact_element, why)
       la%n0 = base%nx*base%ny
       call make_directories(la%dir(:len(la%dir) - 1), stat, iomsg)
@@ -160,11 +148,17 @@ contains
          cap // ', ' // int_str(la%cpus) // ' runs at a time; theory ' // &
          trim(la%theory) // ', domain ' // trim(la%scene%domain) // '; runs in ' // la%dir
       if (len(why) > 0) write (unit, '(a)') 'accuracy: ' // why
-      allocate (runs(0))
-      do l = 0, first_levels - 1
-         call plan(runs, base, la, l, 0)
-         if (l > 0) call plan(runs, base, la, 0, l)
+      allocate (lad%runs(0))
+      do l = 0, maxval(first_levels) - 1
+         if (l < first_levels(1)) call plan(lad%runs, base, la, l, 0)
+         if (l > 0 .and. l < first_levels(2)) call plan(lad%runs, base, la, 0, l)
       end do
+      lad%target = deck%accuracy_target
+      lad%k_max = max_time_levels - 1
+      do while (deck%dt/2.0_dp**lad%k_max < min_dt)
+         lad%k_max = lad%k_max - 1
+      end do
+      call targeted_results(deck, lad%targeted, stat, errmsg)
    end subroutine set_up
 
    !> Level 0's mesh: the deck's, unless the deck gives no &mesh grading and its element at
@@ -205,9 +199,7 @@ contains
          end do
       end if
       impact_element = first_element(g)
-      base%nx = n(1)
-      base%ny = n(2)
-      base%grading = g
+      base%nx = n(1);  base%ny = n(2);  base%grading = g
       why = 'level 0: ' // int_str(base%nx) // ' x ' // int_str(base%ny) // ' graded by ' // &
          real_short(g) // ' (the element at the impact point ' // &
          real_short(maxval(impact_element)*1.0e3_dp) // ' mm, the Hertz radius ' // real_short(a*1.0e3_dp) // &
@@ -236,8 +228,7 @@ contains
          if (runs(i)%state == state_skipped) runs(i)%state = state_planned
          return
       end if
-      r%k = k;  r%j = j
-      r%name = ladder_name(k, j)
+      r%k = k;  r%j = j;  r%name = ladder_name(k, j)
       r%role = merge('time    ', merge('mesh    ', 'combined', k == 0), j == 0)
       r%dt = deck%dt/2.0_dp**k
       r%nx = mesh_count(deck%nx, deck%accuracy_mesh_factor, j)
@@ -274,68 +265,64 @@ contains
    !> Steps 1-3: runs, estimates, chooses, refines until the target is met, the cap is reached
    !> (the candidate does not fit it, or a pass made no run after the cap turned one away) or
    !> the ladder cannot be refined.
-   subroutine climb(deck, la, runs, tx, mx, out, stat, errmsg)
+   subroutine climb(deck, la, lad, out, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
       type(launcher_t), intent(inout) :: la         !< the launcher
-      type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
-      type(axis_t), intent(out) :: tx, mx           !< the axes at the end
+      type(ladder_t), intent(inout) :: lad          !< the ladder
       type(accuracy_outcome_t), intent(out) :: out  !< the outcome
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
-      integer :: k, j, i, partner, done_before, kj(2)
+      integer :: k, j, i, done_before, kj(2)
       type(choice_t) :: c
       logical :: more, ran
       character(len=224) :: why
-      out%target = deck%accuracy_target
-      call targeted_results(deck, out%targeted, stat, errmsg)
-      if (stat /= 0) return
       do
-         done_before = count(runs%state == state_done)
-         call run_planned(runs, la, stat, errmsg)
+         done_before = count(lad%runs%state == state_done)
+         call run_planned(lad%runs, la, stat, errmsg)
          if (stat /= 0) return
-         ran = count(runs%state == state_done) > done_before
-         if (stop_caught() /= 0 .and. runs(1)%state /= state_done) return   ! out%chosen 0: nothing to give
-         i = findloc(runs%state, state_failed, dim=1)
+         ran = count(lad%runs%state == state_done) > done_before
+         if (stop_caught() /= 0 .and. lad%runs(1)%state /= state_done) return   ! out%chosen 0: nothing to give
+         i = findloc(lad%runs%state, state_failed, dim=1)
          if (i > 0) then
             stat = 1
-            errmsg = 'accuracy: the run ' // trim(runs(i)%name) // ' (dt ' // real_short(runs(i)%dt) // ' s, mesh ' // &
-               int_str(runs(i)%nx) // ' x ' // int_str(runs(i)%ny) // ') failed, exit status ' // &
-               int_str(runs(i)%exit_code) // ': ' // trim(runs(i)%status) // '; see ' // la%dir // trim(runs(i)%name) // &
-               '.log'
+            associate (r => lad%runs(i))
+            errmsg = 'accuracy: the run ' // trim(r%name) // ' (dt ' // real_short(r%dt) // ' s, mesh ' // &
+               int_str(r%nx) // ' x ' // int_str(r%ny) // ') failed, exit status ' // int_str(r%exit_code) // ': ' // &
+               trim(r%status) // '; see ' // la%dir // trim(r%name) // '.log'
+            end associate
             return
          end if
-         if (runs(1)%state /= state_done) then
+         if (lad%runs(1)%state /= state_done) then
             stat = 1
             errmsg = 'accuracy: the first run did not finish within &accuracy max_cpu_s = ' // real_short(la%cap) // ' s'
             return
          end if
-         where (runs%state == state_done .and. runs%has(1)) runs%contact_radius = &   ! Hertz: sqrt(R (F/k)^(2/3))
-            sqrt(0.5_dp*deck%diameter*(max(runs%q(1), 0.0_dp)/deck%k)**(2.0_dp/3.0_dp))
-         out%estimated = runs(1)%has
-         out%estimated(nq) = out%estimated(nq) .and. strength_given(deck)
-         out%targeted = out%targeted .and. out%estimated
-         call build_axis(runs, axis_time, out%estimated, tx)
-         call build_axis(runs, axis_mesh, out%estimated, mx)
+         where (lad%runs%state == state_done .and. lad%runs%has(1)) lad%runs%contact_radius = &   ! Hertz: sqrt(R (F/k)^(2/3))
+            sqrt(0.5_dp*deck%diameter*(max(lad%runs%q(1), 0.0_dp)/deck%k)**(2.0_dp/3.0_dp))
+         lad%estimated = lad%runs(1)%has
+         lad%estimated(nq) = lad%estimated(nq) .and. strength_given(deck)
+         lad%targeted = lad%targeted .and. lad%estimated
+         call build_axes(lad)
          if (stop_caught() /= 0) exit
-         call say_errors(la%unit, runs, tx, mx, out)
-         c = choose_run(runs, la, tx, mx, out%target, out%targeted, can_halve_dt(deck, tx))
+         call say_errors(la%unit, lad)
+         c = choose_run(lad, la)
          k = c%k;  j = c%j
-         if (c%found .and. done_run(runs, k, j) .and. time_partner(runs, k, j) < 0 .and. &
-             .not. cross_needed(runs, k, j)) then
+         if (c%found .and. done_run(lad%runs, k, j) .and. time_partner(lad%runs, k, j) < 0 .and. &
+             .not. cross_needed(lad%runs, k, j)) then
             out%met = .true.
             out%status = 'met'
             exit
          end if
          if (c%found) then                          ! within the cap: the chosen run and its partner
-            partner = time_partner(runs, k, j)
-            call plan(runs, deck, la, k, j)
-            if (partner >= 0) call plan(runs, deck, la, partner, j)
-            if (cross_needed(runs, k, j)) call plan(runs, deck, la, 1, 1)
+            i = time_partner(lad%runs, k, j)
+            call plan(lad%runs, deck, la, k, j)
+            if (i >= 0) call plan(lad%runs, deck, la, i, j)
+            if (cross_needed(lad%runs, k, j)) call plan(lad%runs, deck, la, 1, 1)
          else if (c%beyond_cap .or. (la%cap_reached .and. .not. ran)) then
-            out%status = cap_status(runs, la, mx, c)
+            out%status = cap_status(lad, la, c)
             exit
          else
-            call refine(deck, la, runs, tx, mx, out, more, why)
+            call refine(deck, la, lad, more, why)
             if (.not. more) then
                out%status = 'not met: ' // why
                exit
@@ -343,59 +330,52 @@ contains
          end if
       end do
       if (.not. out%met) then
-         kj = final_run(runs, tx, mx, out%target, out%targeted)
+         kj = final_run(lad)
          k = kj(1);  j = kj(2)
       end if
-      out%chosen = ladder_run(runs, k, j)
-      out%jd = judge_run(runs, tx, mx, k, j, out%target, out%targeted)
+      out%chosen = ladder_run(lad%runs, k, j)
+      out%jd = judge_run(lad, k, j)
    end subroutine climb
 
    !> One line of progress: the relative errors targeted of the best run so far.
-   subroutine say_errors(unit, runs, tx, mx, out)
+   subroutine say_errors(unit, lad)
       integer, intent(in) :: unit                   !< standard output
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      type(axis_t), intent(in) :: tx, mx            !< the axes
-      type(accuracy_outcome_t), intent(in) :: out   !< the target, the results targeted
+      type(ladder_t), intent(in) :: lad             !< the ladder
       type(judged_t) :: jd
       character(len=:), allocatable :: line
       real(dp) :: scale(nq)
       integer :: kj(2), iq
-      kj = final_run(runs, tx, mx, out%target, out%targeted)
-      jd = judge_run(runs, tx, mx, kj(1), kj(2), out%target, out%targeted)
-      scale = error_scale(jd%value)
+      kj = final_run(lad)
+      jd = judge_run(lad, kj(1), kj(2))
+      scale = max(error_scale(jd%value), tiny(1.0_dp))
       line = 'accuracy: errors so far, at ' // ladder_name(kj(1), kj(2)) // ':'
       do iq = 1, nq
-         if (.not. out%targeted(iq)) cycle
-         line = line // ' ' // trim(result_keys(iq)) // ' ' // real_short(100.0_dp*jd%err(iq)/max(scale(iq), &
-                tiny(1.0_dp))) // ' %'
+         if (lad%targeted(iq)) line = line // ' ' // trim(result_keys(iq)) // ' ' // &
+            real_short(100.0_dp*jd%err(iq)/scale(iq)) // ' %'
       end do
-      write (unit, '(a)') line // ' (target ' // real_short(100.0_dp*out%target) // ' %)'
+      write (unit, '(a)') line // ' (target ' // real_short(100.0_dp*lad%target) // ' %)'
       flush (unit)
    end subroutine say_errors
 
    !> The status at the cap: the run that would come next (the candidate beyond the cap, else the
    !> cheapest the cap turned away), its predicted cpu time and the total it would bring.
-   function cap_status(runs, la, mx, choice) result(status)
-      type(run_t), intent(in) :: runs(:)            !< the runs
+   function cap_status(lad, la, choice) result(status)
+      type(ladder_t), intent(in) :: lad             !< the ladder
       type(launcher_t), intent(in) :: la            !< the launcher (cost model, cap, spent)
-      type(axis_t), intent(in) :: mx                !< the mesh axis
       type(choice_t), intent(in) :: choice          !< choose_run's (beyond the cap: the candidate, its cost)
-      character(len=:), allocatable :: status
-      character(len=:), allocatable :: what
-      real(dp) :: c, cost(size(runs))
+      character(len=:), allocatable :: status, what
+      real(dp) :: c, cost(size(lad%runs))
       integer :: pick, partner, kj(2)
       kj = choice%beyond_kj
+      associate (runs => lad%runs)
       if (choice%beyond_cap .and. kj(2) >= 0) then
          c = choice%beyond_cost
          what = ''
          if (.not. done_run(runs, kj(1), kj(2))) what = level_text(kj(1))
          partner = time_partner(runs, kj(1), kj(2))
-         if (partner >= 0) then
-            if (len(what) > 0) what = what // ' and '
-            what = what // level_text(partner)
-         end if
-         what = what // ' on the mesh ' // int_str(runs(mx%run(kj(2) + 1))%nx) // ' x ' // &
-                int_str(runs(mx%run(kj(2) + 1))%ny)
+         if (partner >= 0 .and. len(what) > 0) what = what // ' and '
+         if (partner >= 0) what = what // level_text(partner)
+         pick = lad%mx%run(kj(2) + 1)
       else
          cost = merge(predicted_run_cost(runs, la), huge(1.0_dp), runs%state == state_skipped)
          pick = minloc(cost, mask=cost < huge(1.0_dp), dim=1)
@@ -405,18 +385,19 @@ contains
             return
          end if
          c = cost(pick)
-         what = trim(runs(pick)%name) // ' (dt ' // real_short(runs(pick)%dt*1.0e6_dp) // ' us) on the mesh ' // &
-                int_str(runs(pick)%nx) // ' x ' // int_str(runs(pick)%ny)
+         what = trim(runs(pick)%name) // ' (dt ' // real_short(runs(pick)%dt*1.0e6_dp) // ' us)'
       end if
-      status = 'cap reached: next, ' // what // ', predicted at ' // real_short(c) // ' s of cpu, ' // &
+      status = 'cap reached: next, ' // what // ' on the mesh ' // int_str(runs(pick)%nx) // ' x ' // &
+               int_str(runs(pick)%ny) // ', predicted at ' // real_short(c) // ' s of cpu, ' // &
                real_short(la%spent + c) // ' s in all, past &accuracy max_cpu_s = ' // real_short(la%cap) // &
                ' s; the results carry the errors reached'
+      end associate
    contains
       !> 't<k>_m<j> (dt ... us)': time level k on the candidate's mesh.
       function level_text(k) result(text)
          integer, intent(in) :: k                  !< time level
          character(len=:), allocatable :: text
-         text = ladder_name(k, kj(2)) // ' (dt ' // real_short(runs(1)%dt/2.0_dp**k*1.0e6_dp) // ' us)'
+         text = ladder_name(k, kj(2)) // ' (dt ' // real_short(lad%runs(1)%dt/2.0_dp**k*1.0e6_dp) // ' us)'
       end function level_text
    end function cap_status
 
@@ -434,15 +415,12 @@ contains
       do cut = 1, len(rest)
          if (rest(cut:cut) == ',' .or. rest(cut:cut) == '+') rest(cut:cut) = ' '
       end do
-      targeted = trim(adjustl(rest)) == 'all'
-      if (trim(adjustl(rest)) == 'default' .or. len_trim(rest) == 0) &
-         targeted = [.true., .true., .true., .false., .false., .true.]
+      rest = trim(adjustl(rest))
+      targeted = rest == 'all'
+      if (rest == 'default' .or. len(rest) == 0) targeted = [.true., .true., .true., .false., .false., .true.]
       if (any(targeted)) return
-      do
-         rest = trim(adjustl(rest))
-         if (len(rest) == 0) exit
-         cut = index(rest, ' ')
-         if (cut == 0) cut = len(rest) + 1
+      do while (len(rest) > 0)
+         cut = index(rest // ' ', ' ')
          do iq = nq, 1, -1
             if (trim(result_keys(iq)) == rest(:cut - 1)) exit
          end do
@@ -453,63 +431,49 @@ contains
             return
          end if
          targeted(iq) = .true.
-         rest = rest(cut:)
+         rest = trim(adjustl(rest(cut:)))
       end do
    end subroutine targeted_results
 
    !> No run meets the target: refines the axis whose part of the finest run's error is over half
    !> the target (else the larger part); not the mesh for a time read off dt0's steps (why).
-   subroutine refine(deck, la, runs, tx, mx, out, more, why)
+   subroutine refine(deck, la, lad, more, why)
       type(deck_t), intent(in) :: deck             !< the deck
       type(launcher_t), intent(in) :: la           !< the launcher (the element at the impact point)
-      type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
-      type(axis_t), intent(in) :: tx, mx           !< the axes
-      type(accuracy_outcome_t), intent(in) :: out  !< the target, the results estimated
+      type(ladder_t), intent(inout) :: lad         !< the ladder
       logical, intent(out) :: more                 !< a level was planned
       character(len=*), intent(out) :: why         !< when not: why
       type(judged_t) :: jd
       logical :: time, mesh, can_time, can_mesh, step_bound(nq)
-      real(dp) :: allowed, reference(nq)
+      real(dp) :: allowed(nq)
       integer :: iq
-      jd = judge_run(runs, tx, mx, tx%levels - 1, mx%levels - 1, out%target, out%targeted)
-      reference = error_scale(jd%value)
+      jd = judge_run(lad, lad%tx%levels - 1, lad%mx%levels - 1)
+      allowed = lad%target*error_scale(jd%value)
       time = .false.;  mesh = .false.;  step_bound = .false.
       why = 'dt and the mesh cannot be refined further (the ladder''s limits)'
       do iq = 1, nq
-         if (.not. out%targeted(iq)) cycle
-         allowed = out%target*reference(iq)
-         if (jd%err(iq) <= allowed) cycle
-         if (jd%err_time(iq) > 0.5_dp*allowed) time = .true.
-         step_bound(iq) = mx%finest(iq)%floor > 0.5_dp*allowed
-         if (jd%err_mesh(iq) > 0.5_dp*allowed .and. .not. step_bound(iq)) mesh = .true.
-         if (jd%err_time(iq) <= 0.5_dp*allowed .and. jd%err_mesh(iq) <= 0.5_dp*allowed) then
-            time = time .or. jd%err_time(iq) >= jd%err_mesh(iq)
-            mesh = mesh .or. (jd%err_mesh(iq) > jd%err_time(iq) .and. .not. step_bound(iq))
-         end if
+         if (.not. lad%targeted(iq) .or. jd%err(iq) <= allowed(iq)) cycle
+         associate (et => jd%err_time(iq), em => jd%err_mesh(iq), half => 0.5_dp*allowed(iq))
+         step_bound(iq) = lad%mx%finest(iq)%floor > half
+         time = time .or. et > half .or. (et <= half .and. em <= half .and. et >= em)
+         mesh = mesh .or. (.not. step_bound(iq) .and. (em > half .or. (et <= half .and. em <= half .and. em > et)))
+         end associate
       end do
-      can_time = can_halve_dt(deck, tx)
-      can_mesh = mx%levels < max_mesh_levels .and. &
-                 max(mesh_count(deck%nx, deck%accuracy_mesh_factor, mx%levels), &
-                     mesh_count(deck%ny, deck%accuracy_mesh_factor, mx%levels)) <= max_elements
+      can_time = lad%tx%levels <= lad%k_max
+      can_mesh = lad%mx%levels < max_mesh_levels .and. max(mesh_count(deck%nx, deck%accuracy_mesh_factor, &
+                 lad%mx%levels), mesh_count(deck%ny, deck%accuracy_mesh_factor, lad%mx%levels)) <= max_elements
       if (time .and. .not. can_time) then
          time = .false.;  mesh = can_mesh
       end if
       if (mesh .and. .not. can_mesh) then
          mesh = .false.;  time = can_time .and. (time .or. .not. mesh)
       end if
-      if (time) call plan(runs, deck, la, tx%levels, 0)
-      if (mesh) call plan(runs, deck, la, 0, mx%levels)
+      if (time) call plan(lad%runs, deck, la, lad%tx%levels, 0)
+      if (mesh) call plan(lad%runs, deck, la, 0, lad%mx%levels)
       more = time .or. mesh
       if (.not. more .and. any(step_bound)) why = trim(result_keys(findloc(step_bound, .true., dim=1))) // &
          ' is read off the time steps: the meshes, all run at the deck''s dt = ' // real_short(deck%dt*1.0e6_dp) // &
          ' us, cannot show it to the target; give a smaller dt in the deck'
    end subroutine refine
-
-   !> True when the time axis may have one more level.
-   pure logical function can_halve_dt(deck, tx)
-      type(deck_t), intent(in) :: deck             !< the deck (dt0)
-      type(axis_t), intent(in) :: tx               !< the time axis
-      can_halve_dt = tx%levels < max_time_levels .and. deck%dt/2.0_dp**tx%levels >= min_dt
-   end function can_halve_dt
 
 end module accuracy_driver

@@ -1,9 +1,10 @@
-!> The ladder of an accuracy run: the time axis (dt0/2^k on mesh 0, runs (k, 0)), the mesh
-!> axis (nx, ny times mesh_factor^j at dt0, runs (0, j)) and the runs that combine them.
-!> Each axis gives the error of every level (error_estimate); the error of a run (k, j) is
-!> its time level's plus its mesh level's plus the interaction |q(k,j) - q(k,0) - q(0,j) +
-!> q(0,0)|, no less than the largest measured; on a finer mesh its time error is measured
-!> there too (time_on_mesh). choose_run gives the cheapest run within the target and the cap.
+!> The ladder of an accuracy run (docs/ACCURACY.md, how it decides): the time axis (dt0/2^k on
+!> mesh 0, runs (k, 0)), the mesh axis (nx, ny times mesh_factor^j at dt0, runs (0, j)) and the
+!> runs that combine them. Each axis gives the error of every level (error_estimate); the error
+!> of a run (k, j) is its time level's plus its mesh level's plus the interaction
+!> |q(k,j) - q(k,0) - q(0,j) + q(0,0)|, no less than the largest measured; on a finer mesh its
+!> time error is measured there too (time_on_mesh). choose_run: the cheapest run within the
+!> target and the cap.
 module accuracy_ladder
    use kinds, only: dp
    use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_grid_index, &
@@ -12,8 +13,8 @@ module accuracy_ladder
       error_scale, is_ladder, maxima_t
    implicit none
    private
-   public :: axis_t, judged_t, choice_t, build_axis, judge_run, choose_run, final_run, ladder_run, time_partner, &
-             cross_needed, done_run, peak_spread, axis_time, axis_mesh
+   public :: axis_t, judged_t, choice_t, ladder_t, build_axes, judge_run, choose_run, final_run, ladder_run, &
+             time_partner, cross_needed, done_run, peak_spread
 
    !> The two axes.
    integer, parameter :: axis_time = 1, axis_mesh = 2
@@ -31,6 +32,16 @@ module accuracy_ladder
       real(dp), allocatable :: err(:, :)          !< (level, result): the error of each level
       type(estimate_t) :: finest(nq)              !< the estimate of the finest level
    end type axis_t
+
+   !> The runs, their axes and what they must meet.
+   type :: ladder_t
+      type(run_t), allocatable :: runs(:)         !< the ladder's runs and the model variants
+      type(axis_t) :: tx, mx                      !< the time and mesh axes (build_axes)
+      real(dp) :: target = 0.0_dp                 !< the relative error asked for
+      logical :: estimated(nq) = .false.          !< the results estimated
+      logical :: targeted(nq) = .false.           !< of which those that must meet the target
+      integer :: k_max = 10                       !< the finest time level allowed
+   end type ladder_t
 
    !> The run choose_run chose, and the cheapest the cap turned away.
    type :: choice_t
@@ -67,24 +78,39 @@ contains
       i = 0
    end function ladder_run
 
-   !> The axis (axis_time or axis_mesh) from the runs done, the error of each level.
-   subroutine build_axis(runs, which, active, ax, mesh, first)
+   !> True when the ladder run (k, j) is done.
+   pure logical function done_run(runs, k, j)
+      type(run_t), intent(in) :: runs(:)          !< the runs
+      integer, intent(in) :: k, j                 !< its levels
+      integer :: i
+      done_run = .false.
+      i = ladder_run(runs, k, j)
+      if (i > 0) done_run = runs(i)%state == state_done
+   end function done_run
+
+   !> Both axes of the ladder from its runs done.
+   subroutine build_axes(lad)
+      type(ladder_t), intent(inout) :: lad        !< the ladder
+      call build_axis(lad%runs, axis_time, lad%estimated, lad%tx, 0, 0)
+      call build_axis(lad%runs, axis_mesh, lad%estimated, lad%mx, 0, 0)
+   end subroutine build_axes
+
+   !> The axis (axis_time or axis_mesh) from the runs done, the error of each level; a time axis
+   !> on mesh level j0 from time level k0.
+   subroutine build_axis(runs, which, active, ax, j0, k0)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: which                !< axis_time or axis_mesh
       logical, intent(in) :: active(nq)           !< the results estimated
       type(axis_t), intent(out) :: ax             !< the axis
-      integer, intent(in), optional :: mesh       !< the time axis on this mesh level (0 if absent)
-      integer, intent(in), optional :: first      !< the time axis from this time level (0 if absent)
-      integer :: l, i, iq, j0, k0
+      integer, intent(in) :: j0, k0               !< a time axis's mesh level and first time level
+      integer :: l, i, iq, k, j
       real(dp) :: floor, tail
-      j0 = 0;  k0 = 0
-      if (present(mesh)) j0 = mesh
-      if (present(first)) k0 = first
       allocate (ax%run(0), ax%h(0))
       l = 0
       do
-         if (.not. done_run(runs, merge(k0 + l, 0, which == axis_time), merge(j0, l, which == axis_time))) exit
-         i = ladder_run(runs, merge(k0 + l, 0, which == axis_time), merge(j0, l, which == axis_time))
+         k = merge(k0 + l, 0, which == axis_time);  j = merge(j0, l, which == axis_time)
+         if (.not. done_run(runs, k, j)) exit
+         i = ladder_run(runs, k, j)
          ax%run = [ax%run, i]
          ax%h = [ax%h, merge(runs(i)%dt, 1.0_dp/sqrt(real(runs(i)%nx, dp)*real(runs(i)%ny, dp)), which == axis_time)]
          l = l + 1
@@ -94,111 +120,102 @@ contains
       if (l == 0) return
       do iq = 1, nq
          if (.not. active(iq)) cycle
+         associate (q => runs(ax%run)%q(iq), e => ax%finest(iq))
          floor = 0.0_dp
-         if (time_results(iq) .and. on_steps(runs(ax%run)%q(iq), runs(ax%run)%dt)) floor = runs(ax%run(l))%dt*1.0e6_dp
-         ax%finest(iq) = ladder_estimate(ax%h, runs(ax%run)%q(iq), order_theory(which), order_low(which), &
-                                         order_high(which), floor)
+         if (time_results(iq) .and. on_steps(q, runs(ax%run)%dt)) floor = runs(ax%run(l))%dt*1.0e6_dp
+         e = ladder_estimate(ax%h, q, order_theory(which), order_low(which), order_high(which), floor)
          if (which == axis_mesh) then
-            tail = log_tail(ax%h, runs(ax%run)%q(iq), runs(ax%run(l))%h_impact/runs(ax%run(l))%contact_radius)
-            if (tail > 0.0_dp .and. (tail + floor > ax%finest(iq)%error .or. &
-                (ax%finest(iq)%order >= 0.0_dp .and. ax%finest(iq)%order < order_low(which)))) then
-               ax%finest(iq)%error = max(tail, safe_factor*last_difference(runs(ax%run)%q(iq))) + floor
-               ax%finest(iq)%how = 'contact disc unresolved: ln tail'
+            tail = log_tail(ax%h, q, runs(ax%run(l))%h_impact/runs(ax%run(l))%contact_radius)
+            if (tail > 0.0_dp .and. (tail + floor > e%error .or. (e%order >= 0.0_dp .and. e%order < order_low(which)))) &
+               then
+               e%error = max(tail, safe_factor*last_difference(q)) + floor
+               e%how = 'contact disc unresolved: ln tail'
             end if
          end if
-         ax%err(:, iq) = [(level_error(runs(ax%run)%q(iq), i, ax%finest(iq)%error), i = 1, l)]
+         ax%err(:, iq) = [(level_error(q, i, e%error), i = 1, l)]
+         end associate
       end do
    end subroutine build_axis
 
    !> True when every time (us) is a whole number of its run's step (s).
    pure logical function on_steps(t_us, dt)
-      real(dp), intent(in) :: t_us(:)             !< the times (us)
-      real(dp), intent(in) :: dt(:)               !< the steps of their runs (s)
+      real(dp), intent(in) :: t_us(:), dt(:)      !< the times (us), the steps of their runs (s)
       real(dp) :: steps(size(t_us))
       steps = t_us/(dt*1.0e6_dp)
       on_steps = all(abs(steps - anint(steps)) <= 1.0e-6_dp*max(1.0_dp, abs(steps)))
    end function on_steps
 
    !> The results of run (k, j) and their errors, the interaction no less than the largest
-   !> measured (docs/PERFORMANCE.md); a run not done predicted as q(k,0) + q(0,j) - q(0,0), its
+   !> measured (docs/ACCURACY.md); a run not done predicted as q(k,0) + q(0,j) - q(0,0), its
    !> time error no less than its mesh's at 2 dt over 2^2; k = tx%levels: judge_next_time.
-   function judge_run(runs, tx, mx, k, j, target, active) result(jd)
-      type(run_t), intent(in) :: runs(:)          !< the runs
-      type(axis_t), intent(in) :: tx, mx          !< the time and mesh axes
+   function judge_run(lad, k, j) result(jd)
+      type(ladder_t), intent(in) :: lad           !< the ladder, its axes built
       integer, intent(in) :: k, j                 !< the levels (k <= tx%levels, j < mx%levels; j = 0 for k = tx%levels)
-      real(dp), intent(in) :: target              !< the relative error asked for
-      logical, intent(in) :: active(nq)           !< the results estimated
       type(judged_t) :: jd
-      integer :: i, i0, ik, ij, im
+      integer :: i, ik, ij, i0
       real(dp) :: below(nq)
       logical :: measured, known, two
-      if (k >= tx%levels) then                     ! the next time level, not yet planned
-         jd = judge_next_time(runs, tx, mx, target, active)
+      if (k >= lad%tx%levels) then                 ! the next time level, not yet planned
+         jd = judge_next_time(lad)
          return
       end if
-      i0 = tx%run(1);  ik = tx%run(k + 1);  ij = mx%run(j + 1)
+      associate (runs => lad%runs)
+      i0 = lad%tx%run(1);  ik = lad%tx%run(k + 1);  ij = lad%mx%run(j + 1)
       i = merge(ladder_run(runs, k, j), 0, done_run(runs, k, j))
+      jd%err_cross = largest_cross(lad)
+      jd%value = runs(ik)%q + runs(ij)%q - runs(i0)%q
       if (i > 0) then
          jd%value = runs(i)%q
-         jd%err_cross = max(abs(runs(i)%q - runs(ik)%q - runs(ij)%q + runs(i0)%q), largest_cross(runs, tx, mx))
-      else
-         jd%value = runs(ik)%q + runs(ij)%q - runs(i0)%q
-         jd%err_cross = largest_cross(runs, tx, mx)
+         jd%err_cross = max(abs(runs(i)%q - runs(ik)%q - runs(ij)%q + runs(i0)%q), jd%err_cross)
       end if
-      jd%err_time = tx%err(k + 1, :)
-      jd%err_mesh = mx%err(j + 1, :)
+      jd%err_time = lad%tx%err(k + 1, :);  jd%err_mesh = lad%mx%err(j + 1, :)
       measured = .true.
-      if (j > 0) call time_on_mesh(runs, k, j, active, tx%finest%asymptotic, jd%err_time, measured, jd%two_levels)
+      if (j > 0) call time_on_mesh(lad, k, j, jd%err_time, measured, jd%two_levels)
       if (i == 0 .and. j > 0 .and. k > 0) then     ! a run to come: its mesh's time error at dt x 2, the order's share
          below = 0.0_dp
-         call time_on_mesh(runs, k - 1, j, active, tx%finest%asymptotic, below, known, two)
+         call time_on_mesh(lad, k - 1, j, below, known, two)
          if (known) jd%err_time = max(jd%err_time, below/2.0_dp**order_theory(axis_time))
       end if
-      if (i == 0) measured = .true.                ! a run to come: predicted, judged again when done
-      im = merge(i, ij, i > 0)                     ! the run whose maxima: itself, or for one to come its mesh's
-      call weigh(jd, runs(im), target, active, measured)
+      ! a run to come: predicted, judged again when done; its maxima its mesh's
+      call weigh(jd, runs(merge(i, ij, i > 0)), lad, measured .or. i == 0)
+      end associate
    end function judge_run
 
    !> The next time level on mesh 0 before it is planned: a result converging at an order p
    !> no faster than its range continued by p (continued_value), its error the axis's rule with
    !> that level added; any other result the finest level's (a safe bound predicts no gain).
-   function judge_next_time(runs, tx, mx, target, active) result(jd)
-      type(run_t), intent(in) :: runs(:)          !< the runs
-      type(axis_t), intent(in) :: tx, mx          !< the time and mesh axes (tx%levels >= 1)
-      real(dp), intent(in) :: target              !< the relative error asked for
-      logical, intent(in) :: active(nq)           !< the results estimated
+   function judge_next_time(lad) result(jd)
+      type(ladder_t), intent(in) :: lad           !< the ladder (tx%levels >= 1)
       type(judged_t) :: jd
       type(estimate_t) :: next
-      real(dp) :: h(tx%levels + 1), q(tx%levels + 1), p
+      real(dp) :: h(lad%tx%levels + 1), q(lad%tx%levels + 1), p
       integer :: n, iq
+      associate (tx => lad%tx, runs => lad%runs)
       n = tx%levels
-      jd%value = runs(tx%run(n))%q
-      jd%err_time = tx%finest%error
+      jd%value = runs(tx%run(n))%q;  jd%err_time = tx%finest%error
       h(:n) = tx%h;  h(n + 1) = tx%h(n)/2.0_dp
       do iq = 1, nq
          p = tx%finest(iq)%order
-         if (.not. active(iq) .or. p <= 0.0_dp .or. p > order_high(axis_time)) cycle
+         if (.not. lad%targeted(iq) .or. p <= 0.0_dp .or. p > order_high(axis_time)) cycle
          q(:n) = runs(tx%run)%q(iq)
          q(n + 1) = continued_value(h(n - 1:n + 1), q(n - 1:n), p)
          next = ladder_estimate(h, q, order_theory(axis_time), order_low(axis_time), order_high(axis_time), &
                                 tx%finest(iq)%floor/2.0_dp)
-         jd%value(iq) = q(n + 1)
-         jd%err_time(iq) = next%error
+         jd%value(iq) = q(n + 1);  jd%err_time(iq) = next%error
       end do
-      jd%err_mesh = mx%err(1, :)
-      jd%err_cross = largest_cross(runs, tx, mx)
-      call weigh(jd, runs(tx%run(n)), target, active, .true.)
+      jd%err_mesh = lad%mx%err(1, :);  jd%err_cross = largest_cross(lad)
+      call weigh(jd, runs(tx%run(n)), lad, .true.)
+      end associate
    end function judge_next_time
 
    !> A judgement's sum, the spread of the maxima added to the time of the peak, the worst ratio
    !> of error to target and whether it meets the target (measured: its time error on its mesh).
-   pure subroutine weigh(jd, maxima_run, target, active, measured)
+   pure subroutine weigh(jd, maxima_run, lad, measured)
       type(judged_t), intent(inout) :: jd         !< the judgement, its parts set
       type(run_t), intent(in) :: maxima_run       !< the run whose maxima count
-      real(dp), intent(in) :: target              !< the relative error asked for
-      logical, intent(in) :: active(nq)           !< the results estimated
+      type(ladder_t), intent(in) :: lad           !< the ladder (the target, the results targeted)
       logical, intent(in) :: measured             !< the time error measured on its mesh
-      real(dp) :: scale, reference(nq)
+      real(dp) :: scale(nq)
       integer :: iq
       jd%err = jd%err_time + jd%err_mesh + jd%err_cross
       if (jd%err(iq_force) < huge(1.0_dp) .and. maxima_run%has(iq_peak_time)) then
@@ -206,19 +223,14 @@ contains
                                                    jd%value(iq_force), jd%err(iq_force))
          jd%err(iq_peak_time) = jd%err(iq_peak_time) + jd%err_maxima(iq_peak_time)
       end if
+      scale = lad%target*error_scale(jd%value)
       jd%worst = 0.0_dp
-      reference = error_scale(jd%value)
       do iq = 1, nq
-         if (.not. active(iq)) cycle
-         scale = target*reference(iq)
-         if (scale > 0.0_dp) then
-            jd%worst = max(jd%worst, jd%err(iq)/scale)
-         else if (jd%err(iq) > 0.0_dp) then
-            jd%worst = huge(1.0_dp)
-         end if
+         if (.not. lad%targeted(iq)) cycle
+         if (scale(iq) > 0.0_dp) jd%worst = max(jd%worst, jd%err(iq)/scale(iq))
+         if (scale(iq) <= 0.0_dp .and. jd%err(iq) > 0.0_dp) jd%worst = huge(1.0_dp)
       end do
-      jd%meets = jd%worst <= 1.0_dp .and. measured
-      jd%time_measured = measured
+      jd%meets = jd%worst <= 1.0_dp .and. measured;  jd%time_measured = measured
    end subroutine weigh
 
    !> The error of the time of the peak from the choice of the maximum: the largest |t_i - t_peak|
@@ -226,8 +238,7 @@ contains
    pure real(dp) function peak_spread(mx, t_peak, f_peak, e_force) result(spread)
       type(maxima_t), intent(in) :: mx            !< the run's maxima
       real(dp), intent(in) :: t_peak              !< the time of the peak (us)
-      real(dp), intent(in) :: f_peak              !< the peak force (N)
-      real(dp), intent(in) :: e_force             !< its error (N)
+      real(dp), intent(in) :: f_peak, e_force     !< the peak force and its error (N)
       integer :: i, top
       spread = 0.0_dp
       if (.not. allocated(mx%f_n)) return
@@ -240,11 +251,9 @@ contains
 
    !> The time error of run (k, j), j > 0, from the time levels done on mesh j next to k (at
    !> least two), no less than mesh 0's; two levels in the asymptotic range: two_grid_index.
-   subroutine time_on_mesh(runs, k, j, active, asymptotic, err_time, measured, two)
-      type(run_t), intent(in) :: runs(:)          !< the runs
+   subroutine time_on_mesh(lad, k, j, err_time, measured, two)
+      type(ladder_t), intent(in) :: lad           !< the ladder
       integer, intent(in) :: k, j                 !< the run's levels
-      logical, intent(in) :: active(nq)           !< the results estimated
-      logical, intent(in) :: asymptotic(nq)       !< mesh 0's time axis in its asymptotic range, by result
       real(dp), intent(inout) :: err_time(nq)     !< mesh 0's time error in; the larger out
       logical, intent(out) :: measured            !< a neighbouring time level done on mesh j
       logical, intent(out) :: two                 !< measured from two levels only
@@ -253,19 +262,20 @@ contains
       integer :: iq, k0
       k0 = k
       do while (k0 > 0)
-         if (.not. done_run(runs, k0 - 1, j)) exit
+         if (.not. done_run(lad%runs, k0 - 1, j)) exit
          k0 = k0 - 1
       end do
-      call build_axis(runs, axis_time, active, ax, mesh=j, first=k0)
-      measured = ax%levels >= 2 .and. k - k0 < ax%levels
-      two = measured .and. ax%levels == 2
+      call build_axis(lad%runs, axis_time, lad%targeted, ax, j, k0)
+      measured = ax%levels >= 2 .and. k - k0 < ax%levels;  two = measured .and. ax%levels == 2
       if (.not. measured) return
       do iq = 1, nq
-         if (.not. active(iq)) cycle
+         if (.not. lad%targeted(iq)) cycle
+         associate (q => lad%runs(ax%run)%q(iq))
          finest = ax%finest(iq)%error
-         if (ax%levels == 2 .and. asymptotic(iq)) finest = two_grid_index(ax%h, runs(ax%run)%q(iq), &
-            order_theory(axis_time)) + ax%finest(iq)%floor
-         err_time(iq) = max(err_time(iq), level_error(runs(ax%run)%q(iq), k - k0 + 1, finest))
+         if (two .and. lad%tx%finest(iq)%asymptotic) &
+            finest = two_grid_index(ax%h, q, order_theory(axis_time)) + ax%finest(iq)%floor
+         err_time(iq) = max(err_time(iq), level_error(q, k - k0 + 1, finest))
+         end associate
       end do
    end subroutine time_on_mesh
 
@@ -286,55 +296,40 @@ contains
       cross_needed = k > 0 .and. j == 0 .and. .not. any(runs%state == state_done .and. runs%role == 'combined')
    end function cross_needed
 
-   !> True when the ladder run (k, j) is done.
-   pure logical function done_run(runs, k, j)
-      type(run_t), intent(in) :: runs(:)          !< the runs
-      integer, intent(in) :: k, j                 !< its levels
-      integer :: i
-      i = ladder_run(runs, k, j)
-      done_run = .false.
-      if (i > 0) done_run = runs(i)%state == state_done
-   end function done_run
-
    !> The largest interaction of the combined runs done (0 when there is none).
-   function largest_cross(runs, tx, mx) result(c)
-      type(run_t), intent(in) :: runs(:)          !< the runs
-      type(axis_t), intent(in) :: tx, mx          !< the axes
+   pure function largest_cross(lad) result(c)
+      type(ladder_t), intent(in) :: lad           !< the ladder
       real(dp) :: c(nq)
       integer :: i
       c = 0.0_dp
+      associate (runs => lad%runs, tx => lad%tx, mx => lad%mx)
       do i = 1, size(runs)
          if (runs(i)%state /= state_done .or. runs(i)%role /= 'combined') cycle
          if (runs(i)%k >= tx%levels .or. runs(i)%j >= mx%levels) cycle
-         c = max(c, abs(runs(i)%q - runs(tx%run(runs(i)%k + 1))%q - runs(mx%run(runs(i)%j + 1))%q &
-                        + runs(tx%run(1))%q))
+         c = max(c, abs(runs(i)%q - runs(tx%run(runs(i)%k + 1))%q - runs(mx%run(runs(i)%j + 1))%q + runs(tx%run(1))%q))
       end do
+      end associate
    end function largest_cross
 
    !> The cheapest run (k, j) that meets the target: its cost the runs still to make for it,
-   !> its time partner and the run (1, 1) while cross_needed; with more_time the next time level
-   !> too. One past the cap is not taken (beyond_cap); not found: the done run with the least
-   !> worst ratio.
-   function choose_run(runs, la, tx, mx, target, active, more_time) result(c)
-      type(run_t), intent(in) :: runs(:)          !< the runs
+   !> its time partner and the run (1, 1) while cross_needed; the next time level too while
+   !> k_max allows. One past the cap is not taken (beyond_cap); not found: the done run with
+   !> the least worst ratio.
+   function choose_run(lad, la) result(c)
+      type(ladder_t), intent(in) :: lad           !< the ladder, its axes built
       type(launcher_t), intent(in) :: la          !< the launcher (its cost model, the cap, the cpu time spent)
-      type(axis_t), intent(in) :: tx, mx          !< the axes
-      real(dp), intent(in) :: target              !< the relative error asked for
-      logical, intent(in) :: active(nq)           !< the results estimated
-      logical, intent(in) :: more_time            !< the next time level may be planned
       type(choice_t) :: c
       type(judged_t) :: jd
       real(dp) :: cost, best_cost, best_worst
       integer :: kk, jj, p
       logical :: done
       best_cost = huge(1.0_dp);  best_worst = huge(1.0_dp)
-      do kk = 0, merge(tx%levels, tx%levels - 1, more_time)
+      associate (runs => lad%runs, tx => lad%tx, mx => lad%mx)
+      do kk = 0, merge(tx%levels, tx%levels - 1, tx%levels <= lad%k_max)
          do jj = 0, merge(0, mx%levels - 1, kk == tx%levels)
-            jd = judge_run(runs, tx, mx, kk, jj, target, active)
-            done = done_run(runs, kk, jj)
-            cost = 0.0_dp
-            if (.not. done) cost = run_cost(kk, jj)
-            p = time_partner(runs, kk, jj)
+            jd = judge_run(lad, kk, jj)
+            done = done_run(runs, kk, jj);  p = time_partner(runs, kk, jj)
+            cost = merge(0.0_dp, run_cost(kk, jj), done)
             if (p >= 0) then
                if (.not. done_run(runs, p, jj)) cost = cost + run_cost(p, jj)
             end if
@@ -352,34 +347,32 @@ contains
             end if
          end do
       end do
+      end associate
       c%beyond_cap = c%beyond_kj(1) >= 0 .and. .not. c%found
    contains
-      !> The predicted cost of the run (k, j).
+      !> The predicted cost of the run (k, j): what the cost model reads, k, nx, ny.
       real(dp) function run_cost(kr, jr)
          integer, intent(in) :: kr, jr            !< its levels
-         type(run_t) :: probe                     ! what the cost model reads: k, nx, ny (a ladder run's domain)
+         type(run_t) :: probe
          probe%k = kr
-         probe%nx = runs(mx%run(jr + 1))%nx;  probe%ny = runs(mx%run(jr + 1))%ny
+         probe%nx = lad%runs(lad%mx%run(jr + 1))%nx;  probe%ny = lad%runs(lad%mx%run(jr + 1))%ny
          run_cost = predicted_run_cost(probe, la)
       end function run_cost
    end function choose_run
 
    !> The run done meeting the target with the least worst ratio, else the least worst ratio.
-   function final_run(runs, tx, mx, target, active) result(kj)
-      type(run_t), intent(in) :: runs(:)          !< the runs
-      type(axis_t), intent(in) :: tx, mx          !< the axes
-      real(dp), intent(in) :: target              !< the relative error asked for
-      logical, intent(in) :: active(nq)           !< the results estimated
+   function final_run(lad) result(kj)
+      type(ladder_t), intent(in) :: lad           !< the ladder, its axes built
       integer :: kj(2)
       type(judged_t) :: jd
       real(dp) :: best(2)
       integer :: kk, jj, other(2)
       best = huge(1.0_dp);  kj = -1;  other = 0
-      do kk = 0, tx%levels - 1
-         do jj = 0, mx%levels - 1
-            if (.not. done_run(runs, kk, jj)) cycle
-            jd = judge_run(runs, tx, mx, kk, jj, target, active)
-            if (jd%meets .and. .not. cross_needed(runs, kk, jj) .and. jd%worst < best(1)) then
+      do kk = 0, lad%tx%levels - 1
+         do jj = 0, lad%mx%levels - 1
+            if (.not. done_run(lad%runs, kk, jj)) cycle
+            jd = judge_run(lad, kk, jj)
+            if (jd%meets .and. .not. cross_needed(lad%runs, kk, jj) .and. jd%worst < best(1)) then
                kj = [kk, jj];  best(1) = jd%worst
             end if
             if (jd%worst < best(2)) then

@@ -1,8 +1,7 @@
-!> What an accuracy run writes (docs/ACCURACY.md): <prefix>_summary.dat, the run chosen's
-!> summary then the accuracy's keys (target, status, the run chosen, each result's `_error`,
-!> `_error_dt`, `_error_mesh`, the models' `_change_theory`, `_change_bend_twist`, the cost);
-!> <prefix>_accuracy.dat, one row per run and the axes' estimates as '#' lines
-!> (postproc/accuracy.gp); and the same in a few lines on standard output.
+!> What an accuracy run writes (docs/ACCURACY.md, what it reports): <prefix>_summary.dat, the
+!> run chosen's summary then the accuracy's keys; <prefix>_accuracy.dat, one row per run and
+!> the axes' estimates as '#' lines (postproc/accuracy.gp); the same in a few lines on
+!> standard output.
 module accuracy_report
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: dp, msg_len
@@ -13,36 +12,20 @@ module accuracy_report
       write_column_block
    use result_reader, only: summary_t, read_summary
    use accuracy_runs, only: run_t, launcher_t, nq, iq_peak_time, result_keys, result_units, state_done, &
-      error_scale, state_skipped, state_stopped, is_ladder
-   use accuracy_ladder, only: axis_t, judged_t, judge_run
+      error_scale, is_ladder
+   use accuracy_ladder, only: ladder_t, axis_t, judged_t, judge_run
+   use model_comparison, only: comparison_t, comparison_items, comparison_lines, relative
    implicit none
    private
-   public :: comparison_t, accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, report_terminal, &
-             model_changes, model_required, model_needed
-
-   !> A model compared at the chosen settings: the theory, or D16, D26.
-   type :: comparison_t
-      character(len=12) :: what = ''               !< 'theory' or 'bend_twist'
-      character(len=160) :: compared = ''          !< what the other run changes
-      integer :: run = 0                           !< its run, 0 when none was made
-      integer :: base = 0                          !< the run it is compared with (the chosen, or another: at)
-      character(len=400) :: at = ''                !< why base is not the run chosen
-      character(len=160) :: note = ''              !< why none was made
-      character(len=16) :: richer = ''             !< the fuller model: 'nonlinear', or 'keep' (D16, D26)
-      character(len=16) :: simpler = ''            !< the other: 'linear', or 'drop' (D16 = D26 = 0)
-      logical :: chosen_richer = .true.            !< the run chosen has the fuller model
-   end type comparison_t
+   public :: accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, report_terminal
 
    !> The outcome of the ladder.
    type :: accuracy_outcome_t
-      real(dp) :: target = 0.0_dp                  !< the relative error asked for
       logical :: met = .false.                     !< every error within it
       character(len=240) :: status = ''            !< 'met', 'cap reached: ...', 'not met: ...', 'stopped ...'
       integer :: stop_signal = 0                   !< the stop signal that ended it, 0: none
       integer :: chosen = 0                        !< the run whose results are given
       type(judged_t) :: jd                         !< its results and errors
-      logical :: estimated(nq) = .false.           !< the results estimated
-      logical :: targeted(nq) = .false.            !< of which those that must meet the target
       real(dp) :: wall_s = 0.0_dp                  !< wall time of the accuracy run (s)
       type(comparison_t) :: cmp(2)                 !< the models compared
    end type accuracy_outcome_t
@@ -52,6 +35,8 @@ module accuracy_report
    !> Whose the time error is of a run chosen without it measured on its mesh, and why.
    character(len=*), parameter :: unmeasured_time = &
       'mesh 0''s (the cap left no neighbouring time level on the chosen mesh)'
+   !> The mesh error from two levels.
+   character(len=*), parameter :: two_meshes = 'two levels: 3 times their difference (Roache''s factor of safety 3)'
    !> A run's state as a word (state_planned, ... of accuracy_runs).
    character(len=7), parameter :: state_words(0:5) = [character(len=7) :: 'planned', 'planned', 'done', 'failed', &
       'skipped', 'stopped']
@@ -59,10 +44,9 @@ module accuracy_report
 contains
 
    !> <prefix>_accuracy.dat (module header).
-   subroutine write_accuracy_table(deck, runs, tx, mx, out, stat, errmsg)
+   subroutine write_accuracy_table(deck, lad, out, stat, errmsg)
       type(deck_t), intent(in) :: deck             !< the accuracy run's deck
-      type(run_t), intent(in) :: runs(:)           !< the runs
-      type(axis_t), intent(in) :: tx, mx           !< the axes
+      type(ladder_t), intent(in) :: lad            !< the ladder
       type(accuracy_outcome_t), intent(in) :: out  !< the outcome
       integer, intent(out) :: stat                 !< 0 on success
       character(len=*), intent(inout) :: errmsg    !< what failed
@@ -95,50 +79,48 @@ contains
          errmsg = 'cannot write ' // deck%prefix // '_accuracy.dat: ' // trim(iomsg)
          return
       end if
-      write (u, '(a)') '# impact: accuracy ladder, one row per run (target ' // real_short(out%target) // ')'
+      write (u, '(a)') '# impact: accuracy ladder, one row per run (target ' // real_short(lad%target) // ')'
       call echo_deck(deck, u, '# ')
       call write_column_block(u, names, texts)
-      do i = 1, size(runs)
-         call write_row(i)
+      do i = 1, size(lad%runs)
+         call write_row(lad%runs(i), i == out%chosen)
       end do
-      call write_estimates(u, tx, mx, out%estimated)
+      call write_estimates(u, lad)
       close (u, iostat=stat, iomsg=iomsg)
       if (stat /= 0) errmsg = deck%prefix // '_accuracy.dat: ' // trim(iomsg)
    contains
-      !> The row of run i.
-      subroutine write_row(i)
-         integer, intent(in) :: i                  !< the run
+      !> The row of run r.
+      subroutine write_row(r, chosen)
+         type(run_t), intent(in) :: r              !< the run
+         logical, intent(in) :: chosen             !< it is the run chosen
          real(dp) :: err(nq), err_time(nq), err_mesh(nq), q(nq), h_rel
          type(judged_t) :: jd
          err = ieee_value(err, ieee_quiet_nan)
          err_time = err;  err_mesh = err
-         q = merge(runs(i)%q, err, runs(i)%state == state_done)
-         if (runs(i)%state == state_done .and. is_ladder(runs(i)) .and. runs(i)%k < tx%levels .and. &
-             runs(i)%j < mx%levels) then                  ! the results not estimated NaN
-            jd = judge_run(runs, tx, mx, runs(i)%k, runs(i)%j, out%target, out%targeted)
-            err = merge(jd%err, err, out%estimated);  err_time = merge(jd%err_time, err, out%estimated)
-            err_mesh = merge(jd%err_mesh, err_time, out%estimated)
+         q = merge(r%q, err, r%state == state_done)
+         if (r%state == state_done .and. is_ladder(r) .and. r%k < lad%tx%levels .and. r%j < lad%mx%levels) then
+            jd = judge_run(lad, r%k, r%j)               ! the results not estimated NaN
+            err = merge(jd%err, err, lad%estimated);  err_time = merge(jd%err_time, err, lad%estimated)
+            err_mesh = merge(jd%err_mesh, err_time, lad%estimated)
          end if
-         h_rel = sqrt(real(runs(1)%nx, dp)*real(runs(1)%ny, dp)/(real(runs(i)%nx, dp)*real(runs(i)%ny, dp)))
-         write (u, '(a,1x,a,2(1x,i3),es15.6e3,2(1x,i5),f9.5,f9.5,es12.4,1x,i1,1x,a,24es16.7e3)') &
-            trim(runs(i)%name), trim(runs(i)%role), runs(i)%k, runs(i)%j, runs(i)%dt*1.0e6_dp, runs(i)%nx, &
-            runs(i)%ny, runs(i)%grading, h_rel, runs(i)%cpu_s, merge(1, 0, i == out%chosen), &
-            state_words(runs(i)%state), q, err, err_time, err_mesh
+         h_rel = sqrt(real(lad%runs(1)%nx, dp)*real(lad%runs(1)%ny, dp)/(real(r%nx, dp)*real(r%ny, dp)))
+         write (u, '(a,1x,a,2(1x,i3),es15.6e3,2(1x,i5),f9.5,f9.5,es12.4,1x,i1,1x,a,24es16.7e3)') trim(r%name), &
+            trim(r%role), r%k, r%j, r%dt*1.0e6_dp, r%nx, r%ny, r%grading, h_rel, r%cpu_s, merge(1, 0, chosen), &
+            state_words(r%state), q, err, err_time, err_mesh
       end subroutine write_row
    end subroutine write_accuracy_table
 
    !> The estimates of the finest level of both axes as '#' lines.
-   subroutine write_estimates(u, tx, mx, active)
+   subroutine write_estimates(u, lad)
       integer, intent(in) :: u                     !< the open file
-      type(axis_t), intent(in) :: tx, mx           !< the axes
-      logical, intent(in) :: active(nq)            !< the results estimated
+      type(ladder_t), intent(in) :: lad            !< the ladder (its axes, the results estimated)
       integer :: iq
       write (u, '(a)') '# estimates of the finest level of each axis (src/accuracy/error_estimate.f90):'
       write (u, '(a)') '# result axis levels observed_order asymptotic error(result''s unit) rule'
       do iq = 1, nq
-         if (.not. active(iq)) cycle
-         call one('time', tx, iq)
-         call one('mesh', mx, iq)
+         if (.not. lad%estimated(iq)) cycle
+         call one('time', lad%tx, iq)
+         call one('mesh', lad%mx, iq)
       end do
    contains
       !> The line of one result on one axis.
@@ -156,10 +138,10 @@ contains
    end subroutine write_estimates
 
    !> <prefix>_summary.dat (module header).
-   subroutine write_accuracy_summary(deck, la, runs, out, stat, errmsg)
+   subroutine write_accuracy_summary(deck, la, lad, out, stat, errmsg)
       type(deck_t), intent(in) :: deck             !< the accuracy run's deck
       type(launcher_t), intent(in) :: la           !< the launcher (its directory, its spending)
-      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(ladder_t), intent(in) :: lad            !< the ladder
       type(accuracy_outcome_t), intent(in) :: out  !< the outcome
       integer, intent(out) :: stat                 !< 0 on success
       character(len=*), intent(inout) :: errmsg    !< what failed
@@ -168,7 +150,7 @@ contains
       type(run_t) :: r
       integer :: i, iq
       real(dp) :: reference(nq)
-      r = runs(out%chosen)
+      r = lad%runs(out%chosen)
       reference = error_scale(out%jd%value)
       call read_summary(la%dir // trim(r%name) // '_summary.dat', s, stat, errmsg)
       if (stat /= 0) return
@@ -176,7 +158,7 @@ contains
       do i = 1, size(s%keys)
          call summary_text(items, trim(s%keys(i)), trim(s%texts(i)))
       end do
-      call put('accuracy_target', '-', out%target)
+      call put('accuracy_target', '-', lad%target)
       call summary_text(items, 'accuracy_status', trim(out%status))
       if (out%stop_signal > 0) call summary_integer(items, 'accuracy_stop_signal', out%stop_signal)
       call summary_text(items, 'accuracy_values', 'of the run chosen, not extrapolated')
@@ -187,6 +169,7 @@ contains
       end if
       if (out%jd%two_levels) call summary_text(items, 'time_error_estimate', &
                                                'two levels: Roache''s grid convergence index, Fs = 3')
+      if (lad%mx%levels == 2) call summary_text(items, 'mesh_error_estimate', two_meshes)
       call summary_text(items, 'chosen_run', la%dir // trim(r%name))
       call summary_real(items, 'chosen_dt_us', 'chosen_dt', 's', r%dt, 1.0e6_dp)
       call summary_integer(items, 'chosen_nx', r%nx)
@@ -194,7 +177,7 @@ contains
       call put('chosen_grading', '-', r%grading)
       call summary_text(items, 'chosen_theory', trim(la%theory))
       do iq = 1, nq
-         if (.not. out%estimated(iq)) cycle
+         if (.not. lad%estimated(iq)) cycle
          call put(trim(result_keys(iq)) // '_error', trim(result_units(iq)), out%jd%err(iq))
          call put(trim(result_keys(iq)) // '_error_dt', trim(result_units(iq)), out%jd%err_time(iq))
          call put(trim(result_keys(iq)) // '_error_mesh', trim(result_units(iq)), out%jd%err_mesh(iq))
@@ -203,9 +186,9 @@ contains
          call put(trim(result_keys(iq)) // '_relative_error', '-', relative(out%jd%err(iq), reference(iq)))
       end do
       do i = 1, size(out%cmp)
-         call comparison_items(items, out%cmp(i), runs, out)
+         call comparison_items(items, out%cmp(i), lad)
       end do
-      call summary_integer(items, 'accuracy_runs', count(runs%state == state_done))
+      call summary_integer(items, 'accuracy_runs', count(lad%runs%state == state_done))
       call summary_real(items, 'accuracy_cpu_s', 'accuracy_cpu', 's', la%spent, 1.0_dp)
       call put('accuracy_cpu_in_chosen_runs', '-', la%spent/max(r%cpu_s, tiny(1.0_dp)))   ! in runs of the chosen
       call summary_real(items, 'accuracy_wall_s', 'accuracy_wall', 's', out%wall_s, 1.0_dp)
@@ -219,44 +202,22 @@ contains
       end subroutine put
    end subroutine write_accuracy_summary
 
-   !> The summary's items of one model compared: what, and the relative change of each result.
-   subroutine comparison_items(items, c, runs, out)
-      type(summary_item_t), allocatable, intent(inout) :: items(:)   !< the summary
-      type(comparison_t), intent(in) :: c          !< the comparison
-      type(run_t), intent(in) :: runs(:)           !< the runs
-      type(accuracy_outcome_t), intent(in) :: out  !< the outcome
-      real(dp) :: change(nq)
-      integer :: iq
-      if (c%run == 0 .or. len(not_compared(c, runs)) > 0) then
-         call summary_text(items, trim(c%what) // '_compared', 'none: ' // not_compared(c, runs))
-         return
-      end if
-      call summary_text(items, trim(c%what) // '_compared', trim(c%compared))
-      call summary_text(items, trim(c%what) // '_compared_at', trim(runs(c%base)%name))
-      change = model_changes(c, runs, out)
-      call summary_text(items, trim(c%what) // '_needed', trim(model_needed(c, change, out)))
-      do iq = 1, nq
-         if (.not. out%estimated(iq)) cycle
-         call summary_real(items, trim(result_keys(iq)) // '_change_' // trim(c%what), trim(result_keys(iq)) // &
-                           '_change_' // trim(c%what), '-', change(iq), 1.0_dp)
-      end do
-   end subroutine comparison_items
-
    !> The accuracy run's words on standard output.
-   subroutine report_terminal(unit, la, runs, out)
+   subroutine report_terminal(unit, la, lad, out)
       integer, intent(in) :: unit                  !< standard output
       type(launcher_t), intent(in) :: la           !< the launcher
-      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(ladder_t), intent(in) :: lad            !< the ladder
       type(accuracy_outcome_t), intent(in) :: out  !< the outcome
       type(run_t) :: r
       integer :: iq, i
       character(len=msg_len) :: line
       real(dp) :: reference(nq)
-      r = runs(out%chosen)
+      r = lad%runs(out%chosen)
       reference = error_scale(out%jd%value)
       write (unit, '(a)') 'accuracy: ' // trim(out%status)
       if (out%jd%two_levels) write (unit, '(a)') 'accuracy: the time error on the chosen mesh is from two ' // &
          'time levels: Roache''s grid convergence index, factor of safety 3'
+      if (lad%mx%levels == 2) write (unit, '(a)') 'accuracy: the mesh error is from ' // two_meshes
       if (.not. out%jd%time_measured) write (unit, '(a)') 'accuracy: the time error was not measured on ' // &
          'the chosen mesh: it is ' // unmeasured_time
       if (out%jd%err_maxima(iq_peak_time) > 0.0_dp) write (unit, '(a)') 'accuracy: ' // &
@@ -267,121 +228,19 @@ contains
          ' us, mesh ' // int_str(r%nx) // ' x ' // int_str(r%ny) // ', grading ' // real_short(r%grading) // &
          ', ' // trim(la%theory) // '), not extrapolated; error = time part + mesh part + their interaction'
       do iq = 1, nq
-         if (.not. out%estimated(iq)) cycle
+         if (.not. lad%estimated(iq)) cycle
          write (line, '(a,es14.6,a,es10.3,a,f7.3,a,es10.3,a,es10.3,a)') result_keys(iq), out%jd%value(iq), ' +- ', &
             out%jd%err(iq), ' (', 100.0_dp*relative(out%jd%err(iq), reference(iq)), ' %; dt ', &
             out%jd%err_time(iq), ', mesh ', out%jd%err_mesh(iq), ')'
          write (unit, '(a)') '  ' // trim(line)
       end do
       do i = 1, size(out%cmp)
-         call comparison_lines(unit, out%cmp(i), runs, out)
+         call comparison_lines(unit, out%cmp(i), lad, out%chosen)
       end do
-      write (unit, '(a)') 'accuracy: ' // int_str(count(runs%state == state_done)) // ' runs, cpu ' // &
+      write (unit, '(a)') 'accuracy: ' // int_str(count(lad%runs%state == state_done)) // ' runs, cpu ' // &
          real_short(la%spent) // ' s (' // real_short(la%spent/max(r%cpu_s, tiny(1.0_dp))) // &
          ' times the run chosen), wall ' // real_short(out%wall_s) // ' s on ' // int_str(la%cpus) // &
          ' CPUs; every run: ' // la%dir // '; summary: ' // la%dir(:len(la%dir) - 5) // '_summary.dat'
    end subroutine report_terminal
-
-   !> The terminal's lines of one model compared, with its verdict (model_required).
-   subroutine comparison_lines(unit, c, runs, out)
-      integer, intent(in) :: unit                  !< standard output
-      type(comparison_t), intent(in) :: c          !< the comparison
-      type(run_t), intent(in) :: runs(:)           !< the runs
-      type(accuracy_outcome_t), intent(in) :: out  !< the outcome
-      real(dp) :: change(nq)
-      character(len=msg_len) :: line
-      integer :: iq
-      if (c%run == 0 .or. len(not_compared(c, runs)) > 0) then
-         write (unit, '(a)') 'model: ' // trim(c%what) // ': not compared: ' // not_compared(c, runs)
-         return
-      end if
-      change = model_changes(c, runs, out)
-      line = ''
-      do iq = 1, nq
-         if (.not. out%estimated(iq)) cycle
-         write (line, '(a,1x,a,f8.3,a)') trim(line), trim(result_keys(iq)), 100.0_dp*change(iq), ' %'
-      end do
-      write (unit, '(a)') 'model: ' // trim(c%what) // ': ' // trim(c%compared) // ' changes' // trim(line)
-      if (c%base /= out%chosen) write (unit, '(a)') 'model: ' // trim(c%what) // ': compared at run ' // &
-         trim(runs(c%base)%name) // ', not at the run chosen: ' // trim(c%at)
-      line = 'model: ' // trim(c%what) // ': within the target ' // real_short(out%target) // ': '
-      if (model_required(change, out)) line = 'model: ' // trim(c%what) // ': more than the target ' // &
-         real_short(out%target) // ': the scene requires '
-      if (model_required(change, out) .and. c%chosen_richer) line = trim(line) // ' the model of the run chosen (' // &
-         trim(c%richer) // ')'
-      if (model_required(change, out) .and. .not. c%chosen_richer) line = trim(line) // ' the other model (' // &
-         trim(c%richer) // '): the results above are the simpler model''s (' // trim(c%simpler) // &
-         '), and the fuller one moves them by more than the target'
-      if (.not. model_required(change, out) .and. c%chosen_richer) line = trim(line) // ' the simpler model (' // &
-         trim(c%simpler) // ') would do as well'
-      if (.not. model_required(change, out) .and. .not. c%chosen_richer) line = trim(line) // &
-         ' the model of the run chosen (' // trim(c%simpler) // ') does as well as the fuller one (' // trim(c%richer) // ')'
-      write (unit, '(a)') trim(line)
-   end subroutine comparison_lines
-
-   !> The relative change of each result estimated that the other model of c makes (else 0).
-   pure function model_changes(c, runs, out) result(change)
-      type(comparison_t), intent(in) :: c          !< the comparison (its runs done)
-      type(run_t), intent(in) :: runs(:)           !< the runs
-      type(accuracy_outcome_t), intent(in) :: out  !< the outcome (the results estimated)
-      real(dp) :: change(nq), reference(nq)
-      integer :: iq
-      change = 0.0_dp
-      reference = error_scale(runs(c%base)%q)
-      do iq = 1, nq
-         if (out%estimated(iq)) change(iq) = relative(runs(c%run)%q(iq) - runs(c%base)%q(iq), reference(iq))
-      end do
-   end function model_changes
-
-   !> Whether a result that must meet the target changes by more than the target.
-   pure logical function model_required(change, out)
-      real(dp), intent(in) :: change(nq)           !< the relative changes (model_changes)
-      type(accuracy_outcome_t), intent(in) :: out  !< the outcome (the target, the results targeted)
-      model_required = any(out%targeted .and. abs(change) > out%target)
-   end function model_required
-
-   !> The verdict of comparison c: the fuller model when model_required, else the simpler.
-   pure function model_needed(c, change, out) result(name)
-      type(comparison_t), intent(in) :: c          !< the comparison
-      real(dp), intent(in) :: change(nq)           !< the relative changes (model_changes)
-      type(accuracy_outcome_t), intent(in) :: out  !< the outcome (the target, the results targeted)
-      character(len=:), allocatable :: name
-      if (model_required(change, out)) then
-         name = trim(c%richer)
-      else
-         name = trim(c%simpler)
-      end if
-   end function model_needed
-
-   !> Why comparison c has no results ('' when it has): none made, or its run skipped,
-   !> stopped or failed.
-   function not_compared(c, runs) result(text)
-      type(comparison_t), intent(in) :: c          !< the comparison
-      type(run_t), intent(in) :: runs(:)           !< the runs
-      character(len=:), allocatable :: text
-      text = ''
-      if (c%run == 0) then
-         text = trim(c%note)
-      else if (runs(c%run)%state == state_skipped) then
-         text = 'the run ' // trim(runs(c%run)%name) // ' would pass &accuracy max_cpu_s'
-      else if (runs(c%run)%state == state_stopped) then
-         text = 'the run ' // trim(runs(c%run)%name) // ' was stopped'
-      else if (runs(c%run)%state /= state_done) then
-         text = 'the run ' // trim(runs(c%run)%name) // ' failed (' // trim(runs(c%run)%status) // ')'
-      end if
-   end function not_compared
-
-   !> err/|value|, 0 when both are 0, huge when only value is.
-   pure real(dp) function relative(err, value)
-      real(dp), intent(in) :: err                  !< the error or change
-      real(dp), intent(in) :: value                !< the value
-      if (value /= 0.0_dp) then
-         relative = err/abs(value)
-      else if (err == 0.0_dp) then
-         relative = 0.0_dp
-      else
-         relative = huge(1.0_dp)
-      end if
-   end function relative
 
 end module accuracy_report

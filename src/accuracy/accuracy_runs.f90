@@ -16,8 +16,8 @@ module accuracy_runs
    implicit none
    private
    public :: nq, iq_force, iq_peak_time, result_keys, result_units, run_t, launcher_t, run_planned, maxima_t, force_maxima
-   public :: state_planned, state_done, state_failed, state_skipped, state_stopped, predicted_cost, fit_costs
-   public :: predicted_run_cost, ladder_name, error_scale, is_ladder
+   public :: state_planned, state_done, state_failed, state_skipped, state_stopped, fit_costs, predicted_run_cost, &
+             ladder_name, error_scale, is_ladder
 
    !> The results an accuracy run estimates: their summary keys and units (the last: &strength).
    integer, parameter :: nq = 6
@@ -101,16 +101,14 @@ contains
       character(len=*), intent(inout) :: errmsg    !< what failed
       integer :: i, pid, code, running
       logical :: known
-      stat = 0
-      running = 0
+      stat = 0;  running = 0
       do
          launch: do while (running < la%cpus .and. stat == 0 .and. stop_caught() == 0)
             i = next_run(runs, la, running)
             if (i == 0) exit launch
-            if (la%c_base >= 0.0_dp .and. la%spent + sum(predicted_cost(runs, la, running=.true.)) &
-                + sum(predicted_cost(runs(i:i), la, running=.false.)) > la%cap) then
-               runs(i)%state = state_skipped
-               la%cap_reached = .true.
+            if (la%c_base >= 0.0_dp .and. la%spent + sum(predicted_run_cost(runs, la), &
+                mask=runs%state == state_running) + predicted_run_cost(runs(i), la) > la%cap) then
+               runs(i)%state = state_skipped;  la%cap_reached = .true.
                cycle launch
             end if
             call spawn_program(la%exe, run_settings(runs(i), la), la%dir // trim(runs(i)%name) // '.log', runs(i)%pid, &
@@ -128,8 +126,7 @@ contains
          i = findloc(runs%pid, pid, dim=1)
          if (i == 0) cycle
          running = running - 1
-         runs(i)%pid = -1
-         runs(i)%exit_code = code
+         runs(i)%pid = -1;  runs(i)%exit_code = code
          if (stop_caught() /= 0 .and. code /= 0) then   ! ended by the stop: its restart point kept
             runs(i)%state = state_stopped
             cycle
@@ -155,7 +152,7 @@ contains
       character(len=:), allocatable :: names
       integer :: i
       if (la%cap_times > 0) la%cap = real(la%cap_times, dp)*la%spent
-      cost = predicted_cost(runs, la, running=.false.)
+      cost = merge(predicted_run_cost(runs, la), 0.0_dp, runs%state == state_planned)
       names = ''
       do i = 1, size(runs)
          if (runs(i)%state == state_planned) names = names // ' ' // trim(runs(i)%name)
@@ -174,21 +171,11 @@ contains
       integer, intent(in) :: running               !< runs going
       real(dp) :: cost(size(runs))
       i = 0
-      if (.not. any(runs%state == state_planned)) return
       if (la%c_base < 0.0_dp .and. running > 0) return
-      cost = predicted_cost(runs, la, running=.false.)
+      cost = predicted_run_cost(runs, la)
       if (la%c_base < 0.0_dp) i = minloc(cost, mask=runs%state == state_planned, dim=1)
       if (la%c_base >= 0.0_dp) i = maxloc(cost, mask=runs%state == state_planned, dim=1)
    end function next_run
-
-   !> The predicted cost of each run planned (or going: running) (s); 0 for the others.
-   function predicted_cost(runs, la, running) result(cost)
-      type(run_t), intent(in) :: runs(:)           !< the runs
-      type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
-      logical, intent(in) :: running               !< of the runs going, else of the planned
-      real(dp) :: cost(size(runs))
-      cost = merge(predicted_run_cost(runs, la), 0.0_dp, runs%state == merge(state_running, state_planned, running))
-   end function predicted_cost
 
    !> The cost model's prediction of a run's cpu time (s; 0 while nothing is known).
    elemental real(dp) function predicted_run_cost(run, la)
@@ -275,34 +262,21 @@ contains
    function run_settings(run, la) result(args)
       type(run_t), intent(in) :: run               !< the run
       type(launcher_t), intent(in) :: la           !< the launcher
-      character(len=8192), allocatable :: args(:)
+      character(len=8192), allocatable :: args(:), sets(:)
       integer :: i
       args = [character(len=8192) :: '--single']       ! one run: the deck's &accuracy left aside
       if (la%restart) args = [args, [character(len=8192) :: '--restart']]
-      do i = 1, size(la%user_settings)
-         call add(trim(la%user_settings(i)))
-      end do
-      call add('output.prefix=' // quoted(la%dir // trim(run%name)))
-      call add('output.overwrite=.true.')
-      call add('output.hdf5=.false.')
-      if (la%every_step) call add('output.every=1')
-      call add('analysis.dt=' // real_str(run%dt))
-      call add('mesh.nx=' // int_str(run%nx))
-      call add('mesh.ny=' // int_str(run%ny))
-      call add('mesh.grading=' // real_str(run%grading))
-      call add('output.gauge_x=' // real_str(la%gauge(1)))   ! every run's strain at level 0's gauge
-      call add('output.gauge_y=' // real_str(la%gauge(2)))
-      call add('analysis.theory=' // quoted(trim(la%theory)))
-      do i = 1, max_variant
-         if (len_trim(run%variant(i)) > 0) call add(trim(run%variant(i)))
+      sets = [character(len=8192) :: la%user_settings, 'output.prefix=' // quoted(la%dir // trim(run%name)), &
+         'output.overwrite=.true.', 'output.hdf5=.false.']
+      if (la%every_step) sets = [sets, [character(len=8192) :: 'output.every=1']]
+      sets = [character(len=8192) :: sets, 'analysis.dt=' // real_str(run%dt), 'mesh.nx=' // int_str(run%nx), &
+         'mesh.ny=' // int_str(run%ny), 'mesh.grading=' // real_str(run%grading), &
+         'output.gauge_x=' // real_str(la%gauge(1)), 'output.gauge_y=' // real_str(la%gauge(2)), &   ! level 0's gauge
+         'analysis.theory=' // quoted(trim(la%theory)), pack(run%variant, len_trim(run%variant) > 0)]
+      do i = 1, size(sets)
+         args = [args, [character(len=8192) :: '--set', sets(i)]]
       end do
       args = [args, [character(len=8192) :: la%deck_path]]
-   contains
-      !> Appends '--set' and the setting.
-      subroutine add(setting)
-         character(len=*), intent(in) :: setting   !< 'group.var=value'
-         args = [args, [character(len=8192) :: '--set', setting]]
-      end subroutine add
    end function run_settings
 
    !> text as a deck's quoted text: 'text', a quote in it doubled.

@@ -19,23 +19,17 @@ module child_process
    public :: spawn_program, wait_child, program_path, usable_cpus, pass_stops_to_children, stop_caught, &
              die_with_parent
 
-   !> The environment variable that makes a child die with its parent.
+   !> The environment variable that makes a child die with its parent; the longest path read.
    character(len=*), parameter :: parent_variable = 'IMPACT_PARENT_PID'
-   !> POSIX_SPAWN_SETPGROUP (glibc), PR_SET_PDEATHSIG, SIGKILL.
-   integer(c_int16_t), parameter :: spawn_setpgroup = 2_c_int16_t
-   integer(c_int), parameter :: pr_set_pdeathsig = 1, sigkill = 9
-   !> ELOOP (Linux): what open(2) with O_NOFOLLOW says of a symbolic link.
-   integer(c_int), parameter :: eloop = 40
-   !> Children held at most, and the signal caught (0: none).
-   integer, parameter :: max_children = 256
-   integer(c_int), volatile, save :: children(max_children) = 0
-   integer(c_int), volatile, save :: stopped = 0
-   !> Permissions of a log file created here, before the umask: rw-rw-rw-.
-   integer(c_int), parameter :: log_mode = int(o'666', c_int)
-   !> Standard output and standard error.
-   integer(c_int), parameter :: fd_out = 1, fd_err = 2
-   !> Longest path readlink is asked for.
    integer, parameter :: max_path = 4096
+   !> POSIX_SPAWN_SETPGROUP (glibc), PR_SET_PDEATHSIG, SIGKILL, ELOOP (open(2) with O_NOFOLLOW
+   !> on a link), a log file's permissions before the umask, standard output and error.
+   integer(c_int16_t), parameter :: spawn_setpgroup = 2_c_int16_t
+   integer(c_int), parameter :: pr_set_pdeathsig = 1, sigkill = 9, eloop = 40, log_mode = int(o'666', c_int), &
+      fd_out = 1, fd_err = 2
+   !> Children held at most, their ids, and the signal caught (0: none).
+   integer, parameter :: max_children = 256
+   integer(c_int), volatile, save :: children(max_children) = 0, stopped = 0
 
 contains
 
@@ -62,8 +56,7 @@ contains
       if (r == 0) r = c_spawnattr_init(attr)
       if (r == 0) r = c_spawnattr_setflags(attr, spawn_setpgroup)
       if (r == 0) r = c_spawnattr_setpgroup(attr, 0_c_int)          ! its own group, led by itself
-      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, c_text(log_path), &
-                                             o_write_no_follow, log_mode)
+      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, c_text(log_path), o_write_no_follow, log_mode)
       if (r == 0) r = c_spawn_actions_adddup2(actions, fd_out, fd_err)
       if (r == 0) r = c_posix_spawn(cpid, c_text(path), actions, attr, argv, envp)
       ignored = c_spawn_actions_destroy(actions)
@@ -140,18 +133,11 @@ contains
       integer, intent(out) :: exit_code    !< its exit status, 128 + N when the signal N ended it
       integer(c_int) :: status, r
       r = c_waitpid(-1_c_int, status, 0_c_int)
-      pid = r
+      pid = merge(int(r), -1, r > 0)
       exit_code = -1
-      if (r <= 0) then
-         pid = -1
-         return
-      end if
+      if (r <= 0) return
       where (children == r) children = 0
-      if (iand(status, 127) == 0) then
-         exit_code = iand(ishft(status, -8), 255)
-      else
-         exit_code = 128 + iand(status, 127)
-      end if
+      exit_code = merge(iand(ishft(status, -8), 255), 128 + iand(status, 127), iand(status, 127) == 0)
    end subroutine wait_child
 
    !> From now on a stop signal is recorded (stop_caught) and sent on to every child's group.

@@ -31,11 +31,9 @@ contains
 
    !> The error of the finest level of a ladder (module header).
    pure function ladder_estimate(h, q, order_theory, order_low, order_high, floor) result(e)
-      real(dp), intent(in) :: h(:)             !< step or element size of each level, decreasing
-      real(dp), intent(in) :: q(:)             !< the result at each level
+      real(dp), intent(in) :: h(:), q(:)       !< step or element size of each level, decreasing; the result at each
       real(dp), intent(in) :: order_theory     !< the method's order: no larger order is used
-      real(dp), intent(in) :: order_low        !< the lowest order of the asymptotic range
-      real(dp), intent(in) :: order_high       !< the highest
+      real(dp), intent(in) :: order_low, order_high   !< the asymptotic range of orders
       real(dp), intent(in) :: floor            !< resolution added to the error (0: none)
       type(estimate_t) :: e
       real(dp) :: d1, d2, p, safe
@@ -81,11 +79,8 @@ contains
          real(dp), intent(in) :: po       !< the order
          real(dp) :: ratio
          ratio = (h(n)/h(n - 1))**po
-         if (ratio >= 1.0_dp) then
-            richardson = huge(1.0_dp)
-         else
-            richardson = abs(d2)*ratio/(1.0_dp - ratio)
-         end if
+         richardson = huge(1.0_dp)
+         if (ratio < 1.0_dp) richardson = abs(d2)*ratio/(1.0_dp - ratio)
       end function richardson
    end function ladder_estimate
 
@@ -95,8 +90,7 @@ contains
       real(dp), intent(in) :: ratio          !< d1/d2, positive
       real(dp) :: lo, hi
       integer :: it
-      lo = order_min
-      hi = order_max
+      lo = order_min;  hi = order_max
       p = merge(lo, hi, ratio <= f(lo))
       if (ratio <= f(lo) .or. ratio >= f(hi)) return
       do it = 1, 100
@@ -112,18 +106,14 @@ contains
       !> (h1^x - h2^x)/(h2^x - h3^x), scaled by h3 (it grows with x).
       pure real(dp) function f(x)
          real(dp), intent(in) :: x          !< the order
-         real(dp) :: a, b
-         a = (h(1)/h(3))**x
-         b = (h(2)/h(3))**x
-         f = (a - b)/(b - 1.0_dp)
+         f = ((h(1)/h(3))**x - (h(2)/h(3))**x)/((h(2)/h(3))**x - 1.0_dp)
       end function f
    end function observed_order
 
    !> The change still to come, like ln(1/h), on a mesh that does not resolve a length (the
    !> Hertz disc): 0 when it does (size_ratio <= 1) or with fewer than two levels.
    pure real(dp) function log_tail(h, q, size_ratio)
-      real(dp), intent(in) :: h(:)             !< element size of each level, decreasing
-      real(dp), intent(in) :: q(:)             !< the result at each level
+      real(dp), intent(in) :: h(:), q(:)       !< element size of each level, decreasing; the result at each
       real(dp), intent(in) :: size_ratio       !< the finest level's element over the length (s/a)
       integer :: n
       n = size(q)
@@ -135,25 +125,23 @@ contains
    !> The larger of the last two differences of a ladder.
    pure real(dp) function last_difference(q)
       real(dp), intent(in) :: q(:)                !< the result at each level
-      integer :: n
-      n = size(q)
+      integer :: i
       last_difference = 0.0_dp
-      if (n >= 2) last_difference = abs(q(n - 1) - q(n))
-      if (n >= 3) last_difference = max(last_difference, abs(q(n - 2) - q(n - 1)))
+      do i = max(2, size(q) - 1), size(q)
+         last_difference = max(last_difference, abs(q(i - 1) - q(i)))
+      end do
    end function last_difference
 
    !> Roache's grid convergence index of the finer of two levels of known order p.
    pure real(dp) function two_grid_index(h, q, p) result(e)
-      real(dp), intent(in) :: h(2)             !< step or element size of the two levels, decreasing
-      real(dp), intent(in) :: q(2)             !< the result at each
+      real(dp), intent(in) :: h(2), q(2)       !< step or element size of the two levels, decreasing; the result at each
       real(dp), intent(in) :: p                !< the order
       e = two_level_factor*abs(q(1) - q(2))/((h(1)/h(2))**p - 1.0_dp)
    end function two_grid_index
 
    !> The value of the next level of a ladder that goes on converging at order p.
    pure real(dp) function continued_value(h, q, p) result(q_next)
-      real(dp), intent(in) :: h(3)             !< sizes of the last two levels and the next, decreasing
-      real(dp), intent(in) :: q(2)             !< the result at the last two levels
+      real(dp), intent(in) :: h(3), q(2)       !< sizes of the last two levels and the next; the results of the two
       real(dp), intent(in) :: p                !< the order
       q_next = q(2) - (q(1) - q(2))*(h(3)**p - h(2)**p)/(h(2)**p - h(1)**p)
    end function continued_value

@@ -1,92 +1,119 @@
-!> Which model a scene needs (step 4 of accuracy_driver): one run with the other theory
-!> (linear against von Karman) and, when the laminate has D16, D26, one with the other
-!> bend-twist model (the paper's averaged plate against the full plate that keeps them); their
-!> relative changes give the verdict (accuracy_report, model_needed). First on the chosen mesh
-!> at dt0, 2^k times cheaper; again at the chosen settings only when the change, within its
-!> band (change_band), could turn the verdict. Past the cap: at the costliest ladder run whose
-!> variant fits.
+!> Which model a scene needs (docs/ACCURACY.md): one run with the other theory (linear against
+!> von Karman) and, when the laminate has D16, D26, one with the other bend-twist model (the
+!> paper's averaged plate, section 3.1, against the full plate that keeps them); their relative
+!> changes give the verdict (model_needed). First on the chosen mesh at dt0, 2^k times cheaper;
+!> again at the chosen settings only when the change, within its band (change_band), could
+!> turn the verdict. Past the cap: at the costliest ladder run whose variant fits.
 module model_comparison
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t
    use number_text, only: real_short
    use materials, only: laminate_t
    use scene_model, only: scene_t, model_laminate, choose_domain, coupling_tol
+   use result_files, only: summary_item_t, summary_real, summary_text
    use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, &
-      predicted_run_cost, is_ladder
-   use accuracy_ladder, only: axis_t, judged_t, judge_run, ladder_run
-   use accuracy_report, only: comparison_t, accuracy_outcome_t, model_changes, model_required
+      state_skipped, state_stopped, predicted_run_cost, is_ladder, error_scale
+   use accuracy_ladder, only: ladder_t, judged_t, judge_run, ladder_run
    implicit none
    private
-   public :: compare_models, comparison_base, variant_bases, bend_twist_variant, coarse_base, verdict_settled
+   public :: comparison_t, compare_models, comparison_base, variant_bases, bend_twist_variant, coarse_base, &
+             verdict_settled, model_needed, comparison_lines, comparison_items, relative
+
+   !> A model compared: the theory, or D16, D26.
+   type :: comparison_t
+      character(len=12) :: what = ''               !< 'theory' or 'bend_twist'
+      character(len=160) :: compared = ''          !< what the other run changes
+      integer :: run = 0                           !< its run, 0 when none was made
+      integer :: base = 0                          !< the run it is compared with (the chosen, or another: at)
+      character(len=400) :: at = ''                !< why base is not the run chosen
+      character(len=160) :: note = ''              !< why none was made
+      character(len=16) :: richer = ''             !< the fuller model: 'nonlinear', or 'keep' (D16, D26)
+      character(len=16) :: simpler = ''            !< the other: 'linear', or 'drop' (D16 = D26 = 0)
+      logical :: chosen_richer = .true.            !< the run chosen has the fuller model
+   end type comparison_t
+
+   !> Why a comparison is not at the run chosen.
+   character(len=*), parameter :: past_cap = 'a run at its settings would pass &accuracy max_cpu_s'
 
 contains
 
-   !> Step 4 (module header): the comparisons first at coarse_base, kept where their verdict is
-   !> settled (verdict_settled) or the chosen settings pass the cap, else made again there
-   !> (variant_bases). The report names the run compared with.
-   subroutine compare_models(deck, la, runs, tx, mx, out, stat, errmsg)
+   !> The comparisons (module header): first at coarse_base, kept where their verdict is settled
+   !> (verdict_settled) or the chosen settings pass the cap, else made again there.
+   subroutine compare_models(deck, la, lad, chosen, cmp, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
       type(launcher_t), intent(inout) :: la         !< the launcher
-      type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
-      type(axis_t), intent(in) :: tx, mx            !< the time and mesh axes
-      type(accuracy_outcome_t), intent(inout) :: out   !< the outcome (the run chosen); its comparisons out
+      type(ladder_t), intent(inout) :: lad          !< the ladder; the variants added to its runs
+      integer, intent(in) :: chosen                 !< the run chosen
+      type(comparison_t), intent(out) :: cmp(2)     !< the theory's, the bend-twist model's
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
-      character(len=*), parameter :: past_cap = 'a run at its settings would pass &accuracy max_cpu_s'
       type(comparison_t) :: first(2), second(2)
       real(dp) :: slack(nq)
       integer :: coarse, i, base(2)
       logical :: again(2)
-      associate (cmp => out%cmp)
-      again = .true.                                ! made (again) at the chosen settings
-      slack = 0.0_dp
-      coarse = coarse_base(runs, out%chosen)
-      if (coarse /= out%chosen) then
-         slack = change_slack(runs, tx, mx, out, coarse)
-         call make_variants(deck, la, runs, variant_bases(deck, la%scene, runs, la, coarse, again), again, first, &
+      again = .true.;  slack = 0.0_dp               ! again: made (again) at the chosen settings
+      coarse = coarse_base(lad%runs, chosen)
+      if (coarse /= chosen) then
+         slack = change_slack(lad, chosen, coarse)
+         call make_variants(deck, la, lad%runs, variant_bases(deck, lad%runs, la, coarse, again), again, first, &
                             stat, errmsg)
          if (stat /= 0) return
          cmp = first
          do i = 1, 2
             if (first(i)%base /= coarse) then      ! even that run would pass the cap
-               cmp(i)%at = past_cap
-               again(i) = .false.
-            else if (verdict_settled(first(i), runs, out, slack)) then
-               again(i) = .false.
-               cmp(i)%at = coarse_words(.true., change_band(model_changes(first(i), runs, out), slack), out)
+               cmp(i)%at = past_cap;  again(i) = .false.
+            else if (verdict_settled(first(i), lad, slack)) then
+               cmp(i)%at = coarse_words(.true., first(i));  again(i) = .false.
             end if
          end do
-         base = variant_bases(deck, la%scene, runs, la, out%chosen, again)
+         base = variant_bases(deck, lad%runs, la, chosen, again)
          do i = 1, 2
-            if (.not. again(i) .or. base(i) == out%chosen) cycle
+            if (.not. again(i) .or. base(i) == chosen) cycle
             again(i) = .false.                      ! the chosen settings would pass the cap
-            if (made(first(i))) &
-               cmp(i)%at = coarse_words(.false., change_band(model_changes(first(i), runs, out), slack), out)
+            if (made(first(i))) cmp(i)%at = coarse_words(.false., first(i))
          end do
          if (.not. any(again)) return
       end if
-      call make_variants(deck, la, runs, variant_bases(deck, la%scene, runs, la, out%chosen, again), again, second, &
+      call make_variants(deck, la, lad%runs, variant_bases(deck, lad%runs, la, chosen, again), again, second, &
                          stat, errmsg)
       if (stat /= 0) return
       do i = 1, 2
          if (.not. again(i)) cycle
-         if (second(i)%run == 0 .or. coarse == out%chosen .or. .not. made(cmp(i))) then
+         if (second(i)%run == 0 .or. coarse == chosen .or. .not. made(cmp(i))) then
             cmp(i) = second(i)
-            if (cmp(i)%base /= out%chosen) cmp(i)%at = past_cap
+            if (cmp(i)%base /= chosen) cmp(i)%at = past_cap
          else if (made(second(i))) then
             cmp(i) = second(i)
          else                                       ! the cap skipped the second: the first stands
-            cmp(i)%at = coarse_words(.false., change_band(model_changes(cmp(i), runs, out), slack), out)
+            cmp(i)%at = coarse_words(.false., cmp(i))
          end if
       end do
-      end associate
    contains
       !> The comparison's variant was made and has results.
       logical function made(c)
          type(comparison_t), intent(in) :: c
          made = .false.
-         if (c%run > 0) made = runs(c%run)%state == state_done
+         if (c%run > 0) made = lad%runs(c%run)%state == state_done
       end function made
+      !> Why a comparison stays at the chosen mesh's run at dt0, with the bands targeted.
+      function coarse_words(settled, c) result(text)
+         logical, intent(in) :: settled            !< verdict_settled
+         type(comparison_t), intent(in) :: c       !< the comparison made there
+         character(len=:), allocatable :: text
+         real(dp) :: band(nq)
+         integer :: iq
+         band = change_band(model_changes(c, lad), slack)
+         text = 'the chosen mesh at the ladder''s first step; the change at the chosen step lies within'
+         do iq = 1, nq
+            if (.not. lad%targeted(iq)) cycle
+            if (text(len(text):) == '%') text = text // ','
+            text = text // ' ' // trim(result_keys(iq)) // ' ' // real_short(100.0_dp*min(band(iq), 1.0_dp)) // ' %'
+         end do
+         text = text // ' of it (twice the time errors of both steps and a tenth of the change), which '
+         if (settled) text = text // 'leaves the verdict as it is'
+         if (.not. settled) text = text // 'could turn the verdict; a run at the chosen settings would pass ' // &
+            '&accuracy max_cpu_s'
+      end function coarse_words
    end subroutine compare_models
 
    !> The variants wanted (theory, bend-twist), each at the settings of its run base(i), run.
@@ -102,25 +129,21 @@ contains
       type(run_t) :: r
       character(len=16) :: other
       cmp%base = base
-      cmp(1)%what = 'theory'
-      cmp(1)%richer = 'nonlinear';  cmp(1)%simpler = 'linear'
+      cmp(1)%what = 'theory';  cmp(1)%richer = 'nonlinear';  cmp(1)%simpler = 'linear'
       cmp(1)%chosen_richer = la%theory /= 'linear'
       other = merge(cmp(1)%simpler, cmp(1)%richer, cmp(1)%chosen_richer)
       cmp(1)%compared = trim(other) // ' instead of ' // trim(la%theory)
       if (want(1)) then
          r = planned_copy(runs(base(1)))
-         r%role = 'theory'
-         r%name = trim(runs(base(1))%name) // '_' // trim(other)
+         r%role = 'theory';  r%name = trim(runs(base(1))%name) // '_' // trim(other)
          r%variant(1) = "analysis.theory='" // trim(other) // "'"
-         runs = [runs, r]
-         cmp(1)%run = size(runs)
+         runs = [runs, r];  cmp(1)%run = size(runs)
       end if
       cmp(2)%what = 'bend_twist'
       r = planned_copy(runs(base(2)))
       call bend_twist_variant(deck, la%scene, runs(base(2)), r, cmp(2))
       if (want(2) .and. len_trim(cmp(2)%note) == 0) then
-         runs = [runs, r]
-         cmp(2)%run = size(runs)
+         runs = [runs, r];  cmp(2)%run = size(runs)
       end if
       call run_planned(runs, la, stat, errmsg)
    end subroutine make_variants
@@ -137,11 +160,10 @@ contains
    !> The runs the two comparisons are made at: x, or where a variant does not fit the cap the
    !> costliest ladder run done whose variant does (comparison_base), the bend-twist's beside
    !> the theory's, each priced as it would run.
-   function variant_bases(deck, scene, runs, la, x, want) result(base)
+   function variant_bases(deck, runs, la, x, want) result(base)
       type(deck_t), intent(in) :: deck              !< the deck
-      type(scene_t), intent(in) :: scene            !< the scene of the deck's model
       type(run_t), intent(in) :: runs(:)            !< the runs
-      type(launcher_t), intent(in) :: la            !< the launcher (its cost model and spending)
+      type(launcher_t), intent(in) :: la            !< the launcher (the scene, its cost model and spending)
       integer, intent(in) :: x                      !< the run preferred
       logical, intent(in) :: want(2)                !< the theory, the bend-twist model
       integer :: base(2)
@@ -152,11 +174,10 @@ contains
       do i = 1, size(runs)
          cost_theory(i) = predicted_run_cost(runs(i), la)
          r = planned_copy(runs(i))
-         call bend_twist_variant(deck, scene, runs(i), r, c)
+         call bend_twist_variant(deck, la%scene, runs(i), r, c)
          cost_bt(i) = merge(predicted_run_cost(r, la), 0.0_dp, len_trim(c%note) == 0)   ! a note: no run
       end do
-      base = x
-      reserve = 0.0_dp
+      base = x;  reserve = 0.0_dp
       if (want(1)) then
          base(1) = comparison_base(runs, la, x, cost_theory)
          if (la%spent + cost_theory(base(1)) <= la%cap) reserve = cost_theory(base(1))
@@ -165,82 +186,48 @@ contains
    end function variant_bases
 
    !> The run on the chosen run's mesh at dt0, or the chosen one when that is not done.
-   integer function coarse_base(runs, chosen) result(coarse)
+   pure integer function coarse_base(runs, chosen) result(coarse)
       type(run_t), intent(in) :: runs(:)            !< the runs
       integer, intent(in) :: chosen                 !< the run chosen
       coarse = ladder_run(runs, 0, runs(chosen)%j)
-      if (coarse == 0) then
-         coarse = chosen
-      else if (runs(coarse)%state /= state_done) then
-         coarse = chosen
-      end if
+      if (coarse == 0) coarse = chosen
+      if (runs(coarse)%state /= state_done) coarse = chosen
    end function coarse_base
 
    !> How far a model's change at run coarse may lie from that at the chosen settings:
    !> 2 (e_t(coarse) + e_t(chosen)) / |q|, the variant's time error taken as the base's.
-   function change_slack(runs, tx, mx, out, coarse) result(slack)
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      type(axis_t), intent(in) :: tx, mx            !< the time and mesh axes
-      type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the run chosen, its errors)
-      integer, intent(in) :: coarse                 !< the run compared with first
+   function change_slack(lad, chosen, coarse) result(slack)
+      type(ladder_t), intent(in) :: lad             !< the ladder
+      integer, intent(in) :: chosen, coarse         !< the run chosen, the run compared with first
       real(dp) :: slack(nq)
-      type(judged_t) :: jd
-      jd = judge_run(runs, tx, mx, 0, runs(coarse)%j, out%target, out%estimated)
-      where (runs(coarse)%q /= 0.0_dp)
-         slack = 2.0_dp*(jd%err_time + out%jd%err_time)/abs(runs(coarse)%q)
-      elsewhere
-         slack = huge(1.0_dp)
-      end where
+      type(judged_t) :: jd, jc
+      jd = judge_run(lad, 0, lad%runs(coarse)%j)
+      jc = judge_run(lad, lad%runs(chosen)%k, lad%runs(chosen)%j)
+      slack = huge(1.0_dp)
+      where (lad%runs(coarse)%q /= 0.0_dp) slack = 2.0_dp*(jd%err_time + jc%err_time)/abs(lad%runs(coarse)%q)
    end function change_slack
 
    !> The band about a model's changes within which the change at the chosen step lies: slack,
-   !> and change_share of the change for the variant's own time error (docs/PERFORMANCE.md).
+   !> and a tenth of the change for the variant's own time error.
    pure function change_band(change, slack) result(band)
-      real(dp), intent(in) :: change(nq)            !< the relative changes (model_changes)
-      real(dp), intent(in) :: slack(nq)             !< change_slack
+      real(dp), intent(in) :: change(nq), slack(nq)   !< the relative changes (model_changes), change_slack
       real(dp) :: band(nq)
-      real(dp), parameter :: change_share = 0.1_dp   ! share of the change (-)
-      band = slack + change_share*abs(change)
+      band = slack + 0.1_dp*abs(change)
    end function change_band
 
    !> Whether the verdict of c (model_required) is the same for every change within its band;
    !> a comparison not made settles nothing.
-   logical function verdict_settled(c, runs, out, slack) result(settled)
+   logical function verdict_settled(c, lad, slack) result(settled)
       type(comparison_t), intent(in) :: c           !< the comparison
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the target, the results targeted)
+      type(ladder_t), intent(in) :: lad             !< the ladder (its runs, the target, the results targeted)
       real(dp), intent(in) :: slack(nq)             !< change_slack
       real(dp) :: change(nq), band(nq)
       settled = .false.
       if (c%run == 0) return
-      if (runs(c%run)%state /= state_done) return
-      change = model_changes(c, runs, out)
-      band = change_band(change, slack)
-      settled = model_required(max(abs(change) - band, 0.0_dp), out) .or. &
-                .not. model_required(abs(change) + band, out)
+      if (lad%runs(c%run)%state /= state_done) return
+      change = model_changes(c, lad);  band = change_band(change, slack)
+      settled = model_required(max(abs(change) - band, 0.0_dp), lad) .or. .not. model_required(abs(change) + band, lad)
    end function verdict_settled
-
-   !> Why a comparison stays at the chosen mesh's run at dt0, with the bands targeted.
-   function coarse_words(settled, band, out) result(text)
-      logical, intent(in) :: settled                !< verdict_settled
-      real(dp), intent(in) :: band(nq)              !< change_band
-      type(accuracy_outcome_t), intent(in) :: out   !< the outcome (the results targeted)
-      character(len=:), allocatable :: text, bands
-      integer :: iq
-      bands = ''
-      do iq = 1, nq
-         if (.not. out%targeted(iq)) cycle
-         if (len(bands) > 0) bands = bands // ', '
-         bands = bands // trim(result_keys(iq)) // ' ' // real_short(100.0_dp*min(band(iq), 1.0_dp)) // ' %'
-      end do
-      text = 'the chosen mesh at the ladder''s first step; the change at the chosen step lies within ' // bands // &
-             ' of it (twice the time errors of both steps and a tenth of the change)'
-      if (settled) then
-         text = text // ', which leaves the verdict as it is'
-      else
-         text = text // ', which could turn the verdict; a run at the chosen settings would pass &accuracy max_cpu_s'
-      end if
-   end function coarse_words
 
    !> The run a model is compared at: the chosen one, else the costliest ladder run done whose
    !> variant, predicted to cost cost(i), fits the cap (the chosen one when none does).
@@ -254,11 +241,8 @@ contains
       if (fits(chosen)) return
       do i = 1, size(runs)
          if (runs(i)%state /= state_done .or. .not. is_ladder(runs(i)) .or. .not. fits(i)) cycle
-         if (base == chosen) then
-            base = i
-         else if (cost(i) > cost(base)) then
-            base = i
-         end if
+         if (base == chosen) base = i
+         if (cost(i) > cost(base)) base = i
       end do
    contains
       !> A run at the settings of run i stays within the cap.
@@ -282,12 +266,10 @@ contains
       cmp%chosen_richer = .not. scene%averaged
       if (all(scene%couplings(1:2) <= coupling_tol)) then
          cmp%note = 'the laminate has D16 = D26 = 0'
-         return
-      end if
-      if (scene%domain == 'strip') then
+      else if (scene%domain == 'strip') then
          cmp%note = 'a strip (cylindrical bending) has no full plate to compare with'
-         return
       end if
+      if (len_trim(cmp%note) > 0) return
       quarters = merge(1.0_dp, merge(2.0_dp, 4.0_dp, scene%domain == 'half'), scene%domain == 'quarter')
       if (scene%averaged) then
          ! the full plate that keeps D16, D26: its counts, those of the domain mirrored
@@ -299,9 +281,8 @@ contains
             fx = 1;  fy = 1
          end if
          r%nx = c%nx*fx;  r%ny = c%ny*fy
-         r%variant(1) = "mesh.domain='full'"
-         r%variant(2) = 'mesh.average_bend_twist=.false.'
-         r%variant(3) = "laminate.bend_twist='keep'"
+         r%variant(1:3) = [character(len=64) :: "mesh.domain='full'", 'mesh.average_bend_twist=.false.', &
+                           "laminate.bend_twist='keep'"]
          ! a ladder run's counts the quarter's, doubled across the centre lines of an 'auto' domain
          r%cost_factor = merge(1.0_dp/quarters, 1.0_dp, deck%domain == 'auto')
          r%name = trim(c%name) // '_bend_twist_keep'
@@ -323,8 +304,7 @@ contains
       type(laminate_t) :: lmt
       integer :: stat
       character(len=msg_len) :: errmsg
-      d = deck
-      d%bend_twist = 'drop'
+      d = deck;  d%bend_twist = 'drop'
       call model_laminate(d, lmt, s)
       call choose_domain(d, s, stat, errmsg)
       quarters = 4.0_dp
@@ -332,5 +312,121 @@ contains
       if (s%domain == 'quarter') quarters = 1.0_dp
       if (s%domain == 'half') quarters = 2.0_dp
    end function reduced_quarters
+
+   !> The relative change of each result estimated that the other model of c makes (else 0).
+   pure function model_changes(c, lad) result(change)
+      type(comparison_t), intent(in) :: c           !< the comparison (its runs done)
+      type(ladder_t), intent(in) :: lad             !< the ladder (its runs, the results estimated)
+      real(dp) :: change(nq), reference(nq)
+      integer :: iq
+      change = 0.0_dp
+      reference = error_scale(lad%runs(c%base)%q)
+      do iq = 1, nq
+         if (lad%estimated(iq)) change(iq) = relative(lad%runs(c%run)%q(iq) - lad%runs(c%base)%q(iq), reference(iq))
+      end do
+   end function model_changes
+
+   !> Whether a result that must meet the target changes by more than the target.
+   pure logical function model_required(change, lad)
+      real(dp), intent(in) :: change(nq)            !< the relative changes (model_changes)
+      type(ladder_t), intent(in) :: lad             !< the ladder (the target, the results targeted)
+      model_required = any(lad%targeted .and. abs(change) > lad%target)
+   end function model_required
+
+   !> The verdict of comparison c: the fuller model when model_required, else the simpler.
+   pure function model_needed(c, change, lad) result(name)
+      type(comparison_t), intent(in) :: c           !< the comparison
+      real(dp), intent(in) :: change(nq)            !< the relative changes (model_changes)
+      type(ladder_t), intent(in) :: lad             !< the ladder (the target, the results targeted)
+      character(len=:), allocatable :: name
+      name = trim(merge(c%richer, c%simpler, model_required(change, lad)))
+   end function model_needed
+
+   !> Why comparison c has no results ('' when it has): none made, or its run skipped,
+   !> stopped or failed.
+   function not_compared(c, runs) result(text)
+      type(comparison_t), intent(in) :: c           !< the comparison
+      type(run_t), intent(in) :: runs(:)            !< the runs
+      character(len=:), allocatable :: text
+      text = trim(c%note)
+      if (c%run == 0) return
+      text = 'the run ' // trim(runs(c%run)%name)
+      if (runs(c%run)%state == state_skipped) then
+         text = text // ' would pass &accuracy max_cpu_s'
+      else if (runs(c%run)%state == state_stopped) then
+         text = text // ' was stopped'
+      else if (runs(c%run)%state /= state_done) then
+         text = text // ' failed (' // trim(runs(c%run)%status) // ')'
+      else
+         text = ''
+      end if
+   end function not_compared
+
+   !> The summary's items of one model compared: what, and the relative change of each result.
+   subroutine comparison_items(items, c, lad)
+      type(summary_item_t), allocatable, intent(inout) :: items(:)   !< the summary
+      type(comparison_t), intent(in) :: c           !< the comparison
+      type(ladder_t), intent(in) :: lad             !< the ladder
+      real(dp) :: change(nq)
+      integer :: iq
+      if (c%run == 0 .or. len(not_compared(c, lad%runs)) > 0) then
+         call summary_text(items, trim(c%what) // '_compared', 'none: ' // not_compared(c, lad%runs))
+         return
+      end if
+      call summary_text(items, trim(c%what) // '_compared', trim(c%compared))
+      call summary_text(items, trim(c%what) // '_compared_at', trim(lad%runs(c%base)%name))
+      change = model_changes(c, lad)
+      call summary_text(items, trim(c%what) // '_needed', model_needed(c, change, lad))
+      do iq = 1, nq
+         if (lad%estimated(iq)) call summary_real(items, trim(result_keys(iq)) // '_change_' // trim(c%what), &
+            trim(result_keys(iq)) // '_change_' // trim(c%what), '-', change(iq), 1.0_dp)
+      end do
+   end subroutine comparison_items
+
+   !> The terminal's lines of one model compared, with its verdict (model_required).
+   subroutine comparison_lines(unit, c, lad, chosen)
+      integer, intent(in) :: unit                   !< standard output
+      type(comparison_t), intent(in) :: c           !< the comparison
+      type(ladder_t), intent(in) :: lad             !< the ladder
+      integer, intent(in) :: chosen                 !< the run chosen
+      real(dp) :: change(nq)
+      character(len=msg_len) :: line
+      character(len=:), allocatable :: head
+      integer :: iq
+      head = 'model: ' // trim(c%what) // ': '
+      if (c%run == 0 .or. len(not_compared(c, lad%runs)) > 0) then
+         write (unit, '(a)') head // 'not compared: ' // not_compared(c, lad%runs)
+         return
+      end if
+      change = model_changes(c, lad)
+      line = ''
+      do iq = 1, nq
+         if (lad%estimated(iq)) write (line, '(a,1x,a,f8.3,a)') trim(line), trim(result_keys(iq)), 100.0_dp*change(iq), ' %'
+      end do
+      write (unit, '(a)') head // trim(c%compared) // ' changes' // trim(line)
+      if (c%base /= chosen) write (unit, '(a)') head // 'compared at run ' // trim(lad%runs(c%base)%name) // &
+         ', not at the run chosen: ' // trim(c%at)
+      if (model_required(change, lad)) then
+         line = head // 'more than the target ' // real_short(lad%target) // ': the scene requires '
+         if (c%chosen_richer) line = trim(line) // ' the model of the run chosen (' // trim(c%richer) // ')'
+         if (.not. c%chosen_richer) line = trim(line) // ' the other model (' // trim(c%richer) // &
+            '): the results above are the simpler model''s (' // trim(c%simpler) // &
+            '), and the fuller one moves them by more than the target'
+      else
+         line = head // 'within the target ' // real_short(lad%target) // ': '
+         if (c%chosen_richer) line = trim(line) // ' the simpler model (' // trim(c%simpler) // ') would do as well'
+         if (.not. c%chosen_richer) line = trim(line) // ' the model of the run chosen (' // trim(c%simpler) // &
+            ') does as well as the fuller one (' // trim(c%richer) // ')'
+      end if
+      write (unit, '(a)') trim(line)
+   end subroutine comparison_lines
+
+   !> err/|value|, 0 when both are 0, huge when only value is.
+   pure real(dp) function relative(err, value)
+      real(dp), intent(in) :: err, value            !< the error or change, the value
+      relative = huge(1.0_dp)
+      if (value /= 0.0_dp) relative = err/abs(value)
+      if (value == 0.0_dp .and. err == 0.0_dp) relative = 0.0_dp
+   end function relative
 
 end module model_comparison
