@@ -20,6 +20,7 @@ program impact
    use scene_settings, only: choose_settings
    use plate_model, only: model_t, build_model, release_assembled, mass_times
    use plate_solver, only: solver_t, solver_init, plate_solve
+   use plate_damage, only: damage_init, damage_update
    use contact_iteration, only: contact_iteration_t, contact_area, contact_start, contact_next, contact_cut, &
       contact_indentation, contact_outcome, contact_report
    use contact_law, only: contact_history_t, contact_commit
@@ -100,6 +101,7 @@ program impact
    ! =====================================================================
    nm = newmark_init(deck%dt)          ! from here on dt lives in nm
    call solver_init(model, nm, solver, stat, errmsg)
+   if (stat == 0) call damage_init(deck, model, deck%damage_model, deck%damage_viscosity, solver%damage, stat, errmsg)
    if (stat /= 0) call fail(errmsg)
    call release_assembled(model)      ! the steps need the factor; M x and K_N D are element by element
    call cpu_time(cpu1)
@@ -179,6 +181,7 @@ program impact
       ! -- accept the step: Newmark update (eq. 20; after sub-steps, the last one's), impactor, contact
       call newmark_update(step_nm, plate%d, d_new, plate%v, plate%a)
       plate%d = d_new;  imp = imp_new
+      call damage_update(solver%damage, model, plate%d, nm%dt)     ! ply damage of the step (src/strength/)
       call record_step(rec, step, model, solver, plate, imp, hist, cit, cit%iterations, cit%converged, stat, errmsg)
       if (stat /= 0) call fail_in_run(errmsg)
       call contact_commit(model%law, hist, cit%alpha)

@@ -37,6 +37,7 @@ module run_recorder
    use restart_io, only: put_tag, take_tag, put_real, take_real, put_int, take_int, put_flag, take_flag, put_reals, &
       take_reals, put_ints, take_ints, put_impactor, take_impactor, put_pattern, take_pattern
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
+   use plate_damage, only: damage_energy, damage_counts
    use progress_line, only: progress_t, progress_start, progress_step, progress_end
    use step_peak, only: peak_track_t, peak_sample, peak_between, zero_crossing, peak_state, peak_restore, &
       peak_state_size
@@ -70,6 +71,7 @@ module run_recorder
       character(len=:), allocatable :: stop_status   !< why (the summary's status)
       integer :: exit_status = 0                 !< the program's exit status then (1)
       integer :: hist_unit = -1                  !< <prefix>_history.dat
+      real(dp) :: u_damage = 0.0_dp, dissipated = 0.0_dp   !< ply damage: strain energy lost, energy dissipated (J)
       integer(int64) :: hist_bytes = 0           !< its length after the last whole row
       type(file_probe_t) :: hist_probe           !< it, open for its length on disk (write_history_row)
       character(len=:), allocatable :: hist_path
@@ -243,6 +245,8 @@ contains
       rec%solves_before = solver%solves
 
       call add_contact_work(rec, plate, imp, cit)
+      if (solver%damage%on) rec%u_damage = damage_energy(solver%damage, model, plate%d)
+      rec%dissipated = solver%damage%dissipated
       fig%w_plate = pattern_mean(cit%pattern, plate%d)
       fig%strain_y = back_face_strain(model, plate%d)
       call update_maxima(rec, fig, model, plate, imp, hist, cit, stat, errmsg)
@@ -422,11 +426,11 @@ contains
 
       row(col_ke_impactor) = 0.5_dp*rec%mass*imp%v**2
       row(col_ke_plate) = plate_kinetic_energy(model, plate%v)
-      row(col_strain_energy) = plate_strain_energy(model, plate%d)
+      row(col_strain_energy) = plate_strain_energy(model, plate%d) + rec%u_damage
       row(col_contact_work) = rec%contact_work
       row(col_contact_energy) = rec%contact_energy
       row(col_energy_error) = rec%e0 - (row(col_ke_impactor) + row(col_ke_plate) + row(col_strain_energy) &
-                                        + rec%contact_energy)
+                                        + rec%contact_energy + rec%dissipated)
       rec%max_energy_error = nan_max(rec%max_energy_error, abs(row(col_energy_error)))
       rec%energy_created = nan_max(rec%energy_created, -row(col_energy_error))
       rec%energy_lost = nan_max(rec%energy_lost, row(col_energy_error))
@@ -617,6 +621,11 @@ contains
       if (len_trim(deck%mesh_chosen) > 0) call summary_text(s, 'mesh_chosen', after_equals(deck%mesh_chosen))
       call results_closing(rec%h5)                  ! <prefix>.h5 open for its last words
       call damage_close(rec%damage, model, s, rec%h5, dstat, dtext)
+      if (rec%damage%active) call summary_text(s, 'damage_model', solver%damage%why)   ! src/strength/plate_damage.f90
+      if (solver%damage%on) then
+         call summary_real(s, 'damage_dissipated_J', 'damage_dissipated', 'J', solver%damage%dissipated, 1.0_dp)
+         call summary_text(s, 'damaged_ply_points', damage_counts(solver%damage))
+      end if
       call summary_integer(s, 'warnings', rec%warnings)
       call summary_real(s, 'cpu_s', 'cpu', 's', cpu_s, 1.0_dp)
 

@@ -81,7 +81,7 @@ contains
          rf = 2.0_dp*card%g(m)*r*r/(lc*w(m))       ! independent of the strain's size
          if (rf <= 1.0_dp) then           ! strengths reduced by sqrt(rf): loading factor r/sqrt(rf), r_f = 1
             if (r*r <= rf) cycle modes
-            snapback(m) = .true.
+            snapback(m) = d(m) < 1.0_dp      ! reported at the increment it acts
             dnew = 1.0_dp
          else
             if (r <= 1.0_dp) cycle modes
