@@ -102,6 +102,8 @@ program impact
    nm = newmark_init(deck%dt)          ! from here on dt lives in nm
    call solver_init(model, nm, solver, stat, errmsg)
    if (stat == 0) call damage_init(deck, model, deck%damage_model, deck%damage_viscosity, solver%damage, stat, errmsg)
+   if (stat == 0 .and. restarting .and. solver%damage%on) call fail('--restart: a restart point does not keep the ' &
+      // 'ply damage (&damage): run the deck again from the start')
    if (stat /= 0) call fail(errmsg)
    call release_assembled(model)      ! the steps need the factor; M x and K_N D are element by element
    call cpu_time(cpu1)
