@@ -38,6 +38,8 @@ module run_recorder
       take_reals, put_ints, take_ints, put_impactor, take_impactor, put_pattern, take_pattern
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
    use plate_damage, only: damage_energy, damage_counts
+   use ply_damage, only: ndmode, dmode_names
+   use hdf5_io, only: h5io_write
    use progress_line, only: progress_t, progress_start, progress_step, progress_end
    use step_peak, only: peak_track_t, peak_sample, peak_between, zero_crossing, peak_state, peak_restore, &
       peak_state_size
@@ -608,7 +610,7 @@ contains
       character(len=*), intent(inout) :: errmsg     !< reason on failure (the first)
       type(summary_item_t), allocatable :: s(:)
       character(len=msg_len) :: text, dtext
-      integer :: ios, dstat
+      integer :: ios, dstat, m
 
       call progress_end(rec%progress)
       call closing_warnings(rec, model)
@@ -625,6 +627,12 @@ contains
       if (solver%damage%on) then
          call summary_real(s, 'damage_dissipated_J', 'damage_dissipated', 'J', solver%damage%dissipated, 1.0_dp)
          call summary_text(s, 'damaged_ply_points', damage_counts(solver%damage))
+         do m = 1, ndmode            ! /strength/ply_damage_<mode> (nply, points), as /strength/damage_map
+            associate (d => solver%damage%d(m, :, :, :))
+               if (rec%h5%active .and. dstat == 0) call h5io_write(rec%h5%fid, 'strength/ply_damage_' &
+                  // trim(dmode_names(m)), reshape(d, [size(d, 1), size(d) / size(d, 1)]), dstat, dtext)
+            end associate
+         end do
       end if
       call summary_integer(s, 'warnings', rec%warnings)
       call summary_real(s, 'cpu_s', 'cpu', 's', cpu_s, 1.0_dp)

@@ -13,7 +13,7 @@ module plate_damage
    use kinds, only: dp, pi
    use materials, only: lamina_t, lamina_qbar_shear
    use failure_criteria, only: strength_t
-   use ply_damage, only: damage_card_t, ply_damage_step, damaged_q, ndmode
+   use ply_damage, only: damage_card_t, ply_damage_step, damaged_q, ndmode, dmode_names
    use shape_functions, only: nen
    use mesh, only: nfe
    use plate_model, only: model_t, gather_element, scatter_add_element
@@ -279,14 +279,12 @@ contains
    function damage_counts(dmg) result(text)
       type(plate_damage_t), intent(in) :: dmg      !< the state
       character(len=:), allocatable :: text
-      character(len=*), parameter :: modes(ndmode) = [character(len=18) :: 'fibre_tension', 'fibre_compression', &
-                                                      'matrix_tension', 'matrix_compression']
       character(len=16) :: n
       integer :: m
       text = ''
       do m = 1, ndmode
          write (n, '(i0)') count(dmg%d(m, :, :, :) > 0.0_dp)
-         text = text // trim(modes(m)) // ' ' // trim(n) // ', '
+         text = text // trim(dmode_names(m)) // ' ' // trim(n) // ', '
       end do
       write (n, '(i0)') dmg%snapback_points
       text = text // 'strengths reduced against snap-back (Maimi 2007) ' // trim(n)

@@ -14,11 +14,13 @@ module ply_damage
    use failure_criteria, only: strength_t
    implicit none
    private
-   public :: damage_card_t, ply_damage_step, damaged_q, ndmode, dmode_ft, dmode_fc, dmode_mt, dmode_mc
+   public :: damage_card_t, ply_damage_step, damaged_q, ndmode, dmode_ft, dmode_fc, dmode_mt, dmode_mc, dmode_names
 
    !> The four damage modes, in the order of d(:): fibre tension and
    !> compression, matrix tension and compression.
    integer, parameter :: dmode_ft = 1, dmode_fc = 2, dmode_mt = 3, dmode_mc = 4, ndmode = 4
+   character(len=18), parameter :: dmode_names(ndmode) = [character(len=18) :: 'fibre_tension', &
+      'fibre_compression', 'matrix_tension', 'matrix_compression']
 
    !> What the kernel needs of a ply's material.
    type :: damage_card_t
