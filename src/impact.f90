@@ -17,6 +17,7 @@ program impact
    use contact_iteration, only: step_state_t, contact_iteration_t, step_start, step_accept, contact_start, &
       contact_next, contact_cut, contact_indentation, contact_outcome, contact_report
    use contact_law, only: contact_commit
+   use plate_damage, only: damage_init, damage_update
    use contact_load, only: pattern_load, pattern_mean
    use substeps, only: fast_step_or_substeps
    use newmark, only: newmark_t, impactor_t, newmark_init, newmark_predictor, impactor_moved
@@ -69,6 +70,9 @@ program impact
 
    ! == The left-hand matrix of eq. (19), K_L + 4/dt^2 M, factored once (Akay's constant coefficients)
    call solver_init(model, nm, solver, stat, errmsg)
+   if (stat == 0) call damage_init(deck, model, deck%damage_model, deck%damage_viscosity, solver%damage, stat, errmsg)
+   if (stat == 0 .and. restarting .and. solver%damage%on) call fail('--restart: a restart point does not keep the ' &
+      // 'ply damage (&damage): run the deck again from the start')
    if (stat /= 0) call fail(errmsg)
    call release_assembled(model)      ! the steps need the factor; M x and K_N D are element by element
    call cpu_time(cpu1)
@@ -137,6 +141,7 @@ program impact
       ! -- accept the step: Newmark update (eq. 20; after sub-steps, the last one's), impactor; record; contact
       call step_accept(st, step_nm, model, commit=.false.)
       call record_step(rec, step, model, solver, st, stat, errmsg)
+      call damage_update(solver%damage, model, st%plate%d, nm%dt)     ! ply damage of the step (src/strength/)
       if (stat /= 0) call fail_in_run(errmsg)
       call contact_commit(model%law, st%hist, st%cit%alpha)
       call trace_step(tr, step, t, st%imp, .true.)

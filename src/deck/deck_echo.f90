@@ -25,6 +25,7 @@ contains
       type(deck_t), intent(in) :: deck              !< the deck
       select case (trim(group))
       case ('strength'); group_applies = strength_given(deck) .or. toughness_given(deck)
+      case ('damage');   group_applies = strength_given(deck)
       case ('accuracy'); group_applies = accuracy_wanted(deck)
       case default;      group_applies = group_applies_kind(group, deck%analysis_kind)
       end select

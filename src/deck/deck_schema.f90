@@ -46,8 +46,8 @@ module deck_schema
    end type deck_var_t
 
    !> The namelist groups, in the order of the echo and the table of docs/DECK.md.
-   character(len=8), parameter :: deck_groups(13) = [character(len=8) :: 'plate', 'lamina', 'laminate', &
-      'strength', 'impactor', 'contact', 'mesh', 'boundary', 'analysis', 'load', 'modes', 'output', 'accuracy']
+   character(len=8), parameter :: deck_groups(14) = [character(len=8) :: 'plate', 'lamina', 'laminate', &
+      'strength', 'damage', 'impactor', 'contact', 'mesh', 'boundary', 'analysis', 'load', 'modes', 'output', 'accuracy']
 
    !> THE LIST. Paper's values as defaults where the paper gives one (Choi,
    !> Hong & Lee 1991: section 2.4, Tables 1-3); SI units.
@@ -92,13 +92,18 @@ module deck_schema
          // 'toughness (ENF test, ASTM D7905); gives the delamination threshold load (Davies & Zhang 1995); ' &
          // 'not given: not computed'), &
       deck_var_t('strength', 'gft', kind_real, 'J/m^2', '', '[1, 1e6]', 'ply fracture energy, fibre tension ' &
-         // '(compact tension); needs the six strengths; read and checked, not used yet'), &
+         // '(compact tension); needs the six strengths; used by &damage'), &
       deck_var_t('strength', 'gfc', kind_real, 'J/m^2', '', '[1, 1e6]', 'ply fracture energy, fibre ' &
-         // 'compression (compact compression); needs the six strengths; not used yet'), &
+         // 'compression (compact compression); needs the six strengths; used by &damage'), &
       deck_var_t('strength', 'gmt', kind_real, 'J/m^2', '', '[1, 1e6]', 'ply fracture energy, matrix tension ' &
-         // '(about G_Ic); needs the six strengths; not used yet'), &
+         // '(about G_Ic); needs the six strengths; used by &damage'), &
       deck_var_t('strength', 'gmc', kind_real, 'J/m^2', '', '[1, 1e6]', 'ply fracture energy, matrix ' &
-         // 'compression (about G_IIc); needs the six strengths; not used yet'), &
+         // 'compression (about G_IIc); needs the six strengths; used by &damage'), &
+      deck_var_t('damage', 'model', kind_word, '-', 'auto', 'auto | hashin | none', 'progressive ply damage: ' &
+         // '''hashin'' (Hashin onset, crack-band softening), ''none'', or ''auto'' (hashin when &strength gives ' &
+         // 'the six strengths and gft, gfc, gmt, gmc)'), &
+      deck_var_t('damage', 'viscosity', kind_real, 's', '0', '[0, 1]', 'viscous regularisation of the damage ' &
+         // '(Lapczyk & Hurtado 2007); 0: none'), &
       deck_var_t('impactor', 'mass', kind_real, 'kg', '0.243', '[1e-6, 1e4]', 'impactor mass'), &
       deck_var_t('impactor', 'velocity', kind_real, 'm/s', '3.0', '(0, 1e3]', 'impact velocity, towards the plate'), &
       deck_var_t('impactor', 'diameter', kind_real, 'm', '0.0127', '[1e-5, 10]', &
@@ -213,6 +218,9 @@ module deck_schema
       real(dp) :: xt = 0, xc = 0, yt = 0, yc = 0, s12 = 0, s23 = 0
       real(dp) :: g1c = 0, g2c = 0, gft = 0, gfc = 0, gmt = 0, gmc = 0   !< NaN: not given (is_given)
       character(len=:), allocatable :: criterion
+      ! &damage
+      character(len=:), allocatable :: damage_model
+      real(dp) :: damage_viscosity = 0
       ! &impactor
       real(dp) :: mass = 0, velocity = 0, diameter = 0, x0 = 0, y0 = 0
       ! &contact
@@ -379,6 +387,8 @@ contains
       case ('strength.gfc');               call bind_real(deck%gfc, v, set)
       case ('strength.gmt');               call bind_real(deck%gmt, v, set)
       case ('strength.gmc');               call bind_real(deck%gmc, v, set)
+      case ('damage.model');               call bind_text(deck%damage_model, v, set)
+      case ('damage.viscosity');           call bind_real(deck%damage_viscosity, v, set)
       case ('impactor.mass');              call bind_real(deck%mass, v, set)
       case ('impactor.velocity');          call bind_real(deck%velocity, v, set)
       case ('impactor.diameter');          call bind_real(deck%diameter, v, set)

@@ -28,6 +28,9 @@ module run_recorder
    use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_tick, &
       results_flush, results_leave, results_closing, results_finish
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
+   use plate_damage, only: damage_energy, damage_counts
+   use ply_damage, only: ndmode, dmode_names
+   use hdf5_io, only: h5io_write
    use progress_line, only: progress_t, progress_start, progress_step, progress_end
    use step_peak, only: peak_track_t, peak_sample, peak_between, zero_crossing
    implicit none
@@ -54,6 +57,7 @@ module run_recorder
       character(len=:), allocatable :: stop_status   !< why (the summary's status)
       integer :: exit_status = 0                 !< the program's exit status then (1)
       integer :: hist_unit = -1                  !< <prefix>_history.dat
+      real(dp) :: u_damage = 0.0_dp, dissipated = 0.0_dp   !< ply damage: strain energy lost, energy dissipated (J)
       integer(int64) :: hist_bytes = 0           !< its length after the last whole row
       type(file_probe_t) :: hist_probe           !< it, open for its length on disk (write_history_row)
       character(len=:), allocatable :: hist_path
@@ -209,6 +213,8 @@ contains
       rec%solves_before = solver%solves
       associate (plate => st%plate, imp => st%imp)
       call add_contact_work(rec, st)
+      if (solver%damage%on) rec%u_damage = damage_energy(solver%damage, model, plate%d)
+      rec%dissipated = solver%damage%dissipated
       fig%w_plate = pattern_mean(st%cit%pattern, plate%d)
       fig%strain_y = back_face_strain(model, plate%d)
       call update_maxima(rec, fig, model, st, stat, errmsg)
@@ -351,11 +357,11 @@ contains
       real(dp), intent(inout) :: row(nhist_strength)     !< the history row: its energy columns set
       row(col_ke_impactor) = 0.5_dp*st%imp%mass*st%imp%v**2
       row(col_ke_plate) = plate_kinetic_energy(model, st%plate%v)
-      row(col_strain_energy) = plate_strain_energy(model, st%plate%d)
+      row(col_strain_energy) = plate_strain_energy(model, st%plate%d) + rec%u_damage
       row(col_contact_work) = rec%contact_work
       row(col_contact_energy) = rec%contact_energy
       row(col_energy_error) = rec%e0 - (row(col_ke_impactor) + row(col_ke_plate) + row(col_strain_energy) &
-                                        + rec%contact_energy)
+                                        + rec%contact_energy + rec%dissipated)
       rec%max_energy_error = nan_max(rec%max_energy_error, abs(row(col_energy_error)))
       rec%energy_created = nan_max(rec%energy_created, -row(col_energy_error))
       rec%energy_lost = nan_max(rec%energy_lost, row(col_energy_error))
@@ -509,7 +515,7 @@ contains
       character(len=*), intent(inout) :: errmsg     !< reason on failure (the first)
       type(summary_item_t), allocatable :: s(:)
       character(len=msg_len) :: text, dtext
-      integer :: ios, dstat
+      integer :: ios, dstat, m
       call progress_end(rec%progress)
       call closing_warnings(rec, model)
       call run_summary(rec, solver, st, s)
@@ -521,6 +527,17 @@ contains
       if (len_trim(deck%mesh_chosen) > 0) call summary_text(s, 'mesh_chosen', after_equals(deck%mesh_chosen))
       call results_closing(rec%h5)                  ! <prefix>.h5 open for its last words
       call damage_close(rec%damage, model, s, rec%h5, dstat, dtext)
+      if (rec%damage%active) call summary_text(s, 'damage_model', solver%damage%why)   ! src/strength/plate_damage.f90
+      if (solver%damage%on) then
+         call summary_real(s, 'damage_dissipated_J', 'damage_dissipated', 'J', solver%damage%dissipated, 1.0_dp)
+         call summary_text(s, 'damaged_ply_points', damage_counts(solver%damage))
+         do m = 1, ndmode            ! /strength/ply_damage_<mode> (nply, points), as /strength/damage_map
+            associate (d => solver%damage%d(m, :, :, :))
+               if (rec%h5%active .and. dstat == 0) call h5io_write(rec%h5%fid, 'strength/ply_damage_' &
+                  // trim(dmode_names(m)), reshape(d, [size(d, 1), size(d) / size(d, 1)]), dstat, dtext)
+            end associate
+         end do
+      end if
       call summary_integer(s, 'warnings', rec%warnings)
       call summary_real(s, 'cpu_s', 'cpu', 's', cpu_s, 1.0_dp)
       if (rec%hist_unit >= 0) close (rec%hist_unit, iostat=ios)

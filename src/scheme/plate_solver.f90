@@ -21,6 +21,7 @@ module plate_solver
       global_release
    use contact_load, only: load_pattern_t, pattern_mean
    use fixed_point, only: fp_guard_t, fp_start, fp_check, fp_next, fp_report, fp_converged, fp_iterating
+   use plate_damage, only: plate_damage_t, damage_force
    implicit none
    private
    public :: solver_t, solver_init, solver_refactor, plate_solve, solve_once, iteration_end, contact_response, &
@@ -54,6 +55,7 @@ module plate_solver
       !> scheme 'fast': the sub-steps the last time step was taken in
       !> (0: the step itself; src/scheme/substeps.f90), set every step
       integer :: substeps = 0
+      type(plate_damage_t) :: damage           !< ply damage: its force K_D D joins K_N D (src/strength/plate_damage.f90)
    end type solver_t
 
 contains
@@ -144,7 +146,7 @@ contains
    end subroutine plate_solve
 
    !> One solution of eq. (19) from the iterate d: rhs = (K_L + 4/dt^2 M)^-1
-   !> (load - K_N(d) d), one back substitution, counted.
+   !> (load - K_N(d) d - K_D(d) d), one back substitution, counted.
    subroutine solve_once(solver, model, load, d, rhs, stat, errmsg)
       type(solver_t), intent(inout) :: solver   !< solver (counts solves)
       type(model_t), intent(in) :: model        !< model
@@ -155,6 +157,7 @@ contains
       character(len=*), intent(inout) :: errmsg !< reason on failure
       real(dp) :: fn(size(d))
       call nonlinear_force(model, d, fn)
+      call damage_force(solver%damage, model, d, fn)
       rhs = load - fn
       call global_solve(solver%keff, rhs, stat, errmsg)
       solver%solves = solver%solves + 1

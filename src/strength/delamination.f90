@@ -166,8 +166,8 @@ contains
       end if
       if (asked) write (unit, '(a)') lead // 'out of scope      delamination growth and shape, fibre kinking, ' &
          // 'through-thickness crushing under the impactor, compression after impact (they need stacked ' &
-         // 'plates with cohesive interfaces, or solids): the ply and interface indices say where damage ' &
-         // 'starts, not what it becomes'
+         // 'plates with cohesive interfaces, or solids): the interface indices say where delamination ' &
+         // 'starts, not what it becomes; ply damage (&damage) softens the plies in their plane only'
    end subroutine write_delamination_scene
 
 end module delamination
