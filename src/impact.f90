@@ -24,7 +24,6 @@ program impact
    use run_recorder, only: record_t, record_open, record_step, record_close
    use step_trace, only: trace_t, trace_parse, trace_step, trace_iteration
    use run_report, only: echo_model, write_answer, usage_line, say_large_chosen_mesh
-   use build_info, only: code_version
    use result_files, only: results_claim_t, release_results
    use other_analyses, only: run_other_analysis
    use process_stop, only: catch_stop_signals, stop_after_step, stop_signal_caught, &
@@ -44,7 +43,7 @@ program impact
    type(record_t) :: rec                   ! the run's record: history rows, HDF5, summary maxima, warnings
    type(trace_t) :: tr                     ! --trace: the steps whose iterations are printed
    type(results_claim_t) :: claim          ! the result files this run owns (claimed before any work)
-   real(dp) :: t, cpu0, cpu1, c_plate      ! the step's end (s); cpu time (s); the plate's compliance (m/N)
+   real(dp) :: cpu0, cpu1, c_plate         ! cpu time (s); the plate's compliance over a step (m/N)
    integer :: step, nstep, first_step, ic  ! the step, their number, the first's predecessor, contact iteration
    integer :: stat                         ! 0, or a failure of the call just made
    logical :: ok, check_only, restarting   ! the step converged; --check; --restart from a restart point
@@ -71,8 +70,6 @@ program impact
    ! == The left-hand matrix of eq. (19), K_L + 4/dt^2 M, factored once (Akay's constant coefficients)
    call solver_init(model, nm, solver, stat, errmsg)
    if (stat == 0) call damage_init(deck, model, deck%damage_model, deck%damage_viscosity, solver%damage, stat, errmsg)
-   if (stat == 0 .and. restarting .and. solver%damage%on) call fail('--restart: a restart point does not keep the ' &
-      // 'ply damage (&damage): run the deck again from the start')
    if (stat /= 0) call fail(errmsg)
    call release_assembled(model)      ! the steps need the factor; M x and K_N D are element by element
    call cpu_time(cpu1)
@@ -91,7 +88,7 @@ program impact
       if (stat /= 0) call fail(errmsg)
       first_step = rec%steps;  cpu0 = cpu0 - rec%cpu_before    ! the cpu time of the run before it stopped counts
    else
-      step = 0;  t = 0.0_dp;  first_step = 0;  c_plate = -1.0_dp
+      step = 0;  first_step = 0;  c_plate = -1.0_dp
       ! -- scheme 'paper': the plate's compliance over a step, for the summary's fixed-point slope
       if (deck%scheme == 'paper') call plate_compliance(solver, st%cit%pattern, c_plate, stat, errmsg)
       if (stat == 0) call record_open(rec, deck, model, nm, st%imp, c_plate, stat, errmsg)
@@ -101,8 +98,7 @@ program impact
 
    ! == Time integration (Fig. 3): scheme 'fast' in one call (src/scheme/fast_scheme.f90), or the paper's boxes
    time_steps: do step = first_step + 1, nstep
-      t = real(step, dp)*nm%dt
-      call trace_step(tr, step, t, st%imp, .false.)
+      call trace_step(tr, step, step*nm%dt, st%imp, .false.)
       ! -- {b} of eq. (20) and M{b}, fixed for the whole step
       call mass_times(model, newmark_predictor(nm, st%plate%d, st%plate%v, st%plate%a), st%mb)
       if (deck%scheme == 'fast') then
@@ -140,11 +136,11 @@ program impact
       end if
       ! -- accept the step: Newmark update (eq. 20; after sub-steps, the last one's), impactor; record; contact
       call step_accept(st, step_nm, model, commit=.false.)
-      call record_step(rec, step, model, solver, st, stat, errmsg)
       call damage_update(solver%damage, model, st%plate%d, nm%dt)     ! ply damage of the step (src/strength/)
+      call record_step(rec, step, model, solver, st, stat, errmsg)
       if (stat /= 0) call fail_in_run(errmsg)
       call contact_commit(model%law, st%hist, st%cit%alpha)
-      call trace_step(tr, step, t, st%imp, .true.)
+      call trace_step(tr, step, step*nm%dt, st%imp, .true.)
       ! -- a divergence, or a warning with stop_on_warning; a stop signal; a restart point once a second
       if (rec%stop) call finish((rec%stop_status), rec%exit_status)   ! (a copy: finish sets it)
       if (stop_signal_caught() > 0) call finish('stopped by signal ' // int_str(stop_signal_caught()) // ' at step ' &
@@ -165,7 +161,7 @@ contains
       integer :: accuracy_exit            ! the exit status of an accuracy run
       call parse_command_line(opts, stat, errmsg)
       if (stat /= 0) call bad_usage(errmsg)
-      call write_answer(opts%action, output_unit, code_version)     ! --help, --version, --schema, --deck-table
+      call write_answer(opts%action, output_unit)     ! --help, --version, --schema, --deck-table
       if (opts%action /= 'run') stop
       check_only = opts%check
       restarting = opts%restart .and. .not. check_only
@@ -227,7 +223,7 @@ contains
       character(len=*), intent(in), optional :: status
       character(len=80) :: where
       character(len=:), allocatable :: note
-      write (where, '(a,i0,a,es11.4,a)') 'failed at step ', step, ' (t = ', t, ' s)'
+      write (where, '(a,i0,a,es11.4,a)') 'failed at step ', step, ' (t = ', step*nm%dt, ' s)'
       note = '; results up to the last step are in ' // deck%prefix // '_history.dat'
       if (present(status)) where = status            ! before the first step: no results
       if (present(status)) note = ': no step ran'

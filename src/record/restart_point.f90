@@ -195,6 +195,10 @@ contains
       logical :: h5
       integer :: step
       real(dp) :: cpu_s
+      if (solver%damage%on) then
+         stat = 1;  errmsg = '--restart: a restart point does not keep the ply damage (&damage): run the deck again'
+         return
+      end if
       path = restart_file(deck)
       step = 0;  cpu_s = 0.0_dp
       call open_point(path, u, stat, errmsg)

@@ -28,9 +28,7 @@ module run_recorder
    use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_tick, &
       results_flush, results_leave, results_closing, results_finish
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
-   use plate_damage, only: damage_energy, damage_counts
-   use ply_damage, only: ndmode, dmode_names
-   use hdf5_io, only: h5io_write
+   use plate_damage, only: damage_energy
    use progress_line, only: progress_t, progress_start, progress_step, progress_end
    use step_peak, only: peak_track_t, peak_sample, peak_between, zero_crossing
    implicit none
@@ -515,7 +513,7 @@ contains
       character(len=*), intent(inout) :: errmsg     !< reason on failure (the first)
       type(summary_item_t), allocatable :: s(:)
       character(len=msg_len) :: text, dtext
-      integer :: ios, dstat, m
+      integer :: ios, dstat
       call progress_end(rec%progress)
       call closing_warnings(rec, model)
       call run_summary(rec, solver, st, s)
@@ -526,18 +524,7 @@ contains
       if (len_trim(deck%dt_chosen) > 0) call summary_text(s, 'dt_chosen', after_equals(deck%dt_chosen))
       if (len_trim(deck%mesh_chosen) > 0) call summary_text(s, 'mesh_chosen', after_equals(deck%mesh_chosen))
       call results_closing(rec%h5)                  ! <prefix>.h5 open for its last words
-      call damage_close(rec%damage, model, s, rec%h5, dstat, dtext)
-      if (rec%damage%active) call summary_text(s, 'damage_model', solver%damage%why)   ! src/strength/plate_damage.f90
-      if (solver%damage%on) then
-         call summary_real(s, 'damage_dissipated_J', 'damage_dissipated', 'J', solver%damage%dissipated, 1.0_dp)
-         call summary_text(s, 'damaged_ply_points', damage_counts(solver%damage))
-         do m = 1, ndmode            ! /strength/ply_damage_<mode> (nply, points), as /strength/damage_map
-            associate (d => solver%damage%d(m, :, :, :))
-               if (rec%h5%active .and. dstat == 0) call h5io_write(rec%h5%fid, 'strength/ply_damage_' &
-                  // trim(dmode_names(m)), reshape(d, [size(d, 1), size(d) / size(d, 1)]), dstat, dtext)
-            end associate
-         end do
-      end if
+      call damage_close(rec%damage, model, solver%damage, s, rec%h5, dstat, dtext)
       call summary_integer(s, 'warnings', rec%warnings)
       call summary_real(s, 'cpu_s', 'cpu', 's', cpu_s, 1.0_dp)
       if (rec%hist_unit >= 0) close (rec%hist_unit, iostat=ios)

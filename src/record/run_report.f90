@@ -5,6 +5,7 @@
 !> laminate, and the scene report of src/model/scene_model.f90).
 module run_report
    use kinds, only: dp
+   use build_info, only: code_version
    use number_text, only: int_str, real_short
    use deck_schema, only: deck_t, deck_groups, is_given, strength_given, toughness_given
    use deck_echo, only: echo_deck, write_schema, write_deck_table
@@ -110,13 +111,12 @@ contains
 
    !> The answer of an option that asks instead of running (command_line's
    !> action): --help, --version, --schema, --deck-table; nothing for 'run'.
-   subroutine write_answer(action, u, version)
+   subroutine write_answer(action, u)
       character(len=*), intent(in) :: action     !< 'help', 'version', 'schema', 'deck-table' or 'run'
       integer, intent(in) :: u                   !< open formatted unit
-      character(len=*), intent(in) :: version    !< the build's version (src/system/build_info.f90)
       select case (action)
       case ('help');       call usage(u)
-      case ('version');    call version_text(u, version)
+      case ('version');    call version_text(u, code_version)
       case ('schema');     call write_schema(u)
       case ('deck-table'); call write_deck_table(u)
       end select

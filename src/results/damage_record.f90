@@ -21,6 +21,8 @@ module damage_record
    use results_hdf5, only: results_file_t
    use hdf5_io, only: h5io_group, h5io_set_attr, h5io_write
    use xdmf_plies, only: ply_maps_t, plies_write
+   use plate_damage, only: plate_damage_t, damage_counts
+   use ply_damage, only: ndmode, dmode_names
    use delamination, only: delamination_t, delamination_open, delamination_force, delamination_point, impact_regime
    implicit none
    private
@@ -257,9 +259,10 @@ contains
    !> failure_mode, failure_ply, failure_x_mm, failure_y_mm say where
    !> damage started (the onset) or, when no index reached 1, where the
    !> largest one was.
-   subroutine damage_close(dmg, model, s, rf, stat, errmsg)
+   subroutine damage_close(dmg, model, pd, s, rf, stat, errmsg)
       type(damage_t), intent(in) :: dmg             !< the record
       type(model_t), intent(in) :: model            !< the model
+      type(plate_damage_t), intent(in) :: pd        !< the plies' damage (src/strength/plate_damage.f90)
       type(summary_item_t), allocatable, intent(inout) :: s(:)   !< the summary, items appended
       type(results_file_t), intent(inout) :: rf     !< the results file (written when active; its XDMF file
                                                     !< then shows the ply fields, src/results/xdmf_plies.f90)
@@ -267,7 +270,7 @@ contains
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=3), parameter :: comp(5) = [character(len=3) :: 's11', 's22', 't12', 't23', 't13']
       real(dp), allocatable :: xy(:,:)
-      integer :: ply, point, mode, c
+      integer :: ply, point, mode, c, m
       stat = 0
       ! -- delamination (src/strength/delamination.f90): regime, thresholds
       call summary_text(s, 'impact_regime', impact_regime(dmg%delam%ratio))
@@ -310,6 +313,17 @@ contains
          call place('delamination', dmg%delam%max_point)
       end if
       if (rf%active) call damage_write(dmg, model, xy, rf, stat, errmsg)
+      ! -- ply damage: the model used and why; energy dissipated; /strength/ply_damage_<mode> (nply, points)
+      call summary_text(s, 'damage_model', pd%why)
+      if (.not. pd%on) return
+      call summary_real(s, 'damage_dissipated_J', 'damage_dissipated', 'J', pd%dissipated, 1.0_dp)
+      call summary_text(s, 'damaged_ply_points', damage_counts(pd))
+      do m = 1, ndmode
+         associate (d => pd%d(m, :, :, :))
+            if (rf%active .and. stat == 0) call h5io_write(rf%fid, 'strength/ply_damage_' // trim(dmode_names(m)), &
+                                                           reshape(d, [size(d, 1), size(d) / size(d, 1)]), stat, errmsg)
+         end associate
+      end do
 
    contains
 
