@@ -1,8 +1,7 @@
-!> The deck as people read it, from the one schema (src/deck/deck_schema.f90):
-!> the echo of a run's effective values (terminal, the head of every result
-!> file, /deck of <prefix>.h5), the deck table of docs/DECK.md (make deck-table,
-!> impact --deck-table), the tab-separated schema (impact --schema, read
-!> by tools/impact_files.py) and the schema in the words of input_deck's messages.
+!> The deck as people read it, from the schema (deck_schema.f90): the echo of
+!> a run's values (terminal, result files, /deck of <prefix>.h5), the table of
+!> docs/DECK.md (impact --deck-table), the tab-separated schema (impact
+!> --schema) and the schema in the words of input_deck's messages.
 module deck_echo
    use kinds, only: dp
    use number_text, only: real_str, int_str, list_str
@@ -19,7 +18,8 @@ module deck_echo
 contains
 
    !> True when the echo shows the group: &strength with its strengths or a
-   !> toughness, &accuracy for an accuracy run, the others by group_applies_kind.
+   !> toughness, &damage with the strengths, &accuracy for an accuracy run,
+   !> &contact, &load and &modes for the analyses that use them.
    pure logical function group_applies(group, deck)
       character(len=*), intent(in) :: group         !< the group, without '&'
       type(deck_t), intent(in) :: deck              !< the deck
@@ -27,27 +27,15 @@ contains
       case ('strength'); group_applies = strength_given(deck) .or. toughness_given(deck)
       case ('damage');   group_applies = strength_given(deck)
       case ('accuracy'); group_applies = accuracy_wanted(deck)
-      case default;      group_applies = group_applies_kind(group, deck%analysis_kind)
+      case ('contact');  group_applies = deck%analysis_kind == 'impact'
+      case ('load');     group_applies = deck%analysis_kind == 'static' .or. deck%analysis_kind == 'pressure'
+      case ('modes');    group_applies = deck%analysis_kind == 'modes'
+      case default;      group_applies = .true.
       end select
    end function group_applies
 
-   !> True when the group concerns an analysis of this kind: &load static and
-   !> pressure, &modes modes, &contact the impact.
-   pure logical function group_applies_kind(group, analysis_kind)
-      character(len=*), intent(in) :: group         !< the group, without '&'
-      character(len=*), intent(in) :: analysis_kind !< &analysis kind
-      select case (trim(group))
-      case ('contact');  group_applies_kind = analysis_kind == 'impact'
-      case ('load');     group_applies_kind = analysis_kind == 'static' .or. analysis_kind == 'pressure'
-      case ('modes');    group_applies_kind = analysis_kind == 'modes'
-      case default;      group_applies_kind = .true.
-      end select
-   end function group_applies_kind
-
-   !> The value of entry iv as a deck would give it ('0.15', "'clamped'",
-   !> '.true.', '0, 45, ...'), or '(not given)'; reals with the fewest
-   !> digits that read back to the same double, so two texts are equal
-   !> exactly when the values are (the restart point's deck check).
+   !> Entry iv's value as a deck gives it ('0.15', "'clamped'", '.true.'), or
+   !> '(not given)'; reals with the fewest digits that read back the same double.
    function deck_value_text(deck, iv) result(text)
       type(deck_t), intent(in) :: deck              !< the deck
       integer, intent(in) :: iv                     !< entry of deck_vars
@@ -78,8 +66,7 @@ contains
       if (trim(deck_vars(iv)%unit) /= '-') piece = piece // ' ' // trim(deck_vars(iv)%unit)
    end function echo_piece
 
-   !> Writes the effective values of `deck`, 'name = value unit', by group
-   !> (those the analysis uses), each line led by `lead` ('# ' in the files).
+   !> Writes the deck's values, 'name = value unit', by group, each line led by `lead`.
    subroutine echo_deck(deck, unit, lead)
       type(deck_t), intent(in) :: deck              !< the deck to echo
       integer, intent(in) :: unit                   !< open formatted unit
@@ -94,8 +81,7 @@ contains
       end do
    end subroutine echo_deck
 
-   !> The echo's lines of one group: '&group' in the group column of the
-   !> first, then its variables, as many to a line as echo_width holds.
+   !> The echo's lines of one group, as many variables to a line as echo_width holds.
    subroutine echo_group(deck, group, unit, lead)
       type(deck_t), intent(in) :: deck              !< the deck to echo
       character(len=*), intent(in) :: group         !< the group, without '&'
@@ -119,14 +105,13 @@ contains
          line = line // piece
       end do vars
       write (unit, '(a)') lead // column // line
-      ! -- settings chosen from the scene (src/model/scene_settings.f90), one line each
+      ! -- settings chosen from the scene, one line each
       column = ''
       if (group == 'analysis' .and. len_trim(deck%dt_chosen) > 0) write (unit, '(a)') lead // column // trim(deck%dt_chosen)
       if (group == 'mesh' .and. len_trim(deck%mesh_chosen) > 0) write (unit, '(a)') lead // column // trim(deck%mesh_chosen)
    end subroutine echo_group
 
-   !> The deck table of docs/DECK.md (Markdown): group, variable, unit, default,
-   !> meaning, from the schema (make deck-table).
+   !> The deck table of docs/DECK.md (Markdown), from the schema.
    subroutine write_deck_table(unit)
       integer, intent(in) :: unit                   !< open formatted unit
       integer :: iv
@@ -163,8 +148,7 @@ contains
       end function default_text
    end subroutine write_deck_table
 
-   !> The schema as tab-separated lines, one per variable: group, name,
-   !> kind, unit, default, range (impact --schema; tools/impact_files.py).
+   !> The schema, one tab-separated line per variable (impact --schema).
    subroutine write_schema(unit)
       integer, intent(in) :: unit                   !< open formatted unit
       integer :: iv

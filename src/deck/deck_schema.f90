@@ -1,16 +1,11 @@
-!> The deck's variables, declared once: the schema. Every variable of
-!> every namelist group has one entry in `deck_vars` (group, name, kind,
-!> unit, default, admissible range, meaning); the reader, the range checks,
-!> the echo, the `/deck` attributes of <prefix>.h5, `impact --schema` and
-!> the deck table of docs/DECK.md are derived from it. The values live in
-!> `deck_t`, one component per variable, connected by `deck_bind`.
-!>
-!> Adding a variable: its entry in deck_vars, its component in deck_t, its
-!> line in deck_bind, and any check across variables in validate_deck
-!> (src/deck/input_deck.f90). A default '' makes a variable optional: "not
-!> given" is kept as a value no reader produces (NaN, not_given_integer);
-!> ask is_given (or strength_given), never compare with the sentinel.
-!> deck_t%given tells which variables the deck or --set wrote.
+!> The deck's variables, declared once: one entry of `deck_vars` per variable
+!> (group, name, kind, unit, default, range, meaning), from which the reader,
+!> the checks, the echo, /deck of <prefix>.h5, `impact --schema` and the
+!> table of docs/DECK.md derive. The values live in `deck_t`, connected by
+!> `deck_bind`. Adding a variable: its entry, its component, its line in
+!> deck_bind, any check across variables in validate_deck (input_deck.f90).
+!> A default '' makes it optional: "not given" is a value no reader produces
+!> (NaN, not_given_integer); ask is_given, never compare with the sentinel.
 !> Not from the paper. More: docs/DECK.md.
 module deck_schema
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
@@ -28,8 +23,7 @@ module deck_schema
                          kind_path = 5, kind_reals = 6
    character(len=8), parameter :: kind_names(6) = [character(len=8) :: 'real', 'integer', 'logical', &
       'word', 'text', 'reals']
-   !> Longest word value (a keyword), longest text value (a path), most
-   !> values of a list (plies).
+   !> Longest word (a keyword), longest text (a path), longest list (plies).
    integer, parameter :: max_word_len = 32, max_path_len = 4096, max_list_len = 1000
    !> "Not given" of an optional integer: a value no reader produces (module header).
    integer, parameter :: not_given_integer = -huge(0) - 1
@@ -49,8 +43,7 @@ module deck_schema
    character(len=8), parameter :: deck_groups(14) = [character(len=8) :: 'plate', 'lamina', 'laminate', &
       'strength', 'damage', 'impactor', 'contact', 'mesh', 'boundary', 'analysis', 'load', 'modes', 'output', 'accuracy']
 
-   !> THE LIST. Paper's values as defaults where the paper gives one (Choi,
-   !> Hong & Lee 1991: section 2.4, Tables 1-3); SI units.
+   !> THE LIST. The paper's values as defaults (section 2.4, Tables 1-3).
    type(deck_var_t), parameter :: deck_vars(*) = [ &
       deck_var_t('plate', 'a', kind_real, 'm', '0.15', '[1e-3, 100]', 'plate length along x'), &
       deck_var_t('plate', 'b', kind_real, 'm', '0.10', '[1e-3, 100]', 'plate width along y'), &
@@ -201,8 +194,7 @@ module deck_schema
          // 'summary keys joined by + (peak_force_N, max_deflection_mm, contact_duration_us, time_of_peak_us, ' &
          // 'max_strain_y_back, max_failure_index), ''default'' (the first three, max_failure_index) or ''all''') ]
 
-   !> Everything the deck sets, as the program reads it (SI units). The
-   !> defaults are deck_vars' (default_deck in src/deck/input_deck.f90).
+   !> Everything the deck sets (SI units); defaults: default_deck (input_deck).
    type :: deck_t
       character(len=:), allocatable :: source       !< file the deck came from, or '<stdin>'
       character(len=:), allocatable :: settings     !< the command line's --set settings over it, '' for none
@@ -212,7 +204,7 @@ module deck_schema
       real(dp) :: e1 = 0, e2 = 0, g12 = 0, g13 = 0, g23 = 0, nu12 = 0, rho = 0
       ! &laminate
       real(dp), allocatable :: angles(:)
-      real(dp) :: k4 = 0, k5 = 0                    !< NaN: not given (Whitney's method; module header, is_given)
+      real(dp) :: k4 = 0, k5 = 0                    !< NaN: not given (Whitney's method; is_given)
       character(len=:), allocatable :: bend_twist
       ! &strength (NaN: not given, as k4, k5: strength_given)
       real(dp) :: xt = 0, xc = 0, yt = 0, yc = 0, s12 = 0, s23 = 0
@@ -256,9 +248,7 @@ module deck_schema
       real(dp) :: accuracy_target = 0              !< NaN: not given (one plain run; accuracy_wanted)
       real(dp) :: accuracy_max_cpu_s = 0, accuracy_mesh_factor = 0
       character(len=:), allocatable :: accuracy_results
-      !> &analysis dt, &mesh nx, ny chosen from the scene where the deck does not
-      !> give them: what and why, one line each ('' for a given value;
-      !> src/model/scene_settings.f90, choose_settings)
+      !> dt, nx, ny chosen from the scene: what and why ('' for a given value)
       character(len=240) :: dt_chosen = '', mesh_chosen = ''
       !> which variables the deck (or --set) gave, by entry of deck_vars
       logical :: given(size(deck_vars)) = .false.
@@ -294,16 +284,15 @@ contains
    end function find_var
 
    !> True when the deck gives the six strengths of &strength: the ply
-   !> stresses and the failure criterion are then computed (src/results/damage_record.f90).
+   !> stresses and the failure criterion are then computed.
    pure logical function strength_given(deck)
       type(deck_t), intent(in) :: deck   !< the deck
-      strength_given = is_given(deck, 'strength', 'xt') .and. is_given(deck, 'strength', 'xc') &
-         .and. is_given(deck, 'strength', 'yt') .and. is_given(deck, 'strength', 'yc') &
-         .and. is_given(deck, 'strength', 's12') .and. is_given(deck, 'strength', 's23')
+      character(len=3), parameter :: names(6) = [character(len=3) :: 'xt', 'xc', 'yt', 'yc', 's12', 's23']
+      integer :: k
+      strength_given = all([(is_given(deck, 'strength', trim(names(k))), k = 1, size(names))])
    end function strength_given
 
-   !> True when the deck gives any of the fracture toughnesses of
-   !> &strength (g1c, g2c, gft, gfc, gmt, gmc).
+   !> True when the deck gives any toughness of &strength (g1c, ... gmc).
    pure logical function toughness_given(deck)
       type(deck_t), intent(in) :: deck              !< the deck
       character(len=3), parameter :: names(6) = [character(len=3) :: 'g1c', 'g2c', 'gft', 'gfc', 'gmt', 'gmc']
@@ -311,17 +300,14 @@ contains
       toughness_given = any([(is_given(deck, 'strength', trim(names(k))), k = 1, size(names))])
    end function toughness_given
 
-   !> True when the deck asks for an accuracy run (&accuracy target given,
-   !> or impact --accuracy TOL): a ladder of runs (src/accuracy/).
+   !> True when the deck asks for an accuracy run (&accuracy target, --accuracy).
    pure logical function accuracy_wanted(deck)
       type(deck_t), intent(in) :: deck   !< the deck
       accuracy_wanted = is_given(deck, 'accuracy', 'target')
    end function accuracy_wanted
 
-   !> True when the variable group.name has a value: always for one with a
-   !> default; for an optional one (default '') when the deck, --set or the
-   !> program gave it one (module header, "Not given"). False for a name the
-   !> schema does not know.
+   !> True when group.name has a value: always with a default, for an optional
+   !> one when given one (module header); false for an unknown name.
    pure logical function is_given(deck, group, name)
       type(deck_t), intent(in) :: deck              !< the deck
       character(len=*), intent(in) :: group, name   !< the variable, lower case
@@ -337,18 +323,15 @@ contains
       is_given = v%given
    end function is_given
 
-   !> "Not given" of an optional real: NaN, a value no reader produces
-   !> (module header).
+   !> "Not given" of an optional real: NaN (module header).
    pure function not_given_real() result(x)
       real(dp) :: x
       x = ieee_value(x, ieee_quiet_nan)
    end function not_given_real
 
-   !> Moves the value of entry iv between v and the deck's component: into
-   !> the deck when set is true, out of it otherwise. An optional real or
-   !> integer (default '') without a value (v%given false) goes in as its
-   !> sentinel and comes out with v%given false (module header, "Not
-   !> given").
+   !> Moves entry iv's value between v and the deck: in when set, else out.
+   !> An optional value without a value (v%given false) goes in as its
+   !> sentinel and comes out with v%given false (module header).
    pure subroutine deck_bind(deck, iv, v, set)
       type(deck_t), intent(inout) :: deck   !< the deck
       integer, intent(in) :: iv             !< entry of deck_vars
@@ -452,11 +435,8 @@ contains
       real(dp), intent(inout) :: x              !< the deck's component
       type(value_t), intent(inout) :: v         !< the value
       logical, intent(in) :: set                !< direction: v -> x
-      if (set) then
-         x = v%r
-      else
-         v%r = x
-      end if
+      if (set) x = v%r
+      if (.not. set) v%r = x
    end subroutine bind_real
 
    !> An integer between v%i and the deck (deck_bind).
@@ -464,11 +444,8 @@ contains
       integer, intent(inout) :: x               !< the deck's component
       type(value_t), intent(inout) :: v         !< the value
       logical, intent(in) :: set                !< direction: v -> x
-      if (set) then
-         x = v%i
-      else
-         v%i = x
-      end if
+      if (set) x = v%i
+      if (.not. set) v%i = x
    end subroutine bind_integer
 
    !> A logical between v%l and the deck (deck_bind).
@@ -476,11 +453,8 @@ contains
       logical, intent(inout) :: x               !< the deck's component
       type(value_t), intent(inout) :: v         !< the value
       logical, intent(in) :: set                !< direction: v -> x
-      if (set) then
-         x = v%l
-      else
-         v%l = x
-      end if
+      if (set) x = v%l
+      if (.not. set) v%l = x
    end subroutine bind_logical
 
    !> A word or a text between v%s and the deck ('' for an unset one) (deck_bind).
@@ -491,11 +465,8 @@ contains
       if (set) then
          x = v%s
       else
-         if (allocated(x)) then
-            v%s = x
-         else
-            v%s = ''
-         end if
+         v%s = ''
+         if (allocated(x)) v%s = x
       end if
    end subroutine bind_text
 
@@ -507,11 +478,8 @@ contains
       if (set) then
          x = v%list
       else
-         if (allocated(x)) then
-            v%list = x
-         else
-            allocate (v%list(0))
-         end if
+         allocate (v%list(0))
+         if (allocated(x)) v%list = x
       end if
    end subroutine bind_list
 
@@ -525,7 +493,6 @@ contains
          if (words(i:i) == '|') words(i:i) = ' '
       end do
    end function words_of
-
 
    !> The words of a range as "'a', 'b', 'c'".
    pure function words_quoted(range) result(text)
@@ -545,6 +512,5 @@ contains
          rest = rest(bar + 1:)
       end do
    end function words_quoted
-
 
 end module deck_schema

@@ -1,8 +1,7 @@
-!> The input deck: a namelist file (standard input or a path) checked
-!> against the schema of deck_schema.f90, then as a whole (validate_deck).
-!> SI units; an absent variable keeps its default; names are case-blind.
-!> Nothing is silently dropped, merged or cut: each fault stops the reading
-!> with "<deck>: &group: variable = value: what is wrong". More: docs/DECK.md.
+!> The input deck: a namelist file checked against the schema (deck_schema.f90),
+!> then as a whole (validate_deck). An absent variable keeps its default; each
+!> fault stops the reading with "<deck>: &group: variable = value: what is
+!> wrong". More: docs/DECK.md.
 module input_deck
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use, intrinsic :: iso_fortran_env, only: int64
@@ -27,14 +26,13 @@ module input_deck
    integer, parameter :: max_quoted = 60
    !> Smallest contact-force tolerance C_r1: 100 eps, the rounding of the force.
    real(dp), parameter :: min_cr1 = 100.0_dp*epsilon(1.0_dp)
-   !> Bytes in a GiB, for the messages of the size checks.
+   !> Bytes in a MiB, a GiB.
    real(dp), parameter :: mib = 1024.0_dp**2, gib = 1024.0_dp**3
    !> What a run takes beside its matrices, for the check against ulimit -v:
    !> a tenth more for the model, and the libraries' (OpenBLAS's) buffers.
    real(dp), parameter :: model_share = 1.1_dp, library_bytes = 160.0_dp*mib
 
-   !> The checks of a deck so far (validate_deck): the first failure wins,
-   !> the checks after it change nothing.
+   !> The checks of a deck so far: the first failure wins.
    type :: checks_t
       character(len=:), allocatable :: source       !< the deck's name in messages
       integer :: stat = 0                           !< 0, or failed after a failure
@@ -66,9 +64,8 @@ contains
       end do
    end function default_deck
 
-   !> Reads a deck from `unit` (formatted, read once to its end: standard
-   !> input is fine) and checks it unless check = .false. On failure stat /= 0,
-   !> errmsg the one-line message of the module header, deck incomplete.
+   !> Reads a deck from `unit` (read once to its end) and checks it unless
+   !> check = .false.; on failure stat /= 0 and errmsg the module header's message.
    subroutine read_deck(unit, source, deck, stat, errmsg, check)
       integer, intent(in) :: unit                   !< unit to read from
       character(len=*), intent(in) :: source        !< the deck's name in messages: its path, or '<stdin>'
@@ -179,9 +176,8 @@ contains
       close (unit, iostat=ios)
    end subroutine read_deck_file
 
-   !> `impact --set group.var=value`: one variable from its text, read as a
-   !> deck's value (split_value_text), then the deck checked unless check =
-   !> .false. (the command line sets all its values, then checks once).
+   !> `impact --set group.var=value`: one variable from its text, then the deck
+   !> checked unless check = .false.
    subroutine set_variable(deck, setting, stat, errmsg, check)
       type(deck_t), intent(inout) :: deck           !< the deck, changed
       character(len=*), intent(in) :: setting       !< 'group.var=value'
@@ -233,9 +229,8 @@ contains
       if (stat /= 0) errmsg = '--set ' // group // '.' // name // '=' // shown_text(text) // ': ' // trim(errmsg)
    end subroutine set_variable
 
-   !> The value of entry iv from its items, checked for its kind (the range:
-   !> validate_deck). r*c is r values; a real must be finite (NaN is the "not
-   !> given" of deck_schema, which no deck can write), an integer in +-huge(0).
+   !> The value of entry iv from its items, checked for its kind (not its range):
+   !> a real finite (NaN is "not given"), an integer in +-huge(0).
    subroutine convert(iv, items, v, stat, what)
       integer, intent(in) :: iv                          !< entry of deck_vars
       type(item_t), intent(in) :: items(:)               !< the values as written
@@ -294,8 +289,7 @@ contains
 
    end subroutine convert
 
-   !> A real from its text: what is '' when it is a finite number, else
-   !> what is wrong (not a number; NaN, Inf or beyond a double's range).
+   !> A real from its text: what is '' for a finite number, else what is wrong.
    subroutine read_real(text, unit, optional, x, what)
       character(len=*), intent(in) :: text               !< the value as written
       character(len=*), intent(in) :: unit               !< its unit, for the message
@@ -319,9 +313,7 @@ contains
       end if
    end subroutine read_real
 
-   !> A word (kind_word: lower case, max_word_len characters at most) or a
-   !> text (kind_path: max_path_len) from its text: what is '' or what is
-   !> wrong (too long, a control character).
+   !> A word (lower case) or a text from its text: what is '' or what is wrong.
    subroutine convert_text(kind, text, s, what)
       integer, intent(in) :: kind                        !< kind_word or kind_path
       character(len=*), intent(in) :: text               !< the value as written
@@ -345,8 +337,7 @@ contains
       end if
    end subroutine convert_text
 
-   !> A list of reals from its items, each r*c expanded to r copies of c
-   !> (at most max_list_len values: the caller counted them).
+   !> A list of reals from its items, each r*c expanded to r copies of c.
    subroutine convert_list(items, unit, list, what)
       type(item_t), intent(in) :: items(:)               !< the values as written
       character(len=*), intent(in) :: unit               !< their unit, for messages
@@ -371,9 +362,8 @@ contains
 
    ! ============================================================= checking
 
-   !> Checks every value against the schema's range and the combinations the
-   !> program needs, to the first bad one (the message of the module header);
-   !> keywords come back in lower case without blanks.
+   !> Checks every value against its range and the combinations the program
+   !> needs, to the first bad one; keywords come back in lower case.
    subroutine validate_deck(deck, stat, errmsg)
       type(deck_t), intent(inout) :: deck           !< the deck; its keywords come back in lower case
       integer, intent(out) :: stat                  !< 0 when every value is acceptable
@@ -393,8 +383,7 @@ contains
       if (stat /= 0) errmsg = c%message
    end subroutine validate_deck
 
-   !> Each variable against its schema entry (check_range), its keywords
-   !> first normalised to lower case without blanks.
+   !> Each variable against its range, its keywords first made lower case.
    subroutine check_entries(deck, c)
       type(deck_t), intent(inout) :: deck           !< the deck; its keywords come back in lower case
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -423,8 +412,7 @@ contains
       call need(c, size(deck%angles) >= 1, 'laminate', 'angles', '(none)', 'give at least one ply')
    end subroutine check_plate
 
-   !> &output prefix: a name for the result files, not a directory (no
-   !> hidden files, out/_history.dat), on a file system that can be written.
+   !> &output prefix: a name for the result files, on a writable file system.
    subroutine check_prefix(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -463,9 +451,8 @@ contains
          // ' m (gauge_y is measured from the plate centre)')
    end subroutine check_gauge
 
-   !> &mesh domain and its symmetry lines: D16 = D26 = 0 on them, the
-   !> impact point on them, a layup symmetric about the mid-plane for a
-   !> quarter or a strip.
+   !> &mesh domain: D16 = D26 = 0 and the impact point on its symmetry lines,
+   !> a symmetric layup for a quarter or a strip.
    subroutine check_domain(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -494,8 +481,7 @@ contains
       end do symmetry
    end subroutine check_domain
 
-   !> &analysis: a theory for the kind, dt within t_end, cr1 above the
-   !> rounding, what the run needs (check_needs), the storage of modes.
+   !> &analysis: theory, dt, cr1, what the run needs, the storage of modes.
    subroutine check_analysis(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -512,11 +498,8 @@ contains
          // "eigensolver dsbgvx)")
    end subroutine check_analysis
 
-   !> What the run would need, before any of it is allocated or written
-   !> (docs/ROBUSTNESS.md): at most max_steps steps, the matrices' memory
-   !> (model_size) within the machine's, the results within the free space;
-   !> a history row is 230 bytes of text and 130 in <prefix>.h5, a snapshot
-   !> 8 bytes a freedom, <prefix>.h5 64 KiB and four snapshots more.
+   !> What the run would need, before any of it is allocated: at most max_steps
+   !> steps, its memory and its files within the machine's (docs/ROBUSTNESS.md).
    subroutine check_needs(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -562,8 +545,7 @@ contains
          // deck%prefix // '''): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
    end subroutine check_needs
 
-   !> The model of the deck's mesh: (2 ex + 1)(2 ey + 1) 9-node elements'
-   !> nodes (ex = 2 nx where the domain may be doubled), 5 freedoms a node,
+   !> The model of the deck's mesh: (2 ex + 1)(2 ey + 1) nodes of 5 freedoms,
    !> half-bandwidth 10 (2 min(ex, ey) + 1), the matrices in their storage.
    pure subroutine model_size(deck, neq, memory)
       type(deck_t), intent(in) :: deck              !< the deck, nx and ny given or chosen
@@ -580,9 +562,8 @@ contains
                                neq, kd)
    end subroutine model_size
 
-   !> &strength: all six strengths or none; the criterion and the ply
-   !> fracture energies only with them; the ply stresses and the
-   !> toughnesses belong to the impact analysis.
+   !> &strength: all six strengths or none, the criterion and the ply fracture
+   !> energies only with them, all of it for the impact analysis only.
    subroutine check_strength(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -656,7 +637,6 @@ contains
    end subroutine need
 
    !> x is finite and in the interval written as '(lo, hi)', '[lo, hi]', ...
-   !> (lo and hi may be -inf, inf).
    pure logical function in_interval(x, range)
       real(dp), intent(in) :: x
       character(len=*), intent(in) :: range
@@ -668,8 +648,7 @@ contains
 
    ! ============================================================== helpers
 
-   !> The items as they were written, for a message (cut short after
-   !> max_quoted characters: the time does not grow with the deck).
+   !> The items as they were written, for a message, cut after max_quoted characters.
    function items_text(items) result(text)
       type(item_t), intent(in) :: items(:)
       character(len=:), allocatable :: text
