@@ -343,83 +343,83 @@ contains
          v%i = not_given_integer
       end if
       select case (var_key(iv))
-      case ('plate.a');                    call bind_real(deck%a, v, set)
-      case ('plate.b');                    call bind_real(deck%b, v, set)
-      case ('plate.h');                    call bind_real(deck%h, v, set)
-      case ('lamina.e1');                  call bind_real(deck%e1, v, set)
-      case ('lamina.e2');                  call bind_real(deck%e2, v, set)
-      case ('lamina.g12');                 call bind_real(deck%g12, v, set)
-      case ('lamina.g13');                 call bind_real(deck%g13, v, set)
-      case ('lamina.g23');                 call bind_real(deck%g23, v, set)
-      case ('lamina.nu12');                call bind_real(deck%nu12, v, set)
-      case ('lamina.rho');                 call bind_real(deck%rho, v, set)
+      case ('plate.a');                    call bind_value(deck%a, v, set)
+      case ('plate.b');                    call bind_value(deck%b, v, set)
+      case ('plate.h');                    call bind_value(deck%h, v, set)
+      case ('lamina.e1');                  call bind_value(deck%e1, v, set)
+      case ('lamina.e2');                  call bind_value(deck%e2, v, set)
+      case ('lamina.g12');                 call bind_value(deck%g12, v, set)
+      case ('lamina.g13');                 call bind_value(deck%g13, v, set)
+      case ('lamina.g23');                 call bind_value(deck%g23, v, set)
+      case ('lamina.nu12');                call bind_value(deck%nu12, v, set)
+      case ('lamina.rho');                 call bind_value(deck%rho, v, set)
       case ('laminate.angles');            call bind_list(deck%angles, v, set)
-      case ('laminate.k4');                call bind_real(deck%k4, v, set)
-      case ('laminate.k5');                call bind_real(deck%k5, v, set)
+      case ('laminate.k4');                call bind_value(deck%k4, v, set)
+      case ('laminate.k5');                call bind_value(deck%k5, v, set)
       case ('laminate.bend_twist');        call bind_text(deck%bend_twist, v, set)
-      case ('strength.xt');                call bind_real(deck%xt, v, set)
-      case ('strength.xc');                call bind_real(deck%xc, v, set)
-      case ('strength.yt');                call bind_real(deck%yt, v, set)
-      case ('strength.yc');                call bind_real(deck%yc, v, set)
-      case ('strength.s12');               call bind_real(deck%s12, v, set)
-      case ('strength.s23');               call bind_real(deck%s23, v, set)
+      case ('strength.xt');                call bind_value(deck%xt, v, set)
+      case ('strength.xc');                call bind_value(deck%xc, v, set)
+      case ('strength.yt');                call bind_value(deck%yt, v, set)
+      case ('strength.yc');                call bind_value(deck%yc, v, set)
+      case ('strength.s12');               call bind_value(deck%s12, v, set)
+      case ('strength.s23');               call bind_value(deck%s23, v, set)
       case ('strength.criterion');         call bind_text(deck%criterion, v, set)
-      case ('strength.g1c');               call bind_real(deck%g1c, v, set)
-      case ('strength.g2c');               call bind_real(deck%g2c, v, set)
-      case ('strength.gft');               call bind_real(deck%gft, v, set)
-      case ('strength.gfc');               call bind_real(deck%gfc, v, set)
-      case ('strength.gmt');               call bind_real(deck%gmt, v, set)
-      case ('strength.gmc');               call bind_real(deck%gmc, v, set)
+      case ('strength.g1c');               call bind_value(deck%g1c, v, set)
+      case ('strength.g2c');               call bind_value(deck%g2c, v, set)
+      case ('strength.gft');               call bind_value(deck%gft, v, set)
+      case ('strength.gfc');               call bind_value(deck%gfc, v, set)
+      case ('strength.gmt');               call bind_value(deck%gmt, v, set)
+      case ('strength.gmc');               call bind_value(deck%gmc, v, set)
       case ('damage.model');               call bind_text(deck%damage_model, v, set)
-      case ('damage.viscosity');           call bind_real(deck%damage_viscosity, v, set)
-      case ('impactor.mass');              call bind_real(deck%mass, v, set)
-      case ('impactor.velocity');          call bind_real(deck%velocity, v, set)
-      case ('impactor.diameter');          call bind_real(deck%diameter, v, set)
-      case ('impactor.x0');                call bind_real(deck%x0, v, set)
-      case ('impactor.y0');                call bind_real(deck%y0, v, set)
-      case ('contact.k');                  call bind_real(deck%k, v, set)
-      case ('contact.q');                  call bind_real(deck%q, v, set)
-      case ('contact.alpha_p');            call bind_real(deck%alpha_p, v, set)
-      case ('contact.beta');               call bind_real(deck%beta, v, set)
+      case ('damage.viscosity');           call bind_value(deck%damage_viscosity, v, set)
+      case ('impactor.mass');              call bind_value(deck%mass, v, set)
+      case ('impactor.velocity');          call bind_value(deck%velocity, v, set)
+      case ('impactor.diameter');          call bind_value(deck%diameter, v, set)
+      case ('impactor.x0');                call bind_value(deck%x0, v, set)
+      case ('impactor.y0');                call bind_value(deck%y0, v, set)
+      case ('contact.k');                  call bind_value(deck%k, v, set)
+      case ('contact.q');                  call bind_value(deck%q, v, set)
+      case ('contact.alpha_p');            call bind_value(deck%alpha_p, v, set)
+      case ('contact.beta');               call bind_value(deck%beta, v, set)
       case ('contact.load');               call bind_text(deck%contact_load, v, set)
-      case ('mesh.nx');                    call bind_integer(deck%nx, v, set)
-      case ('mesh.ny');                    call bind_integer(deck%ny, v, set)
+      case ('mesh.nx');                    call bind_value(deck%nx, v, set)
+      case ('mesh.ny');                    call bind_value(deck%ny, v, set)
       case ('mesh.domain');                call bind_text(deck%domain, v, set)
-      case ('mesh.average_bend_twist');    call bind_logical(deck%average_bend_twist, v, set)
-      case ('mesh.grading');               call bind_real(deck%grading, v, set)
+      case ('mesh.average_bend_twist');    call bind_value(deck%average_bend_twist, v, set)
+      case ('mesh.grading');               call bind_value(deck%grading, v, set)
       case ('mesh.shear_rule');            call bind_text(deck%shear_rule, v, set)
-      case ('mesh.stabilization');         call bind_real(deck%stabilization, v, set)
+      case ('mesh.stabilization');         call bind_value(deck%stabilization, v, set)
       case ('boundary.edges');             call bind_text(deck%edges, v, set)
       case ('boundary.inplane');           call bind_text(deck%inplane, v, set)
       case ('analysis.kind');              call bind_text(deck%analysis_kind, v, set)
       case ('analysis.theory');            call bind_text(deck%theory, v, set)
-      case ('analysis.dt');                call bind_real(deck%dt, v, set)
-      case ('analysis.t_end');             call bind_real(deck%t_end, v, set)
-      case ('analysis.cr1');               call bind_real(deck%cr1, v, set)
-      case ('analysis.cr2');               call bind_real(deck%cr2, v, set)
+      case ('analysis.dt');                call bind_value(deck%dt, v, set)
+      case ('analysis.t_end');             call bind_value(deck%t_end, v, set)
+      case ('analysis.cr1');               call bind_value(deck%cr1, v, set)
+      case ('analysis.cr2');               call bind_value(deck%cr2, v, set)
       case ('analysis.scheme');            call bind_text(deck%scheme, v, set)
       case ('analysis.storage');           call bind_text(deck%storage, v, set)
-      case ('analysis.max_contact_iter');  call bind_integer(deck%max_contact_iter, v, set)
-      case ('analysis.max_nonlinear_iter'); call bind_integer(deck%max_nonlinear_iter, v, set)
+      case ('analysis.max_contact_iter');  call bind_value(deck%max_contact_iter, v, set)
+      case ('analysis.max_nonlinear_iter'); call bind_value(deck%max_nonlinear_iter, v, set)
       case ('analysis.force_update');      call bind_text(deck%force_update, v, set)
-      case ('analysis.stop_on_warning');   call bind_logical(deck%stop_on_warning, v, set)
+      case ('analysis.stop_on_warning');   call bind_value(deck%stop_on_warning, v, set)
       case ('load.kind');                  call bind_text(deck%load_kind, v, set)
-      case ('load.magnitude');             call bind_real(deck%load_magnitude, v, set)
-      case ('load.increments');            call bind_integer(deck%load_increments, v, set)
-      case ('modes.count');                call bind_integer(deck%mode_count, v, set)
-      case ('modes.shapes');               call bind_logical(deck%mode_shapes, v, set)
+      case ('load.magnitude');             call bind_value(deck%load_magnitude, v, set)
+      case ('load.increments');            call bind_value(deck%load_increments, v, set)
+      case ('modes.count');                call bind_value(deck%mode_count, v, set)
+      case ('modes.shapes');               call bind_value(deck%mode_shapes, v, set)
       case ('output.prefix');              call bind_text(deck%prefix, v, set)
-      case ('output.every');               call bind_integer(deck%every, v, set)
-      case ('output.overwrite');           call bind_logical(deck%overwrite, v, set)
-      case ('output.hdf5');                call bind_logical(deck%hdf5, v, set)
+      case ('output.every');               call bind_value(deck%every, v, set)
+      case ('output.overwrite');           call bind_value(deck%overwrite, v, set)
+      case ('output.hdf5');                call bind_value(deck%hdf5, v, set)
       case ('output.xdmf');                call bind_text(deck%xdmf, v, set)
-      case ('output.fields_every');        call bind_integer(deck%fields_every, v, set)
+      case ('output.fields_every');        call bind_value(deck%fields_every, v, set)
       case ('output.gauge');               call bind_text(deck%gauge, v, set)
-      case ('output.gauge_x');             call bind_real(deck%gauge_x, v, set)
-      case ('output.gauge_y');             call bind_real(deck%gauge_y, v, set)
-      case ('accuracy.target');            call bind_real(deck%accuracy_target, v, set)
-      case ('accuracy.max_cpu_s');         call bind_real(deck%accuracy_max_cpu_s, v, set)
-      case ('accuracy.mesh_factor');       call bind_real(deck%accuracy_mesh_factor, v, set)
+      case ('output.gauge_x');             call bind_value(deck%gauge_x, v, set)
+      case ('output.gauge_y');             call bind_value(deck%gauge_y, v, set)
+      case ('accuracy.target');            call bind_value(deck%accuracy_target, v, set)
+      case ('accuracy.max_cpu_s');         call bind_value(deck%accuracy_max_cpu_s, v, set)
+      case ('accuracy.mesh_factor');       call bind_value(deck%accuracy_mesh_factor, v, set)
       case ('accuracy.results');           call bind_text(deck%accuracy_results, v, set)
       end select
       if (.not. set .and. len_trim(deck_vars(iv)%default) == 0) then
@@ -430,32 +430,23 @@ contains
       end if
    end subroutine deck_bind
 
-   !> A real between v%r and the deck (deck_bind).
-   pure subroutine bind_real(x, v, set)
-      real(dp), intent(inout) :: x              !< the deck's component
+   !> A real, integer or logical between v and the deck (deck_bind).
+   pure subroutine bind_value(x, v, set)
+      class(*), intent(inout) :: x              !< the deck's component
       type(value_t), intent(inout) :: v         !< the value
       logical, intent(in) :: set                !< direction: v -> x
-      if (set) x = v%r
-      if (.not. set) v%r = x
-   end subroutine bind_real
-
-   !> An integer between v%i and the deck (deck_bind).
-   pure subroutine bind_integer(x, v, set)
-      integer, intent(inout) :: x               !< the deck's component
-      type(value_t), intent(inout) :: v         !< the value
-      logical, intent(in) :: set                !< direction: v -> x
-      if (set) x = v%i
-      if (.not. set) v%i = x
-   end subroutine bind_integer
-
-   !> A logical between v%l and the deck (deck_bind).
-   pure subroutine bind_logical(x, v, set)
-      logical, intent(inout) :: x               !< the deck's component
-      type(value_t), intent(inout) :: v         !< the value
-      logical, intent(in) :: set                !< direction: v -> x
-      if (set) x = v%l
-      if (.not. set) v%l = x
-   end subroutine bind_logical
+      select type (x)
+      type is (real(dp))
+         if (set) x = v%r
+         if (.not. set) v%r = x
+      type is (integer)
+         if (set) x = v%i
+         if (.not. set) v%i = x
+      type is (logical)
+         if (set) x = v%l
+         if (.not. set) v%l = x
+      end select
+   end subroutine bind_value
 
    !> A word or a text between v%s and the deck ('' for an unset one) (deck_bind).
    pure subroutine bind_text(x, v, set)

@@ -94,7 +94,7 @@ contains
       r%err%what = ''
       nline = 0
       bytes = 0
-      lines_loop: do
+      lines_loop: do while (r%err%stat == 0)
          call read_line(unit, max_deck_bytes - bytes, text, ios, msg, over)
          if (ios == iostat_end) exit lines_loop
          nline = nline + 1
@@ -102,16 +102,13 @@ contains
             call fail(r%err, 0, 'longer than ' // int_str(max_deck_bytes/1048576) // ' MiB (' &
                // int_str(max_deck_bytes) // ' bytes), the most a deck may be (a deck ' &
                // 'is a few kilobytes of text: is this the deck?)')
-            exit lines_loop
-         end if
-         if (ios /= 0) then
+         else if (ios /= 0) then
             call fail(r%err, nline, 'cannot read the line: ' // trim(msg))
-            exit lines_loop
+         else
+            bytes = bytes + len(text) + 1
+            if (nline == 1 .and. index(text, byte_order_mark) == 1) text = text(len(byte_order_mark) + 1:)
+            call scan_line(r, text, nline)
          end if
-         bytes = bytes + len(text) + 1
-         if (nline == 1 .and. index(text, byte_order_mark) == 1) text = text(len(byte_order_mark) + 1:)
-         call scan_line(r, text, nline)
-         if (r%err%stat /= 0) exit lines_loop
       end do lines_loop
       if (r%err%stat == 0 .and. group_open(r)) call fail(r%err, r%groups(r%ngroup)%line, &
          open_group_name(r) // ": no closing '/' (the group runs to the end of the deck)")
@@ -394,7 +391,7 @@ contains
       character(len=*), intent(in) :: group     !< the group's name, for messages
       type(assignment_t), intent(out) :: a      !< the assignment
       type(text_error_t), intent(inout) :: err  !< the first error
-      integer :: first, last, n
+      integer :: first, last
       if (.not. starts_assignment(toks, k)) then
          call fail(err, toks(k)%line, '&' // group // ": '" // shown_text(toks(k)%text) &
             // "' is not an assignment 'name = value'")
@@ -408,12 +405,8 @@ contains
       a%name = lower_case(toks(k)%text)
       a%line = toks(k)%line
       first = k + 2
-      call find_values(toks, first, '&' // group // ': ' // a%name, last, n, err)
+      call find_values(toks, first, '&' // group // ': ' // a%name, last, err)
       if (err%stat /= 0) return
-      if (n == 0) then
-         call fail(err, a%line, '&' // group // ': ' // a%name // ' = (nothing): give a value')
-         return
-      end if
       call make_items(toks(first:last), '&' // group // ': ' // a%name, a%items, err)
       k = last + 1
    end subroutine next_assignment
@@ -493,16 +486,15 @@ contains
       rest = word(star + 1:)
    end subroutine repeat_count
 
-   !> The values toks(first:last) up to the next 'name =', n of them; a second
-   !> '=' or an empty value is an error.
-   subroutine find_values(toks, first, where, last, n, err)
+   !> The values toks(first:last) up to the next 'name ='; none, a second '='
+   !> or an empty value is an error.
+   subroutine find_values(toks, first, where, last, err)
       type(token_t), intent(in) :: toks(:)      !< the group's tokens
       integer, intent(in) :: first              !< the token after '='
       character(len=*), intent(in) :: where     !< '&group: name', for messages
       integer, intent(out) :: last              !< the values' last token (first - 1: none; on an error)
-      integer, intent(out) :: n                 !< how many values
       type(text_error_t), intent(inout) :: err  !< the first error
-      integer :: k
+      integer :: k, n
       n = 0
       last = first - 1
       k = first
@@ -524,6 +516,7 @@ contains
          k = k + 1
       end do values
       last = k - 1
+      if (n == 0) call fail(err, toks(first - 2)%line, where // ' = (nothing): give a value')
    end subroutine find_values
 
    !> toks(k) and toks(k+1) are 'name ='.

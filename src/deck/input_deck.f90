@@ -238,55 +238,38 @@ contains
       integer, intent(out) :: stat                       !< 0, or failed
       character(len=:), allocatable, intent(out) :: what !< what is wrong
       integer(int64) :: count
-      integer :: k, ios
-      stat = failed
+      integer :: kind, ios
       what = ''
+      kind = deck_vars(iv)%kind
       count = sum(int(items%repeat, int64))
-      if (deck_vars(iv)%kind /= kind_reals .and. count /= 1) then
-         what = 'one value expected, ' // int_str(int(min(count, int(huge(k), int64)))) // ' given'
+      if (kind /= kind_reals .and. count /= 1) then
+         what = 'one value expected, ' // int_str(int(min(count, int(huge(ios), int64)))) // ' given'
          if (any(items%counted)) what = what // ' (a repeat count r*c gives r values)'
-         return
+      else if (kind == kind_reals .and. count > max_list_len) then
+         what = 'more than ' // int_str(max_list_len) // ' values'
+      else
+         select case (kind)
+         case (kind_real, kind_integer)
+            if (items(1)%quoted) then
+               what = 'a number, not a quoted string, expected'
+            else if (kind == kind_real) then
+               call read_real(items(1)%text, trim(deck_vars(iv)%unit), len_trim(deck_vars(iv)%default) == 0, &
+                  v%r, what)
+            else
+               read (items(1)%text, *, iostat=ios) v%i
+               if (ios /= 0 .or. verify(trim(adjustl(items(1)%text)), '+-0123456789') /= 0 .or. v%i < -huge(v%i)) &
+                  what = 'must be a whole number (from ' // int_str(-huge(v%i)) // ' to ' // int_str(huge(v%i)) // ')'
+            end if
+         case (kind_logical)
+            read (items(1)%text, *, iostat=ios) v%l
+            if (ios /= 0 .or. items(1)%quoted .or. index(items(1)%text, '/') > 0) what = 'must be .true. or .false.'
+         case (kind_word, kind_path)
+            call convert_text(kind, items(1)%text, v%s, what)
+         case (kind_reals)
+            call convert_list(items, trim(deck_vars(iv)%unit), v%list, what)
+         end select
       end if
-      select case (deck_vars(iv)%kind)
-      case (kind_real)
-         if (.not. number_item(items(1))) return
-         call read_real(items(1)%text, trim(deck_vars(iv)%unit), len_trim(deck_vars(iv)%default) == 0, v%r, what)
-         if (len(what) > 0) return
-      case (kind_integer)
-         if (.not. number_item(items(1))) return
-         read (items(1)%text, *, iostat=ios) v%i
-         if (ios /= 0 .or. verify(trim(adjustl(items(1)%text)), '+-0123456789') /= 0 .or. v%i < -huge(v%i)) then
-            what = 'must be a whole number (from ' // int_str(-huge(v%i)) // ' to ' // int_str(huge(v%i)) // ')'
-            return
-         end if
-      case (kind_logical)
-         read (items(1)%text, *, iostat=ios) v%l
-         if (ios /= 0 .or. items(1)%quoted .or. index(items(1)%text, '/') > 0) then
-            what = 'must be .true. or .false.'
-            return
-         end if
-      case (kind_word, kind_path)
-         call convert_text(deck_vars(iv)%kind, items(1)%text, v%s, what)
-         if (len(what) > 0) return
-      case (kind_reals)
-         if (count > max_list_len) then
-            what = 'more than ' // int_str(max_list_len) // ' values'
-            return
-         end if
-         call convert_list(items, trim(deck_vars(iv)%unit), v%list, what)
-         if (len(what) > 0) return
-      end select
-      stat = 0
-
-   contains
-
-      !> A number is never quoted.
-      logical function number_item(item)
-         type(item_t), intent(in) :: item
-         number_item = .not. item%quoted
-         if (.not. number_item) what = 'a number, not a quoted string, expected'
-      end function number_item
-
+      stat = merge(failed, 0, len(what) > 0)
    end subroutine convert
 
    !> A real from its text: what is '' for a finite number, else what is wrong.
