@@ -57,15 +57,6 @@ contains
       end select
    end function deck_value_text
 
-   !> 'name = value unit' of entry iv, as the echo gives it (no unit for '-').
-   function echo_piece(deck, iv) result(piece)
-      type(deck_t), intent(in) :: deck              !< the deck
-      integer, intent(in) :: iv                     !< entry of deck_vars
-      character(len=:), allocatable :: piece
-      piece = trim(deck_vars(iv)%name) // ' = ' // deck_value_text(deck, iv)
-      if (trim(deck_vars(iv)%unit) /= '-') piece = piece // ' ' // trim(deck_vars(iv)%unit)
-   end function echo_piece
-
    !> Writes the deck's values, 'name = value unit', by group, each line led by `lead`.
    subroutine echo_deck(deck, unit, lead)
       type(deck_t), intent(in) :: deck              !< the deck to echo
@@ -95,7 +86,8 @@ contains
       piece = ''          ! (else gfortran 12 at -O2 takes its length for unset in the loop)
       vars: do iv = 1, size(deck_vars)
          if (deck_vars(iv)%group /= group) cycle vars
-         piece = echo_piece(deck, iv)
+         piece = trim(deck_vars(iv)%name) // ' = ' // deck_value_text(deck, iv)     ! no unit for '-'
+         if (trim(deck_vars(iv)%unit) /= '-') piece = piece // ' ' // trim(deck_vars(iv)%unit)
          if (len(line) > 0 .and. group_column + len(line) + 2 + len(piece) > echo_width) then
             write (unit, '(a)') lead // column // line // ','
             column = ''
@@ -115,7 +107,7 @@ contains
    subroutine write_deck_table(unit)
       integer, intent(in) :: unit                   !< open formatted unit
       integer :: iv
-      character(len=:), allocatable :: group, meaning
+      character(len=:), allocatable :: group, meaning, default
       character(len=len(deck_vars%group)) :: previous
       type(deck_var_t) :: e
       write (unit, '(a)') '| group | variable | unit | default | meaning |'
@@ -130,22 +122,12 @@ contains
          if (e%kind == kind_word) meaning = meaning // ' (' // words_quoted(e%range) // ')'
          if ((e%kind == kind_real .or. e%kind == kind_integer) .and. trim(e%range) /= '(-inf, inf)') &
             meaning = meaning // '; in ' // trim(e%range)
+         default = '`' // trim(e%default) // '`'
+         if (e%kind == kind_word .or. e%kind == kind_path) default = "`'" // trim(e%default) // "'`"
+         if (len_trim(e%default) == 0) default = 'not given'
          write (unit, '(a)') '| ' // group // ' | `' // trim(e%name) // '` | ' // trim(e%unit) // ' | ' &
-            // default_text(e) // ' | ' // meaning // ' |'
+            // default // ' | ' // meaning // ' |'
       end do
-   contains
-      !> The default as the table gives it: 'not given', a quoted word or the value.
-      function default_text(e) result(text)
-         type(deck_var_t), intent(in) :: e          !< the entry
-         character(len=:), allocatable :: text
-         if (len_trim(e%default) == 0) then
-            text = 'not given'
-         else if (e%kind == kind_word .or. e%kind == kind_path) then
-            text = "`'" // trim(e%default) // "'`"
-         else
-            text = '`' // trim(e%default) // '`'
-         end if
-      end function default_text
    end subroutine write_deck_table
 
    !> The schema, one tab-separated line per variable (impact --schema).
@@ -171,34 +153,23 @@ contains
       character(len=:), allocatable :: text
       if (any(deck_groups == group)) then
          text = '&' // group // ': ' // name // ': unknown variable (the variables of &' // group // ' are ' &
-            // variable_list(group) // ')'
+            // name_list(pack(deck_vars%name, deck_vars%group == group), '') // ')'
       else
-         text = '&' // group // ': unknown namelist group (the groups are ' // group_list() // ')'
+         text = '&' // group // ': unknown namelist group (the groups are ' // name_list(deck_groups, '&') // ')'
       end if
    end function unknown_name
 
-   !> The groups as '&plate, &lamina, ...'.
-   function group_list() result(list)
+   !> The names as 'a, b, h', each led by `lead`.
+   pure function name_list(names, lead) result(list)
+      character(len=*), intent(in) :: names(:), lead
       character(len=:), allocatable :: list
       integer :: i
-      list = '&' // trim(deck_groups(1))
-      do i = 2, size(deck_groups)
-         list = list // ', &' // trim(deck_groups(i))
-      end do
-   end function group_list
-
-   !> The variables of a group as 'a, b, h'.
-   function variable_list(group) result(list)
-      character(len=*), intent(in) :: group
-      character(len=:), allocatable :: list
-      integer :: iv
       list = ''
-      do iv = 1, size(deck_vars)
-         if (deck_vars(iv)%group /= group) cycle
-         if (len(list) > 0) list = list // ', '
-         list = list // trim(deck_vars(iv)%name)
+      do i = 1, size(names)
+         if (i > 1) list = list // ', '
+         list = list // lead // trim(names(i))
       end do
-   end function variable_list
+   end function name_list
 
    !> The bounds of an interval text.
    pure subroutine interval(range, lo, hi, lo_open, hi_open)

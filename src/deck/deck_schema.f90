@@ -492,16 +492,13 @@ contains
       integer :: bar
       text = ''
       rest = trim(range)
-      do
-         bar = index(rest, '|')
-         if (len(text) > 0) text = text // ', '
-         if (bar == 0) then
-            text = text // "'" // trim(adjustl(rest)) // "'"
-            exit
-         end if
-         text = text // "'" // trim(adjustl(rest(:bar - 1))) // "'"
+      bar = index(rest, '|')
+      do while (bar > 0)
+         text = text // "'" // trim(adjustl(rest(:bar - 1))) // "', "
          rest = rest(bar + 1:)
+         bar = index(rest, '|')
       end do
+      text = text // "'" // trim(adjustl(rest)) // "'"
    end function words_quoted
 
 end module deck_schema

@@ -358,10 +358,10 @@ contains
       character(len=*), intent(in) :: group                         !< its name, for messages
       type(assignment_t), allocatable, intent(inout) :: assignments(:) !< the group's
       type(text_error_t), intent(inout) :: err                      !< the first error
-      type(assignment_t), allocatable :: list(:), grown(:)
+      type(assignment_t), allocatable :: list(:)
       type(assignment_t) :: a
       integer :: k, n
-      allocate (list(8))
+      allocate (list(count(toks%kind == tok_equals)))     ! each assignment has its '='
       n = 0
       k = 1
       do while (k <= size(toks))
@@ -370,11 +370,6 @@ contains
          else
             call next_assignment(toks, k, group, a, err)
             if (err%stat /= 0) exit
-            if (n == size(list)) then
-               allocate (grown(2*n))
-               grown(:n) = list(:n)
-               call move_alloc(grown, list)
-            end if
             n = n + 1                        ! (moved, not copied)
             call move_alloc(a%name, list(n)%name)
             call move_alloc(a%items, list(n)%items)

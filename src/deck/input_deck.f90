@@ -356,8 +356,6 @@ contains
       c%source = deck%source
       call check_entries(deck, c)
       if (c%stat == 0) call check_plate(deck, c)
-      if (c%stat == 0) call check_impactor(deck, c)
-      if (c%stat == 0) call check_gauge(deck, c)
       if (c%stat == 0) call check_domain(deck, c)
       if (c%stat == 0) call check_analysis(deck, c)
       if (c%stat == 0) call check_prefix(deck, c)
@@ -383,7 +381,8 @@ contains
       end do entries
    end subroutine check_entries
 
-   !> &plate, &lamina, &laminate: a thin plate, a positive definite lamina, a ply.
+   !> &plate, &lamina, &laminate, &impactor, &output gauge_x, gauge_y: a thin
+   !> plate, a positive definite lamina, a ply, the nose and the gauge on the plate.
    subroutine check_plate(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -393,6 +392,20 @@ contains
          'nu12**2 must be less than e1/e2 = ' // real_str(deck%e1/deck%e2) &
          // ' (else the lamina stiffness is not positive definite)')
       call need(c, size(deck%angles) >= 1, 'laminate', 'angles', '(none)', 'give at least one ply')
+      call need(c, deck%diameter < min(deck%a, deck%b), 'impactor', 'diameter', real_str(deck%diameter), &
+         'the nose must be smaller than the plate: diameter < min(a, b) = ' // real_str(min(deck%a, deck%b)) // ' m')
+      call need(c, abs(deck%x0) <= 0.5_dp*(deck%a - deck%diameter), 'impactor', 'x0', real_str(deck%x0), &
+         'the nose must lie on the plate: |x0| <= (a - diameter)/2 = ' // real_str(0.5_dp*(deck%a - deck%diameter)) &
+         // ' m (x0 is measured from the plate centre)')
+      call need(c, abs(deck%y0) <= 0.5_dp*(deck%b - deck%diameter), 'impactor', 'y0', real_str(deck%y0), &
+         'the nose must lie on the plate: |y0| <= (b - diameter)/2 = ' // real_str(0.5_dp*(deck%b - deck%diameter)) &
+         // ' m (y0 is measured from the plate centre)')
+      if (is_given(deck, 'output', 'gauge_x')) call need(c, abs(deck%gauge_x) <= 0.5_dp*deck%a, 'output', 'gauge_x', &
+         real_str(deck%gauge_x), 'the gauge must lie on the plate: |gauge_x| <= a/2 = ' // real_str(0.5_dp*deck%a) &
+         // ' m (gauge_x is measured from the plate centre)')
+      if (is_given(deck, 'output', 'gauge_y')) call need(c, abs(deck%gauge_y) <= 0.5_dp*deck%b, 'output', 'gauge_y', &
+         real_str(deck%gauge_y), 'the gauge must lie on the plate: |gauge_y| <= b/2 = ' // real_str(0.5_dp*deck%b) &
+         // ' m (gauge_y is measured from the plate centre)')
    end subroutine check_plate
 
    !> &output prefix: a name for the result files, on a writable file system.
@@ -407,32 +420,6 @@ contains
          // "'", 'is on a read-only file system (' // shown_text(nearest_directory(deck%prefix)) &
          // ' is mounted read-only): choose a prefix where the results can be written')
    end subroutine check_prefix
-
-   !> &impactor: the nose smaller than the plate and on it.
-   subroutine check_impactor(deck, c)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(checks_t), intent(inout) :: c            !< the checks so far
-      call need(c, deck%diameter < min(deck%a, deck%b), 'impactor', 'diameter', real_str(deck%diameter), &
-         'the nose must be smaller than the plate: diameter < min(a, b) = ' // real_str(min(deck%a, deck%b)) // ' m')
-      call need(c, abs(deck%x0) <= 0.5_dp*(deck%a - deck%diameter), 'impactor', 'x0', real_str(deck%x0), &
-         'the nose must lie on the plate: |x0| <= (a - diameter)/2 = ' // real_str(0.5_dp*(deck%a - deck%diameter)) &
-         // ' m (x0 is measured from the plate centre)')
-      call need(c, abs(deck%y0) <= 0.5_dp*(deck%b - deck%diameter), 'impactor', 'y0', real_str(deck%y0), &
-         'the nose must lie on the plate: |y0| <= (b - diameter)/2 = ' // real_str(0.5_dp*(deck%b - deck%diameter)) &
-         // ' m (y0 is measured from the plate centre)')
-   end subroutine check_impactor
-
-   !> &output gauge_x, gauge_y: the strain gauge on the plate.
-   subroutine check_gauge(deck, c)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(checks_t), intent(inout) :: c            !< the checks so far
-      if (is_given(deck, 'output', 'gauge_x')) call need(c, abs(deck%gauge_x) <= 0.5_dp*deck%a, 'output', 'gauge_x', &
-         real_str(deck%gauge_x), 'the gauge must lie on the plate: |gauge_x| <= a/2 = ' // real_str(0.5_dp*deck%a) &
-         // ' m (gauge_x is measured from the plate centre)')
-      if (is_given(deck, 'output', 'gauge_y')) call need(c, abs(deck%gauge_y) <= 0.5_dp*deck%b, 'output', 'gauge_y', &
-         real_str(deck%gauge_y), 'the gauge must lie on the plate: |gauge_y| <= b/2 = ' // real_str(0.5_dp*deck%b) &
-         // ' m (gauge_y is measured from the plate centre)')
-   end subroutine check_gauge
 
    !> &mesh domain: D16 = D26 = 0 and the impact point on its symmetry lines,
    !> a symmetric layup for a quarter or a strip.
