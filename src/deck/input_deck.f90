@@ -81,17 +81,13 @@ contains
       deck%source = source
       call read_deck_text(unit, groups, stat, line, what)
       if (stat /= 0) then
-         if (line > 0) then
-            errmsg = source // ': line ' // int_str(line) // ': ' // what
-         else
-            errmsg = source // ': ' // what
-         end if
+         if (line > 0) what = 'line ' // int_str(line) // ': ' // what
+         call fail(what)
          return
       end if
       if (size(groups) == 0) then
-         stat = failed
-         errmsg = source // ': the deck has no namelist group: an empty deck would run the default scene ' &
-            // '(give at least one group, e.g. &analysis kind = ''impact'' /)'
+         call fail('the deck has no namelist group: an empty deck would run the default scene ' &
+            // '(give at least one group, e.g. &analysis kind = ''impact'' /)')
          return
       end if
       groups_loop: do ig = 1, size(groups)
@@ -141,6 +137,7 @@ contains
 
    contains
 
+      !> stat failed, errmsg '<source>: message'.
       subroutine fail(message)
          character(len=*), intent(in) :: message
          stat = failed
@@ -565,7 +562,7 @@ contains
       integer, intent(in) :: iv                     !< entry of deck_vars
       type(value_t), intent(in) :: v                !< its value
       type(deck_var_t) :: e
-      integer :: k
+      integer :: j, k
       e = deck_vars(iv)      ! (a copy: gfortran 12 loses an associate name of a constant's element)
       select case (e%kind)
       case (kind_real)
@@ -576,12 +573,9 @@ contains
             interval_text(e%range, e%unit))
       case (kind_reals)
          if (len_trim(e%range) == 0) return
-         do k = 1, size(v%list)
-            if (in_interval(v%list(k), e%range)) cycle
-            call need(c, .false., trim(e%group), trim(e%name) // '(' // int_str(k) // ')', real_str(v%list(k)), &
-               interval_text(e%range, e%unit))
-            return
-         end do
+         k = findloc([(in_interval(v%list(j), e%range), j = 1, size(v%list))], .false., dim=1)
+         if (k > 0) call need(c, .false., trim(e%group), trim(e%name) // '(' // int_str(k) // ')', &
+            real_str(v%list(k)), interval_text(e%range, e%unit))
       case (kind_word)
          call need(c, index(' ' // words_of(e%range) // ' ', ' ' // v%s // ' ') > 0 .and. len(v%s) > 0, &
             trim(e%group), trim(e%name), "'" // v%s // "'", 'must be one of ' // words_quoted(e%range))
