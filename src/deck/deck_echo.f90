@@ -45,16 +45,13 @@ contains
       copy = deck
       call deck_bind(copy, iv, v, .false.)
       select case (deck_vars(iv)%kind)
-      case (kind_real)
-         text = real_str(v%r)
-         if (.not. v%given) text = '(not given)'
-      case (kind_integer)
-         text = int_str(v%i)
-         if (.not. v%given) text = '(not given)'
+      case (kind_real); text = real_str(v%r)
+      case (kind_integer); text = int_str(v%i)
       case (kind_logical); text = trim(merge('.true. ', '.false.', v%l))
       case (kind_word, kind_path); text = "'" // v%s // "'"
       case (kind_reals); text = list_str(v%list, huge(1))
       end select
+      if (.not. v%given) text = '(not given)'      ! an optional real or integer
    end function deck_value_text
 
    !> Writes the deck's values, 'name = value unit', by group, each line led by `lead`.

@@ -299,7 +299,7 @@ contains
       character(len=*), intent(in) :: text               !< the value as written
       character(len=:), allocatable, intent(out) :: s    !< the value
       character(len=:), allocatable, intent(out) :: what !< '' or what is wrong
-      integer :: k
+      integer :: j, k
       what = ''
       s = trim(adjustl(text))
       if (kind == kind_word) s = lower_case(s)
@@ -308,12 +308,8 @@ contains
       else if (len(s) > max_path_len) then
          what = 'longer than ' // int_str(max_path_len) // ' characters'
       else
-         do k = 1, len(s)
-            if (iachar(s(k:k)) < 32 .or. iachar(s(k:k)) == 127) then
-               what = 'holds a control character (code ' // int_str(iachar(s(k:k))) // ')'
-               return
-            end if
-         end do
+         k = findloc([(iachar(s(j:j)) < 32 .or. iachar(s(j:j)) == 127, j = 1, len(s))], .true., dim=1)
+         if (k > 0) what = 'holds a control character (code ' // int_str(iachar(s(k:k))) // ')'
       end if
    end subroutine convert_text
 
