@@ -1,14 +1,7 @@
-!> The command line of `impact`:
-!>
-!>   impact [options] [deck.nml]       no deck: the deck is read from standard input
-!>     --check  --overwrite  --restart  --set group.var=value (repeatable)
-!>     --trace STEP[,STEP]  --accuracy TOL  --single
-!>     --schema, --deck-table, --version, --help
-!>
-!> Options may stand before or after the deck; one deck only: a second
-!> one, an unknown option or a missing value is an error (the caller prints
-!> the usage line). What each option does: `impact --help`
-!> (src/results/run_report.f90) and docs/DECK.md. Not from the paper.
+!> The command line of `impact`: impact [options] [deck.nml], the deck from
+!> standard input when none is named; options before or after it. A second
+!> deck, an unknown option or a missing value is an error. What each option
+!> does: `impact --help` and docs/DECK.md. Not from the paper.
 module command_line
    use input_deck, only: deck_t, read_deck, read_deck_file, set_variable, validate_deck
    use deck_schema, only: not_given_real
@@ -89,9 +82,8 @@ contains
       stat = 0
    end subroutine parse_command_line
 
-   !> The deck the options name (a file, or standard input), with --set,
-   !> --accuracy (&accuracy target), --single (no target) and --overwrite over
-   !> it, then checked once (so the six strengths may come by --set together).
+   !> The deck the options name, with --set, --accuracy, --single and
+   !> --overwrite over it, then checked once.
    subroutine read_input_deck(opts, unit, deck, stat, errmsg)
       type(options_t), intent(in) :: opts           !< the options
       integer, intent(in) :: unit                   !< standard input's unit

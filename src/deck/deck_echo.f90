@@ -1,8 +1,7 @@
-!> The deck as people read it, from the one schema (src/deck/deck_schema.f90):
-!> the echo of a run's effective values (terminal, the head of every result
-!> file, /deck of <prefix>.h5), the deck table of docs/DECK.md (make deck-table,
-!> impact --deck-table), the tab-separated schema (impact --schema, read
-!> by tools/impact_files.py) and the schema in the words of input_deck's messages.
+!> The deck as people read it, from the schema (deck_schema.f90): the echo of
+!> a run's values (terminal, result files, /deck of <prefix>.h5), the table of
+!> docs/DECK.md (impact --deck-table), the tab-separated schema (impact
+!> --schema) and the schema in the words of input_deck's messages.
 module deck_echo
    use kinds, only: dp
    use number_text, only: real_str, int_str, list_str
@@ -19,7 +18,8 @@ module deck_echo
 contains
 
    !> True when the echo shows the group: &strength with its strengths or a
-   !> toughness, &accuracy for an accuracy run, the others by group_applies_kind.
+   !> toughness, &damage with the strengths, &accuracy for an accuracy run,
+   !> &contact, &load and &modes for the analyses that use them.
    pure logical function group_applies(group, deck)
       character(len=*), intent(in) :: group         !< the group, without '&'
       type(deck_t), intent(in) :: deck              !< the deck
@@ -27,27 +27,15 @@ contains
       case ('strength'); group_applies = strength_given(deck) .or. toughness_given(deck)
       case ('damage');   group_applies = strength_given(deck)
       case ('accuracy'); group_applies = accuracy_wanted(deck)
-      case default;      group_applies = group_applies_kind(group, deck%analysis_kind)
+      case ('contact');  group_applies = deck%analysis_kind == 'impact'
+      case ('load');     group_applies = deck%analysis_kind == 'static' .or. deck%analysis_kind == 'pressure'
+      case ('modes');    group_applies = deck%analysis_kind == 'modes'
+      case default;      group_applies = .true.
       end select
    end function group_applies
 
-   !> True when the group concerns an analysis of this kind: &load static and
-   !> pressure, &modes modes, &contact the impact.
-   pure logical function group_applies_kind(group, analysis_kind)
-      character(len=*), intent(in) :: group         !< the group, without '&'
-      character(len=*), intent(in) :: analysis_kind !< &analysis kind
-      select case (trim(group))
-      case ('contact');  group_applies_kind = analysis_kind == 'impact'
-      case ('load');     group_applies_kind = analysis_kind == 'static' .or. analysis_kind == 'pressure'
-      case ('modes');    group_applies_kind = analysis_kind == 'modes'
-      case default;      group_applies_kind = .true.
-      end select
-   end function group_applies_kind
-
-   !> The value of entry iv as a deck would give it ('0.15', "'clamped'",
-   !> '.true.', '0, 45, ...'), or '(not given)'; reals with the fewest
-   !> digits that read back to the same double, so two texts are equal
-   !> exactly when the values are (the restart point's deck check).
+   !> Entry iv's value as a deck gives it ('0.15', "'clamped'", '.true.'), or
+   !> '(not given)'; reals with the fewest digits that read back the same double.
    function deck_value_text(deck, iv) result(text)
       type(deck_t), intent(in) :: deck              !< the deck
       integer, intent(in) :: iv                     !< entry of deck_vars
@@ -57,29 +45,16 @@ contains
       copy = deck
       call deck_bind(copy, iv, v, .false.)
       select case (deck_vars(iv)%kind)
-      case (kind_real)
-         text = real_str(v%r)
-         if (.not. v%given) text = '(not given)'
-      case (kind_integer)
-         text = int_str(v%i)
-         if (.not. v%given) text = '(not given)'
+      case (kind_real); text = real_str(v%r)
+      case (kind_integer); text = int_str(v%i)
       case (kind_logical); text = trim(merge('.true. ', '.false.', v%l))
       case (kind_word, kind_path); text = "'" // v%s // "'"
       case (kind_reals); text = list_str(v%list, huge(1))
       end select
+      if (.not. v%given) text = '(not given)'      ! an optional real or integer
    end function deck_value_text
 
-   !> 'name = value unit' of entry iv, as the echo gives it (no unit for '-').
-   function echo_piece(deck, iv) result(piece)
-      type(deck_t), intent(in) :: deck              !< the deck
-      integer, intent(in) :: iv                     !< entry of deck_vars
-      character(len=:), allocatable :: piece
-      piece = trim(deck_vars(iv)%name) // ' = ' // deck_value_text(deck, iv)
-      if (trim(deck_vars(iv)%unit) /= '-') piece = piece // ' ' // trim(deck_vars(iv)%unit)
-   end function echo_piece
-
-   !> Writes the effective values of `deck`, 'name = value unit', by group
-   !> (those the analysis uses), each line led by `lead` ('# ' in the files).
+   !> Writes the deck's values, 'name = value unit', by group, each line led by `lead`.
    subroutine echo_deck(deck, unit, lead)
       type(deck_t), intent(in) :: deck              !< the deck to echo
       integer, intent(in) :: unit                   !< open formatted unit
@@ -94,8 +69,7 @@ contains
       end do
    end subroutine echo_deck
 
-   !> The echo's lines of one group: '&group' in the group column of the
-   !> first, then its variables, as many to a line as echo_width holds.
+   !> The echo's lines of one group, as many variables to a line as echo_width holds.
    subroutine echo_group(deck, group, unit, lead)
       type(deck_t), intent(in) :: deck              !< the deck to echo
       character(len=*), intent(in) :: group         !< the group, without '&'
@@ -109,7 +83,8 @@ contains
       piece = ''          ! (else gfortran 12 at -O2 takes its length for unset in the loop)
       vars: do iv = 1, size(deck_vars)
          if (deck_vars(iv)%group /= group) cycle vars
-         piece = echo_piece(deck, iv)
+         piece = trim(deck_vars(iv)%name) // ' = ' // deck_value_text(deck, iv)     ! no unit for '-'
+         if (trim(deck_vars(iv)%unit) /= '-') piece = piece // ' ' // trim(deck_vars(iv)%unit)
          if (len(line) > 0 .and. group_column + len(line) + 2 + len(piece) > echo_width) then
             write (unit, '(a)') lead // column // line // ','
             column = ''
@@ -119,18 +94,17 @@ contains
          line = line // piece
       end do vars
       write (unit, '(a)') lead // column // line
-      ! -- settings chosen from the scene (src/model/scene_settings.f90), one line each
+      ! -- settings chosen from the scene, one line each
       column = ''
       if (group == 'analysis' .and. len_trim(deck%dt_chosen) > 0) write (unit, '(a)') lead // column // trim(deck%dt_chosen)
       if (group == 'mesh' .and. len_trim(deck%mesh_chosen) > 0) write (unit, '(a)') lead // column // trim(deck%mesh_chosen)
    end subroutine echo_group
 
-   !> The deck table of docs/DECK.md (Markdown): group, variable, unit, default,
-   !> meaning, from the schema (make deck-table).
+   !> The deck table of docs/DECK.md (Markdown), from the schema.
    subroutine write_deck_table(unit)
       integer, intent(in) :: unit                   !< open formatted unit
       integer :: iv
-      character(len=:), allocatable :: group, meaning
+      character(len=:), allocatable :: group, meaning, default
       character(len=len(deck_vars%group)) :: previous
       type(deck_var_t) :: e
       write (unit, '(a)') '| group | variable | unit | default | meaning |'
@@ -145,26 +119,15 @@ contains
          if (e%kind == kind_word) meaning = meaning // ' (' // words_quoted(e%range) // ')'
          if ((e%kind == kind_real .or. e%kind == kind_integer) .and. trim(e%range) /= '(-inf, inf)') &
             meaning = meaning // '; in ' // trim(e%range)
+         default = '`' // trim(e%default) // '`'
+         if (e%kind == kind_word .or. e%kind == kind_path) default = "`'" // trim(e%default) // "'`"
+         if (len_trim(e%default) == 0) default = 'not given'
          write (unit, '(a)') '| ' // group // ' | `' // trim(e%name) // '` | ' // trim(e%unit) // ' | ' &
-            // default_text(e) // ' | ' // meaning // ' |'
+            // default // ' | ' // meaning // ' |'
       end do
-   contains
-      !> The default as the table gives it: 'not given', a quoted word or the value.
-      function default_text(e) result(text)
-         type(deck_var_t), intent(in) :: e          !< the entry
-         character(len=:), allocatable :: text
-         if (len_trim(e%default) == 0) then
-            text = 'not given'
-         else if (e%kind == kind_word .or. e%kind == kind_path) then
-            text = "`'" // trim(e%default) // "'`"
-         else
-            text = '`' // trim(e%default) // '`'
-         end if
-      end function default_text
    end subroutine write_deck_table
 
-   !> The schema as tab-separated lines, one per variable: group, name,
-   !> kind, unit, default, range (impact --schema; tools/impact_files.py).
+   !> The schema, one tab-separated line per variable (impact --schema).
    subroutine write_schema(unit)
       integer, intent(in) :: unit                   !< open formatted unit
       integer :: iv
@@ -187,34 +150,23 @@ contains
       character(len=:), allocatable :: text
       if (any(deck_groups == group)) then
          text = '&' // group // ': ' // name // ': unknown variable (the variables of &' // group // ' are ' &
-            // variable_list(group) // ')'
+            // name_list(pack(deck_vars%name, deck_vars%group == group), '') // ')'
       else
-         text = '&' // group // ': unknown namelist group (the groups are ' // group_list() // ')'
+         text = '&' // group // ': unknown namelist group (the groups are ' // name_list(deck_groups, '&') // ')'
       end if
    end function unknown_name
 
-   !> The groups as '&plate, &lamina, ...'.
-   function group_list() result(list)
+   !> The names as 'a, b, h', each led by `lead`.
+   pure function name_list(names, lead) result(list)
+      character(len=*), intent(in) :: names(:), lead
       character(len=:), allocatable :: list
       integer :: i
-      list = '&' // trim(deck_groups(1))
-      do i = 2, size(deck_groups)
-         list = list // ', &' // trim(deck_groups(i))
-      end do
-   end function group_list
-
-   !> The variables of a group as 'a, b, h'.
-   function variable_list(group) result(list)
-      character(len=*), intent(in) :: group
-      character(len=:), allocatable :: list
-      integer :: iv
       list = ''
-      do iv = 1, size(deck_vars)
-         if (deck_vars(iv)%group /= group) cycle
-         if (len(list) > 0) list = list // ', '
-         list = list // trim(deck_vars(iv)%name)
+      do i = 1, size(names)
+         if (i > 1) list = list // ', '
+         list = list // lead // trim(names(i))
       end do
-   end function variable_list
+   end function name_list
 
    !> The bounds of an interval text.
    pure subroutine interval(range, lo, hi, lo_open, hi_open)

@@ -1,16 +1,11 @@
-!> The deck's variables, declared once: the schema. Every variable of
-!> every namelist group has one entry in `deck_vars` (group, name, kind,
-!> unit, default, admissible range, meaning); the reader, the range checks,
-!> the echo, the `/deck` attributes of <prefix>.h5, `impact --schema` and
-!> the deck table of docs/DECK.md are derived from it. The values live in
-!> `deck_t`, one component per variable, connected by `deck_bind`.
-!>
-!> Adding a variable: its entry in deck_vars, its component in deck_t, its
-!> line in deck_bind, and any check across variables in validate_deck
-!> (src/deck/input_deck.f90). A default '' makes a variable optional: "not
-!> given" is kept as a value no reader produces (NaN, not_given_integer);
-!> ask is_given (or strength_given), never compare with the sentinel.
-!> deck_t%given tells which variables the deck or --set wrote.
+!> The deck's variables, declared once: one entry of `deck_vars` per variable
+!> (group, name, kind, unit, default, range, meaning), from which the reader,
+!> the checks, the echo, /deck of <prefix>.h5, `impact --schema` and the
+!> table of docs/DECK.md derive. The values live in `deck_t`, connected by
+!> `deck_bind`. Adding a variable: its entry, its component, its line in
+!> deck_bind, any check across variables in validate_deck (input_deck.f90).
+!> A default '' makes it optional: "not given" is a value no reader produces
+!> (NaN, not_given_integer); ask is_given, never compare with the sentinel.
 !> Not from the paper. More: docs/DECK.md.
 module deck_schema
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
@@ -28,8 +23,7 @@ module deck_schema
                          kind_path = 5, kind_reals = 6
    character(len=8), parameter :: kind_names(6) = [character(len=8) :: 'real', 'integer', 'logical', &
       'word', 'text', 'reals']
-   !> Longest word value (a keyword), longest text value (a path), most
-   !> values of a list (plies).
+   !> Longest word (a keyword), longest text (a path), longest list (plies).
    integer, parameter :: max_word_len = 32, max_path_len = 4096, max_list_len = 1000
    !> "Not given" of an optional integer: a value no reader produces (module header).
    integer, parameter :: not_given_integer = -huge(0) - 1
@@ -49,8 +43,7 @@ module deck_schema
    character(len=8), parameter :: deck_groups(14) = [character(len=8) :: 'plate', 'lamina', 'laminate', &
       'strength', 'damage', 'impactor', 'contact', 'mesh', 'boundary', 'analysis', 'load', 'modes', 'output', 'accuracy']
 
-   !> THE LIST. Paper's values as defaults where the paper gives one (Choi,
-   !> Hong & Lee 1991: section 2.4, Tables 1-3); SI units.
+   !> THE LIST. The paper's values as defaults (section 2.4, Tables 1-3).
    type(deck_var_t), parameter :: deck_vars(*) = [ &
       deck_var_t('plate', 'a', kind_real, 'm', '0.15', '[1e-3, 100]', 'plate length along x'), &
       deck_var_t('plate', 'b', kind_real, 'm', '0.10', '[1e-3, 100]', 'plate width along y'), &
@@ -201,8 +194,7 @@ module deck_schema
          // 'summary keys joined by + (peak_force_N, max_deflection_mm, contact_duration_us, time_of_peak_us, ' &
          // 'max_strain_y_back, max_failure_index), ''default'' (the first three, max_failure_index) or ''all''') ]
 
-   !> Everything the deck sets, as the program reads it (SI units). The
-   !> defaults are deck_vars' (default_deck in src/deck/input_deck.f90).
+   !> Everything the deck sets (SI units); defaults: default_deck (input_deck).
    type :: deck_t
       character(len=:), allocatable :: source       !< file the deck came from, or '<stdin>'
       character(len=:), allocatable :: settings     !< the command line's --set settings over it, '' for none
@@ -212,7 +204,7 @@ module deck_schema
       real(dp) :: e1 = 0, e2 = 0, g12 = 0, g13 = 0, g23 = 0, nu12 = 0, rho = 0
       ! &laminate
       real(dp), allocatable :: angles(:)
-      real(dp) :: k4 = 0, k5 = 0                    !< NaN: not given (Whitney's method; module header, is_given)
+      real(dp) :: k4 = 0, k5 = 0                    !< NaN: not given (Whitney's method; is_given)
       character(len=:), allocatable :: bend_twist
       ! &strength (NaN: not given, as k4, k5: strength_given)
       real(dp) :: xt = 0, xc = 0, yt = 0, yc = 0, s12 = 0, s23 = 0
@@ -256,9 +248,7 @@ module deck_schema
       real(dp) :: accuracy_target = 0              !< NaN: not given (one plain run; accuracy_wanted)
       real(dp) :: accuracy_max_cpu_s = 0, accuracy_mesh_factor = 0
       character(len=:), allocatable :: accuracy_results
-      !> &analysis dt, &mesh nx, ny chosen from the scene where the deck does not
-      !> give them: what and why, one line each ('' for a given value;
-      !> src/model/scene_settings.f90, choose_settings)
+      !> dt, nx, ny chosen from the scene: what and why ('' for a given value)
       character(len=240) :: dt_chosen = '', mesh_chosen = ''
       !> which variables the deck (or --set) gave, by entry of deck_vars
       logical :: given(size(deck_vars)) = .false.
@@ -294,16 +284,15 @@ contains
    end function find_var
 
    !> True when the deck gives the six strengths of &strength: the ply
-   !> stresses and the failure criterion are then computed (src/results/damage_record.f90).
+   !> stresses and the failure criterion are then computed.
    pure logical function strength_given(deck)
       type(deck_t), intent(in) :: deck   !< the deck
-      strength_given = is_given(deck, 'strength', 'xt') .and. is_given(deck, 'strength', 'xc') &
-         .and. is_given(deck, 'strength', 'yt') .and. is_given(deck, 'strength', 'yc') &
-         .and. is_given(deck, 'strength', 's12') .and. is_given(deck, 'strength', 's23')
+      character(len=3), parameter :: names(6) = [character(len=3) :: 'xt', 'xc', 'yt', 'yc', 's12', 's23']
+      integer :: k
+      strength_given = all([(is_given(deck, 'strength', trim(names(k))), k = 1, size(names))])
    end function strength_given
 
-   !> True when the deck gives any of the fracture toughnesses of
-   !> &strength (g1c, g2c, gft, gfc, gmt, gmc).
+   !> True when the deck gives any toughness of &strength (g1c, ... gmc).
    pure logical function toughness_given(deck)
       type(deck_t), intent(in) :: deck              !< the deck
       character(len=3), parameter :: names(6) = [character(len=3) :: 'g1c', 'g2c', 'gft', 'gfc', 'gmt', 'gmc']
@@ -311,17 +300,14 @@ contains
       toughness_given = any([(is_given(deck, 'strength', trim(names(k))), k = 1, size(names))])
    end function toughness_given
 
-   !> True when the deck asks for an accuracy run (&accuracy target given,
-   !> or impact --accuracy TOL): a ladder of runs (src/accuracy/).
+   !> True when the deck asks for an accuracy run (&accuracy target, --accuracy).
    pure logical function accuracy_wanted(deck)
       type(deck_t), intent(in) :: deck   !< the deck
       accuracy_wanted = is_given(deck, 'accuracy', 'target')
    end function accuracy_wanted
 
-   !> True when the variable group.name has a value: always for one with a
-   !> default; for an optional one (default '') when the deck, --set or the
-   !> program gave it one (module header, "Not given"). False for a name the
-   !> schema does not know.
+   !> True when group.name has a value: always with a default, for an optional
+   !> one when given one (module header); false for an unknown name.
    pure logical function is_given(deck, group, name)
       type(deck_t), intent(in) :: deck              !< the deck
       character(len=*), intent(in) :: group, name   !< the variable, lower case
@@ -337,18 +323,15 @@ contains
       is_given = v%given
    end function is_given
 
-   !> "Not given" of an optional real: NaN, a value no reader produces
-   !> (module header).
+   !> "Not given" of an optional real: NaN (module header).
    pure function not_given_real() result(x)
       real(dp) :: x
       x = ieee_value(x, ieee_quiet_nan)
    end function not_given_real
 
-   !> Moves the value of entry iv between v and the deck's component: into
-   !> the deck when set is true, out of it otherwise. An optional real or
-   !> integer (default '') without a value (v%given false) goes in as its
-   !> sentinel and comes out with v%given false (module header, "Not
-   !> given").
+   !> Moves entry iv's value between v and the deck: in when set, else out.
+   !> An optional value without a value (v%given false) goes in as its
+   !> sentinel and comes out with v%given false (module header).
    pure subroutine deck_bind(deck, iv, v, set)
       type(deck_t), intent(inout) :: deck   !< the deck
       integer, intent(in) :: iv             !< entry of deck_vars
@@ -360,83 +343,83 @@ contains
          v%i = not_given_integer
       end if
       select case (var_key(iv))
-      case ('plate.a');                    call bind_real(deck%a, v, set)
-      case ('plate.b');                    call bind_real(deck%b, v, set)
-      case ('plate.h');                    call bind_real(deck%h, v, set)
-      case ('lamina.e1');                  call bind_real(deck%e1, v, set)
-      case ('lamina.e2');                  call bind_real(deck%e2, v, set)
-      case ('lamina.g12');                 call bind_real(deck%g12, v, set)
-      case ('lamina.g13');                 call bind_real(deck%g13, v, set)
-      case ('lamina.g23');                 call bind_real(deck%g23, v, set)
-      case ('lamina.nu12');                call bind_real(deck%nu12, v, set)
-      case ('lamina.rho');                 call bind_real(deck%rho, v, set)
+      case ('plate.a');                    call bind_value(deck%a, v, set)
+      case ('plate.b');                    call bind_value(deck%b, v, set)
+      case ('plate.h');                    call bind_value(deck%h, v, set)
+      case ('lamina.e1');                  call bind_value(deck%e1, v, set)
+      case ('lamina.e2');                  call bind_value(deck%e2, v, set)
+      case ('lamina.g12');                 call bind_value(deck%g12, v, set)
+      case ('lamina.g13');                 call bind_value(deck%g13, v, set)
+      case ('lamina.g23');                 call bind_value(deck%g23, v, set)
+      case ('lamina.nu12');                call bind_value(deck%nu12, v, set)
+      case ('lamina.rho');                 call bind_value(deck%rho, v, set)
       case ('laminate.angles');            call bind_list(deck%angles, v, set)
-      case ('laminate.k4');                call bind_real(deck%k4, v, set)
-      case ('laminate.k5');                call bind_real(deck%k5, v, set)
+      case ('laminate.k4');                call bind_value(deck%k4, v, set)
+      case ('laminate.k5');                call bind_value(deck%k5, v, set)
       case ('laminate.bend_twist');        call bind_text(deck%bend_twist, v, set)
-      case ('strength.xt');                call bind_real(deck%xt, v, set)
-      case ('strength.xc');                call bind_real(deck%xc, v, set)
-      case ('strength.yt');                call bind_real(deck%yt, v, set)
-      case ('strength.yc');                call bind_real(deck%yc, v, set)
-      case ('strength.s12');               call bind_real(deck%s12, v, set)
-      case ('strength.s23');               call bind_real(deck%s23, v, set)
+      case ('strength.xt');                call bind_value(deck%xt, v, set)
+      case ('strength.xc');                call bind_value(deck%xc, v, set)
+      case ('strength.yt');                call bind_value(deck%yt, v, set)
+      case ('strength.yc');                call bind_value(deck%yc, v, set)
+      case ('strength.s12');               call bind_value(deck%s12, v, set)
+      case ('strength.s23');               call bind_value(deck%s23, v, set)
       case ('strength.criterion');         call bind_text(deck%criterion, v, set)
-      case ('strength.g1c');               call bind_real(deck%g1c, v, set)
-      case ('strength.g2c');               call bind_real(deck%g2c, v, set)
-      case ('strength.gft');               call bind_real(deck%gft, v, set)
-      case ('strength.gfc');               call bind_real(deck%gfc, v, set)
-      case ('strength.gmt');               call bind_real(deck%gmt, v, set)
-      case ('strength.gmc');               call bind_real(deck%gmc, v, set)
+      case ('strength.g1c');               call bind_value(deck%g1c, v, set)
+      case ('strength.g2c');               call bind_value(deck%g2c, v, set)
+      case ('strength.gft');               call bind_value(deck%gft, v, set)
+      case ('strength.gfc');               call bind_value(deck%gfc, v, set)
+      case ('strength.gmt');               call bind_value(deck%gmt, v, set)
+      case ('strength.gmc');               call bind_value(deck%gmc, v, set)
       case ('damage.model');               call bind_text(deck%damage_model, v, set)
-      case ('damage.viscosity');           call bind_real(deck%damage_viscosity, v, set)
-      case ('impactor.mass');              call bind_real(deck%mass, v, set)
-      case ('impactor.velocity');          call bind_real(deck%velocity, v, set)
-      case ('impactor.diameter');          call bind_real(deck%diameter, v, set)
-      case ('impactor.x0');                call bind_real(deck%x0, v, set)
-      case ('impactor.y0');                call bind_real(deck%y0, v, set)
-      case ('contact.k');                  call bind_real(deck%k, v, set)
-      case ('contact.q');                  call bind_real(deck%q, v, set)
-      case ('contact.alpha_p');            call bind_real(deck%alpha_p, v, set)
-      case ('contact.beta');               call bind_real(deck%beta, v, set)
+      case ('damage.viscosity');           call bind_value(deck%damage_viscosity, v, set)
+      case ('impactor.mass');              call bind_value(deck%mass, v, set)
+      case ('impactor.velocity');          call bind_value(deck%velocity, v, set)
+      case ('impactor.diameter');          call bind_value(deck%diameter, v, set)
+      case ('impactor.x0');                call bind_value(deck%x0, v, set)
+      case ('impactor.y0');                call bind_value(deck%y0, v, set)
+      case ('contact.k');                  call bind_value(deck%k, v, set)
+      case ('contact.q');                  call bind_value(deck%q, v, set)
+      case ('contact.alpha_p');            call bind_value(deck%alpha_p, v, set)
+      case ('contact.beta');               call bind_value(deck%beta, v, set)
       case ('contact.load');               call bind_text(deck%contact_load, v, set)
-      case ('mesh.nx');                    call bind_integer(deck%nx, v, set)
-      case ('mesh.ny');                    call bind_integer(deck%ny, v, set)
+      case ('mesh.nx');                    call bind_value(deck%nx, v, set)
+      case ('mesh.ny');                    call bind_value(deck%ny, v, set)
       case ('mesh.domain');                call bind_text(deck%domain, v, set)
-      case ('mesh.average_bend_twist');    call bind_logical(deck%average_bend_twist, v, set)
-      case ('mesh.grading');               call bind_real(deck%grading, v, set)
+      case ('mesh.average_bend_twist');    call bind_value(deck%average_bend_twist, v, set)
+      case ('mesh.grading');               call bind_value(deck%grading, v, set)
       case ('mesh.shear_rule');            call bind_text(deck%shear_rule, v, set)
-      case ('mesh.stabilization');         call bind_real(deck%stabilization, v, set)
+      case ('mesh.stabilization');         call bind_value(deck%stabilization, v, set)
       case ('boundary.edges');             call bind_text(deck%edges, v, set)
       case ('boundary.inplane');           call bind_text(deck%inplane, v, set)
       case ('analysis.kind');              call bind_text(deck%analysis_kind, v, set)
       case ('analysis.theory');            call bind_text(deck%theory, v, set)
-      case ('analysis.dt');                call bind_real(deck%dt, v, set)
-      case ('analysis.t_end');             call bind_real(deck%t_end, v, set)
-      case ('analysis.cr1');               call bind_real(deck%cr1, v, set)
-      case ('analysis.cr2');               call bind_real(deck%cr2, v, set)
+      case ('analysis.dt');                call bind_value(deck%dt, v, set)
+      case ('analysis.t_end');             call bind_value(deck%t_end, v, set)
+      case ('analysis.cr1');               call bind_value(deck%cr1, v, set)
+      case ('analysis.cr2');               call bind_value(deck%cr2, v, set)
       case ('analysis.scheme');            call bind_text(deck%scheme, v, set)
       case ('analysis.storage');           call bind_text(deck%storage, v, set)
-      case ('analysis.max_contact_iter');  call bind_integer(deck%max_contact_iter, v, set)
-      case ('analysis.max_nonlinear_iter'); call bind_integer(deck%max_nonlinear_iter, v, set)
+      case ('analysis.max_contact_iter');  call bind_value(deck%max_contact_iter, v, set)
+      case ('analysis.max_nonlinear_iter'); call bind_value(deck%max_nonlinear_iter, v, set)
       case ('analysis.force_update');      call bind_text(deck%force_update, v, set)
-      case ('analysis.stop_on_warning');   call bind_logical(deck%stop_on_warning, v, set)
+      case ('analysis.stop_on_warning');   call bind_value(deck%stop_on_warning, v, set)
       case ('load.kind');                  call bind_text(deck%load_kind, v, set)
-      case ('load.magnitude');             call bind_real(deck%load_magnitude, v, set)
-      case ('load.increments');            call bind_integer(deck%load_increments, v, set)
-      case ('modes.count');                call bind_integer(deck%mode_count, v, set)
-      case ('modes.shapes');               call bind_logical(deck%mode_shapes, v, set)
+      case ('load.magnitude');             call bind_value(deck%load_magnitude, v, set)
+      case ('load.increments');            call bind_value(deck%load_increments, v, set)
+      case ('modes.count');                call bind_value(deck%mode_count, v, set)
+      case ('modes.shapes');               call bind_value(deck%mode_shapes, v, set)
       case ('output.prefix');              call bind_text(deck%prefix, v, set)
-      case ('output.every');               call bind_integer(deck%every, v, set)
-      case ('output.overwrite');           call bind_logical(deck%overwrite, v, set)
-      case ('output.hdf5');                call bind_logical(deck%hdf5, v, set)
+      case ('output.every');               call bind_value(deck%every, v, set)
+      case ('output.overwrite');           call bind_value(deck%overwrite, v, set)
+      case ('output.hdf5');                call bind_value(deck%hdf5, v, set)
       case ('output.xdmf');                call bind_text(deck%xdmf, v, set)
-      case ('output.fields_every');        call bind_integer(deck%fields_every, v, set)
+      case ('output.fields_every');        call bind_value(deck%fields_every, v, set)
       case ('output.gauge');               call bind_text(deck%gauge, v, set)
-      case ('output.gauge_x');             call bind_real(deck%gauge_x, v, set)
-      case ('output.gauge_y');             call bind_real(deck%gauge_y, v, set)
-      case ('accuracy.target');            call bind_real(deck%accuracy_target, v, set)
-      case ('accuracy.max_cpu_s');         call bind_real(deck%accuracy_max_cpu_s, v, set)
-      case ('accuracy.mesh_factor');       call bind_real(deck%accuracy_mesh_factor, v, set)
+      case ('output.gauge_x');             call bind_value(deck%gauge_x, v, set)
+      case ('output.gauge_y');             call bind_value(deck%gauge_y, v, set)
+      case ('accuracy.target');            call bind_value(deck%accuracy_target, v, set)
+      case ('accuracy.max_cpu_s');         call bind_value(deck%accuracy_max_cpu_s, v, set)
+      case ('accuracy.mesh_factor');       call bind_value(deck%accuracy_mesh_factor, v, set)
       case ('accuracy.results');           call bind_text(deck%accuracy_results, v, set)
       end select
       if (.not. set .and. len_trim(deck_vars(iv)%default) == 0) then
@@ -447,41 +430,23 @@ contains
       end if
    end subroutine deck_bind
 
-   !> A real between v%r and the deck (deck_bind).
-   pure subroutine bind_real(x, v, set)
-      real(dp), intent(inout) :: x              !< the deck's component
+   !> A real, integer or logical between v and the deck (deck_bind).
+   pure subroutine bind_value(x, v, set)
+      class(*), intent(inout) :: x              !< the deck's component
       type(value_t), intent(inout) :: v         !< the value
       logical, intent(in) :: set                !< direction: v -> x
-      if (set) then
-         x = v%r
-      else
-         v%r = x
-      end if
-   end subroutine bind_real
-
-   !> An integer between v%i and the deck (deck_bind).
-   pure subroutine bind_integer(x, v, set)
-      integer, intent(inout) :: x               !< the deck's component
-      type(value_t), intent(inout) :: v         !< the value
-      logical, intent(in) :: set                !< direction: v -> x
-      if (set) then
-         x = v%i
-      else
-         v%i = x
-      end if
-   end subroutine bind_integer
-
-   !> A logical between v%l and the deck (deck_bind).
-   pure subroutine bind_logical(x, v, set)
-      logical, intent(inout) :: x               !< the deck's component
-      type(value_t), intent(inout) :: v         !< the value
-      logical, intent(in) :: set                !< direction: v -> x
-      if (set) then
-         x = v%l
-      else
-         v%l = x
-      end if
-   end subroutine bind_logical
+      select type (x)
+      type is (real(dp))
+         if (set) x = v%r
+         if (.not. set) v%r = x
+      type is (integer)
+         if (set) x = v%i
+         if (.not. set) v%i = x
+      type is (logical)
+         if (set) x = v%l
+         if (.not. set) v%l = x
+      end select
+   end subroutine bind_value
 
    !> A word or a text between v%s and the deck ('' for an unset one) (deck_bind).
    pure subroutine bind_text(x, v, set)
@@ -491,11 +456,8 @@ contains
       if (set) then
          x = v%s
       else
-         if (allocated(x)) then
-            v%s = x
-         else
-            v%s = ''
-         end if
+         v%s = ''
+         if (allocated(x)) v%s = x
       end if
    end subroutine bind_text
 
@@ -507,11 +469,8 @@ contains
       if (set) then
          x = v%list
       else
-         if (allocated(x)) then
-            v%list = x
-         else
-            allocate (v%list(0))
-         end if
+         allocate (v%list(0))
+         if (allocated(x)) v%list = x
       end if
    end subroutine bind_list
 
@@ -526,7 +485,6 @@ contains
       end do
    end function words_of
 
-
    !> The words of a range as "'a', 'b', 'c'".
    pure function words_quoted(range) result(text)
       character(len=*), intent(in) :: range
@@ -534,17 +492,13 @@ contains
       integer :: bar
       text = ''
       rest = trim(range)
-      do
-         bar = index(rest, '|')
-         if (len(text) > 0) text = text // ', '
-         if (bar == 0) then
-            text = text // "'" // trim(adjustl(rest)) // "'"
-            exit
-         end if
-         text = text // "'" // trim(adjustl(rest(:bar - 1))) // "'"
+      bar = index(rest, '|')
+      do while (bar > 0)
+         text = text // "'" // trim(adjustl(rest(:bar - 1))) // "', "
          rest = rest(bar + 1:)
+         bar = index(rest, '|')
       end do
+      text = text // "'" // trim(adjustl(rest)) // "'"
    end function words_quoted
-
 
 end module deck_schema

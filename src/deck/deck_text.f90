@@ -1,9 +1,8 @@
-!> The text of a deck: its namelist groups and assignments with their line
-!> numbers, before their meaning (input_deck checks them against the schema).
-!> Fortran's namelist syntax as a deck needs it ('&group name = value, ... /',
-!> quotes, '!' comments, r*c), read stricter than a compiler's, so that
-!> nothing is silently ignored; an error comes back as its line and what is
-!> wrong. Time linear in the deck's length. More: docs/DECK.md.
+!> The text of a deck: its namelist groups and assignments with their lines,
+!> before their meaning (input_deck checks them against the schema). The
+!> namelist syntax a deck needs ('&group name = value, ... /', quotes, '!'
+!> comments, r*c), read stricter than a compiler's: nothing is silently
+!> ignored. Time linear in the deck's length. More: docs/DECK.md.
 module deck_text
    use, intrinsic :: iso_fortran_env, only: iostat_end
    use number_text, only: int_str
@@ -17,8 +16,7 @@ module deck_text
    !> Bytes of the deck's text a message shows before it is cut ('...').
    integer, parameter :: max_shown = 60
 
-   !> One value as written: its text (without quotes), whether it was
-   !> quoted, and its repeat count (r*c: the value c, r times).
+   !> One value as written: its text (without quotes), quoted or not, r of r*c.
    type :: item_t
       character(len=:), allocatable :: text
       logical :: quoted = .false.
@@ -68,8 +66,7 @@ module deck_text
       character(len=:), allocatable :: what     !< what is wrong
    end type text_error_t
 
-   !> The reading so far: the groups found, the tokens of the open group
-   !> (the last one, while it has no '/'), the first error.
+   !> The reading so far: the groups, the open group's tokens, the first error.
    type :: reader_t
       type(group_text_t), allocatable :: groups(:)   !< the groups, in order, groups(:ngroup)
       integer :: ngroup = 0                          !< groups in groups
@@ -80,8 +77,8 @@ module deck_text
 
 contains
 
-   !> The groups of the deck on `unit` (read once to its end: standard input
-   !> is fine); on a syntax error stat = 1, its line (0: the whole deck), what.
+   !> The groups of the deck on `unit` (read once to its end); on a syntax
+   !> error stat = 1, its line (0: the whole deck) and what is wrong.
    subroutine read_deck_text(unit, groups, stat, line, what)
       integer, intent(in) :: unit                              !< the deck's unit
       type(group_text_t), allocatable, intent(out) :: groups(:) !< its groups, in order
@@ -97,7 +94,7 @@ contains
       r%err%what = ''
       nline = 0
       bytes = 0
-      lines_loop: do
+      lines_loop: do while (r%err%stat == 0)
          call read_line(unit, max_deck_bytes - bytes, text, ios, msg, over)
          if (ios == iostat_end) exit lines_loop
          nline = nline + 1
@@ -105,16 +102,13 @@ contains
             call fail(r%err, 0, 'longer than ' // int_str(max_deck_bytes/1048576) // ' MiB (' &
                // int_str(max_deck_bytes) // ' bytes), the most a deck may be (a deck ' &
                // 'is a few kilobytes of text: is this the deck?)')
-            exit lines_loop
-         end if
-         if (ios /= 0) then
+         else if (ios /= 0) then
             call fail(r%err, nline, 'cannot read the line: ' // trim(msg))
-            exit lines_loop
+         else
+            bytes = bytes + len(text) + 1
+            if (nline == 1 .and. index(text, byte_order_mark) == 1) text = text(len(byte_order_mark) + 1:)
+            call scan_line(r, text, nline)
          end if
-         bytes = bytes + len(text) + 1
-         if (nline == 1 .and. index(text, byte_order_mark) == 1) text = text(len(byte_order_mark) + 1:)
-         call scan_line(r, text, nline)
-         if (r%err%stat /= 0) exit lines_loop
       end do lines_loop
       if (r%err%stat == 0 .and. group_open(r)) call fail(r%err, r%groups(r%ngroup)%line, &
          open_group_name(r) // ": no closing '/' (the group runs to the end of the deck)")
@@ -158,7 +152,7 @@ contains
    ! ============================================================ tokenizer
 
    !> The tokens of one line: outside a group only a group's start, blanks
-   !> and a comment; inside one its tokens, collected until its end.
+   !> and a comment; inside one, its tokens.
    subroutine scan_line(r, s, ln)
       type(reader_t), intent(inout) :: r        !< the reading
       character(len=*), intent(in) :: s         !< the line
@@ -179,8 +173,7 @@ contains
       end do chars
    end subroutine scan_line
 
-   !> Outside a group, at s(i:i): '&name' starts a group (i moves past the
-   !> name); anything else is an error.
+   !> Outside a group, at s(i:i): '&name' starts a group; anything else is an error.
    subroutine scan_group_start(r, s, i, ln)
       type(reader_t), intent(inout) :: r        !< the reading
       character(len=*), intent(in) :: s         !< the line
@@ -204,8 +197,7 @@ contains
       end if
    end subroutine scan_group_start
 
-   !> Inside a group, at s(i:i): its end ('/' or '&end'), a string, '=',
-   !> ',' or a word; i moves past it.
+   !> Inside a group, at s(i:i): '/' or '&end', a string, '=', ',' or a word.
    subroutine scan_token(r, s, i, ln)
       type(reader_t), intent(inout) :: r        !< the reading
       character(len=*), intent(in) :: s         !< the line
@@ -241,36 +233,35 @@ contains
       end select
    end subroutine scan_token
 
-   !> A quoted string starting at s(i:i), a doubled quote standing for
-   !> itself; i moves past it (in a group, or a --set value: no group).
+   !> A quoted string starting at s(i:i) (in a group, or a --set value).
    subroutine scan_string(r, s, i, ln)
       type(reader_t), intent(inout) :: r        !< the reading
       character(len=*), intent(in) :: s         !< the line
       integer, intent(inout) :: i               !< where its quote is; past its closing quote
       integer, intent(in) :: ln                 !< the line's number
       character(len=:), allocatable :: body
-      logical :: ok, glued
-      call scan_quoted(s, i, body, ok)
-      if (.not. ok .and. r%ngroup == 0) then            ! a --set value
+      logical :: glued
+      integer :: past
+      call scan_quoted(s, i, body, past)
+      if (past == 0 .and. r%ngroup == 0) then            ! a --set value
          call fail(r%err, ln, 'a string has no closing ' // s(i:i))
-      else if (.not. ok) then
+      else if (past == 0) then
          call fail(r%err, ln, open_group_name(r) // ': a string has no closing ' // s(i:i) // ' on its line')
       end if
-      if (.not. ok) return
+      if (past == 0) return
       glued = glued_to_count(s, i, r%toks(:r%ntok))
       call push(r, tok_string, body, ln)
       r%toks(r%ntok)%glued = glued
-      i = i + 2 + len(body) + count_quotes(body, s(i:i))
+      i = past
    end subroutine scan_string
 
-   !> The body of the string whose opening quote is s(i:i), its doubled
-   !> quotes made single; ok is false when it has no closing quote. Time in
-   !> proportion to its length.
-   pure subroutine scan_quoted(s, i, body, ok)
+   !> The body of the string whose opening quote is s(i:i), a doubled quote
+   !> made single; past: the index after its closing quote, 0 when it has none.
+   pure subroutine scan_quoted(s, i, body, past)
       character(len=*), intent(in) :: s                    !< the text
       integer, intent(in) :: i                             !< where the opening quote is
       character(len=:), allocatable, intent(out) :: body   !< the string, without its quotes
-      logical, intent(out) :: ok                           !< a closing quote was found
+      integer, intent(out) :: past                         !< after the closing quote; 0: none
       character(len=:), allocatable :: buf
       character :: q
       integer :: j, n, next
@@ -278,7 +269,7 @@ contains
       q = s(i:i)
       n = 0
       j = i + 1
-      ok = .false.
+      past = 0
       do while (j <= len(s))
          next = index(s(j:), q)
          if (next == 0) exit
@@ -293,22 +284,13 @@ contains
                cycle
             end if
          end if
-         ok = .true.
+         past = j
          exit
       end do
       body = buf(:n)
    end subroutine scan_quoted
 
-   !> How many quote characters q the body holds (each was written doubled).
-   pure integer function count_quotes(body, q)
-      character(len=*), intent(in) :: body      !< a string's body
-      character, intent(in) :: q                !< its quote
-      integer :: k
-      count_quotes = count([(body(k:k) == q, k = 1, len(body))])
-   end function count_quotes
-
-   !> The string whose quote is s(i:i) follows, without a blank, a word
-   !> token that ends in '*' (a repeat count, r*'text').
+   !> The string at s(i:i) follows a word ending in '*' without a blank (r*'text').
    pure logical function glued_to_count(s, i, toks)
       character(len=*), intent(in) :: s         !< the line
       integer, intent(in) :: i                  !< where the string's quote is
@@ -356,7 +338,6 @@ contains
       r%ngroup = g
       r%groups(g)%name = name
       r%groups(g)%line = ln
-      r%groups(g)%closed = .false.
       allocate (r%groups(g)%assignments(0))
       r%ntok = 0
    end subroutine begin_group
@@ -371,17 +352,16 @@ contains
       r%ntok = 0
    end subroutine end_group
 
-   !> The assignments 'name = value, value, ...' of a group's tokens; commas
-   !> between assignments are left out.
+   !> The assignments 'name = value, value, ...' of a group's tokens.
    subroutine build_assignments(toks, group, assignments, err)
       type(token_t), intent(in) :: toks(:)                          !< the group's tokens
       character(len=*), intent(in) :: group                         !< its name, for messages
       type(assignment_t), allocatable, intent(inout) :: assignments(:) !< the group's
       type(text_error_t), intent(inout) :: err                      !< the first error
-      type(assignment_t), allocatable :: list(:), grown(:)
+      type(assignment_t), allocatable :: list(:)
       type(assignment_t) :: a
       integer :: k, n
-      allocate (list(8))
+      allocate (list(count(toks%kind == tok_equals)))     ! each assignment has its '='
       n = 0
       k = 1
       do while (k <= size(toks))
@@ -390,11 +370,6 @@ contains
          else
             call next_assignment(toks, k, group, a, err)
             if (err%stat /= 0) exit
-            if (n == size(list)) then
-               allocate (grown(2*n))
-               grown(:n) = list(:n)
-               call move_alloc(grown, list)
-            end if
             n = n + 1                        ! (moved, not copied)
             call move_alloc(a%name, list(n)%name)
             call move_alloc(a%items, list(n)%items)
@@ -404,15 +379,14 @@ contains
       assignments = list(:n)
    end subroutine build_assignments
 
-   !> The assignment that starts at toks(k): its name, '=' and its values,
-   !> up to the next 'name =' or the group's end; k moves past it.
+   !> The assignment that starts at toks(k), up to the next 'name ='; k moves past it.
    subroutine next_assignment(toks, k, group, a, err)
       type(token_t), intent(in) :: toks(:)      !< the group's tokens
       integer, intent(inout) :: k               !< its first token; the token after it
       character(len=*), intent(in) :: group     !< the group's name, for messages
       type(assignment_t), intent(out) :: a      !< the assignment
       type(text_error_t), intent(inout) :: err  !< the first error
-      integer :: first, last, n
+      integer :: first, last
       if (.not. starts_assignment(toks, k)) then
          call fail(err, toks(k)%line, '&' // group // ": '" // shown_text(toks(k)%text) &
             // "' is not an assignment 'name = value'")
@@ -426,20 +400,14 @@ contains
       a%name = lower_case(toks(k)%text)
       a%line = toks(k)%line
       first = k + 2
-      call find_values(toks, first, '&' // group // ': ' // a%name, last, n, err)
+      call find_values(toks, first, '&' // group // ': ' // a%name, last, err)
       if (err%stat /= 0) return
-      if (n == 0) then
-         call fail(err, a%line, '&' // group // ': ' // a%name // ' = (nothing): give a value')
-         return
-      end if
       call make_items(toks(first:last), '&' // group // ': ' // a%name, a%items, err)
       k = last + 1
    end subroutine next_assignment
 
-   !> The items of an assignment's value tokens (words, strings and the
-   !> commas between them): a word r*c is c with its repeat count r, a word
-   !> r* glued to a string is that string r times; a word r* alone is r
-   !> null values, an error.
+   !> The items of an assignment's value tokens: r*c is c with its count r,
+   !> r* glued to a string that string r times, r* alone an error (r nulls).
    subroutine make_items(toks, where, items, err)
       type(token_t), intent(in) :: toks(:)                 !< the value tokens
       character(len=*), intent(in) :: where                !< '&group: name', for messages
@@ -487,9 +455,8 @@ contains
       items = items(:n)
    end subroutine make_items
 
-   !> The repeat count of a word r*c: r and c (r = 1 and the whole word when
-   !> it has no count; r > 1 or r = 1 with c shorter than the word when it
-   !> has). why is '' or what is wrong with the count.
+   !> The repeat count r and value c of a word r*c (r = 1 and the whole word
+   !> without a count); why is '' or what is wrong with the count.
    pure subroutine repeat_count(word, r, rest, why)
       character(len=*), intent(in) :: word                 !< the word
       integer, intent(out) :: r                            !< the count
@@ -514,16 +481,15 @@ contains
       rest = word(star + 1:)
    end subroutine repeat_count
 
-   !> The values of an assignment, toks(first:last) up to the next 'name =':
-   !> n words or strings and commas; a second '=' or an empty value is an error.
-   subroutine find_values(toks, first, where, last, n, err)
+   !> The values toks(first:last) up to the next 'name ='; none, a second '='
+   !> or an empty value is an error.
+   subroutine find_values(toks, first, where, last, err)
       type(token_t), intent(in) :: toks(:)      !< the group's tokens
       integer, intent(in) :: first              !< the token after '='
       character(len=*), intent(in) :: where     !< '&group: name', for messages
       integer, intent(out) :: last              !< the values' last token (first - 1: none; on an error)
-      integer, intent(out) :: n                 !< how many values
       type(text_error_t), intent(inout) :: err  !< the first error
-      integer :: k
+      integer :: k, n
       n = 0
       last = first - 1
       k = first
@@ -545,6 +511,7 @@ contains
          k = k + 1
       end do values
       last = k - 1
+      if (n == 0) call fail(err, toks(first - 2)%line, where // ' = (nothing): give a value')
    end subroutine find_values
 
    !> toks(k) and toks(k+1) are 'name ='.
@@ -582,8 +549,7 @@ contains
       err%what = message
    end subroutine fail
 
-   !> Index of the last character of the name that starts at s(first:), or
-   !> first - 1 when none does (a letter, then letters, digits and '_').
+   !> The end of the name (a letter, then letters, digits, '_') at s(first:), or first - 1.
    pure integer function name_end(s, first) result(last)
       character(len=*), intent(in) :: s         !< the text
       integer, intent(in) :: first              !< where the name would start
@@ -594,8 +560,7 @@ contains
       last = merge(len(s), first + last - 2, last == 0)
    end function name_end
 
-   !> Index of the last character of the word that starts at s(i:i): before
-   !> the next of `ends`, or the end of s.
+   !> The end of the word at s(i:i): before the next of `ends`, or the end of s.
    pure integer function word_end(s, i, ends) result(j)
       character(len=*), intent(in) :: s         !< the text
       integer, intent(in) :: i                  !< where the word starts
@@ -616,10 +581,9 @@ contains
       end do
    end function lower_case
 
-   !> s as a message shows it, on one readable line: printable ASCII and
-   !> whole UTF-8 characters as they are; control bytes, DEL, bytes that are
-   !> not UTF-8, C1 controls and the byte-order mark as \xNN; cut after
-   !> max_shown bytes with '...'.
+   !> s as a message shows it: printable ASCII and whole UTF-8 characters as
+   !> they are; control bytes, DEL, non-UTF-8 bytes, C1 controls and the
+   !> byte-order mark as \xNN; cut after max_shown bytes with '...'.
    pure function shown_text(s) result(shown)
       character(len=*), intent(in) :: s             !< the text, as the deck holds it
       character(len=:), allocatable :: shown
@@ -648,10 +612,8 @@ contains
       if (limit < len(s) .and. i <= len(s)) shown = shown // '...'
    end function shown_text
 
-   !> Bytes of the whole UTF-8 character that starts at s(i:i) (a byte of
-   !> 128 or more), 0 when none does (a stray or cut byte, an overlong or
-   !> surrogate form) or when it is one a message must not show as it is:
-   !> a C1 control (U+0080 to U+009F) or the byte-order mark (U+FEFF).
+   !> Bytes of the whole UTF-8 character at s(i:i) (a byte >= 128); 0 for a
+   !> stray, cut, overlong or surrogate form, a C1 control or the byte-order mark.
    pure integer function utf8_length(s, i) result(m)
       character(len=*), intent(in) :: s         !< the text
       integer, intent(in) :: i                  !< where the character starts

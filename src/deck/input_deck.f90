@@ -1,8 +1,7 @@
-!> The input deck: a namelist file (standard input or a path) checked
-!> against the schema of deck_schema.f90, then as a whole (validate_deck).
-!> SI units; an absent variable keeps its default; names are case-blind.
-!> Nothing is silently dropped, merged or cut: each fault stops the reading
-!> with "<deck>: &group: variable = value: what is wrong". More: docs/DECK.md.
+!> The input deck: a namelist file checked against the schema (deck_schema.f90),
+!> then as a whole (validate_deck). An absent variable keeps its default; each
+!> fault stops the reading with "<deck>: &group: variable = value: what is
+!> wrong". More: docs/DECK.md.
 module input_deck
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use, intrinsic :: iso_fortran_env, only: int64
@@ -27,14 +26,13 @@ module input_deck
    integer, parameter :: max_quoted = 60
    !> Smallest contact-force tolerance C_r1: 100 eps, the rounding of the force.
    real(dp), parameter :: min_cr1 = 100.0_dp*epsilon(1.0_dp)
-   !> Bytes in a GiB, for the messages of the size checks.
+   !> Bytes in a MiB, a GiB.
    real(dp), parameter :: mib = 1024.0_dp**2, gib = 1024.0_dp**3
    !> What a run takes beside its matrices, for the check against ulimit -v:
    !> a tenth more for the model, and the libraries' (OpenBLAS's) buffers.
    real(dp), parameter :: model_share = 1.1_dp, library_bytes = 160.0_dp*mib
 
-   !> The checks of a deck so far (validate_deck): the first failure wins,
-   !> the checks after it change nothing.
+   !> The checks of a deck so far: the first failure wins.
    type :: checks_t
       character(len=:), allocatable :: source       !< the deck's name in messages
       integer :: stat = 0                           !< 0, or failed after a failure
@@ -66,9 +64,8 @@ contains
       end do
    end function default_deck
 
-   !> Reads a deck from `unit` (formatted, read once to its end: standard
-   !> input is fine) and checks it unless check = .false. On failure stat /= 0,
-   !> errmsg the one-line message of the module header, deck incomplete.
+   !> Reads a deck from `unit` (read once to its end) and checks it unless
+   !> check = .false.; on failure stat /= 0 and errmsg the module header's message.
    subroutine read_deck(unit, source, deck, stat, errmsg, check)
       integer, intent(in) :: unit                   !< unit to read from
       character(len=*), intent(in) :: source        !< the deck's name in messages: its path, or '<stdin>'
@@ -84,17 +81,13 @@ contains
       deck%source = source
       call read_deck_text(unit, groups, stat, line, what)
       if (stat /= 0) then
-         if (line > 0) then
-            errmsg = source // ': line ' // int_str(line) // ': ' // what
-         else
-            errmsg = source // ': ' // what
-         end if
+         if (line > 0) what = 'line ' // int_str(line) // ': ' // what
+         call fail(what)
          return
       end if
       if (size(groups) == 0) then
-         stat = failed
-         errmsg = source // ': the deck has no namelist group: an empty deck would run the default scene ' &
-            // '(give at least one group, e.g. &analysis kind = ''impact'' /)'
+         call fail('the deck has no namelist group: an empty deck would run the default scene ' &
+            // '(give at least one group, e.g. &analysis kind = ''impact'' /)')
          return
       end if
       groups_loop: do ig = 1, size(groups)
@@ -144,6 +137,7 @@ contains
 
    contains
 
+      !> stat failed, errmsg '<source>: message'.
       subroutine fail(message)
          character(len=*), intent(in) :: message
          stat = failed
@@ -179,9 +173,8 @@ contains
       close (unit, iostat=ios)
    end subroutine read_deck_file
 
-   !> `impact --set group.var=value`: one variable from its text, read as a
-   !> deck's value (split_value_text), then the deck checked unless check =
-   !> .false. (the command line sets all its values, then checks once).
+   !> `impact --set group.var=value`: one variable from its text, then the deck
+   !> checked unless check = .false.
    subroutine set_variable(deck, setting, stat, errmsg, check)
       type(deck_t), intent(inout) :: deck           !< the deck, changed
       character(len=*), intent(in) :: setting       !< 'group.var=value'
@@ -233,9 +226,8 @@ contains
       if (stat /= 0) errmsg = '--set ' // group // '.' // name // '=' // shown_text(text) // ': ' // trim(errmsg)
    end subroutine set_variable
 
-   !> The value of entry iv from its items, checked for its kind (the range:
-   !> validate_deck). r*c is r values; a real must be finite (NaN is the "not
-   !> given" of deck_schema, which no deck can write), an integer in +-huge(0).
+   !> The value of entry iv from its items, checked for its kind (not its range):
+   !> a real finite (NaN is "not given"), an integer in +-huge(0).
    subroutine convert(iv, items, v, stat, what)
       integer, intent(in) :: iv                          !< entry of deck_vars
       type(item_t), intent(in) :: items(:)               !< the values as written
@@ -243,59 +235,41 @@ contains
       integer, intent(out) :: stat                       !< 0, or failed
       character(len=:), allocatable, intent(out) :: what !< what is wrong
       integer(int64) :: count
-      integer :: k, ios
-      stat = failed
+      integer :: kind, ios
       what = ''
+      kind = deck_vars(iv)%kind
       count = sum(int(items%repeat, int64))
-      if (deck_vars(iv)%kind /= kind_reals .and. count /= 1) then
-         what = 'one value expected, ' // int_str(int(min(count, int(huge(k), int64)))) // ' given'
+      if (kind /= kind_reals .and. count /= 1) then
+         what = 'one value expected, ' // int_str(int(min(count, int(huge(ios), int64)))) // ' given'
          if (any(items%counted)) what = what // ' (a repeat count r*c gives r values)'
-         return
+      else if (kind == kind_reals .and. count > max_list_len) then
+         what = 'more than ' // int_str(max_list_len) // ' values'
+      else
+         select case (kind)
+         case (kind_real, kind_integer)
+            if (items(1)%quoted) then
+               what = 'a number, not a quoted string, expected'
+            else if (kind == kind_real) then
+               call read_real(items(1)%text, trim(deck_vars(iv)%unit), len_trim(deck_vars(iv)%default) == 0, &
+                  v%r, what)
+            else
+               read (items(1)%text, *, iostat=ios) v%i
+               if (ios /= 0 .or. verify(trim(adjustl(items(1)%text)), '+-0123456789') /= 0 .or. v%i < -huge(v%i)) &
+                  what = 'must be a whole number (from ' // int_str(-huge(v%i)) // ' to ' // int_str(huge(v%i)) // ')'
+            end if
+         case (kind_logical)
+            read (items(1)%text, *, iostat=ios) v%l
+            if (ios /= 0 .or. items(1)%quoted .or. index(items(1)%text, '/') > 0) what = 'must be .true. or .false.'
+         case (kind_word, kind_path)
+            call convert_text(kind, items(1)%text, v%s, what)
+         case (kind_reals)
+            call convert_list(items, trim(deck_vars(iv)%unit), v%list, what)
+         end select
       end if
-      select case (deck_vars(iv)%kind)
-      case (kind_real)
-         if (.not. number_item(items(1))) return
-         call read_real(items(1)%text, trim(deck_vars(iv)%unit), len_trim(deck_vars(iv)%default) == 0, v%r, what)
-         if (len(what) > 0) return
-      case (kind_integer)
-         if (.not. number_item(items(1))) return
-         read (items(1)%text, *, iostat=ios) v%i
-         if (ios /= 0 .or. verify(trim(adjustl(items(1)%text)), '+-0123456789') /= 0 .or. v%i < -huge(v%i)) then
-            what = 'must be a whole number (from ' // int_str(-huge(v%i)) // ' to ' // int_str(huge(v%i)) // ')'
-            return
-         end if
-      case (kind_logical)
-         read (items(1)%text, *, iostat=ios) v%l
-         if (ios /= 0 .or. items(1)%quoted .or. index(items(1)%text, '/') > 0) then
-            what = 'must be .true. or .false.'
-            return
-         end if
-      case (kind_word, kind_path)
-         call convert_text(deck_vars(iv)%kind, items(1)%text, v%s, what)
-         if (len(what) > 0) return
-      case (kind_reals)
-         if (count > max_list_len) then
-            what = 'more than ' // int_str(max_list_len) // ' values'
-            return
-         end if
-         call convert_list(items, trim(deck_vars(iv)%unit), v%list, what)
-         if (len(what) > 0) return
-      end select
-      stat = 0
-
-   contains
-
-      !> A number is never quoted.
-      logical function number_item(item)
-         type(item_t), intent(in) :: item
-         number_item = .not. item%quoted
-         if (.not. number_item) what = 'a number, not a quoted string, expected'
-      end function number_item
-
+      stat = merge(failed, 0, len(what) > 0)
    end subroutine convert
 
-   !> A real from its text: what is '' when it is a finite number, else
-   !> what is wrong (not a number; NaN, Inf or beyond a double's range).
+   !> A real from its text: what is '' for a finite number, else what is wrong.
    subroutine read_real(text, unit, optional, x, what)
       character(len=*), intent(in) :: text               !< the value as written
       character(len=*), intent(in) :: unit               !< its unit, for the message
@@ -319,15 +293,13 @@ contains
       end if
    end subroutine read_real
 
-   !> A word (kind_word: lower case, max_word_len characters at most) or a
-   !> text (kind_path: max_path_len) from its text: what is '' or what is
-   !> wrong (too long, a control character).
+   !> A word (lower case) or a text from its text: what is '' or what is wrong.
    subroutine convert_text(kind, text, s, what)
       integer, intent(in) :: kind                        !< kind_word or kind_path
       character(len=*), intent(in) :: text               !< the value as written
       character(len=:), allocatable, intent(out) :: s    !< the value
       character(len=:), allocatable, intent(out) :: what !< '' or what is wrong
-      integer :: k
+      integer :: j, k
       what = ''
       s = trim(adjustl(text))
       if (kind == kind_word) s = lower_case(s)
@@ -336,17 +308,12 @@ contains
       else if (len(s) > max_path_len) then
          what = 'longer than ' // int_str(max_path_len) // ' characters'
       else
-         do k = 1, len(s)
-            if (iachar(s(k:k)) < 32 .or. iachar(s(k:k)) == 127) then
-               what = 'holds a control character (code ' // int_str(iachar(s(k:k))) // ')'
-               return
-            end if
-         end do
+         k = findloc([(iachar(s(j:j)) < 32 .or. iachar(s(j:j)) == 127, j = 1, len(s))], .true., dim=1)
+         if (k > 0) what = 'holds a control character (code ' // int_str(iachar(s(k:k))) // ')'
       end if
    end subroutine convert_text
 
-   !> A list of reals from its items, each r*c expanded to r copies of c
-   !> (at most max_list_len values: the caller counted them).
+   !> A list of reals from its items, each r*c expanded to r copies of c.
    subroutine convert_list(items, unit, list, what)
       type(item_t), intent(in) :: items(:)               !< the values as written
       character(len=*), intent(in) :: unit               !< their unit, for messages
@@ -371,9 +338,8 @@ contains
 
    ! ============================================================= checking
 
-   !> Checks every value against the schema's range and the combinations the
-   !> program needs, to the first bad one (the message of the module header);
-   !> keywords come back in lower case without blanks.
+   !> Checks every value against its range and the combinations the program
+   !> needs, to the first bad one; keywords come back in lower case.
    subroutine validate_deck(deck, stat, errmsg)
       type(deck_t), intent(inout) :: deck           !< the deck; its keywords come back in lower case
       integer, intent(out) :: stat                  !< 0 when every value is acceptable
@@ -383,8 +349,6 @@ contains
       c%source = deck%source
       call check_entries(deck, c)
       if (c%stat == 0) call check_plate(deck, c)
-      if (c%stat == 0) call check_impactor(deck, c)
-      if (c%stat == 0) call check_gauge(deck, c)
       if (c%stat == 0) call check_domain(deck, c)
       if (c%stat == 0) call check_analysis(deck, c)
       if (c%stat == 0) call check_prefix(deck, c)
@@ -393,8 +357,7 @@ contains
       if (stat /= 0) errmsg = c%message
    end subroutine validate_deck
 
-   !> Each variable against its schema entry (check_range), its keywords
-   !> first normalised to lower case without blanks.
+   !> Each variable against its range, its keywords first made lower case.
    subroutine check_entries(deck, c)
       type(deck_t), intent(inout) :: deck           !< the deck; its keywords come back in lower case
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -411,7 +374,8 @@ contains
       end do entries
    end subroutine check_entries
 
-   !> &plate, &lamina, &laminate: a thin plate, a positive definite lamina, a ply.
+   !> &plate, &lamina, &laminate, &impactor, &output gauge_x, gauge_y: a thin
+   !> plate, a positive definite lamina, a ply, the nose and the gauge on the plate.
    subroutine check_plate(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -421,10 +385,23 @@ contains
          'nu12**2 must be less than e1/e2 = ' // real_str(deck%e1/deck%e2) &
          // ' (else the lamina stiffness is not positive definite)')
       call need(c, size(deck%angles) >= 1, 'laminate', 'angles', '(none)', 'give at least one ply')
+      call need(c, deck%diameter < min(deck%a, deck%b), 'impactor', 'diameter', real_str(deck%diameter), &
+         'the nose must be smaller than the plate: diameter < min(a, b) = ' // real_str(min(deck%a, deck%b)) // ' m')
+      call need(c, abs(deck%x0) <= 0.5_dp*(deck%a - deck%diameter), 'impactor', 'x0', real_str(deck%x0), &
+         'the nose must lie on the plate: |x0| <= (a - diameter)/2 = ' // real_str(0.5_dp*(deck%a - deck%diameter)) &
+         // ' m (x0 is measured from the plate centre)')
+      call need(c, abs(deck%y0) <= 0.5_dp*(deck%b - deck%diameter), 'impactor', 'y0', real_str(deck%y0), &
+         'the nose must lie on the plate: |y0| <= (b - diameter)/2 = ' // real_str(0.5_dp*(deck%b - deck%diameter)) &
+         // ' m (y0 is measured from the plate centre)')
+      if (is_given(deck, 'output', 'gauge_x')) call need(c, abs(deck%gauge_x) <= 0.5_dp*deck%a, 'output', 'gauge_x', &
+         real_str(deck%gauge_x), 'the gauge must lie on the plate: |gauge_x| <= a/2 = ' // real_str(0.5_dp*deck%a) &
+         // ' m (gauge_x is measured from the plate centre)')
+      if (is_given(deck, 'output', 'gauge_y')) call need(c, abs(deck%gauge_y) <= 0.5_dp*deck%b, 'output', 'gauge_y', &
+         real_str(deck%gauge_y), 'the gauge must lie on the plate: |gauge_y| <= b/2 = ' // real_str(0.5_dp*deck%b) &
+         // ' m (gauge_y is measured from the plate centre)')
    end subroutine check_plate
 
-   !> &output prefix: a name for the result files, not a directory (no
-   !> hidden files, out/_history.dat), on a file system that can be written.
+   !> &output prefix: a name for the result files, on a writable file system.
    subroutine check_prefix(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -437,35 +414,8 @@ contains
          // ' is mounted read-only): choose a prefix where the results can be written')
    end subroutine check_prefix
 
-   !> &impactor: the nose smaller than the plate and on it.
-   subroutine check_impactor(deck, c)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(checks_t), intent(inout) :: c            !< the checks so far
-      call need(c, deck%diameter < min(deck%a, deck%b), 'impactor', 'diameter', real_str(deck%diameter), &
-         'the nose must be smaller than the plate: diameter < min(a, b) = ' // real_str(min(deck%a, deck%b)) // ' m')
-      call need(c, abs(deck%x0) <= 0.5_dp*(deck%a - deck%diameter), 'impactor', 'x0', real_str(deck%x0), &
-         'the nose must lie on the plate: |x0| <= (a - diameter)/2 = ' // real_str(0.5_dp*(deck%a - deck%diameter)) &
-         // ' m (x0 is measured from the plate centre)')
-      call need(c, abs(deck%y0) <= 0.5_dp*(deck%b - deck%diameter), 'impactor', 'y0', real_str(deck%y0), &
-         'the nose must lie on the plate: |y0| <= (b - diameter)/2 = ' // real_str(0.5_dp*(deck%b - deck%diameter)) &
-         // ' m (y0 is measured from the plate centre)')
-   end subroutine check_impactor
-
-   !> &output gauge_x, gauge_y: the strain gauge on the plate.
-   subroutine check_gauge(deck, c)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(checks_t), intent(inout) :: c            !< the checks so far
-      if (is_given(deck, 'output', 'gauge_x')) call need(c, abs(deck%gauge_x) <= 0.5_dp*deck%a, 'output', 'gauge_x', &
-         real_str(deck%gauge_x), 'the gauge must lie on the plate: |gauge_x| <= a/2 = ' // real_str(0.5_dp*deck%a) &
-         // ' m (gauge_x is measured from the plate centre)')
-      if (is_given(deck, 'output', 'gauge_y')) call need(c, abs(deck%gauge_y) <= 0.5_dp*deck%b, 'output', 'gauge_y', &
-         real_str(deck%gauge_y), 'the gauge must lie on the plate: |gauge_y| <= b/2 = ' // real_str(0.5_dp*deck%b) &
-         // ' m (gauge_y is measured from the plate centre)')
-   end subroutine check_gauge
-
-   !> &mesh domain and its symmetry lines: D16 = D26 = 0 on them, the
-   !> impact point on them, a layup symmetric about the mid-plane for a
-   !> quarter or a strip.
+   !> &mesh domain: D16 = D26 = 0 and the impact point on its symmetry lines,
+   !> a symmetric layup for a quarter or a strip.
    subroutine check_domain(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -494,8 +444,7 @@ contains
       end do symmetry
    end subroutine check_domain
 
-   !> &analysis: a theory for the kind, dt within t_end, cr1 above the
-   !> rounding, what the run needs (check_needs), the storage of modes.
+   !> &analysis: theory, dt, cr1, what the run needs, the storage of modes.
    subroutine check_analysis(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -512,11 +461,8 @@ contains
          // "eigensolver dsbgvx)")
    end subroutine check_analysis
 
-   !> What the run would need, before any of it is allocated or written
-   !> (docs/ROBUSTNESS.md): at most max_steps steps, the matrices' memory
-   !> (model_size) within the machine's, the results within the free space;
-   !> a history row is 230 bytes of text and 130 in <prefix>.h5, a snapshot
-   !> 8 bytes a freedom, <prefix>.h5 64 KiB and four snapshots more.
+   !> What the run would need, before any of it is allocated: at most max_steps
+   !> steps, its memory and its files within the machine's (docs/ROBUSTNESS.md).
    subroutine check_needs(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -562,8 +508,7 @@ contains
          // deck%prefix // '''): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
    end subroutine check_needs
 
-   !> The model of the deck's mesh: (2 ex + 1)(2 ey + 1) 9-node elements'
-   !> nodes (ex = 2 nx where the domain may be doubled), 5 freedoms a node,
+   !> The model of the deck's mesh: (2 ex + 1)(2 ey + 1) nodes of 5 freedoms,
    !> half-bandwidth 10 (2 min(ex, ey) + 1), the matrices in their storage.
    pure subroutine model_size(deck, neq, memory)
       type(deck_t), intent(in) :: deck              !< the deck, nx and ny given or chosen
@@ -580,9 +525,8 @@ contains
                                neq, kd)
    end subroutine model_size
 
-   !> &strength: all six strengths or none; the criterion and the ply
-   !> fracture energies only with them; the ply stresses and the
-   !> toughnesses belong to the impact analysis.
+   !> &strength: all six strengths or none, the criterion and the ply fracture
+   !> energies only with them, all of it for the impact analysis only.
    subroutine check_strength(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
@@ -614,7 +558,7 @@ contains
       integer, intent(in) :: iv                     !< entry of deck_vars
       type(value_t), intent(in) :: v                !< its value
       type(deck_var_t) :: e
-      integer :: k
+      integer :: j, k
       e = deck_vars(iv)      ! (a copy: gfortran 12 loses an associate name of a constant's element)
       select case (e%kind)
       case (kind_real)
@@ -625,12 +569,9 @@ contains
             interval_text(e%range, e%unit))
       case (kind_reals)
          if (len_trim(e%range) == 0) return
-         do k = 1, size(v%list)
-            if (in_interval(v%list(k), e%range)) cycle
-            call need(c, .false., trim(e%group), trim(e%name) // '(' // int_str(k) // ')', real_str(v%list(k)), &
-               interval_text(e%range, e%unit))
-            return
-         end do
+         k = findloc([(in_interval(v%list(j), e%range), j = 1, size(v%list))], .false., dim=1)
+         if (k > 0) call need(c, .false., trim(e%group), trim(e%name) // '(' // int_str(k) // ')', &
+            real_str(v%list(k)), interval_text(e%range, e%unit))
       case (kind_word)
          call need(c, index(' ' // words_of(e%range) // ' ', ' ' // v%s // ' ') > 0 .and. len(v%s) > 0, &
             trim(e%group), trim(e%name), "'" // v%s // "'", 'must be one of ' // words_quoted(e%range))
@@ -656,7 +597,6 @@ contains
    end subroutine need
 
    !> x is finite and in the interval written as '(lo, hi)', '[lo, hi]', ...
-   !> (lo and hi may be -inf, inf).
    pure logical function in_interval(x, range)
       real(dp), intent(in) :: x
       character(len=*), intent(in) :: range
@@ -668,8 +608,7 @@ contains
 
    ! ============================================================== helpers
 
-   !> The items as they were written, for a message (cut short after
-   !> max_quoted characters: the time does not grow with the deck).
+   !> The items as they were written, for a message, cut after max_quoted characters.
    function items_text(items) result(text)
       type(item_t), intent(in) :: items(:)
       character(len=:), allocatable :: text
