@@ -154,10 +154,7 @@ contains
          if (l > 0 .and. l < first_levels(2)) call plan(lad%runs, base, la, 0, l)
       end do
       lad%target = deck%accuracy_target
-      lad%k_max = max_time_levels - 1
-      do while (deck%dt/2.0_dp**lad%k_max < min_dt)
-         lad%k_max = lad%k_max - 1
-      end do
+      lad%k_max = min(max_time_levels - 1, exponent(deck%dt/min_dt) - 1)   ! dt0/2^k_max >= min_dt
       call targeted_results(deck, lad%targeted, stat, errmsg)
    end subroutine set_up
 
@@ -173,7 +170,7 @@ contains
       character(len=:), allocatable, intent(out) :: why   !< what was chosen and why, '' for the deck's mesh
       type(settings_t) :: est
       real(dp) :: a, side(2), counted(2), g, lo
-      integer :: n(2), d, it
+      integer :: n(2), it
       why = ''
       est = scene_settings_of(deck)
       a = est%contact_radius
@@ -182,10 +179,8 @@ contains
       side = [max(msh%x1 - msh%x_impact, msh%x_impact - msh%x0), max(msh%y1 - msh%y_impact, msh%y_impact - msh%y0)]
       counted = real(nint(side/impact_element), dp)/real([deck%nx, deck%ny], dp)
       ! the counts that bring the element at the impact point to a with ladder_grading
-      do d = 1, 2
-         n(d) = ceiling(log(1.0_dp + side(d)*(ladder_grading - 1.0_dp)/a)/log(ladder_grading)/counted(d) - 1.0e-9_dp)
-      end do
-      n = max(n, [deck%nx, deck%ny])
+      n = max([deck%nx, deck%ny], ceiling(log(1.0_dp + side*(ladder_grading - 1.0_dp)/a)/log(ladder_grading)/counted &
+                                          - 1.0e-9_dp))
       ! the deck's counts already do with ladder_grading: the least grading that does (bisection)
       g = ladder_grading
       if (all(n == [deck%nx, deck%ny])) then
@@ -274,13 +269,12 @@ contains
       character(len=*), intent(inout) :: errmsg     !< what failed
       integer :: k, j, i, done_before, kj(2)
       type(choice_t) :: c
-      logical :: more, ran
+      logical :: more
       character(len=224) :: why
       do
          done_before = count(lad%runs%state == state_done)
          call run_planned(lad%runs, la, stat, errmsg)
          if (stat /= 0) return
-         ran = count(lad%runs%state == state_done) > done_before
          if (stop_caught() /= 0 .and. lad%runs(1)%state /= state_done) return   ! out%chosen 0: nothing to give
          i = findloc(lad%runs%state, state_failed, dim=1)
          if (i > 0) then
@@ -318,7 +312,7 @@ contains
             call plan(lad%runs, deck, la, k, j)
             if (i >= 0) call plan(lad%runs, deck, la, i, j)
             if (cross_needed(lad%runs, k, j)) call plan(lad%runs, deck, la, 1, 1)
-         else if (c%beyond_cap .or. (la%cap_reached .and. .not. ran)) then
+         else if (c%beyond_cap .or. (la%cap_reached .and. count(lad%runs%state == state_done) == done_before)) then
             out%status = cap_status(lad, la, c)
             exit
          else
@@ -366,34 +360,31 @@ contains
       character(len=:), allocatable :: status, what
       real(dp) :: c, cost(size(lad%runs))
       integer :: pick, partner, kj(2)
+      status = ' s; the results carry the errors reached'
       kj = choice%beyond_kj
-      associate (runs => lad%runs)
       if (choice%beyond_cap .and. kj(2) >= 0) then
          c = choice%beyond_cost
          what = ''
-         if (.not. done_run(runs, kj(1), kj(2))) what = level_text(kj(1))
-         partner = time_partner(runs, kj(1), kj(2))
+         if (.not. done_run(lad%runs, kj(1), kj(2))) what = level_text(kj(1))
+         partner = time_partner(lad%runs, kj(1), kj(2))
          if (partner >= 0 .and. len(what) > 0) what = what // ' and '
          if (partner >= 0) what = what // level_text(partner)
          pick = lad%mx%run(kj(2) + 1)
       else
-         cost = merge(predicted_run_cost(runs, la), huge(1.0_dp), runs%state == state_skipped)
+         cost = merge(predicted_run_cost(lad%runs, la), huge(1.0_dp), lad%runs%state == state_skipped)
          pick = minloc(cost, mask=cost < huge(1.0_dp), dim=1)
-         if (pick == 0) then
-            status = 'cap reached: the next run would take the cpu time of all runs past &accuracy max_cpu_s = ' // &
-                     real_short(la%cap) // ' s; the results carry the errors reached'
-            return
-         end if
+         if (pick == 0) status = 'cap reached: the next run would take the cpu time of all runs past ' // &
+            '&accuracy max_cpu_s = ' // real_short(la%cap) // status
+         if (pick == 0) return
          c = cost(pick)
-         what = trim(runs(pick)%name) // ' (dt ' // real_short(runs(pick)%dt*1.0e6_dp) // ' us)'
+         kj = [lad%runs(pick)%k, lad%runs(pick)%j]
+         what = level_text(kj(1))
       end if
-      status = 'cap reached: next, ' // what // ' on the mesh ' // int_str(runs(pick)%nx) // ' x ' // &
-               int_str(runs(pick)%ny) // ', predicted at ' // real_short(c) // ' s of cpu, ' // &
-               real_short(la%spent + c) // ' s in all, past &accuracy max_cpu_s = ' // real_short(la%cap) // &
-               ' s; the results carry the errors reached'
-      end associate
+      status = 'cap reached: next, ' // what // ' on the mesh ' // int_str(lad%runs(pick)%nx) // ' x ' // &
+               int_str(lad%runs(pick)%ny) // ', predicted at ' // real_short(c) // ' s of cpu, ' // &
+               real_short(la%spent + c) // ' s in all, past &accuracy max_cpu_s = ' // real_short(la%cap) // status
    contains
-      !> 't<k>_m<j> (dt ... us)': time level k on the candidate's mesh.
+      !> 't<k>_m<j> (dt ... us)': time level k on mesh kj(2).
       function level_text(k) result(text)
          integer, intent(in) :: k                  !< time level
          character(len=:), allocatable :: text
@@ -466,7 +457,7 @@ contains
          time = .false.;  mesh = can_mesh
       end if
       if (mesh .and. .not. can_mesh) then
-         mesh = .false.;  time = can_time .and. (time .or. .not. mesh)
+         mesh = .false.;  time = can_time
       end if
       if (time) call plan(lad%runs, deck, la, lad%tx%levels, 0)
       if (mesh) call plan(lad%runs, deck, la, 0, lad%mx%levels)

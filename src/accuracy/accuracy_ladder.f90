@@ -7,7 +7,7 @@
 !> target and the cap.
 module accuracy_ladder
    use kinds, only: dp
-   use error_estimate, only: estimate_t, ladder_estimate, level_error, log_tail, safe_factor, two_grid_index, &
+   use error_estimate, only: estimate_t, ladder_estimate, log_tail, safe_factor, two_grid_index, &
       continued_value, last_difference
    use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, predicted_run_cost, &
       error_scale, is_ladder, maxima_t
@@ -132,7 +132,7 @@ contains
                e%how = 'contact disc unresolved: ln tail'
             end if
          end if
-         ax%err(:, iq) = [(level_error(q, i, e%error), i = 1, l)]
+         ax%err(:, iq) = abs(q - q(l)) + e%error           ! each level's: its distance to the finest
          end associate
       end do
    end subroutine build_axis
@@ -274,7 +274,7 @@ contains
          finest = ax%finest(iq)%error
          if (two .and. lad%tx%finest(iq)%asymptotic) &
             finest = two_grid_index(ax%h, q, order_theory(axis_time)) + ax%finest(iq)%floor
-         err_time(iq) = max(err_time(iq), level_error(q, k - k0 + 1, finest))
+         err_time(iq) = max(err_time(iq), abs(q(k - k0 + 1) - q(ax%levels)) + finest)
          end associate
       end do
    end subroutine time_on_mesh

@@ -9,9 +9,9 @@ module accuracy_runs
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: dp, msg_len
    use number_text, only: int_str, real_str, real_short
-   use result_reader, only: summary_t, read_summary, summary_value, summary_has, summary_index
+   use result_reader, only: summary_t, read_summary, summary_value, summary_has, summary_string, read_columns
    use child_process, only: spawn_program, wait_child, stop_caught
-   use result_files, only: history_columns
+   use result_files, only: col_time, col_force
    use scene_model, only: scene_t
    implicit none
    private
@@ -299,15 +299,14 @@ contains
       type(summary_t) :: s
       character(len=msg_len) :: errmsg
       character(len=:), allocatable :: line
-      integer :: stat, iq, i
+      integer :: stat, iq
       real(dp) :: nan
       nan = ieee_value(nan, ieee_quiet_nan)
       call read_summary(la%dir // trim(run%name) // '_summary.dat', s, stat, errmsg)
       run%state = merge(state_done, state_failed, stat == 0 .and. run%exit_code == 0)
       run%status = 'no summary (' // la%dir // trim(run%name) // '.log)'
       if (stat /= 0) return
-      i = summary_index(s, 'status')
-      if (i > 0) run%status = s%texts(i)
+      if (summary_has(s, 'status')) run%status = summary_string(s, 'status')
       run%cpu_s = max(0.0_dp, summary_value(s, 'cpu_s', 0.0_dp))
       la%spent = la%spent + run%cpu_s
       line = 'accuracy: run ' // trim(run%name) // ': dt ' // real_short(run%dt*1.0e6_dp) // ' us, mesh ' // &
@@ -324,39 +323,22 @@ contains
       flush (la%unit)
    end subroutine finish_run
 
-   !> The force's maxima in a run's history file (history_columns), those of at least
-   !> kept_fraction of the largest; none when it cannot be read.
+   !> The force's maxima in a run's history file, those of at least kept_fraction of the largest;
+   !> none when it cannot be read.
    subroutine force_maxima(path, mx)
       character(len=*), intent(in) :: path        !< <prefix>_history.dat
       type(maxima_t), intent(out) :: mx           !< its maxima
-      character(len=4096) :: line
-      real(dp), allocatable :: row(:)
-      real(dp) :: t(3), f(3)
-      integer :: u, ios, ct, cf, rows
-      allocate (mx%t_us(0), mx%f_n(0))
-      ct = findloc(history_columns%name, 'time', dim=1)
-      cf = findloc(history_columns%name, 'force', dim=1)
-      allocate (row(max(ct, cf)))
-      open (newunit=u, file=path, status='old', action='read', iostat=ios)
-      if (ios /= 0) return
-      rows = 0
-      t = 0.0_dp;  f = 0.0_dp
-      do
-         read (u, '(a)', iostat=ios) line
-         if (ios /= 0) exit
-         if (line(1:1) == '#' .or. len_trim(line) == 0) cycle
-         read (line, *, iostat=ios) row
-         if (ios /= 0) exit
-         rows = rows + 1
-         t = [t(2:3), row(ct)];  f = [f(2:3), row(cf)]
-         if (rows >= 3 .and. f(2) > f(1) .and. f(2) >= f(3)) then
-            mx%t_us = [mx%t_us, t(2)];  mx%f_n = [mx%f_n, f(2)]
-         end if
-      end do
-      close (u)
-      if (size(mx%f_n) == 0) return
-      mx%t_us = pack(mx%t_us, mx%f_n >= kept_fraction*maxval(mx%f_n))
-      mx%f_n = pack(mx%f_n, mx%f_n >= kept_fraction*maxval(mx%f_n))
+      real(dp), allocatable :: h(:, :)
+      logical, allocatable :: top(:)
+      integer :: stat, n
+      call read_columns(path, max(col_time, col_force), h, stat)
+      n = size(h, 2)
+      allocate (top(n), source=.false.)
+      if (stat == 0 .and. n >= 3) top(2:n - 1) = h(col_force, 2:n - 1) > h(col_force, :n - 2) .and. &
+                                                h(col_force, 2:n - 1) >= h(col_force, 3:)
+      if (any(top)) top = top .and. h(col_force, :) >= kept_fraction*maxval(h(col_force, :), mask=top)
+      mx%t_us = pack(h(col_time, :), top)
+      mx%f_n = pack(h(col_force, :), top)
    end subroutine force_maxima
 
 end module accuracy_runs

@@ -9,7 +9,7 @@ module error_estimate
    use kinds, only: dp
    implicit none
    private
-   public :: estimate_t, ladder_estimate, observed_order, level_error, log_tail, two_grid_index, continued_value
+   public :: estimate_t, ladder_estimate, observed_order, log_tail, two_grid_index, continued_value
    public :: safe_factor, last_difference
 
    !> Factors of safety (module header) (-).
@@ -145,13 +145,5 @@ contains
       real(dp), intent(in) :: p                !< the order
       q_next = q(2) - (q(1) - q(2))*(h(3)**p - h(2)**p)/(h(2)**p - h(1)**p)
    end function continued_value
-
-   !> The error of level i of a ladder whose finest level has the error e_finest.
-   pure real(dp) function level_error(q, i, e_finest)
-      real(dp), intent(in) :: q(:)           !< the result at each level
-      integer, intent(in) :: i               !< the level
-      real(dp), intent(in) :: e_finest       !< the finest level's error
-      level_error = abs(q(i) - q(size(q))) + e_finest
-   end function level_error
 
 end module error_estimate

@@ -2,7 +2,7 @@
 !> von Karman) and, when the laminate has D16, D26, one with the other bend-twist model (the
 !> paper's averaged plate, section 3.1, against the full plate that keeps them); their relative
 !> changes give the verdict (model_needed). First on the chosen mesh at dt0, 2^k times cheaper;
-!> again at the chosen settings only when the change, within its band (change_band), could
+!> again at the chosen settings only when the change, within its band (verdict_settled), could
 !> turn the verdict. Past the cap: at the costliest ladder run whose variant fits.
 module model_comparison
    use kinds, only: dp, msg_len
@@ -102,7 +102,7 @@ contains
          character(len=:), allocatable :: text
          real(dp) :: band(nq)
          integer :: iq
-         band = change_band(model_changes(c, lad), slack)
+         band = slack + 0.1_dp*abs(model_changes(c, lad))   ! a tenth: the variant's own time error
          text = 'the chosen mesh at the ladder''s first step; the change at the chosen step lies within'
          do iq = 1, nq
             if (.not. lad%targeted(iq)) cycle
@@ -207,14 +207,6 @@ contains
       where (lad%runs(coarse)%q /= 0.0_dp) slack = 2.0_dp*(jd%err_time + jc%err_time)/abs(lad%runs(coarse)%q)
    end function change_slack
 
-   !> The band about a model's changes within which the change at the chosen step lies: slack,
-   !> and a tenth of the change for the variant's own time error.
-   pure function change_band(change, slack) result(band)
-      real(dp), intent(in) :: change(nq), slack(nq)   !< the relative changes (model_changes), change_slack
-      real(dp) :: band(nq)
-      band = slack + 0.1_dp*abs(change)
-   end function change_band
-
    !> Whether the verdict of c (model_required) is the same for every change within its band;
    !> a comparison not made settles nothing.
    logical function verdict_settled(c, lad, slack) result(settled)
@@ -225,7 +217,7 @@ contains
       settled = .false.
       if (c%run == 0) return
       if (lad%runs(c%run)%state /= state_done) return
-      change = model_changes(c, lad);  band = change_band(change, slack)
+      change = model_changes(c, lad);  band = slack + 0.1_dp*abs(change)
       settled = model_required(max(abs(change) - band, 0.0_dp), lad) .or. .not. model_required(abs(change) + band, lad)
    end function verdict_settled
 
