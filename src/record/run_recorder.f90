@@ -31,6 +31,7 @@ module run_recorder
    use plate_damage, only: damage_energy, damage_counts, damage_wanted
    use ply_damage, only: ndmode, dmode_names
    use hdf5_io, only: h5io_write
+   use xdmf_plies, only: plies_add
    use progress_line, only: progress_t, progress_start, progress_step, progress_end
    use step_peak, only: peak_track_t, peak_sample, peak_between, zero_crossing
    implicit none
@@ -532,9 +533,11 @@ contains
          call summary_real(s, 'damage_dissipated_J', 'damage_dissipated', 'J', solver%damage%dissipated, 1.0_dp)
          call summary_text(s, 'damaged_ply_points', damage_counts(solver%damage))
          do m = 1, ndmode            ! /strength/ply_damage_<mode> (nply, points), as /strength/damage_map
-            associate (d => solver%damage%d(m, :, :, :))
+            associate (d => reshape(solver%damage%d(m, :, :, :), [solver%damage%nply, size(solver%damage%lc)]))
                if (rec%h5%active .and. dstat == 0) call h5io_write(rec%h5%fid, 'strength/ply_damage_' &
-                  // trim(dmode_names(m)), reshape(d, [size(d, 1), size(d) / size(d, 1)]), dstat, dtext)
+                  // trim(dmode_names(m)), d, dstat, dtext)    ! and on the plies of <prefix>.xdmf:
+               if (rec%h5%xdmf%plies%active .and. dstat == 0) call plies_add(rec%h5%xdmf%plies, rec%h5%fid, &
+                  'ply_damage_' // trim(dmode_names(m)), d, dstat, dtext)
             end associate
          end do
       end if
