@@ -41,8 +41,7 @@ module result_files
    end type column_t
 
    !> The history's columns, in the order of the file: the first nhist in
-   !> every run, then those of &strength when the deck gives it, the last
-   !> one only with ply damage (history_width).
+   !> every run, then &strength's, then ply damage's (history_width).
    integer, parameter :: col_time = 1, col_force = 2, col_alpha = 3, col_w_plate = 4, col_w_impactor = 5, &
       col_v_impactor = 6, col_strain_y = 7, col_ke_impactor = 8, col_ke_plate = 9, col_strain_energy = 10, &
       col_contact_work = 11, col_contact_energy = 12, col_energy_error = 13, col_branch = 14, &
@@ -96,10 +95,9 @@ module result_files
    !> a few kilobytes.
    integer, parameter :: summary_reserve = 65536
 
-   !> Bytes of a history row on disk (the widest, newline included): a power
-   !> of two, the header padded to a multiple of it, so that no row straddles
-   !> a 4 KiB page and a killed run's rows are all whole; twice that with
-   !> ply damage (slot_bytes).
+   !> Bytes of a history row on disk (twice that with ply damage): a power of
+   !> two, the header padded to a multiple of it, so that no row straddles
+   !> a 4 KiB page and a killed run's rows are all whole.
    integer, parameter :: history_slot = 256
 
    !> Kinds of summary item.
@@ -324,7 +322,7 @@ contains
       path = deck%prefix // '_history.dat'
       call open_columns(deck, '_history.dat', title, names, texts, unit, stat, errmsg)
       if (stat /= 0) return
-      pad = int(modulo(-file_size(path), int(slot_bytes(size(names)), int64)))
+      pad = int(modulo(-file_size(path), int(merge(2, 1, size(names) > nhist_strength)*history_slot, int64)))
       if (pad == 0) return
       rewind (unit)
       call write_header(unit, deck, title, names, texts, pad)
@@ -372,13 +370,6 @@ contains
       history_width = merge(nhist_damage, merge(nhist_strength, nhist, with_strength), with_damage)
    end function history_width
 
-   !> The bytes of a history row of ncol columns: history_slot, twice that
-   !> for the damage's column.
-   pure integer function slot_bytes(ncol)
-      integer, intent(in) :: ncol
-      slot_bytes = merge(2*history_slot, history_slot, ncol > nhist_strength)
-   end function slot_bytes
-
    !> One history row, SI values in history_columns' order, written in the
    !> file's units, flushed, and checked on disk (the file grew by the row).
    subroutine write_history_row(unit, probe, values, bytes, stat, iomsg)
@@ -405,7 +396,7 @@ contains
             at = at + 16
          end if
       end do columns
-      slot = slot_bytes(size(values))
+      slot = merge(2, 1, size(values) > nhist_strength)*history_slot
       write (unit, '(a)', iostat=stat, iomsg=iomsg) line(:slot - 1)     ! the whole slot
       if (stat == 0) flush (unit, iostat=stat, iomsg=iomsg)
       if (stat /= 0) return
