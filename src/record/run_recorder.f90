@@ -23,12 +23,12 @@ module run_recorder
       summary_text, keep_failure, open_history, write_history_row, reserve_summary, write_summary_file, col_time, col_force, &
       col_alpha, col_w_plate, col_w_impactor, col_v_impactor, col_strain_y, col_ke_impactor, col_ke_plate, &
       col_strain_energy, col_contact_work, col_contact_energy, col_energy_error, col_branch, col_contact_iter, &
-      col_solves, nhist_strength, history_width, col_failure_index, col_failure_mode
+      col_solves, nhist_damage, history_width, col_failure_index, col_failure_mode, col_damage_dissipated
    use file_system, only: truncate_file, file_probe_t, open_probe, probe_size, close_probe
    use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_tick, &
       results_flush, results_leave, results_closing, results_finish
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
-   use plate_damage, only: damage_energy
+   use plate_damage, only: damage_energy, damage_wanted
    use progress_line, only: progress_t, progress_start, progress_step, progress_end
    use step_peak, only: peak_track_t, peak_sample, peak_between, zero_crossing
    implicit none
@@ -130,7 +130,7 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(contact_history_t) :: fresh
-      real(dp) :: row(nhist_strength)
+      real(dp) :: row(nhist_damage)
       character(len=24), allocatable :: names(:)
       character(len=96), allocatable :: texts(:)
       type(column_t) :: col
@@ -187,7 +187,7 @@ contains
       rec%dt = nm%dt;  rec%h = deck%h
       rec%edges = deck%edges
       call damage_open(rec%damage, deck, model)
-      rec%ncol = history_width(rec%damage%active)
+      rec%ncol = history_width(rec%damage%active, damage_wanted(deck))
    end subroutine record_settings
 
    !> Records the step just accepted: plate and impactor at t + dt, the contact
@@ -323,7 +323,7 @@ contains
       type(step_state_t), intent(in) :: st               !< the step accepted (record_step)
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
-      real(dp) :: row(nhist_strength)
+      real(dp) :: row(nhist_damage)
       associate (plate => st%plate, imp => st%imp, hist => st%hist, cit => st%cit)
       row(col_time) = fig%t;  row(col_force) = imp%f;  row(col_alpha) = cit%alpha
       row(col_w_plate) = fig%w_plate;  row(col_w_impactor) = imp%w;  row(col_v_impactor) = imp%v
@@ -352,12 +352,12 @@ contains
       type(record_t), intent(inout) :: rec               !< the record
       type(model_t), intent(in) :: model                 !< the model
       type(step_state_t), intent(in) :: st               !< the plate and the impactor at t + dt
-      real(dp), intent(inout) :: row(nhist_strength)     !< the history row: its energy columns set
+      real(dp), intent(inout) :: row(nhist_damage)     !< the history row: its energy columns set
       row(col_ke_impactor) = 0.5_dp*st%imp%mass*st%imp%v**2
       row(col_ke_plate) = plate_kinetic_energy(model, st%plate%v)
       row(col_strain_energy) = plate_strain_energy(model, st%plate%d) + rec%u_damage
       row(col_contact_work) = rec%contact_work
-      row(col_contact_energy) = rec%contact_energy
+      row(col_contact_energy) = rec%contact_energy;  row(col_damage_dissipated) = rec%dissipated
       row(col_energy_error) = rec%e0 - (row(col_ke_impactor) + row(col_ke_plate) + row(col_strain_energy) &
                                         + rec%contact_energy + rec%dissipated)
       rec%max_energy_error = nan_max(rec%max_energy_error, abs(row(col_energy_error)))
@@ -657,7 +657,7 @@ contains
    !> A history row to the file and to <prefix>.h5.
    subroutine write_row(rec, row, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
-      real(dp), intent(in) :: row(nhist_strength)        !< the row, SI (its first rec%ncol columns are written)
+      real(dp), intent(in) :: row(nhist_damage)        !< the row, SI (its first rec%ncol columns are written)
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
       character(len=msg_len) :: iomsg

@@ -20,7 +20,7 @@ module damage_record
    use result_files, only: summary_item_t, summary_real, summary_integer, summary_text
    use results_hdf5, only: results_file_t
    use hdf5_io, only: h5io_group, h5io_set_attr, h5io_write
-   use xdmf_plies, only: ply_maps_t, plies_write
+   use xdmf_plies, only: ply_maps_t, plies_write, plies_add
    use plate_damage, only: plate_damage_t, damage_counts
    use ply_damage, only: ndmode, dmode_names
    use delamination, only: delamination_t, delamination_open, delamination_force, delamination_point, impact_regime
@@ -318,10 +318,12 @@ contains
       if (.not. pd%on) return
       call summary_real(s, 'damage_dissipated_J', 'damage_dissipated', 'J', pd%dissipated, 1.0_dp)
       call summary_text(s, 'damaged_ply_points', damage_counts(pd))
-      do m = 1, ndmode
-         associate (d => pd%d(m, :, :, :))
+      do m = 1, ndmode                                  ! (and on the plies of <prefix>.xdmf)
+         associate (d => reshape(pd%d(m, :, :, :), [pd%nply, size(pd%lc)]))
             if (rf%active .and. stat == 0) call h5io_write(rf%fid, 'strength/ply_damage_' // trim(dmode_names(m)), &
-                                                           reshape(d, [size(d, 1), size(d) / size(d, 1)]), stat, errmsg)
+                                                           d, stat, errmsg)
+            if (rf%xdmf%plies%active .and. stat == 0) call plies_add(rf%xdmf%plies, rf%fid, &
+                                                           'ply_damage_' // trim(dmode_names(m)), d, stat, errmsg)
          end associate
       end do
 

@@ -18,10 +18,11 @@ module result_files
    use number_text, only: put_f16_4, put_es16_7e3, put_i6
    implicit none
    private
-   public :: column_t, history_columns, nhist, nhist_strength, history_width
+   public :: column_t, history_columns, nhist, nhist_damage, history_width
    public :: col_time, col_force, col_alpha, col_w_plate, col_w_impactor, col_v_impactor, col_strain_y, &
              col_ke_impactor, col_ke_plate, col_strain_energy, col_contact_work, col_contact_energy, &
-             col_energy_error, col_branch, col_contact_iter, col_solves, col_failure_index, col_failure_mode
+             col_energy_error, col_branch, col_contact_iter, col_solves, col_failure_index, col_failure_mode, &
+             col_damage_dissipated
    public :: summary_item_t, summary_real, summary_integer, summary_text
    public :: results_claim_t, result_suffixes, claim_results, release_results, claim_left_empty
    public :: keep_failure, open_columns, open_history, write_column_block, write_history_row, reserve_summary, &
@@ -40,14 +41,13 @@ module result_files
    end type column_t
 
    !> The history's columns, in the order of the file: the first nhist in
-   !> every run, the last ones only when the deck gives &strength
-   !> (history_width).
+   !> every run, then &strength's, then ply damage's (history_width).
    integer, parameter :: col_time = 1, col_force = 2, col_alpha = 3, col_w_plate = 4, col_w_impactor = 5, &
       col_v_impactor = 6, col_strain_y = 7, col_ke_impactor = 8, col_ke_plate = 9, col_strain_energy = 10, &
       col_contact_work = 11, col_contact_energy = 12, col_energy_error = 13, col_branch = 14, &
       col_contact_iter = 15, col_solves = 16, nhist = 16, col_failure_index = 17, col_failure_mode = 18, &
-      nhist_strength = 18
-   type(column_t), parameter :: history_columns(nhist_strength) = [ &
+      nhist_strength = 18, col_damage_dissipated = 19, nhist_damage = 19
+   type(column_t), parameter :: history_columns(nhist_damage) = [ &
       column_t('time', 'time_us', 's', 'us', 1.0e6_dp, 'time'), &
       column_t('force', 'force_N', 'N', 'N', 1.0_dp, 'contact force on the whole plate F'), &
       column_t('indentation', 'indentation_mm', 'm', 'mm', 1.0e3_dp, &
@@ -76,7 +76,9 @@ module result_files
       column_t('failure_index', 'failure_index', '-', '-', 1.0_dp, &
          'largest ply failure index of the step (&strength criterion)', strength=.true.), &
       column_t('failure_mode', 'failure_mode', '-', '-', 1.0_dp, &
-         'its mode: 1/2 fibre t/c, 3/4 matrix t/c, 5 shear 12-13, 6 shear 23', whole=.true., strength=.true.) ]
+         'its mode: 1/2 fibre t/c, 3/4 matrix t/c, 5 shear 12-13, 6 shear 23', whole=.true., strength=.true.), &
+      column_t('damage_dissipated', 'damage_dissipated_J', 'J', 'J', 1.0_dp, &
+         'energy dissipated by ply damage, whole plate (&damage)', strength=.true.) ]
 
    !> A run's hold on its result files (claim_results).
    type :: results_claim_t
@@ -93,8 +95,8 @@ module result_files
    !> a few kilobytes.
    integer, parameter :: summary_reserve = 65536
 
-   !> Bytes of a history row on disk (the widest, newline included): a power
-   !> of two, the header padded to a multiple of it, so that no row straddles
+   !> Bytes of a history row on disk (twice that with ply damage): a power of
+   !> two, the header padded to a multiple of it, so that no row straddles
    !> a 4 KiB page and a killed run's rows are all whole.
    integer, parameter :: history_slot = 256
 
@@ -306,7 +308,7 @@ contains
    end subroutine open_columns
 
    !> The history file, opened as open_columns does, its header padded with
-   !> blanks after the names line to end at a multiple of history_slot.
+   !> blanks after the names line to end at a multiple of its row's slot.
    subroutine open_history(deck, title, names, texts, unit, path, stat, errmsg)
       type(deck_t), intent(in) :: deck            !< effective deck (echoed; prefix)
       character(len=*), intent(in) :: title       !< first line, after '# '
@@ -320,7 +322,7 @@ contains
       path = deck%prefix // '_history.dat'
       call open_columns(deck, '_history.dat', title, names, texts, unit, stat, errmsg)
       if (stat /= 0) return
-      pad = int(modulo(-file_size(path), int(history_slot, int64)))
+      pad = int(modulo(-file_size(path), int(merge(2, 1, size(names) > nhist_strength)*history_slot, int64)))
       if (pad == 0) return
       rewind (unit)
       call write_header(unit, deck, title, names, texts, pad)
@@ -360,11 +362,12 @@ contains
       write (unit, '(a)') ''
    end subroutine write_column_block
 
-   !> The history's columns of a run: nhist, or nhist_strength when the
-   !> deck gives &strength.
-   pure integer function history_width(with_strength)
+   !> The history's columns of a run: nhist, nhist_strength when the deck
+   !> gives &strength, nhist_damage with ply damage.
+   pure integer function history_width(with_strength, with_damage)
       logical, intent(in) :: with_strength   !< the run computes ply stresses
-      history_width = merge(nhist_strength, nhist, with_strength)
+      logical, intent(in) :: with_damage     !< the plies damage (&damage)
+      history_width = merge(nhist_damage, merge(nhist_strength, nhist, with_strength), with_damage)
    end function history_width
 
    !> One history row, SI values in history_columns' order, written in the
@@ -372,13 +375,13 @@ contains
    subroutine write_history_row(unit, probe, values, bytes, stat, iomsg)
       integer, intent(in) :: unit                 !< the history file
       type(file_probe_t), intent(in) :: probe     !< the same file, open for its length on disk
-      real(dp), intent(in) :: values(:)           !< the row, SI (nhist or nhist_strength values)
+      real(dp), intent(in) :: values(:)           !< the row, SI (history_width values)
       integer(int64), intent(inout) :: bytes      !< the file's length on disk before the row, then after it
       integer, intent(out) :: stat                !< 0, or the write's iostat
       character(len=*), intent(inout) :: iomsg    !< the run-time's message on failure
-      character(len=history_slot - 1) :: line
+      character(len=2*history_slot - 1) :: line
       integer(int64) :: after
-      integer :: c, at
+      integer :: c, at, slot
       line = ''
       ! the text of the format (f16.4, 12es16.7e3, 3i6), then es16.7e3 or i6 for
       ! each further column, byte for byte, by src/system/number_text.f90's writers
@@ -393,12 +396,13 @@ contains
             at = at + 16
          end if
       end do columns
-      write (unit, '(a)', iostat=stat, iomsg=iomsg) line       ! the whole slot (history_slot)
+      slot = merge(2, 1, size(values) > nhist_strength)*history_slot
+      write (unit, '(a)', iostat=stat, iomsg=iomsg) line(:slot - 1)     ! the whole slot
       if (stat == 0) flush (unit, iostat=stat, iomsg=iomsg)
       if (stat /= 0) return
       ! gfortran 12's FLUSH does not report a failed write(2): the length on disk does
       after = probe_size(probe)
-      if (after /= bytes + history_slot) then
+      if (after /= bytes + slot) then
          stat = 1
          iomsg = 'the row did not reach the disk (a full disk, or the file-size limit)'
          return

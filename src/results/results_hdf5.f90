@@ -17,7 +17,8 @@ module results_hdf5
    use c_library, only: c_unlink
    use file_system, only: rename_file
    use mesh, only: mesh_t, ndof_node, freedom_name
-   use result_files, only: keep_failure, column_t, history_columns, nhist_strength, history_width, summary_item_t
+   use plate_damage, only: damage_wanted
+   use result_files, only: keep_failure, column_t, history_columns, nhist_damage, history_width, summary_item_t
    use hdf5_io, only: h5io_start, h5io_create, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
       h5io_update_attr, h5io_write, h5io_rewrite, h5io_exists, h5io_delete
    use hdf5_series, only: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_open_dataset, &
@@ -48,7 +49,7 @@ module results_hdf5
       logical :: broken = .false.                       !< a write failed: the file is left as at its last flush
       character(len=:), allocatable :: path             !< <prefix>.h5
       integer(hid_t) :: fid = -1                        !< the file while it is open (a flush, the end)
-      integer(hid_t) :: hist(nhist_strength) = -1       !< /history/<column> (result_files: history_columns)
+      integer(hid_t) :: hist(nhist_damage) = -1       !< /history/<column> (result_files: history_columns)
       integer :: ncol = 0                               !< the run's columns (history_width)
       integer(hid_t) :: snap_time = -1, snap_step = -1, snap_force = -1   !< /fields/time, step, force
       integer(hid_t) :: snap_field(ndof_node) = -1      !< /fields/u, v, w, psi_x, psi_y
@@ -95,9 +96,8 @@ contains
       type(mesh_t), intent(in) :: msh               !< the mesh with its equation numbers
       type(results_file_t), intent(inout) :: rf     !< the results file, not yet active
       integer :: held
-      rf%path = deck%prefix//'.h5'
-      rf%eq = msh%eq
-      rf%ncol = history_width(strength_given(deck))
+      rf%path = deck%prefix//'.h5';  rf%eq = msh%eq
+      rf%ncol = history_width(strength_given(deck), damage_wanted(deck))
       held = int(max(int(min_snapshots, int64), buffer_bytes/(8_int64*ndof_node*msh%nnode)))
       allocate (rf%rows(rf%ncol, flush_rows), rf%snap(3, held), rf%snap_fields(ndof_node, msh%nnode, held), &
                 rf%peak_fields(ndof_node, msh%nnode))

@@ -15,7 +15,7 @@ module xdmf_plies
    use hdf5_io, only: h5io_group, h5io_write, h5io_exists, h5io_delete
    implicit none
    private
-   public :: xdmf_plies_t, ply_maps_t, plies_write, plies_collection
+   public :: xdmf_plies_t, ply_maps_t, plies_write, plies_add, plies_collection
 
    !> Where the cells of the 3 x 3 Gauss points are cut, along xi and eta.
    real(dp), parameter :: plies_cut(4) = [-1.0_dp, -4.0_dp/9.0_dp, 4.0_dp/9.0_dp, 1.0_dp]
@@ -40,6 +40,7 @@ module xdmf_plies
       integer :: nply = 0, npoint = 0               !< plies, Gauss points
       integer :: ncell = 0, npts = 0                !< hexahedra, their points
       character(len=:), allocatable :: modes        !< the mode codes' words ('0 none, 1 fibre_tension, ...')
+      character(len=2*name_len), allocatable :: added(:)   !< the maps plies_add wrote (ply damage)
    end type xdmf_plies_t
 
    !> The laminate and its damage maps, per ply and Gauss point: what plies_write shows.
@@ -118,6 +119,7 @@ contains
       p%ncell = ncell
       p%npts = nen_lattice*msh%nelem*(2*nply + 1)
       p%modes = maps%modes
+      allocate (p%added(0))
       end associate
    contains
       subroutine put_real(j)
@@ -125,6 +127,19 @@ contains
          if (stat == 0) call h5io_write(fid, group // '/' // trim(real_sets(j)), v, stat, errmsg)
       end subroutine put_real
    end subroutine plies_write
+
+   !> One more map v (nply, npoint) of the active grid p, the same on both
+   !> faces of a ply, as /xdmf/plies/<name> (the ply damage of a mode).
+   subroutine plies_add(p, fid, name, v, stat, errmsg)
+      type(xdmf_plies_t), intent(inout) :: p        !< the grid (active)
+      integer(hid_t), intent(in) :: fid             !< the open results file
+      character(len=*), intent(in) :: name          !< the map's name (-, no unit)
+      real(dp), intent(in) :: v(:,:)                !< (nply, npoint) its values
+      integer, intent(out) :: stat                  !< 0 on success
+      character(len=*), intent(inout) :: errmsg     !< reason on failure
+      call h5io_write(fid, group // '/' // name, reshape(spread(v, 1, 2), [p%ncell]), stat, errmsg)
+      if (stat == 0) p%added = [p%added, [character(len=2*name_len) :: name]]
+   end subroutine plies_add
 
    !> The laminate grid: in the plane, the cell of a 3 x 3 Gauss point is the
    !> part of its element its weight stands for (xi, eta cut at -1, -4/9, 4/9,
@@ -213,6 +228,9 @@ contains
          end do
          do j = 1, nreals
             call attribute(trim(real_names(j)), 'Float', trim(real_sets(j)))
+         end do
+         do j = 1, size(p%added)
+            call attribute(trim(p%added(j)) // ' (-)', 'Float', trim(p%added(j)))
          end do
          write (u, '(a)') '      </Grid>'
       end do steps

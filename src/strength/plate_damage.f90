@@ -20,7 +20,7 @@ module plate_damage
    use deck_schema, only: deck_t, strength_given, is_given
    implicit none
    private
-   public :: plate_damage_t, damage_init, damage_update, damage_force, damage_energy, damage_counts
+   public :: plate_damage_t, damage_init, damage_update, damage_force, damage_energy, damage_counts, damage_wanted
 
    !> Gauss points per element (the 3 x 3 of the membrane and bending terms).
    integer, parameter :: ngp = 9
@@ -60,8 +60,7 @@ contains
       logical :: data
       integer :: k
       stat = 0
-      data = strength_given(deck) .and. is_given(deck, 'strength', 'gft') .and. is_given(deck, 'strength', 'gfc') &
-             .and. is_given(deck, 'strength', 'gmt') .and. is_given(deck, 'strength', 'gmc')
+      data = damage_data(deck)
       select case (word)
       case ('none')
          dmg%why = 'none (&damage model = ''none'')'
@@ -102,6 +101,20 @@ contains
          dmg%lc(:, k) = sqrt(model%geo(k)%wj3)
       end do
    end subroutine damage_init
+
+   !> The deck gives the six ply strengths and the four ply fracture energies.
+   pure logical function damage_data(deck)
+      type(deck_t), intent(in) :: deck          !< the effective deck
+      damage_data = strength_given(deck) .and. is_given(deck, 'strength', 'gft') .and. is_given(deck, 'strength', 'gfc') &
+                    .and. is_given(deck, 'strength', 'gmt') .and. is_given(deck, 'strength', 'gmc')
+   end function damage_data
+
+   !> The plies of a run with this deck damage (damage_init, without its
+   !> state): the history's column of the energy dissipated.
+   pure logical function damage_wanted(deck)
+      type(deck_t), intent(in) :: deck          !< the effective deck
+      damage_wanted = deck%damage_model == 'hashin' .or. (deck%damage_model /= 'none' .and. damage_data(deck))
+   end function damage_wanted
 
    !> The damage after an accepted step of length dt, at the displacements d:
    !> every ply at its mid-thickness at every Gauss point (ply_damage_step),
