@@ -191,6 +191,8 @@ contains
       if (g%storage /= other%storage .or. len_trim(g%storage) == 0) then
          msg = "global_axpy_matrix: storages differ or are not initialised ('" // &
                trim(g%storage) // "', '" // trim(other%storage) // "')"
+      else if (g%band%factored .or. g%sky%factored .or. other%band%factored .or. other%sky%factored) then
+         msg = trim(g%storage) // '_axpy: a factored matrix cannot be added to or from'
       else
          select case (trim(g%storage))
          case ('band'); call band_axpy(g%band, alpha, other%band, ierr, msg)
@@ -273,6 +275,11 @@ contains
       integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
       bad_eq = 0
       if (.not. usable(g, 'global_factor', stat, errmsg)) return
+      if (g%band%factored .or. g%sky%factored) then     ! (sparse_factor says it itself)
+         stat = 1
+         errmsg = trim(g%storage) // '_factor: the matrix is already factored'
+         return
+      end if
       select case (g%storage)
       case ('band'); call band_factor(g%band, stat, errmsg, bad_eq)
       case ('skyline'); call skyline_factor(g%sky, stat, errmsg, bad_eq)
@@ -287,11 +294,20 @@ contains
       integer, intent(out) :: stat                  !< 0 on success, 1 on failure
       character(len=*), intent(inout) :: errmsg     !< reason for the failure (set only on failure)
       if (.not. usable(g, 'global_solve', stat, errmsg)) return
-      select case (g%storage)
-      case ('band'); call band_solve(g%band, b, stat, errmsg)
-      case ('skyline'); call skyline_solve(g%sky, b, stat, errmsg)
-      case default; call sparse_solve(g%sparse, b, stat, errmsg)
-      end select
+      if (.not. is_factored(g)) then
+         stat = 1
+         errmsg = trim(g%storage) // '_solve: the matrix is not factored (call ' // trim(g%storage) // '_factor first)'
+      else if (size(b) /= g%neq) then
+         stat = 1
+         errmsg = trim(g%storage) // '_solve: right-hand side has length ' // int_str(size(b)) // ' but n = ' &
+            // int_str(g%neq)
+      else if (g%storage == 'band') then
+         call band_solve(g%band, b, stat, errmsg)
+      else if (g%storage == 'skyline') then
+         call skyline_solve(g%sky, b)
+      else
+         call sparse_solve(g%sparse, b, stat, errmsg)
+      end if
    end subroutine global_solve
 
    !> True when g can be used: initialised and without a deferred error

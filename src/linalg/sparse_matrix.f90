@@ -395,24 +395,14 @@ contains
       end if
    end subroutine check_pivots
 
-   !> Solve A x = b with the factor; b is overwritten by x.
+   !> Solve A x = b with the factor, b of its size (global_solve, the one
+   !> caller, checks both); b is overwritten by x.
    subroutine sparse_solve(a, b, stat, errmsg)
       type(sparse_matrix_t), intent(in) :: a  !< the factored matrix.
       real(dp), intent(inout) :: b(:)  !< right-hand side on entry, solution on return, length n.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      character(len=msg_len) :: msg
-      stat = 0
-      if (.not. a%factored) then
-         stat = 1
-         errmsg = 'sparse_solve: the matrix is not factored (call sparse_factor first)'
-      else if (size(b) /= a%n) then
-         stat = 1
-         write (msg, '(a,i0,a,i0)') 'sparse_solve: right-hand side has length ', size(b), ' but n = ', a%n
-         errmsg = msg
-      else
-         call chol_solve(a%chol, b, stat, errmsg)
-      end if
+      call chol_solve(a%chol, b, stat, errmsg)
    end subroutine sparse_solve
 
    !> Largest distance of a stored entry from the diagonal, max (j - i).
