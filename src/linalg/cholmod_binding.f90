@@ -52,15 +52,14 @@ module cholmod_binding
          integer(c_int) :: code
       end function impact_cholmod_copy
       !> Hand over the upper triangle, compressed columns, 1-based.
-      function impact_cholmod_set_matrix(key, n, colptr, rowind, values, with_values) &
+      function impact_cholmod_set_matrix(key, n, colptr, rowind, values) &
             bind(c, name='impact_cholmod_set_matrix') result(code)
          import :: c_long_long, c_int, c_double
          integer(c_long_long), value :: key  !< the handle.
          integer(c_long_long), value :: n  !< order.
          integer(c_long_long), intent(in) :: colptr(*)  !< column starts (n+1).
          integer(c_int), intent(in) :: rowind(*)  !< rows, ascending in each column.
-         real(c_double), intent(in) :: values(*)  !< values (read when with_values /= 0).
-         integer(c_int), value :: with_values  !< 0: the pattern alone.
+         real(c_double), intent(in) :: values(*)  !< values, as rowind.
          integer(c_int) :: code
       end function impact_cholmod_set_matrix
       !> Symbolic factorization: nonzeros of L, flops, bytes of the factor.
@@ -105,27 +104,18 @@ contains
    end function cholmod_live_handles
 
    !> Hand the matrix (upper triangle, compressed columns, 1-based; rows
-   !> ascending in each column) to the handle, which is made when it has
-   !> none. Without values, the pattern alone (for chol_analyze).
-   subroutine chol_set_matrix(h, colptr, rowind, stat, errmsg, values)
+   !> ascending in each column) to the handle, which is made when it has none.
+   subroutine chol_set_matrix(h, colptr, rowind, values, stat, errmsg)
       type(cholmod_handle_t), intent(inout) :: h  !< the handle.
       integer(c_long_long), intent(in) :: colptr(:)  !< column starts, n+1 of them, colptr(1) = 1.
       integer(c_int), intent(in) :: rowind(:)  !< rows of the entries, colptr(n+1) - 1 of them.
+      real(dp), intent(in) :: values(:)  !< values of the entries, as rowind.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      real(dp), intent(in), optional :: values(:)  !< values of the entries, as rowind.
-      real(c_double) :: none(1)
       integer(c_int) :: code
-      stat = 0
       if (h%key == 0) h%key = impact_cholmod_new()
-      if (h%key == 0) then
-         code = no_memory
-      else if (present(values)) then
-         code = impact_cholmod_set_matrix(h%key, size(colptr, kind=c_long_long) - 1, colptr, rowind, values, 1_c_int)
-      else
-         none = 0.0_c_double
-         code = impact_cholmod_set_matrix(h%key, size(colptr, kind=c_long_long) - 1, colptr, rowind, none, 0_c_int)
-      end if
+      code = no_memory
+      if (h%key /= 0) code = impact_cholmod_set_matrix(h%key, size(colptr, kind=c_long_long) - 1, colptr, rowind, values)
       call check(code, 'handing the matrix over', stat, errmsg)
    end subroutine chol_set_matrix
 
@@ -197,32 +187,26 @@ contains
       h%key = 0
    end subroutine chol_release
 
-   !> What a return code of the shim means.
-   function chol_failure(code) result(text)
-      integer(c_int), intent(in) :: code  !< a return code of the shim.
+   ! ---- private ---------------------------------------------------------------
+
+   !> stat and errmsg from a return code of the shim: what it means.
+   subroutine check(code, what, stat, errmsg)
+      integer(c_int), intent(in) :: code  !< the return code.
+      character(len=*), intent(in) :: what  !< the step, for the message.
+      integer, intent(out) :: stat  !< 0 for code_ok, 1 otherwise.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=:), allocatable :: text
+      stat = 0
       select case (code)
-      case (code_ok); text = 'no failure'
+      case (code_ok); return
       case (no_handle); text = 'the factorization was released (an assigned copy used after the original''s release?)'
       case (no_memory); text = 'out of memory'
       case (too_large); text = 'the problem is too large for CHOLMOD''s integers'
       case (invalid); text = 'invalid input (no matrix handed over, or not analysed)'
       case default; text = 'CHOLMOD failed with status ' // int_str(int(impact_cholmod_status()))
       end select
-   end function chol_failure
-
-   ! ---- private ---------------------------------------------------------------
-
-   !> stat and errmsg from a return code of the shim.
-   subroutine check(code, what, stat, errmsg)
-      integer(c_int), intent(in) :: code  !< the return code.
-      character(len=*), intent(in) :: what  !< the step, for the message.
-      integer, intent(out) :: stat  !< 0 for code_ok, 1 otherwise.
-      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      stat = 0
-      if (code == code_ok) return
       stat = 1
-      errmsg = 'sparse (CHOLMOD): ' // what // ' failed: ' // chol_failure(code)
+      errmsg = 'sparse (CHOLMOD): ' // what // ' failed: ' // text
    end subroutine check
 
 end module cholmod_binding

@@ -324,7 +324,7 @@ contains
          return
       end if
       diag = a%val(a%colptr(2:) - 1)          ! the diagonal, last in each column
-      call chol_set_matrix(a%chol, a%colptr, a%rowind, stat, errmsg, a%val)
+      call chol_set_matrix(a%chol, a%colptr, a%rowind, a%val, stat, errmsg)
       if (stat /= 0) return
       if (.not. a%analysed) then
          call sparse_analyse(a, stat, errmsg)
