@@ -192,8 +192,7 @@ contains
       call dpbtrf('U', a%n, a%kd, a%ab, a%kd + 1, info)
       if (info < 0) then
          stat = 1
-         write (msg, '(a,i0)') 'band_factor: dpbtrf rejected argument ', -info
-         errmsg = msg
+         errmsg = 'band_factor: dpbtrf rejected argument ' // int_str(-info)
          return
       end if
       ! dpbtrf stops only at a pivot <= 0 (equation info > 0); a tiny
@@ -269,14 +268,12 @@ contains
       type(band_matrix_t), intent(in) :: b  !< the matrix added, same n and kd as a.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure (a unchanged).
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      character(len=msg_len) :: msg
       stat = 0
       if (a%n /= b%n .or. a%kd /= b%kd .or. .not. allocated(a%ab) &
           .or. .not. allocated(b%ab)) then
          stat = 1
-         write (msg, '(a,i0,a,i0,a,i0,a,i0,a)') 'band_axpy: structures differ (n = ', &
-            a%n, ', kd = ', a%kd, ' against n = ', b%n, ', kd = ', b%kd, ')'
-         errmsg = msg
+         errmsg = 'band_axpy: structures differ (n = ' // int_str(a%n) // ', kd = ' // int_str(a%kd) // ' against n = ' &
+            // int_str(b%n) // ', kd = ' // int_str(b%kd) // ')'
          return
       end if
       a%ab = a%ab + alpha * b%ab

@@ -23,35 +23,30 @@ module cholmod_binding
       integer(c_long_long) :: key = 0  !< key in the shim's table, 0 = none.
    end type cholmod_handle_t
 
+   ! The shim's functions, each documented in cholmod_shim.c.
    interface
-      !> A new, empty handle; 0 when out of memory.
       function impact_cholmod_new() bind(c, name='impact_cholmod_new') result(key)
          import :: c_long_long
          integer(c_long_long) :: key
       end function impact_cholmod_new
-      !> Release a handle and all it holds (a key not in the table is ignored).
       subroutine impact_cholmod_free(key) bind(c, name='impact_cholmod_free')
          import :: c_long_long
          integer(c_long_long), value :: key  !< the handle.
       end subroutine impact_cholmod_free
-      !> Number of live handles.
       function impact_cholmod_live() bind(c, name='impact_cholmod_live') result(n)
          import :: c_long_long
          integer(c_long_long) :: n
       end function impact_cholmod_live
-      !> CHOLMOD's status of the last failure.
       function impact_cholmod_status() bind(c, name='impact_cholmod_status') result(status)
          import :: c_int
          integer(c_int) :: status
       end function impact_cholmod_status
-      !> A new handle with a copy of key's factor (copy = 0: key holds none).
       function impact_cholmod_copy(key, copy) bind(c, name='impact_cholmod_copy') result(code)
          import :: c_long_long, c_int
          integer(c_long_long), value :: key  !< the handle copied.
          integer(c_long_long), intent(out) :: copy  !< the new handle.
          integer(c_int) :: code
       end function impact_cholmod_copy
-      !> Hand over the upper triangle, compressed columns, 1-based.
       function impact_cholmod_set_matrix(key, n, colptr, rowind, values) &
             bind(c, name='impact_cholmod_set_matrix') result(code)
          import :: c_long_long, c_int, c_double
@@ -62,21 +57,18 @@ module cholmod_binding
          real(c_double), intent(in) :: values(*)  !< values, as rowind.
          integer(c_int) :: code
       end function impact_cholmod_set_matrix
-      !> Symbolic factorization: nonzeros of L, flops, bytes of the factor.
       function impact_cholmod_analyze(key, lnz, flops, bytes) bind(c, name='impact_cholmod_analyze') result(code)
          import :: c_long_long, c_int, c_double
          integer(c_long_long), value :: key  !< the handle.
          real(c_double), intent(out) :: lnz, flops, bytes  !< nnz(L), flops, bytes of the numeric factor.
          integer(c_int) :: code
       end function impact_cholmod_analyze
-      !> Numeric factorization; minor = failed column (elimination order), n+1 if none.
       function impact_cholmod_factorize(key, minor) bind(c, name='impact_cholmod_factorize') result(code)
          import :: c_long_long, c_int
          integer(c_long_long), value :: key  !< the handle.
          integer(c_long_long), intent(out) :: minor  !< 1-based failed column, n+1 if none.
          integer(c_int) :: code
       end function impact_cholmod_factorize
-      !> Diagonal of L and the permutation, in the order of elimination.
       function impact_cholmod_diagonal(key, n, diag, perm) bind(c, name='impact_cholmod_diagonal') result(code)
          import :: c_long_long, c_int, c_double
          integer(c_long_long), value :: key  !< the handle.
@@ -85,7 +77,6 @@ module cholmod_binding
          integer(c_long_long), intent(out) :: perm(*)  !< equation eliminated k-th (1-based).
          integer(c_int) :: code
       end function impact_cholmod_diagonal
-      !> Solve A x = b in place.
       function impact_cholmod_solve(key, n, b) bind(c, name='impact_cholmod_solve') result(code)
          import :: c_long_long, c_int, c_double
          integer(c_long_long), value :: key  !< the handle.

@@ -51,23 +51,18 @@ contains
       integer, intent(in) :: elem_eq(:,:)  !< elem_eq(k, e): equation of freedom k of element e, 0 = constrained.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      character(len=msg_len) :: msg
       character(len=storage_len) :: name
       integer, allocatable :: first_row(:)
       integer :: e, k, eq, lo, kd, bad(2)
       call global_release(g)
       stat = 1
+      bad = findloc(elem_eq < 0 .or. elem_eq > neq, .true.)       ! 0 (constrained) or 1..neq
       if (neq < 1) then
-         write (msg, '(a,i0)') 'global_init: number of equations must be >= 1, got ', neq
-      else if (any(elem_eq < 0 .or. elem_eq > neq)) then       ! 0 (constrained) or 1..neq
-         bad = findloc(elem_eq < 0 .or. elem_eq > neq, .true.)
-         write (msg, '(a,i0,a,i0,a,i0,a,i0)') 'global_init: element ', bad(2), ' freedom ', bad(1), &
-            ' has equation ', elem_eq(bad(1), bad(2)), ' outside 0..', neq
-      else
-         stat = 0
-      end if
-      if (stat /= 0) then
-         errmsg = msg
+         errmsg = 'global_init: number of equations must be >= 1, got ' // int_str(neq)
+         return
+      else if (bad(1) > 0) then
+         errmsg = 'global_init: element ' // int_str(bad(2)) // ' freedom ' // int_str(bad(1)) // ' has equation ' &
+            // int_str(elem_eq(bad(1), bad(2))) // ' outside 0..' // int_str(neq)
          return
       end if
 
