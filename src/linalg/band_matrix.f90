@@ -269,8 +269,7 @@ contains
       integer, intent(out) :: stat  !< 0 on success, 1 on failure (a unchanged).
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       stat = 0
-      if (a%n /= b%n .or. a%kd /= b%kd .or. .not. allocated(a%ab) &
-          .or. .not. allocated(b%ab)) then
+      if (a%n /= b%n .or. a%kd /= b%kd) then        ! (both initialised: global_axpy_matrix checks)
          stat = 1
          errmsg = 'band_axpy: structures differ (n = ' // int_str(a%n) // ', kd = ' // int_str(a%kd) // ' against n = ' &
             // int_str(b%n) // ', kd = ' // int_str(b%kd) // ')'

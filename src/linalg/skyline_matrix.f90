@@ -267,23 +267,15 @@ contains
       type(skyline_matrix_t), intent(in) :: other  !< the matrix added, same profile as sky.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure (sky unchanged).
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      stat = 0
-      if (.not. (allocated(sky%maxa) .and. allocated(other%maxa))) then
-         stat = 1
-         errmsg = 'skyline_axpy: a matrix was never initialised'
-         return
-      end if
-      if (sky%n /= other%n) then
-         stat = 1
+      stat = 1
+      if (sky%n /= other%n) then                    ! (both initialised: global_axpy_matrix checks)
          errmsg = 'skyline_axpy: the matrices differ in order'
-         return
-      end if
-      if (any(sky%maxa /= other%maxa)) then
-         stat = 1
+      else if (any(sky%maxa /= other%maxa)) then
          errmsg = 'skyline_axpy: the matrices differ in profile'
-         return
+      else
+         stat = 0
+         sky%a = sky%a + alpha * other%a
       end if
-      sky%a = sky%a + alpha * other%a
    end subroutine skyline_axpy
 
 end module skyline_matrix
