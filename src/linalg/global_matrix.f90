@@ -182,7 +182,6 @@ contains
       integer :: ierr
       if (present(stat)) stat = 0
       msg = ''
-      ierr = 0
       if (g%storage /= other%storage .or. len_trim(g%storage) == 0) then
          msg = "global_axpy_matrix: storages differ or are not initialised ('" // &
                trim(g%storage) // "', '" // trim(other%storage) // "')"
@@ -239,7 +238,6 @@ contains
       integer :: ierr
       if (present(stat)) stat = 0
       msg = ''
-      ierr = 0
       if (.not. usable(g, 'global_matvec', ierr, msg)) then
          continue
       else if (is_factored(g)) then

@@ -117,13 +117,8 @@ contains
    !> Largest column height max_j (j - m_j): the half-bandwidth a band
    !> storage of the same matrix would need.
    pure integer function skyline_half_bandwidth(sky)
-      type(skyline_matrix_t), intent(in) :: sky  !< the matrix.
-      integer :: j
-      skyline_half_bandwidth = 0
-      do j = 1, sky%n
-         skyline_half_bandwidth = max(skyline_half_bandwidth, &
-                                      sky%maxa(j + 1) - sky%maxa(j) - 1)
-      end do
+      type(skyline_matrix_t), intent(in) :: sky  !< the matrix, initialised.
+      skyline_half_bandwidth = maxval(sky%maxa(2:) - sky%maxa(:sky%n)) - 1
    end function skyline_half_bandwidth
 
    !> True when A(i,j) is a valid index pair inside the stored profile.

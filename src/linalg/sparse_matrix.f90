@@ -407,13 +407,9 @@ contains
 
    !> Largest distance of a stored entry from the diagonal, max (j - i).
    pure integer function sparse_half_bandwidth(a)
-      type(sparse_matrix_t), intent(in) :: a  !< the matrix.
+      type(sparse_matrix_t), intent(in) :: a  !< the matrix, initialised.
       integer :: j
-      sparse_half_bandwidth = 0
-      if (.not. allocated(a%colptr)) return
-      do j = 1, a%n
-         sparse_half_bandwidth = max(sparse_half_bandwidth, j - a%rowind(a%colptr(j)))
-      end do
+      sparse_half_bandwidth = maxval([(j - a%rowind(a%colptr(j)), j = 1, a%n)])
    end function sparse_half_bandwidth
 
    !> Number of stored entries of A (the upper triangle's pattern).
