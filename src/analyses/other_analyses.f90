@@ -27,34 +27,35 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=2048) :: report
+      real(dp), allocatable :: f(:)
       report = ''
       stat = 0
+      if (deck%analysis_kind == 'static' .or. deck%analysis_kind == 'pressure') then
+         allocate (f(model%msh%neq))
+         call assemble_load(deck, model, f, stat, errmsg)
+         if (stat /= 0) return
+      end if
       select case (deck%analysis_kind)
-      case ('static');   call run_static(deck, model, report, stat, errmsg)
+      case ('static');   call run_static(deck, model, f, report, stat, errmsg)
       case ('modes');    call run_modes(deck, model, report, stat, errmsg)
-      case ('pressure'); call run_pressure(deck, model, report, stat, errmsg)
+      case ('pressure'); call run_pressure(deck, model, f, report, stat, errmsg)
       end select
       if (len_trim(report) > 0) write (unit, '(a)') trim(report)
    end subroutine run_other_analysis
 
-   !> The static analysis: load, solution (static_solve), result files;
-   !> the report is a line for the terminal.
-   subroutine run_static(deck, model, report, stat, errmsg)
+   !> The static analysis under the load f: solution (static_solve), result
+   !> files; the report is a line for the terminal.
+   subroutine run_static(deck, model, f, report, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
       type(model_t), intent(in) :: model            !< the model
-      character(len=*), intent(out) :: report       !< the report for the terminal ('' when none)
+      real(dp), intent(in) :: f(:)                  !< the load vector of &load (N)
+      character(len=*), intent(inout) :: report     !< the report for the terminal ('' when none)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(static_result_t) :: res
-      real(dp), allocatable :: f(:)
       character(len=msg_len) :: load_unit, solve_msg
       integer :: u, inc, n, solve_stat, k
       real(dp) :: de(ndof_node)
-      report = ''
-      stat = 0
-      allocate (f(model%msh%neq))
-      call assemble_load(deck, model, f, stat, errmsg)
-      if (stat /= 0) return
       n = deck%load_increments
       if (.not. model%nonlinear) n = 1
       solve_msg = ''
@@ -105,7 +106,7 @@ contains
    subroutine run_modes(deck, model, report, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
       type(model_t), intent(in) :: model            !< the model
-      character(len=*), intent(out) :: report       !< the report for the terminal ('' when none)
+      character(len=*), intent(inout) :: report     !< the report for the terminal ('' when none)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(modal_result_t) :: res
@@ -113,8 +114,6 @@ contains
       character(len=48), allocatable :: texts(:)
       real(dp) :: de(ndof_node), wmax(deck%mode_count), wk
       integer :: u, j, k
-      report = ''
-      stat = 0
       call modal_solve(model, deck%mode_count, deck%mode_shapes, res, stat, errmsg)
       if (stat /= 0) return
 
@@ -176,23 +175,18 @@ contains
          // deck%prefix // '_mode_shapes.dat'
    end subroutine run_modes
 
-   !> The transient analysis: load, time integration (pressure_solve),
-   !> history file; the report is a few lines for the terminal.
-   subroutine run_pressure(deck, model, report, stat, errmsg)
+   !> The transient analysis under the load f: time integration
+   !> (pressure_solve), history file; the report is a few lines for the terminal.
+   subroutine run_pressure(deck, model, f, report, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
       type(model_t), intent(in) :: model            !< the model
-      character(len=*), intent(out) :: report       !< the report for the terminal ('' when none)
+      real(dp), intent(in) :: f(:)                  !< the load vector of &load (N)
+      character(len=*), intent(inout) :: report     !< the report for the terminal ('' when none)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(pressure_result_t) :: res
-      real(dp), allocatable :: f(:)
       character(len=msg_len) :: warning
       integer :: u, step, nstep, peak
-      report = ''
-      stat = 0
-      allocate (f(model%msh%neq))
-      call assemble_load(deck, model, f, stat, errmsg)
-      if (stat /= 0) return
       nstep = nint(deck%t_end/deck%dt)
       call pressure_solve(model, f, deck%dt, nstep, deck%every, res, stat, errmsg)
       if (stat /= 0) return

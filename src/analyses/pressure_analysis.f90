@@ -53,9 +53,8 @@ contains
       integer :: step, bad_eq, solves0
       logical :: converged
       allocate (res%t(0:nstep), res%w_centre(0:nstep), res%kinetic(0:nstep), res%strain(0:nstep), &
-                res%work(0:nstep), res%iterations(0:nstep))
-      res%t = 0.0_dp;  res%w_centre = 0.0_dp;  res%kinetic = 0.0_dp;  res%strain = 0.0_dp
-      res%work = 0.0_dp;  res%iterations = 0
+                res%work(0:nstep), source=0.0_dp)
+      allocate (res%iterations(0:nstep), source=0)
 
       ! -- initial acceleration M a = F (the plate at rest)
       call global_copy(mfac, model%mass)

@@ -51,9 +51,8 @@ contains
       real(dp) :: d(size(f)), d_start(size(f)), r(size(f)), fint(size(f)), lam, num, den
       integer :: inc, it, bad_eq
       logical :: converged
-      allocate (res%load_factor(0:increments), res%w_centre(0:increments), &
-                res%iterations(0:increments), res%residual(0:increments))
-      res%load_factor = 0.0_dp;  res%w_centre = 0.0_dp;  res%iterations = 0;  res%residual = 0.0_dp
+      allocate (res%load_factor(0:increments), res%w_centre(0:increments), res%residual(0:increments), source=0.0_dp)
+      allocate (res%iterations(0:increments), source=0)
       d = 0.0_dp
       res%d = d
 

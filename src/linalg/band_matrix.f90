@@ -5,6 +5,7 @@
 !> pivot rule: the comment above band_matrix_t.
 module band_matrix
    use kinds, only: dp, msg_len
+   use number_text, only: int_str
    use, intrinsic :: iso_fortran_env, only: int64
    implicit none
    private
@@ -174,8 +175,9 @@ contains
       call dsbmv('U', a%n, a%kd, 1.0_dp, a%ab, a%kd + 1, x, 1, 0.0_dp, y, 1)
    end subroutine band_matvec
 
-   !> Cholesky factorisation in place (LAPACK dpbtrf), A = U^T U. On a failed
-   !> pivot stat = 1, bad_eq its equation; the matrix is left unusable.
+   !> Cholesky factorisation in place (LAPACK dpbtrf), A = U^T U, of a matrix
+   !> not yet factored (global_factor checks). On a failed pivot stat = 1,
+   !> bad_eq its equation; the matrix is left unusable.
    subroutine band_factor(a, stat, errmsg, bad_eq)
       type(band_matrix_t), intent(inout) :: a  !< the matrix, overwritten by its Cholesky factor.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
@@ -186,23 +188,11 @@ contains
       integer :: info, j, last
       stat = 0
       bad_eq = 0
-      if (.not. allocated(a%ab)) then
-         stat = 1
-         errmsg = 'band_factor: the matrix was never initialised'
-         return
-      end if
-      if (a%factored) then
-         stat = 1
-         errmsg = 'band_factor: the matrix is already factored'
-         return
-      end if
-      allocate (diag(a%n))
-      diag = a%ab(a%kd + 1, :)
+      allocate (diag, source=a%ab(a%kd + 1, :))
       call dpbtrf('U', a%n, a%kd, a%ab, a%kd + 1, info)
       if (info < 0) then
          stat = 1
-         write (msg, '(a,i0)') 'band_factor: dpbtrf rejected argument ', -info
-         errmsg = msg
+         errmsg = 'band_factor: dpbtrf rejected argument ' // int_str(-info)
          return
       end if
       ! dpbtrf stops only at a pivot <= 0 (equation info > 0); a tiny
@@ -235,7 +225,7 @@ contains
       real(dp), intent(inout) :: b(:)  !< right-hand side on entry, solution on return, length n.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      call solve_rhs(a, size(b), 1, b, stat, errmsg)
+      call solve_rhs(a, 1, b, stat, errmsg)
    end subroutine band_solve_vec
 
    !> Solve A X = B for nrhs right-hand sides with the factor (dpbtrs).
@@ -244,56 +234,45 @@ contains
       real(dp), intent(inout) :: b(:,:)  !< right-hand sides b(n, nrhs) on entry, solutions on return.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      call solve_rhs(a, size(b, 1), size(b, 2), b, stat, errmsg)
+      call solve_rhs(a, size(b, 2), b, stat, errmsg)
    end subroutine band_solve_mat
 
-   !> dpbtrs on nrhs right-hand sides of length nb (b by sequence
-   !> association), after the checks: a factored, nb = n.
-   subroutine solve_rhs(a, nb, nrhs, b, stat, errmsg)
-      type(band_matrix_t), intent(in) :: a  !< the matrix to solve with.
-      integer, intent(in) :: nb, nrhs  !< length and number of the right-hand sides.
-      real(dp), intent(inout) :: b(max(nb, 1), *)  !< right-hand sides on entry, solutions on return.
+   !> dpbtrs on nrhs right-hand sides of length n (b by sequence
+   !> association; global_solve checks the length).
+   subroutine solve_rhs(a, nrhs, b, stat, errmsg)
+      type(band_matrix_t), intent(in) :: a  !< the factored matrix.
+      integer, intent(in) :: nrhs  !< number of the right-hand sides.
+      real(dp), intent(inout) :: b(a%n, *)  !< right-hand sides on entry, solutions on return.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      character(len=msg_len) :: msg
       integer :: info
       stat = 1
       if (.not. a%factored) then
          errmsg = 'band_solve: the matrix is not factored (call band_factor first)'
-      else if (nb /= a%n) then
-         write (msg, '(a,i0,a,i0)') 'band_solve: right-hand side has length ', nb, ' but n = ', a%n
-         errmsg = msg
-      else
-         stat = 0
-         if (nrhs == 0) return
-         call dpbtrs('U', a%n, a%kd, nrhs, a%ab, a%kd + 1, b, a%n, info)
-         if (info == 0) return
+         return
+      end if
+      stat = 0
+      if (nrhs == 0) return
+      call dpbtrs('U', a%n, a%kd, nrhs, a%ab, a%kd + 1, b, a%n, info)
+      if (info /= 0) then
          stat = 1
-         write (msg, '(a,i0)') 'band_solve: dpbtrs rejected argument ', -info
-         errmsg = msg
+         errmsg = 'band_solve: dpbtrs rejected argument ' // int_str(-info)
       end if
    end subroutine solve_rhs
 
-   !> a = a + alpha*b for two unfactored matrices of the same n and kd.
+   !> a = a + alpha*b for two unfactored matrices (global_axpy_matrix
+   !> checks) of the same n and kd.
    subroutine band_axpy(a, alpha, b, stat, errmsg)
       type(band_matrix_t), intent(inout) :: a  !< the matrix added into.
       real(dp), intent(in) :: alpha  !< scalar multiplying b.
       type(band_matrix_t), intent(in) :: b  !< the matrix added, same n and kd as a.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure (a unchanged).
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      character(len=msg_len) :: msg
       stat = 0
-      if (a%factored .or. b%factored) then
+      if (a%n /= b%n .or. a%kd /= b%kd) then        ! (both initialised: global_axpy_matrix checks)
          stat = 1
-         errmsg = 'band_axpy: a factored matrix cannot be added to or from'
-         return
-      end if
-      if (a%n /= b%n .or. a%kd /= b%kd .or. .not. allocated(a%ab) &
-          .or. .not. allocated(b%ab)) then
-         stat = 1
-         write (msg, '(a,i0,a,i0,a,i0,a,i0,a)') 'band_axpy: structures differ (n = ', &
-            a%n, ', kd = ', a%kd, ' against n = ', b%n, ', kd = ', b%kd, ')'
-         errmsg = msg
+         errmsg = 'band_axpy: structures differ (n = ' // int_str(a%n) // ', kd = ' // int_str(a%kd) // ' against n = ' &
+            // int_str(b%n) // ', kd = ' // int_str(b%kd) // ')'
          return
       end if
       a%ab = a%ab + alpha * b%ab

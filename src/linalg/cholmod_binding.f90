@@ -23,61 +23,52 @@ module cholmod_binding
       integer(c_long_long) :: key = 0  !< key in the shim's table, 0 = none.
    end type cholmod_handle_t
 
+   ! The shim's functions, each documented in cholmod_shim.c.
    interface
-      !> A new, empty handle; 0 when out of memory.
       function impact_cholmod_new() bind(c, name='impact_cholmod_new') result(key)
          import :: c_long_long
          integer(c_long_long) :: key
       end function impact_cholmod_new
-      !> Release a handle and all it holds (a key not in the table is ignored).
       subroutine impact_cholmod_free(key) bind(c, name='impact_cholmod_free')
          import :: c_long_long
          integer(c_long_long), value :: key  !< the handle.
       end subroutine impact_cholmod_free
-      !> Number of live handles.
       function impact_cholmod_live() bind(c, name='impact_cholmod_live') result(n)
          import :: c_long_long
          integer(c_long_long) :: n
       end function impact_cholmod_live
-      !> CHOLMOD's status of the last failure.
       function impact_cholmod_status() bind(c, name='impact_cholmod_status') result(status)
          import :: c_int
          integer(c_int) :: status
       end function impact_cholmod_status
-      !> A new handle with a copy of key's factor (copy = 0: key holds none).
       function impact_cholmod_copy(key, copy) bind(c, name='impact_cholmod_copy') result(code)
          import :: c_long_long, c_int
          integer(c_long_long), value :: key  !< the handle copied.
          integer(c_long_long), intent(out) :: copy  !< the new handle.
          integer(c_int) :: code
       end function impact_cholmod_copy
-      !> Hand over the upper triangle, compressed columns, 1-based.
-      function impact_cholmod_set_matrix(key, n, colptr, rowind, values, with_values) &
+      function impact_cholmod_set_matrix(key, n, colptr, rowind, values) &
             bind(c, name='impact_cholmod_set_matrix') result(code)
          import :: c_long_long, c_int, c_double
          integer(c_long_long), value :: key  !< the handle.
          integer(c_long_long), value :: n  !< order.
          integer(c_long_long), intent(in) :: colptr(*)  !< column starts (n+1).
          integer(c_int), intent(in) :: rowind(*)  !< rows, ascending in each column.
-         real(c_double), intent(in) :: values(*)  !< values (read when with_values /= 0).
-         integer(c_int), value :: with_values  !< 0: the pattern alone.
+         real(c_double), intent(in) :: values(*)  !< values, as rowind.
          integer(c_int) :: code
       end function impact_cholmod_set_matrix
-      !> Symbolic factorization: nonzeros of L, flops, bytes of the factor.
       function impact_cholmod_analyze(key, lnz, flops, bytes) bind(c, name='impact_cholmod_analyze') result(code)
          import :: c_long_long, c_int, c_double
          integer(c_long_long), value :: key  !< the handle.
          real(c_double), intent(out) :: lnz, flops, bytes  !< nnz(L), flops, bytes of the numeric factor.
          integer(c_int) :: code
       end function impact_cholmod_analyze
-      !> Numeric factorization; minor = failed column (elimination order), n+1 if none.
       function impact_cholmod_factorize(key, minor) bind(c, name='impact_cholmod_factorize') result(code)
          import :: c_long_long, c_int
          integer(c_long_long), value :: key  !< the handle.
          integer(c_long_long), intent(out) :: minor  !< 1-based failed column, n+1 if none.
          integer(c_int) :: code
       end function impact_cholmod_factorize
-      !> Diagonal of L and the permutation, in the order of elimination.
       function impact_cholmod_diagonal(key, n, diag, perm) bind(c, name='impact_cholmod_diagonal') result(code)
          import :: c_long_long, c_int, c_double
          integer(c_long_long), value :: key  !< the handle.
@@ -86,7 +77,6 @@ module cholmod_binding
          integer(c_long_long), intent(out) :: perm(*)  !< equation eliminated k-th (1-based).
          integer(c_int) :: code
       end function impact_cholmod_diagonal
-      !> Solve A x = b in place.
       function impact_cholmod_solve(key, n, b) bind(c, name='impact_cholmod_solve') result(code)
          import :: c_long_long, c_int, c_double
          integer(c_long_long), value :: key  !< the handle.
@@ -105,27 +95,18 @@ contains
    end function cholmod_live_handles
 
    !> Hand the matrix (upper triangle, compressed columns, 1-based; rows
-   !> ascending in each column) to the handle, which is made when it has
-   !> none. Without values, the pattern alone (for chol_analyze).
-   subroutine chol_set_matrix(h, colptr, rowind, stat, errmsg, values)
+   !> ascending in each column) to the handle, which is made when it has none.
+   subroutine chol_set_matrix(h, colptr, rowind, values, stat, errmsg)
       type(cholmod_handle_t), intent(inout) :: h  !< the handle.
       integer(c_long_long), intent(in) :: colptr(:)  !< column starts, n+1 of them, colptr(1) = 1.
       integer(c_int), intent(in) :: rowind(:)  !< rows of the entries, colptr(n+1) - 1 of them.
+      real(dp), intent(in) :: values(:)  !< values of the entries, as rowind.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      real(dp), intent(in), optional :: values(:)  !< values of the entries, as rowind.
-      real(c_double) :: none(1)
       integer(c_int) :: code
-      stat = 0
       if (h%key == 0) h%key = impact_cholmod_new()
-      if (h%key == 0) then
-         code = no_memory
-      else if (present(values)) then
-         code = impact_cholmod_set_matrix(h%key, size(colptr, kind=c_long_long) - 1, colptr, rowind, values, 1_c_int)
-      else
-         none = 0.0_c_double
-         code = impact_cholmod_set_matrix(h%key, size(colptr, kind=c_long_long) - 1, colptr, rowind, none, 0_c_int)
-      end if
+      code = no_memory
+      if (h%key /= 0) code = impact_cholmod_set_matrix(h%key, size(colptr, kind=c_long_long) - 1, colptr, rowind, values)
       call check(code, 'handing the matrix over', stat, errmsg)
    end subroutine chol_set_matrix
 
@@ -197,32 +178,26 @@ contains
       h%key = 0
    end subroutine chol_release
 
-   !> What a return code of the shim means.
-   function chol_failure(code) result(text)
-      integer(c_int), intent(in) :: code  !< a return code of the shim.
+   ! ---- private ---------------------------------------------------------------
+
+   !> stat and errmsg from a return code of the shim: what it means.
+   subroutine check(code, what, stat, errmsg)
+      integer(c_int), intent(in) :: code  !< the return code.
+      character(len=*), intent(in) :: what  !< the step, for the message.
+      integer, intent(out) :: stat  !< 0 for code_ok, 1 otherwise.
+      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       character(len=:), allocatable :: text
+      stat = 0
       select case (code)
-      case (code_ok); text = 'no failure'
+      case (code_ok); return
       case (no_handle); text = 'the factorization was released (an assigned copy used after the original''s release?)'
       case (no_memory); text = 'out of memory'
       case (too_large); text = 'the problem is too large for CHOLMOD''s integers'
       case (invalid); text = 'invalid input (no matrix handed over, or not analysed)'
       case default; text = 'CHOLMOD failed with status ' // int_str(int(impact_cholmod_status()))
       end select
-   end function chol_failure
-
-   ! ---- private ---------------------------------------------------------------
-
-   !> stat and errmsg from a return code of the shim.
-   subroutine check(code, what, stat, errmsg)
-      integer(c_int), intent(in) :: code  !< the return code.
-      character(len=*), intent(in) :: what  !< the step, for the message.
-      integer, intent(out) :: stat  !< 0 for code_ok, 1 otherwise.
-      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      stat = 0
-      if (code == code_ok) return
       stat = 1
-      errmsg = 'sparse (CHOLMOD): ' // what // ' failed: ' // chol_failure(code)
+      errmsg = 'sparse (CHOLMOD): ' // what // ' failed: ' // text
    end subroutine check
 
 end module cholmod_binding

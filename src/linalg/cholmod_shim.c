@@ -1,35 +1,18 @@
 /*
  * cholmod_shim.c: the few calls of CHOLMOD (SuiteSparse) that the sparse
  * storage of src/linalg/sparse_matrix.f90 needs, behind a flat C interface
- * of integers, doubles and arrays that src/linalg/cholmod_binding.f90 binds
- * with bind(c).
+ * of integers, doubles and arrays that src/linalg/cholmod_binding.f90 binds.
+ * A C file, not Fortran interfaces to cholmod_l_*: CHOLMOD is driven through
+ * structs whose layout changes between releases (cholmod_common has some
+ * 300 fields); here the C compiler reads the installed cholmod.h. The 64-bit
+ * version (cholmod_l_*) lets a factor hold more than 2^31 entries.
  *
- * Why a C file and not Fortran interfaces to cholmod_l_* directly: CHOLMOD
- * is driven through three structs that it declares in its header and that
- * change between releases (cholmod_common has some 300 fields, arrays of
- * per-method structs and, depending on how the library was built, GPU
- * fields; cholmod_factor and cholmod_dense are smaller but versioned too).
- * A Fortran mirror of their layout would have to be redone, field by field,
- * for every SuiteSparse a machine has, and a wrong offset fails silently.
- * Here the C compiler reads the installed cholmod.h, so the layout is
- * always the library's own; the Fortran side sees only the functions below.
- *
- * The 64-bit integer version (cholmod_l_*, SuiteSparse_long) is used, so
- * that the factor of a large plate may hold more than 2^31 entries.
- *
- * Handles: every factorization lives in an entry of a table, named by a
- * key (1, 2, 3, ..., never reused). The Fortran side keeps only the key, so
- * a stale key (a copy of a matrix whose factor was released) is refused
- * with IMPACT_CHOLMOD_NO_HANDLE instead of touching freed memory, and
- * releasing twice is harmless. Not thread-safe (nor is the program).
- *
- * Return codes (the same in src/linalg/cholmod_binding.f90):
- *   0  success
- *   1  no such handle (never made, or released)
- *   2  out of memory
- *   3  the problem is too large for CHOLMOD's integers
- *   4  invalid input (sizes, a matrix not yet given, not yet analysed)
- *   5  another CHOLMOD failure (impact_cholmod_status gives its status)
+ * Handles: each factorization is an entry of a table, named by a key (1, 2,
+ * 3, ..., never reused), so a stale key is refused (IMPACT_CHOLMOD_NO_HANDLE)
+ * instead of touching freed memory. Not thread-safe (nor is the program).
+ * Return codes (the same in cholmod_binding.f90): 0 success, 1 no such
+ * handle, 2 out of memory, 3 too large for CHOLMOD's integers, 4 invalid
+ * input, 5 another failure (impact_cholmod_status gives its status).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -180,13 +163,11 @@ int impact_cholmod_copy(long long key, long long *copy)
 
 /* Hand over the upper triangle of a symmetric n x n matrix in compressed
  * columns with 1-based indices: the rows of column j are rowind[colptr[j-1]
- * - 1 .. colptr[j] - 2], ascending, with the values val when with_values is
- * nonzero (else the pattern alone, for an analysis). Kept until the next
- * factorization. */
+ * - 1 .. colptr[j] - 2], ascending, with the values val. Kept until the
+ * next factorization. */
 int impact_cholmod_set_matrix(long long key, long long n, const long long *colptr,
-                              const int *rowind, const double *values, int with_values)
+                              const int *rowind, const double *val)
 {
-    const double *val = with_values ? values : NULL;
     entry_t *e = find(key);
     SuiteSparse_long *p, *i;
     long long j, k, nnz;
@@ -194,14 +175,13 @@ int impact_cholmod_set_matrix(long long key, long long n, const long long *colpt
     if (n < 1 || colptr[0] != 1 || colptr[n] < 1) return IMPACT_CHOLMOD_INVALID;
     nnz = colptr[n] - 1;
     cholmod_l_free_sparse(&e->A, &e->c);
-    e->A = cholmod_l_allocate_sparse((size_t) n, (size_t) n, (size_t) nnz, 1, 1, 1,
-                                     val == NULL ? CHOLMOD_PATTERN : CHOLMOD_REAL, &e->c);
+    e->A = cholmod_l_allocate_sparse((size_t) n, (size_t) n, (size_t) nnz, 1, 1, 1, CHOLMOD_REAL, &e->c);
     if (e->A == NULL) return code_of(&e->c);
     p = e->A->p;
     i = e->A->i;
     for (j = 0; j <= n; j++) p[j] = (SuiteSparse_long) (colptr[j] - 1);
     for (k = 0; k < nnz; k++) i[k] = (SuiteSparse_long) (rowind[k] - 1);
-    if (val != NULL) memcpy(e->A->x, val, (size_t) nnz * sizeof(double));
+    memcpy(e->A->x, val, (size_t) nnz * sizeof(double));
     return IMPACT_CHOLMOD_OK;
 }
 

@@ -51,23 +51,18 @@ contains
       integer, intent(in) :: elem_eq(:,:)  !< elem_eq(k, e): equation of freedom k of element e, 0 = constrained.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      character(len=msg_len) :: msg
       character(len=storage_len) :: name
       integer, allocatable :: first_row(:)
       integer :: e, k, eq, lo, kd, bad(2)
       call global_release(g)
       stat = 1
+      bad = findloc(elem_eq < 0 .or. elem_eq > neq, .true.)       ! 0 (constrained) or 1..neq
       if (neq < 1) then
-         write (msg, '(a,i0)') 'global_init: number of equations must be >= 1, got ', neq
-      else if (any(elem_eq < 0 .or. elem_eq > neq)) then       ! 0 (constrained) or 1..neq
-         bad = findloc(elem_eq < 0 .or. elem_eq > neq, .true.)
-         write (msg, '(a,i0,a,i0,a,i0,a,i0)') 'global_init: element ', bad(2), ' freedom ', bad(1), &
-            ' has equation ', elem_eq(bad(1), bad(2)), ' outside 0..', neq
-      else
-         stat = 0
-      end if
-      if (stat /= 0) then
-         errmsg = msg
+         errmsg = 'global_init: number of equations must be >= 1, got ' // int_str(neq)
+         return
+      else if (bad(1) > 0) then
+         errmsg = 'global_init: element ' // int_str(bad(2)) // ' freedom ' // int_str(bad(1)) // ' has equation ' &
+            // int_str(elem_eq(bad(1), bad(2))) // ' outside 0..' // int_str(neq)
          return
       end if
 
@@ -187,10 +182,11 @@ contains
       integer :: ierr
       if (present(stat)) stat = 0
       msg = ''
-      ierr = 0
       if (g%storage /= other%storage .or. len_trim(g%storage) == 0) then
          msg = "global_axpy_matrix: storages differ or are not initialised ('" // &
                trim(g%storage) // "', '" // trim(other%storage) // "')"
+      else if (g%band%factored .or. g%sky%factored .or. other%band%factored .or. other%sky%factored) then
+         msg = trim(g%storage) // '_axpy: a factored matrix cannot be added to or from'
       else
          select case (trim(g%storage))
          case ('band'); call band_axpy(g%band, alpha, other%band, ierr, msg)
@@ -242,7 +238,6 @@ contains
       integer :: ierr
       if (present(stat)) stat = 0
       msg = ''
-      ierr = 0
       if (.not. usable(g, 'global_matvec', ierr, msg)) then
          continue
       else if (is_factored(g)) then
@@ -273,6 +268,11 @@ contains
       integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
       bad_eq = 0
       if (.not. usable(g, 'global_factor', stat, errmsg)) return
+      if (g%band%factored .or. g%sky%factored) then     ! (sparse_factor says it itself)
+         stat = 1
+         errmsg = trim(g%storage) // '_factor: the matrix is already factored'
+         return
+      end if
       select case (g%storage)
       case ('band'); call band_factor(g%band, stat, errmsg, bad_eq)
       case ('skyline'); call skyline_factor(g%sky, stat, errmsg, bad_eq)
@@ -287,11 +287,20 @@ contains
       integer, intent(out) :: stat                  !< 0 on success, 1 on failure
       character(len=*), intent(inout) :: errmsg     !< reason for the failure (set only on failure)
       if (.not. usable(g, 'global_solve', stat, errmsg)) return
-      select case (g%storage)
-      case ('band'); call band_solve(g%band, b, stat, errmsg)
-      case ('skyline'); call skyline_solve(g%sky, b, stat, errmsg)
-      case default; call sparse_solve(g%sparse, b, stat, errmsg)
-      end select
+      if (.not. is_factored(g)) then
+         stat = 1
+         errmsg = trim(g%storage) // '_solve: the matrix is not factored (call ' // trim(g%storage) // '_factor first)'
+      else if (size(b) /= g%neq) then
+         stat = 1
+         errmsg = trim(g%storage) // '_solve: right-hand side has length ' // int_str(size(b)) // ' but n = ' &
+            // int_str(g%neq)
+      else if (g%storage == 'band') then
+         call band_solve(g%band, b, stat, errmsg)
+      else if (g%storage == 'skyline') then
+         call skyline_solve(g%sky, b)
+      else
+         call sparse_solve(g%sparse, b, stat, errmsg)
+      end if
    end subroutine global_solve
 
    !> True when g can be used: initialised and without a deferred error

@@ -117,13 +117,8 @@ contains
    !> Largest column height max_j (j - m_j): the half-bandwidth a band
    !> storage of the same matrix would need.
    pure integer function skyline_half_bandwidth(sky)
-      type(skyline_matrix_t), intent(in) :: sky  !< the matrix.
-      integer :: j
-      skyline_half_bandwidth = 0
-      do j = 1, sky%n
-         skyline_half_bandwidth = max(skyline_half_bandwidth, &
-                                      sky%maxa(j + 1) - sky%maxa(j) - 1)
-      end do
+      type(skyline_matrix_t), intent(in) :: sky  !< the matrix, initialised.
+      skyline_half_bandwidth = maxval(sky%maxa(2:) - sky%maxa(:sky%n)) - 1
    end function skyline_half_bandwidth
 
    !> True when A(i,j) is a valid index pair inside the stored profile.
@@ -180,8 +175,9 @@ contains
       end do
    end subroutine skyline_matvec
 
-   !> In-place L D L^T factorisation, column by column (COLSOL's algorithm).
-   !> On a failed pivot stat = 1, bad_eq its equation; the matrix is left unusable.
+   !> In-place L D L^T factorisation, column by column (COLSOL's algorithm), of
+   !> a matrix not yet factored (global_factor checks). On a failed pivot
+   !> stat = 1, bad_eq its equation; the matrix is left unusable.
    subroutine skyline_factor(sky, stat, errmsg, bad_eq)
       type(skyline_matrix_t), intent(inout) :: sky  !< the matrix, overwritten by L (off-diagonals) and D (diagonal).
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
@@ -191,17 +187,6 @@ contains
       integer :: i, j, r, mi, mj
       stat = 0
       bad_eq = 0
-      if (.not. allocated(sky%a)) then
-         stat = 1
-         errmsg = 'skyline_factor: the matrix was never initialised'
-         return
-      end if
-      if (sky%factored) then
-         stat = 1
-         errmsg = 'skyline_factor: the matrix is already factored'
-         return
-      end if
-
       ! Address of A(i,j) (and later of l_ij): maxa(j) + j - i.
       columns: do j = 1, sky%n
          mj = skyline_first_row(sky, j)
@@ -242,28 +227,12 @@ contains
       sky%factored = .true.
    end subroutine skyline_factor
 
-   !> Solve A x = b with the factors L and D (b overwritten by x).
-   subroutine skyline_solve(sky, b, stat, errmsg)
+   !> Solve A x = b with the factors L and D (b overwritten by x), sky
+   !> factored and b of its size (global_solve, the one caller, checks both).
+   subroutine skyline_solve(sky, b)
       type(skyline_matrix_t), intent(in) :: sky  !< the factored matrix.
       real(dp), intent(inout) :: b(:)  !< right-hand side on entry, solution on return, length n.
-      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
-      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      character(len=msg_len) :: msg
       integer :: i, j
-      stat = 0
-      if (.not. sky%factored) then
-         stat = 1
-         errmsg = 'skyline_solve: the matrix is not factored (call skyline_factor first)'
-         return
-      end if
-      if (size(b) /= sky%n) then
-         stat = 1
-         write (msg, '(a,i0,a,i0)') 'skyline_solve: right-hand side has length ', &
-            size(b), ' but n = ', sky%n
-         errmsg = msg
-         return
-      end if
-
       ! Forward reduction, L y = b:
       !    y_j = b_j - sum_{i=m_j}^{j-1} l_ij y_i      (a dot product with column j)
       forward: do j = 2, sky%n
@@ -285,35 +254,23 @@ contains
       end do back
    end subroutine skyline_solve
 
-   !> sky = sky + alpha*other for two unfactored matrices of one profile.
+   !> sky = sky + alpha*other for two unfactored matrices (global_axpy_matrix
+   !> checks) of one profile.
    subroutine skyline_axpy(sky, alpha, other, stat, errmsg)
       type(skyline_matrix_t), intent(inout) :: sky  !< the matrix added into.
       real(dp), intent(in) :: alpha  !< scalar multiplying other.
       type(skyline_matrix_t), intent(in) :: other  !< the matrix added, same profile as sky.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure (sky unchanged).
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      stat = 0
-      if (sky%factored .or. other%factored) then
-         stat = 1
-         errmsg = 'skyline_axpy: a factored matrix cannot be added to or from'
-         return
-      end if
-      if (.not. (allocated(sky%maxa) .and. allocated(other%maxa))) then
-         stat = 1
-         errmsg = 'skyline_axpy: a matrix was never initialised'
-         return
-      end if
-      if (sky%n /= other%n) then
-         stat = 1
+      stat = 1
+      if (sky%n /= other%n) then                    ! (both initialised: global_axpy_matrix checks)
          errmsg = 'skyline_axpy: the matrices differ in order'
-         return
-      end if
-      if (any(sky%maxa /= other%maxa)) then
-         stat = 1
+      else if (any(sky%maxa /= other%maxa)) then
          errmsg = 'skyline_axpy: the matrices differ in profile'
-         return
+      else
+         stat = 0
+         sky%a = sky%a + alpha * other%a
       end if
-      sky%a = sky%a + alpha * other%a
    end subroutine skyline_axpy
 
 end module skyline_matrix

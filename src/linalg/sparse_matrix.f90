@@ -324,7 +324,7 @@ contains
          return
       end if
       diag = a%val(a%colptr(2:) - 1)          ! the diagonal, last in each column
-      call chol_set_matrix(a%chol, a%colptr, a%rowind, stat, errmsg, a%val)
+      call chol_set_matrix(a%chol, a%colptr, a%rowind, a%val, stat, errmsg)
       if (stat /= 0) return
       if (.not. a%analysed) then
          call sparse_analyse(a, stat, errmsg)
@@ -395,35 +395,21 @@ contains
       end if
    end subroutine check_pivots
 
-   !> Solve A x = b with the factor; b is overwritten by x.
+   !> Solve A x = b with the factor, b of its size (global_solve, the one
+   !> caller, checks both); b is overwritten by x.
    subroutine sparse_solve(a, b, stat, errmsg)
       type(sparse_matrix_t), intent(in) :: a  !< the factored matrix.
       real(dp), intent(inout) :: b(:)  !< right-hand side on entry, solution on return, length n.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      character(len=msg_len) :: msg
-      stat = 0
-      if (.not. a%factored) then
-         stat = 1
-         errmsg = 'sparse_solve: the matrix is not factored (call sparse_factor first)'
-      else if (size(b) /= a%n) then
-         stat = 1
-         write (msg, '(a,i0,a,i0)') 'sparse_solve: right-hand side has length ', size(b), ' but n = ', a%n
-         errmsg = msg
-      else
-         call chol_solve(a%chol, b, stat, errmsg)
-      end if
+      call chol_solve(a%chol, b, stat, errmsg)
    end subroutine sparse_solve
 
    !> Largest distance of a stored entry from the diagonal, max (j - i).
    pure integer function sparse_half_bandwidth(a)
-      type(sparse_matrix_t), intent(in) :: a  !< the matrix.
+      type(sparse_matrix_t), intent(in) :: a  !< the matrix, initialised.
       integer :: j
-      sparse_half_bandwidth = 0
-      if (.not. allocated(a%colptr)) return
-      do j = 1, a%n
-         sparse_half_bandwidth = max(sparse_half_bandwidth, j - a%rowind(a%colptr(j)))
-      end do
+      sparse_half_bandwidth = maxval([(j - a%rowind(a%colptr(j)), j = 1, a%n)])
    end function sparse_half_bandwidth
 
    !> Number of stored entries of A (the upper triangle's pattern).

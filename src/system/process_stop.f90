@@ -40,8 +40,6 @@ module process_stop
    !> empty: C strings, null-terminated.
    integer, save :: nfiles = 0
    character(kind=c_char), save :: files(max_path + 1, max_files) = c_null_char
-   !> The set-up's last words, filled in by the handler.
-   character(kind=c_char), save :: words(len(words_before) + 3 + len(words_after)) = ' '
 
 contains
 
@@ -89,6 +87,7 @@ contains
       integer(c_int) :: fd, r
       integer(c_int64_t) :: bytes
       integer(c_long) :: written
+      character(kind=c_char) :: digits(2)
       integer :: k, n
       if (phase == after_step) then
          caught = signum
@@ -101,22 +100,11 @@ contains
          r = c_close(fd)
          if (bytes == 0) r = c_unlink(files(:, k))
       end do
-      n = 0
-      do k = 1, len(words_before)
-         n = n + 1
-         words(n) = words_before(k:k)
-      end do
-      if (signum >= 10) then
-         n = n + 1
-         words(n) = achar(48 + signum/10)
-      end if
-      n = n + 1
-      words(n) = achar(48 + mod(signum, 10))
-      do k = 1, len(words_after)
-         n = n + 1
-         words(n) = words_after(k:k)
-      end do
-      written = c_write(stderr_fd, words, int(n, c_size_t))
+      digits = [achar(48 + signum/10), achar(48 + mod(signum, 10))]
+      n = merge(2, 1, signum >= 10)                ! the signal's number has one or two digits
+      written = c_write(stderr_fd, words_before, len(words_before, c_size_t))
+      written = c_write(stderr_fd, digits(3 - n:), int(n, c_size_t))
+      written = c_write(stderr_fd, words_after, len(words_after, c_size_t))
       call c_exit(128 + signum)
    end subroutine on_signal
 
