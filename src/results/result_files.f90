@@ -1,11 +1,8 @@
-!> The result files of every analysis: the claim before any work (above
-!> claim_results), the column files and their headers, the history's
-!> columns (one table for <prefix>_history.dat and /history of <prefix>.h5)
-!> and the summary's items (one list for <prefix>_summary.dat and /summary).
-!> A column file: a title, the deck echo ('# ' lines), a line per column
-!> with its meaning and unit, the names on one '#' line, the rows; the
-!> summary: 'key = value' lines, the unit in the key (peak_force_N). Not
-!> from the paper. More: docs/OUTPUT.md.
+!> The result files of every analysis: the claim before any work, the column
+!> files (title, deck echo, a line per column, the names, the rows), the
+!> history's columns (for <prefix>_history.dat and /history of <prefix>.h5)
+!> and the summary's items ('key = value', the unit in the key; also /summary).
+!> Not from the paper. More: docs/OUTPUT.md.
 module result_files
    use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
@@ -39,9 +36,7 @@ module result_files
       logical :: strength = .false.    !< only with &strength (ply stresses), after the others
    end type column_t
 
-   !> The history's columns, in the order of the file: the first nhist in
-   !> every run, the last ones only when the deck gives &strength
-   !> (history_width).
+   !> The history's columns in the file's order: the last ones only with &strength.
    integer, parameter :: col_time = 1, col_force = 2, col_alpha = 3, col_w_plate = 4, col_w_impactor = 5, &
       col_v_impactor = 6, col_strain_y = 7, col_ke_impactor = 8, col_ke_plate = 9, col_strain_energy = 10, &
       col_contact_work = 11, col_contact_energy = 12, col_energy_error = 13, col_branch = 14, &
@@ -85,17 +80,14 @@ module result_files
       logical :: created = .false.                 !< the claim created it (empty)
    end type results_claim_t
 
-   !> What a file's temporary name adds to it: a file replaced in one step
-   !> is written under <file>.tmp, then renamed (the summary, the XDMF file).
+   !> A file replaced in one step is written under <file>.tmp, then renamed.
    character(len=*), parameter :: temporary = '.tmp'
 
-   !> Bytes reserved for the summary before a run (reserve_summary): it is
-   !> a few kilobytes.
+   !> Bytes reserved for the summary before a run (reserve_summary).
    integer, parameter :: summary_reserve = 65536
 
-   !> Bytes of a history row on disk (the widest, newline included): a power
-   !> of two, the header padded to a multiple of it, so that no row straddles
-   !> a 4 KiB page and a killed run's rows are all whole.
+   !> Bytes of a history row on disk, newline included: a power of two, the header
+   !> padded to a multiple of it, so that a killed run's rows are all whole.
    integer, parameter :: history_slot = 256
 
    !> Kinds of summary item.
@@ -128,15 +120,10 @@ contains
       end select
    end function result_suffixes
 
-   !> Nothing lost: before any work a run claims its files (result_suffixes):
-   !> their names fit the file system (NAME_MAX, PATH_MAX), the prefix's
-   !> directories are created, no file of the run exists unless &output
-   !> overwrite, and none, nor its temporary name <file>.tmp, is a symbolic
-   !> link or anything but a regular file (no write goes through a link);
-   !> then the first file is created exclusively (of two runs with one prefix
-   !> one wins) and locked until the run ends. Each file is checked again
-   !> when it is opened (open_columns) or written under its temporary name
-   !> and renamed (the summary). Messages name the deck, the prefix, the file.
+   !> Before any work a run claims its files (result_suffixes): their names
+   !> fit (NAME_MAX, PATH_MAX), the prefix's directories are made, no file
+   !> exists unless &output overwrite, none (nor <file>.tmp) is a link or not a
+   !> regular file; the first is created exclusively and locked until the end.
    subroutine claim_results(deck, suffixes, claim, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< effective deck (prefix, overwrite)
       character(len=*), intent(in) :: suffixes(:)   !< the run's file names after the prefix
@@ -208,9 +195,8 @@ contains
       why = name_problem(prefix // trim(suffixes(longest)) // temporary, name_max(prefix), path_max)
    end function names_problem
 
-   !> Why the run cannot write its files ('' when it can): one of them or its
-   !> temporary name is a link, a directory or another kind of file, or one
-   !> exists and overwrite is false.
+   !> Why the run cannot write its files ('' when it can): a link, not a regular
+   !> file, or a file that exists without overwrite.
    function files_problem(prefix, suffixes, overwrite) result(why)
       character(len=*), intent(in) :: prefix        !< the prefix
       character(len=*), intent(in) :: suffixes(:)   !< the file names after it
@@ -239,8 +225,7 @@ contains
       end do files
    end function files_problem
 
-   !> ' (the file system is read-only)' when the prefix is on one, '' else:
-   !> for the message of a file that could not be made.
+   !> ' (the file system is read-only)' when the prefix is on one, '' else.
    function read_only_note(prefix) result(note)
       character(len=*), intent(in) :: prefix        !< the prefix
       character(len=:), allocatable :: note
@@ -360,8 +345,7 @@ contains
       write (unit, '(a)') ''
    end subroutine write_column_block
 
-   !> The history's columns of a run: nhist, or nhist_strength when the
-   !> deck gives &strength.
+   !> The history's columns of a run: nhist, or nhist_strength with &strength.
    pure integer function history_width(with_strength)
       logical, intent(in) :: with_strength   !< the run computes ply stresses
       history_width = merge(nhist_strength, nhist, with_strength)
@@ -436,8 +420,7 @@ contains
       call append(items, key, key, '-', value, 0.0_dp, item_text)
    end subroutine summary_text
 
-   !> Appends an item, component by component (a structure constructor with
-   !> deferred-length components loses them in gfortran 12).
+   !> Appends an item, component by component (gfortran 12's constructor loses them).
    subroutine append(items, key, name, unit, text, si, kind)
       type(summary_item_t), allocatable, intent(inout) :: items(:)
       character(len=*), intent(in) :: key, name, unit, text
@@ -458,10 +441,8 @@ contains
       call move_alloc(grown, items)
    end subroutine append
 
-   !> Reserves the summary's space before the run fills the disk:
-   !> <prefix>_summary.dat.tmp of summary_reserve bytes, which
-   !> write_summary_file writes over (no new blocks) and renames into place,
-   !> so that a run stopped by a full disk still says how far it got.
+   !> Reserves <prefix>_summary.dat.tmp (summary_reserve bytes), which
+   !> write_summary_file writes over: a run stopped by a full disk still reports.
    subroutine reserve_summary(deck, stat, errmsg)
       type(deck_t), intent(in) :: deck                  !< effective deck (prefix)
       integer, intent(out) :: stat                      !< 0 on success
@@ -489,10 +470,8 @@ contains
       if (stat /= 0) errmsg = short_path(path) // ': ' // trim(iomsg)
    end subroutine reserve_summary
 
-   !> Writes <prefix>_summary.dat: title, deck echo, 'key = value' lines.
-   !> It is written whole to <prefix>_summary.dat.tmp (the space
-   !> reserve_summary reserved, or a file created exclusively) and renamed
-   !> into place, so the file is either the previous one or complete.
+   !> Writes <prefix>_summary.dat (title, deck echo, 'key = value' lines) whole
+   !> to <prefix>_summary.dat.tmp and renames it: the previous file or complete.
    subroutine write_summary_file(deck, items, stat, errmsg)
       type(deck_t), intent(in) :: deck                  !< effective deck
       type(summary_item_t), intent(in) :: items(:)      !< the summary
@@ -529,6 +508,5 @@ contains
       if (stat == 0) call rename_file(path // temporary, path, stat, iomsg)
       if (stat /= 0) errmsg = short_path(path) // ': ' // trim(iomsg)
    end subroutine write_summary_file
-
 
 end module result_files
