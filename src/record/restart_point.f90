@@ -1,10 +1,8 @@
-!> Restart points: `impact --restart deck.nml` continues the run recorded
-!> at the deck's prefix from its last restart point, appending to the same
-!> files, and ends as the run would have ended had it never stopped (the
-!> same history rows, bit for bit, the same summary); a completed run's
-!> restart writes nothing. What a restart point holds, when it is written
-!> and how it is made safe: above restart_save. Not from the paper. More:
-!> docs/ROBUSTNESS.md.
+!> Restart points: `impact --restart deck.nml` continues the run at the
+!> deck's prefix from its last restart point, appending to its files, and
+!> ends as the run would have ended had it never stopped (the same history
+!> rows, bit for bit). What a restart point holds: above restart_save. Not
+!> from the paper. More: docs/ROBUSTNESS.md.
 module restart_point
    use, intrinsic :: iso_fortran_env, only: int64, output_unit
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char
@@ -49,9 +47,8 @@ contains
       path = deck%prefix // '.restart'
    end function restart_file
 
-   !> Claims the run's result files before any work (claim_results): a
-   !> restart continues the run's own files (or a claim a killed set-up left);
-   !> a run that starts afresh discards an earlier run's restart point.
+   !> Claims the run's result files (claim_results): a restart continues its own
+   !> files; a run that starts afresh discards an earlier restart point.
    subroutine claim_run_files(deck, restart_asked, restarting, claim, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       logical, intent(in) :: restart_asked          !< --restart was given
@@ -131,8 +128,7 @@ contains
       if (stat /= 0) errmsg = path // ': cannot write the restart point'
    end subroutine restart_save
 
-   !> A restart's first look at the run's restart point: there is one, of
-   !> this deck and layout, and its step (at nstep: the run is complete).
+   !> A restart's first look: there is a restart point, of this deck and layout, and its step.
    subroutine restart_check(deck, nstep, found, step, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       integer, intent(in) :: nstep                  !< the run's last step (t_end/dt)
@@ -166,8 +162,7 @@ contains
    end subroutine restart_check
 
    !> Continues the run from its restart point: the state, the solver, the
-   !> record and the files as they were there (above restart_save); rec%steps
-   !> is the last step made, rec%cpu_before the cpu time spent before.
+   !> record and the files as they were there (above restart_save).
    subroutine restart_resume(deck, model, nm, solver, st, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(model_t), intent(in) :: model            !< the model
@@ -235,8 +230,6 @@ contains
       if (stat == 0) write (output_unit, '(a)') 'restart: the run continues after step ' // int_str(step) // ' (' &
          // path // ')'
    end subroutine restart_resume
-
-   ! ============================================================== parts
 
    !> Opens a restart point for reading; checks its checksum, tag and layout.
    subroutine open_point(path, u, stat, errmsg)
@@ -329,8 +322,7 @@ contains
       call put_array(u, solver%resp_eq(:solver%nresp), stat)
    end subroutine put_solver
 
-   !> Reads the solver's state; `columns` are the equations of its response
-   !> columns (response_columns).
+   !> Reads the solver's state and the equations of its response columns.
    subroutine take_solver(u, solver, columns, stat)
       integer, intent(in) :: u                      !< the restart file, at the solver's part
       type(solver_t), intent(inout) :: solver       !< the plate solver, factored
@@ -352,9 +344,8 @@ contains
       if (len(note) > 0) solver%mixing_note = note
    end subroutine take_solver
 
-   !> The solver's response columns on the equations `columns`, computed
-   !> again in their order (the same back substitutions on the same factors:
-   !> the same values); its count of back substitutions kept.
+   !> The solver's response columns on the equations `columns`, computed again
+   !> in their order (the same values); its count of back substitutions kept.
    subroutine response_columns(solver, columns, stat, errmsg)
       type(solver_t), intent(inout) :: solver       !< the plate solver, factored
       integer, intent(in) :: columns(:)             !< the equations
@@ -370,9 +361,8 @@ contains
       solver%response_solves = counted
    end subroutine response_columns
 
-   !> Writes what the record carries from step to step (a restart point,
-   !> src/record/restart_point.f90): energies, previous step, running figures,
-   !> warnings, the history's length, and with &strength the damage maps.
+   !> What the record carries from step to step: energies, previous step,
+   !> running figures, warnings, the history's length, &strength's damage maps.
    subroutine put_record(u, rec, stat)
       type(record_t), intent(in) :: rec             !< the record
       integer, intent(in) :: u                      !< the restart file, an open stream
@@ -408,8 +398,7 @@ contains
       call put_array(u, reshape(rec%damage%delam%map, [size(rec%damage%delam%map)]), stat)
    end subroutine put_record
 
-   !> A restart: the record of the deck with the figures put_record
-   !> wrote; the caller opens its files again.
+   !> The record of the deck with the figures put_record wrote (its files closed).
    subroutine take_record(u, deck, model, nm, rec, stat)
       type(record_t), intent(out) :: rec            !< the record
       type(deck_t), intent(in) :: deck              !< the effective deck
@@ -478,8 +467,7 @@ contains
       if (stat == 0) rec%damage%delam%map = reshape(r, shape(rec%damage%delam%map))
    end subroutine take_record
 
-   !> What <prefix>.h5 holds at the restart point: its rows and snapshots
-   !> and its peak.
+   !> What <prefix>.h5 holds at the restart point: its rows, snapshots and peak.
    subroutine put_results(u, rec, stat)
       integer, intent(in) :: u                      !< the restart file
       type(record_t), intent(in) :: rec             !< the run's record
@@ -514,8 +502,7 @@ contains
       pt = results_point_t(i(1), i(2), i(3), x(1), x(2), reshape(f, [ndof_node, nnode]))
    end subroutine take_results
 
-   !> The history file cut back to its length at the restart point and
-   !> opened for appending (src/record/run_recorder.f90's rows).
+   !> The history file cut back to its length at the restart point, opened for appending.
    subroutine reopen_history(deck, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(record_t), intent(inout) :: rec          !< the record: its history file
@@ -542,8 +529,6 @@ contains
       if (stat /= 0) errmsg = rec%hist_path // ': cannot open it to read its length'
    end subroutine reopen_history
 
-   ! ============================================================== the disk
-
    !> The directory of `path` ('.' or '/' when it has none).
    pure function directory_of(path) result(dir)
       character(len=*), intent(in) :: path          !< a file
@@ -552,8 +537,7 @@ contains
       if (len(dir) == 0) dir = merge('/', '.', path(1:min(1, len(path))) == '/')
    end function directory_of
 
-   !> fsync(2) of the file or directory `path`: what the kernel holds of it
-   !> is on the disk on return.
+   !> fsync(2) of the file or directory `path`.
    subroutine force_to_disk(path, stat)
       character(len=*), intent(in) :: path          !< the file or directory
       integer, intent(out) :: stat                  !< 0 on success

@@ -1,11 +1,8 @@
 !> The pieces of a restart file (src/record/restart_point.f90): a stream of
 !> unformatted records, each part behind an eight-character tag the reader
-!> checks (a file of another layout is refused, not misread); every routine
-!> keeps the first failure in `stat`. Texts, reals, integers, logicals, an
-!> impactor (eq. 16, 21), a contact load pattern with its cached
-!> polynomials (the same bits after a restart), and the seal: the last 8
-!> bytes, zlib's CRC-32 of all before them. Not from the paper. More:
-!> docs/ROBUSTNESS.md.
+!> checks; every routine keeps the first failure in `stat`. Values, vectors,
+!> an impactor (eq. 16, 21), a contact load pattern, and the seal: the last
+!> 8 bytes, zlib's CRC-32 of all before them. More: docs/ROBUSTNESS.md.
 module restart_io
    use, intrinsic :: iso_fortran_env, only: int8, int64
    use kinds, only: dp
@@ -186,8 +183,7 @@ contains
       if (stat == 0) imp = impactor_t(mass=x(1), w=x(2), v=x(3), f=x(4))
    end subroutine take_impactor
 
-   !> A contact load pattern, whole: radius, share, equations and
-   !> coefficients, the polynomials' interval, key and coefficients.
+   !> A contact load pattern, whole, with its cached polynomials (the same bits after a restart).
    subroutine put_pattern(u, p, stat)
       integer, intent(in) :: u                      !< the open stream
       type(load_pattern_t), intent(in) :: p         !< the pattern
@@ -235,8 +231,7 @@ contains
       p%poly(:, :) = reshape(x, [5, p%n])
    end subroutine take_pattern
 
-   !> Ends a file written on `u` (opened with action = 'readwrite'): the
-   !> CRC-32 of all it holds, appended.
+   !> Appends the CRC-32 of all `u` holds (opened with action = 'readwrite').
    subroutine put_seal(u, stat)
       integer, intent(in) :: u                      !< the open stream, at its end
       integer, intent(inout) :: stat                !< 0, or the first failure
@@ -250,8 +245,7 @@ contains
       if (stat == 0) write (u, pos=next, iostat=stat) crc32(bytes)
    end subroutine put_seal
 
-   !> The file open on `u` ends with the CRC-32 of all before it
-   !> (put_seal); `u` is at its start again on return.
+   !> The file on `u` ends with the CRC-32 of all before it; `u` back at its start.
    logical function seal_holds(u) result(holds)
       integer, intent(in) :: u                      !< the open stream
       integer(int8), allocatable :: bytes(:)

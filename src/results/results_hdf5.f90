@@ -1,10 +1,8 @@
 !> The full results of a run in one HDF5 file, <prefix>.h5 (&output hdf5):
 !> the deck, the mesh, the history's columns, the nodal fields every
-!> fields_every steps, the state at the largest force (/peak), the summary,
-!> with &strength /strength (damage_record.f90); SI units, every dataset
-!> checksummed. The layout: docs/OUTPUT.md. A file that opens at every
-!> instant: above results_open; output in blocks once a second: above
-!> results_tick. Called by src/record/run_recorder.f90. Not from the paper.
+!> fields_every steps, the state at the largest force (/peak), the summary;
+!> SI units, every dataset checksummed, written in blocks once a second.
+!> The layout: docs/OUTPUT.md. Not from the paper.
 module results_hdf5
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char
@@ -33,13 +31,11 @@ module results_hdf5
    !> Units of /fields' time, step, force and nodal fields u, v, w, psi_x, psi_y.
    character(len=units_len), parameter :: snap_units(3 + ndof_node) = [character(len=units_len) :: &
       's', '-', 'N', 'm', 'm', 'm', 'rad', 'rad']
-   !> Values per chunk of a series (4 KiB); the fields' chunks hold as many
-   !> whole snapshots as fit (one at least).
+   !> Values per chunk of a series (4 KiB; the fields': whole snapshots, one at least).
    integer, parameter :: hist_chunk = 512
    !> Wall time between two flushes (s): a killed run loses at most this.
    real(dp), parameter :: flush_seconds = 1.0_dp
-   !> Rows that may wait before a flush (65536 rows of 18 numbers: 9 MB), and
-   !> the memory the waiting snapshots may take (min_snapshots at least).
+   !> Rows that may wait before a flush, and the memory the waiting snapshots may take.
    integer, parameter :: flush_rows = 65536, min_snapshots = 16
    integer(int64), parameter :: buffer_bytes = 8*1024*1024
    !> An open results file and the ids of its growing datasets.
@@ -151,9 +147,8 @@ contains
       rf%active = .true.
    end subroutine results_open
 
-   !> A restart (src/record/restart_point.f90): <prefix>.h5 cut back to its
-   !> restart point pt (rows, snapshots, peak); a stopped run's /summary goes
-   !> back to 'running', its /strength goes; the XDMF views are made anew.
+   !> A restart: <prefix>.h5 cut back to its restart point pt; /summary back to
+   !> 'running', /strength gone, the XDMF views made anew.
    subroutine results_reopen(deck, msh, pt, rf, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(mesh_t), intent(in) :: msh               !< the mesh with its equation numbers
@@ -227,9 +222,8 @@ contains
       rf%rows(:, rf%nrow) = row
    end subroutine results_append_history
 
-   !> The nodal fields of the state at the end of a step: a snapshot for
-   !> /fields when `snapshot`, and /peak's state when the force is the largest
-   !> so far; both kept for the next flush.
+   !> The nodal fields at the end of a step, kept for the next flush: a snapshot
+   !> when `snapshot`, /peak's state when the force is the largest so far.
    subroutine results_state(rf, step, time, force, d, snapshot, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file
       integer, intent(in) :: step                   !< time step of the state
@@ -408,8 +402,7 @@ contains
       rf%broken = rf%active
    end subroutine results_leave
 
-   !> The end of a run: what waits is written, and the file opened as usual
-   !> (not SWMR) for /summary and /strength until results_finish.
+   !> The end of a run: what waits written, the file opened (not SWMR) until results_finish.
    subroutine results_closing(rf)
       type(results_file_t), intent(inout) :: rf     !< the results file
       character(len=msg_len) :: why
@@ -421,8 +414,7 @@ contains
       if (rf%broken) rf%active = .false.            ! (nothing more is written into it)
    end subroutine results_closing
 
-   !> Writes /summary (the items of <prefix>_summary.dat, SI, the status),
-   !> closes the file and writes the XDMF's last XML (stat 1 after a failure).
+   !> Writes /summary (SI), closes the file and writes the XDMF's last XML.
    subroutine results_finish(rf, status, items, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file; inactive on return
       character(len=*), intent(in) :: status        !< 'completed', 'failed at step N', ...
@@ -554,8 +546,7 @@ contains
       if (stat == 0) call h5io_set_attr(fid, obj, name, trim(value), stat, why)
    end subroutine attr_text
 
-   !> Attribute `name` of obj, real(dp) or integer, and its unit in
-   !> `<name>_units`; nothing after a failure.
+   !> Attribute `name` of obj, real(dp) or integer, and `<name>_units`; nothing after a failure.
    subroutine attr_unit(fid, obj, name, value, units, stat, why)
       integer(hid_t), intent(in) :: fid             !< the open results file
       character(len=*), intent(in) :: obj, name     !< the object, the attribute
