@@ -334,8 +334,7 @@ contains
       end select
    end subroutine write_2d
 
-   !> Writes the dataset `name` of shape dims from the values x (real(dp) or
-   !> integer, array element order), one checksummed chunk.
+   !> Writes the dataset `name` of shape dims from x (real(dp) or integer), one chunk.
    subroutine make_dataset(loc, name, dims, x, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name

@@ -224,10 +224,8 @@ contains
       call h5sclose_f(fspace, err)
    end subroutine grow_and_write
 
-   !> Creates `name`, a virtual dataset (VDS) of nrow reals showing column
-   !> `column` (from 1) of the rank-2 series `source` of the file
-   !> `source_file` ('.': the same; a bare name: the file beside): a view, no
-   !> copy, read as a plain 1-D dataset.
+   !> Creates `name`, a virtual dataset (VDS) of nrow reals showing column `column`
+   !> of the rank-2 series `source` of `source_file` ('.': the same): a view, no copy.
    subroutine h5io_view_column(loc, name, source_file, source, nrow, column, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name, source_file, source

@@ -107,8 +107,7 @@ contains
 
    ! ============================================================ claiming
 
-   !> The result files of an analysis (&analysis kind), after the prefix;
-   !> the first is the one a run claims and locks.
+   !> The result files of an analysis after the prefix; a run claims and locks the first.
    pure function result_suffixes(analysis_kind) result(list)
       character(len=*), intent(in) :: analysis_kind   !< 'impact', 'static', 'modes' or 'pressure'
       character(len=24), allocatable :: list(:)
@@ -261,8 +260,7 @@ contains
       errmsg = text
    end subroutine keep_failure
 
-   !> Opens <prefix><suffix> (claimed before) and writes its header: title,
-   !> deck echo, the columns with their meanings, the names.
+   !> Opens <prefix><suffix> (claimed before) and writes its header (write_header).
    subroutine open_columns(deck, suffix, title, names, texts, unit, stat, errmsg)
       type(deck_t), intent(in) :: deck            !< effective deck (echoed; prefix)
       character(len=*), intent(in) :: suffix      !< file name after the prefix, e.g. '_static.dat'
@@ -392,8 +390,7 @@ contains
 
    ! ============================================================= summary
 
-   !> Appends a real item: the file's key (with its unit), the SI name and
-   !> unit, the SI value and the factor to the file's unit.
+   !> Appends a real item: the file's key, the SI name, unit and value, the file's scale.
    subroutine summary_real(items, key, name, unit, si, scale)
       type(summary_item_t), allocatable, intent(inout) :: items(:)
       character(len=*), intent(in) :: key, name, unit
