@@ -1,11 +1,7 @@
 !> The run's progress on standard error: the step, the simulated time, the
-!> percentage and an estimate of the time left.
-!> On a terminal (isatty(2)) one line is rewritten in place ('\r'), at most
-!> `terminal_rate` times a second, and cleared when the run ends; otherwise
-!> (a batch log, a pipe) a plain line every `log_interval` seconds of wall
-!> time. The estimate is the wall time per step times the steps left, timed
-!> from the end of the first step (which can cost far more) and given only
-!> once `timed_steps` steps are timed. Not from the paper. More: README.md.
+!> percentage and the time left (wall time per step, timed from the end of
+!> the first, times the steps left). On a terminal one line rewritten in
+!> place; otherwise a plain line now and then. Not from the paper. More: README.md.
 module progress_line
    use, intrinsic :: iso_fortran_env, only: error_unit, int64
    use kinds, only: dp
@@ -82,8 +78,7 @@ contains
       prog%shown = .false.
    end subroutine progress_end
 
-   !> Whether an update is due at `elapsed` seconds, the last one made at
-   !> `last` (0: none yet, the first one after one interval).
+   !> Whether an update is due at `elapsed` seconds, the last one at `last` (0: none).
    pure logical function progress_due(last, elapsed, interval) result(due)
       real(dp), intent(in) :: last       !< wall seconds at the last update
       real(dp), intent(in) :: elapsed    !< wall seconds now
@@ -91,8 +86,7 @@ contains
       due = elapsed - last >= interval
    end function progress_due
 
-   !> The steps are timed from the end of the first one recorded (`step` at
-   !> `elapsed` wall seconds): that one may cost far more than the rest.
+   !> The steps are timed from the end of the first (it may cost far more).
    pure subroutine progress_timed(prog, step, elapsed)
       type(progress_t), intent(inout) :: prog   !< the progress
       integer, intent(in) :: step               !< the step just recorded
@@ -102,8 +96,7 @@ contains
       prog%elapsed0 = elapsed
    end subroutine progress_timed
 
-   !> The wall time left (s) after `step`, `elapsed` wall seconds since the
-   !> clock started; -1 until `timed_steps` steps are timed (progress_timed).
+   !> The wall time left (s) after `step`; -1 until `timed_steps` steps are timed.
    pure real(dp) function progress_left(prog, step, elapsed) result(left)
       type(progress_t), intent(in) :: prog   !< the progress
       integer, intent(in) :: step            !< the step just recorded
@@ -138,8 +131,7 @@ contains
       end if
    end function duration_text
 
-   !> The progress line: 'impact: step 480/1200 (t = 1.200 ms of 3.000 ms), 40 %, 12 s left'
-   !> (no time left until it is estimated).
+   !> The progress line: 'impact: step 480/1200 (t = 1.200 ms of 3.000 ms), 40 %, 12 s left'.
    function progress_text(prog, step, t, elapsed) result(text)
       type(progress_t), intent(in) :: prog   !< the progress
       integer, intent(in) :: step            !< the step

@@ -1,10 +1,8 @@
-!> Restart points: `impact --restart deck.nml` continues the run recorded
-!> at the deck's prefix from its last restart point, appending to the same
-!> files, and ends as the run would have ended had it never stopped (the
-!> same history rows, bit for bit, the same summary); a completed run's
-!> restart writes nothing. What a restart point holds, when it is written
-!> and how it is made safe: above restart_save. Not from the paper. More:
-!> docs/ROBUSTNESS.md.
+!> Restart points: `impact --restart deck.nml` continues the run at the
+!> deck's prefix from its last restart point, appending to its files, and
+!> ends as the run would have ended had it never stopped (the same history
+!> rows, bit for bit). What a restart point holds: above restart_save. Not
+!> from the paper. More: docs/ROBUSTNESS.md.
 module restart_point
    use, intrinsic :: iso_fortran_env, only: int64, output_unit
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char
@@ -12,7 +10,7 @@ module restart_point
    use number_text, only: int_str, real_str
    use deck_schema, only: deck_t, deck_vars, var_key
    use deck_echo, only: deck_value_text
-   use c_library, only: c_open, c_close, c_fsync, c_unlink
+   use c_library, only: c_open, c_close, c_fsync
    use file_system, only: remove_file, rename_file, truncate_file, file_size, open_probe, parent_directory
    use mesh, only: ndof_node
    use plate_model, only: model_t
@@ -27,9 +25,8 @@ module restart_point
    use run_recorder, only: record_t, record_settings, nwarn
    use progress_line, only: progress_start
    use step_peak, only: peak_state, peak_restore, peak_state_size
-   use restart_io, only: put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, put_flag, &
-      take_flag, put_reals, take_reals, put_ints, take_ints, put_impactor, take_impactor, put_pattern, take_pattern, &
-      put_seal, seal_holds
+   use restart_io, only: put_tag, take_tag, put_text, take_text, put_value, take_value, put_array, take_reals, &
+      take_ints, put_impactor, take_impactor, put_pattern, take_pattern, put_seal, seal_holds
    implicit none
    private
    public :: restart_save, restart_check, restart_resume, claim_run_files
@@ -50,9 +47,8 @@ contains
       path = deck%prefix // '.restart'
    end function restart_file
 
-   !> Claims the run's result files before any work (claim_results): a
-   !> restart continues the run's own files (or a claim a killed set-up left);
-   !> a run that starts afresh discards an earlier run's restart point.
+   !> Claims the run's result files (claim_results): a restart continues its own
+   !> files; a run that starts afresh discards an earlier restart point.
    subroutine claim_run_files(deck, restart_asked, restarting, claim, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       logical, intent(in) :: restart_asked          !< --restart was given
@@ -76,26 +72,17 @@ contains
    !> Removes an earlier run's restart point, which the files no longer match.
    subroutine restart_discard(deck)
       type(deck_t), intent(in) :: deck              !< the effective deck
-      integer(c_int) :: r
-      r = c_unlink(restart_file(deck) // c_null_char)
-      r = c_unlink(restart_file(deck) // '.tmp' // c_null_char)
+      integer :: ios
+      call remove_file(restart_file(deck), ios)
+      call remove_file(restart_file(deck) // '.tmp', ios)
    end subroutine restart_discard
 
-   !> <prefix>.restart is written when the files are flushed (once a second,
-   !> results_tick), at step 0 and at the end of a run that completed or was
-   !> stopped by a signal. It holds what the time loop carries from step to
-   !> step: the deck (every variable as text, to refuse another deck: only
-   !> &analysis t_end may change), the state (step, cpu time, {D}, {V}, {A},
-   !> impactor, contact history and pattern), the solver (its counters, the
-   !> contraction estimates of scheme 'fast', the equations of its response
-   !> columns, computed again: the same bits), the record (put_record) and
-   !> what <prefix>.h5 holds. It is written whole to <prefix>.restart.tmp
-   !> (created exclusively), forced to the disk and renamed over the old one,
-   !> then the directory is forced: the file is the old restart point or the
-   !> new one. A stream of tagged parts in the machine's layout
-   !> (src/results/restart_io.f90), sealed by its CRC-32: a bit changed
-   !> anywhere refuses it whole. A restart cuts the history and <prefix>.h5
-   !> back to the restart point and makes the XDMF views anew.
+   !> <prefix>.restart, written when the files are flushed (results_tick), at
+   !> step 0 and at the end: what the time loop carries from step to step
+   !> (the deck as text: only &analysis t_end may change; the state, the
+   !> solver, the record, what <prefix>.h5 holds), in tagged parts sealed by
+   !> their CRC-32 (restart_io). Written whole to <prefix>.restart.tmp, forced
+   !> to the disk and renamed over the old one: the old point or the new one.
    subroutine restart_save(deck, cpu_s, st, solver, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       real(dp), intent(in) :: cpu_s                 !< cpu time of the run so far (s)
@@ -116,17 +103,17 @@ contains
          return
       end if
       call put_tag(u, 'impactRS', stat)
-      call put_int(u, layout, stat)
+      call put_value(u, layout, stat)
       call put_deck(u, deck, stat)
       call put_tag(u, 'state', stat)
-      call put_int(u, rec%steps, stat)
-      call put_real(u, cpu_s, stat)
-      call put_reals(u, st%plate%d, stat)
-      call put_reals(u, st%plate%v, stat)
-      call put_reals(u, st%plate%a, stat)
+      call put_value(u, rec%steps, stat)
+      call put_value(u, cpu_s, stat)
+      call put_array(u, st%plate%d, stat)
+      call put_array(u, st%plate%v, stat)
+      call put_array(u, st%plate%a, stat)
       call put_impactor(u, st%imp, stat)
-      call put_reals(u, [st%hist%f_m, st%hist%alpha_m, st%hist%alpha_0], stat)
-      call put_flag(u, st%hist%separated, stat)
+      call put_array(u, [st%hist%f_m, st%hist%alpha_m, st%hist%alpha_0], stat)
+      call put_value(u, st%hist%separated, stat)
       call put_pattern(u, st%cit%pattern, stat)
       call put_solver(u, solver, stat)
       call put_record(u, rec, stat)
@@ -141,8 +128,7 @@ contains
       if (stat /= 0) errmsg = path // ': cannot write the restart point'
    end subroutine restart_save
 
-   !> A restart's first look at the run's restart point: there is one, of
-   !> this deck and layout, and its step (at nstep: the run is complete).
+   !> A restart's first look: there is a restart point, of this deck and layout, and its step.
    subroutine restart_check(deck, nstep, found, step, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       integer, intent(in) :: nstep                  !< the run's last step (t_end/dt)
@@ -161,7 +147,7 @@ contains
       if (stat /= 0) return
       call compare_deck(u, deck, changed, stat)
       call take_tag(u, 'state', stat)
-      call take_int(u, step, stat)
+      call take_value(u, step, stat)
       close (u)
       if (stat /= 0) then
          errmsg = path // ': not a restart point of this build of impact (or damaged)'
@@ -176,8 +162,7 @@ contains
    end subroutine restart_check
 
    !> Continues the run from its restart point: the state, the solver, the
-   !> record and the files as they were there (above restart_save); rec%steps
-   !> is the last step made, rec%cpu_before the cpu time spent before.
+   !> record and the files as they were there (above restart_save).
    subroutine restart_resume(deck, model, nm, solver, st, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(model_t), intent(in) :: model            !< the model
@@ -205,15 +190,15 @@ contains
       if (stat /= 0) return
       call compare_deck(u, deck, changed, stat)
       call take_tag(u, 'state', stat)
-      call take_int(u, step, stat)
-      call take_real(u, cpu_s, stat)
+      call take_value(u, step, stat)
+      call take_value(u, cpu_s, stat)
       call take_reals(u, st%plate%d, stat, model%msh%neq)
       call take_reals(u, st%plate%v, stat, model%msh%neq)
       call take_reals(u, st%plate%a, stat, model%msh%neq)
       call take_impactor(u, st%imp, stat)
       call take_reals(u, x, stat, 3)
       if (stat == 0) st%hist = contact_history_t(f_m=x(1), alpha_m=x(2), alpha_0=x(3))
-      call take_flag(u, st%hist%separated, stat)
+      call take_value(u, st%hist%separated, stat)
       call take_pattern(u, st%cit%pattern, stat)
       call take_solver(u, solver, columns, stat)
       call take_record(u, deck, model, nm, rec, stat)
@@ -222,13 +207,8 @@ contains
       call take_results(u, model%msh%nnode, h5, pt, stat)
       call take_tag(u, 'end', stat)
       close (u)
-      if (stat /= 0) then
+      if (stat /= 0 .or. step /= rec%steps) then
          stat = 1
-         errmsg = path // ': not a restart point of this run (or damaged)'
-         return
-      end if
-      if (stat == 0 .and. step /= rec%steps) stat = 1
-      if (stat /= 0) then
          errmsg = path // ': not a restart point of this run (or damaged)'
          return
       end if
@@ -250,8 +230,6 @@ contains
       if (stat == 0) write (output_unit, '(a)') 'restart: the run continues after step ' // int_str(step) // ' (' &
          // path // ')'
    end subroutine restart_resume
-
-   ! ============================================================== parts
 
    !> Opens a restart point for reading; checks its checksum, tag and layout.
    subroutine open_point(path, u, stat, errmsg)
@@ -275,7 +253,7 @@ contains
       end if
       version = -1
       call take_tag(u, 'impactRS', stat)
-      call take_int(u, version, stat)
+      call take_value(u, version, stat)
       if (stat == 0 .and. version /= layout) stat = 1
       if (stat /= 0) then
          close (u)
@@ -290,7 +268,7 @@ contains
       integer, intent(inout) :: stat                !< 0, or the first failure
       integer :: iv
       call put_tag(u, 'deck', stat)
-      call put_int(u, size(deck_vars), stat)
+      call put_value(u, size(deck_vars), stat)
       do iv = 1, size(deck_vars)
          call put_text(u, var_key(iv), stat)
          call put_text(u, deck_value_text(deck, iv), stat)
@@ -309,7 +287,7 @@ contains
       now = ''            ! (else gfortran 12 at -O2 takes its length for unset in the loop)
       n = -1
       call take_tag(u, 'deck', stat)
-      call take_int(u, n, stat)
+      call take_value(u, n, stat)
       if (stat == 0 .and. n /= size(deck_vars)) stat = 1
       variables: do k = 1, max(n, 0)
          call take_text(u, key, stat)
@@ -333,19 +311,18 @@ contains
       type(solver_t), intent(in) :: solver          !< the plate solver
       integer, intent(inout) :: stat                !< 0, or the first failure
       call put_tag(u, 'solver', stat)
-      call put_reals(u, solver%contraction, stat)
-      call put_ints(u, [solver%since_measured, solver%solves, solver%response_solves, solver%factorizations, &
+      call put_array(u, solver%contraction, stat)
+      call put_array(u, [solver%since_measured, solver%solves, solver%response_solves, solver%factorizations, &
          solver%mixed_solves], stat)
       if (allocated(solver%mixing_note)) then
          call put_text(u, solver%mixing_note, stat)
       else
          call put_text(u, '', stat)
       end if
-      call put_ints(u, solver%resp_eq(:solver%nresp), stat)
+      call put_array(u, solver%resp_eq(:solver%nresp), stat)
    end subroutine put_solver
 
-   !> Reads the solver's state; `columns` are the equations of its response
-   !> columns (response_columns).
+   !> Reads the solver's state and the equations of its response columns.
    subroutine take_solver(u, solver, columns, stat)
       integer, intent(in) :: u                      !< the restart file, at the solver's part
       type(solver_t), intent(inout) :: solver       !< the plate solver, factored
@@ -357,8 +334,7 @@ contains
       allocate (columns(0))
       call take_tag(u, 'solver', stat)
       call take_reals(u, x, stat, 2)
-      call take_ints(u, i, stat)
-      if (stat == 0 .and. size(i) /= 5) stat = 1
+      call take_ints(u, i, stat, 5)
       call take_text(u, note, stat)
       call take_ints(u, columns, stat)
       if (stat /= 0) return
@@ -368,9 +344,8 @@ contains
       if (len(note) > 0) solver%mixing_note = note
    end subroutine take_solver
 
-   !> The solver's response columns on the equations `columns`, computed
-   !> again in their order (the same back substitutions on the same factors:
-   !> the same values); its count of back substitutions kept.
+   !> The solver's response columns on the equations `columns`, computed again
+   !> in their order (the same values); its count of back substitutions kept.
    subroutine response_columns(solver, columns, stat, errmsg)
       type(solver_t), intent(inout) :: solver       !< the plate solver, factored
       integer, intent(in) :: columns(:)             !< the equations
@@ -386,46 +361,44 @@ contains
       solver%response_solves = counted
    end subroutine response_columns
 
-   !> Writes what the record carries from step to step (a restart point,
-   !> src/record/restart_point.f90): energies, previous step, running figures,
-   !> warnings, the history's length, and with &strength the damage maps.
+   !> What the record carries from step to step: energies, previous step,
+   !> running figures, warnings, the history's length, &strength's damage maps.
    subroutine put_record(u, rec, stat)
       type(record_t), intent(in) :: rec             !< the record
       integer, intent(in) :: u                      !< the restart file, an open stream
       integer, intent(inout) :: stat                !< 0, or the first failure
       call put_tag(u, 'record', stat)
-      call put_reals(u, [rec%e0, rec%contact_work, rec%contact_energy, rec%alpha_prev, &
+      call put_array(u, [rec%e0, rec%contact_work, rec%contact_energy, rec%alpha_prev, &
          rec%first_contact_start, rec%first_contact_end, rec%max_energy_error, rec%energy_created, &
          rec%energy_lost, rec%max_w_over_h, rec%w_bend_max, &
          rec%diverged_at, rec%c_plate, rec%c_impactor, rec%max_slope], stat)
-      call put_reals(u, [peak_state(rec%force_peak), peak_state(rec%deflection_peak), peak_state(rec%strain_peak)], &
+      call put_array(u, [peak_state(rec%force_peak), peak_state(rec%deflection_peak), peak_state(rec%strain_peak)], &
          stat)
-      call put_ints(u, [rec%steps, rec%contacts, rec%contact_iterations, rec%max_contact_iter, rec%max_solves, &
+      call put_array(u, [rec%steps, rec%contacts, rec%contact_iterations, rec%max_contact_iter, rec%max_solves, &
          rec%unconverged_steps, rec%first_unconverged, rec%nonlinear_fallback_steps, rec%contact_fallback_steps, &
          rec%warnings, rec%mixed_seen, rec%solves_before, merge(1, 0, rec%in_contact), rec%substepped_steps, &
          merge(1, 0, rec%warned)], stat)
-      call put_real(u, real(rec%hist_bytes, dp), stat)
+      call put_value(u, real(rec%hist_bytes, dp), stat)
       call put_impactor(u, rec%imp_prev, stat)
       call put_pattern(u, rec%pattern_prev, stat)
-      call put_reals(u, rec%d_prev, stat)
-      call put_flag(u, rec%damage%active, stat)
-      call put_real(u, rec%damage%delam%onset, stat)
+      call put_array(u, rec%d_prev, stat)
+      call put_value(u, rec%damage%active, stat)
+      call put_value(u, rec%damage%delam%onset, stat)
       if (.not. rec%damage%active) return
-      call put_reals(u, [rec%damage%smax, rec%damage%step_fi, rec%damage%max_fi, rec%damage%max_time, &
+      call put_array(u, [rec%damage%smax, rec%damage%step_fi, rec%damage%max_fi, rec%damage%max_time, &
          rec%damage%onset, rec%damage%onset_fi, rec%damage%peak_force, rec%damage%peak_time], stat)
-      call put_ints(u, [rec%damage%step_mode, rec%damage%max_mode, rec%damage%max_ply, rec%damage%max_point, &
+      call put_array(u, [rec%damage%step_mode, rec%damage%max_mode, rec%damage%max_ply, rec%damage%max_point, &
          rec%damage%onset_mode, rec%damage%onset_ply, rec%damage%onset_point, rec%damage%peak_step], stat)
-      call put_reals(u, reshape(rec%damage%fi_max, [size(rec%damage%fi_max)]), stat)
-      call put_ints(u, reshape(rec%damage%mode_max, [size(rec%damage%mode_max)]), stat)
-      call put_reals(u, reshape(rec%damage%onset_time, [size(rec%damage%onset_time)]), stat)
-      call put_reals(u, rec%damage%d_peak, stat)
-      call put_reals(u, [rec%damage%delam%max_index], stat)
-      call put_ints(u, [rec%damage%delam%max_interface, rec%damage%delam%max_point], stat)
-      call put_reals(u, reshape(rec%damage%delam%map, [size(rec%damage%delam%map)]), stat)
+      call put_array(u, reshape(rec%damage%fi_max, [size(rec%damage%fi_max)]), stat)
+      call put_array(u, reshape(rec%damage%mode_max, [size(rec%damage%mode_max)]), stat)
+      call put_array(u, reshape(rec%damage%onset_time, [size(rec%damage%onset_time)]), stat)
+      call put_array(u, rec%damage%d_peak, stat)
+      call put_array(u, [rec%damage%delam%max_index], stat)
+      call put_array(u, [rec%damage%delam%max_interface, rec%damage%delam%max_point], stat)
+      call put_array(u, reshape(rec%damage%delam%map, [size(rec%damage%delam%map)]), stat)
    end subroutine put_record
 
-   !> A restart: the record of the deck with the figures put_record
-   !> wrote; the caller opens its files again.
+   !> The record of the deck with the figures put_record wrote (its files closed).
    subroutine take_record(u, deck, model, nm, rec, stat)
       type(record_t), intent(out) :: rec            !< the record
       type(deck_t), intent(in) :: deck              !< the effective deck
@@ -450,8 +423,7 @@ contains
       rec%force_peak = peak_restore(r(1:peak_state_size))
       rec%deflection_peak = peak_restore(r(peak_state_size + 1:2*peak_state_size))
       rec%strain_peak = peak_restore(r(2*peak_state_size + 1:))
-      call take_ints(u, i, stat)
-      if (stat == 0 .and. size(i) /= 14 + nwarn) stat = 1
+      call take_ints(u, i, stat, 14 + nwarn)
       if (stat /= 0) return
       rec%steps = i(1);  rec%contacts = i(2);  rec%contact_iterations = i(3);  rec%max_contact_iter = i(4)
       rec%max_solves = i(5);  rec%unconverged_steps = i(6);  rec%first_unconverged = i(7)
@@ -461,19 +433,18 @@ contains
       rec%warned = i(15:) /= 0
       call progress_start(rec%progress, rec%nstep, deck%t_end)   ! the progress line goes on
       bytes = 0.0_dp
-      call take_real(u, bytes, stat)
+      call take_value(u, bytes, stat)
       rec%hist_bytes = nint(bytes, int64)
       call take_impactor(u, rec%imp_prev, stat)
       call take_pattern(u, rec%pattern_prev, stat)
       call take_reals(u, rec%d_prev, stat, model%msh%neq)
       active = .false.
-      call take_flag(u, active, stat)
+      call take_value(u, active, stat)
       if (stat == 0 .and. active .neqv. rec%damage%active) stat = 1
-      call take_real(u, rec%damage%delam%onset, stat)
+      call take_value(u, rec%damage%delam%onset, stat)
       if (stat /= 0 .or. .not. active) return
       call take_reals(u, r, stat, 12)
-      call take_ints(u, i, stat)
-      if (stat == 0 .and. size(i) /= 8) stat = 1
+      call take_ints(u, i, stat, 8)
       if (stat /= 0) return
       rec%damage%smax = r(1:5);  rec%damage%step_fi = r(6);  rec%damage%max_fi = r(7)
       rec%damage%max_time = r(8);  rec%damage%onset = r(9);  rec%damage%onset_fi = r(10)
@@ -483,35 +454,32 @@ contains
       rec%damage%onset_point = i(7);  rec%damage%peak_step = i(8)
       call take_reals(u, r, stat, size(rec%damage%fi_max))
       if (stat == 0) rec%damage%fi_max = reshape(r, shape(rec%damage%fi_max))
-      call take_ints(u, i, stat)
-      if (stat == 0 .and. size(i) /= size(rec%damage%mode_max)) stat = 1
+      call take_ints(u, i, stat, size(rec%damage%mode_max))
       if (stat == 0) rec%damage%mode_max = reshape(i, shape(rec%damage%mode_max))
       call take_reals(u, r, stat, size(rec%damage%onset_time))
       if (stat == 0) rec%damage%onset_time = reshape(r, shape(rec%damage%onset_time))
       call take_reals(u, rec%damage%d_peak, stat, model%msh%neq)
       call take_reals(u, r, stat, 1)
-      call take_ints(u, i, stat)
-      if (stat == 0 .and. size(i) /= 2) stat = 1
+      call take_ints(u, i, stat, 2)
       if (stat /= 0) return
       rec%damage%delam%max_index = r(1);  rec%damage%delam%max_interface = i(1);  rec%damage%delam%max_point = i(2)
       call take_reals(u, r, stat, size(rec%damage%delam%map))
       if (stat == 0) rec%damage%delam%map = reshape(r, shape(rec%damage%delam%map))
    end subroutine take_record
 
-   !> What <prefix>.h5 holds at the restart point: its rows and snapshots
-   !> and its peak.
+   !> What <prefix>.h5 holds at the restart point: its rows, snapshots and peak.
    subroutine put_results(u, rec, stat)
       integer, intent(in) :: u                      !< the restart file
       type(record_t), intent(in) :: rec             !< the run's record
       integer, intent(inout) :: stat                !< 0, or the first failure
       type(results_point_t) :: pt
       call put_tag(u, 'results', stat)
-      call put_flag(u, allocated(rec%h5%path), stat)
+      call put_value(u, allocated(rec%h5%path), stat)
       if (.not. allocated(rec%h5%path)) return
       pt = results_point(rec%h5)
-      call put_ints(u, [pt%rows, pt%snaps, pt%peak_step], stat)
-      call put_reals(u, [pt%peak_time, pt%peak_force], stat)
-      call put_reals(u, reshape(pt%peak_fields, [size(pt%peak_fields)]), stat)
+      call put_array(u, [pt%rows, pt%snaps, pt%peak_step], stat)
+      call put_array(u, [pt%peak_time, pt%peak_force], stat)
+      call put_array(u, reshape(pt%peak_fields, [size(pt%peak_fields)]), stat)
    end subroutine put_results
 
    !> Reads what put_results wrote (nnode: the mesh's nodes).
@@ -525,18 +493,16 @@ contains
       integer, allocatable :: i(:)
       h5 = .false.
       call take_tag(u, 'results', stat)
-      call take_flag(u, h5, stat)
+      call take_value(u, h5, stat)
       if (stat /= 0 .or. .not. h5) return
-      call take_ints(u, i, stat)
+      call take_ints(u, i, stat, 3)
       call take_reals(u, x, stat, 2)
       call take_reals(u, f, stat, ndof_node*nnode)
-      if (stat == 0 .and. size(i) /= 3) stat = 1
       if (stat /= 0) return
       pt = results_point_t(i(1), i(2), i(3), x(1), x(2), reshape(f, [ndof_node, nnode]))
    end subroutine take_results
 
-   !> The history file cut back to its length at the restart point and
-   !> opened for appending (src/record/run_recorder.f90's rows).
+   !> The history file cut back to its length at the restart point, opened for appending.
    subroutine reopen_history(deck, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(record_t), intent(inout) :: rec          !< the record: its history file
@@ -563,8 +529,6 @@ contains
       if (stat /= 0) errmsg = rec%hist_path // ': cannot open it to read its length'
    end subroutine reopen_history
 
-   ! ============================================================== the disk
-
    !> The directory of `path` ('.' or '/' when it has none).
    pure function directory_of(path) result(dir)
       character(len=*), intent(in) :: path          !< a file
@@ -573,8 +537,7 @@ contains
       if (len(dir) == 0) dir = merge('/', '.', path(1:min(1, len(path))) == '/')
    end function directory_of
 
-   !> fsync(2) of the file or directory `path`: what the kernel holds of it
-   !> is on the disk on return.
+   !> fsync(2) of the file or directory `path`.
    subroutine force_to_disk(path, stat)
       character(len=*), intent(in) :: path          !< the file or directory
       integer, intent(out) :: stat                  !< 0 on success

@@ -1,11 +1,8 @@
 !> The run's record (Fig. 3, "output"), kept out of the time loop: the
-!> history file and <prefix>.h5 (src/results/), the energy balance (above
-!> add_contact_work), the summary's figures (peaks refined between the
-!> steps: above update_maxima), the warnings and &analysis stop_on_warning.
-!> All of it is in the record_t the main program holds: record_open before
-!> the first step (row 0), record_step after every accepted step (sets
-!> rec%stop when the run must end there), record_close at the end or on a
-!> failure (the summary with its status). More: docs/OUTPUT.md.
+!> history file and <prefix>.h5, the energy balance, the summary's figures,
+!> the warnings. record_open before the first step (row 0), record_step after
+!> every accepted step (rec%stop: the run ends there), record_close at the
+!> end or on a failure. More: docs/OUTPUT.md.
 module run_recorder
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
@@ -42,9 +39,8 @@ module run_recorder
    integer, parameter :: warn_mixing = 1, warn_contact = 2, warn_deflection = 3, warn_unconverged = 4, &
                          warn_energy = 5, warn_indentation = 6, warn_drift = 7, warn_energy_lost = 8, &
                          warn_substeps = 9, nwarn = 9
-   !> Energy the integration may create (lose) before it is warned, as a
-   !> fraction of E0 (docs/STABILITY.md, "The energy bound"): the average
-   !> acceleration rule conserves energy, so both are the time step's error.
+   !> Energy the integration may create (lose) before it is warned, a fraction
+   !> of E0: the time step's error (docs/STABILITY.md, "The energy bound").
    real(dp), parameter :: energy_created_bound = 1.0e-3_dp
    real(dp), parameter :: energy_lost_bound = 1.0e-2_dp
 
@@ -105,9 +101,8 @@ module run_recorder
       real(dp) :: w_rigid = 0          !< free edges: the rigid-body part of the deflection under the impactor (m)
    end type step_figures_t
 
-   !> A line of the warnings' table (step_warnings): its kind, its test at this
-   !> step, its text ({1}, {2}: its figures; {note}: the iteration's report;
-   !> 256 characters hold the longest, 230).
+   !> A line of the warnings' table (step_warnings); {1}, {2} in its text: its
+   !> figures, {note}: the iteration's report.
    integer, parameter :: warning_text_len = 256
    type :: warning_check_t
       integer :: kind                                  !< the kind (warn_*), warned once per run
@@ -118,8 +113,7 @@ module run_recorder
 
 contains
 
-   !> Opens the history and <prefix>.h5 and writes row 0; c_plate: the plate's
-   !> compliance over a step for the fixed-point diagnostics (-1: none).
+   !> Opens the history and <prefix>.h5 and writes row 0.
    subroutine record_open(rec, deck, model, nm, imp, c_plate, stat, errmsg)
       type(record_t), intent(out) :: rec            !< the record
       type(deck_t), intent(in) :: deck              !< the effective deck
@@ -174,8 +168,7 @@ contains
       if (stat == 0) call results_flush(rec%h5, stat, errmsg)     ! row 0 in every file: the first restart point
    end subroutine record_open
 
-   !> The settings the record keeps (of the deck, the time step) and, with
-   !> &strength, its ply stresses and failure indices (src/results/damage_record.f90).
+   !> The settings the record keeps (of the deck, the time step; &strength's damage_record).
    subroutine record_settings(rec, deck, model, nm)
       type(record_t), intent(inout) :: rec          !< the record
       type(deck_t), intent(in) :: deck              !< the effective deck
@@ -190,8 +183,7 @@ contains
       rec%ncol = history_width(rec%damage%active, damage_wanted(deck))
    end subroutine record_settings
 
-   !> Records the step just accepted: plate and impactor at t + dt, the contact
-   !> history before its commit, the step's contact iteration.
+   !> Records the step just accepted (its contact history not yet committed).
    subroutine record_step(rec, step, model, solver, st, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       integer, intent(in) :: step                        !< the step
@@ -234,14 +226,9 @@ contains
       end associate
    end subroutine record_step
 
-   !> Energies (whole plate, J): the impactor's kinetic energy, the plate's
-   !> kinetic and strain energy, the contact force's work on the plate by the
-   !> trapezoidal rule, 1/2 (F_t p_t + F_t+dt p_t+dt)^T (D_t+dt - D_t) (which
-   !> Newmark's rule balances exactly in the linear theory), the energy the
-   !> contact took, 1/2 (F_t + F_t+dt) dw_r less that work, and the balance, E0
-   !> less the four: lost (+) or created (-). Below -E0 the run has diverged
-   !> and stops, as when its state is not finite. Computed on the history rows
-   !> only (every &output every steps); the work of every step, here.
+   !> The step's contact work on the plate (trapezoidal rule,
+   !> 1/2 (F_t p_t + F_t+dt p_t+dt)^T (D_t+dt - D_t)) and the energy the contact
+   !> took, 1/2 (F_t + F_t+dt) dw_r less that work (J, whole plate).
    subroutine add_contact_work(rec, st)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_state_t), intent(in) :: st               !< the step accepted: plate, impactor, contact area
@@ -257,11 +244,9 @@ contains
       end associate
    end subroutine add_contact_work
 
-   !> The summary's running figures of every step: the samples of the peaks,
-   !> refined between the steps (src/record/step_peak.f90; row 0 a sample),
-   !> the contacts and the first one's bounds, w/h, the iterations, the
-   !> bending deflection (free edges: fig%w_rigid), the fixed-point slope, the
-   !> peak's ply stresses.
+   !> The summary's running figures of every step: the peaks' samples
+   !> (step_peak), the contacts, w/h, the iterations, the bending deflection
+   !> (free edges: fig%w_rigid), the fixed-point slope, the ply stresses.
    subroutine update_maxima(rec, fig, model, st, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(inout) :: fig         !< the step (in); its w_rigid (out)
@@ -292,10 +277,8 @@ contains
       end associate
    end subroutine update_maxima
 
-   !> The contacts (force after a step without starts one) and the first
-   !> one's start (t = 0) and end, where alpha - alpha_0 crosses 0 between the
-   !> step before (rec%alpha_prev) and this one (the force, F ~ (alpha -
-   !> alpha_0)^q, leaves 0 with slope 0: a line through it would give the step).
+   !> The contacts and the first one's start and end, where alpha - alpha_0
+   !> crosses 0 between the step before (rec%alpha_prev) and this one.
    subroutine first_contact_bounds(rec, t, f, alpha, alpha_0)
       type(record_t), intent(inout) :: rec               !< the record
       real(dp), intent(in) :: t                          !< the step's time (s)
@@ -346,8 +329,8 @@ contains
       end associate
    end subroutine history_row
 
-   !> The energies of a history row (J; above add_contact_work) and the
-   !> summary's largest balance, energy created (-) and lost (+).
+   !> The energies of a history row (J) and the balance, E0 less them all: its
+   !> largest, energy created (-) and lost (+) for the summary.
    subroutine row_energies(rec, model, st, row)
       type(record_t), intent(inout) :: rec               !< the record
       type(model_t), intent(in) :: model                 !< the model
@@ -365,8 +348,8 @@ contains
       rec%energy_lost = nan_max(rec%energy_lost, row(col_energy_error))
    end subroutine row_energies
 
-   !> The warnings of the step, from the table below, in the order given:
-   !> every step a test holds is counted (count_step), each kind warned once.
+   !> The warnings of the step, from the table below: every step a test holds
+   !> is counted (count_step), each kind warned once.
    subroutine step_warnings(rec, fig, solver, cit, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(in) :: fig            !< the step
@@ -463,8 +446,7 @@ contains
       out = text(:i - 1) // value // text(i + len(key):)
    end function replaced
 
-   !> A warning on standard error naming the step and time, once per kind;
-   !> with &analysis stop_on_warning the run stops after this step.
+   !> A warning on standard error, once per kind; with stop_on_warning the run stops.
    subroutine warn(rec, fig, kind, message, stat, errmsg)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(in) :: fig            !< the step
@@ -485,8 +467,7 @@ contains
          // 'warning (&analysis stop_on_warning = .true.)', '')
    end subroutine warn
 
-   !> The run must end after this step (rec%stop) with this status and exit
-   !> status 1; the first reason stays; a message goes to standard error.
+   !> The run must end after this step (rec%stop), status and exit 1; the first reason stays.
    subroutine stop_here(rec, fig, status, message)
       type(record_t), intent(inout) :: rec               !< the record
       type(step_figures_t), intent(in) :: fig            !< the step
@@ -500,8 +481,7 @@ contains
       if (len(message) > 0) write (error_unit, '(a)') 'impact: error: step ' // int_str(fig%step) // ': ' // message
    end subroutine stop_here
 
-   !> Writes the summary (<prefix>_summary.dat, /summary) with rec%stop_status
-   !> and closes the files; safe after any failure of record_open or record_step.
+   !> Writes the summary with rec%stop_status and closes the files (safe after any failure).
    subroutine record_close(rec, deck, model, solver, st, cpu_s, stat, errmsg)
       type(record_t), intent(inout) :: rec          !< the record; its stop_status the run's status
       type(deck_t), intent(in) :: deck              !< the effective deck
@@ -545,8 +525,7 @@ contains
       value = trim(text(index(text, ' = ') + 3:))
    end function after_equals
 
-   !> The end's warnings: a linear run whose deflection needed the nonlinear
-   !> theory (src/model/scene_model.f90), and their count, on standard error.
+   !> The end's warnings (a linear run that needed the nonlinear theory) and their count.
    subroutine closing_warnings(rec, model)
       type(record_t), intent(inout) :: rec          !< the record
       type(model_t), intent(in) :: model            !< the model (its scene)
@@ -633,8 +612,7 @@ contains
       end if
    end subroutine summary_time
 
-   !> The run's last words on standard output: where its files are, and its
-   !> peak force, contacts, largest deflection and cpu time.
+   !> The run's last words on standard output: its files, peak force, contacts, deflection, cpu time.
    subroutine last_words(rec, deck, cpu_s, unit)
       type(record_t), intent(in) :: rec             !< the record
       type(deck_t), intent(in) :: deck              !< the effective deck
@@ -650,7 +628,6 @@ contains
          t_peak*1.0e6_dp, ' us; contacts ', rec%contacts, '; max deflection ', &
          w_max*1.0e3_dp, ' mm; cpu ', cpu_s, ' s'
    end subroutine last_words
-
 
    ! ============================================================== helpers
 

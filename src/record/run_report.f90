@@ -20,8 +20,7 @@ module run_report
    private
    public :: echo_model, write_answer, usage_line, say_large_chosen_mesh
 
-   !> The usage in one line: the first of impact --help, and what a wrong
-   !> command line gets after its message.
+   !> The usage in one line (impact --help's first; after a wrong command line).
    character(len=*), parameter :: usage_line = 'usage: impact [options] [deck.nml]'
 
 contains
@@ -83,13 +82,9 @@ contains
       write (u, '(a)') 'of impact --version (README.md, "Reporting bugs").'
    end subroutine usage
 
-   !> A mesh the program chose (no nx, ny in the deck) of more than
-   !> large_model equations: said before the set-up builds it, which may
-   !> take minutes, with its size, its memory and, in sparse storage, the
-   !> set-up's cpu time: set_up_s (measured: an 80 x 60 full plate, 94 605
-   !> equations, on one core of the 2-core test machine; a 40 x 30 one took
-   !> 0.8 s, 23 305 equations) times the equations' ratio to the power
-   !> set_up_growth (CHOLMOD's factorization of a plate's matrix).
+   !> A mesh the program chose of more than large_model equations: said before
+   !> the set-up, with its size, its memory and, in sparse storage, the set-up's
+   !> estimated cpu time (set_up_s, scaled by the equations^set_up_growth).
    subroutine say_large_chosen_mesh(deck, unit)
       type(deck_t), intent(in) :: deck              !< the deck, nx and ny given or chosen
       integer, intent(in) :: unit                   !< where it is said (standard output)
@@ -109,8 +104,7 @@ contains
       flush (unit)
    end subroutine say_large_chosen_mesh
 
-   !> The answer of an option that asks instead of running (command_line's
-   !> action): --help, --version, --schema, --deck-table; nothing for 'run'.
+   !> The answer of --help, --version, --schema, --deck-table; nothing for 'run'.
    subroutine write_answer(action, u)
       character(len=*), intent(in) :: action     !< 'help', 'version', 'schema', 'deck-table' or 'run'
       integer, intent(in) :: u                   !< open formatted unit
@@ -122,8 +116,7 @@ contains
       end select
    end subroutine write_answer
 
-   !> impact --version: the version the build recorded (one line, as scripts
-   !> read it), then the copyright and the licence (LICENSE).
+   !> impact --version: the version (one line, as scripts read it), the copyright, the licence.
    subroutine version_text(u, version)
       integer, intent(in) :: u                   !< open formatted unit
       character(len=*), intent(in) :: version    !< 'impact 1.2.0 (git <commit>)' (src/system/build_info.f90)

@@ -1,8 +1,7 @@
-!> The summary's extremes between the steps: the largest of the samples
-!> (once per step) misses the peak by O(dt^2) and jumps as dt changes; the
-!> vertex of the parabola through the largest and its neighbours is O(dt^3)
-!> at a smooth maximum, and a line through two samples gives where a
-!> contact ends. Pure kernels. Not from the paper. More: docs/OUTPUT.md.
+!> The summary's extremes between the steps: the vertex of the parabola
+!> through the largest sample and its neighbours (O(dt^3) at a smooth
+!> maximum, the largest sample O(dt^2)), and where a line through two samples
+!> crosses 0 (a contact's end). Not from the paper. More: docs/OUTPUT.md.
 module step_peak
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
    use kinds, only: dp
@@ -11,11 +10,6 @@ module step_peak
    public :: peak_track_t, peak_sample, peak_between, parabola_vertex, zero_crossing, peak_state, peak_restore, &
       peak_state_size
 
-   !>   parabola_vertex  the vertex of the parabola through three samples
-   !>   zero_crossing    where the line through two samples crosses 0
-   !>   peak_sample      keeps the largest sample and its two neighbours
-   !>   peak_between     the refined extreme: the vertex, or the largest sample
-   !>                    at either end or where the three are not concave
    !> The samples a peak is refined from (peak_sample, peak_between).
    type :: peak_track_t
       integer :: samples = 0              !< samples taken so far
@@ -32,13 +26,9 @@ module step_peak
 
 contains
 
-   !> The vertex of the parabola through (t(k), v(k)), k = 1..3, t strictly
-   !> increasing: its time tv and value vv. concave is false (tv, vv then
-   !> the middle sample) when the parabola does not open downwards, a
-   !> sample is not finite, or the vertex lies outside [t(1), t(3)].
-   !> In Newton's form v = v1 + d1 (t - t1) + c (t - t1)(t - t2), with the
-   !> divided differences d1 = (v2 - v1)/(t2 - t1) and c; its slope is 0 at
-   !> tv = (t1 + t2)/2 - d1/(2c).
+   !> The vertex (tv, vv) of the parabola through (t(k), v(k)), k = 1..3, t
+   !> increasing; concave false (the middle sample) when it does not open
+   !> downwards, a sample is not finite, or the vertex is outside [t(1), t(3)].
    pure subroutine parabola_vertex(t, v, tv, vv, concave)
       real(dp), intent(in) :: t(3)              !< the samples' times, increasing
       real(dp), intent(in) :: v(3)              !< their values
@@ -65,9 +55,8 @@ contains
       concave = .true.
    end subroutine parabola_vertex
 
-   !> Where the straight line through (t1, y1) and (t2, y2), t1 < t2, is 0,
-   !> kept in [t1, t2]: t2 when y1 = y2, t1 when y1 is 0 already, t2 when
-   !> y2 is not yet 0 (both of one sign, the line crossing later).
+   !> Where the line through (t1, y1) and (t2, y2), t1 < t2, is 0, kept in
+   !> [t1, t2] (t2 when y1 = y2 or both are of one sign, t1 when y1 is 0).
    pure real(dp) function zero_crossing(t1, y1, t2, y2) result(tz)
       real(dp), intent(in) :: t1                !< the first sample's time
       real(dp), intent(in) :: y1                !< its value
@@ -81,9 +70,8 @@ contains
       end if
    end function zero_crossing
 
-   !> Takes the sample (t, v), t after every earlier one: it becomes the
-   !> largest when it exceeds the largest so far (the first of equal ones) or
-   !> is a NaN (which stays); its neighbours before and after are kept.
+   !> Takes the sample (t, v): the largest when it exceeds the largest so far
+   !> or is a NaN (which stays); its neighbours before and after are kept.
    pure subroutine peak_sample(p, t, v)
       type(peak_track_t), intent(inout) :: p    !< the samples kept
       real(dp), intent(in) :: t                 !< the sample's time (s)
@@ -110,9 +98,8 @@ contains
       p%v_last = v
    end subroutine peak_sample
 
-   !> The largest value of the samples, refined (parabola_vertex), and its
-   !> time; the largest sample itself at the ends or where not concave; 0 at 0
-   !> before any sample.
+   !> The largest value, refined (parabola_vertex), and its time; the largest
+   !> sample itself at the ends or where not concave.
    pure subroutine peak_between(p, t_peak, v_peak)
       type(peak_track_t), intent(in) :: p       !< the samples kept
       real(dp), intent(out) :: t_peak           !< time of the peak (s)

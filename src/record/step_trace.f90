@@ -1,10 +1,7 @@
 !> The teaching trace: `impact --trace STEP[,STEP...] deck.nml` prints, for
-!> those time steps, every box of the paper's flowchart (Fig. 3) as it
-!> runs, with its equation number: the assumed contact force and its
-!> contact area, each eq. (19) iteration with its eq. (18) ratio, the
-!> impactor's displacement (eq. 21), the indentation (eq. 13), the law's
-!> force and branch (eq. 11-12) and the test of eq. (17). docs/ALGORITHM.md
-!> walks through one step of the paper's scene with it.
+!> those steps, every box of the paper's flowchart (Fig. 3) with its
+!> equation: the assumed force, eq. (19) with its eq. (18) ratio, eq. (21),
+!> (13), (11-12) and the test of eq. (17). docs/ALGORITHM.md walks one step.
 module step_trace
    use kinds, only: dp
    use plate_solver, only: solver_t

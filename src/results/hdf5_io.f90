@@ -2,9 +2,10 @@
 !> groups, attributes, whole datasets (the growing ones: hdf5_series.f90).
 !> Every routine returns `stat` (0 on success) and an `errmsg` naming the
 !> operation and the object; `loc` is the file or group a path starts
-!> from, `name` a path relative to it. What is written: above h5io_start;
-!> files, SWMR, locks: above h5io_create. tools/hdf5_read.f90 is the read
-!> half. Not from the paper. More: docs/OUTPUT.md.
+!> from, `name` a path relative to it. Attributes are scalars or 1-D arrays,
+!> strings variable-length UTF-8; every dataset chunked and checksummed
+!> (Fletcher32), in Fortran order (x(m, n) reads as x[n, m] in h5py).
+!> tools/hdf5_read.f90 is the read half. Not from the paper. More: docs/OUTPUT.md.
 module hdf5_io
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char, c_bool, c_int, c_int64_t
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, h5fclose_f, &
@@ -32,28 +33,18 @@ module hdf5_io
    !> module does not define; h5fopen_f hands its flags to H5Fopen as they are.
    integer, parameter :: acc_swmr_write = 32
 
-   !> Writes an attribute: a real(dp), integer or string scalar, or a real(dp)
-   !> or integer 1-D array.
+   !> Writes an attribute: a real(dp), integer or string scalar, or a real(dp) or integer 1-D array.
    interface h5io_set_attr
       module procedure set_attr_scalar, set_attr_array
    end interface h5io_set_attr
 
-   !> Writes a whole dataset, one checksummed chunk: real(dp) or integer,
-   !> rank 1 or 2.
+   !> Writes a whole dataset, one checksummed chunk: real(dp) or integer, rank 1 or 2.
    interface h5io_write
       module procedure write_1d, write_2d
    end interface h5io_write
 
-
 contains
 
-   ! ------------------------------------------------------------ files, groups
-
-   !> What is written: attributes are scalars (h5py gives a number or a str)
-   !> or 1-D arrays, strings variable-length UTF-8; every dataset is chunked
-   !> and checksummed (Fletcher32: damaged data is reported, not handed out),
-   !> fixed ones written whole, series grown by blocks; arrays keep Fortran
-   !> order (x(m, n) reads as x[n, m] in h5py and h5dump).
    !> Opens the HDF5 library and switches off its error printing.
    subroutine h5io_start(stat, errmsg)
       integer, intent(out) :: stat
@@ -64,13 +55,8 @@ contains
       call h5io_check(err, 'cannot initialise the HDF5 library', '', stat, errmsg)
    end subroutine h5io_start
 
-   !> Files: h5io_create makes one (with `latest` in HDF5 1.10's format, what
-   !> SWMR needs, checksummed metadata), removing what had the name first and
-   !> creating it exclusively (no write through a link); h5io_open opens it
-   !> again, with `swmr` in SWMR mode (only existing objects change, the file
-   !> consistent on disk at every instant). Neither takes HDF5's file lock
-   !> (runs are kept apart by their claim, result_files.f90); h5io_open clears
-   !> the marks a killed writer left (what `h5clear -s` does).
+   !> Creates the file `path` exclusively (what had the name removed first: no
+   !> write through a link), with `latest` in HDF5 1.10's format (what SWMR needs).
    subroutine h5io_create(path, latest, fid, stat, errmsg)
       character(len=*), intent(in) :: path
       logical, intent(in) :: latest
@@ -89,7 +75,8 @@ contains
       call h5pclose_f(fapl, err)
    end subroutine h5io_create
 
-   !> Opens the existing file `path` for writing, with `swmr` in SWMR mode.
+   !> Opens the existing file `path` for writing, with `swmr` in SWMR mode,
+   !> clearing the marks a killed writer left (what `h5clear -s` does).
    subroutine h5io_open(path, swmr, fid, stat, errmsg)
       character(len=*), intent(in) :: path
       logical, intent(in) :: swmr
@@ -108,10 +95,9 @@ contains
       call h5pclose_f(fapl, err)
    end subroutine h5io_open
 
-   !> The results files' access: no file lock; metadata evicted from the
-   !> cache on close (H5Pset_evict_on_close: the XDMF views, made by the
-   !> thousand, would fill it); `latest` format; with `clear` a killed
-   !> writer's marks cleared on opening (the property h5clear sets).
+   !> The results files' access: no file lock (runs keep apart by their claim),
+   !> metadata evicted on close (the XDMF views would fill the cache), `latest`
+   !> format; with `clear` a killed writer's marks cleared on opening.
    subroutine file_access(latest, clear, fapl, err)
       logical, intent(in) :: latest, clear
       integer(hid_t), intent(out) :: fapl
@@ -198,10 +184,7 @@ contains
       call h5io_check(err, 'cannot remove', name, stat, errmsg)
    end subroutine h5io_delete
 
-   ! ------------------------------------------------------------ attributes
-
-   !> Scalar attribute `name` of object `obj`: real(dp), integer or a string
-   !> (variable-length UTF-8, trailing blanks removed).
+   !> Scalar attribute `name` of object `obj`: real(dp), integer or a string.
    subroutine set_attr_scalar(loc, obj, name, x, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: obj, name
@@ -231,31 +214,25 @@ contains
       end select
    end subroutine set_attr_scalar
 
-   !> 1-D array attribute `name` of object `obj` (at least one value):
-   !> real(dp) or integer.
+   !> 1-D array attribute `name` of object `obj` (one value at least): real(dp) or integer.
    subroutine set_attr_array(loc, obj, name, x, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: obj, name
-      class(*), intent(in) :: x(:)
+      class(*), intent(in), target, contiguous :: x(:)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      real(dp), allocatable, target :: r(:)
-      integer, allocatable, target :: i(:)
       select type (x)
       type is (real(dp))
-         r = x
-         call put_attr(loc, obj, name, H5T_NATIVE_DOUBLE, c_loc(r), size(r), stat, errmsg)
+         call put_attr(loc, obj, name, H5T_NATIVE_DOUBLE, c_loc(x), size(x), stat, errmsg)
       type is (integer)
-         i = x
-         call put_attr(loc, obj, name, H5T_NATIVE_INTEGER, c_loc(i), size(i), stat, errmsg)
+         call put_attr(loc, obj, name, H5T_NATIVE_INTEGER, c_loc(x), size(x), stat, errmsg)
       class default
          call h5io_fail('an array attribute is real(dp) or integer', h5io_attr_path(obj, name), stat, errmsg)
       end select
    end subroutine set_attr_array
 
-   !> Rewrites the existing scalar attribute `name` of object `obj` in place,
-   !> a real(dp) or an integer of the type it was made with: what SWMR mode
-   !> allows (no attribute is created or removed).
+   !> Rewrites the existing real(dp) or integer scalar attribute `name` of `obj`
+   !> in place: what SWMR mode allows.
    subroutine h5io_update_attr(loc, obj, name, x, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: obj, name
@@ -264,8 +241,7 @@ contains
       character(len=*), intent(inout) :: errmsg
       integer(hid_t) :: oid, aid
       integer :: err
-      ! the object held open while its attribute is written (with evict-on-close
-      ! HDF5 drops the header of an object that H5Aopen_by_name opened and closed)
+      ! the object held open while its attribute is written (evict-on-close)
       call h5oopen_f(loc, obj, oid, err)
       if (err == 0) call h5aopen_f(oid, name, aid, err)
       call h5io_check(err, 'cannot open the attribute', h5io_attr_path(obj, name), stat, errmsg)
@@ -285,8 +261,7 @@ contains
       call h5oclose_f(oid, err)
    end subroutine h5io_update_attr
 
-   !> Creates (replacing one of the same name) and writes an attribute of
-   !> type tid from the address buf: a scalar when n = 0, else n values.
+   !> Creates (or replaces) attribute `name` of type tid from buf: a scalar when n = 0, else n values.
    subroutine put_attr(loc, obj, name, tid, buf, n, stat, errmsg)
       integer(hid_t), intent(in) :: loc, tid
       character(len=*), intent(in) :: obj, name
@@ -322,9 +297,8 @@ contains
       call h5sclose_f(sid, err)
    end subroutine put_attr
 
-   !> A variable-length, null-terminated UTF-8 string type (the caller closes
-   !> it), made from the one-character type H5T_FORTRAN_S1: the module's
-   !> H5T_STRING is already variable-length in HDF5 1.10 and cannot be resized.
+   !> A variable-length, null-terminated UTF-8 string type (the caller closes it),
+   !> from H5T_FORTRAN_S1 (HDF5 1.10's H5T_STRING cannot be resized).
    subroutine h5io_vlen_string_type(tid, err)
       integer(hid_t), intent(out) :: tid  !< the new type
       integer, intent(out) :: err         !< HDF5's error code (0 on success)
@@ -333,8 +307,6 @@ contains
       if (err == 0) call h5tset_strpad_f(tid, H5T_STR_NULLTERM_F, err)
       if (err == 0) call h5tset_cset_f(tid, H5T_CSET_UTF8_F, err)
    end subroutine h5io_vlen_string_type
-
-   ! ------------------------------------------------------------ whole datasets
 
    !> Writes the dataset `name` of the 1-D array x: real(dp) or integer.
    subroutine write_1d(loc, name, x, stat, errmsg)
@@ -346,8 +318,7 @@ contains
       call make_dataset(loc, name, shape(x, kind=hsize_t), x, stat, errmsg)
    end subroutine write_1d
 
-   !> Writes the dataset `name` of the 2-D array x, real(dp) or integer
-   !> (x(m, n) reads as x[n, m] in C order).
+   !> Writes the dataset `name` of the 2-D array x, real(dp) or integer.
    subroutine write_2d(loc, name, x, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
@@ -363,38 +334,31 @@ contains
       end select
    end subroutine write_2d
 
-   !> Writes the dataset `name` of shape dims (Fortran order) from the
-   !> values x, in array element order: real(dp) or integer, one checksummed
-   !> chunk (an empty dataset: none).
+   !> Writes the dataset `name` of shape dims from x (real(dp) or integer), one chunk.
    subroutine make_dataset(loc, name, dims, x, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
       integer(hsize_t), intent(in) :: dims(:)
-      class(*), intent(in) :: x(:)
+      class(*), intent(in), target, contiguous :: x(:)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      real(dp), allocatable, target :: r(:)
-      integer, allocatable, target :: i(:)
       integer(hid_t) :: did
       integer :: err
       stat = failed
       select type (x)
       type is (real(dp))
          call h5io_create_dataset(loc, name, H5T_NATIVE_DOUBLE, dims, max(dims, 1_hsize_t), did, stat, errmsg)
-         r = x
-         if (stat == 0) call h5dwrite_f(did, H5T_NATIVE_DOUBLE, c_loc(r), err)
+         if (stat == 0) call h5dwrite_f(did, H5T_NATIVE_DOUBLE, c_loc(x), err)
       type is (integer)
          call h5io_create_dataset(loc, name, H5T_NATIVE_INTEGER, dims, max(dims, 1_hsize_t), did, stat, errmsg)
-         i = x
-         if (stat == 0) call h5dwrite_f(did, H5T_NATIVE_INTEGER, c_loc(i), err)
+         if (stat == 0) call h5dwrite_f(did, H5T_NATIVE_INTEGER, c_loc(x), err)
       end select
       if (stat /= 0) return
       call h5io_check(err, 'cannot write the dataset', name, stat, errmsg)
       call h5dclose_f(did, err)
    end subroutine make_dataset
 
-   !> Overwrites the whole existing real dataset `name` with x(:), which must
-   !> have its size.
+   !> Overwrites the whole existing real dataset `name` with x(:), of its size.
    subroutine h5io_rewrite(loc, name, x, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
@@ -411,10 +375,8 @@ contains
       call h5dclose_f(did, err)
    end subroutine h5io_rewrite
 
-   !> Creates the dataset `name` of element type tid, largest shape maxdims
-   !> (its shape, but an unlimited dimension starts empty), stored in chunks
-   !> of shape chunk, each checksummed (HDF5's Fletcher32 filter), and
-   !> returns it open as did.
+   !> Creates the dataset `name` of type tid, largest shape maxdims (an unlimited
+   !> dimension starts empty), in checksummed chunks of shape chunk; open as did.
    subroutine h5io_create_dataset(loc, name, tid, maxdims, chunk, did, stat, errmsg)
       integer(hid_t), intent(in) :: loc, tid
       character(len=*), intent(in) :: name
@@ -442,10 +404,7 @@ contains
       call h5sclose_f(sid, err)
    end subroutine h5io_create_dataset
 
-   ! ------------------------------------------------------------ messages
-
-   !> stat = 0 if HDF5's error code err is 0, else failed and the message
-   !> "what 'name'" (name '' for none).
+   !> stat = 0 if HDF5's error code err is 0, else as h5io_fail.
    subroutine h5io_check(err, what, name, stat, errmsg)
       integer, intent(in) :: err
       character(len=*), intent(in) :: what, name

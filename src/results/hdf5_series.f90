@@ -21,7 +21,7 @@ module hdf5_series
 
    !> Appends entries to a series at once: reals or integers (rank 1), columns x(:, k) (rank 2).
    interface h5io_append_block
-      module procedure append_reals, append_integers, append_columns
+      module procedure append_values, append_columns
    end interface h5io_append_block
 
    !> Reads a whole rank-1 series (a restart): reals or integers.
@@ -40,9 +40,8 @@ contains
       integer(hid_t), intent(out) :: did
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      integer(hid_t) :: tid
-      tid = merge(H5T_NATIVE_INTEGER, H5T_NATIVE_DOUBLE, kind == h5io_integer)
-      call create_extendible(loc, name, tid, [0_hsize_t], [int(chunk, hsize_t)], did, stat, errmsg)
+      call h5io_create_dataset(loc, name, merge(H5T_NATIVE_INTEGER, H5T_NATIVE_DOUBLE, kind == h5io_integer), &
+         [H5S_UNLIMITED_F], [int(chunk, hsize_t)], did, stat, errmsg)
    end subroutine h5io_create_series
 
    !> Creates the empty real series `name` of shape (nrow, 0), growing by
@@ -54,24 +53,9 @@ contains
       integer(hid_t), intent(out) :: did
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      call create_extendible(loc, name, H5T_NATIVE_DOUBLE, [int(nrow, hsize_t), 0_hsize_t], &
+      call h5io_create_dataset(loc, name, H5T_NATIVE_DOUBLE, [int(nrow, hsize_t), H5S_UNLIMITED_F], &
          [int(nrow, hsize_t), int(max(1, chunk_values/max(nrow, 1)), hsize_t)], did, stat, errmsg)
    end subroutine h5io_create_columns
-
-   !> A chunked dataset of type tid, shape dims, chunks chunk, its last dimension unlimited.
-   subroutine create_extendible(loc, name, tid, dims, chunk, did, stat, errmsg)
-      integer(hid_t), intent(in) :: loc, tid
-      character(len=*), intent(in) :: name
-      integer(hsize_t), intent(in) :: dims(:), chunk(:)
-      integer(hid_t), intent(out) :: did
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      integer(hsize_t) :: maxdims(size(dims))
-      maxdims = dims
-      maxdims(size(dims)) = H5S_UNLIMITED_F
-      call h5io_create_dataset(loc, name, tid, maxdims, chunk, did, stat, errmsg)
-   end subroutine create_extendible
-
 
    !> Opens the existing dataset `name` (close with h5io_close_dataset).
    subroutine h5io_open_dataset(loc, name, did, stat, errmsg)
@@ -133,10 +117,9 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer(hid_t) :: did
-      integer :: x_len
-      call open_series(loc, name, did, x_len, stat, errmsg)
+      call h5io_open_dataset(loc, name, did, stat, errmsg)
       if (stat /= 0) return
-      allocate (x(x_len))
+      allocate (x(max(0, h5io_series_length(did))))
       call read_series(did, H5T_NATIVE_DOUBLE, c_loc(x), size(x), name, stat, errmsg)
    end subroutine read_reals
 
@@ -148,25 +131,11 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer(hid_t) :: did
-      integer :: x_len
-      call open_series(loc, name, did, x_len, stat, errmsg)
+      call h5io_open_dataset(loc, name, did, stat, errmsg)
       if (stat /= 0) return
-      allocate (x(x_len))
+      allocate (x(max(0, h5io_series_length(did))))
       call read_series(did, H5T_NATIVE_INTEGER, c_loc(x), size(x), name, stat, errmsg)
    end subroutine read_integers
-
-   !> Opens the rank-1 series `name`: its dataset and its length (>= 0).
-   subroutine open_series(loc, name, did, n, stat, errmsg)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name
-      integer(hid_t), intent(out) :: did
-      integer, intent(out) :: n
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      n = 0
-      call h5io_open_dataset(loc, name, did, stat, errmsg)
-      if (stat == 0) n = max(0, h5io_series_length(did))
-   end subroutine open_series
 
    !> Reads the n values of the open series did into buf (type mem_type) and closes it.
    subroutine read_series(did, mem_type, buf, n, name, stat, errmsg)
@@ -186,31 +155,25 @@ contains
       call h5dclose_f(did, err)
    end subroutine read_series
 
-   !> Appends the reals x(:) to the rank-1 series did.
-   subroutine append_reals(did, x, stat, errmsg)
+   !> Appends the reals or integers x(:) to the rank-1 series did.
+   subroutine append_values(did, x, stat, errmsg)
       integer(hid_t), intent(in) :: did
-      real(dp), intent(in) :: x(:)
+      class(*), intent(in) :: x(:)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      real(dp), allocatable, target :: buf(:)
+      real(dp), allocatable, target :: r(:)
+      integer, allocatable, target :: i(:)
       stat = 0
       if (size(x) == 0) return
-      buf = x
-      call grow_and_write(did, H5T_NATIVE_DOUBLE, 1, size(x), c_loc(buf), stat, errmsg)
-   end subroutine append_reals
-
-   !> Appends the integers x(:) to the rank-1 series did.
-   subroutine append_integers(did, x, stat, errmsg)
-      integer(hid_t), intent(in) :: did
-      integer, intent(in) :: x(:)
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      integer, allocatable, target :: buf(:)
-      stat = 0
-      if (size(x) == 0) return
-      buf = x
-      call grow_and_write(did, H5T_NATIVE_INTEGER, 1, size(x), c_loc(buf), stat, errmsg)
-   end subroutine append_integers
+      select type (x)
+      type is (real(dp))
+         r = x
+         call grow_and_write(did, H5T_NATIVE_DOUBLE, 1, size(x), c_loc(r), stat, errmsg)
+      type is (integer)
+         i = x
+         call grow_and_write(did, H5T_NATIVE_INTEGER, 1, size(x), c_loc(i), stat, errmsg)
+      end select
+   end subroutine append_values
 
    !> Appends the columns x(:, k) (nrow values each) to the rank-2 series did.
    subroutine append_columns(did, x, stat, errmsg)
@@ -261,10 +224,8 @@ contains
       call h5sclose_f(fspace, err)
    end subroutine grow_and_write
 
-   !> Creates `name`, a virtual dataset (VDS) of nrow reals showing column
-   !> `column` (from 1) of the rank-2 series `source` of the file
-   !> `source_file` ('.': the same; a bare name: the file beside): a view, no
-   !> copy, read as a plain 1-D dataset.
+   !> Creates `name`, a virtual dataset (VDS) of nrow reals showing column `column`
+   !> of the rank-2 series `source` of `source_file` ('.': the same): a view, no copy.
    subroutine h5io_view_column(loc, name, source_file, source, nrow, column, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name, source_file, source

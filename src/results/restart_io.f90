@@ -1,11 +1,8 @@
 !> The pieces of a restart file (src/record/restart_point.f90): a stream of
 !> unformatted records, each part behind an eight-character tag the reader
-!> checks (a file of another layout is refused, not misread); every routine
-!> keeps the first failure in `stat`. Texts, reals, integers, logicals, an
-!> impactor (eq. 16, 21), a contact load pattern with its cached
-!> polynomials (the same bits after a restart), and the seal: the last 8
-!> bytes, zlib's CRC-32 of all before them. Not from the paper. More:
-!> docs/ROBUSTNESS.md.
+!> checks; every routine keeps the first failure in `stat`. Values, vectors,
+!> an impactor (eq. 16, 21), a contact load pattern, and the seal: the last
+!> 8 bytes, zlib's CRC-32 of all before them. More: docs/ROBUSTNESS.md.
 module restart_io
    use, intrinsic :: iso_fortran_env, only: int8, int64
    use kinds, only: dp
@@ -13,9 +10,8 @@ module restart_io
    use contact_load, only: load_pattern_t
    implicit none
    private
-   public :: put_tag, take_tag, put_text, take_text, put_real, take_real, put_int, take_int, &
-             put_flag, take_flag, put_reals, take_reals, put_ints, take_ints, put_impactor, &
-             take_impactor, put_pattern, take_pattern, put_seal, seal_holds
+   public :: put_tag, take_tag, put_text, take_text, put_value, take_value, put_array, take_reals, take_ints, &
+             put_impactor, take_impactor, put_pattern, take_pattern, put_seal, seal_holds
 
    !> Characters of a tag.
    integer, parameter :: tag_len = 8
@@ -76,119 +72,105 @@ contains
       if (n > 0) read (u, iostat=stat) text
    end subroutine take_text
 
-   !> One real.
-   subroutine put_real(u, x, stat)
+   !> One value: a real(dp), an integer, or a logical as the integer 0 or 1.
+   subroutine put_value(u, x, stat)
       integer, intent(in) :: u                      !< the open stream
-      real(dp), intent(in) :: x                     !< the value
+      class(*), intent(in) :: x                     !< the value
       integer, intent(inout) :: stat                !< 0, or the first failure
-      if (stat == 0) write (u, iostat=stat) x
-   end subroutine put_real
+      if (stat /= 0) return
+      select type (x)
+      type is (real(dp))
+         write (u, iostat=stat) x
+      type is (integer)
+         write (u, iostat=stat) x
+      type is (logical)
+         write (u, iostat=stat) merge(1, 0, x)
+      class default
+         stat = wrong_tag
+      end select
+   end subroutine put_value
 
-   !> Reads one real.
-   subroutine take_real(u, x, stat)
+   !> Reads a value written by put_value (unchanged after a failure).
+   subroutine take_value(u, x, stat)
       integer, intent(in) :: u                      !< the open stream
-      real(dp), intent(inout) :: x                  !< the value (unchanged after a failure)
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      if (stat == 0) read (u, iostat=stat) x
-   end subroutine take_real
-
-   !> One integer.
-   subroutine put_int(u, i, stat)
-      integer, intent(in) :: u                      !< the open stream
-      integer, intent(in) :: i                      !< the value
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      if (stat == 0) write (u, iostat=stat) i
-   end subroutine put_int
-
-   !> Reads one integer.
-   subroutine take_int(u, i, stat)
-      integer, intent(in) :: u                      !< the open stream
-      integer, intent(inout) :: i                   !< the value (unchanged after a failure)
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      if (stat == 0) read (u, iostat=stat) i
-   end subroutine take_int
-
-   !> One logical, as 0 or 1.
-   subroutine put_flag(u, l, stat)
-      integer, intent(in) :: u                      !< the open stream
-      logical, intent(in) :: l                      !< the value
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      call put_int(u, merge(1, 0, l), stat)
-   end subroutine put_flag
-
-   !> Reads one logical.
-   subroutine take_flag(u, l, stat)
-      integer, intent(in) :: u                      !< the open stream
-      logical, intent(inout) :: l                   !< the value (unchanged after a failure)
+      class(*), intent(inout) :: x                  !< the value
       integer, intent(inout) :: stat                !< 0, or the first failure
       integer :: i
-      i = merge(1, 0, l)
-      call take_int(u, i, stat)
-      l = i /= 0
-   end subroutine take_flag
+      if (stat /= 0) return
+      select type (x)
+      type is (real(dp))
+         read (u, iostat=stat) x
+      type is (integer)
+         read (u, iostat=stat) x
+      type is (logical)
+         read (u, iostat=stat) i
+         if (stat == 0) x = i /= 0
+      end select
+   end subroutine take_value
 
-   !> A vector of reals: its size, then its values.
-   subroutine put_reals(u, x, stat)
+   !> A vector of reals or integers: its size, then its values.
+   subroutine put_array(u, x, stat)
       integer, intent(in) :: u                      !< the open stream
-      real(dp), intent(in) :: x(:)                  !< the values
+      class(*), intent(in) :: x(:)                  !< the values
       integer, intent(inout) :: stat                !< 0, or the first failure
-      call put_int(u, size(x), stat)
-      if (stat == 0 .and. size(x) > 0) write (u, iostat=stat) x
-   end subroutine put_reals
+      call put_value(u, size(x), stat)
+      if (stat /= 0 .or. size(x) == 0) return
+      select type (x)
+      type is (real(dp))
+         write (u, iostat=stat) x
+      type is (integer)
+         write (u, iostat=stat) x
+      end select
+   end subroutine put_array
 
-   !> Reads a vector written by put_reals; with `n`, its size must be n.
+   !> Reads a vector written by put_array; with `n`, its size must be n.
    subroutine take_reals(u, x, stat, n)
       integer, intent(in) :: u                      !< the open stream
       real(dp), allocatable, intent(inout) :: x(:)  !< the values
       integer, intent(inout) :: stat                !< 0, or the first failure
       integer, intent(in), optional :: n            !< the size expected
       integer :: m
-      m = -1
-      call take_int(u, m, stat)
-      if (stat /= 0) return
-      if (m < 0 .or. m > 10**9) stat = wrong_tag
-      if (present(n)) then
-         if (m /= n) stat = wrong_tag
-      end if
+      call take_size(u, m, stat, n)
       if (stat /= 0) return
       if (allocated(x)) deallocate (x)
       allocate (x(m))
       if (m > 0) read (u, iostat=stat) x
    end subroutine take_reals
 
-   !> A vector of integers: its size, then its values.
-   subroutine put_ints(u, i, stat)
-      integer, intent(in) :: u                      !< the open stream
-      integer, intent(in) :: i(:)                   !< the values
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      call put_int(u, size(i), stat)
-      if (stat == 0 .and. size(i) > 0) write (u, iostat=stat) i
-   end subroutine put_ints
-
-   !> Reads a vector written by put_ints.
-   subroutine take_ints(u, i, stat)
+   !> Reads a vector of integers written by put_array; with `n`, its size must be n.
+   subroutine take_ints(u, i, stat, n)
       integer, intent(in) :: u                      !< the open stream
       integer, allocatable, intent(inout) :: i(:)   !< the values
       integer, intent(inout) :: stat                !< 0, or the first failure
+      integer, intent(in), optional :: n            !< the size expected
       integer :: m
-      m = -1
-      call take_int(u, m, stat)
+      call take_size(u, m, stat, n)
       if (stat /= 0) return
-      if (m < 0 .or. m > 10**9) then
-         stat = wrong_tag
-         return
-      end if
       if (allocated(i)) deallocate (i)
       allocate (i(m))
       if (m > 0) read (u, iostat=stat) i
    end subroutine take_ints
+
+   !> A vector's size; stat /= 0 when it is out of range or, with `n`, not n.
+   subroutine take_size(u, m, stat, n)
+      integer, intent(in) :: u                      !< the open stream
+      integer, intent(out) :: m                     !< the size
+      integer, intent(inout) :: stat                !< 0, or the first failure
+      integer, intent(in), optional :: n            !< the size expected
+      m = -1
+      call take_value(u, m, stat)
+      if (stat == 0 .and. (m < 0 .or. m > 10**9)) stat = wrong_tag
+      if (present(n) .and. stat == 0) then
+         if (m /= n) stat = wrong_tag
+      end if
+   end subroutine take_size
 
    !> An impactor: mass, position, velocity, force.
    subroutine put_impactor(u, imp, stat)
       integer, intent(in) :: u                      !< the open stream
       type(impactor_t), intent(in) :: imp           !< the impactor
       integer, intent(inout) :: stat                !< 0, or the first failure
-      call put_reals(u, [imp%mass, imp%w, imp%v, imp%f], stat)
+      call put_array(u, [imp%mass, imp%w, imp%v, imp%f], stat)
    end subroutine put_impactor
 
    !> Reads an impactor written by put_impactor.
@@ -201,21 +183,20 @@ contains
       if (stat == 0) imp = impactor_t(mass=x(1), w=x(2), v=x(3), f=x(4))
    end subroutine take_impactor
 
-   !> A contact load pattern, whole: radius, share, equations and
-   !> coefficients, the polynomials' interval, key and coefficients.
+   !> A contact load pattern, whole, with its cached polynomials (the same bits after a restart).
    subroutine put_pattern(u, p, stat)
       integer, intent(in) :: u                      !< the open stream
       type(load_pattern_t), intent(in) :: p         !< the pattern
       integer, intent(inout) :: stat                !< 0, or the first failure
       logical :: has_poly
-      call put_reals(u, [p%radius, p%total, p%valid, p%built_for], stat)
-      call put_int(u, p%n, stat)
-      if (p%n > 0) call put_ints(u, p%eq(:p%n), stat)
-      if (p%n > 0) call put_reals(u, p%c(:p%n), stat)
+      call put_array(u, [p%radius, p%total, p%valid, p%built_for], stat)
+      call put_value(u, p%n, stat)
+      if (p%n > 0) call put_array(u, p%eq(:p%n), stat)
+      if (p%n > 0) call put_array(u, p%c(:p%n), stat)
       has_poly = allocated(p%poly)
       if (has_poly) has_poly = p%n > 0 .and. size(p%poly, 2) >= p%n
-      call put_flag(u, has_poly, stat)
-      if (has_poly) call put_reals(u, reshape(p%poly(:, :p%n), [5*p%n]), stat)
+      call put_value(u, has_poly, stat)
+      if (has_poly) call put_array(u, reshape(p%poly(:, :p%n), [5*p%n]), stat)
    end subroutine put_pattern
 
    !> Reads a pattern written by put_pattern.
@@ -229,7 +210,7 @@ contains
       call take_reals(u, x, stat, 10)
       if (stat /= 0) return
       p%radius = x(1);  p%total = x(2);  p%valid = x(3:4);  p%built_for = x(5:10)
-      call take_int(u, p%n, stat)
+      call take_value(u, p%n, stat)
       if (stat /= 0) return
       if (p%n > 0) then
          call take_ints(u, eq, stat)
@@ -242,7 +223,7 @@ contains
          p%c = [real(dp) ::]
       end if
       has_poly = .false.
-      call take_flag(u, has_poly, stat)
+      call take_value(u, has_poly, stat)
       if (has_poly) call take_reals(u, x, stat, 5*p%n)
       if (.not. has_poly .or. stat /= 0) return
       if (allocated(p%poly)) deallocate (p%poly)
@@ -250,8 +231,7 @@ contains
       p%poly(:, :) = reshape(x, [5, p%n])
    end subroutine take_pattern
 
-   !> Ends a file written on `u` (opened with action = 'readwrite'): the
-   !> CRC-32 of all it holds, appended.
+   !> Appends the CRC-32 of all `u` holds (opened with action = 'readwrite').
    subroutine put_seal(u, stat)
       integer, intent(in) :: u                      !< the open stream, at its end
       integer, intent(inout) :: stat                !< 0, or the first failure
@@ -265,8 +245,7 @@ contains
       if (stat == 0) write (u, pos=next, iostat=stat) crc32(bytes)
    end subroutine put_seal
 
-   !> The file open on `u` ends with the CRC-32 of all before it
-   !> (put_seal); `u` is at its start again on return.
+   !> The file on `u` ends with the CRC-32 of all before it; `u` back at its start.
    logical function seal_holds(u) result(holds)
       integer, intent(in) :: u                      !< the open stream
       integer(int8), allocatable :: bytes(:)

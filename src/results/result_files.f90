@@ -1,11 +1,8 @@
-!> The result files of every analysis: the claim before any work (above
-!> claim_results), the column files and their headers, the history's
-!> columns (one table for <prefix>_history.dat and /history of <prefix>.h5)
-!> and the summary's items (one list for <prefix>_summary.dat and /summary).
-!> A column file: a title, the deck echo ('# ' lines), a line per column
-!> with its meaning and unit, the names on one '#' line, the rows; the
-!> summary: 'key = value' lines, the unit in the key (peak_force_N). Not
-!> from the paper. More: docs/OUTPUT.md.
+!> The result files of every analysis: the claim before any work, the column
+!> files (title, deck echo, a line per column, the names, the rows), the
+!> history's columns (for <prefix>_history.dat and /history of <prefix>.h5)
+!> and the summary's items ('key = value', the unit in the key; also /summary).
+!> Not from the paper. More: docs/OUTPUT.md.
 module result_files
    use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
@@ -87,12 +84,10 @@ module result_files
       logical :: created = .false.                 !< the claim created it (empty)
    end type results_claim_t
 
-   !> What a file's temporary name adds to it: a file replaced in one step
-   !> is written under <file>.tmp, then renamed (the summary, the XDMF file).
+   !> A file replaced in one step is written under <file>.tmp, then renamed.
    character(len=*), parameter :: temporary = '.tmp'
 
-   !> Bytes reserved for the summary before a run (reserve_summary): it is
-   !> a few kilobytes.
+   !> Bytes reserved for the summary before a run (reserve_summary).
    integer, parameter :: summary_reserve = 65536
 
    !> Bytes of a history row on disk (twice that with ply damage): a power of
@@ -117,8 +112,7 @@ contains
 
    ! ============================================================ claiming
 
-   !> The result files of an analysis (&analysis kind), after the prefix;
-   !> the first is the one a run claims and locks.
+   !> The result files of an analysis after the prefix; a run claims and locks the first.
    pure function result_suffixes(analysis_kind) result(list)
       character(len=*), intent(in) :: analysis_kind   !< 'impact', 'static', 'modes' or 'pressure'
       character(len=24), allocatable :: list(:)
@@ -130,15 +124,10 @@ contains
       end select
    end function result_suffixes
 
-   !> Nothing lost: before any work a run claims its files (result_suffixes):
-   !> their names fit the file system (NAME_MAX, PATH_MAX), the prefix's
-   !> directories are created, no file of the run exists unless &output
-   !> overwrite, and none, nor its temporary name <file>.tmp, is a symbolic
-   !> link or anything but a regular file (no write goes through a link);
-   !> then the first file is created exclusively (of two runs with one prefix
-   !> one wins) and locked until the run ends. Each file is checked again
-   !> when it is opened (open_columns) or written under its temporary name
-   !> and renamed (the summary). Messages name the deck, the prefix, the file.
+   !> Before any work a run claims its files (result_suffixes): their names
+   !> fit (NAME_MAX, PATH_MAX), the prefix's directories are made, no file
+   !> exists unless &output overwrite, none (nor <file>.tmp) is a link or not a
+   !> regular file; the first is created exclusively and locked until the end.
    subroutine claim_results(deck, suffixes, claim, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< effective deck (prefix, overwrite)
       character(len=*), intent(in) :: suffixes(:)   !< the run's file names after the prefix
@@ -210,9 +199,8 @@ contains
       why = name_problem(prefix // trim(suffixes(longest)) // temporary, name_max(prefix), path_max)
    end function names_problem
 
-   !> Why the run cannot write its files ('' when it can): one of them or its
-   !> temporary name is a link, a directory or another kind of file, or one
-   !> exists and overwrite is false.
+   !> Why the run cannot write its files ('' when it can): a link, not a regular
+   !> file, or a file that exists without overwrite.
    function files_problem(prefix, suffixes, overwrite) result(why)
       character(len=*), intent(in) :: prefix        !< the prefix
       character(len=*), intent(in) :: suffixes(:)   !< the file names after it
@@ -241,8 +229,7 @@ contains
       end do files
    end function files_problem
 
-   !> ' (the file system is read-only)' when the prefix is on one, '' else:
-   !> for the message of a file that could not be made.
+   !> ' (the file system is read-only)' when the prefix is on one, '' else.
    function read_only_note(prefix) result(note)
       character(len=*), intent(in) :: prefix        !< the prefix
       character(len=:), allocatable :: note
@@ -278,8 +265,7 @@ contains
       errmsg = text
    end subroutine keep_failure
 
-   !> Opens <prefix><suffix> (claimed before) and writes its header: title,
-   !> deck echo, the columns with their meanings, the names.
+   !> Opens <prefix><suffix> (claimed before) and writes its header (write_header).
    subroutine open_columns(deck, suffix, title, names, texts, unit, stat, errmsg)
       type(deck_t), intent(in) :: deck            !< effective deck (echoed; prefix)
       character(len=*), intent(in) :: suffix      !< file name after the prefix, e.g. '_static.dat'
@@ -412,8 +398,7 @@ contains
 
    ! ============================================================= summary
 
-   !> Appends a real item: the file's key (with its unit), the SI name and
-   !> unit, the SI value and the factor to the file's unit.
+   !> Appends a real item: the file's key, the SI name, unit and value, the file's scale.
    subroutine summary_real(items, key, name, unit, si, scale)
       type(summary_item_t), allocatable, intent(inout) :: items(:)
       character(len=*), intent(in) :: key, name, unit
@@ -440,8 +425,7 @@ contains
       call append(items, key, key, '-', value, 0.0_dp, item_text)
    end subroutine summary_text
 
-   !> Appends an item, component by component (a structure constructor with
-   !> deferred-length components loses them in gfortran 12).
+   !> Appends an item, component by component (gfortran 12's constructor loses them).
    subroutine append(items, key, name, unit, text, si, kind)
       type(summary_item_t), allocatable, intent(inout) :: items(:)
       character(len=*), intent(in) :: key, name, unit, text
@@ -462,10 +446,8 @@ contains
       call move_alloc(grown, items)
    end subroutine append
 
-   !> Reserves the summary's space before the run fills the disk:
-   !> <prefix>_summary.dat.tmp of summary_reserve bytes, which
-   !> write_summary_file writes over (no new blocks) and renames into place,
-   !> so that a run stopped by a full disk still says how far it got.
+   !> Reserves <prefix>_summary.dat.tmp (summary_reserve bytes), which
+   !> write_summary_file writes over: a run stopped by a full disk still reports.
    subroutine reserve_summary(deck, stat, errmsg)
       type(deck_t), intent(in) :: deck                  !< effective deck (prefix)
       integer, intent(out) :: stat                      !< 0 on success
@@ -493,10 +475,8 @@ contains
       if (stat /= 0) errmsg = short_path(path) // ': ' // trim(iomsg)
    end subroutine reserve_summary
 
-   !> Writes <prefix>_summary.dat: title, deck echo, 'key = value' lines.
-   !> It is written whole to <prefix>_summary.dat.tmp (the space
-   !> reserve_summary reserved, or a file created exclusively) and renamed
-   !> into place, so the file is either the previous one or complete.
+   !> Writes <prefix>_summary.dat (title, deck echo, 'key = value' lines) whole
+   !> to <prefix>_summary.dat.tmp and renames it: the previous file or complete.
    subroutine write_summary_file(deck, items, stat, errmsg)
       type(deck_t), intent(in) :: deck                  !< effective deck
       type(summary_item_t), intent(in) :: items(:)      !< the summary
@@ -533,6 +513,5 @@ contains
       if (stat == 0) call rename_file(path // temporary, path, stat, iomsg)
       if (stat /= 0) errmsg = short_path(path) // ': ' // trim(iomsg)
    end subroutine write_summary_file
-
 
 end module result_files

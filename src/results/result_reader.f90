@@ -1,8 +1,6 @@
-!> Reads the result files result_files writes: the summary
-!> (<prefix>_summary.dat: after the '#' lines, one 'key = value' line per
-!> item, the unit in the key's name) and a column file (after the '#'
-!> header, one row of numbers per line; the history's columns are those of
-!> history_columns of result_files). Not from the paper. More: docs/OUTPUT.md.
+!> Reads the result files result_files writes: the summary ('key = value'
+!> lines after the '#' lines) and a column file (rows of numbers after the
+!> '#' header). Not from the paper. More: docs/OUTPUT.md.
 module result_reader
    use kinds, only: dp, msg_len
    use result_files, only: nhist
@@ -91,8 +89,7 @@ contains
       if (i > 0) text = trim(s%texts(i))
    end function summary_string
 
-   !> The rows of a column file, table(ncol, rows): every line after the
-   !> header ('#' lines) and not blank, its first ncol numbers.
+   !> The rows of a column file, table(ncol, rows): each line's first ncol numbers.
    subroutine read_columns(path, ncol, table, stat)
       character(len=*), intent(in) :: path                 !< the file
       integer, intent(in) :: ncol                          !< columns to keep
@@ -124,8 +121,7 @@ contains
       if (stat == 0 .and. nrow == 0) stat = 1
    end subroutine read_columns
 
-   !> The rows of <prefix>_history.dat, table(nhist, rows), the columns of
-   !> every run in the order of history_columns (col_time, col_force, ...).
+   !> The rows of <prefix>_history.dat, table(nhist, rows), in history_columns' order.
    subroutine read_history(path, table, stat)
       character(len=*), intent(in) :: path                 !< <prefix>_history.dat
       real(dp), allocatable, intent(out) :: table(:,:)     !< the rows

@@ -1,10 +1,8 @@
 !> The full results of a run in one HDF5 file, <prefix>.h5 (&output hdf5):
 !> the deck, the mesh, the history's columns, the nodal fields every
-!> fields_every steps, the state at the largest force (/peak), the summary,
-!> with &strength /strength (damage_record.f90); SI units, every dataset
-!> checksummed. The layout: docs/OUTPUT.md. A file that opens at every
-!> instant: above results_open; output in blocks once a second: above
-!> results_tick. Called by src/record/run_recorder.f90. Not from the paper.
+!> fields_every steps, the state at the largest force (/peak), the summary;
+!> SI units, every dataset checksummed, written in blocks once a second.
+!> The layout: docs/OUTPUT.md. Not from the paper.
 module results_hdf5
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char
@@ -31,16 +29,14 @@ module results_hdf5
              results_tick, results_flush, results_leave, results_closing, results_finish
 
    integer, parameter :: units_len = 8
-   !> Units of the nodal fields u, v, w, psi_x, psi_y.
-   character(len=units_len), parameter :: field_units(ndof_node) = [character(len=units_len) :: &
-      'm', 'm', 'm', 'rad', 'rad']
-   !> Values per chunk of a series (4 KiB); the fields' chunks hold as many
-   !> whole snapshots as fit (one at least).
+   !> Units of /fields' time, step, force and nodal fields u, v, w, psi_x, psi_y.
+   character(len=units_len), parameter :: snap_units(3 + ndof_node) = [character(len=units_len) :: &
+      's', '-', 'N', 'm', 'm', 'm', 'rad', 'rad']
+   !> Values per chunk of a series (4 KiB; the fields': whole snapshots, one at least).
    integer, parameter :: hist_chunk = 512
    !> Wall time between two flushes (s): a killed run loses at most this.
    real(dp), parameter :: flush_seconds = 1.0_dp
-   !> Rows that may wait before a flush (65536 rows of 18 numbers: 9 MB), and
-   !> the memory the waiting snapshots may take (min_snapshots at least).
+   !> Rows that may wait before a flush, and the memory the waiting snapshots may take.
    integer, parameter :: flush_rows = 65536, min_snapshots = 16
    integer(int64), parameter :: buffer_bytes = 8*1024*1024
    !> An open results file and the ids of its growing datasets.
@@ -51,8 +47,7 @@ module results_hdf5
       integer(hid_t) :: fid = -1                        !< the file while it is open (a flush, the end)
       integer(hid_t) :: hist(nhist_damage) = -1       !< /history/<column> (result_files: history_columns)
       integer :: ncol = 0                               !< the run's columns (history_width)
-      integer(hid_t) :: snap_time = -1, snap_step = -1, snap_force = -1   !< /fields/time, step, force
-      integer(hid_t) :: snap_field(ndof_node) = -1      !< /fields/u, v, w, psi_x, psi_y
+      integer(hid_t) :: snaps(3 + ndof_node) = -1       !< /fields/time, step, force, u, v, w, psi_x, psi_y
       integer, allocatable :: eq(:,:)                   !< (ndof_node, nnode) equation numbers, 0 held
       real(dp) :: peak_force = 0.0_dp                   !< largest contact force so far (N)
       type(xdmf_t) :: xdmf                              !< <prefix>.xdmf, for ParaView (src/results/results_xdmf.f90)
@@ -104,16 +99,11 @@ contains
       rf%peak_fields = 0.0_dp
    end subroutine prepare
 
-   !> A file that opens at every instant: results_open writes all but what
-   !> grows (deck, mesh, empty series, /peak, /summary status 'running') under
-   !> <prefix>.h5.tmp and renames it into place (a failure leaves no file);
-   !> from then on the file is open only while it is written, once a second,
-   !> in HDF5's SWMR mode, which keeps it consistent on disk at every instant:
-   !> a killed run leaves a file that reads, up to its last flush, status
-   !> 'running'; a kill inside a write leaves it marked open (h5clear -s, or
-   !> impact --restart, clears the mark). The XDMF views, which SWMR cannot
-   !> create, are in their own file; /summary is written at the end
-   !> (results_finish) with the file open as usual.
+   !> Writes all but what grows (deck, mesh, empty series, /peak, /summary
+   !> status 'running') under <prefix>.h5.tmp and renames it into place; from
+   !> then on the file is open only while it is written, in SWMR mode, which
+   !> keeps it readable on disk at every instant (a kill inside a write leaves
+   !> it marked open: h5clear -s, or impact --restart, clears the mark).
    subroutine results_open(deck, msh, rf, stat, errmsg)
       type(deck_t), intent(in) :: deck   !< The effective deck.
       type(mesh_t), intent(in) :: msh   !< The mesh with its equation numbers.
@@ -157,9 +147,8 @@ contains
       rf%active = .true.
    end subroutine results_open
 
-   !> A restart (src/record/restart_point.f90): <prefix>.h5 cut back to its
-   !> restart point pt (rows, snapshots, peak); a stopped run's /summary goes
-   !> back to 'running', its /strength goes; the XDMF views are made anew.
+   !> A restart: <prefix>.h5 cut back to its restart point pt; /summary back to
+   !> 'running', /strength gone, the XDMF views made anew.
    subroutine results_reopen(deck, msh, pt, rf, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(mesh_t), intent(in) :: msh               !< the mesh with its equation numbers
@@ -183,11 +172,8 @@ contains
       do c = 1, rf%ncol
          call cut(rf%hist(c), 'history/' // trim(history_columns(c)%name), pt%rows)
       end do
-      call cut(rf%snap_time, 'fields/time', pt%snaps)
-      call cut(rf%snap_step, 'fields/step', pt%snaps)
-      call cut(rf%snap_force, 'fields/force', pt%snaps)
-      do k = 1, ndof_node
-         call cut(rf%snap_field(k), 'fields/' // trim(freedom_name(k)), pt%snaps)
+      do k = 1, size(rf%snaps)
+         call cut(rf%snaps(k), snap_name(k), pt%snaps)
       end do
       if (stat == 0) call xdmf_cut(rf%xdmf, deck, msh, rf%fid, pt%snaps, stat, why)
       if (stat == 0) call h5io_update_attr(rf%fid, 'history', 'rows', pt%rows, stat, why)
@@ -236,9 +222,8 @@ contains
       rf%rows(:, rf%nrow) = row
    end subroutine results_append_history
 
-   !> The nodal fields of the state at the end of a step: a snapshot for
-   !> /fields when `snapshot`, and /peak's state when the force is the largest
-   !> so far; both kept for the next flush.
+   !> The nodal fields at the end of a step, kept for the next flush: a snapshot
+   !> when `snapshot`, /peak's state when the force is the largest so far.
    subroutine results_state(rf, step, time, force, d, snapshot, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file
       integer, intent(in) :: step                   !< time step of the state
@@ -264,10 +249,9 @@ contains
       rf%peak_waiting = .true.
    end subroutine results_state
 
-   !> Output in blocks: rows, snapshots and the peak wait in memory for
-   !> results_flush: once flush_seconds have passed at the end of a step (a
-   !> restart point is then due; the clock runs without HDF5 too), when the
-   !> buffers are full, on a warning, at the end (docs/PERFORMANCE.md).
+   !> Rows, snapshots and the peak wait in memory for results_flush: once
+   !> flush_seconds have passed (a restart point is then due), when the
+   !> buffers are full, on a warning, at the end.
    subroutine results_tick(rf, due, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file
       logical, intent(out) :: due                   !< a flush was made: the files hold every step so far
@@ -354,17 +338,17 @@ contains
       stat = 0
       n = rf%nsnap
       if (n == 0) return
-      call h5io_open_dataset(rf%fid, 'fields/time', rf%snap_time, stat, why)
-      if (stat == 0) call h5io_append_block(rf%snap_time, rf%snap(1, :n), stat, why)
-      if (stat == 0) call h5io_open_dataset(rf%fid, 'fields/step', rf%snap_step, stat, why)
-      if (stat == 0) call h5io_append_block(rf%snap_step, nint(rf%snap(2, :n)), stat, why)
-      if (stat == 0) call h5io_open_dataset(rf%fid, 'fields/force', rf%snap_force, stat, why)
-      if (stat == 0) call h5io_append_block(rf%snap_force, rf%snap(3, :n), stat, why)
-      fields: do k = 1, ndof_node
-         if (stat /= 0) exit fields
-         call h5io_open_dataset(rf%fid, 'fields/' // trim(freedom_name(k)), rf%snap_field(k), stat, why)
-         if (stat == 0) call h5io_append_block(rf%snap_field(k), rf%snap_fields(k, :, :n), stat, why)
-      end do fields
+      do k = 1, size(rf%snaps)
+         if (stat == 0) call h5io_open_dataset(rf%fid, snap_name(k), rf%snaps(k), stat, why)
+         if (stat /= 0) exit
+         if (k == 2) then
+            call h5io_append_block(rf%snaps(k), nint(rf%snap(k, :n)), stat, why)
+         else if (k <= 3) then
+            call h5io_append_block(rf%snaps(k), rf%snap(k, :n), stat, why)
+         else
+            call h5io_append_block(rf%snaps(k), rf%snap_fields(k - 3, :, :n), stat, why)
+         end if
+      end do
       if (stat == 0) call xdmf_grow(rf%xdmf, rf%fid, rf%snap_fields(:, :, :n), stat, why)
    end subroutine write_snapshots
 
@@ -391,15 +375,12 @@ contains
       integer, intent(inout) :: stat                !< 0 on success; the first failure is kept
       character(len=*), intent(inout) :: why        !< reason on failure
       character(len=msg_len) :: text
-      integer :: c, k, ios
+      integer :: c, ios
       do c = 1, size(rf%hist)
          call close_one(rf%hist(c))
       end do
-      call close_one(rf%snap_time)
-      call close_one(rf%snap_step)
-      call close_one(rf%snap_force)
-      do k = 1, ndof_node
-         call close_one(rf%snap_field(k))
+      do c = 1, size(rf%snaps)
+         call close_one(rf%snaps(c))
       end do
       if (rf%fid < 0) return
       call h5io_close(rf%fid, ios, text)
@@ -421,8 +402,7 @@ contains
       rf%broken = rf%active
    end subroutine results_leave
 
-   !> The end of a run: what waits is written, and the file opened as usual
-   !> (not SWMR) for /summary and /strength until results_finish.
+   !> The end of a run: what waits written, the file opened (not SWMR) until results_finish.
    subroutine results_closing(rf)
       type(results_file_t), intent(inout) :: rf     !< the results file
       character(len=msg_len) :: why
@@ -434,8 +414,7 @@ contains
       if (rf%broken) rf%active = .false.            ! (nothing more is written into it)
    end subroutine results_closing
 
-   !> Writes /summary (the items of <prefix>_summary.dat, SI, the status),
-   !> closes the file and writes the XDMF's last XML (stat 1 after a failure).
+   !> Writes /summary (SI), closes the file and writes the XDMF's last XML.
    subroutine results_finish(rf, status, items, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file; inactive on return
       character(len=*), intent(in) :: status        !< 'completed', 'failed at step N', ...
@@ -525,20 +504,16 @@ contains
       call h5io_group(rf%fid, 'fields', stat, why)
       call attr_unit(rf%fid, 'fields', 'fields_every', fields_every, 'steps', stat, why)
       call attr_unit(rf%fid, 'fields', 'snapshots', 0, '-', stat, why)
-      if (stat == 0) call h5io_create_series(rf%fid, 'fields/time', h5io_real, hist_chunk, rf%snap_time, stat, why)
-      call attr_text(rf%fid, 'fields/time', 'units', 's', stat, why)
-      if (stat == 0) call h5io_create_series(rf%fid, 'fields/step', h5io_integer, hist_chunk, rf%snap_step, &
-         stat, why)
-      call attr_text(rf%fid, 'fields/step', 'units', '-', stat, why)
-      if (stat == 0) call h5io_create_series(rf%fid, 'fields/force', h5io_real, hist_chunk, rf%snap_force, &
-         stat, why)
-      call attr_text(rf%fid, 'fields/force', 'units', 'N', stat, why)
-      snapshot_fields: do k = 1, ndof_node
-         if (stat /= 0) exit snapshot_fields
-         call h5io_create_columns(rf%fid, 'fields/'//trim(freedom_name(k)), nnode, hist_chunk, rf%snap_field(k), &
-            stat, why)
-         call attr_text(rf%fid, 'fields/'//trim(freedom_name(k)), 'units', field_units(k), stat, why)
-      end do snapshot_fields
+      snapshot_series: do k = 1, size(rf%snaps)
+         if (stat /= 0) exit snapshot_series
+         if (k <= 3) then
+            call h5io_create_series(rf%fid, snap_name(k), merge(h5io_integer, h5io_real, k == 2), hist_chunk, &
+               rf%snaps(k), stat, why)
+         else
+            call h5io_create_columns(rf%fid, snap_name(k), nnode, hist_chunk, rf%snaps(k), stat, why)
+         end if
+         call attr_text(rf%fid, snap_name(k), 'units', snap_units(k), stat, why)
+      end do snapshot_series
    end subroutine create_fields
 
    !> /peak: the state of the step of the largest force so far (none yet: 0).
@@ -556,7 +531,7 @@ contains
       peak_fields: do k = 1, ndof_node
          if (stat /= 0) exit peak_fields
          call h5io_write(fid, 'peak/'//trim(freedom_name(k)), [(0.0_dp, n = 1, nnode)], stat, why)
-         call attr_text(fid, 'peak/'//trim(freedom_name(k)), 'units', field_units(k), stat, why)
+         call attr_text(fid, 'peak/'//trim(freedom_name(k)), 'units', snap_units(3 + k), stat, why)
       end do peak_fields
    end subroutine create_peak
 
@@ -571,8 +546,7 @@ contains
       if (stat == 0) call h5io_set_attr(fid, obj, name, trim(value), stat, why)
    end subroutine attr_text
 
-   !> Attribute `name` of obj, real(dp) or integer, and its unit in
-   !> `<name>_units`; nothing after a failure.
+   !> Attribute `name` of obj, real(dp) or integer, and `<name>_units`; nothing after a failure.
    subroutine attr_unit(fid, obj, name, value, units, stat, why)
       integer(hid_t), intent(in) :: fid             !< the open results file
       character(len=*), intent(in) :: obj, name     !< the object, the attribute
@@ -583,6 +557,18 @@ contains
       if (stat == 0) call h5io_set_attr(fid, obj, name, value, stat, why)
       if (stat == 0) call h5io_set_attr(fid, obj, name//'_units', units, stat, why)
    end subroutine attr_unit
+
+   !> /fields/<name> of the k-th snapshot series: time, step, force, then the nodal fields.
+   pure function snap_name(k) result(name)
+      integer, intent(in) :: k                      !< the series (rf%snaps)
+      character(len=:), allocatable :: name
+      character(len=5), parameter :: scalars(3) = [character(len=5) :: 'time', 'step', 'force']
+      if (k <= 3) then
+         name = 'fields/' // trim(scalars(k))
+      else
+         name = 'fields/' // trim(freedom_name(k - 3))
+      end if
+   end function snap_name
 
    !> The nodal values of the freedoms, 0 where held (eq = 0).
    pure function nodal_values(eq, d) result(f)
