@@ -11,16 +11,16 @@
 # estimated error that the axis gives (the time part, the mesh part) as an
 # error bar; the run whose results the summary gives is the large red
 # point, with its whole error. Columns: 2 role, 5 dt_us, 9 element_size_rel,
-# 11 chosen, 12 state, 13-18 the results, 19-24 their errors, 25-30 the
-# time parts, 31-36 the mesh parts.
+# 11 chosen, 12 state, 13-19 the results, 20-26 their errors, 27-33 the
+# time parts, 34-40 the mesh parts.
 if (!exists("prefix")) prefix = 'out/clamped'
 file = prefix.'_accuracy.dat'
-names = "peak_force_N max_deflection_mm contact_duration_us time_of_peak_us max_strain_y_back max_failure_index"
-labels = "'peak force (N)' 'max deflection (mm)' 'contact duration (us)' 'time of peak (us)' 'max back-face strain y' 'max failure index'"
+names = "peak_force_N max_deflection_mm contact_duration_us time_of_peak_us max_strain_y_back max_failure_index damage_dissipated_J"
+labels = "'peak force (N)' 'max deflection (mm)' 'contact duration (us)' 'time of peak (us)' 'max back-face strain y' 'max failure index' 'damage dissipated (J)'"
 
-# the results the file has (the failure index only with &strength)
+# the results the file has (the failure index only with &strength, the dissipated energy with ply damage)
 n = 0
-do for [i=1:6] {
+do for [i=1:7] {
     stats file using (strcol(12) eq 'done' ? column(12+i) : NaN) nooutput
     if (exists("STATS_records")) { if (STATS_records > 0) { n = i } }
 }
@@ -38,9 +38,9 @@ set offsets graph 0.05, graph 0.05, graph 0.1, graph 0.1
 on_axis(role) = strcol(12) eq 'done' && (strcol(2) eq role || (role eq 'mesh' && strcol(2) eq 'time' && $3 == 0))
 do for [i=1:n] {
     v = 12 + i
-    e = 18 + i
-    et = 24 + i
-    em = 30 + i
+    e = 19 + i
+    et = 26 + i
+    em = 33 + i
     set ylabel word(labels, i) noenhanced
     set xlabel "time step dt (us), mesh level 0"
     plot file using (on_axis('time') ? $5 : NaN):v:(column(et) == column(et) ? column(et) : 0) \

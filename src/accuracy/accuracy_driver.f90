@@ -19,7 +19,7 @@ module accuracy_driver
    use result_files, only: results_claim_t, claim_results, release_results
    use child_process, only: program_path, usable_cpus, pass_stops_to_children, stop_caught
    use accuracy_runs, only: run_t, launcher_t, nq, result_keys, run_planned, state_planned, state_done, state_failed, &
-      state_skipped, predicted_run_cost, ladder_name, error_scale
+      state_skipped, predicted_run_cost, ladder_name, error_scale, iq_failure
    use accuracy_ladder, only: ladder_t, judged_t, choice_t, build_axes, judge_run, choose_run, final_run, ladder_run, &
       time_partner, cross_needed, done_run
    use accuracy_report, only: accuracy_outcome_t, write_accuracy_table, write_accuracy_summary, report_terminal
@@ -294,7 +294,7 @@ contains
          where (lad%runs%state == state_done .and. lad%runs%has(1)) lad%runs%contact_radius = &   ! Hertz: sqrt(R (F/k)^(2/3))
             sqrt(0.5_dp*deck%diameter*(max(lad%runs%q(1), 0.0_dp)/deck%k)**(2.0_dp/3.0_dp))
          lad%estimated = lad%runs(1)%has
-         lad%estimated(nq) = lad%estimated(nq) .and. strength_given(deck)
+         lad%estimated(iq_failure) = lad%estimated(iq_failure) .and. strength_given(deck)
          lad%targeted = lad%targeted .and. lad%estimated
          call build_axes(lad)
          if (stop_caught() /= 0) exit
@@ -408,7 +408,7 @@ contains
       end do
       rest = trim(adjustl(rest))
       targeted = rest == 'all'
-      if (rest == 'default' .or. len(rest) == 0) targeted = [.true., .true., .true., .false., .false., .true.]
+      if (rest == 'default' .or. len(rest) == 0) targeted = [.true., .true., .true., .false., .false., .true., .true.]
       if (any(targeted)) return
       do while (len(rest) > 0)
          cut = index(rest // ' ', ' ')
@@ -418,7 +418,8 @@ contains
          if (iq == 0) then
             stat = 1
             errmsg = deck%source // ': &accuracy: results: ' // rest(:cut - 1) // ' is not one of default all ' // &
-               'peak_force_N max_deflection_mm contact_duration_us time_of_peak_us max_strain_y_back max_failure_index'
+               'peak_force_N max_deflection_mm contact_duration_us time_of_peak_us max_strain_y_back max_failure_index ' &
+               // 'damage_dissipated_J'
             return
          end if
          targeted(iq) = .true.

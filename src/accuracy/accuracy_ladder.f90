@@ -19,7 +19,7 @@ module accuracy_ladder
    !> The two axes.
    integer, parameter :: axis_time = 1, axis_mesh = 2
    !> The results that are times read off the steps: the contact's duration, the time of the peak.
-   logical, parameter :: time_results(nq) = [.false., .false., .true., .true., .false., .false.]
+   logical, parameter :: time_results(nq) = [.false., .false., .true., .true., .false., .false., .false.]
    !> Orders: the method's, and the asymptotic range, of each axis.
    real(dp), parameter :: order_theory(2) = [2.0_dp, 2.0_dp], order_low(2) = [1.5_dp, 1.0_dp], &
       order_high(2) = [2.7_dp, 2.5_dp]

@@ -15,17 +15,19 @@ module accuracy_runs
    use scene_model, only: scene_t
    implicit none
    private
-   public :: nq, iq_force, iq_peak_time, result_keys, result_units, run_t, launcher_t, run_planned, maxima_t, force_maxima
+   public :: nq, iq_force, iq_peak_time, iq_failure, result_keys, result_units, run_t, launcher_t, run_planned, &
+      maxima_t, force_maxima
    public :: state_planned, state_done, state_failed, state_skipped, state_stopped, fit_costs, predicted_run_cost, &
              ladder_name, error_scale, is_ladder
 
-   !> The results an accuracy run estimates: their summary keys and units (the last: &strength).
-   integer, parameter :: nq = 6
+   !> The results an accuracy run estimates: their summary keys and units (the last two: with
+   !> &strength, with ply damage).
+   integer, parameter :: nq = 7
    character(len=*), parameter :: result_keys(nq) = [character(len=19) :: 'peak_force_N', 'max_deflection_mm', &
-      'contact_duration_us', 'time_of_peak_us', 'max_strain_y_back', 'max_failure_index']
-   character(len=*), parameter :: result_units(nq) = [character(len=2) :: 'N', 'mm', 'us', 'us', '-', '-']
-   !> The places in result_keys of the peak force, the contact duration and the time of the peak.
-   integer, parameter :: iq_force = 1, iq_duration = 3, iq_peak_time = 4
+      'contact_duration_us', 'time_of_peak_us', 'max_strain_y_back', 'max_failure_index', 'damage_dissipated_J']
+   character(len=*), parameter :: result_units(nq) = [character(len=2) :: 'N', 'mm', 'us', 'us', '-', '-', 'J']
+   !> The places in result_keys of the peak force, the contact duration, the time of the peak, the failure index.
+   integer, parameter :: iq_force = 1, iq_duration = 3, iq_peak_time = 4, iq_failure = 6
 
    !> States of a run (stopped: by a stop signal to the accuracy run).
    integer, parameter :: state_planned = 0, state_running = 1, state_done = 2, state_failed = 3, state_skipped = 4, &
