@@ -104,7 +104,7 @@ contains
             err_mesh = merge(jd%err_mesh, err_time, lad%estimated)
          end if
          h_rel = sqrt(real(lad%runs(1)%nx, dp)*real(lad%runs(1)%ny, dp)/(real(r%nx, dp)*real(r%ny, dp)))
-         write (u, '(a,1x,a,2(1x,i3),es15.6e3,2(1x,i5),f9.5,f9.5,es12.4,1x,i1,1x,a,24es16.7e3)') trim(r%name), &
+         write (u, '(a,1x,a,2(1x,i3),es15.6e3,2(1x,i5),f9.5,f9.5,es12.4,1x,i1,1x,a,*(es16.7e3))') trim(r%name), &
             trim(r%role), r%k, r%j, r%dt*1.0e6_dp, r%nx, r%ny, r%grading, h_rel, r%cpu_s, merge(1, 0, chosen), &
             state_words(r%state), q, err, err_time, err_mesh
       end subroutine write_row
