@@ -21,7 +21,8 @@ module element_matrices
    public :: element_geometry_t, element_geometry, element_mass, element_stiffness, &
              element_nonlinear_force, element_internal_force, element_strain_energy, &
              element_inplane_strain, element_gauss_point, point_derivs, element_tangent_stiffness, &
-             element_pressure_load, element_mass_integrals, ngp_full, nfe_elem
+             element_pressure_load, element_mass_integrals, ngp_full, nfe_elem, point_strains, &
+             shear_strains
 
    !> Gauss points of the full (3x3) rule.
    integer, parameter :: ngp_full = 9

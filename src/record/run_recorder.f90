@@ -25,7 +25,7 @@ module run_recorder
    use results_hdf5, only: results_file_t, results_open, results_append_history, results_state, results_tick, &
       results_flush, results_leave, results_closing, results_finish
    use damage_record, only: damage_t, damage_open, damage_step, damage_peak, damage_close
-   use plate_damage, only: damage_energy, damage_wanted
+   use plate_damage, only: damage_wanted
    use progress_line, only: progress_t, progress_start, progress_step, progress_end
    use step_peak, only: peak_track_t, peak_sample, peak_between, zero_crossing
    implicit none
@@ -203,7 +203,7 @@ contains
       rec%solves_before = solver%solves
       associate (plate => st%plate, imp => st%imp)
       call add_contact_work(rec, st)
-      if (solver%damage%on) rec%u_damage = damage_energy(solver%damage, model, plate%d)
+      rec%u_damage = solver%damage%u_lost
       rec%dissipated = solver%damage%dissipated
       fig%w_plate = pattern_mean(st%cit%pattern, plate%d)
       fig%strain_y = back_face_strain(model, plate%d)

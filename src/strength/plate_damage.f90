@@ -17,10 +17,11 @@ module plate_damage
    use shape_functions, only: nen
    use mesh, only: nfe
    use plate_model, only: model_t, gather_element, scatter_add_element
+   use element_matrices, only: point_strains, shear_strains
    use deck_schema, only: deck_t, strength_given, is_given
    implicit none
    private
-   public :: plate_damage_t, damage_init, damage_update, damage_force, damage_energy, damage_counts, damage_wanted
+   public :: plate_damage_t, damage_init, damage_update, damage_force, damage_counts, damage_wanted
 
    !> Gauss points per element (the 3 x 3 of the membrane and bending terms).
    integer, parameter :: ngp = 9
@@ -40,6 +41,7 @@ module plate_damage
       real(dp), allocatable :: das(:,:,:)        !< (2, 2, nelem) dAbar of the element
       logical, allocatable :: hit(:)             !< (nelem) a ply of the element is damaged
       real(dp) :: dissipated = 0.0_dp            !< energy dissipated, whole plate (J)
+      real(dp) :: u_lost = 0.0_dp                !< damage_energy at the last update's displacements (J)
       integer :: snapback_points = 0             !< ply points whose strengths the snap-back guard reduced
    end type plate_damage_t
 
@@ -157,7 +159,8 @@ contains
          end if
       end do elements
       dmg%hit_any = any(dmg%hit)
-      dmg%dissipated = dmg%dissipated + u_before - damage_energy(dmg, model, d)
+      dmg%u_lost = damage_energy(dmg, model, d)
+      dmg%dissipated = dmg%dissipated + u_before - dmg%u_lost
    end subroutine damage_update
 
    !> [dA dB; dB dD] at point g of element el: the plies' Qbar(d) - Qbar(0),
@@ -243,7 +246,7 @@ contains
                end do
             end do points
             shear_points: do g = 1, geo%shear%npoint
-               gam = shear_strain(geo%shear%b(:, :, :, g), de)
+               gam = shear_strains(geo%shear%b(:, :, :, g), de)
                q = geo%shear%wj(g)*matmul(dmg%das(:, :, el), gam)
                do i = 1, nen
                   fe(5*i-2) = fe(5*i-2) + dot_product(geo%shear%b(:, 1, i, g), q)
@@ -278,7 +281,7 @@ contains
                u = u + 0.5_dp*geo%wj3(g)*dot_product(x, matmul(dmg%dc(:, :, g, el), x))
             end do
             do g = 1, geo%shear%npoint
-               gam = shear_strain(geo%shear%b(:, :, :, g), de)
+               gam = shear_strains(geo%shear%b(:, :, :, g), de)
                u = u + 0.5_dp*geo%shear%wj(g)*dot_product(gam, matmul(dmg%das(:, :, el), gam))
             end do
          end associate
@@ -312,7 +315,7 @@ contains
       real(dp) :: eps(3), t(3,3)
       integer :: i
       t = strain_rotation(theta)
-      do i = 1, 3
+      do i = 1, 3                        ! (not matmul: gfortran 12 warns of its temporary)
          eps(i) = t(i, 1)*e(1) + t(i, 2)*e(2) + t(i, 3)*e(3)
       end do
    end function to_material
@@ -327,32 +330,5 @@ contains
       t(2, :) = [s*s, c*c, -c*s]
       t(3, :) = [-2.0_dp*c*s, 2.0_dp*c*s, c*c - s*s]
    end function strain_rotation
-
-   !> Membrane strains, curvatures and the slopes of w at a point with
-   !> shape-function derivatives dxy (as src/model/element_matrices.f90).
-   pure subroutine point_strains(dxy, de, e0, kap, wx, wy)
-      real(dp), intent(in) :: dxy(2, nen), de(nfe)
-      real(dp), intent(out) :: e0(3), kap(3), wx, wy
-      integer :: i
-      e0 = 0.0_dp;  kap = 0.0_dp;  wx = 0.0_dp;  wy = 0.0_dp
-      do i = 1, nen
-         associate (px => dxy(1, i), py => dxy(2, i))
-            e0 = e0 + [px*de(5*i-4), py*de(5*i-3), py*de(5*i-4) + px*de(5*i-3)]
-            wx = wx + px*de(5*i-2);  wy = wy + py*de(5*i-2)
-            kap = kap + [px*de(5*i-1), py*de(5*i), py*de(5*i-1) + px*de(5*i)]
-         end associate
-      end do
-   end subroutine point_strains
-
-   !> (eps4, eps5) at one shear point of the element's shear operator b.
-   pure function shear_strain(b, de) result(gam)
-      real(dp), intent(in) :: b(:,:,:), de(nfe)
-      real(dp) :: gam(2)
-      integer :: i
-      gam = 0.0_dp
-      do i = 1, nen
-         gam = gam + b(:, 1, i)*de(5*i-2) + b(:, 2, i)*de(5*i-1) + b(:, 3, i)*de(5*i)
-      end do
-   end function shear_strain
 
 end module plate_damage
