@@ -2,11 +2,9 @@
 !> every Gauss point of every ply (eq. 2-3, src/strength/ply_stress.f90),
 !> their failure index (src/strength/failure_criteria.f90), the delamination
 !> threshold and index (src/strength/delamination.f90), and what the run
-!> records of them: at every history step (above damage_step), at the
-!> largest contact force (above damage_peak) and at the end (above
-!> damage_close). Only with &strength (the six strengths given); without
-!> it damage_open leaves the record inactive. The cost is bounded by
-!> &output every. More: docs/STRENGTH.md, "Ply stresses and failure".
+!> records of them: every history step, at the largest contact force and
+!> at the end. Only with &strength (the six strengths given); without it
+!> the record is inactive. More: docs/STRENGTH.md, "Ply stresses and failure".
 module damage_record
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t, strength_given, is_given
@@ -94,24 +92,17 @@ contains
       dmg%d_peak = 0.0_dp
    end subroutine damage_open
 
-   !> At every step the history records (damage_step, from the run recorder;
-   !> &output every, 1 by default: every step): at each 3 x 3 Gauss
-   !> point of each element (those of the membrane and bending terms, where the
-   !> paper's strain gauge is, Fig. 9b) the laminate strains and their
-   !> gradients give the stresses on both faces of every ply
-   !> (src/strength/ply_stress.f90: in-plane from eq. 2-3 with the von Karman strains in
-   !> the nonlinear theory, transverse shear from equilibrium), and the
-   !> criterion of &strength their failure index (src/strength/failure_criteria.f90).
+   !> At every step the history records (&output every): at each 3 x 3 Gauss
+   !> point of each element (those of the membrane and bending terms, where
+   !> the paper's strain gauge is, Fig. 9b) the laminate strains of d and their
+   !> gradients give the stresses on both faces of every ply (in-plane from
+   !> eq. 2-3, von Karman strains in the nonlinear theory; transverse shear
+   !> from equilibrium), and the criterion of &strength their failure index.
    !> Kept: the step's largest index and its mode (history columns
-   !> failure_index, failure_mode); the largest index of each ply at each point
-   !> over the run and its mode (the damage map), and the first time it reached
-   !> 1; the run's largest index, and the first step at which any index
-   !> reached 1 (the onset), with its ply, mode and point. At every step
-   !> (damage_peak): the displacements at the largest contact force, whose
-   !> stresses are written at the end.
-   !>
-   !> The failure indices of the state d at time t (as above): the
-   !> step's largest, the damage map, the onset.
+   !> failure_index, failure_mode); per ply and point the largest index over
+   !> the run, its mode (the damage map) and the first time it reached 1; the
+   !> run's largest index, and the first step any index reached 1 (the onset),
+   !> with its ply, mode and point.
    subroutine damage_step(dmg, model, t, d)
       type(damage_t), intent(inout) :: dmg          !< the record
       type(model_t), intent(in) :: model            !< the model
@@ -169,13 +160,10 @@ contains
       end if
    end subroutine damage_step
 
-   !> Delamination (src/strength/delamination.f90), with or without
-   !> &strength: the regime, and with g2c the first step whose contact force
-   !> passed the threshold (damage_peak); with &strength, Choi & Chang's index
-   !> of every interface from the ply averages, with the failure indices.
-   !>
-   !> Keeps the displacements of the largest contact force so far (every
-   !> step: a copy, the stresses follow at the end).
+   !> Every step: delamination (src/strength/delamination.f90), with or
+   !> without &strength: with g2c the first step whose contact force passed
+   !> the threshold; with &strength, the displacements of the largest contact
+   !> force so far (a copy; their stresses follow at the end).
    subroutine damage_peak(dmg, step, t, f, d)
       type(damage_t), intent(inout) :: dmg          !< the record
       integer, intent(in) :: step                   !< the step
@@ -245,20 +233,13 @@ contains
       end do
    end function damage_points
 
-   !> At the end (damage_close): the summary's items (impact_regime,
-   !> mass_ratio, the delamination thresholds and onset; with &strength
-   !> max_failure_index, the largest stresses max_abs_s11_MPa ...
-   !> max_abs_t13_MPa, failure_onset_us, failure_mode, failure_ply,
-   !> failure_x_mm, failure_y_mm, max_delamination_index,
-   !> delamination_interface, delamination_x_mm, delamination_y_mm)
-   !> and, in <prefix>.h5, the group /strength (damage_write, layout there);
-   !> with <prefix>.xdmf, the same on a grid of the laminate, which ParaView
-   !> and meshio show (/xdmf/plies, src/results/xdmf_plies.f90).
-   !>
-   !> The summary's items (as above) and /strength in <prefix>.h5.
-   !> failure_mode, failure_ply, failure_x_mm, failure_y_mm say where
-   !> damage started (the onset) or, when no index reached 1, where the
-   !> largest one was.
+   !> At the end: the summary's items (impact_regime, mass_ratio, the
+   !> delamination thresholds and onset; with &strength max_failure_index,
+   !> max_abs_s11_MPa ... max_abs_t13_MPa, failure_onset_us, failure_mode,
+   !> failure_ply, failure_x_mm, failure_y_mm: where damage started, or the
+   !> largest index when none reached 1; Choi & Chang's largest delamination
+   !> index and its place) and, in <prefix>.h5, /strength (damage_write) with
+   !> its grid of the laminate in <prefix>.xdmf (src/results/xdmf_plies.f90).
    subroutine damage_close(dmg, model, pd, s, rf, stat, errmsg)
       type(damage_t), intent(in) :: dmg             !< the record
       type(model_t), intent(in) :: model            !< the model

@@ -24,11 +24,6 @@ module hdf5_series
       module procedure append_values, append_columns
    end interface h5io_append_block
 
-   !> Reads a whole rank-1 series (a restart): reals or integers.
-   interface h5io_read_series
-      module procedure read_reals, read_integers
-   end interface h5io_read_series
-
 contains
 
    !> Creates the empty rank-1 series `name` of reals or integers (kind), in
@@ -109,51 +104,26 @@ contains
       call h5io_check(err, 'cannot cut a series', '', stat, errmsg)
    end subroutine h5io_cut_series
 
-   !> The reals of the rank-1 series `name`.
-   subroutine read_reals(loc, name, x, stat, errmsg)
+   !> The values of the rank-1 series `name` as reals (a restart; HDF5
+   !> converts integers, exactly below 2**53).
+   subroutine h5io_read_series(loc, name, x, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
       real(dp), allocatable, target, intent(out) :: x(:)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer(hid_t) :: did
-      call h5io_open_dataset(loc, name, did, stat, errmsg)
-      if (stat /= 0) return
-      allocate (x(max(0, h5io_series_length(did))))
-      call read_series(did, H5T_NATIVE_DOUBLE, c_loc(x), size(x), name, stat, errmsg)
-   end subroutine read_reals
-
-   !> The integers of the rank-1 series `name`.
-   subroutine read_integers(loc, name, x, stat, errmsg)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name
-      integer, allocatable, target, intent(out) :: x(:)
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      integer(hid_t) :: did
-      call h5io_open_dataset(loc, name, did, stat, errmsg)
-      if (stat /= 0) return
-      allocate (x(max(0, h5io_series_length(did))))
-      call read_series(did, H5T_NATIVE_INTEGER, c_loc(x), size(x), name, stat, errmsg)
-   end subroutine read_integers
-
-   !> Reads the n values of the open series did into buf (type mem_type) and closes it.
-   subroutine read_series(did, mem_type, buf, n, name, stat, errmsg)
-      integer(hid_t), intent(in) :: did
-      integer(hid_t), intent(in) :: mem_type
-      type(c_ptr), intent(in) :: buf
-      integer, intent(in) :: n
-      character(len=*), intent(in) :: name
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
       type(c_ptr) :: at
       integer :: err
+      call h5io_open_dataset(loc, name, did, stat, errmsg)
+      if (stat /= 0) return
+      allocate (x(max(0, h5io_series_length(did))))
       err = 0
-      at = buf                               ! (h5dread_f's buffer is intent(inout))
-      if (n > 0) call h5dread_f(did, mem_type, at, err)
+      at = c_loc(x)                          ! (h5dread_f's buffer is intent(inout))
+      if (size(x) > 0) call h5dread_f(did, H5T_NATIVE_DOUBLE, at, err)
       call h5io_check(err, 'cannot read the dataset', name, stat, errmsg)
       call h5dclose_f(did, err)
-   end subroutine read_series
+   end subroutine h5io_read_series
 
    !> Appends the reals or integers x(:) to the rank-1 series did.
    subroutine append_values(did, x, stat, errmsg)

@@ -157,8 +157,7 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=msg_len) :: why
-      real(dp), allocatable :: time(:), force(:)
-      integer, allocatable :: step(:)
+      real(dp), allocatable :: time(:), step(:), force(:)
       integer :: c, k
       stat = 0
       call system_clock(rf%flushed_at, rf%clock_rate)
@@ -189,7 +188,7 @@ contains
       if (stat == 0) call h5io_read_series(rf%fid, 'fields/step', step, stat, why)
       if (stat == 0) call h5io_read_series(rf%fid, 'fields/force', force, stat, why)
       call close_window(rf, stat, why)
-      if (stat == 0) call xdmf_resume(rf%xdmf, time, step, force, stat, why)
+      if (stat == 0) call xdmf_resume(rf%xdmf, time, nint(step), force, stat, why)
       if (stat /= 0) then
          errmsg = rf%path // ': ' // trim(why)
          return

@@ -18,7 +18,7 @@ module results_xdmf
    use hdf5_series, only: h5io_view_column, h5io_create_columns, h5io_open_dataset, h5io_append_block, &
       h5io_cut_series, h5io_close_dataset
    use file_system, only: rename_file
-   use xdmf_plies, only: xdmf_plies_t, plies_collection
+   use xdmf_plies, only: xdmf_plies_t, plies_collection, data_item
    implicit none
    private
    public :: xdmf_t, xdmf_open, xdmf_start, xdmf_cut, xdmf_resume, xdmf_grow, xdmf_snapshots, xdmf_batch_close, &
@@ -357,10 +357,10 @@ contains
       write (u, '(a)') '    <Information Name="status" Value="' // xml_escaped(x%status) // '"/>'
       write (u, '(a)') '    <Grid Name="mesh" GridType="Uniform">'
       write (u, '(a)') '      <Topology TopologyType="Quadrilateral_9" NumberOfElements="' // int_str(x%nelem) // '">'
-      write (u, '(a)') '        ' // data_item('Int', 4, int_str(x%nelem) // ' ' // int_str(nen), h5 // 'xdmf/cells')
+      write (u, '(a)') '        ' // data_item('Int', int_str(x%nelem) // ' ' // int_str(nen), h5 // 'xdmf/cells')
       write (u, '(a)') '      </Topology>'
       write (u, '(a)') '      <Geometry GeometryType="XY">'
-      write (u, '(a)') '        ' // data_item('Float', 8, int_str(x%nnode) // ' 2', h5 // mesh_points)
+      write (u, '(a)') '        ' // data_item('Float', int_str(x%nnode) // ' 2', h5 // mesh_points)
       write (u, '(a)') '      </Geometry>'
       write (u, '(a)') '    </Grid>'
       call plies_collection(x%plies, u, h5, x%time(:x%nsnap))
@@ -395,19 +395,10 @@ contains
       subroutine attribute(name, path)
          character(len=*), intent(in) :: name, path
          write (u, '(a)') '        <Attribute Name="' // name // '" AttributeType="Scalar" Center="Node">'
-         write (u, '(a)') '          ' // data_item('Float', 8, int_str(x%nnode), path)
+         write (u, '(a)') '          ' // data_item('Float', int_str(x%nnode), path)
          write (u, '(a)') '        </Attribute>'
       end subroutine attribute
    end subroutine write_xml
-
-   !> An HDF DataItem: 'Int' or 'Float', bytes, dimensions (C order), 'file:/path'.
-   pure function data_item(number_type, precision, dims, where) result(text)
-      character(len=*), intent(in) :: number_type, dims, where
-      integer, intent(in) :: precision
-      character(len=:), allocatable :: text
-      text = '<DataItem Format="HDF" DataType="' // number_type // '" Precision="' // int_str(precision) &
-         // '" Dimensions="' // dims // '">' // where // '</DataItem>'
-   end function data_item
 
    ! ============================================================ the mirror
 

@@ -15,7 +15,7 @@ module xdmf_plies
    use hdf5_io, only: h5io_group, h5io_write, h5io_exists, h5io_delete
    implicit none
    private
-   public :: xdmf_plies_t, ply_maps_t, plies_write, plies_add, plies_collection
+   public :: xdmf_plies_t, ply_maps_t, plies_write, plies_add, plies_collection, data_item
 
    !> Where the cells of the 3 x 3 Gauss points are cut, along xi and eta.
    real(dp), parameter :: plies_cut(4) = [-1.0_dp, -4.0_dp/9.0_dp, 4.0_dp/9.0_dp, 1.0_dp]
@@ -244,7 +244,8 @@ contains
       end subroutine attribute
    end subroutine plies_collection
 
-   !> An HDF DataItem of 4-byte integers or 8-byte reals.
+   !> An HDF DataItem of 4-byte integers ('Int') or 8-byte reals ('Float'):
+   !> dimensions (C order), 'file:/path'.
    pure function data_item(number_type, dims, where) result(text)
       character(len=*), intent(in) :: number_type, dims, where
       character(len=:), allocatable :: text
