@@ -23,7 +23,7 @@ module restart_point
    use results_hdf5, only: results_reopen, results_point_t, results_point
    use run_recorder, only: record_t, record_settings, nwarn
    use progress_line, only: progress_start
-   use step_peak, only: peak_state, peak_restore, peak_state_size
+   use step_peak, only: peak_track_t
    use damage_record, only: damage_t
    use restart_io, only: restart_stream_t, io_tag, io_text, io_value, io_values, io_count, io_block, io_array, &
       io_ints, io_reals, io_impactor, io_pattern, put_seal, seal_holds
@@ -35,6 +35,8 @@ module restart_point
    integer, parameter :: layout = 3
    !> The deck's variables a restart may change.
    character(len=*), parameter :: free_vars(2) = [character(len=24) :: 'analysis.t_end', 'output.overwrite']
+   !> Reals of a peak's samples (io_peak).
+   integer, parameter :: peak_size = 11
    !> open(2)'s O_RDONLY.
    integer(c_int), parameter :: o_rdonly = 0
 
@@ -353,8 +355,7 @@ contains
       type(restart_stream_t), intent(inout) :: s    !< the restart file
       type(record_t), intent(inout) :: rec          !< the record (read: as record_settings made it)
       integer, intent(in) :: neq                    !< the plate's equations
-      integer, parameter :: n = peak_state_size
-      real(dp) :: r(3*n), bytes
+      real(dp) :: bytes
       logical :: active
       call io_tag(s, 'record')
       call io_count(s, 15)
@@ -363,13 +364,10 @@ contains
       call io_values(s, rec%energy_created, rec%energy_lost, rec%max_w_over_h, rec%w_bend_max, rec%diverged_at, &
          rec%c_plate, rec%c_impactor)
       call io_value(s, rec%max_slope)
-      r = [peak_state(rec%force_peak), peak_state(rec%deflection_peak), peak_state(rec%strain_peak)]
-      call io_array(s, r)
-      if (s%reading .and. s%stat == 0) then
-         rec%force_peak = peak_restore(r(1:n))
-         rec%deflection_peak = peak_restore(r(n + 1:2*n))
-         rec%strain_peak = peak_restore(r(2*n + 1:))
-      end if
+      call io_count(s, 3*peak_size)
+      call io_peak(s, rec%force_peak)
+      call io_peak(s, rec%deflection_peak)
+      call io_peak(s, rec%strain_peak)
       call io_count(s, 14 + nwarn)
       call io_values(s, rec%steps, rec%contacts, rec%contact_iterations, rec%max_contact_iter, rec%max_solves, &
          rec%unconverged_steps, rec%first_unconverged)
@@ -388,6 +386,23 @@ contains
       call io_value(s, rec%damage%delam%onset)
       if (active) call io_damage(s, rec%damage)
    end subroutine io_record
+
+   !> A peak's samples (src/record/step_peak.f90): samples, last, times,
+   !> values, before, after, as peak_size reals.
+   subroutine io_peak(s, p)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
+      type(peak_track_t), intent(inout) :: p        !< the samples kept
+      real(dp) :: x(3)
+      x = [real(p%samples, dp), merge(1.0_dp, 0.0_dp, p%before), merge(1.0_dp, 0.0_dp, p%after)]
+      call io_values(s, x(1), p%t_last, p%v_last)
+      call io_block(s, p%t)
+      call io_block(s, p%v)
+      call io_values(s, x(2), x(3))
+      if (.not. s%reading .or. s%stat /= 0) return
+      p%samples = nint(x(1))
+      p%before = x(2) /= 0.0_dp
+      p%after = x(3) /= 0.0_dp
+   end subroutine io_peak
 
    !> &strength's figures and maps (src/results/damage_record.f90).
    subroutine io_damage(s, dmg)

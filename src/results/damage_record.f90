@@ -84,12 +84,10 @@ contains
       do e = 1, model%msh%nelem
          dmg%d2(:, :, :, e) = element_second_derivatives(model%msh%coords(:, model%msh%conn(:, e)))
       end do
-      allocate (dmg%fi_max(dmg%nply, dmg%npoint), dmg%mode_max(dmg%nply, dmg%npoint), &
-                dmg%onset_time(dmg%nply, dmg%npoint), dmg%d_peak(model%msh%neq))
-      dmg%fi_max = 0.0_dp
-      dmg%mode_max = mode_none
+      allocate (dmg%fi_max(dmg%nply, dmg%npoint), dmg%onset_time(dmg%nply, dmg%npoint), &
+                dmg%d_peak(model%msh%neq), source=0.0_dp)
+      allocate (dmg%mode_max(dmg%nply, dmg%npoint), source=mode_none)
       dmg%onset_time = -1.0_dp
-      dmg%d_peak = 0.0_dp
    end subroutine damage_open
 
    !> At every step the history records (&output every): at each 3 x 3 Gauss
