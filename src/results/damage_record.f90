@@ -231,13 +231,9 @@ contains
       end do
    end function damage_points
 
-   !> At the end: the summary's items (impact_regime, mass_ratio, the
-   !> delamination thresholds and onset; with &strength max_failure_index,
-   !> max_abs_s11_MPa ... max_abs_t13_MPa, failure_onset_us, failure_mode,
-   !> failure_ply, failure_x_mm, failure_y_mm: where damage started, or the
-   !> largest index when none reached 1; Choi & Chang's largest delamination
-   !> index and its place) and, in <prefix>.h5, /strength (damage_write) with
-   !> its grid of the laminate in <prefix>.xdmf (src/results/xdmf_plies.f90).
+   !> At the end: the summary's items (docs/OUTPUT.md lists them; failure_ply,
+   !> failure_x_mm ... where damage started, or the largest index when none
+   !> reached 1) and /strength in <prefix>.h5 (damage_write).
    subroutine damage_close(dmg, model, pd, s, rf, stat, errmsg)
       type(damage_t), intent(in) :: dmg             !< the record
       type(model_t), intent(in) :: model            !< the model
@@ -254,33 +250,24 @@ contains
       ! -- delamination (src/strength/delamination.f90): regime, thresholds
       call summary_text(s, 'impact_regime', impact_regime(dmg%delam%ratio))
       call summary_real(s, 'mass_ratio', 'mass_ratio', '-', dmg%delam%ratio, 1.0_dp)
-      if (dmg%delam%threshold) then
-         call summary_real(s, 'delamination_threshold_N', 'delamination_threshold', 'N', dmg%delam%p_c, 1.0_dp)
-         call summary_real(s, 'delamination_threshold_dynamic_N', 'delamination_threshold_dynamic', 'N', &
-                           dmg%delam%p_dyn, 1.0_dp)
-         if (dmg%delam%onset >= 0.0_dp) then
-            call summary_real(s, 'delamination_onset_us', 'delamination_onset', 's', dmg%delam%onset, 1.0e6_dp)
-         else
-            call summary_text(s, 'delamination_onset_us', 'not reached')
-         end if
-      else
-         call summary_text(s, 'delamination_threshold_N', 'not computed')
-         call summary_text(s, 'delamination_threshold_dynamic_N', 'not computed')
-         call summary_text(s, 'delamination_onset_us', 'not computed')
-      end if
+      call summary_real(s, 'delamination_threshold_N', 'delamination_threshold', 'N', dmg%delam%p_c, 1.0_dp, &
+                        dmg%delam%threshold, 'not computed')
+      call summary_real(s, 'delamination_threshold_dynamic_N', 'delamination_threshold_dynamic', 'N', &
+                        dmg%delam%p_dyn, 1.0_dp, dmg%delam%threshold, 'not computed')
+      call summary_real(s, 'delamination_onset_us', 'delamination_onset', 's', dmg%delam%onset, 1.0e6_dp, &
+                        dmg%delam%threshold .and. dmg%delam%onset >= 0.0_dp, &
+                        trim(merge('not reached ', 'not computed', dmg%delam%threshold)))
       if (.not. dmg%active) return
       call summary_real(s, 'max_failure_index', 'max_failure_index', '-', dmg%max_fi, 1.0_dp)
       do c = 1, 5
          call summary_real(s, 'max_abs_' // trim(comp(c)) // '_MPa', 'max_abs_' // trim(comp(c)), 'Pa', &
                            dmg%smax(c), 1.0e-6_dp)
       end do
-      if (dmg%onset >= 0.0_dp) then
-         call summary_real(s, 'failure_onset_us', 'failure_onset', 's', dmg%onset, 1.0e6_dp)
-         ply = dmg%onset_ply;  point = dmg%onset_point;  mode = dmg%onset_mode
-      else
-         call summary_text(s, 'failure_onset_us', 'none')
-         ply = dmg%max_ply;  point = dmg%max_point;  mode = dmg%max_mode
-      end if
+      call summary_real(s, 'failure_onset_us', 'failure_onset', 's', dmg%onset, 1.0e6_dp, dmg%onset >= 0.0_dp, &
+                        'none')
+      ply = merge(dmg%onset_ply, dmg%max_ply, dmg%onset >= 0.0_dp)
+      point = merge(dmg%onset_point, dmg%max_point, dmg%onset >= 0.0_dp)
+      mode = merge(dmg%onset_mode, dmg%max_mode, dmg%onset >= 0.0_dp)
       call summary_text(s, 'failure_mode', trim(mode_names(mode)))
       call summary_integer(s, 'failure_ply', ply)
       xy = damage_points(model)
@@ -312,31 +299,14 @@ contains
       subroutine place(what, p)
          character(len=*), intent(in) :: what
          integer, intent(in) :: p
-         if (p > 0) then
-            call summary_real(s, what // '_x_mm', what // '_x', 'm', xy(1, p), 1.0e3_dp)
-            call summary_real(s, what // '_y_mm', what // '_y', 'm', xy(2, p), 1.0e3_dp)
-         else
-            call summary_text(s, what // '_x_mm', 'none')
-            call summary_text(s, what // '_y_mm', 'none')
-         end if
+         call summary_real(s, what // '_x_mm', what // '_x', 'm', xy(1, max(p, 1)), 1.0e3_dp, p > 0, 'none')
+         call summary_real(s, what // '_y_mm', what // '_y', 'm', xy(2, max(p, 1)), 1.0e3_dp, p > 0, 'none')
       end subroutine place
 
    end subroutine damage_close
 
-   !> /strength of <prefix>.h5 (C order, as h5py shows it):
-   !>   attributes  criterion, plies, modes (the mode codes' words), faces
-   !>   points (npoint, 2) x, y of the 3 x 3 Gauss points (m, from the plate
-   !>               centre), 9 per element in element order; point_element (npoint)
-   !>   ply_z (nply+1) interfaces (m, z = -h/2 the impacted face); ply_angle (nply) deg
-   !>   damage_map (npoint, nply) the largest failure index of each ply at
-   !>               each point over the run; damage_mode (npoint, nply) its mode;
-   !>               onset_time (npoint, nply) the first time it reached 1 (s, -1: never)
-   !>   delamination_map (npoint, nply - 1) Choi & Chang's largest index of
-   !>               each interface (k: plies k, k + 1) at each point over the run
-   !>   peak/       attributes step, time, force: the step of the largest
-   !>               contact force; s11 s22 t12 t23 t13 (npoint, 2 nply) the
-   !>               stresses there (Pa, material axes; face 2k-1 the bottom of
-   !>               ply k, 2k its top), failure_index (npoint, 2 nply)
+   !> /strength of <prefix>.h5 (C order, as h5py shows it; its datasets and
+   !> attributes: docs/OUTPUT.md, "The HDF5 file"), and /xdmf/plies.
    subroutine damage_write(dmg, model, xy, rf, stat, errmsg)
       type(damage_t), intent(in) :: dmg
       type(model_t), intent(in) :: model
