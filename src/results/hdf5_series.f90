@@ -13,7 +13,7 @@ module hdf5_series
    use hdf5_io, only: h5io_create_dataset, h5io_check, h5io_fail
    implicit none
    private
-   public :: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_open_dataset, &
+   public :: h5io_create_series, h5io_append_block, h5io_open_dataset, &
              h5io_cut_series, h5io_read_series, h5io_close_dataset, h5io_view_column, h5io_real, h5io_integer
 
    !> Element types of a series (h5io_create_series).
@@ -26,31 +26,25 @@ module hdf5_series
 
 contains
 
-   !> Creates the empty rank-1 series `name` of reals or integers (kind), in
-   !> chunks of `chunk` entries, open as did (close with h5io_close_dataset).
-   subroutine h5io_create_series(loc, name, kind, chunk, did, stat, errmsg)
+   !> Creates the empty series `name`, open as did (close with h5io_close_dataset):
+   !> with nrow = 0 of rank 1, reals or integers (kind), in chunks of `chunk`
+   !> entries; else reals of shape (nrow, 0) growing by columns, in chunks of
+   !> `chunk` values (one column at least).
+   subroutine h5io_create_series(loc, name, kind, nrow, chunk, did, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
-      integer, intent(in) :: kind, chunk
+      integer, intent(in) :: kind, nrow, chunk
       integer(hid_t), intent(out) :: did
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      call h5io_create_dataset(loc, name, merge(H5T_NATIVE_INTEGER, H5T_NATIVE_DOUBLE, kind == h5io_integer), &
-         [H5S_UNLIMITED_F], [int(chunk, hsize_t)], did, stat, errmsg)
+      if (nrow == 0) then
+         call h5io_create_dataset(loc, name, merge(H5T_NATIVE_INTEGER, H5T_NATIVE_DOUBLE, kind == h5io_integer), &
+            [H5S_UNLIMITED_F], [int(chunk, hsize_t)], did, stat, errmsg)
+      else
+         call h5io_create_dataset(loc, name, H5T_NATIVE_DOUBLE, [int(nrow, hsize_t), H5S_UNLIMITED_F], &
+            [int(nrow, hsize_t), int(max(1, chunk/nrow), hsize_t)], did, stat, errmsg)
+      end if
    end subroutine h5io_create_series
-
-   !> Creates the empty real series `name` of shape (nrow, 0), growing by
-   !> columns, in chunks of `chunk_values` values (one column at least), open as did.
-   subroutine h5io_create_columns(loc, name, nrow, chunk_values, did, stat, errmsg)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name
-      integer, intent(in) :: nrow, chunk_values
-      integer(hid_t), intent(out) :: did
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      call h5io_create_dataset(loc, name, H5T_NATIVE_DOUBLE, [int(nrow, hsize_t), H5S_UNLIMITED_F], &
-         [int(nrow, hsize_t), int(max(1, chunk_values/max(nrow, 1)), hsize_t)], did, stat, errmsg)
-   end subroutine h5io_create_columns
 
    !> Opens the existing dataset `name` (close with h5io_close_dataset).
    subroutine h5io_open_dataset(loc, name, did, stat, errmsg)
@@ -224,7 +218,7 @@ contains
       call h5sclose_f(vspace, err)
    end subroutine h5io_view_column
 
-   !> Closes a dataset opened by h5io_create_series or h5io_create_columns.
+   !> Closes a dataset opened by h5io_create_series or h5io_open_dataset.
    subroutine h5io_close_dataset(did, stat, errmsg)
       integer(hid_t), intent(in) :: did
       integer, intent(out) :: stat

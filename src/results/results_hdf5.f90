@@ -19,7 +19,7 @@ module results_hdf5
    use result_files, only: keep_failure, column_t, history_columns, nhist_damage, history_width, summary_item_t
    use hdf5_io, only: h5io_start, h5io_create, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
       h5io_update_attr, h5io_write, h5io_rewrite, h5io_exists, h5io_delete
-   use hdf5_series, only: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_open_dataset, &
+   use hdf5_series, only: h5io_create_series, h5io_append_block, h5io_open_dataset, &
       h5io_cut_series, h5io_read_series, h5io_close_dataset, h5io_real, h5io_integer
    use results_xdmf, only: xdmf_t, xdmf_open, xdmf_start, xdmf_resume, xdmf_snapshots, xdmf_batch_close, &
       xdmf_grow, xdmf_cut, xdmf_peak, xdmf_close
@@ -32,6 +32,9 @@ module results_hdf5
    !> Units of /fields' time, step, force and nodal fields u, v, w, psi_x, psi_y.
    character(len=units_len), parameter :: snap_units(3 + ndof_node) = [character(len=units_len) :: &
       's', '-', 'N', 'm', 'm', 'm', 'rad', 'rad']
+   !> The snapshot series (rf%snaps): time, step, force, then the nodal fields (mesh's freedom_name).
+   character(len=12), parameter :: snap_names(3 + ndof_node) = [character(len=12) :: 'fields/time', &
+      'fields/step', 'fields/force', 'fields/u', 'fields/v', 'fields/w', 'fields/psi_x', 'fields/psi_y']
    !> Values per chunk of a series (4 KiB; the fields': whole snapshots, one at least).
    integer, parameter :: hist_chunk = 512
    !> Wall time between two flushes (s): a killed run loses at most this.
@@ -172,7 +175,7 @@ contains
          call cut(rf%hist(c), 'history/' // trim(history_columns(c)%name), pt%rows)
       end do
       do k = 1, size(rf%snaps)
-         call cut(rf%snaps(k), snap_name(k), pt%snaps)
+         call cut(rf%snaps(k), trim(snap_names(k)), pt%snaps)
       end do
       if (stat == 0) call xdmf_cut(rf%xdmf, deck, msh, rf%fid, pt%snaps, stat, why)
       if (stat == 0) call h5io_update_attr(rf%fid, 'history', 'rows', pt%rows, stat, why)
@@ -338,7 +341,7 @@ contains
       n = rf%nsnap
       if (n == 0) return
       do k = 1, size(rf%snaps)
-         if (stat == 0) call h5io_open_dataset(rf%fid, snap_name(k), rf%snaps(k), stat, why)
+         if (stat == 0) call h5io_open_dataset(rf%fid, trim(snap_names(k)), rf%snaps(k), stat, why)
          if (stat /= 0) exit
          if (k == 2) then
             call h5io_append_block(rf%snaps(k), nint(rf%snap(k, :n)), stat, why)
@@ -485,7 +488,7 @@ contains
          if (stat /= 0) exit columns
          col = history_columns(c)      ! (a copy, not an associate name: see src/deck/input_deck.f90)
          call h5io_create_series(rf%fid, 'history/'//trim(col%name), &
-            merge(h5io_integer, h5io_real, col%whole), hist_chunk, rf%hist(c), stat, why)
+            merge(h5io_integer, h5io_real, col%whole), 0, hist_chunk, rf%hist(c), stat, why)
          call attr_text(rf%fid, 'history/'//trim(col%name), 'units', col%unit, stat, why)
          call attr_text(rf%fid, 'history/'//trim(col%name), 'description', col%meaning, stat, why)
       end do columns
@@ -505,13 +508,9 @@ contains
       call attr_unit(rf%fid, 'fields', 'snapshots', 0, '-', stat, why)
       snapshot_series: do k = 1, size(rf%snaps)
          if (stat /= 0) exit snapshot_series
-         if (k <= 3) then
-            call h5io_create_series(rf%fid, snap_name(k), merge(h5io_integer, h5io_real, k == 2), hist_chunk, &
-               rf%snaps(k), stat, why)
-         else
-            call h5io_create_columns(rf%fid, snap_name(k), nnode, hist_chunk, rf%snaps(k), stat, why)
-         end if
-         call attr_text(rf%fid, snap_name(k), 'units', snap_units(k), stat, why)
+         call h5io_create_series(rf%fid, trim(snap_names(k)), merge(h5io_integer, h5io_real, k == 2), &
+            merge(0, nnode, k <= 3), hist_chunk, rf%snaps(k), stat, why)
+         call attr_text(rf%fid, trim(snap_names(k)), 'units', snap_units(k), stat, why)
       end do snapshot_series
    end subroutine create_fields
 
@@ -556,18 +555,6 @@ contains
       if (stat == 0) call h5io_set_attr(fid, obj, name, value, stat, why)
       if (stat == 0) call h5io_set_attr(fid, obj, name//'_units', units, stat, why)
    end subroutine attr_unit
-
-   !> /fields/<name> of the k-th snapshot series: time, step, force, then the nodal fields.
-   pure function snap_name(k) result(name)
-      integer, intent(in) :: k                      !< the series (rf%snaps)
-      character(len=:), allocatable :: name
-      character(len=5), parameter :: scalars(3) = [character(len=5) :: 'time', 'step', 'force']
-      if (k <= 3) then
-         name = 'fields/' // trim(scalars(k))
-      else
-         name = 'fields/' // trim(freedom_name(k - 3))
-      end if
-   end function snap_name
 
    !> The nodal values of the freedoms, 0 where held (eq = 0).
    pure function nodal_values(eq, d) result(f)

@@ -15,7 +15,7 @@ module results_xdmf
    use mesh, only: mesh_t, ndof_node, freedom_name
    use shape_functions, only: nen
    use hdf5_io, only: h5io_create, h5io_close, h5io_group, h5io_write, h5io_rewrite, h5io_flush, h5io_set_attr
-   use hdf5_series, only: h5io_view_column, h5io_create_columns, h5io_open_dataset, h5io_append_block, &
+   use hdf5_series, only: h5io_view_column, h5io_create_series, h5io_real, h5io_open_dataset, h5io_append_block, &
       h5io_cut_series, h5io_close_dataset
    use file_system, only: rename_file
    use xdmf_plies, only: xdmf_plies_t, plies_collection, data_item
@@ -125,8 +125,8 @@ contains
       fields: do k = 1, ndof_node
          if (stat /= 0) exit fields
          call h5io_write(fid, 'xdmf/peak/' // trim(freedom_name(k)), [(0.0_dp, n = 1, x%nnode)], stat, errmsg)
-         if (stat == 0) call h5io_create_columns(fid, 'xdmf/fields/' // trim(freedom_name(k)), x%nnode, &
-            chunk_values, did, stat, errmsg)
+         if (stat == 0) call h5io_create_series(fid, 'xdmf/fields/' // trim(freedom_name(k)), h5io_real, &
+            x%nnode, chunk_values, did, stat, errmsg)
          if (stat == 0) call h5io_close_dataset(did, stat, errmsg)
       end do fields
    end subroutine xdmf_open
