@@ -17,7 +17,7 @@ module results_hdf5
    use mesh, only: mesh_t, ndof_node, freedom_name
    use plate_damage, only: damage_wanted
    use result_files, only: keep_failure, column_t, history_columns, nhist_damage, history_width, summary_item_t
-   use hdf5_io, only: h5io_start, h5io_create, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
+   use hdf5_io, only: h5io_start, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
       h5io_update_attr, h5io_write, h5io_rewrite, h5io_exists, h5io_delete
    use hdf5_series, only: h5io_create_series, h5io_append_block, h5io_open_dataset, &
       h5io_cut_series, h5io_read_series, h5io_close_dataset, h5io_real, h5io_integer
@@ -123,7 +123,7 @@ contains
       why = ''
       gone = c_unlink(rf%path // c_null_char)       ! an earlier run's (the claim allowed it)
       call h5io_start(stat, why)
-      if (stat == 0) call h5io_create(rf%path // '.tmp', .true., rf%fid, stat, why)
+      if (stat == 0) call h5io_open(rf%path // '.tmp', .true., .true., rf%fid, stat, why)
       if (stat /= 0) then
          errmsg = '&output: prefix = "'//trim(deck%prefix)//'": '//trim(why)
          return
@@ -170,7 +170,7 @@ contains
       rf%peak_fields = pt%peak_fields
       why = ''
       call h5io_start(stat, why)
-      if (stat == 0) call h5io_open(rf%path, .false., rf%fid, stat, why)
+      if (stat == 0) call h5io_open(rf%path, .false., .false., rf%fid, stat, why)
       do c = 1, rf%ncol
          call cut(rf%hist(c), 'history/' // trim(history_columns(c)%name), pt%rows)
       end do
@@ -283,7 +283,7 @@ contains
       why = ''
       batch = rf%nsnap
       part = ''
-      call h5io_open(rf%path, .true., rf%fid, stat, why)
+      call h5io_open(rf%path, .false., .true., rf%fid, stat, why)
       if (stat == 0) part = '/history: '
       if (stat == 0) call write_rows(rf, stat, why)
       if (stat == 0) part = '/fields: '
@@ -411,7 +411,7 @@ contains
       integer :: stat
       if (.not. rf%active .or. rf%fid >= 0) return
       if (.not. rf%broken) call results_flush(rf, stat, why)
-      if (.not. rf%broken) call h5io_open(rf%path, .false., rf%fid, stat, why)
+      if (.not. rf%broken) call h5io_open(rf%path, .false., .false., rf%fid, stat, why)
       if (.not. rf%broken) rf%broken = stat /= 0
       if (rf%broken) rf%active = .false.            ! (nothing more is written into it)
    end subroutine results_closing

@@ -14,7 +14,7 @@ module results_xdmf
    use deck_schema, only: deck_t
    use mesh, only: mesh_t, ndof_node, freedom_name
    use shape_functions, only: nen
-   use hdf5_io, only: h5io_create, h5io_close, h5io_group, h5io_write, h5io_rewrite, h5io_flush, h5io_set_attr
+   use hdf5_io, only: h5io_open, h5io_close, h5io_group, h5io_write, h5io_rewrite, h5io_flush, h5io_set_attr
    use hdf5_series, only: h5io_view_column, h5io_create_series, h5io_real, h5io_open_dataset, h5io_append_block, &
       h5io_cut_series, h5io_close_dataset
    use file_system, only: rename_file
@@ -139,7 +139,7 @@ contains
       stat = 0
       if (.not. allocated(x%path)) return           ! xdmf = 'none'
       call system_clock(x%written_at)
-      call h5io_create(x%views_path, .false., x%vid, stat, errmsg)
+      call h5io_open(x%views_path, .true., .false., x%vid, stat, errmsg)
       if (stat == 0) call h5io_group(x%vid, 'fields', stat, errmsg)
       if (stat /= 0) then
          errmsg = x%views_path // ': ' // trim(errmsg)
@@ -237,9 +237,10 @@ contains
       x%time = x%time(:before);  x%force = x%force(:before)
       x%step = x%step(:before);  x%batch = x%batch(:before)
       x%nbatch = x%nbatch + 1
-      call h5io_group(x%vid, batch_group(x%nbatch), stat, errmsg)
+      call h5io_group(x%vid, 'fields/' // int_str(x%nbatch), stat, errmsg)
       do k = 1, ndof_node
-         if (stat == 0) call h5io_group(x%vid, batch_group(x%nbatch) // '/' // trim(freedom_name(k)), stat, errmsg)
+         if (stat == 0) call h5io_group(x%vid, 'fields/' // int_str(x%nbatch) // '/' // trim(freedom_name(k)), &
+            stat, errmsg)
       end do
       snapshots: do j = 1, size(step)
          if (stat /= 0) exit snapshots
@@ -272,19 +273,12 @@ contains
          call write_xml(x, stat, errmsg)
    end subroutine xdmf_batch_close
 
-   !> The group of batch b.
-   pure function batch_group(b) result(path)
-      integer, intent(in) :: b                      !< batch number
-      character(len=:), allocatable :: path
-      path = 'fields/' // int_str(b)
-   end function batch_group
-
    !> Where field k of snapshot s is in <prefix>.xdmf.h5: /fields/<b>/<f>/<s>.
    pure function view_path(x, k, s) result(path)
       type(xdmf_t), intent(in) :: x                 !< the XDMF file
       integer, intent(in) :: k, s                   !< freedom, snapshot
       character(len=:), allocatable :: path
-      path = batch_group(x%batch(s)) // '/' // trim(freedom_name(k)) // '/' // int_str(s)
+      path = 'fields/' // int_str(x%batch(s)) // '/' // trim(freedom_name(k)) // '/' // int_str(s)
    end function view_path
 
    !> The peak state just rewritten: for the whole plate, mirrored into /xdmf/peak.
@@ -336,12 +330,8 @@ contains
       integer :: u, k, s
       h5 = xml_escaped(x%h5_name) // ':/'
       views = xml_escaped(x%views_name) // ':/'
-      mesh_points = 'mesh/coordinates'
-      peak = 'peak/'
-      if (x%whole) then
-         mesh_points = 'xdmf/coordinates'
-         peak = 'xdmf/peak/'
-      end if
+      mesh_points = trim(merge('xdmf/coordinates', 'mesh/coordinates', x%whole))
+      peak = trim(merge('xdmf/peak/', 'peak/     ', x%whole))
       tmp = x%path // '.tmp'
       open (newunit=u, file=tmp, status='replace', action='write', form='formatted', iostat=stat, iomsg=iomsg)
       if (stat /= 0) then
