@@ -26,7 +26,7 @@ module restart_point
    use step_peak, only: peak_track_t
    use damage_record, only: damage_t
    use restart_io, only: restart_stream_t, io_tag, io_text, io_value, io_values, io_count, io_block, io_array, &
-      io_ints, io_reals, io_impactor, io_pattern, put_seal, seal_holds
+      io_ints, io_impactor, io_pattern, put_seal, seal_holds
    implicit none
    private
    public :: restart_save, restart_check, restart_resume, claim_run_files
@@ -59,6 +59,7 @@ contains
       integer, intent(out) :: stat                  !< 0 when the run may write its results
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(deck_t) :: claimed
+      integer :: ios
       if (restart_asked .and. .not. restarting) write (output_unit, '(a)') &
          'restart: no restart point ' // restart_file(deck) // ': the run starts at step 0'
       claimed = deck
@@ -68,16 +69,10 @@ contains
       call claim_results(claimed, result_suffixes(deck%analysis_kind), claim, stat, errmsg)
       if (stat /= 0) return
       call remove_on_stop(claim%first)
-      if (.not. restarting) call restart_discard(deck)
-   end subroutine claim_run_files
-
-   !> Removes an earlier run's restart point, which the files no longer match.
-   subroutine restart_discard(deck)
-      type(deck_t), intent(in) :: deck              !< the effective deck
-      integer :: ios
-      call remove_file(restart_file(deck), ios)
+      if (restarting) return
+      call remove_file(restart_file(deck), ios)            ! an earlier run's, which the files no longer match
       call remove_file(restart_file(deck) // '.tmp', ios)
-   end subroutine restart_discard
+   end subroutine claim_run_files
 
    !> <prefix>.restart, written when the files are flushed (results_tick), at
    !> step 0 and at the end: what the time loop carries from step to step
@@ -116,7 +111,7 @@ contains
       if (h5) pt = results_point(rec%h5)
       call io_layout(s)
       call io_deck(s, deck, changed)
-      call io_state(s, step, cpu, st, size(st%plate%d))
+      call io_state(s, step, cpu, st)
       call io_solver(s, solver, columns)
       call io_record(s, rec, size(st%plate%d))
       call io_results(s, h5, pt)
@@ -195,7 +190,7 @@ contains
       h5 = .false.
       allocate (pt%peak_fields(ndof_node, model%msh%nnode))
       call io_deck(s, deck, changed)
-      call io_state(s, step, cpu_s, st, model%msh%neq)
+      call io_state(s, step, cpu_s, st)
       call io_solver(s, solver, columns)
       call io_record(s, rec, model%msh%neq)
       call progress_start(rec%progress, rec%nstep, deck%t_end)   ! the progress line goes on
@@ -295,17 +290,16 @@ contains
    !> The state after a step: its step, the cpu time so far, the plate's
    !> displacements, velocities and accelerations, the impactor, the contact
    !> history and load pattern.
-   subroutine io_state(s, step, cpu_s, st, neq)
+   subroutine io_state(s, step, cpu_s, st)
       type(restart_stream_t), intent(inout) :: s    !< the restart file
       integer, intent(inout) :: step                !< the step
       real(dp), intent(inout) :: cpu_s              !< cpu time of the run so far (s)
-      type(step_state_t), intent(inout) :: st       !< the state
-      integer, intent(in) :: neq                    !< the plate's equations
+      type(step_state_t), intent(inout) :: st       !< the state (its plate's vectors allocated)
       call io_tag(s, 'state')
       call io_values(s, step, cpu_s)
-      call io_reals(s, st%plate%d, neq)
-      call io_reals(s, st%plate%v, neq)
-      call io_reals(s, st%plate%a, neq)
+      call io_array(s, st%plate%d)
+      call io_array(s, st%plate%v)
+      call io_array(s, st%plate%a)
       call io_impactor(s, st%imp)
       call io_count(s, 3)
       call io_values(s, st%hist%f_m, st%hist%alpha_m, st%hist%alpha_0, st%hist%separated)
@@ -379,7 +373,8 @@ contains
       rec%hist_bytes = nint(bytes, int64)
       call io_impactor(s, rec%imp_prev)
       call io_pattern(s, rec%pattern_prev)
-      call io_reals(s, rec%d_prev, neq)
+      if (.not. allocated(rec%d_prev)) allocate (rec%d_prev(neq))
+      call io_array(s, rec%d_prev)
       active = rec%damage%active
       call io_value(s, active)
       if (s%stat == 0 .and. active .neqv. rec%damage%active) s%stat = 1

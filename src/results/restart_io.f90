@@ -13,7 +13,7 @@ module restart_io
    implicit none
    private
    public :: restart_stream_t, io_tag, io_text, io_value, io_values, io_count, io_block, io_array, io_ints, &
-             io_reals, io_impactor, io_pattern, put_seal, seal_holds
+             io_impactor, io_pattern, put_seal, seal_holds
 
    !> An open restart file and the direction its pieces go.
    type :: restart_stream_t
@@ -176,21 +176,6 @@ contains
       end do
    end subroutine io_array2
 
-   !> A vector of reals of any size; read, with `n`, its size must be n.
-   subroutine io_reals(s, x, n)
-      type(restart_stream_t), intent(inout) :: s    !< the restart file
-      real(dp), allocatable, intent(inout) :: x(:)  !< the values
-      integer, intent(in), optional :: n            !< the size expected
-      integer :: m
-      if (.not. allocated(x)) allocate (x(0))
-      m = size(x)
-      call io_size(s, m, n)
-      if (s%stat /= 0) return
-      if (s%reading) deallocate (x)
-      if (s%reading) allocate (x(m))
-      call io_block(s, x)
-   end subroutine io_reals
-
    !> A vector of integers of any size.
    subroutine io_ints(s, i)
       type(restart_stream_t), intent(inout) :: s    !< the restart file
@@ -226,11 +211,11 @@ contains
       call io_block(s, p%built_for)
       call io_value(s, p%n)
       if (s%stat /= 0) return
-      allocate (eq(0), c(0))
+      allocate (eq(max(p%n, 0)), c(max(p%n, 0)))
       if (p%n > 0 .and. .not. s%reading) eq = p%eq(:p%n)
       if (p%n > 0 .and. .not. s%reading) c = p%c(:p%n)
-      if (p%n > 0) call io_ints(s, eq)
-      if (p%n > 0) call io_reals(s, c, p%n)
+      if (p%n > 0) call io_array(s, eq)
+      if (p%n > 0) call io_array(s, c)
       if (s%stat /= 0) return
       if (s%reading) p%eq = eq
       if (s%reading) p%c = c
