@@ -25,8 +25,8 @@ module restart_point
    use progress_line, only: progress_start
    use step_peak, only: peak_track_t
    use damage_record, only: damage_t
-   use restart_io, only: restart_stream_t, io_tag, io_text, io_value, io_values, io_count, io_block, io_array, &
-      io_ints, io_impactor, io_pattern, put_seal, seal_holds
+   use restart_io, only: restart_stream_t, io_tag, io_text, io_value, io_values, io_count, io_block, &
+      io_array, io_ints, io_impactor, io_pattern, put_seal, seal_holds
    implicit none
    private
    public :: restart_save, restart_check, restart_resume, claim_run_files
@@ -70,7 +70,7 @@ contains
       if (stat /= 0) return
       call remove_on_stop(claim%first)
       if (restarting) return
-      call remove_file(restart_file(deck), ios)            ! an earlier run's, which the files no longer match
+      call remove_file(restart_file(deck), ios)       ! an earlier run's: the files no longer match it
       call remove_file(restart_file(deck) // '.tmp', ios)
    end subroutine claim_run_files
 
@@ -84,9 +84,9 @@ contains
    subroutine restart_save(deck, cpu_s, st, solver, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       real(dp), intent(in) :: cpu_s                 !< cpu time of the run so far (s)
-      type(step_state_t), intent(inout) :: st       !< the state after the last step recorded, committed
+      type(step_state_t), intent(inout) :: st       !< the state after the last step recorded
       type(solver_t), intent(inout) :: solver       !< the plate solver
-      type(record_t), intent(inout) :: rec          !< the run's record (its steps: the last step made)
+      type(record_t), intent(inout) :: rec          !< the run's record (its steps: the last step)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure, naming the file
       character(len=:), allocatable :: path, changed
@@ -316,8 +316,8 @@ contains
       call io_tag(s, 'solver')
       call io_array(s, solver%contraction)
       call io_count(s, 5)
-      call io_values(s, solver%since_measured, solver%solves, solver%response_solves, solver%factorizations, &
-         solver%mixed_solves)
+      call io_values(s, solver%since_measured, solver%solves, solver%response_solves, &
+         solver%factorizations, solver%mixed_solves)
       note = ''
       if (allocated(solver%mixing_note)) note = solver%mixing_note
       call io_text(s, note)
@@ -353,20 +353,20 @@ contains
       logical :: active
       call io_tag(s, 'record')
       call io_count(s, 15)
-      call io_values(s, rec%e0, rec%contact_work, rec%contact_energy, rec%alpha_prev, rec%first_contact_start, &
-         rec%first_contact_end, rec%max_energy_error)
-      call io_values(s, rec%energy_created, rec%energy_lost, rec%max_w_over_h, rec%w_bend_max, rec%diverged_at, &
-         rec%c_plate, rec%c_impactor)
+      call io_values(s, rec%e0, rec%contact_work, rec%contact_energy, rec%alpha_prev, &
+         rec%first_contact_start, rec%first_contact_end, rec%max_energy_error)
+      call io_values(s, rec%energy_created, rec%energy_lost, rec%max_w_over_h, rec%w_bend_max, &
+         rec%diverged_at, rec%c_plate, rec%c_impactor)
       call io_value(s, rec%max_slope)
       call io_count(s, 3*peak_size)
       call io_peak(s, rec%force_peak)
       call io_peak(s, rec%deflection_peak)
       call io_peak(s, rec%strain_peak)
       call io_count(s, 14 + nwarn)
-      call io_values(s, rec%steps, rec%contacts, rec%contact_iterations, rec%max_contact_iter, rec%max_solves, &
-         rec%unconverged_steps, rec%first_unconverged)
-      call io_values(s, rec%nonlinear_fallback_steps, rec%contact_fallback_steps, rec%warnings, rec%mixed_seen, &
-         rec%solves_before, rec%in_contact, rec%substepped_steps)
+      call io_values(s, rec%steps, rec%contacts, rec%contact_iterations, rec%max_contact_iter, &
+         rec%max_solves, rec%unconverged_steps, rec%first_unconverged)
+      call io_values(s, rec%nonlinear_fallback_steps, rec%contact_fallback_steps, rec%warnings, &
+         rec%mixed_seen, rec%solves_before, rec%in_contact, rec%substepped_steps)
       call io_block(s, rec%warned)
       bytes = real(rec%hist_bytes, dp)
       call io_value(s, bytes)
@@ -405,11 +405,11 @@ contains
       type(damage_t), intent(inout) :: dmg          !< the damage record, active
       call io_count(s, 12)
       call io_block(s, dmg%smax)
-      call io_values(s, dmg%step_fi, dmg%max_fi, dmg%max_time, dmg%onset, dmg%onset_fi, dmg%peak_force, &
-         dmg%peak_time)
+      call io_values(s, dmg%step_fi, dmg%max_fi, dmg%max_time, dmg%onset, dmg%onset_fi, &
+         dmg%peak_force, dmg%peak_time)
       call io_count(s, 8)
-      call io_values(s, dmg%step_mode, dmg%max_mode, dmg%max_ply, dmg%max_point, dmg%onset_mode, dmg%onset_ply, &
-         dmg%onset_point)
+      call io_values(s, dmg%step_mode, dmg%max_mode, dmg%max_ply, dmg%max_point, dmg%onset_mode, &
+         dmg%onset_ply, dmg%onset_point)
       call io_value(s, dmg%peak_step)
       call io_array(s, dmg%fi_max)
       call io_array(s, dmg%mode_max)
@@ -427,7 +427,7 @@ contains
    subroutine io_results(s, h5, pt)
       type(restart_stream_t), intent(inout) :: s    !< the restart file
       logical, intent(inout) :: h5                  !< the run writes <prefix>.h5
-      type(results_point_t), intent(inout) :: pt    !< what it holds (read: its peak_fields allocated)
+      type(results_point_t), intent(inout) :: pt    !< what it holds (read: peak_fields allocated)
       call io_tag(s, 'results')
       call io_value(s, h5)
       if (s%stat /= 0 .or. .not. h5) return

@@ -584,8 +584,8 @@ contains
       call summary_integer(s, 'max_contact_iter', rec%max_contact_iter)
       call summary_integer(s, 'max_nonlinear_iter', rec%max_solves)
       call summary_integer(s, 'unconverged_steps', rec%unconverged_steps)
-      call summary_real(s, 'first_unconverged_us', 'first_unconverged', 's', &
-                        real(rec%first_unconverged, dp)*rec%dt, 1.0e6_dp, rec%first_unconverged > 0, 'none')
+      call summary_real(s, 'first_unconverged_us', 'first_unconverged', 's', rec%first_unconverged*rec%dt, &
+                        1.0e6_dp, rec%first_unconverged > 0, 'none')
       call summary_real(s, 'diverged_at_us', 'diverged_at', 's', rec%diverged_at, 1.0e6_dp, &
                         rec%diverged_at >= 0.0_dp, 'none')
       call summary_integer(s, 'nonlinear_fallback_steps', rec%nonlinear_fallback_steps)

@@ -250,12 +250,12 @@ contains
       ! -- delamination (src/strength/delamination.f90): regime, thresholds
       call summary_text(s, 'impact_regime', impact_regime(dmg%delam%ratio))
       call summary_real(s, 'mass_ratio', 'mass_ratio', '-', dmg%delam%ratio, 1.0_dp)
-      call summary_real(s, 'delamination_threshold_N', 'delamination_threshold', 'N', dmg%delam%p_c, 1.0_dp, &
-                        dmg%delam%threshold, 'not computed')
-      call summary_real(s, 'delamination_threshold_dynamic_N', 'delamination_threshold_dynamic', 'N', &
-                        dmg%delam%p_dyn, 1.0_dp, dmg%delam%threshold, 'not computed')
-      call summary_real(s, 'delamination_onset_us', 'delamination_onset', 's', dmg%delam%onset, 1.0e6_dp, &
-                        dmg%delam%threshold .and. dmg%delam%onset >= 0.0_dp, &
+      call summary_real(s, 'delamination_threshold_N', 'delamination_threshold', 'N', dmg%delam%p_c, &
+                        1.0_dp, dmg%delam%threshold, 'not computed')
+      call summary_real(s, 'delamination_threshold_dynamic_N', 'delamination_threshold_dynamic', &
+                        'N', dmg%delam%p_dyn, 1.0_dp, dmg%delam%threshold, 'not computed')
+      call summary_real(s, 'delamination_onset_us', 'delamination_onset', 's', dmg%delam%onset, &
+                        1.0e6_dp, dmg%delam%threshold .and. dmg%delam%onset >= 0.0_dp, &
                         trim(merge('not reached ', 'not computed', dmg%delam%threshold)))
       if (.not. dmg%active) return
       call summary_real(s, 'max_failure_index', 'max_failure_index', '-', dmg%max_fi, 1.0_dp)
@@ -263,8 +263,8 @@ contains
          call summary_real(s, 'max_abs_' // trim(comp(c)) // '_MPa', 'max_abs_' // trim(comp(c)), 'Pa', &
                            dmg%smax(c), 1.0e-6_dp)
       end do
-      call summary_real(s, 'failure_onset_us', 'failure_onset', 's', dmg%onset, 1.0e6_dp, dmg%onset >= 0.0_dp, &
-                        'none')
+      call summary_real(s, 'failure_onset_us', 'failure_onset', 's', dmg%onset, 1.0e6_dp, &
+                        dmg%onset >= 0.0_dp, 'none')
       ply = merge(dmg%onset_ply, dmg%max_ply, dmg%onset >= 0.0_dp)
       point = merge(dmg%onset_point, dmg%max_point, dmg%onset >= 0.0_dp)
       mode = merge(dmg%onset_mode, dmg%max_mode, dmg%onset >= 0.0_dp)
@@ -299,8 +299,10 @@ contains
       subroutine place(what, p)
          character(len=*), intent(in) :: what
          integer, intent(in) :: p
-         call summary_real(s, what // '_x_mm', what // '_x', 'm', xy(1, max(p, 1)), 1.0e3_dp, p > 0, 'none')
-         call summary_real(s, what // '_y_mm', what // '_y', 'm', xy(2, max(p, 1)), 1.0e3_dp, p > 0, 'none')
+         call summary_real(s, what // '_x_mm', what // '_x', 'm', xy(1, max(p, 1)), 1.0e3_dp, p > 0, &
+                           'none')
+         call summary_real(s, what // '_y_mm', what // '_y', 'm', xy(2, max(p, 1)), 1.0e3_dp, p > 0, &
+                           'none')
       end subroutine place
 
    end subroutine damage_close

@@ -77,8 +77,8 @@ contains
          call h5fcreate_f(path, H5F_ACC_EXCL_F, fid, err, access_prp=fapl)
          call h5io_check(err, 'cannot create the HDF5 file', path, stat, errmsg)
       else
-         call h5fopen_f(path, merge(ior(H5F_ACC_RDWR_F, acc_swmr_write), H5F_ACC_RDWR_F, swmr), fid, err, &
-            access_prp=fapl)
+         call h5fopen_f(path, merge(ior(H5F_ACC_RDWR_F, acc_swmr_write), H5F_ACC_RDWR_F, swmr), fid, &
+            err, access_prp=fapl)
          call h5io_check(err, 'cannot open the HDF5 file for writing', path, stat, errmsg)
       end if
       call h5pclose_f(fapl, err)

@@ -38,8 +38,8 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       if (nrow == 0) then
-         call h5io_create_dataset(loc, name, merge(H5T_NATIVE_INTEGER, H5T_NATIVE_DOUBLE, kind == h5io_integer), &
-            [H5S_UNLIMITED_F], [int(chunk, hsize_t)], did, stat, errmsg)
+         call h5io_create_dataset(loc, name, merge(H5T_NATIVE_INTEGER, H5T_NATIVE_DOUBLE, &
+            kind == h5io_integer), [H5S_UNLIMITED_F], [int(chunk, hsize_t)], did, stat, errmsg)
       else
          call h5io_create_dataset(loc, name, H5T_NATIVE_DOUBLE, [int(nrow, hsize_t), H5S_UNLIMITED_F], &
             [int(nrow, hsize_t), int(max(1, chunk/nrow), hsize_t)], did, stat, errmsg)
