@@ -16,7 +16,7 @@ module damage_record
       nstate, ngp
    use failure_criteria, only: strength_t, criterion_code, failure_index, failure_indices, mode_names, mode_none, nmode
    use result_files, only: summary_item_t, summary_real, summary_integer, summary_text
-   use results_hdf5, only: results_file_t
+   use results_hdf5, only: results_file_t, attr_text, attr_unit
    use hdf5_io, only: h5io_group, h5io_set_attr, h5io_write
    use xdmf_plies, only: ply_maps_t, plies_write, plies_add
    use plate_damage, only: plate_damage_t, damage_counts
@@ -330,9 +330,10 @@ contains
          modes = modes // achar(48 + m) // ' ' // trim(mode_names(m))
       end do
       call h5io_group(rf%fid, 'strength', stat, why)
-      call put_text('strength', 'criterion', dmg%criterion_name)
-      call put_text('strength', 'modes', modes)
-      call put_text('strength', 'faces', 'face 2k-1: bottom of ply k (towards the impacted face), 2k: its top')
+      call attr_text(rf%fid, 'strength', 'criterion', dmg%criterion_name, stat, why)
+      call attr_text(rf%fid, 'strength', 'modes', modes, stat, why)
+      call attr_text(rf%fid, 'strength', 'faces', 'face 2k-1: bottom of ply k (towards the impacted face), ' &
+         // '2k: its top', stat, why)
       if (stat == 0) call h5io_set_attr(rf%fid, 'strength', 'plies', dmg%nply, stat, why)
       call put_data('strength/points', xy, 'm')
       if (stat == 0) call h5io_write(rf%fid, 'strength/point_element', [((c - 1)/9 + 1, c = 1, dmg%npoint)], &
@@ -348,10 +349,8 @@ contains
       call damage_stresses(dmg, model, dmg%d_peak, sigma, fi)
       if (stat == 0) call h5io_group(rf%fid, 'strength/peak', stat, why)
       if (stat == 0) call h5io_set_attr(rf%fid, 'strength/peak', 'step', dmg%peak_step, stat, why)
-      if (stat == 0) call h5io_set_attr(rf%fid, 'strength/peak', 'time', dmg%peak_time, stat, why)
-      call put_text('strength/peak', 'time_units', 's')
-      if (stat == 0) call h5io_set_attr(rf%fid, 'strength/peak', 'force', dmg%peak_force, stat, why)
-      call put_text('strength/peak', 'force_units', 'N')
+      call attr_unit(rf%fid, 'strength/peak', 'time', dmg%peak_time, 's', stat, why)
+      call attr_unit(rf%fid, 'strength/peak', 'force', dmg%peak_force, 'N', stat, why)
       do c = 1, 5
          call put_data('strength/peak/' // trim(comp(c)), reshape(sigma(c, :, :, :), [2*dmg%nply, dmg%npoint]), 'Pa')
       end do
@@ -367,23 +366,18 @@ contains
 
    contains
 
-      subroutine put_text(obj, name, value)
-         character(len=*), intent(in) :: obj, name, value
-         if (stat == 0) call h5io_set_attr(rf%fid, obj, name, value, stat, why)
-      end subroutine put_text
-
       subroutine put_data(name, x, units)
          character(len=*), intent(in) :: name, units
          real(dp), intent(in) :: x(:,:)
          if (stat == 0) call h5io_write(rf%fid, name, x, stat, why)
-         call put_text(name, 'units', units)
+         call attr_text(rf%fid, name, 'units', units, stat, why)
       end subroutine put_data
 
       subroutine put_data1(name, x, units)
          character(len=*), intent(in) :: name, units
          real(dp), intent(in) :: x(:)
          if (stat == 0) call h5io_write(rf%fid, name, x, stat, why)
-         call put_text(name, 'units', units)
+         call attr_text(rf%fid, name, 'units', units, stat, why)
       end subroutine put_data1
 
    end subroutine damage_write

@@ -26,7 +26,8 @@ module results_hdf5
    implicit none
    private
    public :: results_file_t, results_point_t, results_point, results_open, results_reopen, results_append_history, results_state, &
-             results_tick, results_flush, results_leave, results_closing, results_finish
+             results_tick, results_flush, results_leave, results_closing, results_finish, attr_text, &
+             attr_unit
 
    integer, parameter :: units_len = 8
    !> Units of /fields' time, step, force and nodal fields u, v, w, psi_x, psi_y.
@@ -599,9 +600,9 @@ contains
          end do echo_lines
          close (u)
       end if
-      call put_text('deck', 'source', deck%source)
-      if (allocated(deck%settings)) call put_text('deck', 'settings', deck%settings)
-      call put_text('deck', 'echo', echo)
+      call attr_text(fid, 'deck', 'source', deck%source, stat, errmsg)
+      if (allocated(deck%settings)) call attr_text(fid, 'deck', 'settings', deck%settings, stat, errmsg)
+      call attr_text(fid, 'deck', 'echo', echo, stat, errmsg)
       do ig = 1, size(deck_groups)
          if (stat == 0) call h5io_group(fid, 'deck/'//trim(deck_groups(ig)), stat, errmsg)
       end do
@@ -616,24 +617,19 @@ contains
             if (v%given) then
                call h5io_set_attr(fid, grp, name, v%r, stat, errmsg)
             else
-               call put_text(grp, name, 'not given')
+               call attr_text(fid, grp, name, 'not given', stat, errmsg)
             end if
          case (kind_integer)
             call h5io_set_attr(fid, grp, name, v%i, stat, errmsg)
          case (kind_logical)
-            call put_text(grp, name, trim(merge('.true. ', '.false.', v%l)))
+            call attr_text(fid, grp, name, trim(merge('.true. ', '.false.', v%l)), stat, errmsg)
          case (kind_word, kind_path)
-            call put_text(grp, name, v%s)
+            call attr_text(fid, grp, name, v%s, stat, errmsg)
          case (kind_reals)
             call h5io_set_attr(fid, grp, name, v%list, stat, errmsg)
          end select
-         call put_text(grp, name//'_units', trim(deck_vars(iv)%unit))
+         call attr_text(fid, grp, name//'_units', trim(deck_vars(iv)%unit), stat, errmsg)
       end do variables
-   contains
-      subroutine put_text(obj, name, value)
-         character(len=*), intent(in) :: obj, name, value
-         if (stat == 0) call h5io_set_attr(fid, obj, name, value, stat, errmsg)
-      end subroutine put_text
    end subroutine write_deck
 
    !> /mesh: coordinates, connectivity, freedom map, grid and sizes.
