@@ -338,8 +338,10 @@ contains
       call put_data('strength/points', xy, 'm')
       if (stat == 0) call h5io_write(rf%fid, 'strength/point_element', [((c - 1)/9 + 1, c = 1, dmg%npoint)], &
                                      stat, why)
-      call put_data1('strength/ply_z', dmg%stack%z, 'm')
-      call put_data1('strength/ply_angle', dmg%stack%angle, 'deg')
+      if (stat == 0) call h5io_write(rf%fid, 'strength/ply_z', dmg%stack%z, stat, why)
+      call attr_text(rf%fid, 'strength/ply_z', 'units', 'm', stat, why)
+      if (stat == 0) call h5io_write(rf%fid, 'strength/ply_angle', dmg%stack%angle, stat, why)
+      call attr_text(rf%fid, 'strength/ply_angle', 'units', 'deg', stat, why)
       call put_data('strength/damage_map', dmg%fi_max, '-')
       if (stat == 0) call h5io_write(rf%fid, 'strength/damage_mode', dmg%mode_max, stat, why)
       call put_data('strength/onset_time', dmg%onset_time, 's')
@@ -372,13 +374,6 @@ contains
          if (stat == 0) call h5io_write(rf%fid, name, x, stat, why)
          call attr_text(rf%fid, name, 'units', units, stat, why)
       end subroutine put_data
-
-      subroutine put_data1(name, x, units)
-         character(len=*), intent(in) :: name, units
-         real(dp), intent(in) :: x(:)
-         if (stat == 0) call h5io_write(rf%fid, name, x, stat, why)
-         call attr_text(rf%fid, name, 'units', units, stat, why)
-      end subroutine put_data1
 
    end subroutine damage_write
 
