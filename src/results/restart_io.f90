@@ -65,19 +65,9 @@ contains
          return
       end if
       if (s%reading) text = repeat(' ', n)
-      if (n > 0) call io_chars(s, text)
+      if (n > 0 .and. s%reading) read (s%u, iostat=s%stat) text
+      if (n > 0 .and. .not. s%reading) write (s%u, iostat=s%stat) text
    end subroutine io_text
-
-   !> The characters of a text, as they are.
-   subroutine io_chars(s, text)
-      type(restart_stream_t), intent(inout) :: s    !< the restart file
-      character(len=*), intent(inout) :: text       !< the text
-      if (s%reading) then
-         read (s%u, iostat=s%stat) text
-      else
-         write (s%u, iostat=s%stat) text
-      end if
-   end subroutine io_chars
 
    !> One value: a real(dp), an integer, or a logical as the integer 0 or 1.
    recursive subroutine io_value(s, x)
