@@ -18,6 +18,7 @@ module results_xdmf
    use hdf5_series, only: h5io_view_column, h5io_create_series, h5io_real, h5io_open_dataset, h5io_append_block, &
       h5io_cut_series, h5io_close_dataset
    use file_system, only: rename_file
+   use result_files, only: keep_failure
    use xdmf_plies, only: xdmf_plies_t, plies_collection, data_item
    implicit none
    private
@@ -311,10 +312,7 @@ contains
       call write_xml(x, stat, errmsg)
       call h5io_close(x%vid, ios, why)
       x%vid = -1
-      if (ios /= 0 .and. stat == 0) then
-         stat = ios
-         errmsg = x%views_path // ': ' // trim(why)
-      end if
+      call keep_failure(stat, errmsg, ios, x%views_path // ': ' // trim(why))
       x%active = .false.
    end subroutine xdmf_close
 
