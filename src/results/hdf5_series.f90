@@ -142,14 +142,12 @@ contains
    !> Appends the columns x(:, k) (nrow values each) to the rank-2 series did.
    subroutine append_columns(did, x, stat, errmsg)
       integer(hid_t), intent(in) :: did
-      real(dp), intent(in) :: x(:,:)
+      real(dp), intent(in), target, contiguous :: x(:,:)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      real(dp), allocatable, target :: buf(:,:)
       stat = 0
       if (size(x, 2) == 0) return
-      buf = x
-      call grow_and_write(did, H5T_NATIVE_DOUBLE, 2, size(x, 2), c_loc(buf), stat, errmsg)
+      call grow_and_write(did, H5T_NATIVE_DOUBLE, 2, size(x, 2), c_loc(x), stat, errmsg)
    end subroutine append_columns
 
    !> Extends did's last dimension by n and writes the values at buf (type tid) there.
