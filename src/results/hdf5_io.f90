@@ -20,7 +20,7 @@ module hdf5_io
    use file_system, only: remove_file
    implicit none
    private
-   public :: h5io_start, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_exists, h5io_delete
+   public :: h5io_start, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_delete
    public :: h5io_set_attr, h5io_update_attr, h5io_write, h5io_rewrite
    public :: h5io_check, h5io_fail, h5io_attr_path, h5io_vlen_string_type
    public :: h5io_create_dataset
@@ -153,22 +153,17 @@ contains
       call h5io_check(err, 'cannot close the group', name, stat, errmsg)
    end subroutine h5io_group
 
-   !> True when the link `name` exists (its parent must).
-   logical function h5io_exists(loc, name) result(there)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name
-      integer :: err
-      call h5lexists_f(loc, name, there, err)
-      there = there .and. err == 0
-   end function h5io_exists
-
-   !> Removes the link `name` (the object goes with its last link).
+   !> Removes the link `name` when there is one (the object goes with its last link).
    subroutine h5io_delete(loc, name, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
+      logical :: there
       integer :: err
+      stat = 0
+      call h5lexists_f(loc, name, there, err)
+      if (err /= 0 .or. .not. there) return
       call h5ldelete_f(loc, name, err)
       call h5io_check(err, 'cannot remove', name, stat, errmsg)
    end subroutine h5io_delete

@@ -18,7 +18,7 @@ module results_hdf5
    use plate_damage, only: damage_wanted
    use result_files, only: keep_failure, column_t, history_columns, nhist_damage, history_width, summary_item_t
    use hdf5_io, only: h5io_start, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
-      h5io_update_attr, h5io_write, h5io_rewrite, h5io_exists, h5io_delete
+      h5io_update_attr, h5io_write, h5io_rewrite, h5io_delete
    use hdf5_series, only: h5io_create_series, h5io_append_block, h5io_open_dataset, &
       h5io_cut_series, h5io_read_series, h5io_close_dataset, h5io_real, h5io_integer
    use results_xdmf, only: xdmf_t, xdmf_open, xdmf_start, xdmf_resume, xdmf_snapshots, xdmf_batch_close, &
@@ -182,9 +182,7 @@ contains
       if (stat == 0) call h5io_update_attr(rf%fid, 'history', 'rows', pt%rows, stat, why)
       if (stat == 0) call h5io_update_attr(rf%fid, 'fields', 'snapshots', pt%snaps, stat, why)
       if (stat == 0) call write_peak(rf, stat, why)
-      if (stat == 0) then
-         if (h5io_exists(rf%fid, 'strength')) call h5io_delete(rf%fid, 'strength', stat, why)
-      end if
+      if (stat == 0) call h5io_delete(rf%fid, 'strength', stat, why)
       if (stat == 0) call h5io_delete(rf%fid, 'summary', stat, why)
       if (stat == 0) call h5io_group(rf%fid, 'summary', stat, why)
       call attr_text(rf%fid, 'summary', 'status', 'running', stat, why)

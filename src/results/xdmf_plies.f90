@@ -12,7 +12,7 @@ module xdmf_plies
    use number_text, only: int_str
    use mesh, only: mesh_t
    use shape_functions, only: nen, shape9
-   use hdf5_io, only: h5io_group, h5io_write, h5io_exists, h5io_delete
+   use hdf5_io, only: h5io_group, h5io_write, h5io_delete
    implicit none
    private
    public :: xdmf_plies_t, ply_maps_t, plies_write, plies_add, plies_collection, data_item
@@ -77,7 +77,7 @@ contains
       call laminate_grid(msh, maps%z, xyz, cells)
       stat = 0
       ! a restarted run (src/record/restart_point.f90) finds the group of the run it continues
-      if (h5io_exists(fid, group)) call h5io_delete(fid, group, stat, errmsg)
+      call h5io_delete(fid, group, stat, errmsg)
       if (stat == 0) call h5io_group(fid, group, stat, errmsg)
       if (stat == 0) call h5io_write(fid, group // '/points', xyz, stat, errmsg)
       if (stat == 0) call h5io_write(fid, group // '/cells', cells, stat, errmsg)
