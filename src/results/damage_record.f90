@@ -183,14 +183,12 @@ contains
       real(dp), intent(out) :: fi(:)
       integer, intent(out) :: mode(:)
       real(dp) :: f2(2*size(fi))
-      integer :: m2(2*size(fi)), k
+      integer :: m2(2*size(fi)), k, j
       call failure_indices(dmg%strength, dmg%criterion, reshape(sigma, [5, 2*size(fi)]), f2, m2)
       do k = 1, size(fi)
-         if (f2(2*k) > f2(2*k-1)) then
-            fi(k) = f2(2*k);  mode(k) = m2(2*k)
-         else
-            fi(k) = f2(2*k-1);  mode(k) = m2(2*k-1)
-         end if
+         j = merge(2*k, 2*k - 1, f2(2*k) > f2(2*k-1))
+         fi(k) = f2(j)
+         mode(k) = m2(j)
       end do
    end subroutine ply_indices
 

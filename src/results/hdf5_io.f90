@@ -394,11 +394,8 @@ contains
       character(len=*), intent(in) :: what, name
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      if (err == 0) then
-         stat = 0
-      else
-         call h5io_fail(what, name, stat, errmsg)
-      end if
+      stat = 0
+      if (err /= 0) call h5io_fail(what, name, stat, errmsg)
    end subroutine h5io_check
 
    !> stat = failed and the message "what 'name'" (or "what" without a name).
@@ -407,11 +404,8 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       stat = failed
-      if (len(name) > 0) then
-         errmsg = what//" '"//name//"'"
-      else
-         errmsg = what
-      end if
+      errmsg = what
+      if (len(name) > 0) errmsg = what//" '"//name//"'"
    end subroutine h5io_fail
 
    !> 'obj@name' for messages about attribute name of object obj.

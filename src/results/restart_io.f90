@@ -43,12 +43,9 @@ contains
       character(len=tag_len) :: t
       if (s%stat /= 0) return
       t = tag
-      if (s%reading) then
-         read (s%u, iostat=s%stat) t
-         if (s%stat == 0 .and. t /= tag) s%stat = wrong_tag
-      else
-         write (s%u, iostat=s%stat) t
-      end if
+      if (s%reading) read (s%u, iostat=s%stat) t
+      if (.not. s%reading) write (s%u, iostat=s%stat) t
+      if (s%stat == 0 .and. t /= tag) s%stat = wrong_tag
    end subroutine io_tag
 
    !> A text: its length, then its characters.
