@@ -15,7 +15,6 @@ module restart_point
    use mesh, only: ndof_node
    use plate_model, only: model_t
    use plate_solver, only: solver_t, contact_response
-   use contact_law, only: contact_history_t
    use contact_load, only: load_pattern_t
    use contact_iteration, only: step_state_t
    use newmark, only: newmark_t
@@ -24,9 +23,10 @@ module restart_point
    use results_hdf5, only: results_reopen, results_point_t, results_point
    use run_recorder, only: record_t, record_settings, nwarn
    use progress_line, only: progress_start
-   use step_peak, only: peak_state, peak_restore, peak_state_size
-   use restart_io, only: put_tag, take_tag, put_text, take_text, put_value, take_value, put_array, take_reals, &
-      take_ints, put_impactor, take_impactor, put_pattern, take_pattern, put_seal, seal_holds
+   use step_peak, only: peak_track_t
+   use damage_record, only: damage_t
+   use restart_io, only: restart_stream_t, io_tag, io_text, io_value, io_values, io_count, io_block, &
+      io_array, io_ints, io_impactor, io_pattern, put_seal, seal_holds
    implicit none
    private
    public :: restart_save, restart_check, restart_resume, claim_run_files
@@ -35,6 +35,8 @@ module restart_point
    integer, parameter :: layout = 3
    !> The deck's variables a restart may change.
    character(len=*), parameter :: free_vars(2) = [character(len=24) :: 'analysis.t_end', 'output.overwrite']
+   !> Reals of a peak's samples (io_peak).
+   integer, parameter :: peak_size = 11
    !> open(2)'s O_RDONLY.
    integer(c_int), parameter :: o_rdonly = 0
 
@@ -57,6 +59,7 @@ contains
       integer, intent(out) :: stat                  !< 0 when the run may write its results
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(deck_t) :: claimed
+      integer :: ios
       if (restart_asked .and. .not. restarting) write (output_unit, '(a)') &
          'restart: no restart point ' // restart_file(deck) // ': the run starts at step 0'
       claimed = deck
@@ -66,61 +69,56 @@ contains
       call claim_results(claimed, result_suffixes(deck%analysis_kind), claim, stat, errmsg)
       if (stat /= 0) return
       call remove_on_stop(claim%first)
-      if (.not. restarting) call restart_discard(deck)
-   end subroutine claim_run_files
-
-   !> Removes an earlier run's restart point, which the files no longer match.
-   subroutine restart_discard(deck)
-      type(deck_t), intent(in) :: deck              !< the effective deck
-      integer :: ios
-      call remove_file(restart_file(deck), ios)
+      if (restarting) return
+      call remove_file(restart_file(deck), ios)       ! an earlier run's: the files no longer match it
       call remove_file(restart_file(deck) // '.tmp', ios)
-   end subroutine restart_discard
+   end subroutine claim_run_files
 
    !> <prefix>.restart, written when the files are flushed (results_tick), at
    !> step 0 and at the end: what the time loop carries from step to step
    !> (the deck as text: only &analysis t_end may change; the state, the
    !> solver, the record, what <prefix>.h5 holds), in tagged parts sealed by
-   !> their CRC-32 (restart_io). Written whole to <prefix>.restart.tmp, forced
-   !> to the disk and renamed over the old one: the old point or the new one.
+   !> their CRC-32 (restart_io), read back by the same routines (io_state ...).
+   !> Written whole to <prefix>.restart.tmp, forced to the disk and renamed
+   !> over the old one: the old point or the new one.
    subroutine restart_save(deck, cpu_s, st, solver, rec, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the effective deck
       real(dp), intent(in) :: cpu_s                 !< cpu time of the run so far (s)
-      type(step_state_t), intent(in) :: st          !< the state after the last step recorded, committed
-      type(solver_t), intent(in) :: solver          !< the plate solver
-      type(record_t), intent(in) :: rec             !< the run's record (its steps: the last step made)
+      type(step_state_t), intent(inout) :: st       !< the state after the last step recorded
+      type(solver_t), intent(inout) :: solver       !< the plate solver
+      type(record_t), intent(inout) :: rec          !< the run's record (its steps: the last step)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure, naming the file
-      character(len=:), allocatable :: path
+      character(len=:), allocatable :: path, changed
       character(len=msg_len) :: iomsg
-      integer :: u, ios
+      type(restart_stream_t) :: s
+      type(results_point_t) :: pt
+      integer, allocatable :: columns(:)
+      integer :: ios, step
+      real(dp) :: cpu
+      logical :: h5
       path = restart_file(deck)
       call remove_file(path // '.tmp', ios)          ! a link itself, never what it points to
-      open (newunit=u, file=path // '.tmp', access='stream', form='unformatted', status='new', &
+      open (newunit=s%u, file=path // '.tmp', access='stream', form='unformatted', status='new', &
             action='readwrite', iostat=stat, iomsg=iomsg)
       if (stat /= 0) then
          errmsg = path // '.tmp: ' // trim(iomsg)
          return
       end if
-      call put_tag(u, 'impactRS', stat)
-      call put_value(u, layout, stat)
-      call put_deck(u, deck, stat)
-      call put_tag(u, 'state', stat)
-      call put_value(u, rec%steps, stat)
-      call put_value(u, cpu_s, stat)
-      call put_array(u, st%plate%d, stat)
-      call put_array(u, st%plate%v, stat)
-      call put_array(u, st%plate%a, stat)
-      call put_impactor(u, st%imp, stat)
-      call put_array(u, [st%hist%f_m, st%hist%alpha_m, st%hist%alpha_0], stat)
-      call put_value(u, st%hist%separated, stat)
-      call put_pattern(u, st%cit%pattern, stat)
-      call put_solver(u, solver, stat)
-      call put_record(u, rec, stat)
-      call put_results(u, rec, stat)
-      call put_tag(u, 'end', stat)
-      call put_seal(u, stat)
-      close (u, iostat=ios)
+      step = rec%steps
+      cpu = cpu_s
+      h5 = allocated(rec%h5%path)
+      if (h5) pt = results_point(rec%h5)
+      call io_layout(s)
+      call io_deck(s, deck, changed)
+      call io_state(s, step, cpu, st)
+      call io_solver(s, solver, columns)
+      call io_record(s, rec, size(st%plate%d))
+      call io_results(s, h5, pt)
+      call io_tag(s, 'end')
+      call put_seal(s%u, s%stat)
+      close (s%u, iostat=ios)
+      stat = s%stat
       if (stat == 0) stat = ios
       if (stat == 0) call force_to_disk(path // '.tmp', stat)
       if (stat == 0) call rename_file(path // '.tmp', path, stat, iomsg)
@@ -137,18 +135,19 @@ contains
       integer, intent(out) :: stat                  !< 0 when the run may continue from it
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=:), allocatable :: path, changed
-      integer :: u
+      type(restart_stream_t) :: s
       stat = 0
       step = 0
       path = restart_file(deck)
       inquire (file=path, exist=found)
       if (.not. found) return
-      call open_point(path, u, stat, errmsg)
+      call open_point(path, s, stat, errmsg)
       if (stat /= 0) return
-      call compare_deck(u, deck, changed, stat)
-      call take_tag(u, 'state', stat)
-      call take_value(u, step, stat)
-      close (u)
+      call io_deck(s, deck, changed)
+      call io_tag(s, 'state')
+      call io_value(s, step)
+      close (s%u)
+      stat = s%stat
       if (stat /= 0) then
          errmsg = path // ': not a restart point of this build of impact (or damaged)'
       else if (len(changed) > 0) then
@@ -173,9 +172,8 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=:), allocatable :: path, changed
-      real(dp), allocatable :: x(:)
       integer, allocatable :: columns(:)
-      integer :: u
+      type(restart_stream_t) :: s
       type(results_point_t) :: pt
       logical :: h5
       integer :: step
@@ -186,28 +184,21 @@ contains
       end if
       path = restart_file(deck)
       step = 0;  cpu_s = 0.0_dp
-      call open_point(path, u, stat, errmsg)
+      call open_point(path, s, stat, errmsg)
       if (stat /= 0) return
-      call compare_deck(u, deck, changed, stat)
-      call take_tag(u, 'state', stat)
-      call take_value(u, step, stat)
-      call take_value(u, cpu_s, stat)
-      call take_reals(u, st%plate%d, stat, model%msh%neq)
-      call take_reals(u, st%plate%v, stat, model%msh%neq)
-      call take_reals(u, st%plate%a, stat, model%msh%neq)
-      call take_impactor(u, st%imp, stat)
-      call take_reals(u, x, stat, 3)
-      if (stat == 0) st%hist = contact_history_t(f_m=x(1), alpha_m=x(2), alpha_0=x(3))
-      call take_value(u, st%hist%separated, stat)
-      call take_pattern(u, st%cit%pattern, stat)
-      call take_solver(u, solver, columns, stat)
-      call take_record(u, deck, model, nm, rec, stat)
-      rec%cpu_before = cpu_s
+      call record_settings(rec, deck, model, nm)
       h5 = .false.
-      call take_results(u, model%msh%nnode, h5, pt, stat)
-      call take_tag(u, 'end', stat)
-      close (u)
-      if (stat /= 0 .or. step /= rec%steps) then
+      allocate (pt%peak_fields(ndof_node, model%msh%nnode))
+      call io_deck(s, deck, changed)
+      call io_state(s, step, cpu_s, st)
+      call io_solver(s, solver, columns)
+      call io_record(s, rec, model%msh%neq)
+      call progress_start(rec%progress, rec%nstep, deck%t_end)   ! the progress line goes on
+      rec%cpu_before = cpu_s
+      call io_results(s, h5, pt)
+      call io_tag(s, 'end')
+      close (s%u)
+      if (s%stat /= 0 .or. step /= rec%steps) then
          stat = 1
          errmsg = path // ': not a restart point of this run (or damaged)'
          return
@@ -232,118 +223,109 @@ contains
    end subroutine restart_resume
 
    !> Opens a restart point for reading; checks its checksum, tag and layout.
-   subroutine open_point(path, u, stat, errmsg)
+   subroutine open_point(path, s, stat, errmsg)
       character(len=*), intent(in) :: path          !< <prefix>.restart
-      integer, intent(out) :: u                     !< the open stream, at the deck's part
+      type(restart_stream_t), intent(out) :: s      !< the open stream, at the deck's part
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=msg_len) :: iomsg
-      integer :: version
-      open (newunit=u, file=path, access='stream', form='unformatted', status='old', action='read', &
+      s%reading = .true.
+      open (newunit=s%u, file=path, access='stream', form='unformatted', status='old', action='read', &
             iostat=stat, iomsg=iomsg)
       if (stat /= 0) then
          errmsg = path // ': ' // trim(iomsg)
          return
       end if
-      if (.not. seal_holds(u)) then
-         close (u)
+      if (.not. seal_holds(s%u)) then
+         close (s%u)
          stat = 1
          errmsg = path // ': damaged (its checksum does not match its contents): no run continues from it'
          return
       end if
-      version = -1
-      call take_tag(u, 'impactRS', stat)
-      call take_value(u, version, stat)
-      if (stat == 0 .and. version /= layout) stat = 1
+      call io_layout(s)
+      stat = s%stat
       if (stat /= 0) then
-         close (u)
+         close (s%u)
          errmsg = path // ': not a restart point of this build of impact'
       end if
    end subroutine open_point
 
-   !> The deck's variables as 'group.name' and the text of their value.
-   subroutine put_deck(u, deck, stat)
-      integer, intent(in) :: u                      !< the restart file
-      type(deck_t), intent(in) :: deck              !< the effective deck
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      integer :: iv
-      call put_tag(u, 'deck', stat)
-      call put_value(u, size(deck_vars), stat)
-      do iv = 1, size(deck_vars)
-         call put_text(u, var_key(iv), stat)
-         call put_text(u, deck_value_text(deck, iv), stat)
-      end do
-   end subroutine put_deck
+   !> The file's tag and layout; read, stat /= 0 for another layout.
+   subroutine io_layout(s)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file, at its start
+      integer :: version
+      version = layout
+      call io_tag(s, 'impactRS')
+      call io_value(s, version)
+      if (s%stat == 0 .and. version /= layout) s%stat = 1
+   end subroutine io_layout
 
-   !> Reads the deck's part and names what differs from `deck` but free_vars.
-   subroutine compare_deck(u, deck, changed, stat)
-      integer, intent(in) :: u                      !< the restart file, at the deck's part
+   !> The deck's variables as 'group.name' and the text of their value; read,
+   !> `changed` names what differs from `deck` but free_vars.
+   subroutine io_deck(s, deck, changed)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file, at the deck's part
       type(deck_t), intent(in) :: deck              !< the effective deck
       character(len=:), allocatable, intent(out) :: changed   !< '&group name = value (was value), ...'
-      integer, intent(inout) :: stat                !< 0, or the first failure
       character(len=:), allocatable :: key, then, now
-      integer :: n, k, iv, dot
+      integer :: iv, dot
       changed = ''
-      now = ''            ! (else gfortran 12 at -O2 takes its length for unset in the loop)
-      n = -1
-      call take_tag(u, 'deck', stat)
-      call take_value(u, n, stat)
-      if (stat == 0 .and. n /= size(deck_vars)) stat = 1
-      variables: do k = 1, max(n, 0)
-         call take_text(u, key, stat)
-         call take_text(u, then, stat)
-         if (stat /= 0) exit variables
-         iv = k
-         if (var_key(iv) /= key) stat = 1               ! another schema: another build
-         if (stat /= 0) exit variables
-         if (any(free_vars == key)) cycle variables
+      call io_tag(s, 'deck')
+      call io_count(s, size(deck_vars))
+      variables: do iv = 1, size(deck_vars)
+         key = var_key(iv)
          now = deck_value_text(deck, iv)
-         if (now == then) cycle variables
+         then = now
+         call io_text(s, key)
+         call io_text(s, then)
+         if (s%stat /= 0) exit variables
+         if (var_key(iv) /= key) s%stat = 1               ! another schema: another build
+         if (s%stat /= 0) exit variables
+         if (any(free_vars == key) .or. now == then) cycle variables
          dot = index(key, '.')
          if (len(changed) > 0) changed = changed // ', '
          changed = changed // '&' // key(:dot - 1) // ' ' // key(dot + 1:) // ' = ' // now // ' (was ' // then // ')'
       end do variables
-   end subroutine compare_deck
+   end subroutine io_deck
 
-   !> The solver's state that carries from step to step (above restart_save).
-   subroutine put_solver(u, solver, stat)
-      integer, intent(in) :: u                      !< the restart file
-      type(solver_t), intent(in) :: solver          !< the plate solver
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      call put_tag(u, 'solver', stat)
-      call put_array(u, solver%contraction, stat)
-      call put_array(u, [solver%since_measured, solver%solves, solver%response_solves, solver%factorizations, &
-         solver%mixed_solves], stat)
-      if (allocated(solver%mixing_note)) then
-         call put_text(u, solver%mixing_note, stat)
-      else
-         call put_text(u, '', stat)
-      end if
-      call put_array(u, solver%resp_eq(:solver%nresp), stat)
-   end subroutine put_solver
+   !> The state after a step: its step, the cpu time so far, the plate's
+   !> displacements, velocities and accelerations, the impactor, the contact
+   !> history and load pattern.
+   subroutine io_state(s, step, cpu_s, st)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
+      integer, intent(inout) :: step                !< the step
+      real(dp), intent(inout) :: cpu_s              !< cpu time of the run so far (s)
+      type(step_state_t), intent(inout) :: st       !< the state (its plate's vectors allocated)
+      call io_tag(s, 'state')
+      call io_values(s, step, cpu_s)
+      call io_array(s, st%plate%d)
+      call io_array(s, st%plate%v)
+      call io_array(s, st%plate%a)
+      call io_impactor(s, st%imp)
+      call io_count(s, 3)
+      call io_values(s, st%hist%f_m, st%hist%alpha_m, st%hist%alpha_0, st%hist%separated)
+      call io_pattern(s, st%cit%pattern)
+   end subroutine io_state
 
-   !> Reads the solver's state and the equations of its response columns.
-   subroutine take_solver(u, solver, columns, stat)
-      integer, intent(in) :: u                      !< the restart file, at the solver's part
+   !> The solver's state that carries from step to step and the equations of
+   !> its response columns (above restart_save).
+   subroutine io_solver(s, solver, columns)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
       type(solver_t), intent(inout) :: solver       !< the plate solver, factored
       integer, allocatable, intent(out) :: columns(:)   !< the equations of its columns
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      real(dp), allocatable :: x(:)
-      integer, allocatable :: i(:)
       character(len=:), allocatable :: note
+      call io_tag(s, 'solver')
+      call io_array(s, solver%contraction)
+      call io_count(s, 5)
+      call io_values(s, solver%since_measured, solver%solves, solver%response_solves, &
+         solver%factorizations, solver%mixed_solves)
+      note = ''
+      if (allocated(solver%mixing_note)) note = solver%mixing_note
+      call io_text(s, note)
+      if (s%reading .and. len(note) > 0) solver%mixing_note = note
       allocate (columns(0))
-      call take_tag(u, 'solver', stat)
-      call take_reals(u, x, stat, 2)
-      call take_ints(u, i, stat, 5)
-      call take_text(u, note, stat)
-      call take_ints(u, columns, stat)
-      if (stat /= 0) return
-      solver%contraction = x
-      solver%since_measured = i(1);  solver%solves = i(2);  solver%response_solves = i(3)
-      solver%factorizations = i(4);  solver%mixed_solves = i(5)
-      if (len(note) > 0) solver%mixing_note = note
-   end subroutine take_solver
-
+      if (.not. s%reading) columns = solver%resp_eq(:solver%nresp)
+      call io_ints(s, columns)
+   end subroutine io_solver
    !> The solver's response columns on the equations `columns`, computed again
    !> in their order (the same values); its count of back substitutions kept.
    subroutine response_columns(solver, columns, stat, errmsg)
@@ -363,144 +345,98 @@ contains
 
    !> What the record carries from step to step: energies, previous step,
    !> running figures, warnings, the history's length, &strength's damage maps.
-   subroutine put_record(u, rec, stat)
-      type(record_t), intent(in) :: rec             !< the record
-      integer, intent(in) :: u                      !< the restart file, an open stream
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      call put_tag(u, 'record', stat)
-      call put_array(u, [rec%e0, rec%contact_work, rec%contact_energy, rec%alpha_prev, &
-         rec%first_contact_start, rec%first_contact_end, rec%max_energy_error, rec%energy_created, &
-         rec%energy_lost, rec%max_w_over_h, rec%w_bend_max, &
-         rec%diverged_at, rec%c_plate, rec%c_impactor, rec%max_slope], stat)
-      call put_array(u, [peak_state(rec%force_peak), peak_state(rec%deflection_peak), peak_state(rec%strain_peak)], &
-         stat)
-      call put_array(u, [rec%steps, rec%contacts, rec%contact_iterations, rec%max_contact_iter, rec%max_solves, &
-         rec%unconverged_steps, rec%first_unconverged, rec%nonlinear_fallback_steps, rec%contact_fallback_steps, &
-         rec%warnings, rec%mixed_seen, rec%solves_before, merge(1, 0, rec%in_contact), rec%substepped_steps, &
-         merge(1, 0, rec%warned)], stat)
-      call put_value(u, real(rec%hist_bytes, dp), stat)
-      call put_impactor(u, rec%imp_prev, stat)
-      call put_pattern(u, rec%pattern_prev, stat)
-      call put_array(u, rec%d_prev, stat)
-      call put_value(u, rec%damage%active, stat)
-      call put_value(u, rec%damage%delam%onset, stat)
-      if (.not. rec%damage%active) return
-      call put_array(u, [rec%damage%smax, rec%damage%step_fi, rec%damage%max_fi, rec%damage%max_time, &
-         rec%damage%onset, rec%damage%onset_fi, rec%damage%peak_force, rec%damage%peak_time], stat)
-      call put_array(u, [rec%damage%step_mode, rec%damage%max_mode, rec%damage%max_ply, rec%damage%max_point, &
-         rec%damage%onset_mode, rec%damage%onset_ply, rec%damage%onset_point, rec%damage%peak_step], stat)
-      call put_array(u, reshape(rec%damage%fi_max, [size(rec%damage%fi_max)]), stat)
-      call put_array(u, reshape(rec%damage%mode_max, [size(rec%damage%mode_max)]), stat)
-      call put_array(u, reshape(rec%damage%onset_time, [size(rec%damage%onset_time)]), stat)
-      call put_array(u, rec%damage%d_peak, stat)
-      call put_array(u, [rec%damage%delam%max_index], stat)
-      call put_array(u, [rec%damage%delam%max_interface, rec%damage%delam%max_point], stat)
-      call put_array(u, reshape(rec%damage%delam%map, [size(rec%damage%delam%map)]), stat)
-   end subroutine put_record
-
-   !> The record of the deck with the figures put_record wrote (its files closed).
-   subroutine take_record(u, deck, model, nm, rec, stat)
-      type(record_t), intent(out) :: rec            !< the record
-      type(deck_t), intent(in) :: deck              !< the effective deck
-      type(model_t), intent(in) :: model            !< the model
-      type(newmark_t), intent(in) :: nm             !< Newmark's constants (the time step)
-      integer, intent(in) :: u                      !< the restart file, an open stream at the record's part
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      real(dp), allocatable :: r(:)
-      integer, allocatable :: i(:)
+   subroutine io_record(s, rec, neq)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
+      type(record_t), intent(inout) :: rec          !< the record (read: as record_settings made it)
+      integer, intent(in) :: neq                    !< the plate's equations
       real(dp) :: bytes
       logical :: active
-      call record_settings(rec, deck, model, nm)
-      call take_tag(u, 'record', stat)
-      call take_reals(u, r, stat, 15)
-      if (stat /= 0) return
-      rec%e0 = r(1);  rec%contact_work = r(2);  rec%contact_energy = r(3);  rec%alpha_prev = r(4)
-      rec%first_contact_start = r(5);  rec%first_contact_end = r(6);  rec%max_energy_error = r(7)
-      rec%energy_created = r(8);  rec%energy_lost = r(9);  rec%max_w_over_h = r(10);  rec%w_bend_max = r(11)
-      rec%diverged_at = r(12);  rec%c_plate = r(13);  rec%c_impactor = r(14);  rec%max_slope = r(15)
-      call take_reals(u, r, stat, 3*peak_state_size)
-      if (stat /= 0) return
-      rec%force_peak = peak_restore(r(1:peak_state_size))
-      rec%deflection_peak = peak_restore(r(peak_state_size + 1:2*peak_state_size))
-      rec%strain_peak = peak_restore(r(2*peak_state_size + 1:))
-      call take_ints(u, i, stat, 14 + nwarn)
-      if (stat /= 0) return
-      rec%steps = i(1);  rec%contacts = i(2);  rec%contact_iterations = i(3);  rec%max_contact_iter = i(4)
-      rec%max_solves = i(5);  rec%unconverged_steps = i(6);  rec%first_unconverged = i(7)
-      rec%nonlinear_fallback_steps = i(8);  rec%contact_fallback_steps = i(9);  rec%warnings = i(10)
-      rec%mixed_seen = i(11);  rec%solves_before = i(12);  rec%in_contact = i(13) /= 0
-      rec%substepped_steps = i(14)
-      rec%warned = i(15:) /= 0
-      call progress_start(rec%progress, rec%nstep, deck%t_end)   ! the progress line goes on
-      bytes = 0.0_dp
-      call take_value(u, bytes, stat)
+      call io_tag(s, 'record')
+      call io_count(s, 15)
+      call io_values(s, rec%e0, rec%contact_work, rec%contact_energy, rec%alpha_prev, &
+         rec%first_contact_start, rec%first_contact_end, rec%max_energy_error)
+      call io_values(s, rec%energy_created, rec%energy_lost, rec%max_w_over_h, rec%w_bend_max, &
+         rec%diverged_at, rec%c_plate, rec%c_impactor)
+      call io_value(s, rec%max_slope)
+      call io_count(s, 3*peak_size)
+      call io_peak(s, rec%force_peak)
+      call io_peak(s, rec%deflection_peak)
+      call io_peak(s, rec%strain_peak)
+      call io_count(s, 14 + nwarn)
+      call io_values(s, rec%steps, rec%contacts, rec%contact_iterations, rec%max_contact_iter, &
+         rec%max_solves, rec%unconverged_steps, rec%first_unconverged)
+      call io_values(s, rec%nonlinear_fallback_steps, rec%contact_fallback_steps, rec%warnings, &
+         rec%mixed_seen, rec%solves_before, rec%in_contact, rec%substepped_steps)
+      call io_block(s, rec%warned)
+      bytes = real(rec%hist_bytes, dp)
+      call io_value(s, bytes)
       rec%hist_bytes = nint(bytes, int64)
-      call take_impactor(u, rec%imp_prev, stat)
-      call take_pattern(u, rec%pattern_prev, stat)
-      call take_reals(u, rec%d_prev, stat, model%msh%neq)
-      active = .false.
-      call take_value(u, active, stat)
-      if (stat == 0 .and. active .neqv. rec%damage%active) stat = 1
-      call take_value(u, rec%damage%delam%onset, stat)
-      if (stat /= 0 .or. .not. active) return
-      call take_reals(u, r, stat, 12)
-      call take_ints(u, i, stat, 8)
-      if (stat /= 0) return
-      rec%damage%smax = r(1:5);  rec%damage%step_fi = r(6);  rec%damage%max_fi = r(7)
-      rec%damage%max_time = r(8);  rec%damage%onset = r(9);  rec%damage%onset_fi = r(10)
-      rec%damage%peak_force = r(11);  rec%damage%peak_time = r(12)
-      rec%damage%step_mode = i(1);  rec%damage%max_mode = i(2);  rec%damage%max_ply = i(3)
-      rec%damage%max_point = i(4);  rec%damage%onset_mode = i(5);  rec%damage%onset_ply = i(6)
-      rec%damage%onset_point = i(7);  rec%damage%peak_step = i(8)
-      call take_reals(u, r, stat, size(rec%damage%fi_max))
-      if (stat == 0) rec%damage%fi_max = reshape(r, shape(rec%damage%fi_max))
-      call take_ints(u, i, stat, size(rec%damage%mode_max))
-      if (stat == 0) rec%damage%mode_max = reshape(i, shape(rec%damage%mode_max))
-      call take_reals(u, r, stat, size(rec%damage%onset_time))
-      if (stat == 0) rec%damage%onset_time = reshape(r, shape(rec%damage%onset_time))
-      call take_reals(u, rec%damage%d_peak, stat, model%msh%neq)
-      call take_reals(u, r, stat, 1)
-      call take_ints(u, i, stat, 2)
-      if (stat /= 0) return
-      rec%damage%delam%max_index = r(1);  rec%damage%delam%max_interface = i(1);  rec%damage%delam%max_point = i(2)
-      call take_reals(u, r, stat, size(rec%damage%delam%map))
-      if (stat == 0) rec%damage%delam%map = reshape(r, shape(rec%damage%delam%map))
-   end subroutine take_record
+      call io_impactor(s, rec%imp_prev)
+      call io_pattern(s, rec%pattern_prev)
+      if (.not. allocated(rec%d_prev)) allocate (rec%d_prev(neq))
+      call io_array(s, rec%d_prev)
+      active = rec%damage%active
+      call io_value(s, active)
+      if (s%stat == 0 .and. active .neqv. rec%damage%active) s%stat = 1
+      call io_value(s, rec%damage%delam%onset)
+      if (active) call io_damage(s, rec%damage)
+   end subroutine io_record
 
-   !> What <prefix>.h5 holds at the restart point: its rows, snapshots and peak.
-   subroutine put_results(u, rec, stat)
-      integer, intent(in) :: u                      !< the restart file
-      type(record_t), intent(in) :: rec             !< the run's record
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      type(results_point_t) :: pt
-      call put_tag(u, 'results', stat)
-      call put_value(u, allocated(rec%h5%path), stat)
-      if (.not. allocated(rec%h5%path)) return
-      pt = results_point(rec%h5)
-      call put_array(u, [pt%rows, pt%snaps, pt%peak_step], stat)
-      call put_array(u, [pt%peak_time, pt%peak_force], stat)
-      call put_array(u, reshape(pt%peak_fields, [size(pt%peak_fields)]), stat)
-   end subroutine put_results
+   !> A peak's samples (src/record/step_peak.f90): samples, last, times,
+   !> values, before, after, as peak_size reals.
+   subroutine io_peak(s, p)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
+      type(peak_track_t), intent(inout) :: p        !< the samples kept
+      real(dp) :: x(3)
+      x = [real(p%samples, dp), merge(1.0_dp, 0.0_dp, p%before), merge(1.0_dp, 0.0_dp, p%after)]
+      call io_values(s, x(1), p%t_last, p%v_last)
+      call io_block(s, p%t)
+      call io_block(s, p%v)
+      call io_values(s, x(2), x(3))
+      if (.not. s%reading .or. s%stat /= 0) return
+      p%samples = nint(x(1))
+      p%before = x(2) /= 0.0_dp
+      p%after = x(3) /= 0.0_dp
+   end subroutine io_peak
 
-   !> Reads what put_results wrote (nnode: the mesh's nodes).
-   subroutine take_results(u, nnode, h5, pt, stat)
-      integer, intent(in) :: u                      !< the restart file, at the results' part
-      integer, intent(in) :: nnode                  !< the mesh's nodes
-      logical, intent(out) :: h5                    !< the run wrote <prefix>.h5
-      type(results_point_t), intent(out) :: pt      !< what it holds
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      real(dp), allocatable :: x(:), f(:)
-      integer, allocatable :: i(:)
-      h5 = .false.
-      call take_tag(u, 'results', stat)
-      call take_value(u, h5, stat)
-      if (stat /= 0 .or. .not. h5) return
-      call take_ints(u, i, stat, 3)
-      call take_reals(u, x, stat, 2)
-      call take_reals(u, f, stat, ndof_node*nnode)
-      if (stat /= 0) return
-      pt = results_point_t(i(1), i(2), i(3), x(1), x(2), reshape(f, [ndof_node, nnode]))
-   end subroutine take_results
+   !> &strength's figures and maps (src/results/damage_record.f90).
+   subroutine io_damage(s, dmg)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
+      type(damage_t), intent(inout) :: dmg          !< the damage record, active
+      call io_count(s, 12)
+      call io_block(s, dmg%smax)
+      call io_values(s, dmg%step_fi, dmg%max_fi, dmg%max_time, dmg%onset, dmg%onset_fi, &
+         dmg%peak_force, dmg%peak_time)
+      call io_count(s, 8)
+      call io_values(s, dmg%step_mode, dmg%max_mode, dmg%max_ply, dmg%max_point, dmg%onset_mode, &
+         dmg%onset_ply, dmg%onset_point)
+      call io_value(s, dmg%peak_step)
+      call io_array(s, dmg%fi_max)
+      call io_array(s, dmg%mode_max)
+      call io_array(s, dmg%onset_time)
+      call io_array(s, dmg%d_peak)
+      call io_count(s, 1)
+      call io_value(s, dmg%delam%max_index)
+      call io_count(s, 2)
+      call io_values(s, dmg%delam%max_interface, dmg%delam%max_point)
+      call io_array(s, dmg%delam%map)
+   end subroutine io_damage
+
+   !> What <prefix>.h5 holds at the restart point (h5: the run writes it):
+   !> its rows, snapshots and peak.
+   subroutine io_results(s, h5, pt)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
+      logical, intent(inout) :: h5                  !< the run writes <prefix>.h5
+      type(results_point_t), intent(inout) :: pt    !< what it holds (read: peak_fields allocated)
+      call io_tag(s, 'results')
+      call io_value(s, h5)
+      if (s%stat /= 0 .or. .not. h5) return
+      call io_count(s, 3)
+      call io_values(s, pt%rows, pt%snaps, pt%peak_step)
+      call io_count(s, 2)
+      call io_values(s, pt%peak_time, pt%peak_force)
+      call io_array(s, pt%peak_fields)
+   end subroutine io_results
 
    !> The history file cut back to its length at the restart point, opened for appending.
    subroutine reopen_history(deck, rec, stat, errmsg)

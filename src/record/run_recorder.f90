@@ -584,9 +584,10 @@ contains
       call summary_integer(s, 'max_contact_iter', rec%max_contact_iter)
       call summary_integer(s, 'max_nonlinear_iter', rec%max_solves)
       call summary_integer(s, 'unconverged_steps', rec%unconverged_steps)
-      call summary_time(s, 'first_unconverged_us', 'first_unconverged', real(rec%first_unconverged, dp)*rec%dt, &
-                        rec%first_unconverged > 0)
-      call summary_time(s, 'diverged_at_us', 'diverged_at', rec%diverged_at, rec%diverged_at >= 0.0_dp)
+      call summary_real(s, 'first_unconverged_us', 'first_unconverged', 's', rec%first_unconverged*rec%dt, &
+                        1.0e6_dp, rec%first_unconverged > 0, 'none')
+      call summary_real(s, 'diverged_at_us', 'diverged_at', 's', rec%diverged_at, 1.0e6_dp, &
+                        rec%diverged_at >= 0.0_dp, 'none')
       call summary_integer(s, 'nonlinear_fallback_steps', rec%nonlinear_fallback_steps)
       call summary_integer(s, 'contact_fallback_steps', rec%contact_fallback_steps)
       call summary_integer(s, 'substepped_steps', rec%substepped_steps)
@@ -597,20 +598,6 @@ contains
          call summary_real(s, 'max_fixed_point_slope', 'max_fixed_point_slope', '-', rec%max_slope, 1.0_dp)
       end if
    end subroutine run_summary
-
-   !> A time of the summary (us in the file, s in /summary), or 'none'.
-   subroutine summary_time(s, key, name, time, given)
-      type(summary_item_t), allocatable, intent(inout) :: s(:)   !< the summary's items
-      character(len=*), intent(in) :: key           !< its key in <prefix>_summary.dat
-      character(len=*), intent(in) :: name          !< its name in /summary
-      real(dp), intent(in) :: time                  !< the time (s)
-      logical, intent(in) :: given                  !< there is one (else 'none')
-      if (given) then
-         call summary_real(s, key, name, 's', time, 1.0e6_dp)
-      else
-         call summary_text(s, key, 'none')
-      end if
-   end subroutine summary_time
 
    !> The run's last words on standard output: its files, peak force, contacts, deflection, cpu time.
    subroutine last_words(rec, deck, cpu_s, unit)

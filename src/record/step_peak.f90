@@ -7,8 +7,7 @@ module step_peak
    use kinds, only: dp
    implicit none
    private
-   public :: peak_track_t, peak_sample, peak_between, parabola_vertex, zero_crossing, peak_state, peak_restore, &
-      peak_state_size
+   public :: peak_track_t, peak_sample, peak_between, parabola_vertex, zero_crossing
 
    !> The samples a peak is refined from (peak_sample, peak_between).
    type :: peak_track_t
@@ -20,9 +19,6 @@ module step_peak
       logical :: before = .false.         !< there is a sample before the largest (t(1), v(1))
       logical :: after = .false.          !< there is a sample after the largest (t(3), v(3))
    end type peak_track_t
-
-   !> Reals of a peak_track_t in a restart point (peak_state, peak_restore).
-   integer, parameter :: peak_state_size = 11
 
 contains
 
@@ -109,26 +105,5 @@ contains
       v_peak = p%v(2)
       if (p%before .and. p%after) call parabola_vertex(p%t, p%v, t_peak, v_peak, concave)
    end subroutine peak_between
-
-   !> The samples kept, as peak_state_size reals (a restart point).
-   pure function peak_state(p) result(r)
-      type(peak_track_t), intent(in) :: p       !< the samples kept
-      real(dp) :: r(peak_state_size)            !< samples, last, times, values, before, after
-      r = [real(p%samples, dp), p%t_last, p%v_last, p%t, p%v, merge(1.0_dp, 0.0_dp, p%before), &
-           merge(1.0_dp, 0.0_dp, p%after)]
-   end function peak_state
-
-   !> The samples kept, from peak_state's reals.
-   pure function peak_restore(r) result(p)
-      real(dp), intent(in) :: r(peak_state_size)   !< peak_state's reals
-      type(peak_track_t) :: p                      !< the samples kept
-      p%samples = nint(r(1))
-      p%t_last = r(2)
-      p%v_last = r(3)
-      p%t = r(4:6)
-      p%v = r(7:9)
-      p%before = r(10) /= 0.0_dp
-      p%after = r(11) /= 0.0_dp
-   end function peak_restore
 
 end module step_peak

@@ -2,11 +2,9 @@
 !> every Gauss point of every ply (eq. 2-3, src/strength/ply_stress.f90),
 !> their failure index (src/strength/failure_criteria.f90), the delamination
 !> threshold and index (src/strength/delamination.f90), and what the run
-!> records of them: at every history step (above damage_step), at the
-!> largest contact force (above damage_peak) and at the end (above
-!> damage_close). Only with &strength (the six strengths given); without
-!> it damage_open leaves the record inactive. The cost is bounded by
-!> &output every. More: docs/STRENGTH.md, "Ply stresses and failure".
+!> records of them: every history step, at the largest contact force and
+!> at the end. Only with &strength (the six strengths given); without it
+!> the record is inactive. More: docs/STRENGTH.md, "Ply stresses and failure".
 module damage_record
    use kinds, only: dp, msg_len
    use deck_schema, only: deck_t, strength_given, is_given
@@ -18,7 +16,7 @@ module damage_record
       nstate, ngp
    use failure_criteria, only: strength_t, criterion_code, failure_index, failure_indices, mode_names, mode_none, nmode
    use result_files, only: summary_item_t, summary_real, summary_integer, summary_text
-   use results_hdf5, only: results_file_t
+   use results_hdf5, only: results_file_t, attr_text, attr_unit
    use hdf5_io, only: h5io_group, h5io_set_attr, h5io_write
    use xdmf_plies, only: ply_maps_t, plies_write, plies_add
    use plate_damage, only: plate_damage_t, damage_counts
@@ -86,32 +84,23 @@ contains
       do e = 1, model%msh%nelem
          dmg%d2(:, :, :, e) = element_second_derivatives(model%msh%coords(:, model%msh%conn(:, e)))
       end do
-      allocate (dmg%fi_max(dmg%nply, dmg%npoint), dmg%mode_max(dmg%nply, dmg%npoint), &
-                dmg%onset_time(dmg%nply, dmg%npoint), dmg%d_peak(model%msh%neq))
-      dmg%fi_max = 0.0_dp
-      dmg%mode_max = mode_none
+      allocate (dmg%fi_max(dmg%nply, dmg%npoint), dmg%onset_time(dmg%nply, dmg%npoint), &
+                dmg%d_peak(model%msh%neq), source=0.0_dp)
+      allocate (dmg%mode_max(dmg%nply, dmg%npoint), source=mode_none)
       dmg%onset_time = -1.0_dp
-      dmg%d_peak = 0.0_dp
    end subroutine damage_open
 
-   !> At every step the history records (damage_step, from the run recorder;
-   !> &output every, 1 by default: every step): at each 3 x 3 Gauss
-   !> point of each element (those of the membrane and bending terms, where the
-   !> paper's strain gauge is, Fig. 9b) the laminate strains and their
-   !> gradients give the stresses on both faces of every ply
-   !> (src/strength/ply_stress.f90: in-plane from eq. 2-3 with the von Karman strains in
-   !> the nonlinear theory, transverse shear from equilibrium), and the
-   !> criterion of &strength their failure index (src/strength/failure_criteria.f90).
+   !> At every step the history records (&output every): at each 3 x 3 Gauss
+   !> point of each element (those of the membrane and bending terms, where
+   !> the paper's strain gauge is, Fig. 9b) the laminate strains of d and their
+   !> gradients give the stresses on both faces of every ply (in-plane from
+   !> eq. 2-3, von Karman strains in the nonlinear theory; transverse shear
+   !> from equilibrium), and the criterion of &strength their failure index.
    !> Kept: the step's largest index and its mode (history columns
-   !> failure_index, failure_mode); the largest index of each ply at each point
-   !> over the run and its mode (the damage map), and the first time it reached
-   !> 1; the run's largest index, and the first step at which any index
-   !> reached 1 (the onset), with its ply, mode and point. At every step
-   !> (damage_peak): the displacements at the largest contact force, whose
-   !> stresses are written at the end.
-   !>
-   !> The failure indices of the state d at time t (as above): the
-   !> step's largest, the damage map, the onset.
+   !> failure_index, failure_mode); per ply and point the largest index over
+   !> the run, its mode (the damage map) and the first time it reached 1; the
+   !> run's largest index, and the first step any index reached 1 (the onset),
+   !> with its ply, mode and point.
    subroutine damage_step(dmg, model, t, d)
       type(damage_t), intent(inout) :: dmg          !< the record
       type(model_t), intent(in) :: model            !< the model
@@ -169,13 +158,10 @@ contains
       end if
    end subroutine damage_step
 
-   !> Delamination (src/strength/delamination.f90), with or without
-   !> &strength: the regime, and with g2c the first step whose contact force
-   !> passed the threshold (damage_peak); with &strength, Choi & Chang's index
-   !> of every interface from the ply averages, with the failure indices.
-   !>
-   !> Keeps the displacements of the largest contact force so far (every
-   !> step: a copy, the stresses follow at the end).
+   !> Every step: delamination (src/strength/delamination.f90), with or
+   !> without &strength: with g2c the first step whose contact force passed
+   !> the threshold; with &strength, the displacements of the largest contact
+   !> force so far (a copy; their stresses follow at the end).
    subroutine damage_peak(dmg, step, t, f, d)
       type(damage_t), intent(inout) :: dmg          !< the record
       integer, intent(in) :: step                   !< the step
@@ -197,14 +183,12 @@ contains
       real(dp), intent(out) :: fi(:)
       integer, intent(out) :: mode(:)
       real(dp) :: f2(2*size(fi))
-      integer :: m2(2*size(fi)), k
+      integer :: m2(2*size(fi)), k, j
       call failure_indices(dmg%strength, dmg%criterion, reshape(sigma, [5, 2*size(fi)]), f2, m2)
       do k = 1, size(fi)
-         if (f2(2*k) > f2(2*k-1)) then
-            fi(k) = f2(2*k);  mode(k) = m2(2*k)
-         else
-            fi(k) = f2(2*k-1);  mode(k) = m2(2*k-1)
-         end if
+         j = merge(2*k, 2*k - 1, f2(2*k) > f2(2*k-1))
+         fi(k) = f2(j)
+         mode(k) = m2(j)
       end do
    end subroutine ply_indices
 
@@ -245,20 +229,9 @@ contains
       end do
    end function damage_points
 
-   !> At the end (damage_close): the summary's items (impact_regime,
-   !> mass_ratio, the delamination thresholds and onset; with &strength
-   !> max_failure_index, the largest stresses max_abs_s11_MPa ...
-   !> max_abs_t13_MPa, failure_onset_us, failure_mode, failure_ply,
-   !> failure_x_mm, failure_y_mm, max_delamination_index,
-   !> delamination_interface, delamination_x_mm, delamination_y_mm)
-   !> and, in <prefix>.h5, the group /strength (damage_write, layout there);
-   !> with <prefix>.xdmf, the same on a grid of the laminate, which ParaView
-   !> and meshio show (/xdmf/plies, src/results/xdmf_plies.f90).
-   !>
-   !> The summary's items (as above) and /strength in <prefix>.h5.
-   !> failure_mode, failure_ply, failure_x_mm, failure_y_mm say where
-   !> damage started (the onset) or, when no index reached 1, where the
-   !> largest one was.
+   !> At the end: the summary's items (docs/OUTPUT.md lists them; failure_ply,
+   !> failure_x_mm ... where damage started, or the largest index when none
+   !> reached 1) and /strength in <prefix>.h5 (damage_write).
    subroutine damage_close(dmg, model, pd, s, rf, stat, errmsg)
       type(damage_t), intent(in) :: dmg             !< the record
       type(model_t), intent(in) :: model            !< the model
@@ -275,33 +248,24 @@ contains
       ! -- delamination (src/strength/delamination.f90): regime, thresholds
       call summary_text(s, 'impact_regime', impact_regime(dmg%delam%ratio))
       call summary_real(s, 'mass_ratio', 'mass_ratio', '-', dmg%delam%ratio, 1.0_dp)
-      if (dmg%delam%threshold) then
-         call summary_real(s, 'delamination_threshold_N', 'delamination_threshold', 'N', dmg%delam%p_c, 1.0_dp)
-         call summary_real(s, 'delamination_threshold_dynamic_N', 'delamination_threshold_dynamic', 'N', &
-                           dmg%delam%p_dyn, 1.0_dp)
-         if (dmg%delam%onset >= 0.0_dp) then
-            call summary_real(s, 'delamination_onset_us', 'delamination_onset', 's', dmg%delam%onset, 1.0e6_dp)
-         else
-            call summary_text(s, 'delamination_onset_us', 'not reached')
-         end if
-      else
-         call summary_text(s, 'delamination_threshold_N', 'not computed')
-         call summary_text(s, 'delamination_threshold_dynamic_N', 'not computed')
-         call summary_text(s, 'delamination_onset_us', 'not computed')
-      end if
+      call summary_real(s, 'delamination_threshold_N', 'delamination_threshold', 'N', dmg%delam%p_c, &
+                        1.0_dp, dmg%delam%threshold, 'not computed')
+      call summary_real(s, 'delamination_threshold_dynamic_N', 'delamination_threshold_dynamic', &
+                        'N', dmg%delam%p_dyn, 1.0_dp, dmg%delam%threshold, 'not computed')
+      call summary_real(s, 'delamination_onset_us', 'delamination_onset', 's', dmg%delam%onset, &
+                        1.0e6_dp, dmg%delam%threshold .and. dmg%delam%onset >= 0.0_dp, &
+                        trim(merge('not reached ', 'not computed', dmg%delam%threshold)))
       if (.not. dmg%active) return
       call summary_real(s, 'max_failure_index', 'max_failure_index', '-', dmg%max_fi, 1.0_dp)
       do c = 1, 5
          call summary_real(s, 'max_abs_' // trim(comp(c)) // '_MPa', 'max_abs_' // trim(comp(c)), 'Pa', &
                            dmg%smax(c), 1.0e-6_dp)
       end do
-      if (dmg%onset >= 0.0_dp) then
-         call summary_real(s, 'failure_onset_us', 'failure_onset', 's', dmg%onset, 1.0e6_dp)
-         ply = dmg%onset_ply;  point = dmg%onset_point;  mode = dmg%onset_mode
-      else
-         call summary_text(s, 'failure_onset_us', 'none')
-         ply = dmg%max_ply;  point = dmg%max_point;  mode = dmg%max_mode
-      end if
+      call summary_real(s, 'failure_onset_us', 'failure_onset', 's', dmg%onset, 1.0e6_dp, &
+                        dmg%onset >= 0.0_dp, 'none')
+      ply = merge(dmg%onset_ply, dmg%max_ply, dmg%onset >= 0.0_dp)
+      point = merge(dmg%onset_point, dmg%max_point, dmg%onset >= 0.0_dp)
+      mode = merge(dmg%onset_mode, dmg%max_mode, dmg%onset >= 0.0_dp)
       call summary_text(s, 'failure_mode', trim(mode_names(mode)))
       call summary_integer(s, 'failure_ply', ply)
       xy = damage_points(model)
@@ -333,31 +297,16 @@ contains
       subroutine place(what, p)
          character(len=*), intent(in) :: what
          integer, intent(in) :: p
-         if (p > 0) then
-            call summary_real(s, what // '_x_mm', what // '_x', 'm', xy(1, p), 1.0e3_dp)
-            call summary_real(s, what // '_y_mm', what // '_y', 'm', xy(2, p), 1.0e3_dp)
-         else
-            call summary_text(s, what // '_x_mm', 'none')
-            call summary_text(s, what // '_y_mm', 'none')
-         end if
+         call summary_real(s, what // '_x_mm', what // '_x', 'm', xy(1, max(p, 1)), 1.0e3_dp, p > 0, &
+                           'none')
+         call summary_real(s, what // '_y_mm', what // '_y', 'm', xy(2, max(p, 1)), 1.0e3_dp, p > 0, &
+                           'none')
       end subroutine place
 
    end subroutine damage_close
 
-   !> /strength of <prefix>.h5 (C order, as h5py shows it):
-   !>   attributes  criterion, plies, modes (the mode codes' words), faces
-   !>   points (npoint, 2) x, y of the 3 x 3 Gauss points (m, from the plate
-   !>               centre), 9 per element in element order; point_element (npoint)
-   !>   ply_z (nply+1) interfaces (m, z = -h/2 the impacted face); ply_angle (nply) deg
-   !>   damage_map (npoint, nply) the largest failure index of each ply at
-   !>               each point over the run; damage_mode (npoint, nply) its mode;
-   !>               onset_time (npoint, nply) the first time it reached 1 (s, -1: never)
-   !>   delamination_map (npoint, nply - 1) Choi & Chang's largest index of
-   !>               each interface (k: plies k, k + 1) at each point over the run
-   !>   peak/       attributes step, time, force: the step of the largest
-   !>               contact force; s11 s22 t12 t23 t13 (npoint, 2 nply) the
-   !>               stresses there (Pa, material axes; face 2k-1 the bottom of
-   !>               ply k, 2k its top), failure_index (npoint, 2 nply)
+   !> /strength of <prefix>.h5 (C order, as h5py shows it; its datasets and
+   !> attributes: docs/OUTPUT.md, "The HDF5 file"), and /xdmf/plies.
    subroutine damage_write(dmg, model, xy, rf, stat, errmsg)
       type(damage_t), intent(in) :: dmg
       type(model_t), intent(in) :: model
@@ -379,15 +328,18 @@ contains
          modes = modes // achar(48 + m) // ' ' // trim(mode_names(m))
       end do
       call h5io_group(rf%fid, 'strength', stat, why)
-      call put_text('strength', 'criterion', dmg%criterion_name)
-      call put_text('strength', 'modes', modes)
-      call put_text('strength', 'faces', 'face 2k-1: bottom of ply k (towards the impacted face), 2k: its top')
+      call attr_text(rf%fid, 'strength', 'criterion', dmg%criterion_name, stat, why)
+      call attr_text(rf%fid, 'strength', 'modes', modes, stat, why)
+      call attr_text(rf%fid, 'strength', 'faces', 'face 2k-1: bottom of ply k (towards the impacted face), ' &
+         // '2k: its top', stat, why)
       if (stat == 0) call h5io_set_attr(rf%fid, 'strength', 'plies', dmg%nply, stat, why)
       call put_data('strength/points', xy, 'm')
       if (stat == 0) call h5io_write(rf%fid, 'strength/point_element', [((c - 1)/9 + 1, c = 1, dmg%npoint)], &
                                      stat, why)
-      call put_data1('strength/ply_z', dmg%stack%z, 'm')
-      call put_data1('strength/ply_angle', dmg%stack%angle, 'deg')
+      if (stat == 0) call h5io_write(rf%fid, 'strength/ply_z', dmg%stack%z, stat, why)
+      call attr_text(rf%fid, 'strength/ply_z', 'units', 'm', stat, why)
+      if (stat == 0) call h5io_write(rf%fid, 'strength/ply_angle', dmg%stack%angle, stat, why)
+      call attr_text(rf%fid, 'strength/ply_angle', 'units', 'deg', stat, why)
       call put_data('strength/damage_map', dmg%fi_max, '-')
       if (stat == 0) call h5io_write(rf%fid, 'strength/damage_mode', dmg%mode_max, stat, why)
       call put_data('strength/onset_time', dmg%onset_time, 's')
@@ -397,10 +349,8 @@ contains
       call damage_stresses(dmg, model, dmg%d_peak, sigma, fi)
       if (stat == 0) call h5io_group(rf%fid, 'strength/peak', stat, why)
       if (stat == 0) call h5io_set_attr(rf%fid, 'strength/peak', 'step', dmg%peak_step, stat, why)
-      if (stat == 0) call h5io_set_attr(rf%fid, 'strength/peak', 'time', dmg%peak_time, stat, why)
-      call put_text('strength/peak', 'time_units', 's')
-      if (stat == 0) call h5io_set_attr(rf%fid, 'strength/peak', 'force', dmg%peak_force, stat, why)
-      call put_text('strength/peak', 'force_units', 'N')
+      call attr_unit(rf%fid, 'strength/peak', 'time', dmg%peak_time, 's', stat, why)
+      call attr_unit(rf%fid, 'strength/peak', 'force', dmg%peak_force, 'N', stat, why)
       do c = 1, 5
          call put_data('strength/peak/' // trim(comp(c)), reshape(sigma(c, :, :, :), [2*dmg%nply, dmg%npoint]), 'Pa')
       end do
@@ -416,24 +366,12 @@ contains
 
    contains
 
-      subroutine put_text(obj, name, value)
-         character(len=*), intent(in) :: obj, name, value
-         if (stat == 0) call h5io_set_attr(rf%fid, obj, name, value, stat, why)
-      end subroutine put_text
-
       subroutine put_data(name, x, units)
          character(len=*), intent(in) :: name, units
          real(dp), intent(in) :: x(:,:)
          if (stat == 0) call h5io_write(rf%fid, name, x, stat, why)
-         call put_text(name, 'units', units)
+         call attr_text(rf%fid, name, 'units', units, stat, why)
       end subroutine put_data
-
-      subroutine put_data1(name, x, units)
-         character(len=*), intent(in) :: name, units
-         real(dp), intent(in) :: x(:)
-         if (stat == 0) call h5io_write(rf%fid, name, x, stat, why)
-         call put_text(name, 'units', units)
-      end subroutine put_data1
 
    end subroutine damage_write
 

@@ -20,7 +20,7 @@ module hdf5_io
    use file_system, only: remove_file
    implicit none
    private
-   public :: h5io_start, h5io_create, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_exists, h5io_delete
+   public :: h5io_start, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_delete
    public :: h5io_set_attr, h5io_update_attr, h5io_write, h5io_rewrite
    public :: h5io_check, h5io_fail, h5io_attr_path, h5io_vlen_string_type
    public :: h5io_create_dataset
@@ -55,43 +55,32 @@ contains
       call h5io_check(err, 'cannot initialise the HDF5 library', '', stat, errmsg)
    end subroutine h5io_start
 
-   !> Creates the file `path` exclusively (what had the name removed first: no
-   !> write through a link), with `latest` in HDF5 1.10's format (what SWMR needs).
-   subroutine h5io_create(path, latest, fid, stat, errmsg)
+   !> With `create`, creates the file `path` exclusively (what had the name
+   !> removed first: no write through a link), with `swmr` in HDF5 1.10's
+   !> format (what SWMR needs); else opens the existing file for writing, with
+   !> `swmr` in SWMR mode, clearing the marks a killed writer left (what
+   !> `h5clear -s` does).
+   subroutine h5io_open(path, create, swmr, fid, stat, errmsg)
       character(len=*), intent(in) :: path
-      logical, intent(in) :: latest
+      logical, intent(in) :: create, swmr
       integer(hid_t), intent(out) :: fid
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer :: err
       integer(hid_t) :: fapl
       fid = -1
-      call file_access(latest, .false., fapl, err)
+      call file_access(swmr .or. .not. create, .not. create, fapl, err)
       call h5io_check(err, 'cannot set up the access to the HDF5 file', path, stat, errmsg)
       if (stat /= 0) return
-      call remove_file(path, err)
-      call h5fcreate_f(path, H5F_ACC_EXCL_F, fid, err, access_prp=fapl)
-      call h5io_check(err, 'cannot create the HDF5 file', path, stat, errmsg)
-      call h5pclose_f(fapl, err)
-   end subroutine h5io_create
-
-   !> Opens the existing file `path` for writing, with `swmr` in SWMR mode,
-   !> clearing the marks a killed writer left (what `h5clear -s` does).
-   subroutine h5io_open(path, swmr, fid, stat, errmsg)
-      character(len=*), intent(in) :: path
-      logical, intent(in) :: swmr
-      integer(hid_t), intent(out) :: fid
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      integer :: err
-      integer(hid_t) :: fapl
-      fid = -1
-      call file_access(.true., .true., fapl, err)
-      call h5io_check(err, 'cannot set up the access to the HDF5 file', path, stat, errmsg)
-      if (stat /= 0) return
-      call h5fopen_f(path, merge(ior(H5F_ACC_RDWR_F, acc_swmr_write), H5F_ACC_RDWR_F, swmr), fid, err, &
-         access_prp=fapl)
-      call h5io_check(err, 'cannot open the HDF5 file for writing', path, stat, errmsg)
+      if (create) then
+         call remove_file(path, err)
+         call h5fcreate_f(path, H5F_ACC_EXCL_F, fid, err, access_prp=fapl)
+         call h5io_check(err, 'cannot create the HDF5 file', path, stat, errmsg)
+      else
+         call h5fopen_f(path, merge(ior(H5F_ACC_RDWR_F, acc_swmr_write), H5F_ACC_RDWR_F, swmr), fid, &
+            err, access_prp=fapl)
+         call h5io_check(err, 'cannot open the HDF5 file for writing', path, stat, errmsg)
+      end if
       call h5pclose_f(fapl, err)
    end subroutine h5io_open
 
@@ -164,22 +153,17 @@ contains
       call h5io_check(err, 'cannot close the group', name, stat, errmsg)
    end subroutine h5io_group
 
-   !> True when the link `name` exists (its parent must).
-   logical function h5io_exists(loc, name) result(there)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name
-      integer :: err
-      call h5lexists_f(loc, name, there, err)
-      there = there .and. err == 0
-   end function h5io_exists
-
-   !> Removes the link `name` (the object goes with its last link).
+   !> Removes the link `name` when there is one (the object goes with its last link).
    subroutine h5io_delete(loc, name, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
+      logical :: there
       integer :: err
+      stat = 0
+      call h5lexists_f(loc, name, there, err)
+      if (err /= 0 .or. .not. there) return
       call h5ldelete_f(loc, name, err)
       call h5io_check(err, 'cannot remove', name, stat, errmsg)
    end subroutine h5io_delete
@@ -410,11 +394,8 @@ contains
       character(len=*), intent(in) :: what, name
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      if (err == 0) then
-         stat = 0
-      else
-         call h5io_fail(what, name, stat, errmsg)
-      end if
+      stat = 0
+      if (err /= 0) call h5io_fail(what, name, stat, errmsg)
    end subroutine h5io_check
 
    !> stat = failed and the message "what 'name'" (or "what" without a name).
@@ -423,11 +404,8 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       stat = failed
-      if (len(name) > 0) then
-         errmsg = what//" '"//name//"'"
-      else
-         errmsg = what
-      end if
+      errmsg = what
+      if (len(name) > 0) errmsg = what//" '"//name//"'"
    end subroutine h5io_fail
 
    !> 'obj@name' for messages about attribute name of object obj.

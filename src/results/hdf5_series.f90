@@ -13,7 +13,7 @@ module hdf5_series
    use hdf5_io, only: h5io_create_dataset, h5io_check, h5io_fail
    implicit none
    private
-   public :: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_open_dataset, &
+   public :: h5io_create_series, h5io_append_block, h5io_open_dataset, &
              h5io_cut_series, h5io_read_series, h5io_close_dataset, h5io_view_column, h5io_real, h5io_integer
 
    !> Element types of a series (h5io_create_series).
@@ -24,38 +24,27 @@ module hdf5_series
       module procedure append_values, append_columns
    end interface h5io_append_block
 
-   !> Reads a whole rank-1 series (a restart): reals or integers.
-   interface h5io_read_series
-      module procedure read_reals, read_integers
-   end interface h5io_read_series
-
 contains
 
-   !> Creates the empty rank-1 series `name` of reals or integers (kind), in
-   !> chunks of `chunk` entries, open as did (close with h5io_close_dataset).
-   subroutine h5io_create_series(loc, name, kind, chunk, did, stat, errmsg)
+   !> Creates the empty series `name`, open as did (close with h5io_close_dataset):
+   !> with nrow = 0 of rank 1, reals or integers (kind), in chunks of `chunk`
+   !> entries; else reals of shape (nrow, 0) growing by columns, in chunks of
+   !> `chunk` values (one column at least).
+   subroutine h5io_create_series(loc, name, kind, nrow, chunk, did, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
-      integer, intent(in) :: kind, chunk
+      integer, intent(in) :: kind, nrow, chunk
       integer(hid_t), intent(out) :: did
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      call h5io_create_dataset(loc, name, merge(H5T_NATIVE_INTEGER, H5T_NATIVE_DOUBLE, kind == h5io_integer), &
-         [H5S_UNLIMITED_F], [int(chunk, hsize_t)], did, stat, errmsg)
+      if (nrow == 0) then
+         call h5io_create_dataset(loc, name, merge(H5T_NATIVE_INTEGER, H5T_NATIVE_DOUBLE, &
+            kind == h5io_integer), [H5S_UNLIMITED_F], [int(chunk, hsize_t)], did, stat, errmsg)
+      else
+         call h5io_create_dataset(loc, name, H5T_NATIVE_DOUBLE, [int(nrow, hsize_t), H5S_UNLIMITED_F], &
+            [int(nrow, hsize_t), int(max(1, chunk/nrow), hsize_t)], did, stat, errmsg)
+      end if
    end subroutine h5io_create_series
-
-   !> Creates the empty real series `name` of shape (nrow, 0), growing by
-   !> columns, in chunks of `chunk_values` values (one column at least), open as did.
-   subroutine h5io_create_columns(loc, name, nrow, chunk_values, did, stat, errmsg)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name
-      integer, intent(in) :: nrow, chunk_values
-      integer(hid_t), intent(out) :: did
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      call h5io_create_dataset(loc, name, H5T_NATIVE_DOUBLE, [int(nrow, hsize_t), H5S_UNLIMITED_F], &
-         [int(nrow, hsize_t), int(max(1, chunk_values/max(nrow, 1)), hsize_t)], did, stat, errmsg)
-   end subroutine h5io_create_columns
 
    !> Opens the existing dataset `name` (close with h5io_close_dataset).
    subroutine h5io_open_dataset(loc, name, did, stat, errmsg)
@@ -109,51 +98,26 @@ contains
       call h5io_check(err, 'cannot cut a series', '', stat, errmsg)
    end subroutine h5io_cut_series
 
-   !> The reals of the rank-1 series `name`.
-   subroutine read_reals(loc, name, x, stat, errmsg)
+   !> The values of the rank-1 series `name` as reals (a restart; HDF5
+   !> converts integers, exactly below 2**53).
+   subroutine h5io_read_series(loc, name, x, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
       real(dp), allocatable, target, intent(out) :: x(:)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer(hid_t) :: did
-      call h5io_open_dataset(loc, name, did, stat, errmsg)
-      if (stat /= 0) return
-      allocate (x(max(0, h5io_series_length(did))))
-      call read_series(did, H5T_NATIVE_DOUBLE, c_loc(x), size(x), name, stat, errmsg)
-   end subroutine read_reals
-
-   !> The integers of the rank-1 series `name`.
-   subroutine read_integers(loc, name, x, stat, errmsg)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name
-      integer, allocatable, target, intent(out) :: x(:)
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      integer(hid_t) :: did
-      call h5io_open_dataset(loc, name, did, stat, errmsg)
-      if (stat /= 0) return
-      allocate (x(max(0, h5io_series_length(did))))
-      call read_series(did, H5T_NATIVE_INTEGER, c_loc(x), size(x), name, stat, errmsg)
-   end subroutine read_integers
-
-   !> Reads the n values of the open series did into buf (type mem_type) and closes it.
-   subroutine read_series(did, mem_type, buf, n, name, stat, errmsg)
-      integer(hid_t), intent(in) :: did
-      integer(hid_t), intent(in) :: mem_type
-      type(c_ptr), intent(in) :: buf
-      integer, intent(in) :: n
-      character(len=*), intent(in) :: name
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
       type(c_ptr) :: at
       integer :: err
+      call h5io_open_dataset(loc, name, did, stat, errmsg)
+      if (stat /= 0) return
+      allocate (x(max(0, h5io_series_length(did))))
       err = 0
-      at = buf                               ! (h5dread_f's buffer is intent(inout))
-      if (n > 0) call h5dread_f(did, mem_type, at, err)
+      at = c_loc(x)                          ! (h5dread_f's buffer is intent(inout))
+      if (size(x) > 0) call h5dread_f(did, H5T_NATIVE_DOUBLE, at, err)
       call h5io_check(err, 'cannot read the dataset', name, stat, errmsg)
       call h5dclose_f(did, err)
-   end subroutine read_series
+   end subroutine h5io_read_series
 
    !> Appends the reals or integers x(:) to the rank-1 series did.
    subroutine append_values(did, x, stat, errmsg)
@@ -178,14 +142,12 @@ contains
    !> Appends the columns x(:, k) (nrow values each) to the rank-2 series did.
    subroutine append_columns(did, x, stat, errmsg)
       integer(hid_t), intent(in) :: did
-      real(dp), intent(in) :: x(:,:)
+      real(dp), intent(in), target, contiguous :: x(:,:)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      real(dp), allocatable, target :: buf(:,:)
       stat = 0
       if (size(x, 2) == 0) return
-      buf = x
-      call grow_and_write(did, H5T_NATIVE_DOUBLE, 2, size(x, 2), c_loc(buf), stat, errmsg)
+      call grow_and_write(did, H5T_NATIVE_DOUBLE, 2, size(x, 2), c_loc(x), stat, errmsg)
    end subroutine append_columns
 
    !> Extends did's last dimension by n and writes the values at buf (type tid) there.
@@ -254,7 +216,7 @@ contains
       call h5sclose_f(vspace, err)
    end subroutine h5io_view_column
 
-   !> Closes a dataset opened by h5io_create_series or h5io_create_columns.
+   !> Closes a dataset opened by h5io_create_series or h5io_open_dataset.
    subroutine h5io_close_dataset(did, stat, errmsg)
       integer(hid_t), intent(in) :: did
       integer, intent(out) :: stat

@@ -1,8 +1,10 @@
 !> The pieces of a restart file (src/record/restart_point.f90): a stream of
 !> unformatted records, each part behind an eight-character tag the reader
-!> checks; every routine keeps the first failure in `stat`. Values, vectors,
-!> an impactor (eq. 16, 21), a contact load pattern, and the seal: the last
-!> 8 bytes, zlib's CRC-32 of all before them. More: docs/ROBUSTNESS.md.
+!> checks. One routine per piece both writes and reads it (restart_stream_t's
+!> direction), which keeps the two in step; the first failure stays in `stat`.
+!> Values, vectors, an impactor (eq. 16, 21), a contact load pattern, and the
+!> seal: the last 8 bytes, zlib's CRC-32 of all before them. More:
+!> docs/ROBUSTNESS.md.
 module restart_io
    use, intrinsic :: iso_fortran_env, only: int8, int64
    use kinds, only: dp
@@ -10,8 +12,20 @@ module restart_io
    use contact_load, only: load_pattern_t
    implicit none
    private
-   public :: put_tag, take_tag, put_text, take_text, put_value, take_value, put_array, take_reals, take_ints, &
-             put_impactor, take_impactor, put_pattern, take_pattern, put_seal, seal_holds
+   public :: restart_stream_t, io_tag, io_text, io_value, io_values, io_count, io_block, io_array, io_ints, &
+             io_impactor, io_pattern, put_seal, seal_holds
+
+   !> An open restart file and the direction its pieces go.
+   type :: restart_stream_t
+      integer :: u = -1                             !< the open stream
+      logical :: reading = .false.                  !< read and checked (else written)
+      integer :: stat = 0                           !< 0, or the first failure
+   end type restart_stream_t
+
+   !> A vector of reals or integers, rank 1 or 2: its size, then its values.
+   interface io_array
+      module procedure io_array1, io_array2
+   end interface io_array
 
    !> Characters of a tag.
    integer, parameter :: tag_len = 8
@@ -22,214 +36,186 @@ module restart_io
 
 contains
 
-   !> Writes the tag of a part.
-   subroutine put_tag(u, tag, stat)
-      integer, intent(in) :: u                      !< the open stream
+   !> The tag of a part; read, stat /= 0 unless it is `tag`.
+   subroutine io_tag(s, tag)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
       character(len=*), intent(in) :: tag           !< the part's name (tag_len characters at most)
-      integer, intent(inout) :: stat                !< 0, or the first failure
       character(len=tag_len) :: t
-      if (stat /= 0) return
+      if (s%stat /= 0) return
       t = tag
-      write (u, iostat=stat) t
-   end subroutine put_tag
-
-   !> Reads a tag: stat /= 0 unless it is `tag`.
-   subroutine take_tag(u, tag, stat)
-      integer, intent(in) :: u                      !< the open stream
-      character(len=*), intent(in) :: tag           !< the part expected
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      character(len=tag_len) :: t
-      if (stat /= 0) return
-      read (u, iostat=stat) t
-      if (stat == 0 .and. t /= tag) stat = wrong_tag
-   end subroutine take_tag
+      if (s%reading) read (s%u, iostat=s%stat) t
+      if (.not. s%reading) write (s%u, iostat=s%stat) t
+      if (s%stat == 0 .and. t /= tag) s%stat = wrong_tag
+   end subroutine io_tag
 
    !> A text: its length, then its characters.
-   subroutine put_text(u, text, stat)
-      integer, intent(in) :: u                      !< the open stream
-      character(len=*), intent(in) :: text          !< the text
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      if (stat /= 0) return
-      write (u, iostat=stat) len(text)
-      if (stat == 0 .and. len(text) > 0) write (u, iostat=stat) text
-   end subroutine put_text
-
-   !> Reads a text written by put_text.
-   subroutine take_text(u, text, stat)
-      integer, intent(in) :: u                      !< the open stream
-      character(len=:), allocatable, intent(out) :: text   !< the text
-      integer, intent(inout) :: stat                !< 0, or the first failure
+   subroutine io_text(s, text)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
+      character(len=:), allocatable, intent(inout) :: text   !< the text
       integer :: n
-      text = ''
-      if (stat /= 0) return
-      read (u, iostat=stat) n
-      if (stat /= 0) return
+      if (.not. allocated(text)) text = ''
+      n = len(text)
+      call io_value(s, n)
+      if (s%stat /= 0) return
       if (n < 0 .or. n > 10**7) then
-         stat = wrong_tag
+         s%stat = wrong_tag
          return
       end if
-      text = repeat(' ', n)
-      if (n > 0) read (u, iostat=stat) text
-   end subroutine take_text
+      if (s%reading) text = repeat(' ', n)
+      if (n > 0 .and. s%reading) read (s%u, iostat=s%stat) text
+      if (n > 0 .and. .not. s%reading) write (s%u, iostat=s%stat) text
+   end subroutine io_text
 
    !> One value: a real(dp), an integer, or a logical as the integer 0 or 1.
-   subroutine put_value(u, x, stat)
-      integer, intent(in) :: u                      !< the open stream
-      class(*), intent(in) :: x                     !< the value
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      if (stat /= 0) return
-      select type (x)
-      type is (real(dp))
-         write (u, iostat=stat) x
-      type is (integer)
-         write (u, iostat=stat) x
-      type is (logical)
-         write (u, iostat=stat) merge(1, 0, x)
-      class default
-         stat = wrong_tag
-      end select
-   end subroutine put_value
-
-   !> Reads a value written by put_value (unchanged after a failure).
-   subroutine take_value(u, x, stat)
-      integer, intent(in) :: u                      !< the open stream
-      class(*), intent(inout) :: x                  !< the value
-      integer, intent(inout) :: stat                !< 0, or the first failure
+   recursive subroutine io_value(s, x)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
+      class(*), intent(inout) :: x                  !< the value (unchanged after a failure)
       integer :: i
-      if (stat /= 0) return
+      if (s%stat /= 0) return
       select type (x)
       type is (real(dp))
-         read (u, iostat=stat) x
+         if (s%reading) read (s%u, iostat=s%stat) x
+         if (.not. s%reading) write (s%u, iostat=s%stat) x
       type is (integer)
-         read (u, iostat=stat) x
+         if (s%reading) read (s%u, iostat=s%stat) x
+         if (.not. s%reading) write (s%u, iostat=s%stat) x
       type is (logical)
-         read (u, iostat=stat) i
-         if (stat == 0) x = i /= 0
+         i = merge(1, 0, x)
+         call io_value(s, i)
+         if (s%stat == 0) x = i /= 0
+      class default
+         s%stat = wrong_tag
       end select
-   end subroutine take_value
+   end subroutine io_value
 
-   !> A vector of reals or integers: its size, then its values.
-   subroutine put_array(u, x, stat)
-      integer, intent(in) :: u                      !< the open stream
-      class(*), intent(in) :: x(:)                  !< the values
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      call put_value(u, size(x), stat)
-      if (stat /= 0 .or. size(x) == 0) return
+   !> Up to seven values in a row (io_value).
+   subroutine io_values(s, a, b, c, d, e, f, g)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
+      class(*), intent(inout) :: a                  !< the first value
+      class(*), intent(inout), optional :: b, c, d, e, f, g   !< the next ones
+      call io_value(s, a)
+      if (present(b)) call io_value(s, b)
+      if (present(c)) call io_value(s, c)
+      if (present(d)) call io_value(s, d)
+      if (present(e)) call io_value(s, e)
+      if (present(f)) call io_value(s, f)
+      if (present(g)) call io_value(s, g)
+   end subroutine io_values
+
+   !> The size of the vector that follows, `n`; read, stat /= 0 unless it is n.
+   subroutine io_count(s, n)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
+      integer, intent(in) :: n                      !< the size
+      integer :: m
+      m = n
+      call io_size(s, m, n)
+   end subroutine io_count
+
+   !> A vector's size; read, stat /= 0 when it is out of range or, with `n`, not n.
+   subroutine io_size(s, m, n)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
+      integer, intent(inout) :: m                   !< the size
+      integer, intent(in), optional :: n            !< the size expected
+      call io_value(s, m)
+      if (s%stat /= 0 .or. .not. s%reading) return
+      if (m < 0 .or. m > 10**9) s%stat = wrong_tag
+      if (present(n) .and. s%stat == 0) then
+         if (m /= n) s%stat = wrong_tag
+      end if
+   end subroutine io_size
+
+   !> Values of reals, integers or logicals (as 0 or 1), without their size.
+   recursive subroutine io_block(s, x)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
+      class(*), intent(inout) :: x(:)               !< the values
+      integer, allocatable :: i(:)
+      if (s%stat /= 0 .or. size(x) == 0) return
       select type (x)
       type is (real(dp))
-         write (u, iostat=stat) x
+         if (s%reading) read (s%u, iostat=s%stat) x
+         if (.not. s%reading) write (s%u, iostat=s%stat) x
       type is (integer)
-         write (u, iostat=stat) x
+         if (s%reading) read (s%u, iostat=s%stat) x
+         if (.not. s%reading) write (s%u, iostat=s%stat) x
+      type is (logical)
+         i = merge(1, 0, x)
+         call io_block(s, i)
+         if (s%stat == 0) x = i /= 0
       end select
-   end subroutine put_array
+   end subroutine io_block
 
-   !> Reads a vector written by put_array; with `n`, its size must be n.
-   subroutine take_reals(u, x, stat, n)
-      integer, intent(in) :: u                      !< the open stream
-      real(dp), allocatable, intent(inout) :: x(:)  !< the values
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      integer, intent(in), optional :: n            !< the size expected
-      integer :: m
-      call take_size(u, m, stat, n)
-      if (stat /= 0) return
-      if (allocated(x)) deallocate (x)
-      allocate (x(m))
-      if (m > 0) read (u, iostat=stat) x
-   end subroutine take_reals
+   !> A vector of its size: its size, then its values.
+   subroutine io_array1(s, x)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
+      class(*), intent(inout) :: x(:)               !< the values
+      call io_count(s, size(x))
+      call io_block(s, x)
+   end subroutine io_array1
 
-   !> Reads a vector of integers written by put_array; with `n`, its size must be n.
-   subroutine take_ints(u, i, stat, n)
-      integer, intent(in) :: u                      !< the open stream
+   !> A matrix of its shape, as the vector of its values in Fortran order.
+   subroutine io_array2(s, x)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
+      class(*), intent(inout) :: x(:,:)             !< the values
+      integer :: j
+      call io_count(s, size(x))
+      do j = 1, size(x, 2)
+         call io_block(s, x(:, j))
+      end do
+   end subroutine io_array2
+
+   !> A vector of integers of any size.
+   subroutine io_ints(s, i)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
       integer, allocatable, intent(inout) :: i(:)   !< the values
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      integer, intent(in), optional :: n            !< the size expected
       integer :: m
-      call take_size(u, m, stat, n)
-      if (stat /= 0) return
-      if (allocated(i)) deallocate (i)
-      allocate (i(m))
-      if (m > 0) read (u, iostat=stat) i
-   end subroutine take_ints
-
-   !> A vector's size; stat /= 0 when it is out of range or, with `n`, not n.
-   subroutine take_size(u, m, stat, n)
-      integer, intent(in) :: u                      !< the open stream
-      integer, intent(out) :: m                     !< the size
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      integer, intent(in), optional :: n            !< the size expected
-      m = -1
-      call take_value(u, m, stat)
-      if (stat == 0 .and. (m < 0 .or. m > 10**9)) stat = wrong_tag
-      if (present(n) .and. stat == 0) then
-         if (m /= n) stat = wrong_tag
-      end if
-   end subroutine take_size
+      if (.not. allocated(i)) allocate (i(0))
+      m = size(i)
+      call io_size(s, m)
+      if (s%stat /= 0) return
+      if (s%reading) deallocate (i)
+      if (s%reading) allocate (i(m))
+      call io_block(s, i)
+   end subroutine io_ints
 
    !> An impactor: mass, position, velocity, force.
-   subroutine put_impactor(u, imp, stat)
-      integer, intent(in) :: u                      !< the open stream
-      type(impactor_t), intent(in) :: imp           !< the impactor
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      call put_array(u, [imp%mass, imp%w, imp%v, imp%f], stat)
-   end subroutine put_impactor
-
-   !> Reads an impactor written by put_impactor.
-   subroutine take_impactor(u, imp, stat)
-      integer, intent(in) :: u                      !< the open stream
+   subroutine io_impactor(s, imp)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
       type(impactor_t), intent(inout) :: imp        !< the impactor
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      real(dp), allocatable :: x(:)
-      call take_reals(u, x, stat, 4)
-      if (stat == 0) imp = impactor_t(mass=x(1), w=x(2), v=x(3), f=x(4))
-   end subroutine take_impactor
+      call io_count(s, 4)
+      call io_values(s, imp%mass, imp%w, imp%v, imp%f)
+   end subroutine io_impactor
 
    !> A contact load pattern, whole, with its cached polynomials (the same bits after a restart).
-   subroutine put_pattern(u, p, stat)
-      integer, intent(in) :: u                      !< the open stream
-      type(load_pattern_t), intent(in) :: p         !< the pattern
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      logical :: has_poly
-      call put_array(u, [p%radius, p%total, p%valid, p%built_for], stat)
-      call put_value(u, p%n, stat)
-      if (p%n > 0) call put_array(u, p%eq(:p%n), stat)
-      if (p%n > 0) call put_array(u, p%c(:p%n), stat)
-      has_poly = allocated(p%poly)
-      if (has_poly) has_poly = p%n > 0 .and. size(p%poly, 2) >= p%n
-      call put_value(u, has_poly, stat)
-      if (has_poly) call put_array(u, reshape(p%poly(:, :p%n), [5*p%n]), stat)
-   end subroutine put_pattern
-
-   !> Reads a pattern written by put_pattern.
-   subroutine take_pattern(u, p, stat)
-      integer, intent(in) :: u                      !< the open stream
+   subroutine io_pattern(s, p)
+      type(restart_stream_t), intent(inout) :: s    !< the restart file
       type(load_pattern_t), intent(inout) :: p      !< the pattern
-      integer, intent(inout) :: stat                !< 0, or the first failure
-      real(dp), allocatable :: x(:)
+      real(dp), allocatable :: c(:)
       integer, allocatable :: eq(:)
       logical :: has_poly
-      call take_reals(u, x, stat, 10)
-      if (stat /= 0) return
-      p%radius = x(1);  p%total = x(2);  p%valid = x(3:4);  p%built_for = x(5:10)
-      call take_value(u, p%n, stat)
-      if (stat /= 0) return
-      if (p%n > 0) then
-         call take_ints(u, eq, stat)
-         call take_reals(u, x, stat, p%n)
-         if (stat /= 0) return
-         p%eq = eq
-         p%c = x
-      else
-         p%eq = [integer ::]
-         p%c = [real(dp) ::]
-      end if
+      call io_count(s, 10)
+      call io_values(s, p%radius, p%total)
+      call io_block(s, p%valid)
+      call io_block(s, p%built_for)
+      call io_value(s, p%n)
+      if (s%stat /= 0) return
+      allocate (eq(max(p%n, 0)), c(max(p%n, 0)))
+      if (p%n > 0 .and. .not. s%reading) eq = p%eq(:p%n)
+      if (p%n > 0 .and. .not. s%reading) c = p%c(:p%n)
+      if (p%n > 0) call io_array(s, eq)
+      if (p%n > 0) call io_array(s, c)
+      if (s%stat /= 0) return
+      if (s%reading) p%eq = eq
+      if (s%reading) p%c = c
       has_poly = .false.
-      call take_value(u, has_poly, stat)
-      if (has_poly) call take_reals(u, x, stat, 5*p%n)
-      if (.not. has_poly .or. stat /= 0) return
-      if (allocated(p%poly)) deallocate (p%poly)
-      allocate (p%poly(0:4, p%n))             ! (lower bound 0: the power of the radius)
-      p%poly(:, :) = reshape(x, [5, p%n])
-   end subroutine take_pattern
+      if (allocated(p%poly) .and. .not. s%reading) has_poly = p%n > 0 .and. size(p%poly, 2) >= p%n
+      call io_value(s, has_poly)
+      if (.not. has_poly .or. s%stat /= 0) return
+      if (s%reading) then
+         if (allocated(p%poly)) deallocate (p%poly)
+         allocate (p%poly(0:4, p%n))            ! (lower bound 0: the power of the radius)
+      end if
+      call io_array(s, p%poly(:, :p%n))
+   end subroutine io_pattern
 
    !> Appends the CRC-32 of all `u` holds (opened with action = 'readwrite').
    subroutine put_seal(u, stat)

@@ -398,12 +398,19 @@ contains
 
    ! ============================================================= summary
 
-   !> Appends a real item: the file's key, the SI name, unit and value, the file's scale.
-   subroutine summary_real(items, key, name, unit, si, scale)
+   !> Appends a real item: the file's key, the SI name, unit and value, the
+   !> file's scale; with `given` false, the text item `none` instead.
+   subroutine summary_real(items, key, name, unit, si, scale, given, none)
       type(summary_item_t), allocatable, intent(inout) :: items(:)
       character(len=*), intent(in) :: key, name, unit
       real(dp), intent(in) :: si, scale
+      logical, intent(in), optional :: given
+      character(len=*), intent(in), optional :: none
       character(len=24) :: buf
+      if (present(given)) then
+         if (.not. given) call summary_text(items, key, none)
+         if (.not. given) return
+      end if
       write (buf, '(es15.7)') si*scale
       call append(items, key, name, unit, trim(adjustl(buf)), si, item_real)
    end subroutine summary_real

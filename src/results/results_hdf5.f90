@@ -17,21 +17,25 @@ module results_hdf5
    use mesh, only: mesh_t, ndof_node, freedom_name
    use plate_damage, only: damage_wanted
    use result_files, only: keep_failure, column_t, history_columns, nhist_damage, history_width, summary_item_t
-   use hdf5_io, only: h5io_start, h5io_create, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
-      h5io_update_attr, h5io_write, h5io_rewrite, h5io_exists, h5io_delete
-   use hdf5_series, only: h5io_create_series, h5io_create_columns, h5io_append_block, h5io_open_dataset, &
+   use hdf5_io, only: h5io_start, h5io_open, h5io_close, h5io_flush, h5io_group, h5io_set_attr, &
+      h5io_update_attr, h5io_write, h5io_rewrite, h5io_delete
+   use hdf5_series, only: h5io_create_series, h5io_append_block, h5io_open_dataset, &
       h5io_cut_series, h5io_read_series, h5io_close_dataset, h5io_real, h5io_integer
    use results_xdmf, only: xdmf_t, xdmf_open, xdmf_start, xdmf_resume, xdmf_snapshots, xdmf_batch_close, &
       xdmf_grow, xdmf_cut, xdmf_peak, xdmf_close
    implicit none
    private
    public :: results_file_t, results_point_t, results_point, results_open, results_reopen, results_append_history, results_state, &
-             results_tick, results_flush, results_leave, results_closing, results_finish
+             results_tick, results_flush, results_leave, results_closing, results_finish, attr_text, &
+             attr_unit
 
    integer, parameter :: units_len = 8
    !> Units of /fields' time, step, force and nodal fields u, v, w, psi_x, psi_y.
    character(len=units_len), parameter :: snap_units(3 + ndof_node) = [character(len=units_len) :: &
       's', '-', 'N', 'm', 'm', 'm', 'rad', 'rad']
+   !> The snapshot series (rf%snaps): time, step, force, then the nodal fields (mesh's freedom_name).
+   character(len=12), parameter :: snap_names(3 + ndof_node) = [character(len=12) :: 'fields/time', &
+      'fields/step', 'fields/force', 'fields/u', 'fields/v', 'fields/w', 'fields/psi_x', 'fields/psi_y']
    !> Values per chunk of a series (4 KiB; the fields': whole snapshots, one at least).
    integer, parameter :: hist_chunk = 512
    !> Wall time between two flushes (s): a killed run loses at most this.
@@ -120,7 +124,7 @@ contains
       why = ''
       gone = c_unlink(rf%path // c_null_char)       ! an earlier run's (the claim allowed it)
       call h5io_start(stat, why)
-      if (stat == 0) call h5io_create(rf%path // '.tmp', .true., rf%fid, stat, why)
+      if (stat == 0) call h5io_open(rf%path // '.tmp', .true., .true., rf%fid, stat, why)
       if (stat /= 0) then
          errmsg = '&output: prefix = "'//trim(deck%prefix)//'": '//trim(why)
          return
@@ -157,8 +161,7 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=msg_len) :: why
-      real(dp), allocatable :: time(:), force(:)
-      integer, allocatable :: step(:)
+      real(dp), allocatable :: time(:), step(:), force(:)
       integer :: c, k
       stat = 0
       call system_clock(rf%flushed_at, rf%clock_rate)
@@ -168,20 +171,18 @@ contains
       rf%peak_fields = pt%peak_fields
       why = ''
       call h5io_start(stat, why)
-      if (stat == 0) call h5io_open(rf%path, .false., rf%fid, stat, why)
+      if (stat == 0) call h5io_open(rf%path, .false., .false., rf%fid, stat, why)
       do c = 1, rf%ncol
          call cut(rf%hist(c), 'history/' // trim(history_columns(c)%name), pt%rows)
       end do
       do k = 1, size(rf%snaps)
-         call cut(rf%snaps(k), snap_name(k), pt%snaps)
+         call cut(rf%snaps(k), trim(snap_names(k)), pt%snaps)
       end do
       if (stat == 0) call xdmf_cut(rf%xdmf, deck, msh, rf%fid, pt%snaps, stat, why)
       if (stat == 0) call h5io_update_attr(rf%fid, 'history', 'rows', pt%rows, stat, why)
       if (stat == 0) call h5io_update_attr(rf%fid, 'fields', 'snapshots', pt%snaps, stat, why)
       if (stat == 0) call write_peak(rf, stat, why)
-      if (stat == 0) then
-         if (h5io_exists(rf%fid, 'strength')) call h5io_delete(rf%fid, 'strength', stat, why)
-      end if
+      if (stat == 0) call h5io_delete(rf%fid, 'strength', stat, why)
       if (stat == 0) call h5io_delete(rf%fid, 'summary', stat, why)
       if (stat == 0) call h5io_group(rf%fid, 'summary', stat, why)
       call attr_text(rf%fid, 'summary', 'status', 'running', stat, why)
@@ -189,7 +190,7 @@ contains
       if (stat == 0) call h5io_read_series(rf%fid, 'fields/step', step, stat, why)
       if (stat == 0) call h5io_read_series(rf%fid, 'fields/force', force, stat, why)
       call close_window(rf, stat, why)
-      if (stat == 0) call xdmf_resume(rf%xdmf, time, step, force, stat, why)
+      if (stat == 0) call xdmf_resume(rf%xdmf, time, nint(step), force, stat, why)
       if (stat /= 0) then
          errmsg = rf%path // ': ' // trim(why)
          return
@@ -281,7 +282,7 @@ contains
       why = ''
       batch = rf%nsnap
       part = ''
-      call h5io_open(rf%path, .true., rf%fid, stat, why)
+      call h5io_open(rf%path, .false., .true., rf%fid, stat, why)
       if (stat == 0) part = '/history: '
       if (stat == 0) call write_rows(rf, stat, why)
       if (stat == 0) part = '/fields: '
@@ -339,7 +340,7 @@ contains
       n = rf%nsnap
       if (n == 0) return
       do k = 1, size(rf%snaps)
-         if (stat == 0) call h5io_open_dataset(rf%fid, snap_name(k), rf%snaps(k), stat, why)
+         if (stat == 0) call h5io_open_dataset(rf%fid, trim(snap_names(k)), rf%snaps(k), stat, why)
          if (stat /= 0) exit
          if (k == 2) then
             call h5io_append_block(rf%snaps(k), nint(rf%snap(k, :n)), stat, why)
@@ -409,7 +410,7 @@ contains
       integer :: stat
       if (.not. rf%active .or. rf%fid >= 0) return
       if (.not. rf%broken) call results_flush(rf, stat, why)
-      if (.not. rf%broken) call h5io_open(rf%path, .false., rf%fid, stat, why)
+      if (.not. rf%broken) call h5io_open(rf%path, .false., .false., rf%fid, stat, why)
       if (.not. rf%broken) rf%broken = stat /= 0
       if (rf%broken) rf%active = .false.            ! (nothing more is written into it)
    end subroutine results_closing
@@ -486,7 +487,7 @@ contains
          if (stat /= 0) exit columns
          col = history_columns(c)      ! (a copy, not an associate name: see src/deck/input_deck.f90)
          call h5io_create_series(rf%fid, 'history/'//trim(col%name), &
-            merge(h5io_integer, h5io_real, col%whole), hist_chunk, rf%hist(c), stat, why)
+            merge(h5io_integer, h5io_real, col%whole), 0, hist_chunk, rf%hist(c), stat, why)
          call attr_text(rf%fid, 'history/'//trim(col%name), 'units', col%unit, stat, why)
          call attr_text(rf%fid, 'history/'//trim(col%name), 'description', col%meaning, stat, why)
       end do columns
@@ -506,13 +507,9 @@ contains
       call attr_unit(rf%fid, 'fields', 'snapshots', 0, '-', stat, why)
       snapshot_series: do k = 1, size(rf%snaps)
          if (stat /= 0) exit snapshot_series
-         if (k <= 3) then
-            call h5io_create_series(rf%fid, snap_name(k), merge(h5io_integer, h5io_real, k == 2), hist_chunk, &
-               rf%snaps(k), stat, why)
-         else
-            call h5io_create_columns(rf%fid, snap_name(k), nnode, hist_chunk, rf%snaps(k), stat, why)
-         end if
-         call attr_text(rf%fid, snap_name(k), 'units', snap_units(k), stat, why)
+         call h5io_create_series(rf%fid, trim(snap_names(k)), merge(h5io_integer, h5io_real, k == 2), &
+            merge(0, nnode, k <= 3), hist_chunk, rf%snaps(k), stat, why)
+         call attr_text(rf%fid, trim(snap_names(k)), 'units', snap_units(k), stat, why)
       end do snapshot_series
    end subroutine create_fields
 
@@ -558,18 +555,6 @@ contains
       if (stat == 0) call h5io_set_attr(fid, obj, name//'_units', units, stat, why)
    end subroutine attr_unit
 
-   !> /fields/<name> of the k-th snapshot series: time, step, force, then the nodal fields.
-   pure function snap_name(k) result(name)
-      integer, intent(in) :: k                      !< the series (rf%snaps)
-      character(len=:), allocatable :: name
-      character(len=5), parameter :: scalars(3) = [character(len=5) :: 'time', 'step', 'force']
-      if (k <= 3) then
-         name = 'fields/' // trim(scalars(k))
-      else
-         name = 'fields/' // trim(freedom_name(k - 3))
-      end if
-   end function snap_name
-
    !> The nodal values of the freedoms, 0 where held (eq = 0).
    pure function nodal_values(eq, d) result(f)
       integer, intent(in) :: eq(:,:)   !< (ndof_node, nnode) equation numbers, 0 for held freedoms.
@@ -613,9 +598,9 @@ contains
          end do echo_lines
          close (u)
       end if
-      call put_text('deck', 'source', deck%source)
-      if (allocated(deck%settings)) call put_text('deck', 'settings', deck%settings)
-      call put_text('deck', 'echo', echo)
+      call attr_text(fid, 'deck', 'source', deck%source, stat, errmsg)
+      if (allocated(deck%settings)) call attr_text(fid, 'deck', 'settings', deck%settings, stat, errmsg)
+      call attr_text(fid, 'deck', 'echo', echo, stat, errmsg)
       do ig = 1, size(deck_groups)
          if (stat == 0) call h5io_group(fid, 'deck/'//trim(deck_groups(ig)), stat, errmsg)
       end do
@@ -630,24 +615,19 @@ contains
             if (v%given) then
                call h5io_set_attr(fid, grp, name, v%r, stat, errmsg)
             else
-               call put_text(grp, name, 'not given')
+               call attr_text(fid, grp, name, 'not given', stat, errmsg)
             end if
          case (kind_integer)
             call h5io_set_attr(fid, grp, name, v%i, stat, errmsg)
          case (kind_logical)
-            call put_text(grp, name, trim(merge('.true. ', '.false.', v%l)))
+            call attr_text(fid, grp, name, trim(merge('.true. ', '.false.', v%l)), stat, errmsg)
          case (kind_word, kind_path)
-            call put_text(grp, name, v%s)
+            call attr_text(fid, grp, name, v%s, stat, errmsg)
          case (kind_reals)
             call h5io_set_attr(fid, grp, name, v%list, stat, errmsg)
          end select
-         call put_text(grp, name//'_units', trim(deck_vars(iv)%unit))
+         call attr_text(fid, grp, name//'_units', trim(deck_vars(iv)%unit), stat, errmsg)
       end do variables
-   contains
-      subroutine put_text(obj, name, value)
-         character(len=*), intent(in) :: obj, name, value
-         if (stat == 0) call h5io_set_attr(fid, obj, name, value, stat, errmsg)
-      end subroutine put_text
    end subroutine write_deck
 
    !> /mesh: coordinates, connectivity, freedom map, grid and sizes.

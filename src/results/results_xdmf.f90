@@ -14,11 +14,12 @@ module results_xdmf
    use deck_schema, only: deck_t
    use mesh, only: mesh_t, ndof_node, freedom_name
    use shape_functions, only: nen
-   use hdf5_io, only: h5io_create, h5io_close, h5io_group, h5io_write, h5io_rewrite, h5io_flush, h5io_set_attr
-   use hdf5_series, only: h5io_view_column, h5io_create_columns, h5io_open_dataset, h5io_append_block, &
+   use hdf5_io, only: h5io_open, h5io_close, h5io_group, h5io_write, h5io_rewrite, h5io_flush, h5io_set_attr
+   use hdf5_series, only: h5io_view_column, h5io_create_series, h5io_real, h5io_open_dataset, h5io_append_block, &
       h5io_cut_series, h5io_close_dataset
    use file_system, only: rename_file
-   use xdmf_plies, only: xdmf_plies_t, plies_collection
+   use result_files, only: keep_failure
+   use xdmf_plies, only: xdmf_plies_t, plies_collection, data_item
    implicit none
    private
    public :: xdmf_t, xdmf_open, xdmf_start, xdmf_cut, xdmf_resume, xdmf_grow, xdmf_snapshots, xdmf_batch_close, &
@@ -125,8 +126,8 @@ contains
       fields: do k = 1, ndof_node
          if (stat /= 0) exit fields
          call h5io_write(fid, 'xdmf/peak/' // trim(freedom_name(k)), [(0.0_dp, n = 1, x%nnode)], stat, errmsg)
-         if (stat == 0) call h5io_create_columns(fid, 'xdmf/fields/' // trim(freedom_name(k)), x%nnode, &
-            chunk_values, did, stat, errmsg)
+         if (stat == 0) call h5io_create_series(fid, 'xdmf/fields/' // trim(freedom_name(k)), h5io_real, &
+            x%nnode, chunk_values, did, stat, errmsg)
          if (stat == 0) call h5io_close_dataset(did, stat, errmsg)
       end do fields
    end subroutine xdmf_open
@@ -139,7 +140,7 @@ contains
       stat = 0
       if (.not. allocated(x%path)) return           ! xdmf = 'none'
       call system_clock(x%written_at)
-      call h5io_create(x%views_path, .false., x%vid, stat, errmsg)
+      call h5io_open(x%views_path, .true., .false., x%vid, stat, errmsg)
       if (stat == 0) call h5io_group(x%vid, 'fields', stat, errmsg)
       if (stat /= 0) then
          errmsg = x%views_path // ': ' // trim(errmsg)
@@ -237,9 +238,10 @@ contains
       x%time = x%time(:before);  x%force = x%force(:before)
       x%step = x%step(:before);  x%batch = x%batch(:before)
       x%nbatch = x%nbatch + 1
-      call h5io_group(x%vid, batch_group(x%nbatch), stat, errmsg)
+      call h5io_group(x%vid, 'fields/' // int_str(x%nbatch), stat, errmsg)
       do k = 1, ndof_node
-         if (stat == 0) call h5io_group(x%vid, batch_group(x%nbatch) // '/' // trim(freedom_name(k)), stat, errmsg)
+         if (stat == 0) call h5io_group(x%vid, 'fields/' // int_str(x%nbatch) // '/' // trim(freedom_name(k)), &
+            stat, errmsg)
       end do
       snapshots: do j = 1, size(step)
          if (stat /= 0) exit snapshots
@@ -272,19 +274,12 @@ contains
          call write_xml(x, stat, errmsg)
    end subroutine xdmf_batch_close
 
-   !> The group of batch b.
-   pure function batch_group(b) result(path)
-      integer, intent(in) :: b                      !< batch number
-      character(len=:), allocatable :: path
-      path = 'fields/' // int_str(b)
-   end function batch_group
-
    !> Where field k of snapshot s is in <prefix>.xdmf.h5: /fields/<b>/<f>/<s>.
    pure function view_path(x, k, s) result(path)
       type(xdmf_t), intent(in) :: x                 !< the XDMF file
       integer, intent(in) :: k, s                   !< freedom, snapshot
       character(len=:), allocatable :: path
-      path = batch_group(x%batch(s)) // '/' // trim(freedom_name(k)) // '/' // int_str(s)
+      path = 'fields/' // int_str(x%batch(s)) // '/' // trim(freedom_name(k)) // '/' // int_str(s)
    end function view_path
 
    !> The peak state just rewritten: for the whole plate, mirrored into /xdmf/peak.
@@ -317,10 +312,7 @@ contains
       call write_xml(x, stat, errmsg)
       call h5io_close(x%vid, ios, why)
       x%vid = -1
-      if (ios /= 0 .and. stat == 0) then
-         stat = ios
-         errmsg = x%views_path // ': ' // trim(why)
-      end if
+      call keep_failure(stat, errmsg, ios, x%views_path // ': ' // trim(why))
       x%active = .false.
    end subroutine xdmf_close
 
@@ -336,12 +328,8 @@ contains
       integer :: u, k, s
       h5 = xml_escaped(x%h5_name) // ':/'
       views = xml_escaped(x%views_name) // ':/'
-      mesh_points = 'mesh/coordinates'
-      peak = 'peak/'
-      if (x%whole) then
-         mesh_points = 'xdmf/coordinates'
-         peak = 'xdmf/peak/'
-      end if
+      mesh_points = trim(merge('xdmf/coordinates', 'mesh/coordinates', x%whole))
+      peak = trim(merge('xdmf/peak/', 'peak/     ', x%whole))
       tmp = x%path // '.tmp'
       open (newunit=u, file=tmp, status='replace', action='write', form='formatted', iostat=stat, iomsg=iomsg)
       if (stat /= 0) then
@@ -357,10 +345,10 @@ contains
       write (u, '(a)') '    <Information Name="status" Value="' // xml_escaped(x%status) // '"/>'
       write (u, '(a)') '    <Grid Name="mesh" GridType="Uniform">'
       write (u, '(a)') '      <Topology TopologyType="Quadrilateral_9" NumberOfElements="' // int_str(x%nelem) // '">'
-      write (u, '(a)') '        ' // data_item('Int', 4, int_str(x%nelem) // ' ' // int_str(nen), h5 // 'xdmf/cells')
+      write (u, '(a)') '        ' // data_item('Int', int_str(x%nelem) // ' ' // int_str(nen), h5 // 'xdmf/cells')
       write (u, '(a)') '      </Topology>'
       write (u, '(a)') '      <Geometry GeometryType="XY">'
-      write (u, '(a)') '        ' // data_item('Float', 8, int_str(x%nnode) // ' 2', h5 // mesh_points)
+      write (u, '(a)') '        ' // data_item('Float', int_str(x%nnode) // ' 2', h5 // mesh_points)
       write (u, '(a)') '      </Geometry>'
       write (u, '(a)') '    </Grid>'
       call plies_collection(x%plies, u, h5, x%time(:x%nsnap))
@@ -395,19 +383,10 @@ contains
       subroutine attribute(name, path)
          character(len=*), intent(in) :: name, path
          write (u, '(a)') '        <Attribute Name="' // name // '" AttributeType="Scalar" Center="Node">'
-         write (u, '(a)') '          ' // data_item('Float', 8, int_str(x%nnode), path)
+         write (u, '(a)') '          ' // data_item('Float', int_str(x%nnode), path)
          write (u, '(a)') '        </Attribute>'
       end subroutine attribute
    end subroutine write_xml
-
-   !> An HDF DataItem: 'Int' or 'Float', bytes, dimensions (C order), 'file:/path'.
-   pure function data_item(number_type, precision, dims, where) result(text)
-      character(len=*), intent(in) :: number_type, dims, where
-      integer, intent(in) :: precision
-      character(len=:), allocatable :: text
-      text = '<DataItem Format="HDF" DataType="' // number_type // '" Precision="' // int_str(precision) &
-         // '" Dimensions="' // dims // '">' // where // '</DataItem>'
-   end function data_item
 
    ! ============================================================ the mirror
 

@@ -12,10 +12,10 @@ module xdmf_plies
    use number_text, only: int_str
    use mesh, only: mesh_t
    use shape_functions, only: nen, shape9
-   use hdf5_io, only: h5io_group, h5io_write, h5io_exists, h5io_delete
+   use hdf5_io, only: h5io_group, h5io_write, h5io_delete
    implicit none
    private
-   public :: xdmf_plies_t, ply_maps_t, plies_write, plies_add, plies_collection
+   public :: xdmf_plies_t, ply_maps_t, plies_write, plies_add, plies_collection, data_item
 
    !> Where the cells of the 3 x 3 Gauss points are cut, along xi and eta.
    real(dp), parameter :: plies_cut(4) = [-1.0_dp, -4.0_dp/9.0_dp, 4.0_dp/9.0_dp, 1.0_dp]
@@ -68,50 +68,39 @@ contains
       type(ply_maps_t), intent(in) :: maps          !< the laminate and its maps
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
-      real(dp), allocatable :: xyz(:,:), v(:), face_values(:,:,:)
-      integer, allocatable :: cells(:,:), iv(:)
+      real(dp), allocatable :: xyz(:,:), face_values(:,:,:)
+      integer, allocatable :: cells(:,:)
       integer :: nply, npoint, ncell, c, k
-      associate (angle => maps%angle, fi_max => maps%fi_max, mode_max => maps%mode_max, onset => maps%onset, &
-                 sigma => maps%sigma, fi => maps%fi, delam => maps%delam)
-      nply = size(angle)
-      npoint = size(fi_max, 2)
+      nply = size(maps%angle)
+      npoint = size(maps%fi_max, 2)
       ncell = 2*nply*npoint
       call laminate_grid(msh, maps%z, xyz, cells)
       stat = 0
       ! a restarted run (src/record/restart_point.f90) finds the group of the run it continues
-      if (h5io_exists(fid, group)) call h5io_delete(fid, group, stat, errmsg)
+      call h5io_delete(fid, group, stat, errmsg)
       if (stat == 0) call h5io_group(fid, group, stat, errmsg)
       if (stat == 0) call h5io_write(fid, group // '/points', xyz, stat, errmsg)
       if (stat == 0) call h5io_write(fid, group // '/cells', cells, stat, errmsg)
       deallocate (xyz, cells)
       ! -- where each cell is
-      iv = reshape(spread(spread([(k, k = 1, nply)], 1, 2), 3, npoint), [ncell])
-      if (stat == 0) call h5io_write(fid, group // '/ply', iv, stat, errmsg)
-      iv = reshape(spread(spread([1, 2], 2, nply), 3, npoint), [ncell])
-      if (stat == 0) call h5io_write(fid, group // '/face', iv, stat, errmsg)
-      v = reshape(spread(spread(angle, 1, 2), 3, npoint), [ncell])
-      call put_real(1)
+      call put('ply', reshape(spread(spread([(k, k = 1, nply)], 1, 2), 3, npoint), [ncell]))
+      call put('face', reshape(spread(spread([1, 2], 2, nply), 3, npoint), [ncell]))
+      call put(real_sets(1), reshape(spread(spread(maps%angle, 1, 2), 3, npoint), [ncell]))
       ! -- the damage map, the same on both faces of a ply
-      v = reshape(spread(fi_max, 1, 2), [ncell])
-      call put_real(2)
-      v = reshape(spread(onset, 1, 2), [ncell])
-      call put_real(3)
-      iv = reshape(spread(mode_max, 1, 2), [ncell])
-      if (stat == 0) call h5io_write(fid, group // '/damage_mode', iv, stat, errmsg)
+      call put(real_sets(2), reshape(spread(maps%fi_max, 1, 2), [ncell]))
+      call put(real_sets(3), reshape(spread(maps%onset, 1, 2), [ncell]))
+      call put('damage_mode', reshape(spread(maps%mode_max, 1, 2), [ncell]))
       ! -- the peak force's stresses and indices, face by face
       do c = 1, 5
-         v = reshape(sigma(c, :, :, :), [ncell])
-         call put_real(3 + c)
+         call put(real_sets(3 + c), reshape(maps%sigma(c, :, :, :), [ncell]))
       end do
-      v = reshape(fi, [ncell])
-      call put_real(9)
+      call put(real_sets(9), reshape(maps%fi, [ncell]))
       ! -- each interface's index on the two half-plies beside it
       allocate (face_values(2, nply, npoint))
       face_values = 0.0_dp
-      face_values(2, 1:nply-1, :) = delam
-      face_values(1, 2:nply, :) = delam
-      v = reshape(face_values, [ncell])
-      call put_real(10)
+      face_values(2, 1:nply-1, :) = maps%delam
+      face_values(1, 2:nply, :) = maps%delam
+      call put(real_sets(10), reshape(face_values, [ncell]))
       if (stat /= 0) return
       p%active = .true.
       p%nply = nply
@@ -120,12 +109,12 @@ contains
       p%npts = nen_lattice*msh%nelem*(2*nply + 1)
       p%modes = maps%modes
       allocate (p%added(0))
-      end associate
    contains
-      subroutine put_real(j)
-         integer, intent(in) :: j
-         if (stat == 0) call h5io_write(fid, group // '/' // trim(real_sets(j)), v, stat, errmsg)
-      end subroutine put_real
+      subroutine put(name, x)
+         character(len=*), intent(in) :: name
+         class(*), intent(in) :: x(:)
+         if (stat == 0) call h5io_write(fid, group // '/' // trim(name), x, stat, errmsg)
+      end subroutine put
    end subroutine plies_write
 
    !> One more map v (nply, npoint) of the active grid p, the same on both
@@ -244,7 +233,8 @@ contains
       end subroutine attribute
    end subroutine plies_collection
 
-   !> An HDF DataItem of 4-byte integers or 8-byte reals.
+   !> An HDF DataItem of 4-byte integers ('Int') or 8-byte reals ('Float'):
+   !> dimensions (C order), 'file:/path'.
    pure function data_item(number_type, dims, where) result(text)
       character(len=*), intent(in) :: number_type, dims, where
       character(len=:), allocatable :: text
