@@ -218,11 +218,8 @@ contains
          sky%a(sky%maxa(j)) = ajj - s
 
          ! Phase 3 - the pivot rule on d_j.
-         call check_pivot(j, sky%a(sky%maxa(j)), ajj, stat, errmsg)
-         if (stat /= 0) then
-            bad_eq = j
-            return
-         end if
+         call check_pivot(j, sky%a(sky%maxa(j)), ajj, stat, errmsg, bad_eq)
+         if (stat /= 0) return
       end do columns
       sky%factored = .true.
    end subroutine skyline_factor

@@ -6,7 +6,7 @@ module sparse_matrix
    use, intrinsic :: iso_c_binding, only: c_long_long
    use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
-   use band_matrix, only: check_pivot
+   use band_matrix, only: check_pivots
    use cholmod_binding, only: cholmod_handle_t, chol_set_matrix, chol_analyze, chol_factorize, chol_diagonal, &
                               chol_solve, chol_copy, chol_release
    use system_limits, only: physical_memory
@@ -314,8 +314,9 @@ contains
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
-      real(dp), allocatable :: diag(:)
-      integer :: minor
+      real(dp), allocatable :: diag(:), ldiag(:)
+      integer, allocatable :: perm(:)
+      integer :: minor, last, stopped
       stat = 0
       bad_eq = 0
       if (.not. allocated(a%val) .or. a%factored) then
@@ -333,7 +334,14 @@ contains
       deallocate (a%val)        ! CHOLMOD holds the matrix now
       call chol_factorize(a%chol, minor, stat, errmsg)
       if (stat /= 0) return
-      call check_pivots(a, diag, minor, stat, errmsg, bad_eq)
+      ! the pivot rule on L(k,k)**2, k in the order of elimination, up to CHOLMOD's stop
+      allocate (ldiag(a%n), perm(a%n))
+      call chol_diagonal(a%chol, ldiag, perm, stat, errmsg)
+      if (stat /= 0) return
+      last = min(minor - 1, a%n)
+      stopped = 0
+      if (minor <= a%n) stopped = perm(minor)
+      call check_pivots(perm(:last), ldiag(:last)**2, diag, stopped, stat, errmsg, bad_eq)
       a%factored = stat == 0
    end subroutine sparse_factor
 
@@ -360,40 +368,6 @@ contains
       end if
       a%analysed = .true.
    end subroutine sparse_analyse
-
-   !> The pivot rule of the module header on the factor's diagonal, in the
-   !> order of elimination, up to the column at which CHOLMOD stopped.
-   subroutine check_pivots(a, diag, minor, stat, errmsg, bad_eq)
-      type(sparse_matrix_t), intent(in) :: a  !< the matrix, numerically factored.
-      real(dp), intent(in) :: diag(:)  !< A(j,j) before the factorization, by equation.
-      integer, intent(in) :: minor  !< column (elimination order) where CHOLMOD stopped, n+1 if none.
-      integer, intent(out) :: stat  !< 0 when every pivot passes, 1 otherwise.
-      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
-      real(dp), allocatable :: ldiag(:)
-      integer, allocatable :: perm(:)
-      integer :: k, j
-      character(len=msg_len) :: msg
-      bad_eq = 0
-      allocate (ldiag(a%n), perm(a%n))
-      call chol_diagonal(a%chol, ldiag, perm, stat, errmsg)
-      if (stat /= 0) return
-      do k = 1, min(minor - 1, a%n)
-         j = perm(k)
-         call check_pivot(j, ldiag(k)**2, diag(j), stat, errmsg)
-         if (stat /= 0) then
-            bad_eq = j
-            return
-         end if
-      end do
-      if (minor <= a%n) then
-         stat = 1
-         bad_eq = perm(minor)
-         write (msg, '(a,i0,a,es10.3,a)') 'matrix not positive definite at equation ', &
-            bad_eq, ' (pivot <= 0, diagonal ', diag(bad_eq), ')'
-         errmsg = msg
-      end if
-   end subroutine check_pivots
 
    !> Solve A x = b with the factor, b of its size (global_solve, the one
    !> caller, checks both); b is overwritten by x.
