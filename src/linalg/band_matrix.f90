@@ -49,7 +49,6 @@ module band_matrix
    !> when its pivot d_j = U(j,j)**2 is not greater than pivot_rel_tol * |A(j,j)|,
    !> A(j,j) before factorisation: negative, zero and rounding-zero pivots
    !> (an unrestrained rigid-body mode).
-   !> Symmetric band matrix, upper band storage (as above).
    type :: band_matrix_t
       integer :: n = 0  !< order of the matrix (number of equations).
       integer :: kd = 0  !< half-bandwidth: A(i,j) = 0 for |i-j| > kd.
@@ -59,7 +58,6 @@ module band_matrix
 
    ! LAPACK and BLAS routines, double precision, called with uplo = 'U'.
    interface
-      !> Cholesky factorisation of a symmetric positive definite band matrix.
       subroutine dpbtrf(uplo, n, kd, ab, ldab, info)
          import :: dp
          character, intent(in) :: uplo
@@ -67,7 +65,6 @@ module band_matrix
          real(dp), intent(inout) :: ab(ldab, *)
          integer, intent(out) :: info
       end subroutine dpbtrf
-      !> Solve with the factor from dpbtrf.
       subroutine dpbtrs(uplo, n, kd, nrhs, ab, ldab, b, ldb, info)
          import :: dp
          character, intent(in) :: uplo
@@ -76,7 +73,6 @@ module band_matrix
          real(dp), intent(inout) :: b(ldb, *)
          integer, intent(out) :: info
       end subroutine dpbtrs
-      !> y := alpha*A*x + beta*y for a symmetric band matrix A.
       subroutine dsbmv(uplo, n, k, alpha, a, lda, x, incx, beta, y, incy)
          import :: dp
          character, intent(in) :: uplo
@@ -118,7 +114,6 @@ contains
       a%n = n
       a%kd = kd
       a%ab = 0.0_dp
-      a%factored = .false.
    end subroutine band_init
 
    !> Set every entry to zero and forget any factorisation.

@@ -10,22 +10,16 @@
  * Handles: each factorization is an entry of a table, named by a key (1, 2,
  * 3, ..., never reused), so a stale key is refused (IMPACT_CHOLMOD_NO_HANDLE)
  * instead of touching freed memory. Not thread-safe (nor is the program).
- * Return codes (the same in cholmod_binding.f90): 0 success, 1 no such
- * handle, 2 out of memory, 3 too large for CHOLMOD's integers, 4 invalid
- * input, 5 another failure (impact_cholmod_status gives its status).
+ * Return codes: the enum below (impact_cholmod_status gives CHOLMOD's
+ * status of the last failure).
  */
 #include <stdlib.h>
 #include <string.h>
 #include <cholmod.h>
 
-enum {
-    IMPACT_CHOLMOD_OK = 0,
-    IMPACT_CHOLMOD_NO_HANDLE = 1,
-    IMPACT_CHOLMOD_NO_MEMORY = 2,
-    IMPACT_CHOLMOD_TOO_LARGE = 3,
-    IMPACT_CHOLMOD_INVALID = 4,
-    IMPACT_CHOLMOD_FAILED = 5
-};
+/* The same in cholmod_binding.f90; FAILED: another failure of CHOLMOD. */
+enum { IMPACT_CHOLMOD_OK = 0, IMPACT_CHOLMOD_NO_HANDLE = 1, IMPACT_CHOLMOD_NO_MEMORY = 2,
+       IMPACT_CHOLMOD_TOO_LARGE = 3, IMPACT_CHOLMOD_INVALID = 4, IMPACT_CHOLMOD_FAILED = 5 };
 
 /* One factorization: CHOLMOD's workspace, the matrix handed over for the
  * next analysis or factorization, the factor, and the solve's workspace. */

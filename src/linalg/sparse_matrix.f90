@@ -54,7 +54,6 @@ module sparse_matrix
    !> sparse_copy_factor copies it. The pivot rule (band_matrix's check_pivot)
    !> on d_j = L(k,k)**2 in the order of elimination: for a mechanism the
    !> equation named may be another of the same mechanism than band's.
-   !> Symmetric matrix in compressed sparse columns (as above).
    type :: sparse_matrix_t
       integer :: n = 0  !< order of the matrix (number of equations).
       integer(c_long_long), allocatable :: colptr(:)  !< start of column j in rowind and val, colptr(n+1) = nnz + 1.
