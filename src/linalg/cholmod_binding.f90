@@ -27,64 +27,57 @@ module cholmod_binding
 
    ! The shim's functions, each documented in cholmod_shim.c.
    interface
-      function chol_new() bind(c, name='impact_cholmod_new') result(key)
+      integer(c_long_long) function chol_new() bind(c, name='impact_cholmod_new')
          import :: c_long_long
-         integer(c_long_long) :: key
       end function chol_new
       subroutine chol_free(key) bind(c, name='impact_cholmod_free')
          import :: c_long_long
          integer(c_long_long), value :: key  !< the handle.
       end subroutine chol_free
-      function chol_live() bind(c, name='impact_cholmod_live') result(n)
+      integer(c_long_long) function chol_live() bind(c, name='impact_cholmod_live')
          import :: c_long_long
-         integer(c_long_long) :: n
       end function chol_live
-      function chol_status() bind(c, name='impact_cholmod_status') result(status)
+      integer(c_int) function chol_status() bind(c, name='impact_cholmod_status')
          import :: c_int
-         integer(c_int) :: status
       end function chol_status
-      function chol_copy(key, copy) bind(c, name='impact_cholmod_copy') result(code)
+      integer(c_int) function chol_copy(key, copy) bind(c, name='impact_cholmod_copy')
          import :: c_long_long, c_int
          integer(c_long_long), value :: key  !< the handle copied.
          integer(c_long_long), intent(out) :: copy  !< the new handle.
-         integer(c_int) :: code
       end function chol_copy
-      function chol_set_matrix(key, n, colptr, rowind, values) &
-            bind(c, name='impact_cholmod_set_matrix') result(code)
+      integer(c_int) function chol_set_matrix(key, n, colptr, rowind, values) &
+            bind(c, name='impact_cholmod_set_matrix')
          import :: c_long_long, c_int, c_double
          integer(c_long_long), value :: key  !< the handle.
          integer(c_long_long), value :: n  !< order.
          integer(c_long_long), intent(in) :: colptr(*)  !< column starts (n+1).
          integer(c_int), intent(in) :: rowind(*)  !< rows, ascending in each column.
          real(c_double), intent(in) :: values(*)  !< values, as rowind.
-         integer(c_int) :: code
       end function chol_set_matrix
-      function chol_analyze(key, lnz, flops, bytes) bind(c, name='impact_cholmod_analyze') result(code)
+      integer(c_int) function chol_analyze(key, lnz, flops, bytes) &
+            bind(c, name='impact_cholmod_analyze')
          import :: c_long_long, c_int, c_double
          integer(c_long_long), value :: key  !< the handle.
          real(c_double), intent(out) :: lnz, flops, bytes  !< nnz(L), flops, bytes of the numeric factor.
-         integer(c_int) :: code
       end function chol_analyze
-      function chol_factorize(key, minor) bind(c, name='impact_cholmod_factorize') result(code)
+      integer(c_int) function chol_factorize(key, minor) bind(c, name='impact_cholmod_factorize')
          import :: c_long_long, c_int
          integer(c_long_long), value :: key  !< the handle.
          integer(c_long_long), intent(out) :: minor  !< 1-based failed column, n+1 if none.
-         integer(c_int) :: code
       end function chol_factorize
-      function chol_diagonal(key, n, diag, perm) bind(c, name='impact_cholmod_diagonal') result(code)
+      integer(c_int) function chol_diagonal(key, n, diag, perm) &
+            bind(c, name='impact_cholmod_diagonal')
          import :: c_long_long, c_int, c_double
          integer(c_long_long), value :: key  !< the handle.
          integer(c_long_long), value :: n  !< order.
          real(c_double), intent(out) :: diag(*)  !< L(k,k), k in elimination order.
          integer(c_long_long), intent(out) :: perm(*)  !< equation eliminated k-th (1-based).
-         integer(c_int) :: code
       end function chol_diagonal
-      function chol_solve(key, n, b) bind(c, name='impact_cholmod_solve') result(code)
+      integer(c_int) function chol_solve(key, n, b) bind(c, name='impact_cholmod_solve')
          import :: c_long_long, c_int, c_double
          integer(c_long_long), value :: key  !< the handle.
          integer(c_long_long), value :: n  !< order.
          real(c_double), intent(inout) :: b(*)  !< right-hand side in, solution out.
-         integer(c_int) :: code
       end function chol_solve
    end interface
 
