@@ -35,10 +35,8 @@ module band_matrix
    !>     |             a44 a45 |
    !>     | sym             a55 |         (* = unused, kept zero)
    !>
-   !> A(i,j) and A(j,i) are one stored number: band_add(a, i, j, v) with i > j
-   !> adds v to the same entry as band_add(a, j, i, v). An assembly loop over
-   !> a full symmetric element matrix must therefore add each global pair once
-   !> (for instance only the pairs with row <= column).
+   !> A(i,j) and A(j,i) are one stored number (band_add mirrors i > j): an
+   !> assembly adds each global pair once (global_assemble: row <= column).
    !>
    !> This layout is what LAPACK dpbtrf/dpbtrs and BLAS dsbmv read with
    !> uplo = 'U' and ldab = kd+1. band_factor overwrites ab in place with the
