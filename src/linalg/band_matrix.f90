@@ -201,12 +201,9 @@ contains
          errmsg = 'band_solve: the matrix is not factored (call band_factor first)'
          return
       end if
-      stat = 0
       call dpbtrs('U', a%n, a%kd, 1, a%ab, a%kd + 1, b, a%n, info)
-      if (info /= 0) then
-         stat = 1
-         errmsg = 'band_solve: dpbtrs rejected argument ' // int_str(-info)
-      end if
+      stat = merge(0, 1, info == 0)
+      if (info /= 0) errmsg = 'band_solve: dpbtrs rejected argument ' // int_str(-info)
    end subroutine band_solve
 
    !> a = a + alpha*b for two unfactored matrices (global_axpy_matrix

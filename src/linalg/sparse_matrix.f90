@@ -295,17 +295,15 @@ contains
       type(sparse_matrix_t), intent(in) :: b  !< the matrix added, same pattern as a.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure (a unchanged).
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      stat = 0
+      stat = 1
       if (a%factored .or. b%factored .or. .not. allocated(a%val) .or. .not. allocated(b%val)) then
-         stat = 1
          errmsg = 'sparse_axpy: a factored matrix cannot be added to or from'
       else if (a%n /= b%n .or. size(a%rowind) /= size(b%rowind)) then
-         stat = 1
          errmsg = 'sparse_axpy: patterns differ (orders or numbers of entries)'
       else if (any(a%colptr /= b%colptr) .or. any(a%rowind /= b%rowind)) then
-         stat = 1
          errmsg = 'sparse_axpy: patterns differ'
       else
+         stat = 0
          a%val = a%val + alpha * b%val
       end if
    end subroutine sparse_axpy
