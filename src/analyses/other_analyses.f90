@@ -113,6 +113,7 @@ contains
       character(len=48), allocatable :: texts(:)
       real(dp), allocatable :: w(:,:)
       real(dp) :: de(ndof_node), wmax(deck%mode_count), fraction(3)
+      character(len=23) :: fmt
       integer :: u, j, k
       call modal_solve(model, deck%mode_count, deck%mode_shapes, res, stat, errmsg)
       if (stat /= 0) return
@@ -126,10 +127,10 @@ contains
          u, stat, errmsg)
       if (stat /= 0) return
       fraction = -1.0_dp                            ! without the shapes
+      fmt = merge('(i6, 2es17.8e3, 3f12.6)', '(i6, 2es17.8e3, 3f12.1)', deck%mode_shapes)
       rows: do j = 1, res%count
          if (deck%mode_shapes) fraction = res%fraction(:, j)
-         write (u, merge('(i6, 2es17.8e3, 3f12.6)', '(i6, 2es17.8e3, 3f12.1)', deck%mode_shapes)) j, res%freq(j), &
-            sign(sqrt(abs(res%omega2(j))), res%omega2(j)), fraction
+         write (u, fmt) j, res%freq(j), sign(sqrt(abs(res%omega2(j))), res%omega2(j)), fraction
       end do rows
       close (u)
       if (.not. deck%mode_shapes) then

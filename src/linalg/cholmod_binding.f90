@@ -13,8 +13,8 @@ module cholmod_binding
    implicit none
    private
    public :: cholmod_handle_t, cholmod_live_handles, chol_check, no_memory
-   public :: chol_new, chol_free, chol_copy, chol_set_matrix, chol_analyze, chol_factorize, chol_diagonal, &
-             chol_solve
+   public :: chol_new, chol_free, chol_copy, chol_set_matrix, chol_analyze, chol_factorize, &
+             chol_diagonal, chol_solve
 
    !> Return codes of the shim (src/linalg/cholmod_shim.c).
    integer(c_int), parameter :: code_ok = 0, no_handle = 1, no_memory = 2, too_large = 3, invalid = 4, &

@@ -361,8 +361,8 @@ contains
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       real(dp) :: flops, machine
       character(len=msg_len) :: msg
-      call chol_check(chol_analyze(a%chol%key, a%factor_entries, flops, a%factor_bytes), 'the analysis', &
-         stat, errmsg)
+      call chol_check(chol_analyze(a%chol%key, a%factor_entries, flops, a%factor_bytes), &
+         'the analysis', stat, errmsg)
       if (stat /= 0) return
       machine = physical_memory()
       if (machine > 0.0_dp .and. a%factor_bytes > machine) then
