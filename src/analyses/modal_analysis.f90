@@ -114,12 +114,12 @@ contains
          return
       end if
 
-      ! -- kinetic energy share of each kind of freedom: 1 u, v; 2 w; 3 psi
+      ! -- kinetic energy share of each kind of freedom, the columns: 1 w; 2 u, v; 3 psi
       allocate (kind_of(n), part(n), mpart(n), res%fraction(3, count))
       kind_of = 0
       do node = 1, model%msh%nnode
          do k = 1, ndof_node
-            if (model%msh%eq(k, node) > 0) kind_of(model%msh%eq(k, node)) = merge(1, merge(2, 3, k == w_dof), k <= 2)
+            if (model%msh%eq(k, node) > 0) kind_of(model%msh%eq(k, node)) = merge(2, merge(1, 3, k == w_dof), k <= 2)
          end do
       end do
       modes: do j = 1, count
@@ -129,8 +129,6 @@ contains
             res%fraction(c, j) = dot_product(part, mpart)
          end do
       end do modes
-      ! columns: w, in-plane, rotation
-      res%fraction = res%fraction([2, 1, 3], :)
    end subroutine modal_solve
 
 end module modal_analysis

@@ -61,8 +61,7 @@ contains
       solve_msg = ''
       call static_solve(model, f, n, res, solve_stat, solve_msg)
 
-      load_unit = 'Pa'
-      if (deck%load_kind == 'central_force') load_unit = 'N'
+      load_unit = merge('N ', 'Pa', deck%load_kind == 'central_force')
       call open_columns(deck, '_static.dat', 'impact: static analysis, load-deflection path', &
          [character(len=16) :: 'increment', 'load_factor', 'load', 'w_centre_mm', 'w_centre_h', &
           'iterations', 'residual'], &
@@ -112,7 +111,9 @@ contains
       type(modal_result_t) :: res
       character(len=16), allocatable :: names(:)
       character(len=48), allocatable :: texts(:)
-      real(dp) :: de(ndof_node), wmax(deck%mode_count), wk
+      real(dp), allocatable :: w(:,:)
+      real(dp) :: de(ndof_node), wmax(deck%mode_count), fraction(3)
+      character(len=23) :: fmt
       integer :: u, j, k
       call modal_solve(model, deck%mode_count, deck%mode_shapes, res, stat, errmsg)
       if (stat /= 0) return
@@ -125,14 +126,11 @@ contains
           'kinetic energy share of u, v (-; -1: no shapes)', 'kinetic energy share of psi_x, psi_y (-; -1: no shapes)'], &
          u, stat, errmsg)
       if (stat /= 0) return
+      fraction = -1.0_dp                            ! without the shapes
+      fmt = merge('(i6, 2es17.8e3, 3f12.6)', '(i6, 2es17.8e3, 3f12.1)', deck%mode_shapes)
       rows: do j = 1, res%count
-         if (deck%mode_shapes) then
-            write (u, '(i6, 2es17.8e3, 3f12.6)') j, res%freq(j), sign(sqrt(abs(res%omega2(j))), res%omega2(j)), &
-               res%fraction(:, j)
-         else
-            write (u, '(i6, 2es17.8e3, 3f12.1)') j, res%freq(j), sign(sqrt(abs(res%omega2(j))), res%omega2(j)), &
-               -1.0_dp, -1.0_dp, -1.0_dp
-         end if
+         if (deck%mode_shapes) fraction = res%fraction(:, j)
+         write (u, fmt) j, res%freq(j), sign(sqrt(abs(res%omega2(j))), res%omega2(j)), fraction
       end do rows
       close (u)
       if (.not. deck%mode_shapes) then
@@ -143,30 +141,24 @@ contains
       end if
 
       ! -- mode shapes: w at the nodes, each mode scaled to max |w| = 1
-      allocate (names(2 + res%count), texts(2 + res%count))
+      allocate (names(2 + res%count), texts(2 + res%count), w(model%msh%nnode, res%count))
       names(1) = 'x_mm';  texts(1) = 'x from the plate centre (mm)'
       names(2) = 'y_mm';  texts(2) = 'y from the plate centre (mm)'
       do j = 1, res%count
          write (names(2 + j), '(a,i0)') 'w_mode_', j
          write (texts(2 + j), '(a,i0,a)') 'w of mode ', j, ', largest |w| = 1 (-)'
-         wmax(j) = 0.0_dp
          do k = 1, model%msh%nnode
             call gather_element(model%msh%eq(:, k), res%shapes(:, j), de)
-            wmax(j) = max(wmax(j), abs(de(3)))
+            w(k, j) = de(3)
          end do
+         wmax(j) = maxval(abs(w(:, j)))
          if (wmax(j) == 0.0_dp) wmax(j) = 1.0_dp
       end do
       call open_columns(deck, '_mode_shapes.dat', 'impact: modal analysis, mode shapes (modelled domain)', &
          names, texts, u, stat, errmsg)
       if (stat /= 0) return
       nodes: do k = 1, model%msh%nnode
-         write (u, '(2f12.4)', advance='no') model%msh%coords(:, k)*1.0e3_dp
-         do j = 1, res%count
-            call gather_element(model%msh%eq(:, k), res%shapes(:, j), de)
-            wk = de(3)/wmax(j)
-            write (u, '(f11.6)', advance='no') wk
-         end do
-         write (u, '(a)') ''
+         write (u, '(2f12.4, *(f11.6))') model%msh%coords(:, k)*1.0e3_dp, w(k, :)/wmax(:res%count)
       end do nodes
       close (u)
 

@@ -59,11 +59,9 @@ contains
       ! -- initial acceleration M a = F (the plate at rest)
       call global_copy(mfac, model%mass)
       call global_factor(mfac, stat, errmsg, bad_eq)
-      if (stat /= 0) then
-         if (bad_eq > 0) errmsg = 'pressure: M is not positive definite: pivot of ' // &
-            trim(describe_equation(model%msh, bad_eq))
-         return
-      end if
+      if (stat /= 0 .and. bad_eq > 0) errmsg = 'pressure: M is not positive definite: pivot of ' // &
+         trim(describe_equation(model%msh, bad_eq))
+      if (stat /= 0) return
       d = 0.0_dp;  v = 0.0_dp;  a = f
       call global_solve(mfac, a, stat, errmsg)
       call global_release(mfac)       ! M's factor is not needed again (sparse: C memory)

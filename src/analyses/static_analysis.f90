@@ -60,11 +60,9 @@ contains
          ! -- linear theory: K_L D = F once, then the path is linear in lambda
          call global_copy(kl, model%stiff)
          call global_factor(kl, stat, errmsg, bad_eq)
-         if (stat /= 0) then
-            if (bad_eq > 0) errmsg = 'static: K_L is not positive definite (a mechanism: check &boundary): '// &
-               'pivot of '//trim(describe_equation(model%msh, bad_eq))
-            return
-         end if
+         if (stat /= 0 .and. bad_eq > 0) errmsg = 'static: K_L is not positive definite ' // &
+            '(a mechanism: check &boundary): pivot of ' // trim(describe_equation(model%msh, bad_eq))
+         if (stat /= 0) return
          r = f
          call global_solve(kl, r, stat, errmsg)
          if (stat /= 0) return

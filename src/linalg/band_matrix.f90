@@ -9,7 +9,7 @@ module band_matrix
    use, intrinsic :: iso_fortran_env, only: int64
    implicit none
    private
-   public :: band_matrix_t, check_pivot
+   public :: band_matrix_t, check_pivot, check_pivots
    public :: band_init, band_zero, band_in_band, band_add, band_get, &
              band_matvec, band_factor, band_solve, band_axpy
 
@@ -35,10 +35,8 @@ module band_matrix
    !>     |             a44 a45 |
    !>     | sym             a55 |         (* = unused, kept zero)
    !>
-   !> A(i,j) and A(j,i) are one stored number: band_add(a, i, j, v) with i > j
-   !> adds v to the same entry as band_add(a, j, i, v). An assembly loop over
-   !> a full symmetric element matrix must therefore add each global pair once
-   !> (for instance only the pairs with row <= column).
+   !> A(i,j) and A(j,i) are one stored number (band_add mirrors i > j): an
+   !> assembly adds each global pair once (global_assemble: row <= column).
    !>
    !> This layout is what LAPACK dpbtrf/dpbtrs and BLAS dsbmv read with
    !> uplo = 'U' and ldab = kd+1. band_factor overwrites ab in place with the
@@ -49,7 +47,6 @@ module band_matrix
    !> when its pivot d_j = U(j,j)**2 is not greater than pivot_rel_tol * |A(j,j)|,
    !> A(j,j) before factorisation: negative, zero and rounding-zero pivots
    !> (an unrestrained rigid-body mode).
-   !> Symmetric band matrix, upper band storage (as above).
    type :: band_matrix_t
       integer :: n = 0  !< order of the matrix (number of equations).
       integer :: kd = 0  !< half-bandwidth: A(i,j) = 0 for |i-j| > kd.
@@ -57,15 +54,8 @@ module band_matrix
       logical :: factored = .false.  !< true once ab holds the Cholesky factor instead of A.
    end type band_matrix_t
 
-   !> Solve with the factored matrix: one right-hand side b(n) or several
-   !> b(n, nrhs); b is overwritten with the solution.
-   interface band_solve
-      module procedure band_solve_vec, band_solve_mat
-   end interface band_solve
-
    ! LAPACK and BLAS routines, double precision, called with uplo = 'U'.
    interface
-      !> Cholesky factorisation of a symmetric positive definite band matrix.
       subroutine dpbtrf(uplo, n, kd, ab, ldab, info)
          import :: dp
          character, intent(in) :: uplo
@@ -73,7 +63,6 @@ module band_matrix
          real(dp), intent(inout) :: ab(ldab, *)
          integer, intent(out) :: info
       end subroutine dpbtrf
-      !> Solve with the factor from dpbtrf.
       subroutine dpbtrs(uplo, n, kd, nrhs, ab, ldab, b, ldb, info)
          import :: dp
          character, intent(in) :: uplo
@@ -82,7 +71,6 @@ module band_matrix
          real(dp), intent(inout) :: b(ldb, *)
          integer, intent(out) :: info
       end subroutine dpbtrs
-      !> y := alpha*A*x + beta*y for a symmetric band matrix A.
       subroutine dsbmv(uplo, n, k, alpha, a, lda, x, incx, beta, y, incy)
          import :: dp
          character, intent(in) :: uplo
@@ -124,7 +112,6 @@ contains
       a%n = n
       a%kd = kd
       a%ab = 0.0_dp
-      a%factored = .false.
    end subroutine band_init
 
    !> Set every entry to zero and forget any factorisation.
@@ -183,7 +170,6 @@ contains
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
-      character(len=msg_len) :: msg
       real(dp), allocatable :: diag(:)
       integer :: info, j, last
       stat = 0
@@ -196,53 +182,17 @@ contains
          return
       end if
       ! dpbtrf stops only at a pivot <= 0 (equation info > 0); a tiny
-      ! positive pivot before it (rounding) passes and spoils the rest. So
-      ! apply the relative rule to the equations before info first: the
-      ! first equation that fails either test is the one reported.
-      last = a%n
-      if (info > 0) last = info - 1
-      do j = 1, last
-         call check_pivot(j, a%ab(a%kd + 1, j)**2, diag(j), stat, errmsg)
-         if (stat /= 0) then
-            bad_eq = j
-            return
-         end if
-      end do
-      if (info > 0) then
-         stat = 1
-         bad_eq = info
-         write (msg, '(a,i0,a,es10.3,a)') 'matrix not positive definite at equation ', &
-            info, ' (pivot <= 0, diagonal ', diag(info), ')'
-         errmsg = msg
-         return
-      end if
-      a%factored = .true.
+      ! positive pivot before it (rounding) passes and spoils the rest.
+      last = merge(info - 1, a%n, info > 0)
+      call check_pivots([(j, j = 1, last)], a%ab(a%kd + 1, :last)**2, diag, info, stat, errmsg, bad_eq)
+      a%factored = stat == 0
    end subroutine band_factor
 
-   !> Solve A x = b for one right-hand side with the factor (dpbtrs).
-   subroutine band_solve_vec(a, b, stat, errmsg)
+   !> Solve A x = b with the factor (dpbtrs), b of length n (global_solve
+   !> checks); b is overwritten with the solution.
+   subroutine band_solve(a, b, stat, errmsg)
       type(band_matrix_t), intent(in) :: a  !< the factored matrix.
       real(dp), intent(inout) :: b(:)  !< right-hand side on entry, solution on return, length n.
-      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
-      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      call solve_rhs(a, 1, b, stat, errmsg)
-   end subroutine band_solve_vec
-
-   !> Solve A X = B for nrhs right-hand sides with the factor (dpbtrs).
-   subroutine band_solve_mat(a, b, stat, errmsg)
-      type(band_matrix_t), intent(in) :: a  !< the factored matrix.
-      real(dp), intent(inout) :: b(:,:)  !< right-hand sides b(n, nrhs) on entry, solutions on return.
-      integer, intent(out) :: stat  !< 0 on success, 1 on failure.
-      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      call solve_rhs(a, size(b, 2), b, stat, errmsg)
-   end subroutine band_solve_mat
-
-   !> dpbtrs on nrhs right-hand sides of length n (b by sequence
-   !> association; global_solve checks the length).
-   subroutine solve_rhs(a, nrhs, b, stat, errmsg)
-      type(band_matrix_t), intent(in) :: a  !< the factored matrix.
-      integer, intent(in) :: nrhs  !< number of the right-hand sides.
-      real(dp), intent(inout) :: b(a%n, *)  !< right-hand sides on entry, solutions on return.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       integer :: info
@@ -251,14 +201,10 @@ contains
          errmsg = 'band_solve: the matrix is not factored (call band_factor first)'
          return
       end if
-      stat = 0
-      if (nrhs == 0) return
-      call dpbtrs('U', a%n, a%kd, nrhs, a%ab, a%kd + 1, b, a%n, info)
-      if (info /= 0) then
-         stat = 1
-         errmsg = 'band_solve: dpbtrs rejected argument ' // int_str(-info)
-      end if
-   end subroutine solve_rhs
+      call dpbtrs('U', a%n, a%kd, 1, a%ab, a%kd + 1, b, a%n, info)
+      stat = merge(0, 1, info == 0)
+      if (info /= 0) errmsg = 'band_solve: dpbtrs rejected argument ' // int_str(-info)
+   end subroutine band_solve
 
    !> a = a + alpha*b for two unfactored matrices (global_axpy_matrix
    !> checks) of the same n and kd.
@@ -278,22 +224,53 @@ contains
       a%ab = a%ab + alpha * b%ab
    end subroutine band_axpy
 
-   !> The pivot rule (above band_matrix_t) at equation j: stat = 1 and the
-   !> message when the pivot d_j is not greater than pivot_rel_tol |A(j,j)|
-   !> (NaN fails too), else stat = 0 (band, and sparse_matrix's CHOLMOD factor).
-   pure subroutine check_pivot(j, pivot, ajj, stat, errmsg)
+   !> The pivot rule (above band_matrix_t) at equation j: stat = 1, bad_eq = j
+   !> and the message when the pivot d_j is not greater than pivot_rel_tol
+   !> |A(j,j)| (NaN fails too), else stat = 0 and bad_eq = 0.
+   pure subroutine check_pivot(j, pivot, ajj, stat, errmsg, bad_eq)
       integer, intent(in) :: j                    !< the equation
       real(dp), intent(in) :: pivot               !< its pivot d_j
       real(dp), intent(in) :: ajj                 !< A(j,j) before the factorization
       integer, intent(out) :: stat                !< 0: the pivot passes
       character(len=*), intent(inout) :: errmsg   !< the reason, on failure
+      integer, intent(out) :: bad_eq              !< j when the pivot fails, else 0
       character(len=msg_len) :: msg
       stat = 0
+      bad_eq = 0
       if (pivot > pivot_rel_tol * abs(ajj)) return
       stat = 1
+      bad_eq = j
       write (msg, '(a,i0,a,es10.3,a,es9.2,a,es10.3,a)') 'matrix not positive definite at equation ', j, &
          ' (pivot ', pivot, ' <= ', pivot_rel_tol, ' x diagonal ', ajj, ')'
       errmsg = msg
    end subroutine check_pivot
+
+   !> The pivot rule on the pivots of the equations eqs, in the order of
+   !> elimination, then the equation `stopped` at which the factorization met
+   !> a pivot <= 0 (0: none): the first that fails gives stat = 1, bad_eq and
+   !> the message (band, and sparse_matrix's CHOLMOD factor).
+   pure subroutine check_pivots(eqs, pivots, diag, stopped, stat, errmsg, bad_eq)
+      integer, intent(in) :: eqs(:)               !< the equations, in the order of elimination
+      real(dp), intent(in) :: pivots(:)           !< their pivots d_j
+      real(dp), intent(in) :: diag(:)             !< A(j,j) before the factorization, by equation
+      integer, intent(in) :: stopped              !< equation of a pivot <= 0 that stopped it, 0: none
+      integer, intent(out) :: stat                !< 0: every pivot passes
+      character(len=*), intent(inout) :: errmsg   !< the reason, on failure
+      integer, intent(out) :: bad_eq              !< equation whose pivot failed, 0 if none did
+      character(len=msg_len) :: msg
+      integer :: k
+      stat = 0
+      bad_eq = 0
+      do k = 1, size(eqs)
+         call check_pivot(eqs(k), pivots(k), diag(eqs(k)), stat, errmsg, bad_eq)
+         if (stat /= 0) return
+      end do
+      if (stopped == 0) return
+      stat = 1
+      bad_eq = stopped
+      write (msg, '(a,i0,a,es10.3,a)') 'matrix not positive definite at equation ', &
+         stopped, ' (pivot <= 0, diagonal ', diag(stopped), ')'
+      errmsg = msg
+   end subroutine check_pivots
 
 end module band_matrix

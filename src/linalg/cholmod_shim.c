@@ -10,22 +10,16 @@
  * Handles: each factorization is an entry of a table, named by a key (1, 2,
  * 3, ..., never reused), so a stale key is refused (IMPACT_CHOLMOD_NO_HANDLE)
  * instead of touching freed memory. Not thread-safe (nor is the program).
- * Return codes (the same in cholmod_binding.f90): 0 success, 1 no such
- * handle, 2 out of memory, 3 too large for CHOLMOD's integers, 4 invalid
- * input, 5 another failure (impact_cholmod_status gives its status).
+ * Return codes: the enum below (impact_cholmod_status gives CHOLMOD's
+ * status of the last failure).
  */
 #include <stdlib.h>
 #include <string.h>
 #include <cholmod.h>
 
-enum {
-    IMPACT_CHOLMOD_OK = 0,
-    IMPACT_CHOLMOD_NO_HANDLE = 1,
-    IMPACT_CHOLMOD_NO_MEMORY = 2,
-    IMPACT_CHOLMOD_TOO_LARGE = 3,
-    IMPACT_CHOLMOD_INVALID = 4,
-    IMPACT_CHOLMOD_FAILED = 5
-};
+/* The same in cholmod_binding.f90; FAILED: another failure of CHOLMOD. */
+enum { IMPACT_CHOLMOD_OK = 0, IMPACT_CHOLMOD_NO_HANDLE = 1, IMPACT_CHOLMOD_NO_MEMORY = 2,
+       IMPACT_CHOLMOD_TOO_LARGE = 3, IMPACT_CHOLMOD_INVALID = 4, IMPACT_CHOLMOD_FAILED = 5 };
 
 /* One factorization: CHOLMOD's workspace, the matrix handed over for the
  * next analysis or factorization, the factor, and the solve's workspace. */
@@ -75,38 +69,31 @@ static int code_of(const cholmod_common *c)
     }
 }
 
-/* A new entry in the table with CHOLMOD started: supernodal Cholesky, the
- * default choice of fill-reducing ordering (AMD, and METIS or nested
- * dissection when AMD leaves much fill), nothing printed (every failure is
- * returned). Its key, or 0 when out of memory. */
-static entry_t *new_entry(void)
+/* A new, empty handle, an entry in the table with CHOLMOD started:
+ * supernodal Cholesky, the default choice of fill-reducing ordering (AMD,
+ * and METIS or nested dissection when AMD leaves much fill), nothing printed
+ * (every failure is returned). Its key, or 0 when out of memory. */
+long long impact_cholmod_new(void)
 {
     entry_t *e;
     if (live == capacity) {
         size_t grown = capacity == 0 ? 8 : 2 * capacity;
         entry_t **t = realloc(table, grown * sizeof *t);
-        if (t == NULL) return NULL;
+        if (t == NULL) return 0;
         table = t;
         capacity = grown;
     }
     e = calloc(1, sizeof *e);
-    if (e == NULL) return NULL;
+    if (e == NULL) return 0;
     if (!cholmod_l_start(&e->c)) {
         free(e);
-        return NULL;
+        return 0;
     }
     e->c.supernodal = CHOLMOD_SUPERNODAL;
     e->c.print = 0;
     e->key = ++last_key;
     table[live++] = e;
-    return e;
-}
-
-/* A new, empty handle; 0 when out of memory. */
-long long impact_cholmod_new(void)
-{
-    entry_t *e = new_entry();
-    return e == NULL ? 0 : e->key;
+    return e->key;
 }
 
 /* Release a handle and all it holds; a key not (or no longer) in the table
@@ -149,7 +136,7 @@ int impact_cholmod_copy(long long key, long long *copy)
     *copy = 0;
     if (e == NULL) return IMPACT_CHOLMOD_NO_HANDLE;
     if (e->L == NULL) return IMPACT_CHOLMOD_OK;
-    d = new_entry();
+    d = find(impact_cholmod_new());      /* (find(0): NULL) */
     if (d == NULL) return IMPACT_CHOLMOD_NO_MEMORY;
     d->L = cholmod_l_copy_factor(e->L, &d->c);
     if (d->L == NULL) {

@@ -75,7 +75,6 @@ contains
             if (any(elem_eq(:, e) > 0)) kd = max(kd, maxval(elem_eq(:, e)) - minval(elem_eq(:, e), mask=elem_eq(:, e) > 0))
          end do
          call band_init(g%band, neq, kd, stat, errmsg)
-         if (stat /= 0) return
       case ('skyline')
          ! m_j = min over elements holding j of their smallest equation.
          first_row = [(eq, eq = 1, neq)]
@@ -88,16 +87,13 @@ contains
             end do
          end do
          call skyline_init(g%sky, neq, first_row, stat, errmsg)
-         if (stat /= 0) return
       case ('sparse')
          call sparse_init(g%sparse, neq, elem_eq, stat, errmsg)
-         if (stat /= 0) return
-      case default
-         stat = 1
+      case default                                  ! (stat = 1)
          errmsg = "global_init: unknown storage '" // trim(storage) // &
                    "' (expected 'band', 'skyline', 'sparse' or 'auto')"
-         return
       end select
+      if (stat /= 0) return
       g%storage = trim(name)
       g%neq = neq
    end subroutine global_init

@@ -45,7 +45,6 @@ module skyline_matrix
    !> meaning L(j,i), for m_j <= i < j. L has the profile of A (no fill-in
    !> outside it), which is why the profile is the storage.
    !> The pivot rule: band_matrix's check_pivot on d_j.
-   !> Symmetric matrix in skyline storage (as above).
    type :: skyline_matrix_t
       integer :: n = 0  !< order of the matrix (number of equations).
       integer, allocatable :: maxa(:)  !< address of the diagonal of column j in a; maxa(n+1) = nwk + 1.
@@ -97,7 +96,6 @@ contains
       end do
       sky%n = n
       sky%a = 0.0_dp
-      sky%factored = .false.
    end subroutine skyline_init
 
    !> Set every entry to zero and forget any factorisation.
@@ -218,11 +216,8 @@ contains
          sky%a(sky%maxa(j)) = ajj - s
 
          ! Phase 3 - the pivot rule on d_j.
-         call check_pivot(j, sky%a(sky%maxa(j)), ajj, stat, errmsg)
-         if (stat /= 0) then
-            bad_eq = j
-            return
-         end if
+         call check_pivot(j, sky%a(sky%maxa(j)), ajj, stat, errmsg, bad_eq)
+         if (stat /= 0) return
       end do columns
       sky%factored = .true.
    end subroutine skyline_factor

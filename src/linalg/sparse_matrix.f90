@@ -3,12 +3,12 @@
 !> global_matrix for eq. (19). The scheme, the factorization and its owner:
 !> the comment above sparse_matrix_t. More: docs/PERFORMANCE.md.
 module sparse_matrix
-   use, intrinsic :: iso_c_binding, only: c_long_long
+   use, intrinsic :: iso_c_binding, only: c_long_long, c_int
    use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
-   use band_matrix, only: check_pivot
-   use cholmod_binding, only: cholmod_handle_t, chol_set_matrix, chol_analyze, chol_factorize, chol_diagonal, &
-                              chol_solve, chol_copy, chol_release
+   use band_matrix, only: check_pivots
+   use cholmod_binding, only: cholmod_handle_t, chol_check, no_memory, chol_new, chol_free, chol_copy, &
+                              chol_set_matrix, chol_analyze, chol_factorize, chol_diagonal, chol_solve
    use system_limits, only: physical_memory
    implicit none
    private
@@ -54,7 +54,6 @@ module sparse_matrix
    !> sparse_copy_factor copies it. The pivot rule (band_matrix's check_pivot)
    !> on d_j = L(k,k)**2 in the order of elimination: for a mechanism the
    !> equation named may be another of the same mechanism than band's.
-   !> Symmetric matrix in compressed sparse columns (as above).
    type :: sparse_matrix_t
       integer :: n = 0  !< order of the matrix (number of equations).
       integer(c_long_long), allocatable :: colptr(:)  !< start of column j in rowind and val, colptr(n+1) = nnz + 1.
@@ -188,7 +187,8 @@ contains
    !> keeps its pattern and, unless it was factored, its values.
    subroutine sparse_release(a)
       type(sparse_matrix_t), intent(inout) :: a  !< the matrix.
-      call chol_release(a%chol)
+      call chol_free(a%chol%key)
+      a%chol%key = 0
       a%analysed = .false.
       a%factored = .false.
    end subroutine sparse_release
@@ -200,7 +200,10 @@ contains
       type(sparse_matrix_t), intent(inout) :: b  !< the copy, b = a done.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      call chol_copy(a%chol, b%chol, stat, errmsg)
+      b%chol%key = 0
+      stat = 0
+      if (a%chol%key /= 0) call chol_check(chol_copy(a%chol%key, b%chol%key), &
+         'copying the factorization', stat, errmsg)
       if (stat /= 0) then
          b%analysed = .false.
          b%factored = .false.
@@ -292,17 +295,15 @@ contains
       type(sparse_matrix_t), intent(in) :: b  !< the matrix added, same pattern as a.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure (a unchanged).
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      stat = 0
+      stat = 1
       if (a%factored .or. b%factored .or. .not. allocated(a%val) .or. .not. allocated(b%val)) then
-         stat = 1
          errmsg = 'sparse_axpy: a factored matrix cannot be added to or from'
       else if (a%n /= b%n .or. size(a%rowind) /= size(b%rowind)) then
-         stat = 1
          errmsg = 'sparse_axpy: patterns differ (orders or numbers of entries)'
       else if (any(a%colptr /= b%colptr) .or. any(a%rowind /= b%rowind)) then
-         stat = 1
          errmsg = 'sparse_axpy: patterns differ'
       else
+         stat = 0
          a%val = a%val + alpha * b%val
       end if
    end subroutine sparse_axpy
@@ -314,8 +315,11 @@ contains
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
-      real(dp), allocatable :: diag(:)
-      integer :: minor
+      real(dp), allocatable :: diag(:), ldiag(:)
+      integer(c_long_long), allocatable :: perm(:)
+      integer(c_long_long) :: minor
+      integer(c_int) :: code
+      integer :: last, stopped
       stat = 0
       bad_eq = 0
       if (.not. allocated(a%val) .or. a%factored) then
@@ -324,16 +328,28 @@ contains
          return
       end if
       diag = a%val(a%colptr(2:) - 1)          ! the diagonal, last in each column
-      call chol_set_matrix(a%chol, a%colptr, a%rowind, a%val, stat, errmsg)
+      if (a%chol%key == 0) a%chol%key = chol_new()
+      code = no_memory
+      if (a%chol%key /= 0) code = chol_set_matrix(a%chol%key, int(a%n, c_long_long), a%colptr, &
+         a%rowind, a%val)
+      call chol_check(code, 'handing the matrix over', stat, errmsg)
       if (stat /= 0) return
       if (.not. a%analysed) then
          call sparse_analyse(a, stat, errmsg)
          if (stat /= 0) return
       end if
       deallocate (a%val)        ! CHOLMOD holds the matrix now
-      call chol_factorize(a%chol, minor, stat, errmsg)
+      call chol_check(chol_factorize(a%chol%key, minor), 'the factorization', stat, errmsg)
       if (stat /= 0) return
-      call check_pivots(a, diag, minor, stat, errmsg, bad_eq)
+      ! the pivot rule on L(k,k)**2, k in the order of elimination, up to CHOLMOD's stop
+      allocate (ldiag(a%n), perm(a%n))
+      call chol_check(chol_diagonal(a%chol%key, int(a%n, c_long_long), ldiag, perm), 'the diagonal', &
+         stat, errmsg)
+      if (stat /= 0) return
+      last = min(int(minor) - 1, a%n)
+      stopped = 0
+      if (minor <= a%n) stopped = int(perm(minor))
+      call check_pivots(int(perm(:last)), ldiag(:last)**2, diag, stopped, stat, errmsg, bad_eq)
       a%factored = stat == 0
    end subroutine sparse_factor
 
@@ -345,7 +361,8 @@ contains
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
       real(dp) :: flops, machine
       character(len=msg_len) :: msg
-      call chol_analyze(a%chol, a%factor_entries, flops, a%factor_bytes, stat, errmsg)
+      call chol_check(chol_analyze(a%chol%key, a%factor_entries, flops, a%factor_bytes), &
+         'the analysis', stat, errmsg)
       if (stat /= 0) return
       machine = physical_memory()
       if (machine > 0.0_dp .and. a%factor_bytes > machine) then
@@ -355,45 +372,11 @@ contains
             a%factor_entries, ' nonzeros), more than this machine''s ', machine / gib, &
             ' GiB: a coarser mesh, or a graded one (&mesh grading)'
          errmsg = msg
-         call chol_release(a%chol)
+         call sparse_release(a)
          return
       end if
       a%analysed = .true.
    end subroutine sparse_analyse
-
-   !> The pivot rule of the module header on the factor's diagonal, in the
-   !> order of elimination, up to the column at which CHOLMOD stopped.
-   subroutine check_pivots(a, diag, minor, stat, errmsg, bad_eq)
-      type(sparse_matrix_t), intent(in) :: a  !< the matrix, numerically factored.
-      real(dp), intent(in) :: diag(:)  !< A(j,j) before the factorization, by equation.
-      integer, intent(in) :: minor  !< column (elimination order) where CHOLMOD stopped, n+1 if none.
-      integer, intent(out) :: stat  !< 0 when every pivot passes, 1 otherwise.
-      character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      integer, intent(out) :: bad_eq  !< equation whose pivot failed, 0 if none did.
-      real(dp), allocatable :: ldiag(:)
-      integer, allocatable :: perm(:)
-      integer :: k, j
-      character(len=msg_len) :: msg
-      bad_eq = 0
-      allocate (ldiag(a%n), perm(a%n))
-      call chol_diagonal(a%chol, ldiag, perm, stat, errmsg)
-      if (stat /= 0) return
-      do k = 1, min(minor - 1, a%n)
-         j = perm(k)
-         call check_pivot(j, ldiag(k)**2, diag(j), stat, errmsg)
-         if (stat /= 0) then
-            bad_eq = j
-            return
-         end if
-      end do
-      if (minor <= a%n) then
-         stat = 1
-         bad_eq = perm(minor)
-         write (msg, '(a,i0,a,es10.3,a)') 'matrix not positive definite at equation ', &
-            bad_eq, ' (pivot <= 0, diagonal ', diag(bad_eq), ')'
-         errmsg = msg
-      end if
-   end subroutine check_pivots
 
    !> Solve A x = b with the factor, b of its size (global_solve, the one
    !> caller, checks both); b is overwritten by x.
@@ -402,7 +385,7 @@ contains
       real(dp), intent(inout) :: b(:)  !< right-hand side on entry, solution on return, length n.
       integer, intent(out) :: stat  !< 0 on success, 1 on failure.
       character(len=*), intent(inout) :: errmsg  !< reason for the failure (set only on failure).
-      call chol_solve(a%chol, b, stat, errmsg)
+      call chol_check(chol_solve(a%chol%key, size(b, kind=c_long_long), b), 'the solve', stat, errmsg)
    end subroutine sparse_solve
 
    !> Largest distance of a stored entry from the diagonal, max (j - i).

@@ -71,262 +71,194 @@ module c_library
 
    interface
       ! <stdio.h>
-      !> FILE *fopen(const char *path, const char *mode)
-      function c_fopen(path, mode) bind(c, name='fopen') result(stream)
+      type(c_ptr) function c_fopen(path, mode) bind(c, name='fopen')
          import :: c_char, c_ptr
          character(kind=c_char), intent(in) :: path(*), mode(*)
-         type(c_ptr) :: stream
       end function c_fopen
-      !> int fclose(FILE *stream)
-      function c_fclose(stream) bind(c, name='fclose') result(r)
+      integer(c_int) function c_fclose(stream) bind(c, name='fclose')
          import :: c_ptr, c_int
          type(c_ptr), value :: stream
-         integer(c_int) :: r
       end function c_fclose
-      !> int fileno(FILE *stream)
-      function c_fileno(stream) bind(c, name='fileno') result(fd)
+      integer(c_int) function c_fileno(stream) bind(c, name='fileno')
          import :: c_ptr, c_int
          type(c_ptr), value :: stream
-         integer(c_int) :: fd
       end function c_fileno
-      !> int rename(const char *old, const char *new)
-      function c_rename(old, new) bind(c, name='rename') result(r)
+      integer(c_int) function c_rename(old, new) bind(c, name='rename')
          import :: c_int, c_char
          character(kind=c_char), intent(in) :: old(*), new(*)
-         integer(c_int) :: r
       end function c_rename
-      ! <unistd.h>
-      !> off_t lseek(int fd, off_t offset, int whence)  (off_t: 64 bits)
-      function c_lseek(fd, offset, whence) bind(c, name='lseek') result(r)
+      ! <unistd.h> (off_t: 64 bits)
+      integer(c_int64_t) function c_lseek(fd, offset, whence) bind(c, name='lseek')
          import :: c_int, c_int64_t
          integer(c_int), value :: fd, whence
          integer(c_int64_t), value :: offset
-         integer(c_int64_t) :: r
       end function c_lseek
-      !> int truncate(const char *path, off_t length) (off_t: 64 bits)
-      function c_truncate(path, length) bind(c, name='truncate') result(r)
+      integer(c_int) function c_truncate(path, length) bind(c, name='truncate')
          import :: c_int, c_char, c_int64_t
          character(kind=c_char), intent(in) :: path(*)
          integer(c_int64_t), value :: length
-         integer(c_int) :: r
       end function c_truncate
-      !> long sysconf(int name)
-      function c_sysconf(name) bind(c, name='sysconf') result(r)
+      integer(c_long) function c_sysconf(name) bind(c, name='sysconf')
          import :: c_int, c_long
          integer(c_int), value :: name
-         integer(c_long) :: r
       end function c_sysconf
       ! <sys/stat.h>
-      !> int mkdir(const char *path, mode_t mode)
-      function c_mkdir(path, mode) bind(c, name='mkdir') result(r)
+      integer(c_int) function c_mkdir(path, mode) bind(c, name='mkdir')
          import :: c_int, c_char
          character(kind=c_char), intent(in) :: path(*)
          integer(c_int), value :: mode
-         integer(c_int) :: r
       end function c_mkdir
       ! <sys/file.h>
-      !> int flock(int fd, int operation)
-      function c_flock(fd, operation) bind(c, name='flock') result(r)
+      integer(c_int) function c_flock(fd, operation) bind(c, name='flock')
          import :: c_int
          integer(c_int), value :: fd, operation
-         integer(c_int) :: r
       end function c_flock
       ! <sys/statvfs.h>
-      !> int statvfs(const char *path, struct statvfs *buf)
-      function c_statvfs(path, buf) bind(c, name='statvfs') result(r)
+      integer(c_int) function c_statvfs(path, buf) bind(c, name='statvfs')
          import :: c_int, c_char, statvfs_t
          character(kind=c_char), intent(in) :: path(*)
          type(statvfs_t), intent(out) :: buf
-         integer(c_int) :: r
       end function c_statvfs
       ! <sys/resource.h>
-      !> int getrlimit(int resource, struct rlimit *rlim)
-      function c_getrlimit(resource, rlim) bind(c, name='getrlimit') result(r)
+      integer(c_int) function c_getrlimit(resource, rlim) bind(c, name='getrlimit')
          import :: c_int, rlimit_t
          integer(c_int), value :: resource
          type(rlimit_t), intent(out) :: rlim
-         integer(c_int) :: r
       end function c_getrlimit
       ! <signal.h>
-      !> sighandler_t signal(int signum, sighandler_t handler)
-      function c_signal(signum, handler) bind(c, name='signal') result(previous)
+      type(c_funptr) function c_signal(signum, handler) bind(c, name='signal')
          import :: c_int, c_funptr
          integer(c_int), value :: signum
          type(c_funptr), value :: handler
-         type(c_funptr) :: previous
       end function c_signal
       ! <unistd.h>
-      !> void _exit(int status)
       subroutine c_exit(status) bind(c, name='_exit')
          import :: c_int
          integer(c_int), value :: status
       end subroutine c_exit
-      !> int isatty(int fd)
-      function c_isatty(fd) bind(c, name='isatty') result(r)
+      integer(c_int) function c_isatty(fd) bind(c, name='isatty')
          import :: c_int
          integer(c_int), value :: fd
-         integer(c_int) :: r
       end function c_isatty
       ! <fcntl.h>, <unistd.h>: the raw file calls, async-signal-safe (a signal
       ! handler may make them: src/system/process_stop.f90)
-      !> int open(const char *path, int flags)  (no O_CREAT: no third argument)
-      function c_open(path, flags) bind(c, name='open') result(fd)
+      integer(c_int) function c_open(path, flags) bind(c, name='open')
          import :: c_int, c_char
          character(kind=c_char), intent(in) :: path(*)
-         integer(c_int), value :: flags
-         integer(c_int) :: fd
+         integer(c_int), value :: flags          ! no O_CREAT: no third argument
       end function c_open
-      !> int close(int fd)
-      function c_close(fd) bind(c, name='close') result(r)
+      integer(c_int) function c_close(fd) bind(c, name='close')
          import :: c_int
          integer(c_int), value :: fd
-         integer(c_int) :: r
       end function c_close
-      !> int fsync(int fd)
-      function c_fsync(fd) bind(c, name='fsync') result(r)
+      integer(c_int) function c_fsync(fd) bind(c, name='fsync')
          import :: c_int
          integer(c_int), value :: fd
-         integer(c_int) :: r
       end function c_fsync
-      !> int unlink(const char *path)
-      function c_unlink(path) bind(c, name='unlink') result(r)
+      integer(c_int) function c_unlink(path) bind(c, name='unlink')
          import :: c_int, c_char
          character(kind=c_char), intent(in) :: path(*)
-         integer(c_int) :: r
       end function c_unlink
-      !> ssize_t write(int fd, const void *buf, size_t count)  (ssize_t: long)
-      function c_write(fd, buf, count) bind(c, name='write') result(r)
+      integer(c_long) function c_write(fd, buf, count) bind(c, name='write')  ! ssize_t
          import :: c_int, c_char, c_size_t, c_long
          integer(c_int), value :: fd
          character(kind=c_char), intent(in) :: buf(*)
          integer(c_size_t), value :: count
-         integer(c_long) :: r
       end function c_write
       ! <sys/stat.h> (glibc 2.28)
-      !> int statx(int dirfd, const char *path, int flags, unsigned int mask, struct statx *buf)
-      function c_statx(dirfd, path, flags, mask, buf) bind(c, name='statx') result(r)
+      integer(c_int) function c_statx(dirfd, path, flags, mask, buf) bind(c, name='statx')
          import :: c_int, c_char, statx_t
          integer(c_int), value :: dirfd, flags, mask
          character(kind=c_char), intent(in) :: path(*)
          type(statx_t), intent(out) :: buf
-         integer(c_int) :: r
       end function c_statx
-      !> ssize_t readlink(const char *path, char *buf, size_t bufsiz)  (ssize_t: long)
-      function c_readlink(path, buf, bufsiz) bind(c, name='readlink') result(r)
+      integer(c_long) function c_readlink(path, buf, bufsiz) bind(c, name='readlink')  ! ssize_t
          import :: c_char, c_size_t, c_long
          character(kind=c_char), intent(in) :: path(*)
          character(kind=c_char), intent(out) :: buf(*)
          integer(c_size_t), value :: bufsiz
-         integer(c_long) :: r
       end function c_readlink
       ! <spawn.h>
-      !> int posix_spawn(pid_t *pid, const char *path, const posix_spawn_file_actions_t *actions,
-      !>                 const posix_spawnattr_t *attr, char *const argv[], char *const envp[])
-      function c_posix_spawn(pid, path, actions, attr, argv, envp) bind(c, name='posix_spawn') result(r)
+      integer(c_int) function c_posix_spawn(pid, path, actions, attr, argv, envp) &
+            bind(c, name='posix_spawn')
          import :: c_int, c_char, c_ptr, spawn_actions_t, spawn_attr_t
          integer(c_int), intent(out) :: pid
          character(kind=c_char), intent(in) :: path(*)
          type(spawn_actions_t), intent(in) :: actions
          type(spawn_attr_t), intent(in) :: attr
          type(c_ptr), intent(in) :: argv(*), envp(*)
-         integer(c_int) :: r
       end function c_posix_spawn
-      !> int posix_spawn_file_actions_init(posix_spawn_file_actions_t *actions)
-      function c_spawn_actions_init(actions) bind(c, name='posix_spawn_file_actions_init') result(r)
+      integer(c_int) function c_spawn_actions_init(actions) &
+            bind(c, name='posix_spawn_file_actions_init')
          import :: c_int, spawn_actions_t
          type(spawn_actions_t), intent(inout) :: actions
-         integer(c_int) :: r
       end function c_spawn_actions_init
-      !> int posix_spawn_file_actions_destroy(posix_spawn_file_actions_t *actions)
-      function c_spawn_actions_destroy(actions) bind(c, name='posix_spawn_file_actions_destroy') result(r)
+      integer(c_int) function c_spawn_actions_destroy(actions) &
+            bind(c, name='posix_spawn_file_actions_destroy')
          import :: c_int, spawn_actions_t
          type(spawn_actions_t), intent(inout) :: actions
-         integer(c_int) :: r
       end function c_spawn_actions_destroy
-      !> int posix_spawn_file_actions_addopen(posix_spawn_file_actions_t *actions, int fd,
-      !>                                      const char *path, int oflag, mode_t mode)
-      function c_spawn_actions_addopen(actions, fd, path, oflag, mode) &
-            bind(c, name='posix_spawn_file_actions_addopen') result(r)
+      integer(c_int) function c_spawn_actions_addopen(actions, fd, path, oflag, mode) &
+            bind(c, name='posix_spawn_file_actions_addopen')
          import :: c_int, c_char, spawn_actions_t
          type(spawn_actions_t), intent(inout) :: actions
          integer(c_int), value :: fd, oflag, mode
          character(kind=c_char), intent(in) :: path(*)
-         integer(c_int) :: r
       end function c_spawn_actions_addopen
-      !> int posix_spawn_file_actions_adddup2(posix_spawn_file_actions_t *actions, int fd, int newfd)
-      function c_spawn_actions_adddup2(actions, fd, newfd) bind(c, name='posix_spawn_file_actions_adddup2') &
-            result(r)
+      integer(c_int) function c_spawn_actions_adddup2(actions, fd, newfd) &
+            bind(c, name='posix_spawn_file_actions_adddup2')
          import :: c_int, spawn_actions_t
          type(spawn_actions_t), intent(inout) :: actions
          integer(c_int), value :: fd, newfd
-         integer(c_int) :: r
       end function c_spawn_actions_adddup2
       ! <sys/wait.h>
-      !> pid_t waitpid(pid_t pid, int *status, int options)
-      function c_waitpid(pid, status, options) bind(c, name='waitpid') result(r)
+      integer(c_int) function c_waitpid(pid, status, options) bind(c, name='waitpid')
          import :: c_int
          integer(c_int), value :: pid, options
          integer(c_int), intent(out) :: status
-         integer(c_int) :: r
       end function c_waitpid
-      !> int posix_spawnattr_init(posix_spawnattr_t *attr)
-      function c_spawnattr_init(attr) bind(c, name='posix_spawnattr_init') result(r)
+      integer(c_int) function c_spawnattr_init(attr) bind(c, name='posix_spawnattr_init')
          import :: c_int, spawn_attr_t
          type(spawn_attr_t), intent(inout) :: attr
-         integer(c_int) :: r
       end function c_spawnattr_init
-      !> int posix_spawnattr_destroy(posix_spawnattr_t *attr)
-      function c_spawnattr_destroy(attr) bind(c, name='posix_spawnattr_destroy') result(r)
+      integer(c_int) function c_spawnattr_destroy(attr) bind(c, name='posix_spawnattr_destroy')
          import :: c_int, spawn_attr_t
          type(spawn_attr_t), intent(inout) :: attr
-         integer(c_int) :: r
       end function c_spawnattr_destroy
-      !> int posix_spawnattr_setflags(posix_spawnattr_t *attr, short flags)
-      function c_spawnattr_setflags(attr, flags) bind(c, name='posix_spawnattr_setflags') result(r)
+      integer(c_int) function c_spawnattr_setflags(attr, flags) &
+            bind(c, name='posix_spawnattr_setflags')
          import :: c_int, c_int16_t, spawn_attr_t
          type(spawn_attr_t), intent(inout) :: attr
          integer(c_int16_t), value :: flags
-         integer(c_int) :: r
       end function c_spawnattr_setflags
-      !> int posix_spawnattr_setpgroup(posix_spawnattr_t *attr, pid_t pgroup)
-      function c_spawnattr_setpgroup(attr, pgroup) bind(c, name='posix_spawnattr_setpgroup') result(r)
+      integer(c_int) function c_spawnattr_setpgroup(attr, pgroup) &
+            bind(c, name='posix_spawnattr_setpgroup')
          import :: c_int, spawn_attr_t
          type(spawn_attr_t), intent(inout) :: attr
          integer(c_int), value :: pgroup
-         integer(c_int) :: r
       end function c_spawnattr_setpgroup
-      ! <signal.h>, <unistd.h>, <sys/prctl.h>
-      !> int kill(pid_t pid, int sig)  (async-signal-safe)
-      function c_kill(pid, sig) bind(c, name='kill') result(r)
+      ! <signal.h> (kill: async-signal-safe), <unistd.h>, <sys/prctl.h>
+      integer(c_int) function c_kill(pid, sig) bind(c, name='kill')
          import :: c_int
          integer(c_int), value :: pid, sig
-         integer(c_int) :: r
       end function c_kill
-      !> pid_t getpid(void)
-      function c_getpid() bind(c, name='getpid') result(r)
+      integer(c_int) function c_getpid() bind(c, name='getpid')
          import :: c_int
-         integer(c_int) :: r
       end function c_getpid
-      !> pid_t getppid(void)
-      function c_getppid() bind(c, name='getppid') result(r)
+      integer(c_int) function c_getppid() bind(c, name='getppid')
          import :: c_int
-         integer(c_int) :: r
       end function c_getppid
-      !> int prctl(int option, unsigned long arg2, ...)  (the options used take one argument)
-      function c_prctl(option, arg2) bind(c, name='prctl') result(r)
+      integer(c_int) function c_prctl(option, arg2) bind(c, name='prctl')
          import :: c_int, c_long
          integer(c_int), value :: option
-         integer(c_long), value :: arg2
-         integer(c_int) :: r
+         integer(c_long), value :: arg2      ! the options used take one argument
       end function c_prctl
       ! <sched.h>
-      !> int sched_getaffinity(pid_t pid, size_t cpusetsize, cpu_set_t *mask)
-      function c_sched_getaffinity(pid, size, mask) bind(c, name='sched_getaffinity') result(r)
+      integer(c_int) function c_sched_getaffinity(pid, size, mask) bind(c, name='sched_getaffinity')
          import :: c_int, c_size_t, cpu_set_t
          integer(c_int), value :: pid
          integer(c_size_t), value :: size
          type(cpu_set_t), intent(out) :: mask
-         integer(c_int) :: r
       end function c_sched_getaffinity
    end interface
 

@@ -37,18 +37,14 @@ contains
       integer, intent(in) :: i
       character(len=:), allocatable :: s
       character(len=12) :: buf                      ! -2147483648 at most
-      integer :: m, at
-      if (i == -huge(i) - 1) then                   ! no positive twin
-         write (buf, '(i0)') i
-         s = trim(buf)
-         return
-      end if
+      integer(int64) :: m                           ! (-huge(i) - 1 has no default-kind twin)
+      integer :: at
       ! the digits from the right, as i0 writes them (an internal write costs some 1 us)
-      m = abs(i)
+      m = abs(int(i, int64))
       at = len(buf) + 1
       do
          at = at - 1
-         buf(at:at) = digit_chars(mod(m, 10) + 1:mod(m, 10) + 1)
+         buf(at:at) = digit_chars(mod(m, 10_int64) + 1:mod(m, 10_int64) + 1)
          m = m/10
          if (m == 0) exit
       end do
