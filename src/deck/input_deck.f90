@@ -11,9 +11,9 @@ module input_deck
    use storage_choice, only: resolve_storage, matrices_memory
    use file_system, only: path_problem, prefix_problem, nearest_directory
    use deck_text, only: item_t, group_text_t, read_deck_text, split_value_text, lower_case, shown_text
-   use deck_echo, only: unknown_name, interval, interval_text
+   use deck_echo, only: unknown_name, interval, interval_text, deck_value_text
    use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, find_var, &
-      strength_given, is_given, words_of, words_quoted, &
+      strength_given, is_given, words_of, words_quoted, strength_names, toughness_names, &
       kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, &
       max_word_len, max_path_len, max_list_len
    implicit none
@@ -369,7 +369,7 @@ contains
             v%s = lower_case(trim(adjustl(v%s)))
             call deck_bind(deck, iv, v, .true.)
          end if
-         call check_range(c, iv, v)
+         call check_range(c, deck, iv, v)
          if (c%stat /= 0) return
       end do entries
    end subroutine check_entries
@@ -379,25 +379,23 @@ contains
    subroutine check_plate(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
-      call need(c, deck%h < min(deck%a, deck%b), 'plate', 'h', real_str(deck%h), &
-         'the thickness must be smaller than a and b')
-      call need(c, deck%nu12**2 < deck%e1/deck%e2, 'lamina', 'nu12', real_str(deck%nu12), &
-         'nu12**2 must be less than e1/e2 = ' // real_str(deck%e1/deck%e2) &
-         // ' (else the lamina stiffness is not positive definite)')
-      call need(c, size(deck%angles) >= 1, 'laminate', 'angles', '(none)', 'give at least one ply')
-      call need(c, deck%diameter < min(deck%a, deck%b), 'impactor', 'diameter', real_str(deck%diameter), &
+      call need(c, deck, deck%h < min(deck%a, deck%b), 'plate', 'h', 'the thickness must be smaller than a and b')
+      call need(c, deck, deck%nu12**2 < deck%e1/deck%e2, 'lamina', 'nu12', 'nu12**2 must be less than e1/e2 = ' &
+         // real_str(deck%e1/deck%e2) // ' (else the lamina stiffness is not positive definite)')
+      call need(c, deck, size(deck%angles) >= 1, 'laminate', 'angles', 'give at least one ply', '(none)')
+      call need(c, deck, deck%diameter < min(deck%a, deck%b), 'impactor', 'diameter', &
          'the nose must be smaller than the plate: diameter < min(a, b) = ' // real_str(min(deck%a, deck%b)) // ' m')
-      call need(c, abs(deck%x0) <= 0.5_dp*(deck%a - deck%diameter), 'impactor', 'x0', real_str(deck%x0), &
+      call need(c, deck, abs(deck%x0) <= 0.5_dp*(deck%a - deck%diameter), 'impactor', 'x0', &
          'the nose must lie on the plate: |x0| <= (a - diameter)/2 = ' // real_str(0.5_dp*(deck%a - deck%diameter)) &
          // ' m (x0 is measured from the plate centre)')
-      call need(c, abs(deck%y0) <= 0.5_dp*(deck%b - deck%diameter), 'impactor', 'y0', real_str(deck%y0), &
+      call need(c, deck, abs(deck%y0) <= 0.5_dp*(deck%b - deck%diameter), 'impactor', 'y0', &
          'the nose must lie on the plate: |y0| <= (b - diameter)/2 = ' // real_str(0.5_dp*(deck%b - deck%diameter)) &
          // ' m (y0 is measured from the plate centre)')
-      if (is_given(deck, 'output', 'gauge_x')) call need(c, abs(deck%gauge_x) <= 0.5_dp*deck%a, 'output', 'gauge_x', &
-         real_str(deck%gauge_x), 'the gauge must lie on the plate: |gauge_x| <= a/2 = ' // real_str(0.5_dp*deck%a) &
+      if (is_given(deck, 'output', 'gauge_x')) call need(c, deck, abs(deck%gauge_x) <= 0.5_dp*deck%a, 'output', &
+         'gauge_x', 'the gauge must lie on the plate: |gauge_x| <= a/2 = ' // real_str(0.5_dp*deck%a) &
          // ' m (gauge_x is measured from the plate centre)')
-      if (is_given(deck, 'output', 'gauge_y')) call need(c, abs(deck%gauge_y) <= 0.5_dp*deck%b, 'output', 'gauge_y', &
-         real_str(deck%gauge_y), 'the gauge must lie on the plate: |gauge_y| <= b/2 = ' // real_str(0.5_dp*deck%b) &
+      if (is_given(deck, 'output', 'gauge_y')) call need(c, deck, abs(deck%gauge_y) <= 0.5_dp*deck%b, 'output', &
+         'gauge_y', 'the gauge must lie on the plate: |gauge_y| <= b/2 = ' // real_str(0.5_dp*deck%b) &
          // ' m (gauge_y is measured from the plate centre)')
    end subroutine check_plate
 
@@ -407,11 +405,11 @@ contains
       type(checks_t), intent(inout) :: c            !< the checks so far
       character(len=:), allocatable :: why
       why = prefix_problem(deck%prefix)
-      call need(c, len(why) == 0, 'output', 'prefix', "'" // shown_text(deck%prefix) // "'", why)
+      call need(c, deck, len(why) == 0, 'output', 'prefix', why, "'" // shown_text(deck%prefix) // "'")
       if (c%stat /= 0) return
-      call need(c, .not. read_only_file_system(deck%prefix), 'output', 'prefix', "'" // shown_text(deck%prefix) &
-         // "'", 'is on a read-only file system (' // shown_text(nearest_directory(deck%prefix)) &
-         // ' is mounted read-only): choose a prefix where the results can be written')
+      call need(c, deck, .not. read_only_file_system(deck%prefix), 'output', 'prefix', 'is on a read-only ' &
+         // 'file system (' // shown_text(nearest_directory(deck%prefix)) // ' is mounted read-only): ' &
+         // 'choose a prefix where the results can be written', "'" // shown_text(deck%prefix) // "'")
    end subroutine check_prefix
 
    !> &mesh domain: D16 = D26 = 0 and the impact point on its symmetry lines,
@@ -421,43 +419,40 @@ contains
       type(checks_t), intent(inout) :: c            !< the checks so far
       integer :: n, i
       if (deck%domain /= 'full' .and. deck%domain /= 'auto') &
-         call need(c, deck%bend_twist /= 'keep', 'laminate', 'bend_twist', "'keep'", "the symmetry lines of " &
+         call need(c, deck, deck%bend_twist /= 'keep', 'laminate', 'bend_twist', "the symmetry lines of " &
          // "&mesh domain = '" // deck%domain // "' need D16 = D26 = 0 (section 3.1): use domain = 'full'")
-      if (deck%average_bend_twist) call need(c, deck%bend_twist /= 'keep', 'laminate', 'bend_twist', "'keep'", &
+      if (deck%average_bend_twist) call need(c, deck, deck%bend_twist /= 'keep', 'laminate', 'bend_twist', &
          'contradicts &mesh average_bend_twist = .true., which accepts D16 = D26 = 0')
       if (deck%domain == 'quarter' .or. deck%domain == 'strip') &
-         call need(c, deck%x0 == 0.0_dp .and. deck%y0 == 0.0_dp, 'mesh', 'domain', "'" // deck%domain // "'", &
+         call need(c, deck, deck%x0 == 0.0_dp .and. deck%y0 == 0.0_dp, 'mesh', 'domain', &
          'needs the impact point at the centre, but &impactor x0 = ' // real_str(deck%x0) // ' m, y0 = ' &
          // real_str(deck%y0) // " m: use domain = 'auto', 'half' or 'full'")
-      if (deck%domain == 'half') call need(c, deck%x0 == 0.0_dp .or. deck%y0 == 0.0_dp, 'mesh', 'domain', "'half'", &
+      if (deck%domain == 'half') call need(c, deck, deck%x0 == 0.0_dp .or. deck%y0 == 0.0_dp, 'mesh', 'domain', &
          'needs the impact point on a centre line (x0 = 0 or y0 = 0), but &impactor x0 = ' &
          // real_str(deck%x0) // ' m, y0 = ' // real_str(deck%y0) // " m: use domain = 'auto' or 'full'")
       if (c%stat /= 0 .or. .not. (deck%domain == 'quarter' .or. deck%domain == 'strip')) return
       n = size(deck%angles)
-      symmetry: do i = 1, n/2
-         if (deck%angles(i) == deck%angles(n + 1 - i)) cycle symmetry
-         call need(c, .false., 'laminate', 'angles', list_str(deck%angles, max_quoted), &
-            'not symmetric about the mid-plane (ply ' // int_str(i) // ' at ' // real_str(deck%angles(i)) &
-            // ' deg, ply ' // int_str(n + 1 - i) // ' at ' // real_str(deck%angles(n + 1 - i)) &
-            // " deg), but &mesh domain = '" // deck%domain // "' assumes B = 0: use domain = 'full'")
-         exit symmetry
-      end do symmetry
+      i = findloc([(deck%angles(i) == deck%angles(n + 1 - i), i = 1, n/2)], .false., dim=1)
+      if (i > 0) call need(c, deck, .false., 'laminate', 'angles', 'not symmetric about the mid-plane (ply ' &
+         // int_str(i) // ' at ' // real_str(deck%angles(i)) // ' deg, ply ' // int_str(n + 1 - i) // ' at ' &
+         // real_str(deck%angles(n + 1 - i)) // " deg), but &mesh domain = '" // deck%domain &
+         // "' assumes B = 0: use domain = 'full'", list_str(deck%angles, max_quoted))
    end subroutine check_domain
 
    !> &analysis: theory, dt, cr1, what the run needs, the storage of modes.
    subroutine check_analysis(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
-      if (deck%theory == 'auto') call need(c, deck%analysis_kind == 'impact', 'analysis', 'theory', "'auto'", &
+      if (deck%theory == 'auto') call need(c, deck, deck%analysis_kind == 'impact', 'analysis', 'theory', &
          "chooses from the impact's deflection estimate: give 'linear' or 'nonlinear' for kind = '" &
          // deck%analysis_kind // "'")
-      if (is_given(deck, 'analysis', 'dt')) call need(c, deck%dt < deck%t_end, 'analysis', 'dt', real_str(deck%dt), &
+      if (is_given(deck, 'analysis', 'dt')) call need(c, deck, deck%dt < deck%t_end, 'analysis', 'dt', &
          'must be less than t_end = ' // real_str(deck%t_end))
-      call need(c, deck%cr1 >= min_cr1, 'analysis', 'cr1', real_str(deck%cr1), 'must be at least ' &
-         // real_str(min_cr1) // ' (100 eps): eq. (17) cannot be met below the rounding of the force')
+      call need(c, deck, deck%cr1 >= min_cr1, 'analysis', 'cr1', 'must be at least ' // real_str(min_cr1) &
+         // ' (100 eps): eq. (17) cannot be met below the rounding of the force')
       if (c%stat == 0) call check_needs(deck, c)
-      if (deck%analysis_kind == 'modes') call need(c, deck%storage == 'band' .or. deck%storage == 'auto', 'analysis', &
-         'storage', "'" // deck%storage // "'", "kind = 'modes' needs storage = 'band' or 'auto' (LAPACK's banded " &
+      if (deck%analysis_kind == 'modes') call need(c, deck, deck%storage == 'band' .or. deck%storage == 'auto', &
+         'analysis', 'storage', "kind = 'modes' needs storage = 'band' or 'auto' (LAPACK's banded " &
          // "eigensolver dsbgvx)")
    end subroutine check_analysis
 
@@ -468,41 +463,39 @@ contains
       type(checks_t), intent(inout) :: c            !< the checks so far
       real(dp), parameter :: max_steps = 1.0e8_dp, text_row_bytes = 230.0_dp, row_bytes = 360.0_dp, &
                              h5_fixed_bytes = 65536.0_dp
-      real(dp) :: steps, neq, memory, machine, output, room, biggest
+      real(dp) :: steps, rows, neq, memory, machine, output, room, biggest
       ! dt, nx, ny not given: checked once chosen from the scene (src/model/scene_settings.f90)
       if (.not. (is_given(deck, 'analysis', 'dt') .and. is_given(deck, 'mesh', 'nx') &
                  .and. is_given(deck, 'mesh', 'ny'))) return
       steps = deck%t_end/deck%dt
-      call need(c, steps <= max_steps, 'analysis', 'dt', real_str(deck%dt), 'gives t_end/dt = ' &
-         // real_short(steps) // ' time steps, more than the limit of ' // real_short(max_steps) &
-         // ' (a longer dt, or a shorter t_end)')
+      call need(c, deck, steps <= max_steps, 'analysis', 'dt', 'gives t_end/dt = ' // real_short(steps) &
+         // ' time steps, more than the limit of ' // real_short(max_steps) // ' (a longer dt, or a shorter t_end)')
       if (c%stat /= 0) return
       call model_size(deck, neq, memory)
       machine = memory_available()
-      if (machine > 0.0_dp) call need(c, memory < machine, 'mesh', 'nx', int_str(deck%nx), 'with ny = ' &
-         // int_str(deck%ny) // ' the model would need about ' // real_short(memory/gib) // ' GiB of memory (' &
-         // real_short(neq) // ' equations), more than the ' // real_short(machine/gib) &
-         // ' GiB free for it on this machine (MemAvailable, its control group''s limit): a coarser mesh, ' &
-         // 'or a graded one (&mesh grading)')
+      if (machine > 0.0_dp) call need(c, deck, memory < machine, 'mesh', 'nx', 'with ny = ' // int_str(deck%ny) &
+         // ' the model would need about ' // real_short(memory/gib) // ' GiB of memory (' // real_short(neq) &
+         // ' equations), more than the ' // real_short(machine/gib) // ' GiB free for it on this machine ' &
+         // '(MemAvailable, its control group''s limit): a coarser mesh, or a graded one (&mesh grading)')
       room = memory_room()
-      if (room >= 0.0_dp) call need(c, model_share*memory + library_bytes < room, 'mesh', 'nx', int_str(deck%nx), &
+      if (room >= 0.0_dp) call need(c, deck, model_share*memory + library_bytes < room, 'mesh', 'nx', &
          'with ny = ' // int_str(deck%ny) // ' the model would need about ' &
          // real_short((model_share*memory + library_bytes)/mib) // ' MiB of memory (' // real_short(neq) &
          // ' equations), more than the ' // real_short(room/mib) // ' MiB this process may still take ' &
          // '(its limit, ulimit -v or -d): a coarser mesh, or a higher limit')
       if (c%stat /= 0 .or. deck%analysis_kind == 'modes' .or. deck%analysis_kind == 'static') return
-      output = (steps/real(deck%every, dp) + 1.0_dp)*row_bytes
+      rows = steps/real(deck%every, dp) + 1.0_dp
+      output = rows*row_bytes
       if (deck%hdf5 .and. deck%analysis_kind == 'impact') output = output + h5_fixed_bytes &
          + (steps/real(deck%fields_every, dp) + 5.0_dp)*neq*8.0_dp
-      biggest = max(output - (steps/real(deck%every, dp) + 1.0_dp)*text_row_bytes, &
-                    (steps/real(deck%every, dp) + 1.0_dp)*text_row_bytes)
+      biggest = max(output - rows*text_row_bytes, rows*text_row_bytes)
       room = file_size_limit()
-      if (room > 0.0_dp) call need(c, biggest < room, 'output', 'every', int_str(deck%every), &
-         'with fields_every = ' // int_str(deck%fields_every) // ' a result file would reach about ' &
-         // real_short(biggest/mib) // ' MiB, more than the ' // real_short(room/mib) // ' MiB this process ' &
-         // 'may write to one file (ulimit -f): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
+      if (room > 0.0_dp) call need(c, deck, biggest < room, 'output', 'every', 'with fields_every = ' &
+         // int_str(deck%fields_every) // ' a result file would reach about ' // real_short(biggest/mib) &
+         // ' MiB, more than the ' // real_short(room/mib) // ' MiB this process may write to one file ' &
+         // '(ulimit -f): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
       room = free_disk_space(deck%prefix)
-      if (room > 0.0_dp) call need(c, output < room, 'output', 'every', int_str(deck%every), 'with fields_every = ' &
+      if (room > 0.0_dp) call need(c, deck, output < room, 'output', 'every', 'with fields_every = ' &
          // int_str(deck%fields_every) // ' the results would take about ' // real_short(output/gib) &
          // ' GiB, more than the ' // real_short(room/gib) // ' GiB free where they go (prefix ''' &
          // deck%prefix // '''): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
@@ -530,31 +523,29 @@ contains
    subroutine check_strength(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
-      character(len=3), parameter :: names(6) = [character(len=3) :: 'xt', 'xc', 'yt', 'yc', 's12', 's23']
-      character(len=3), parameter :: energies(6) = [character(len=3) :: 'g1c', 'g2c', 'gft', 'gfc', 'gmt', 'gmc']
-      real(dp) :: given(6)
       logical :: missing(6)
       integer :: k
-      given = [deck%g1c, deck%g2c, deck%gft, deck%gfc, deck%gmt, deck%gmc]
-      do k = 1, size(energies)
-         if (.not. is_given(deck, 'strength', trim(energies(k)))) cycle
-         call need(c, k <= 2 .or. strength_given(deck), 'strength', trim(energies(k)), real_str(given(k)), &
+      do k = 1, size(toughness_names)
+         if (.not. is_given(deck, 'strength', trim(toughness_names(k)))) cycle
+         call need(c, deck, k <= 2 .or. strength_given(deck), 'strength', trim(toughness_names(k)), &
             'a ply fracture energy needs the six ply strengths xt, xc, yt, yc, s12, s23')
-         call need(c, deck%analysis_kind == 'impact', 'strength', trim(energies(k)), real_str(given(k)), &
+         call need(c, deck, deck%analysis_kind == 'impact', 'strength', trim(toughness_names(k)), &
             "the fracture toughnesses are used by kind = 'impact' only")
       end do
-      missing = [(.not. is_given(deck, 'strength', trim(names(k))), k = 1, size(names))]
-      if (any(missing) .and. .not. all(missing)) call need(c, .false., 'strength', trim(names(findloc(missing, &
-         .true., dim=1))), '(not given)', 'give all six strengths (xt, xc, yt, yc, s12, s23) or none')
-      if (deck%given(find_var('strength', 'criterion'))) call need(c, .not. all(missing), 'strength', 'criterion', &
-         "'" // deck%criterion // "'", 'needs the ply strengths xt, xc, yt, yc, s12, s23 (the paper gives none)')
-      if (strength_given(deck)) call need(c, deck%analysis_kind == 'impact', 'strength', 'xt', real_str(deck%xt), &
+      missing = [(.not. is_given(deck, 'strength', trim(strength_names(k))), k = 1, size(strength_names))]
+      k = findloc(missing, .true., dim=1)
+      if (any(missing) .and. .not. all(missing)) call need(c, deck, .false., 'strength', trim(strength_names(k)), &
+         'give all six strengths (xt, xc, yt, yc, s12, s23) or none')
+      if (deck%given(find_var('strength', 'criterion'))) call need(c, deck, .not. all(missing), 'strength', &
+         'criterion', 'needs the ply strengths xt, xc, yt, yc, s12, s23 (the paper gives none)')
+      if (strength_given(deck)) call need(c, deck, deck%analysis_kind == 'impact', 'strength', 'xt', &
          "the ply stresses and failure indices are computed by kind = 'impact' only")
    end subroutine check_strength
 
    !> Entry iv's value against the schema's range.
-   subroutine check_range(c, iv, v)
+   subroutine check_range(c, deck, iv, v)
       type(checks_t), intent(inout) :: c            !< the checks so far
+      type(deck_t), intent(in) :: deck              !< the deck, entry iv's value v
       integer, intent(in) :: iv                     !< entry of deck_vars
       type(value_t), intent(in) :: v                !< its value
       type(deck_var_t) :: e
@@ -562,38 +553,45 @@ contains
       e = deck_vars(iv)      ! (a copy: gfortran 12 loses an associate name of a constant's element)
       select case (e%kind)
       case (kind_real)
-         if (v%given) call need(c, in_interval(v%r, e%range), trim(e%group), trim(e%name), real_str(v%r), &
+         if (v%given) call need(c, deck, in_interval(v%r, e%range), trim(e%group), trim(e%name), &
             interval_text(e%range, e%unit))
       case (kind_integer)
-         if (v%given) call need(c, in_interval(real(v%i, dp), e%range), trim(e%group), trim(e%name), int_str(v%i), &
+         if (v%given) call need(c, deck, in_interval(real(v%i, dp), e%range), trim(e%group), trim(e%name), &
             interval_text(e%range, e%unit))
       case (kind_reals)
          if (len_trim(e%range) == 0) return
          k = findloc([(in_interval(v%list(j), e%range), j = 1, size(v%list))], .false., dim=1)
-         if (k > 0) call need(c, .false., trim(e%group), trim(e%name) // '(' // int_str(k) // ')', &
-            real_str(v%list(k)), interval_text(e%range, e%unit))
+         if (k > 0) call need(c, deck, .false., trim(e%group), trim(e%name) // '(' // int_str(k) // ')', &
+            interval_text(e%range, e%unit), real_str(v%list(k)))
       case (kind_word)
-         call need(c, index(' ' // words_of(e%range) // ' ', ' ' // v%s // ' ') > 0 .and. len(v%s) > 0, &
-            trim(e%group), trim(e%name), "'" // v%s // "'", 'must be one of ' // words_quoted(e%range))
+         call need(c, deck, index(' ' // words_of(e%range) // ' ', ' ' // v%s // ' ') > 0 .and. len(v%s) > 0, &
+            trim(e%group), trim(e%name), 'must be one of ' // words_quoted(e%range))
       case (kind_path)
-         call need(c, len(v%s) <= max_path_len, trim(e%group), trim(e%name), shown_text(v%s), &
-            'longer than ' // int_str(max_path_len) // ' characters')
-         if (len(v%s) > 0) call need(c, len(path_problem(v%s)) == 0, trim(e%group), trim(e%name), &
-            shown_text(v%s), path_problem(v%s))
+         call need(c, deck, len(v%s) <= max_path_len, trim(e%group), trim(e%name), &
+            'longer than ' // int_str(max_path_len) // ' characters', shown_text(v%s))
+         if (len(v%s) > 0) call need(c, deck, len(path_problem(v%s)) == 0, trim(e%group), trim(e%name), &
+            path_problem(v%s), shown_text(v%s))
       end select
    end subroutine check_range
 
-   !> Fails with "<deck>: &group: name = value: what" unless ok (the first failure wins).
-   subroutine need(c, ok, group, name, value, what)
+   !> Fails with "<deck>: &group: name = value: what" unless ok (the first
+   !> failure wins); the value as the echo shows it unless given.
+   subroutine need(c, deck, ok, group, name, what, value)
       type(checks_t), intent(inout) :: c            !< the checks so far
+      type(deck_t), intent(in) :: deck              !< the deck
       logical, intent(in) :: ok                     !< the check passes
       character(len=*), intent(in) :: group         !< the group, without '&'
       character(len=*), intent(in) :: name          !< the variable
-      character(len=*), intent(in) :: value         !< its value, as a message shows it
       character(len=*), intent(in) :: what          !< what is wrong
+      character(len=*), intent(in), optional :: value   !< its value, as a message shows it
       if (c%stat /= 0 .or. ok) return
       c%stat = failed
-      c%message = c%source // ': &' // group // ': ' // name // ' = ' // value // ': ' // what
+      if (present(value)) then
+         c%message = c%source // ': &' // group // ': ' // name // ' = ' // value // ': ' // what
+      else
+         c%message = c%source // ': &' // group // ': ' // name // ' = ' &
+            // deck_value_text(deck, find_var(group, name)) // ': ' // what
+      end if
    end subroutine need
 
    !> x is finite and in the interval written as '(lo, hi)', '[lo, hi]', ...
