@@ -235,106 +235,82 @@ contains
       integer, intent(out) :: stat                       !< 0, or failed
       character(len=:), allocatable, intent(out) :: what !< what is wrong
       integer(int64) :: count
-      integer :: kind, ios
+      integer :: kind, k, n
       what = ''
       kind = deck_vars(iv)%kind
       count = sum(int(items%repeat, int64))
       if (kind /= kind_reals .and. count /= 1) then
-         what = 'one value expected, ' // int_str(int(min(count, int(huge(ios), int64)))) // ' given'
+         what = 'one value expected, ' // int_str(int(min(count, int(huge(n), int64)))) // ' given'
          if (any(items%counted)) what = what // ' (a repeat count r*c gives r values)'
       else if (kind == kind_reals .and. count > max_list_len) then
          what = 'more than ' // int_str(max_list_len) // ' values'
-      else
-         select case (kind)
-         case (kind_real, kind_integer)
-            if (items(1)%quoted) then
-               what = 'a number, not a quoted string, expected'
-            else if (kind == kind_real) then
-               call read_real(items(1)%text, trim(deck_vars(iv)%unit), len_trim(deck_vars(iv)%default) == 0, &
-                  v%r, what)
-            else
-               read (items(1)%text, *, iostat=ios) v%i
-               if (ios /= 0 .or. verify(trim(adjustl(items(1)%text)), '+-0123456789') /= 0 .or. v%i < -huge(v%i)) &
-                  what = 'must be a whole number (from ' // int_str(-huge(v%i)) // ' to ' // int_str(huge(v%i)) // ')'
+      else if (kind /= kind_reals) then
+         call convert_item(iv, kind, items(1), v, what)
+      else                                   ! a list: each r*c expanded to r copies of c
+         allocate (v%list(count))
+         n = 0
+         do k = 1, size(items)
+            call convert_item(iv, kind_real, items(k), v, what)
+            if (len(what) > 0) then
+               what = 'item ' // int_str(k) // ', ''' // shown_text(item_written(items(k))) // ''': ' // what
+               exit
             end if
-         case (kind_logical)
-            read (items(1)%text, *, iostat=ios) v%l
-            if (ios /= 0 .or. items(1)%quoted .or. index(items(1)%text, '/') > 0) what = 'must be .true. or .false.'
-         case (kind_word, kind_path)
-            call convert_text(kind, items(1)%text, v%s, what)
-         case (kind_reals)
-            call convert_list(items, trim(deck_vars(iv)%unit), v%list, what)
-         end select
+            v%list(n + 1:n + items(k)%repeat) = v%r
+            n = n + items(k)%repeat
+         end do
       end if
       stat = merge(failed, 0, len(what) > 0)
    end subroutine convert
 
-   !> A real from its text: what is '' for a finite number, else what is wrong.
-   subroutine read_real(text, unit, optional, x, what)
-      character(len=*), intent(in) :: text               !< the value as written
-      character(len=*), intent(in) :: unit               !< its unit, for the message
-      logical, intent(in) :: optional                    !< the variable may be left out ("not given")
-      real(dp), intent(out) :: x                         !< the number
-      character(len=:), allocatable, intent(out) :: what !< '' or what is wrong
-      integer :: ios
+   !> One value of entry iv, of the kind given, from its item: v%r (finite),
+   !> v%i, v%l or v%s (a word in lower case); what is '' or what is wrong.
+   subroutine convert_item(iv, kind, item, v, what)
+      integer, intent(in) :: iv                          !< entry of deck_vars
+      integer, intent(in) :: kind                        !< kind_real, ... (not kind_reals)
+      type(item_t), intent(in) :: item                   !< the value as written
+      type(value_t), intent(inout) :: v                  !< the value
+      character(len=:), allocatable, intent(inout) :: what !< '' or what is wrong
+      character(len=:), allocatable :: unit
       logical :: digits
-      what = ''
-      x = 0.0_dp
-      read (text, *, iostat=ios) x
-      digits = verify(text, '+-.0123456789eEdD') == 0
-      if (ios == 0 .and. digits .and. ieee_is_finite(x)) return
-      what = 'must be a real number'
-      if (unit /= '-' .and. len(unit) > 0) what = what // ' (' // unit // ')'
-      if (ios == 0 .and. digits) then
-         what = what // ' within the range of a double (magnitude below 1.8e308)'
-      else if (ios == 0 .and. .not. ieee_is_finite(x)) then
-         what = what // ': NaN and Inf are not values'
-         if (optional) what = what // ' (leave the variable out for "not given")'
-      end if
-   end subroutine read_real
-
-   !> A word (lower case) or a text from its text: what is '' or what is wrong.
-   subroutine convert_text(kind, text, s, what)
-      integer, intent(in) :: kind                        !< kind_word or kind_path
-      character(len=*), intent(in) :: text               !< the value as written
-      character(len=:), allocatable, intent(out) :: s    !< the value
-      character(len=:), allocatable, intent(out) :: what !< '' or what is wrong
-      integer :: j, k
-      what = ''
-      s = trim(adjustl(text))
-      if (kind == kind_word) s = lower_case(s)
-      if (kind == kind_word .and. len(s) > max_word_len) then
-         what = 'longer than ' // int_str(max_word_len) // ' characters'
-      else if (len(s) > max_path_len) then
-         what = 'longer than ' // int_str(max_path_len) // ' characters'
-      else
-         k = findloc([(iachar(s(j:j)) < 32 .or. iachar(s(j:j)) == 127, j = 1, len(s))], .true., dim=1)
-         if (k > 0) what = 'holds a control character (code ' // int_str(iachar(s(k:k))) // ')'
-      end if
-   end subroutine convert_text
-
-   !> A list of reals from its items, each r*c expanded to r copies of c.
-   subroutine convert_list(items, unit, list, what)
-      type(item_t), intent(in) :: items(:)               !< the values as written
-      character(len=*), intent(in) :: unit               !< their unit, for messages
-      real(dp), allocatable, intent(out) :: list(:)      !< the values
-      character(len=:), allocatable, intent(out) :: what !< '' or what is wrong
-      integer :: k, n
-      real(dp) :: x
-      allocate (list(sum(items%repeat)))
-      n = 0
-      do k = 1, size(items)
-         what = ''
-         if (items(k)%quoted) what = 'a number, not a quoted string, expected'
-         if (len(what) == 0) call read_real(items(k)%text, unit, .false., x, what)
-         if (len(what) > 0) then
-            what = 'item ' // int_str(k) // ', ''' // shown_text(item_written(items(k))) // ''': ' // what
-            return
+      integer :: ios, j, k
+      unit = trim(deck_vars(iv)%unit)
+      select case (kind)
+      case (kind_real, kind_integer)
+         if (item%quoted) then
+            what = 'a number, not a quoted string, expected'
+         else if (kind == kind_real) then
+            read (item%text, *, iostat=ios) v%r
+            digits = verify(item%text, '+-.0123456789eEdD') == 0
+            if (ios == 0 .and. digits .and. ieee_is_finite(v%r)) return
+            what = 'must be a real number'
+            if (unit /= '-' .and. len(unit) > 0) what = what // ' (' // unit // ')'
+            if (ios == 0 .and. digits) then
+               what = what // ' within the range of a double (magnitude below 1.8e308)'
+            else if (ios == 0 .and. .not. ieee_is_finite(v%r)) then
+               what = what // ': NaN and Inf are not values'
+               if (len_trim(deck_vars(iv)%default) == 0) what = what // ' (leave the variable out for "not given")'
+            end if
+         else
+            read (item%text, *, iostat=ios) v%i
+            if (ios /= 0 .or. verify(trim(adjustl(item%text)), '+-0123456789') /= 0 .or. v%i < -huge(v%i)) &
+               what = 'must be a whole number (from ' // int_str(-huge(v%i)) // ' to ' // int_str(huge(v%i)) // ')'
          end if
-         list(n + 1:n + items(k)%repeat) = x
-         n = n + items(k)%repeat
-      end do
-   end subroutine convert_list
+      case (kind_logical)
+         read (item%text, *, iostat=ios) v%l
+         if (ios /= 0 .or. item%quoted .or. index(item%text, '/') > 0) what = 'must be .true. or .false.'
+      case (kind_word, kind_path)
+         v%s = trim(adjustl(item%text))
+         if (kind == kind_word) v%s = lower_case(v%s)
+         k = findloc([(iachar(v%s(j:j)) < 32 .or. iachar(v%s(j:j)) == 127, j = 1, len(v%s))], .true., dim=1)
+         if (kind == kind_word .and. len(v%s) > max_word_len) then
+            what = 'longer than ' // int_str(max_word_len) // ' characters'
+         else if (len(v%s) > max_path_len) then
+            what = 'longer than ' // int_str(max_path_len) // ' characters'
+         else if (k > 0) then
+            what = 'holds a control character (code ' // int_str(iachar(v%s(k:k))) // ')'
+         end if
+      end select
+   end subroutine convert_item
 
    ! ============================================================= checking
 
