@@ -521,31 +521,22 @@ contains
    pure integer function utf8_length(s, i) result(m)
       character(len=*), intent(in) :: s         !< the text
       integer, intent(in) :: i                  !< where the character starts
-      integer :: b0, b1, k, lo, hi
+      integer :: b0, b1, k, n, lo, hi
       b0 = ichar(s(i:i))
       m = 0
-      select case (b0)
-      case (194:223); m = 2
-      case (224:239); m = 3
-      case (240:244); m = 4
-      case default;   return
-      end select
-      if (i + m - 1 > len(s)) then
-         m = 0
-         return
-      end if
+      if (b0 < 194 .or. b0 > 244) return
+      n = 2 + merge(1, 0, b0 >= 224) + merge(1, 0, b0 >= 240)
+      if (i + n - 1 > len(s)) return
       lo = 128;  hi = 191
+      if (b0 == 194) lo = 160                   ! C1 controls
       if (b0 == 224) lo = 160
       if (b0 == 237) hi = 159
       if (b0 == 240) lo = 144
       if (b0 == 244) hi = 143
       b1 = ichar(s(i+1:i+1))
-      if (b1 < lo .or. b1 > hi) m = 0
-      do k = i + 2, i + m - 1
-         if (ichar(s(k:k)) < 128 .or. ichar(s(k:k)) > 191) m = 0
-      end do
-      if (m == 2 .and. b0 == 194 .and. b1 <= 159) m = 0                 ! C1 controls
-      if (m == 3 .and. s(i:i + 2) == byte_order_mark) m = 0
+      if (b1 < lo .or. b1 > hi .or. s(i:i + n - 1) == byte_order_mark) return
+      if (any([(ichar(s(k:k)) < 128 .or. ichar(s(k:k)) > 191, k = i + 2, i + n - 1)])) return
+      m = n
    end function utf8_length
 
 end module deck_text

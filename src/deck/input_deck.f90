@@ -75,76 +75,59 @@ contains
       logical, intent(in), optional :: check        !< check the deck (default .true.)
       type(group_text_t), allocatable :: groups(:)
       character(len=:), allocatable :: what
-      integer :: line, ig, jg, ia, ja, iv
-      type(value_t) :: v
+      integer :: line, ig
       deck = default_deck()
       deck%source = source
       call read_deck_text(unit, groups, stat, line, what)
-      if (stat /= 0) then
-         if (line > 0) what = 'line ' // int_str(line) // ': ' // what
-         call fail(what)
-         return
-      end if
-      if (size(groups) == 0) then
-         call fail('the deck has no namelist group: an empty deck would run the default scene ' &
-            // '(give at least one group, e.g. &analysis kind = ''impact'' /)')
-         return
-      end if
-      groups_loop: do ig = 1, size(groups)
-         associate (g => groups(ig))
-            if (.not. any(deck_groups == g%name)) then
-               call fail(unknown_name(g%name, ''))
-               return
-            end if
-            do jg = 1, ig - 1
-               if (groups(jg)%name == g%name) then
-                  call fail('&' // g%name // ': the group is given twice (lines ' // int_str(groups(jg)%line) &
-                     // ' and ' // int_str(g%line) // '); give each group once')
-                  return
-               end if
-            end do
-            assignments: do ia = 1, size(g%assignments)
-               associate (a => g%assignments(ia))
-                  iv = find_var(g%name, a%name)
-                  if (iv == 0) then
-                     call fail(unknown_name(g%name, a%name))
-                     return
-                  end if
-                  do ja = 1, ia - 1
-                     if (g%assignments(ja)%name == a%name) then
-                        call fail('&' // g%name // ': ' // a%name // ' = ' // items_text(a%items) &
-                           // ': given twice in the group (lines ' // int_str(g%assignments(ja)%line) // ' and ' &
-                           // int_str(a%line) // '); give each variable once')
-                        return
-                     end if
-                  end do
-                  call convert(iv, a%items, v, stat, what)
-                  if (stat /= 0) then
-                     call fail('&' // g%name // ': ' // a%name // ' = ' // items_text(a%items) // ': ' // what)
-                     return
-                  end if
-                  call deck_bind(deck, iv, v, .true.)
-                  deck%given(iv) = .true.
-               end associate
-            end do assignments
-         end associate
-      end do groups_loop
-      stat = 0
+      if (stat /= 0 .and. line > 0) what = 'line ' // int_str(line) // ': ' // what
+      if (stat == 0 .and. size(groups) == 0) what = 'the deck has no namelist group: an empty deck would run ' &
+         // 'the default scene (give at least one group, e.g. &analysis kind = ''impact'' /)'
+      do ig = 1, size(groups)
+         if (len(what) == 0) call read_group(groups, ig, deck, what)
+      end do
+      stat = merge(failed, 0, len(what) > 0)
+      if (stat /= 0) errmsg = source // ': ' // what
+      if (stat /= 0) return
       if (present(check)) then
          if (.not. check) return
       end if
       call validate_deck(deck, stat, errmsg)
-
-   contains
-
-      !> stat failed, errmsg '<source>: message'.
-      subroutine fail(message)
-         character(len=*), intent(in) :: message
-         stat = failed
-         errmsg = source // ': ' // message
-      end subroutine fail
-
    end subroutine read_deck
+
+   !> Group ig of the deck's text into the deck; what is '' or its first fault.
+   subroutine read_group(groups, ig, deck, what)
+      type(group_text_t), intent(in) :: groups(:)            !< the deck's groups
+      integer, intent(in) :: ig                              !< the group to read
+      type(deck_t), intent(inout) :: deck                    !< the deck
+      character(len=:), allocatable, intent(inout) :: what   !< '' or what is wrong
+      type(value_t) :: v
+      integer :: jg, ia, ja, iv, stat
+      associate (g => groups(ig))
+         if (.not. any(deck_groups == g%name)) what = unknown_name(g%name, '')
+         do jg = 1, ig - 1
+            if (groups(jg)%name == g%name .and. len(what) == 0) what = '&' // g%name // ': the group is given ' &
+               // 'twice (lines ' // int_str(groups(jg)%line) // ' and ' // int_str(g%line) // '); give each group once'
+         end do
+         do ia = 1, size(g%assignments)
+            if (len(what) > 0) return
+            associate (a => g%assignments(ia))
+               iv = find_var(g%name, a%name)
+               if (iv == 0) what = unknown_name(g%name, a%name)
+               do ja = 1, ia - 1
+                  if (g%assignments(ja)%name == a%name .and. len(what) == 0) what = '&' // g%name // ': ' &
+                     // a%name // ' = ' // items_text(a%items) // ': given twice in the group (lines ' &
+                     // int_str(g%assignments(ja)%line) // ' and ' // int_str(a%line) // '); give each variable once'
+               end do
+               if (len(what) > 0) return
+               call convert(iv, a%items, v, stat, what)
+               if (stat /= 0) what = '&' // g%name // ': ' // a%name // ' = ' // items_text(a%items) // ': ' // what
+               if (stat /= 0) return
+               call deck_bind(deck, iv, v, .true.)
+               deck%given(iv) = .true.
+            end associate
+         end do
+      end associate
+   end subroutine read_group
 
    !> read_deck of the file `path`; a directory or an unreadable file is refused.
    subroutine read_deck_file(path, deck, stat, errmsg, check)
