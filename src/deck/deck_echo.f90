@@ -142,8 +142,6 @@ contains
       end do
    end subroutine write_schema
 
-   ! ======================================= the schema in a message's words
-
    !> The message on an unknown group, or an unknown variable of a known group.
    function unknown_name(group, name) result(text)
       character(len=*), intent(in) :: group, name

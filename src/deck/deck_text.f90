@@ -143,8 +143,6 @@ contains
       if (stat /= 0) what = r%err%what
    end subroutine split_value_text
 
-   ! ============================================================ tokenizer
-
    !> The tokens of one line. Outside a group: a group's start '&name', blanks
    !> and a comment; inside one: its end ('/' or '&end') and its tokens.
    subroutine scan_line(r, s, ln)
@@ -265,8 +263,6 @@ contains
       r%ntok = r%ntok + 1
       r%toks(r%ntok) = token_t(kind, text, ln)
    end subroutine push
-
-   ! ======================================================== group builder
 
    !> A new group, '&name' on line ln, open until its '/'.
    subroutine begin_group(r, name, ln)
@@ -426,8 +422,6 @@ contains
       if (r < 1) why = 'a repeat count r*c needs r >= 1'
       rest = word(star + 1:)
    end subroutine repeat_count
-
-   ! ============================================================== helpers
 
    !> The reading is inside a group: the last one has no '/' yet.
    pure logical function group_open(r)

@@ -41,8 +41,6 @@ module input_deck
 
 contains
 
-   ! ================================================================ reading
-
    !> The deck of the schema's defaults (the paper's values), source '<defaults>'.
    function default_deck() result(deck)
       type(deck_t) :: deck
@@ -180,17 +178,16 @@ contains
       text = trim(adjustl(setting(eq + 1:)))
       iv = find_var(group, name)
       if (iv == 0) then
-         errmsg = '--set: ' // unknown_name(group, name)
-         return
+         what = unknown_name(group, name)
+      else if (len(text) == 0) then
+         what = '&' // group // ': ' // name // ' = (nothing): give a value'
+      else
+         call split_value_text(text, items, stat, what)
+         if (stat == 0) call convert(iv, items, v, stat, what)
+         if (stat /= 0) what = '&' // group // ': ' // name // ' = ' // shown_text(text) // ': ' // what
       end if
-      if (len(text) == 0) then
-         errmsg = '--set: &' // group // ': ' // name // ' = (nothing): give a value'
-         return
-      end if
-      call split_value_text(text, items, stat, what)
-      if (stat == 0) call convert(iv, items, v, stat, what)
-      if (stat /= 0) then
-         errmsg = '--set: &' // group // ': ' // name // ' = ' // shown_text(text) // ': ' // what
+      if (len(what) > 0) then
+         errmsg = '--set: ' // what
          return
       end if
       call deck_bind(deck, iv, v, .true.)
@@ -294,8 +291,6 @@ contains
          end if
       end select
    end subroutine convert_item
-
-   ! ============================================================= checking
 
    !> Checks every value against its range and the combinations the program
    !> needs, to the first bad one; keywords come back in lower case.
@@ -562,8 +557,6 @@ contains
       call interval(range, lo, hi, lo_open, hi_open)
       in_interval = ieee_is_finite(x) .and. merge(x > lo, x >= lo, lo_open) .and. merge(x < hi, x <= hi, hi_open)
    end function in_interval
-
-   ! ============================================================== helpers
 
    !> The items as they were written, for a message, cut after max_quoted characters.
    function items_text(items) result(text)
