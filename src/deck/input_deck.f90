@@ -137,19 +137,14 @@ contains
       integer :: unit, ios
       character(len=msg_len) :: msg
       logical :: exists
+      stat = failed
       inquire (file=path // '/.', exist=exists)
-      if (exists) then
-         stat = failed
-         errmsg = path // ': is a directory, not a deck file'
-         return
-      end if
+      if (exists) errmsg = path // ': is a directory, not a deck file'
+      if (exists) return
       open (newunit=unit, file=path, status='old', action='read', form='formatted', &
          access='sequential', iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         stat = failed
-         errmsg = path // ': cannot open the deck: ' // trim(msg)
-         return
-      end if
+      if (ios /= 0) errmsg = path // ': cannot open the deck: ' // trim(msg)
+      if (ios /= 0) return
       call read_deck(unit, path, deck, stat, errmsg, check)
       close (unit, iostat=ios)
    end subroutine read_deck_file
@@ -299,9 +294,19 @@ contains
       integer, intent(out) :: stat                  !< 0 when every value is acceptable
       character(len=*), intent(inout) :: errmsg     !< the message on failure
       type(checks_t) :: c
+      type(value_t) :: v
+      integer :: iv
       if (.not. allocated(deck%source)) deck%source = '<deck>'
       c%source = deck%source
-      call check_entries(deck, c)
+      do iv = 1, size(deck_vars)           ! each variable against its range, keywords in lower case
+         call deck_bind(deck, iv, v, .false.)
+         if (deck_vars(iv)%kind == kind_word) then
+            v%s = lower_case(trim(adjustl(v%s)))
+            call deck_bind(deck, iv, v, .true.)
+         end if
+         call check_range(c, deck, iv, v)
+         if (c%stat /= 0) exit
+      end do
       if (c%stat == 0) call check_plate(deck, c)
       if (c%stat == 0) call check_domain(deck, c)
       if (c%stat == 0) call check_analysis(deck, c)
@@ -310,23 +315,6 @@ contains
       stat = c%stat
       if (stat /= 0) errmsg = c%message
    end subroutine validate_deck
-
-   !> Each variable against its range, its keywords first made lower case.
-   subroutine check_entries(deck, c)
-      type(deck_t), intent(inout) :: deck           !< the deck; its keywords come back in lower case
-      type(checks_t), intent(inout) :: c            !< the checks so far
-      type(value_t) :: v
-      integer :: iv
-      entries: do iv = 1, size(deck_vars)
-         call deck_bind(deck, iv, v, .false.)
-         if (deck_vars(iv)%kind == kind_word) then
-            v%s = lower_case(trim(adjustl(v%s)))
-            call deck_bind(deck, iv, v, .true.)
-         end if
-         call check_range(c, deck, iv, v)
-         if (c%stat /= 0) return
-      end do entries
-   end subroutine check_entries
 
    !> &plate, &lamina, &laminate, &impactor, &output gauge_x, gauge_y: a thin
    !> plate, a positive definite lamina, a ply, the nose and the gauge on the plate.
