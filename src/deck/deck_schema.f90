@@ -244,8 +244,7 @@ module deck_schema
       character(len=:), allocatable :: prefix
       integer :: every = 0, fields_every = 0
       logical :: overwrite = .false., hdf5 = .false.
-      character(len=:), allocatable :: xdmf
-      character(len=:), allocatable :: gauge
+      character(len=:), allocatable :: xdmf, gauge
       real(dp) :: gauge_x = 0, gauge_y = 0          !< NaN: not given (the impact point; is_given)
       ! &accuracy
       real(dp) :: accuracy_target = 0              !< NaN: not given (one plain run; accuracy_wanted)
@@ -280,10 +279,7 @@ contains
    pure function find_var(group, name) result(iv)
       character(len=*), intent(in) :: group, name   !< lower case
       integer :: iv
-      do iv = 1, size(deck_vars)
-         if (deck_vars(iv)%group == group .and. deck_vars(iv)%name == name) return
-      end do
-      iv = 0
+      iv = findloc(deck_vars%group == group .and. deck_vars%name == name, .true., dim=1)
    end function find_var
 
    !> True when the deck gives the six strengths of &strength: the ply

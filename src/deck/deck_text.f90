@@ -36,7 +36,6 @@ module deck_text
       character(len=:), allocatable :: name     !< lower case, without '&'
       type(assignment_t), allocatable :: assignments(:)
       integer :: line = 0                       !< line of '&name'
-      logical :: closed = .false.               !< its '/' was found
    end type group_text_t
 
    !> Kinds of token.
@@ -72,6 +71,7 @@ module deck_text
       integer :: ngroup = 0                          !< groups in groups
       type(token_t), allocatable :: toks(:)          !< tokens of the open group, toks(:ntok)
       integer :: ntok = 0                            !< tokens in toks
+      logical :: inside = .false.                    !< in groups(ngroup), before its '/'
       type(text_error_t) :: err                      !< the first error
    end type reader_t
 
@@ -110,7 +110,7 @@ contains
             call scan_line(r, text, nline)
          end if
       end do lines_loop
-      if (r%err%stat == 0 .and. group_open(r)) call fail(r%err, r%groups(r%ngroup)%line, &
+      if (r%err%stat == 0 .and. r%inside) call fail(r%err, r%groups(r%ngroup)%line, &
          open_group_name(r) // ": no closing '/' (the group runs to the end of the deck)")
       groups = r%groups(:r%ngroup)
       stat = r%err%stat
@@ -160,9 +160,9 @@ contains
          case (' ', achar(9), achar(13))
          case ('!'); exit chars
          case default
-            if (.not. group_open(r) .and. j > i .and. name /= 'end') then
+            if (.not. r%inside .and. j > i .and. name /= 'end') then
                call begin_group(r, name, ln)
-            else if (.not. group_open(r)) then
+            else if (.not. r%inside) then
                call fail_outside(r, trim(s(i:)), ln)
             else if (s(i:i) == '/' .or. name == 'end') then
                call end_group(r)
@@ -279,12 +279,13 @@ contains
       r%groups(r%ngroup)%name = name
       r%groups(r%ngroup)%line = ln
       r%ntok = 0
+      r%inside = .true.
    end subroutine begin_group
 
    !> The open group's '/': its tokens become its assignments.
    subroutine end_group(r)
       type(reader_t), intent(inout) :: r        !< the reading
-      r%groups(r%ngroup)%closed = .true.
+      r%inside = .false.
       call build_assignments(r%toks(:r%ntok), r%groups(r%ngroup)%name, r%groups(r%ngroup)%assignments, r%err)
    end subroutine end_group
 
@@ -422,13 +423,6 @@ contains
       if (r < 1) why = 'a repeat count r*c needs r >= 1'
       rest = word(star + 1:)
    end subroutine repeat_count
-
-   !> The reading is inside a group: the last one has no '/' yet.
-   pure logical function group_open(r)
-      type(reader_t), intent(in) :: r           !< the reading
-      group_open = .false.
-      if (r%ngroup > 0) group_open = .not. r%groups(r%ngroup)%closed
-   end function group_open
 
    !> '&name' of the last group, for messages.
    pure function open_group_name(r) result(name)
