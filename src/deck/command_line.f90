@@ -97,21 +97,15 @@ contains
          call set_variable(deck, trim(opts%settings(i)), stat, errmsg, check=.false.)
          if (stat /= 0) return
       end do
-      if (len(opts%accuracy) > 0) then
+      if (len(opts%accuracy) > 0) &
          call set_variable(deck, 'accuracy.target=' // opts%accuracy, stat, errmsg, check=.false.)
-         if (stat /= 0) then
-            errmsg = '--accuracy ' // opts%accuracy // ': ' // trim(errmsg)
-            return
-         end if
+      if (stat /= 0) errmsg = '--accuracy ' // opts%accuracy // ': ' // trim(errmsg)
+      if (stat == 0 .and. opts%single .and. len(opts%accuracy) > 0) then
+         errmsg = '--single and --accuracy: one run, or a ladder of runs, not both'
+         stat = 1
       end if
-      if (opts%single) then
-         if (len(opts%accuracy) > 0) then
-            errmsg = '--single and --accuracy: one run, or a ladder of runs, not both'
-            stat = 1
-            return
-         end if
-         deck%accuracy_target = not_given_real()
-      end if
+      if (stat /= 0) return
+      if (opts%single) deck%accuracy_target = not_given_real()
       if (opts%overwrite) deck%overwrite = .true.
       call validate_deck(deck, stat, errmsg)
       if (stat /= 0 .and. len(deck%settings) > 0) errmsg = trim(errmsg) // ' (with ' // deck%settings // ')'
