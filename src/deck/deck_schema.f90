@@ -485,17 +485,14 @@ contains
    !> The words of a range as "'a', 'b', 'c'".
    pure function words_quoted(range) result(text)
       character(len=*), intent(in) :: range
-      character(len=:), allocatable :: text, rest
+      character(len=:), allocatable :: text
       integer :: bar
-      text = ''
-      rest = trim(range)
-      bar = index(rest, '|')
+      text = "'" // trim(range) // "'"
+      bar = index(text, ' | ')
       do while (bar > 0)
-         text = text // "'" // trim(adjustl(rest(:bar - 1))) // "', "
-         rest = rest(bar + 1:)
-         bar = index(rest, '|')
+         text = text(:bar - 1) // "', '" // text(bar + 3:)
+         bar = index(text, ' | ')
       end do
-      text = text // "'" // trim(adjustl(rest)) // "'"
    end function words_quoted
 
 end module deck_schema

@@ -494,12 +494,9 @@ contains
       integer :: j, k
       e = deck_vars(iv)      ! (a copy: gfortran 12 loses an associate name of a constant's element)
       select case (e%kind)
-      case (kind_real)
-         if (v%given) call need(c, deck, in_interval(v%r, e%range), trim(e%group), trim(e%name), &
-            interval_text(e%range, e%unit))
-      case (kind_integer)
-         if (v%given) call need(c, deck, in_interval(real(v%i, dp), e%range), trim(e%group), trim(e%name), &
-            interval_text(e%range, e%unit))
+      case (kind_real, kind_integer)
+         if (v%given) call need(c, deck, in_interval(merge(v%r, real(v%i, dp), e%kind == kind_real), e%range), &
+            trim(e%group), trim(e%name), interval_text(e%range, e%unit))
       case (kind_reals)
          if (len_trim(e%range) == 0) return
          k = findloc([(in_interval(v%list(j), e%range), j = 1, size(v%list))], .false., dim=1)
