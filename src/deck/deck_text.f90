@@ -130,11 +130,7 @@ contains
       allocate (r%toks(64))
       i = 1
       do while (i <= len(text) .and. r%err%stat == 0)
-         if (text(i:i) == ' ' .or. text(i:i) == achar(9)) then
-            i = i + 1
-         else
-            call scan_token(r, text, i, 1, value_word_ends)
-         end if
+         call scan_token(r, text, i, 1, value_word_ends)
       end do
       if (r%err%stat == 0) call make_items(r%toks(:r%ntok), 'the value', items, r%err)
       if (.not. allocated(items)) allocate (items(0))
@@ -162,8 +158,12 @@ contains
          case default
             if (.not. r%inside .and. j > i .and. name /= 'end') then
                call begin_group(r, name, ln)
+            else if (.not. r%inside .and. r%ngroup > 0) then
+               call fail(r%err, ln, "text after the closing '/' of " // open_group_name(r) // ": '" &
+                  // shown_text(trim(s(i:))) // "' (outside the groups only comments, after '!')")
             else if (.not. r%inside) then
-               call fail_outside(r, trim(s(i:)), ln)
+               call fail(r%err, ln, "text outside a namelist group: '" // shown_text(trim(s(i:))) &
+                  // "' (a group starts with &name; comments start with '!')")
             else if (s(i:i) == '/' .or. name == 'end') then
                call end_group(r)
             else if (s(i:i) == '&') then
@@ -178,22 +178,8 @@ contains
       end do chars
    end subroutine scan_line
 
-   !> The error of text outside the groups, at the text's start.
-   subroutine fail_outside(r, text, ln)
-      type(reader_t), intent(inout) :: r        !< the reading
-      character(len=*), intent(in) :: text      !< the text, from where it starts
-      integer, intent(in) :: ln                 !< the line's number
-      if (r%ngroup > 0) then
-         call fail(r%err, ln, "text after the closing '/' of " // open_group_name(r) // ": '" &
-            // shown_text(text) // "' (outside the groups only comments, after '!')")
-      else
-         call fail(r%err, ln, "text outside a namelist group: '" // shown_text(text) &
-            // "' (a group starts with &name; comments start with '!')")
-      end if
-   end subroutine fail_outside
-
    !> The token at s(i:i), i moved past it: a string, ',', '=' (when `ends`
-   !> holds it) or a word up to the next of `ends`.
+   !> holds it), a word up to the next of `ends`, or none at a blank.
    subroutine scan_token(r, s, i, ln, ends)
       type(reader_t), intent(inout) :: r        !< the reading
       character(len=*), intent(in) :: s         !< the line
@@ -209,7 +195,7 @@ contains
          call push(r, tok_comma, ',', ln)
       else if (s(i:i) == '=' .and. index(ends, '=') > 0) then
          call push(r, tok_equals, '=', ln)
-      else
+      else if (s(i:i) /= ' ' .and. s(i:i) /= achar(9)) then     ! a word; a blank is passed over
          j = word_end(s, i, ends)
          call push(r, tok_word, s(i:j), ln)
       end if
