@@ -52,9 +52,9 @@ contains
             if (i < n) value = argument(i + 1)
             if (i == n) then
                what = arg // ' needs a value'
-            else if (len_trim(value) == 0) then                            ! (an unset variable in a job script)
+            else if (len_trim(value) == 0) then        ! (an unset variable in a job script)
                what = arg // ' needs a value: it is empty'
-            else if (arg == '--set' .and. len(value) > len(opts%settings)) then      ! it would be cut
+            else if (arg == '--set' .and. len(value) > len(opts%settings)) then   ! it would be cut
                what = '--set: longer than ' // int_str(len(opts%settings)) // ' characters'
             else if (arg == '--set') then
                opts%settings = [opts%settings, value]

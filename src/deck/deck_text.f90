@@ -377,7 +377,8 @@ contains
             end if
          end if
          if (len(why) == 0 .and. items(n)%counted .and. len(rest) == 0 .and. .not. items(n)%quoted) &
-            why = 'r* with no value after it is r null values, which leave the values as they were: give the values'
+            why = 'r* with no value after it is r null values, which leave the values as they were: ' &
+            // 'give the values'
          if (len(why) > 0) then
             call fail(err, toks(j)%line, where // ' = ' // shown_text(toks(j)%text) // ': ' // why)
             exit tokens
