@@ -466,29 +466,22 @@ contains
    pure function shown_text(s) result(shown)
       character(len=*), intent(in) :: s             !< the text, as the deck holds it
       character(len=:), allocatable :: shown
-      character(len=:), allocatable :: buf
       character(len=*), parameter :: hex = '0123456789ABCDEF'
-      integer :: i, n, m, code, limit
-      limit = min(len(s), max_shown)
-      allocate (character(len=4*limit + 8) :: buf)
-      n = 0
+      integer :: i, m, code
+      shown = ''
       i = 1
-      do while (i <= limit)
+      do while (i <= min(len(s), max_shown))
          code = ichar(s(i:i))
-         m = 1
-         if (code >= 128) m = utf8_length(s, i)
-         if (code >= 32 .and. code /= 127 .and. m > 0) then
-            buf(n + 1:n + m) = s(i:i + m - 1)
-            n = n + m
-            i = i + m
+         m = merge(utf8_length(s, i), 1, code >= 128)
+         if (code < 32 .or. code == 127 .or. m == 0) then
+            shown = shown // '\x' // hex(code/16 + 1:code/16 + 1) // hex(mod(code, 16) + 1:mod(code, 16) + 1)
+            m = 1
          else
-            buf(n + 1:n + 4) = '\x' // hex(code/16 + 1:code/16 + 1) // hex(mod(code, 16) + 1:mod(code, 16) + 1)
-            n = n + 4
-            i = i + 1
+            shown = shown // s(i:i + m - 1)
          end if
+         i = i + m
       end do
-      shown = buf(:n)
-      if (limit < len(s) .and. i <= len(s)) shown = shown // '...'
+      if (i <= len(s)) shown = shown // '...'
    end function shown_text
 
    !> Bytes of the whole UTF-8 character at s(i:i) (a byte >= 128); 0 for a
