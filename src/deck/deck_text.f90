@@ -164,8 +164,10 @@ contains
             else if (.not. r%inside) then
                call fail(r%err, ln, "text outside a namelist group: '" // shown_text(trim(s(i:))) &
                   // "' (a group starts with &name; comments start with '!')")
-            else if (s(i:i) == '/' .or. name == 'end') then
-               call end_group(r)
+            else if (s(i:i) == '/' .or. name == 'end') then      ! its tokens become its assignments
+               r%inside = .false.
+               call build_assignments(r%toks(:r%ntok), r%groups(r%ngroup)%name, &
+                  r%groups(r%ngroup)%assignments, r%err)
             else if (s(i:i) == '&') then
                call fail(r%err, ln, open_group_name(r) // ": no closing '/' before the next group " &
                   // shown_text(s(i:j)))
@@ -267,13 +269,6 @@ contains
       r%ntok = 0
       r%inside = .true.
    end subroutine begin_group
-
-   !> The open group's '/': its tokens become its assignments.
-   subroutine end_group(r)
-      type(reader_t), intent(inout) :: r        !< the reading
-      r%inside = .false.
-      call build_assignments(r%toks(:r%ntok), r%groups(r%ngroup)%name, r%groups(r%ngroup)%assignments, r%err)
-   end subroutine end_group
 
    !> The assignments 'name = value, value, ...' of a group's tokens.
    subroutine build_assignments(toks, group, assignments, err)

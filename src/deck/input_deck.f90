@@ -34,7 +34,6 @@ module input_deck
 
    !> The checks of a deck so far: the first failure wins.
    type :: checks_t
-      character(len=:), allocatable :: source       !< the deck's name in messages
       integer :: stat = 0                           !< 0, or failed after a failure
       character(len=:), allocatable :: message      !< the first failure's one-line message
    end type checks_t
@@ -297,7 +296,6 @@ contains
       type(value_t) :: v
       integer :: iv
       if (.not. allocated(deck%source)) deck%source = '<deck>'
-      c%source = deck%source
       do iv = 1, size(deck_vars)           ! each variable against its range, keywords in lower case
          call deck_bind(deck, iv, v, .false.)
          if (deck_vars(iv)%kind == kind_word) then
@@ -526,9 +524,9 @@ contains
       if (c%stat /= 0 .or. ok) return
       c%stat = failed
       if (present(value)) then
-         c%message = c%source // ': &' // group // ': ' // name // ' = ' // value // ': ' // what
+         c%message = deck%source // ': &' // group // ': ' // name // ' = ' // value // ': ' // what
       else
-         c%message = c%source // ': &' // group // ': ' // name // ' = ' &
+         c%message = deck%source // ': &' // group // ': ' // name // ' = ' &
             // deck_value_text(deck, find_var(group, name)) // ': ' // what
       end if
    end subroutine need
