@@ -30,14 +30,15 @@ contains
       type(options_t), intent(out) :: opts          !< the options
       integer, intent(out) :: stat                  !< 0, or 1 for a wrong command line
       character(len=*), intent(inout) :: errmsg     !< what is wrong
-      character(len=:), allocatable :: arg
+      character(len=:), allocatable :: arg, value, what
       integer :: i, n
       allocate (opts%settings(0))
       opts%deck_path = '';  opts%trace = '';  opts%accuracy = ''
-      stat = 1
+      what = ''
+      value = ''          ! (else gfortran 12 at -O2 takes its length for unset in the loop)
       n = command_argument_count()
       i = 0
-      options: do while (i < n)
+      options: do while (i < n .and. len(what) == 0)
          i = i + 1
          arg = argument(i)
          select case (arg)
@@ -48,38 +49,33 @@ contains
          case ('--restart'); opts%restart = .true.
          case ('--single'); opts%single = .true.
          case ('--set', '--trace', '--accuracy')
+            if (i < n) value = argument(i + 1)
             if (i == n) then
-               errmsg = arg // ' needs a value'
-               return
+               what = arg // ' needs a value'
+            else if (len_trim(value) == 0) then        ! (an unset variable in a job script)
+               what = arg // ' needs a value: it is empty'
+            else if (arg == '--set' .and. len(value) > len(opts%settings)) then   ! it would be cut
+               what = '--set: longer than ' // int_str(len(opts%settings)) // ' characters'
+            else if (arg == '--set') then
+               opts%settings = [opts%settings, value]
+            else if (arg == '--trace') then
+               opts%trace = value
+            else
+               opts%accuracy = value
             end if
             i = i + 1
-            if (len_trim(argument(i)) == 0) then        ! (an unset variable in a job script)
-               errmsg = arg // ' needs a value: it is empty'
-               return
-            end if
-            select case (arg)
-            case ('--set')
-               if (len(argument(i)) > len(opts%settings)) then      ! it would be cut
-                  errmsg = '--set: longer than ' // int_str(len(opts%settings)) // ' characters'
-                  return
-               end if
-               opts%settings = [opts%settings, argument(i)]
-            case ('--trace'); opts%trace = argument(i)
-            case default; opts%accuracy = argument(i)
-            end select
          case default
             if (arg(1:min(1, len(arg))) == '-' .and. len(arg) > 1) then
-               errmsg = 'unknown option ' // arg
-               return
+               what = 'unknown option ' // arg
+            else if (len(opts%deck_path) > 0) then
+               what = 'one deck only: ''' // arg // ''' follows the deck ' // opts%deck_path
+            else
+               opts%deck_path = arg
             end if
-            if (len(opts%deck_path) > 0) then
-               errmsg = 'one deck only: ''' // arg // ''' follows the deck ' // opts%deck_path
-               return
-            end if
-            opts%deck_path = arg
          end select
       end do options
-      stat = 0
+      stat = merge(1, 0, len(what) > 0)
+      if (stat /= 0) errmsg = what
    end subroutine parse_command_line
 
    !> The deck the options name, with --set, --accuracy, --single and
@@ -101,21 +97,15 @@ contains
          call set_variable(deck, trim(opts%settings(i)), stat, errmsg, check=.false.)
          if (stat /= 0) return
       end do
-      if (len(opts%accuracy) > 0) then
+      if (len(opts%accuracy) > 0) &
          call set_variable(deck, 'accuracy.target=' // opts%accuracy, stat, errmsg, check=.false.)
-         if (stat /= 0) then
-            errmsg = '--accuracy ' // opts%accuracy // ': ' // trim(errmsg)
-            return
-         end if
+      if (stat /= 0) errmsg = '--accuracy ' // opts%accuracy // ': ' // trim(errmsg)
+      if (stat == 0 .and. opts%single .and. len(opts%accuracy) > 0) then
+         errmsg = '--single and --accuracy: one run, or a ladder of runs, not both'
+         stat = 1
       end if
-      if (opts%single) then
-         if (len(opts%accuracy) > 0) then
-            errmsg = '--single and --accuracy: one run, or a ladder of runs, not both'
-            stat = 1
-            return
-         end if
-         deck%accuracy_target = not_given_real()
-      end if
+      if (stat /= 0) return
+      if (opts%single) deck%accuracy_target = not_given_real()
       if (opts%overwrite) deck%overwrite = .true.
       call validate_deck(deck, stat, errmsg)
       if (stat /= 0 .and. len(deck%settings) > 0) errmsg = trim(errmsg) // ' (with ' // deck%settings // ')'

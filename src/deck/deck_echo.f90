@@ -142,8 +142,6 @@ contains
       end do
    end subroutine write_schema
 
-   ! ======================================= the schema in a message's words
-
    !> The message on an unknown group, or an unknown variable of a known group.
    function unknown_name(group, name) result(text)
       character(len=*), intent(in) :: group, name
@@ -168,30 +166,23 @@ contains
       end do
    end function name_list
 
-   !> The bounds of an interval text.
+   !> The bounds of an interval text, 'inf' as the largest double.
    pure subroutine interval(range, lo, hi, lo_open, hi_open)
       character(len=*), intent(in) :: range
       real(dp), intent(out) :: lo, hi
       logical, intent(out) :: lo_open, hi_open
       character(len=len(range)) :: r
-      integer :: comma
+      integer :: comma, ios
       r = adjustl(range)
       comma = index(r, ',')
       lo_open = r(1:1) == '('
       hi_open = r(len_trim(r):len_trim(r)) == ')'
-      lo = bound(r(2:comma - 1))
-      hi = bound(r(comma + 1:len_trim(r) - 1))
-   contains
-      pure real(dp) function bound(text)
-         character(len=*), intent(in) :: text
-         integer :: ios
-         select case (trim(adjustl(text)))
-         case ('inf');  bound = huge(1.0_dp); case ('-inf'); bound = -huge(1.0_dp)
-         case default
-            read (text, *, iostat=ios) bound
-            if (ios /= 0) bound = 0.0_dp
-         end select
-      end function bound
+      read (r(2:comma - 1), *, iostat=ios) lo
+      if (ios /= 0) lo = 0.0_dp
+      read (r(comma + 1:len_trim(r) - 1), *, iostat=ios) hi
+      if (ios /= 0) hi = 0.0_dp
+      lo = max(lo, -huge(lo))
+      hi = min(hi, huge(hi))
    end subroutine interval
 
    !> What the interval asks, in words: 'must be positive (m)', 'must be in [1, 3]', ...

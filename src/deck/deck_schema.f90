@@ -13,7 +13,7 @@ module deck_schema
    implicit none
    private
    public :: deck_var_t, deck_t, value_t, deck_vars, deck_groups, deck_bind, find_var, var_key, strength_given
-   public :: toughness_given
+   public :: toughness_given, strength_names, toughness_names
    public :: is_given, not_given_real, not_given_integer, accuracy_wanted
    public :: kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, kind_names
    public :: max_word_len, max_path_len, max_list_len, words_of, words_quoted
@@ -25,6 +25,9 @@ module deck_schema
       'word', 'text', 'reals']
    !> Longest word (a keyword), longest text (a path), longest list (plies).
    integer, parameter :: max_word_len = 32, max_path_len = 4096, max_list_len = 1000
+   !> The ply strengths of &strength, and its fracture toughnesses.
+   character(len=3), parameter :: strength_names(6) = [character(len=3) :: 'xt', 'xc', 'yt', 'yc', 's12', 's23']
+   character(len=3), parameter :: toughness_names(6) = [character(len=3) :: 'g1c', 'g2c', 'gft', 'gfc', 'gmt', 'gmc']
    !> "Not given" of an optional integer: a value no reader produces (module header).
    integer, parameter :: not_given_integer = -huge(0) - 1
 
@@ -241,8 +244,7 @@ module deck_schema
       character(len=:), allocatable :: prefix
       integer :: every = 0, fields_every = 0
       logical :: overwrite = .false., hdf5 = .false.
-      character(len=:), allocatable :: xdmf
-      character(len=:), allocatable :: gauge
+      character(len=:), allocatable :: xdmf, gauge
       real(dp) :: gauge_x = 0, gauge_y = 0          !< NaN: not given (the impact point; is_given)
       ! &accuracy
       real(dp) :: accuracy_target = 0              !< NaN: not given (one plain run; accuracy_wanted)
@@ -277,27 +279,22 @@ contains
    pure function find_var(group, name) result(iv)
       character(len=*), intent(in) :: group, name   !< lower case
       integer :: iv
-      do iv = 1, size(deck_vars)
-         if (deck_vars(iv)%group == group .and. deck_vars(iv)%name == name) return
-      end do
-      iv = 0
+      iv = findloc(deck_vars%group == group .and. deck_vars%name == name, .true., dim=1)
    end function find_var
 
    !> True when the deck gives the six strengths of &strength: the ply
    !> stresses and the failure criterion are then computed.
    pure logical function strength_given(deck)
       type(deck_t), intent(in) :: deck   !< the deck
-      character(len=3), parameter :: names(6) = [character(len=3) :: 'xt', 'xc', 'yt', 'yc', 's12', 's23']
       integer :: k
-      strength_given = all([(is_given(deck, 'strength', trim(names(k))), k = 1, size(names))])
+      strength_given = all([(is_given(deck, 'strength', trim(strength_names(k))), k = 1, size(strength_names))])
    end function strength_given
 
    !> True when the deck gives any toughness of &strength (g1c, ... gmc).
    pure logical function toughness_given(deck)
       type(deck_t), intent(in) :: deck              !< the deck
-      character(len=3), parameter :: names(6) = [character(len=3) :: 'g1c', 'g2c', 'gft', 'gfc', 'gmt', 'gmc']
       integer :: k
-      toughness_given = any([(is_given(deck, 'strength', trim(names(k))), k = 1, size(names))])
+      toughness_given = any([(is_given(deck, 'strength', trim(toughness_names(k))), k = 1, size(toughness_names))])
    end function toughness_given
 
    !> True when the deck asks for an accuracy run (&accuracy target, --accuracy).
@@ -488,17 +485,14 @@ contains
    !> The words of a range as "'a', 'b', 'c'".
    pure function words_quoted(range) result(text)
       character(len=*), intent(in) :: range
-      character(len=:), allocatable :: text, rest
+      character(len=:), allocatable :: text
       integer :: bar
-      text = ''
-      rest = trim(range)
-      bar = index(rest, '|')
+      text = "'" // trim(range) // "'"
+      bar = index(text, ' | ')
       do while (bar > 0)
-         text = text // "'" // trim(adjustl(rest(:bar - 1))) // "', "
-         rest = rest(bar + 1:)
-         bar = index(rest, '|')
+         text = text(:bar - 1) // "', '" // text(bar + 3:)
+         bar = index(text, ' | ')
       end do
-      text = text // "'" // trim(adjustl(rest)) // "'"
    end function words_quoted
 
 end module deck_schema

@@ -36,7 +36,6 @@ module deck_text
       character(len=:), allocatable :: name     !< lower case, without '&'
       type(assignment_t), allocatable :: assignments(:)
       integer :: line = 0                       !< line of '&name'
-      logical :: closed = .false.               !< its '/' was found
    end type group_text_t
 
    !> Kinds of token.
@@ -72,6 +71,7 @@ module deck_text
       integer :: ngroup = 0                          !< groups in groups
       type(token_t), allocatable :: toks(:)          !< tokens of the open group, toks(:ntok)
       integer :: ntok = 0                            !< tokens in toks
+      logical :: inside = .false.                    !< in groups(ngroup), before its '/'
       type(text_error_t) :: err                      !< the first error
    end type reader_t
 
@@ -110,7 +110,7 @@ contains
             call scan_line(r, text, nline)
          end if
       end do lines_loop
-      if (r%err%stat == 0 .and. group_open(r)) call fail(r%err, r%groups(r%ngroup)%line, &
+      if (r%err%stat == 0 .and. r%inside) call fail(r%err, r%groups(r%ngroup)%line, &
          open_group_name(r) // ": no closing '/' (the group runs to the end of the deck)")
       groups = r%groups(:r%ngroup)
       stat = r%err%stat
@@ -126,21 +126,11 @@ contains
       integer, intent(out) :: stat                         !< 0, or 1 on an error
       character(len=:), allocatable, intent(out) :: what   !< what is wrong
       type(reader_t) :: r
-      integer :: i, j
+      integer :: i
       allocate (r%toks(64))
       i = 1
       do while (i <= len(text) .and. r%err%stat == 0)
-         select case (text(i:i))
-         case (' ', achar(9)); i = i + 1
-         case (',')
-            call push(r, tok_comma, ',', 1)
-            i = i + 1
-         case ('''', '"'); call scan_string(r, text, i, 1)
-         case default
-            j = word_end(text, i, value_word_ends)
-            call push(r, tok_word, text(i:j), 1)
-            i = j + 1
-         end select
+         call scan_token(r, text, i, 1, value_word_ends)
       end do
       if (r%err%stat == 0) call make_items(r%toks(:r%ntok), 'the value', items, r%err)
       if (.not. allocated(items)) allocate (items(0))
@@ -149,159 +139,102 @@ contains
       if (stat /= 0) what = r%err%what
    end subroutine split_value_text
 
-   ! ============================================================ tokenizer
-
-   !> The tokens of one line: outside a group only a group's start, blanks
-   !> and a comment; inside one, its tokens.
+   !> The tokens of one line. Outside a group: a group's start '&name', blanks
+   !> and a comment; inside one: its end ('/' or '&end') and its tokens.
    subroutine scan_line(r, s, ln)
       type(reader_t), intent(inout) :: r        !< the reading
       character(len=*), intent(in) :: s         !< the line
       integer, intent(in) :: ln                 !< its number
-      integer :: i
+      character(len=:), allocatable :: name
+      integer :: i, j
       i = 1
       chars: do while (i <= len(s) .and. r%err%stat == 0)
+         j = i                                  ! '&name': j the end of the name
+         if (s(i:i) == '&') j = name_end(s, i + 1)
+         name = lower_case(s(i + 1:j))
          select case (s(i:i))
-         case (' ', achar(9), achar(13)); i = i + 1
+         case (' ', achar(9), achar(13))
          case ('!'); exit chars
          case default
-            if (group_open(r)) then
-               call scan_token(r, s, i, ln)
+            if (.not. r%inside .and. j > i .and. name /= 'end') then
+               call begin_group(r, name, ln)
+            else if (.not. r%inside .and. r%ngroup > 0) then
+               call fail(r%err, ln, "text after the closing '/' of " // open_group_name(r) // ": '" &
+                  // shown_text(trim(s(i:))) // "' (outside the groups only comments, after '!')")
+            else if (.not. r%inside) then
+               call fail(r%err, ln, "text outside a namelist group: '" // shown_text(trim(s(i:))) &
+                  // "' (a group starts with &name; comments start with '!')")
+            else if (s(i:i) == '/' .or. name == 'end') then      ! its tokens become its assignments
+               r%inside = .false.
+               call build_assignments(r%toks(:r%ntok), r%groups(r%ngroup)%name, &
+                  r%groups(r%ngroup)%assignments, r%err)
+            else if (s(i:i) == '&') then
+               call fail(r%err, ln, open_group_name(r) // ": no closing '/' before the next group " &
+                  // shown_text(s(i:j)))
             else
-               call scan_group_start(r, s, i, ln)
+               call scan_token(r, s, i, ln, word_ends)
+               cycle chars
             end if
          end select
+         i = j + 1
       end do chars
    end subroutine scan_line
 
-   !> Outside a group, at s(i:i): '&name' starts a group; anything else is an error.
-   subroutine scan_group_start(r, s, i, ln)
-      type(reader_t), intent(inout) :: r        !< the reading
-      character(len=*), intent(in) :: s         !< the line
-      integer, intent(inout) :: i               !< where the text starts; past the group's name
-      integer, intent(in) :: ln                 !< the line's number
-      integer :: j
-      if (s(i:i) == '&' .and. i < len(s)) then
-         j = name_end(s, i + 1)
-         if (j > i .and. lower_case(s(i+1:j)) /= 'end') then
-            call begin_group(r, lower_case(s(i+1:j)), ln)
-            i = j + 1
-            return
-         end if
-      end if
-      if (r%ngroup > 0) then
-         call fail(r%err, ln, "text after the closing '/' of " // open_group_name(r) // ": '" &
-            // shown_text(trim(s(i:))) // "' (outside the groups only comments, after '!')")
-      else
-         call fail(r%err, ln, "text outside a namelist group: '" // shown_text(trim(s(i:))) &
-            // "' (a group starts with &name; comments start with '!')")
-      end if
-   end subroutine scan_group_start
-
-   !> Inside a group, at s(i:i): '/' or '&end', a string, '=', ',' or a word.
-   subroutine scan_token(r, s, i, ln)
+   !> The token at s(i:i), i moved past it: a string, ',', '=' (when `ends`
+   !> holds it), a word up to the next of `ends`, or none at a blank.
+   subroutine scan_token(r, s, i, ln, ends)
       type(reader_t), intent(inout) :: r        !< the reading
       character(len=*), intent(in) :: s         !< the line
       integer, intent(inout) :: i               !< where the token starts; past it
       integer, intent(in) :: ln                 !< the line's number
+      character(len=*), intent(in) :: ends      !< the characters that end a word
       integer :: j
-      select case (s(i:i))
-      case ('/')
-         call end_group(r)
-         i = i + 1
-      case ('&')
-         j = name_end(s, i + 1)
-         if (j > i) then
-            if (lower_case(s(i+1:j)) == 'end') then
-               call end_group(r)
-               i = j + 1
-               return
-            end if
-         end if
-         call fail(r%err, ln, open_group_name(r) // ": no closing '/' before the next group " &
-            // shown_text(s(i:max(i, j))))
-      case ('''', '"'); call scan_string(r, s, i, ln)
-      case ('=')
-         call push(r, tok_equals, '=', ln)
-         i = i + 1
-      case (',')
+      j = i
+      if (s(i:i) == '''' .or. s(i:i) == '"') then
+         call scan_string(r, s, i, ln)
+         return
+      else if (s(i:i) == ',') then
          call push(r, tok_comma, ',', ln)
-         i = i + 1
-      case default
-         j = word_end(s, i, word_ends)
+      else if (s(i:i) == '=' .and. index(ends, '=') > 0) then
+         call push(r, tok_equals, '=', ln)
+      else if (s(i:i) /= ' ' .and. s(i:i) /= achar(9)) then     ! a word; a blank is passed over
+         j = word_end(s, i, ends)
          call push(r, tok_word, s(i:j), ln)
-         i = j + 1
-      end select
+      end if
+      i = j + 1
    end subroutine scan_token
 
-   !> A quoted string starting at s(i:i) (in a group, or a --set value).
+   !> The string whose quote is s(i:i), a doubled quote made single; i moved
+   !> past its closing quote. Glued: right after a word's '*' (r*'text').
    subroutine scan_string(r, s, i, ln)
       type(reader_t), intent(inout) :: r        !< the reading
       character(len=*), intent(in) :: s         !< the line
       integer, intent(inout) :: i               !< where its quote is; past its closing quote
       integer, intent(in) :: ln                 !< the line's number
       character(len=:), allocatable :: body
-      logical :: glued
-      integer :: past
-      call scan_quoted(s, i, body, past)
-      if (past == 0 .and. r%ngroup == 0) then            ! a --set value
-         call fail(r%err, ln, 'a string has no closing ' // s(i:i))
-      else if (past == 0) then
-         call fail(r%err, ln, open_group_name(r) // ': a string has no closing ' // s(i:i) // ' on its line')
-      end if
-      if (past == 0) return
-      glued = glued_to_count(s, i, r%toks(:r%ntok))
-      call push(r, tok_string, body, ln)
-      r%toks(r%ntok)%glued = glued
-      i = past
-   end subroutine scan_string
-
-   !> The body of the string whose opening quote is s(i:i), a doubled quote
-   !> made single; past: the index after its closing quote, 0 when it has none.
-   pure subroutine scan_quoted(s, i, body, past)
-      character(len=*), intent(in) :: s                    !< the text
-      integer, intent(in) :: i                             !< where the opening quote is
-      character(len=:), allocatable, intent(out) :: body   !< the string, without its quotes
-      integer, intent(out) :: past                         !< after the closing quote; 0: none
-      character(len=:), allocatable :: buf
       character :: q
-      integer :: j, n, next
-      allocate (character(len=len(s)) :: buf)
+      integer :: j, n
+      allocate (character(len=len(s)) :: body)
       q = s(i:i)
       n = 0
       j = i + 1
-      past = 0
       do while (j <= len(s))
-         next = index(s(j:), q)
-         if (next == 0) exit
-         buf(n + 1:n + next - 1) = s(j:j + next - 2)
-         n = n + next - 1
-         j = j + next                             ! past the quote
-         if (j <= len(s)) then
-            if (s(j:j) == q) then                 ! a doubled quote
-               n = n + 1
-               buf(n:n) = q
-               j = j + 1
-               cycle
-            end if
-         end if
-         past = j
-         exit
+         if (s(j:j) == q .and. s(j + 1:min(j + 1, len(s))) /= q) exit     ! the closing quote
+         if (s(j:j) == q) j = j + 1                                      ! a doubled quote
+         n = n + 1
+         body(n:n) = s(j:j)
+         j = j + 1
       end do
-      body = buf(:n)
-   end subroutine scan_quoted
-
-   !> The string at s(i:i) follows a word ending in '*' without a blank (r*'text').
-   pure logical function glued_to_count(s, i, toks)
-      character(len=*), intent(in) :: s         !< the line
-      integer, intent(in) :: i                  !< where the string's quote is
-      type(token_t), intent(in) :: toks(:)      !< the tokens before it
-      integer :: n
-      glued_to_count = .false.
-      n = size(toks)
-      if (i < 2 .or. n == 0) return
-      if (s(i-1:i-1) /= '*' .or. toks(n)%kind /= tok_word) return
-      glued_to_count = toks(n)%text(len(toks(n)%text):) == '*'
-   end function glued_to_count
+      if (j > len(s) .and. r%ngroup == 0) then            ! a --set value
+         call fail(r%err, ln, 'a string has no closing ' // q)
+      else if (j > len(s)) then
+         call fail(r%err, ln, open_group_name(r) // ': a string has no closing ' // q // ' on its line')
+      else
+         call push(r, tok_string, body(:n), ln)
+         r%toks(r%ntok)%glued = s(max(1, i - 1):i - 1) == '*'   ! '*' ends the word before it
+         i = j + 1
+      end if
+   end subroutine scan_string
 
    !> Appends a token to the open group's.
    subroutine push(r, kind, text, ln)
@@ -311,7 +244,7 @@ contains
       integer, intent(in) :: ln                 !< its line
       type(token_t), allocatable :: grown(:)
       if (r%ntok == size(r%toks)) then
-         allocate (grown(max(64, 2*r%ntok)))
+         allocate (grown(2*r%ntok))
          grown(:r%ntok) = r%toks(:r%ntok)
          call move_alloc(grown, r%toks)
       end if
@@ -319,38 +252,23 @@ contains
       r%toks(r%ntok) = token_t(kind, text, ln)
    end subroutine push
 
-   ! ======================================================== group builder
-
    !> A new group, '&name' on line ln, open until its '/'.
    subroutine begin_group(r, name, ln)
       type(reader_t), intent(inout) :: r        !< the reading
       character(len=*), intent(in) :: name      !< its name, lower case
       integer, intent(in) :: ln                 !< line of '&name'
       type(group_text_t), allocatable :: grown(:)
-      integer :: g
-      g = r%ngroup
-      if (g == size(r%groups)) then
-         allocate (grown(2*g + 8))
-         grown(:g) = r%groups(:g)
+      if (r%ngroup == size(r%groups)) then
+         allocate (grown(2*r%ngroup))
+         grown(:r%ngroup) = r%groups(:r%ngroup)
          call move_alloc(grown, r%groups)
       end if
-      g = g + 1
-      r%ngroup = g
-      r%groups(g)%name = name
-      r%groups(g)%line = ln
-      allocate (r%groups(g)%assignments(0))
+      r%ngroup = r%ngroup + 1
+      r%groups(r%ngroup)%name = name
+      r%groups(r%ngroup)%line = ln
       r%ntok = 0
+      r%inside = .true.
    end subroutine begin_group
-
-   !> The open group's '/': its tokens become its assignments.
-   subroutine end_group(r)
-      type(reader_t), intent(inout) :: r        !< the reading
-      integer :: g
-      g = r%ngroup
-      r%groups(g)%closed = .true.
-      call build_assignments(r%toks(:r%ntok), r%groups(g)%name, r%groups(g)%assignments, r%err)
-      r%ntok = 0
-   end subroutine end_group
 
    !> The assignments 'name = value, value, ...' of a group's tokens.
    subroutine build_assignments(toks, group, assignments, err)
@@ -359,52 +277,71 @@ contains
       type(assignment_t), allocatable, intent(inout) :: assignments(:) !< the group's
       type(text_error_t), intent(inout) :: err                      !< the first error
       type(assignment_t), allocatable :: list(:)
-      type(assignment_t) :: a
-      integer :: k, n
+      character(len=:), allocatable :: where
+      integer :: k, n, last
       allocate (list(count(toks%kind == tok_equals)))     ! each assignment has its '='
       n = 0
       k = 1
-      do while (k <= size(toks))
+      where = ''        ! (else gfortran 12 at -O2 takes its length for unset in the loop)
+      do while (k <= size(toks) .and. err%stat == 0)
          if (toks(k)%kind == tok_comma) then
             k = k + 1
+         else if (.not. starts_assignment(toks, k)) then
+            call fail(err, toks(k)%line, '&' // group // ": '" // shown_text(toks(k)%text) &
+               // "' is not an assignment 'name = value'")
+         else if (name_end(toks(k)%text, 1) /= len(toks(k)%text)) then
+            call fail(err, toks(k)%line, '&' // group // ': ' // shown_text(toks(k)%text) &
+               // ': not a variable name (give a whole variable, not an element name(i) = ...)')
          else
-            call next_assignment(toks, k, group, a, err)
-            if (err%stat /= 0) exit
-            n = n + 1                        ! (moved, not copied)
-            call move_alloc(a%name, list(n)%name)
-            call move_alloc(a%items, list(n)%items)
-            list(n)%line = a%line
+            n = n + 1
+            list(n)%name = lower_case(toks(k)%text)
+            list(n)%line = toks(k)%line
+            where = '&' // group // ': ' // list(n)%name
+            call find_values(toks, k + 2, where, last, err)
+            if (err%stat == 0) call make_items(toks(k + 2:last), where, list(n)%items, err)
+            k = last + 1
          end if
       end do
       assignments = list(:n)
    end subroutine build_assignments
 
-   !> The assignment that starts at toks(k), up to the next 'name ='; k moves past it.
-   subroutine next_assignment(toks, k, group, a, err)
+   !> The values toks(first:last) up to the next 'name ='; none, a second '='
+   !> or an empty value is an error.
+   subroutine find_values(toks, first, where, last, err)
       type(token_t), intent(in) :: toks(:)      !< the group's tokens
-      integer, intent(inout) :: k               !< its first token; the token after it
-      character(len=*), intent(in) :: group     !< the group's name, for messages
-      type(assignment_t), intent(out) :: a      !< the assignment
+      integer, intent(in) :: first              !< the token after '='
+      character(len=*), intent(in) :: where     !< '&group: name', for messages
+      integer, intent(out) :: last              !< the values' last token (first - 1: none; on an error)
       type(text_error_t), intent(inout) :: err  !< the first error
-      integer :: first, last
-      if (.not. starts_assignment(toks, k)) then
-         call fail(err, toks(k)%line, '&' // group // ": '" // shown_text(toks(k)%text) &
-            // "' is not an assignment 'name = value'")
+      integer :: k
+      last = first - 1
+      do k = first, size(toks)
+         if (starts_assignment(toks, k)) exit
+         if (toks(k)%kind == tok_equals) then
+            call fail(err, toks(k)%line, where // " = ...: a second '='")
+            return
+         end if
+         if (k > first .and. k < size(toks) .and. toks(k)%kind == tok_comma) then
+            if (toks(k - 1)%kind == tok_comma) then
+               call fail(err, toks(k)%line, where // ' = ...: an empty value between two commas')
+               return
+            end if
+         end if
+      end do
+      if (all(toks(first:k - 1)%kind == tok_comma)) then
+         call fail(err, toks(first - 2)%line, where // ' = (nothing): give a value')
          return
       end if
-      if (name_end(toks(k)%text, 1) /= len(toks(k)%text)) then
-         call fail(err, toks(k)%line, '&' // group // ': ' // shown_text(toks(k)%text) &
-            // ': not a variable name (give a whole variable, not an element name(i) = ...)')
-         return
-      end if
-      a%name = lower_case(toks(k)%text)
-      a%line = toks(k)%line
-      first = k + 2
-      call find_values(toks, first, '&' // group // ': ' // a%name, last, err)
-      if (err%stat /= 0) return
-      call make_items(toks(first:last), '&' // group // ': ' // a%name, a%items, err)
-      k = last + 1
-   end subroutine next_assignment
+      last = k - 1
+   end subroutine find_values
+
+   !> toks(k) and toks(k+1) are 'name ='.
+   pure logical function starts_assignment(toks, k)
+      type(token_t), intent(in) :: toks(:)      !< the group's tokens
+      integer, intent(in) :: k                  !< where to look
+      starts_assignment = .false.
+      if (k < size(toks)) starts_assignment = toks(k)%kind == tok_word .and. toks(k+1)%kind == tok_equals
+   end function starts_assignment
 
    !> The items of an assignment's value tokens: r*c is c with its count r,
    !> r* glued to a string that string r times, r* alone an error (r nulls).
@@ -414,43 +351,34 @@ contains
       type(item_t), allocatable, intent(out) :: items(:)   !< the values
       type(text_error_t), intent(inout) :: err             !< the first error
       character(len=:), allocatable :: rest, why
-      integer :: j, n, r
+      integer :: j, n
       allocate (items(size(toks)))
       n = 0
-      j = 1
-      tokens: do while (j <= size(toks))
-         select case (toks(j)%kind)
-         case (tok_string)
-            n = n + 1
-            items(n)%text = toks(j)%text             ! (not a constructor: gfortran 12 drops the text)
-            items(n)%quoted = .true.
-         case (tok_word)
-            n = n + 1
-            call repeat_count(toks(j)%text, r, rest, why)
-            if (len(why) > 0) then
-               call fail(err, toks(j)%line, where // ' = ' // shown_text(toks(j)%text) // ': ' // why)
-               exit tokens
-            end if
-            items(n)%text = rest
-            items(n)%repeat = r
-            items(n)%counted = r > 0 .and. len(rest) < len(toks(j)%text)
-            if (items(n)%counted .and. len(rest) == 0) then
-               if (j < size(toks)) then
-                  if (toks(j + 1)%glued) then      ! r*'text'
-                     j = j + 1
-                     items(n)%text = toks(j)%text
-                     items(n)%quoted = .true.
-                     j = j + 1
-                     cycle tokens
-                  end if
-               end if
-               call fail(err, toks(j)%line, where // ' = ' // shown_text(toks(j)%text) // ': ' &
-                  // 'r* with no value after it is r null values, which leave the values as they were: ' &
-                  // 'give the values')
-               exit tokens
-            end if
-         end select
+      j = 0
+      tokens: do while (j < size(toks))
          j = j + 1
+         if (toks(j)%kind == tok_comma) cycle tokens
+         n = n + 1
+         items(n)%text = toks(j)%text             ! (not a constructor: gfortran 12 drops the text)
+         items(n)%quoted = toks(j)%kind == tok_string
+         if (items(n)%quoted) cycle tokens
+         call repeat_count(toks(j)%text, items(n)%repeat, rest, why)
+         items(n)%counted = len(rest) < len(toks(j)%text)
+         if (len(why) == 0 .and. items(n)%counted .and. len(rest) == 0 .and. j < size(toks)) then
+            if (toks(j + 1)%glued) then          ! r*'text'
+               j = j + 1
+               rest = toks(j)%text
+               items(n)%quoted = .true.
+            end if
+         end if
+         if (len(why) == 0 .and. items(n)%counted .and. len(rest) == 0 .and. .not. items(n)%quoted) &
+            why = 'r* with no value after it is r null values, which leave the values as they were: ' &
+            // 'give the values'
+         if (len(why) > 0) then
+            call fail(err, toks(j)%line, where // ' = ' // shown_text(toks(j)%text) // ': ' // why)
+            exit tokens
+         end if
+         items(n)%text = rest
       end do tokens
       items = items(:n)
    end subroutine make_items
@@ -462,7 +390,7 @@ contains
       integer, intent(out) :: r                            !< the count
       character(len=:), allocatable, intent(out) :: rest   !< the value after 'r*'
       character(len=:), allocatable, intent(out) :: why    !< '' or what is wrong
-      integer :: star, k
+      integer :: star
       r = 1
       rest = word
       why = ''
@@ -473,64 +401,10 @@ contains
          why = 'a repeat count r*c of more than ' // int_str(max_count_digits) // ' digits'
          return
       end if
-      r = 0
-      do k = 1, star - 1
-         r = 10*r + (ichar(word(k:k)) - ichar('0'))
-      end do
+      read (word(:star - 1), *) r
       if (r < 1) why = 'a repeat count r*c needs r >= 1'
       rest = word(star + 1:)
    end subroutine repeat_count
-
-   !> The values toks(first:last) up to the next 'name ='; none, a second '='
-   !> or an empty value is an error.
-   subroutine find_values(toks, first, where, last, err)
-      type(token_t), intent(in) :: toks(:)      !< the group's tokens
-      integer, intent(in) :: first              !< the token after '='
-      character(len=*), intent(in) :: where     !< '&group: name', for messages
-      integer, intent(out) :: last              !< the values' last token (first - 1: none; on an error)
-      type(text_error_t), intent(inout) :: err  !< the first error
-      integer :: k, n
-      n = 0
-      last = first - 1
-      k = first
-      values: do while (k <= size(toks))
-         if (starts_assignment(toks, k)) exit values
-         select case (toks(k)%kind)
-         case (tok_equals)
-            call fail(err, toks(k)%line, where // " = ...: a second '='")
-            return
-         case (tok_comma)
-            if (k > first .and. k < size(toks)) then
-               if (toks(k-1)%kind == tok_comma) then
-                  call fail(err, toks(k)%line, where // ' = ...: an empty value between two commas')
-                  return
-               end if
-            end if
-         case default; n = n + 1
-         end select
-         k = k + 1
-      end do values
-      last = k - 1
-      if (n == 0) call fail(err, toks(first - 2)%line, where // ' = (nothing): give a value')
-   end subroutine find_values
-
-   !> toks(k) and toks(k+1) are 'name ='.
-   pure logical function starts_assignment(toks, k)
-      type(token_t), intent(in) :: toks(:)      !< the group's tokens
-      integer, intent(in) :: k                  !< where to look
-      starts_assignment = .false.
-      if (k >= size(toks)) return
-      starts_assignment = toks(k)%kind == tok_word .and. toks(k+1)%kind == tok_equals
-   end function starts_assignment
-
-   ! ============================================================== helpers
-
-   !> The reading is inside a group: the last one has no '/' yet.
-   pure logical function group_open(r)
-      type(reader_t), intent(in) :: r           !< the reading
-      group_open = .false.
-      if (r%ngroup > 0) group_open = .not. r%groups(r%ngroup)%closed
-   end function group_open
 
    !> '&name' of the last group, for messages.
    pure function open_group_name(r) result(name)
@@ -587,29 +461,22 @@ contains
    pure function shown_text(s) result(shown)
       character(len=*), intent(in) :: s             !< the text, as the deck holds it
       character(len=:), allocatable :: shown
-      character(len=:), allocatable :: buf
       character(len=*), parameter :: hex = '0123456789ABCDEF'
-      integer :: i, n, m, code, limit
-      limit = min(len(s), max_shown)
-      allocate (character(len=4*limit + 8) :: buf)
-      n = 0
+      integer :: i, m, code
+      shown = ''
       i = 1
-      do while (i <= limit)
+      do while (i <= min(len(s), max_shown))
          code = ichar(s(i:i))
-         m = 1
-         if (code >= 128) m = utf8_length(s, i)
-         if (code >= 32 .and. code /= 127 .and. m > 0) then
-            buf(n + 1:n + m) = s(i:i + m - 1)
-            n = n + m
-            i = i + m
+         m = merge(utf8_length(s, i), 1, code >= 128)
+         if (code < 32 .or. code == 127 .or. m == 0) then
+            shown = shown // '\x' // hex(code/16 + 1:code/16 + 1) // hex(mod(code, 16) + 1:mod(code, 16) + 1)
+            m = 1
          else
-            buf(n + 1:n + 4) = '\x' // hex(code/16 + 1:code/16 + 1) // hex(mod(code, 16) + 1:mod(code, 16) + 1)
-            n = n + 4
-            i = i + 1
+            shown = shown // s(i:i + m - 1)
          end if
+         i = i + m
       end do
-      shown = buf(:n)
-      if (limit < len(s) .and. i <= len(s)) shown = shown // '...'
+      if (i <= len(s)) shown = shown // '...'
    end function shown_text
 
    !> Bytes of the whole UTF-8 character at s(i:i) (a byte >= 128); 0 for a
@@ -617,31 +484,22 @@ contains
    pure integer function utf8_length(s, i) result(m)
       character(len=*), intent(in) :: s         !< the text
       integer, intent(in) :: i                  !< where the character starts
-      integer :: b0, b1, k, lo, hi
+      integer :: b0, b1, k, n, lo, hi
       b0 = ichar(s(i:i))
       m = 0
-      select case (b0)
-      case (194:223); m = 2
-      case (224:239); m = 3
-      case (240:244); m = 4
-      case default;   return
-      end select
-      if (i + m - 1 > len(s)) then
-         m = 0
-         return
-      end if
+      if (b0 < 194 .or. b0 > 244) return
+      n = 2 + merge(1, 0, b0 >= 224) + merge(1, 0, b0 >= 240)
+      if (i + n - 1 > len(s)) return
       lo = 128;  hi = 191
+      if (b0 == 194) lo = 160                   ! C1 controls
       if (b0 == 224) lo = 160
       if (b0 == 237) hi = 159
       if (b0 == 240) lo = 144
       if (b0 == 244) hi = 143
       b1 = ichar(s(i+1:i+1))
-      if (b1 < lo .or. b1 > hi) m = 0
-      do k = i + 2, i + m - 1
-         if (ichar(s(k:k)) < 128 .or. ichar(s(k:k)) > 191) m = 0
-      end do
-      if (m == 2 .and. b0 == 194 .and. b1 <= 159) m = 0                 ! C1 controls
-      if (m == 3 .and. s(i:i + 2) == byte_order_mark) m = 0
+      if (b1 < lo .or. b1 > hi .or. s(i:i + n - 1) == byte_order_mark) return
+      if (any([(ichar(s(k:k)) < 128 .or. ichar(s(k:k)) > 191, k = i + 2, i + n - 1)])) return
+      m = n
    end function utf8_length
 
 end module deck_text

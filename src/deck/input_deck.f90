@@ -11,9 +11,9 @@ module input_deck
    use storage_choice, only: resolve_storage, matrices_memory
    use file_system, only: path_problem, prefix_problem, nearest_directory
    use deck_text, only: item_t, group_text_t, read_deck_text, split_value_text, lower_case, shown_text
-   use deck_echo, only: unknown_name, interval, interval_text
+   use deck_echo, only: unknown_name, interval, interval_text, deck_value_text
    use deck_schema, only: deck_t, value_t, deck_var_t, deck_vars, deck_groups, deck_bind, find_var, &
-      strength_given, is_given, words_of, words_quoted, &
+      strength_given, is_given, words_of, words_quoted, strength_names, toughness_names, &
       kind_real, kind_integer, kind_logical, kind_word, kind_path, kind_reals, &
       max_word_len, max_path_len, max_list_len
    implicit none
@@ -34,14 +34,11 @@ module input_deck
 
    !> The checks of a deck so far: the first failure wins.
    type :: checks_t
-      character(len=:), allocatable :: source       !< the deck's name in messages
       integer :: stat = 0                           !< 0, or failed after a failure
       character(len=:), allocatable :: message      !< the first failure's one-line message
    end type checks_t
 
 contains
-
-   ! ================================================================ reading
 
    !> The deck of the schema's defaults (the paper's values), source '<defaults>'.
    function default_deck() result(deck)
@@ -75,76 +72,59 @@ contains
       logical, intent(in), optional :: check        !< check the deck (default .true.)
       type(group_text_t), allocatable :: groups(:)
       character(len=:), allocatable :: what
-      integer :: line, ig, jg, ia, ja, iv
-      type(value_t) :: v
+      integer :: line, ig
       deck = default_deck()
       deck%source = source
       call read_deck_text(unit, groups, stat, line, what)
-      if (stat /= 0) then
-         if (line > 0) what = 'line ' // int_str(line) // ': ' // what
-         call fail(what)
-         return
-      end if
-      if (size(groups) == 0) then
-         call fail('the deck has no namelist group: an empty deck would run the default scene ' &
-            // '(give at least one group, e.g. &analysis kind = ''impact'' /)')
-         return
-      end if
-      groups_loop: do ig = 1, size(groups)
-         associate (g => groups(ig))
-            if (.not. any(deck_groups == g%name)) then
-               call fail(unknown_name(g%name, ''))
-               return
-            end if
-            do jg = 1, ig - 1
-               if (groups(jg)%name == g%name) then
-                  call fail('&' // g%name // ': the group is given twice (lines ' // int_str(groups(jg)%line) &
-                     // ' and ' // int_str(g%line) // '); give each group once')
-                  return
-               end if
-            end do
-            assignments: do ia = 1, size(g%assignments)
-               associate (a => g%assignments(ia))
-                  iv = find_var(g%name, a%name)
-                  if (iv == 0) then
-                     call fail(unknown_name(g%name, a%name))
-                     return
-                  end if
-                  do ja = 1, ia - 1
-                     if (g%assignments(ja)%name == a%name) then
-                        call fail('&' // g%name // ': ' // a%name // ' = ' // items_text(a%items) &
-                           // ': given twice in the group (lines ' // int_str(g%assignments(ja)%line) // ' and ' &
-                           // int_str(a%line) // '); give each variable once')
-                        return
-                     end if
-                  end do
-                  call convert(iv, a%items, v, stat, what)
-                  if (stat /= 0) then
-                     call fail('&' // g%name // ': ' // a%name // ' = ' // items_text(a%items) // ': ' // what)
-                     return
-                  end if
-                  call deck_bind(deck, iv, v, .true.)
-                  deck%given(iv) = .true.
-               end associate
-            end do assignments
-         end associate
-      end do groups_loop
-      stat = 0
+      if (stat /= 0 .and. line > 0) what = 'line ' // int_str(line) // ': ' // what
+      if (stat == 0 .and. size(groups) == 0) what = 'the deck has no namelist group: an empty deck would run ' &
+         // 'the default scene (give at least one group, e.g. &analysis kind = ''impact'' /)'
+      do ig = 1, size(groups)
+         if (len(what) == 0) call read_group(groups, ig, deck, what)
+      end do
+      stat = merge(failed, 0, len(what) > 0)
+      if (stat /= 0) errmsg = source // ': ' // what
+      if (stat /= 0) return
       if (present(check)) then
          if (.not. check) return
       end if
       call validate_deck(deck, stat, errmsg)
-
-   contains
-
-      !> stat failed, errmsg '<source>: message'.
-      subroutine fail(message)
-         character(len=*), intent(in) :: message
-         stat = failed
-         errmsg = source // ': ' // message
-      end subroutine fail
-
    end subroutine read_deck
+
+   !> Group ig of the deck's text into the deck; what is '' or its first fault.
+   subroutine read_group(groups, ig, deck, what)
+      type(group_text_t), intent(in) :: groups(:)            !< the deck's groups
+      integer, intent(in) :: ig                              !< the group to read
+      type(deck_t), intent(inout) :: deck                    !< the deck
+      character(len=:), allocatable, intent(inout) :: what   !< '' or what is wrong
+      type(value_t) :: v
+      integer :: jg, ia, ja, iv, stat
+      associate (g => groups(ig))
+         if (.not. any(deck_groups == g%name)) what = unknown_name(g%name, '')
+         do jg = 1, ig - 1
+            if (groups(jg)%name == g%name .and. len(what) == 0) what = '&' // g%name // ': the group is given ' &
+               // 'twice (lines ' // int_str(groups(jg)%line) // ' and ' // int_str(g%line) // '); give each group once'
+         end do
+         do ia = 1, size(g%assignments)
+            if (len(what) > 0) return
+            associate (a => g%assignments(ia))
+               iv = find_var(g%name, a%name)
+               if (iv == 0) what = unknown_name(g%name, a%name)
+               do ja = 1, ia - 1
+                  if (g%assignments(ja)%name == a%name .and. len(what) == 0) what = '&' // g%name // ': ' &
+                     // a%name // ' = ' // items_text(a%items) // ': given twice in the group (lines ' &
+                     // int_str(g%assignments(ja)%line) // ' and ' // int_str(a%line) // '); give each variable once'
+               end do
+               if (len(what) > 0) return
+               call convert(iv, a%items, v, stat, what)
+               if (stat /= 0) what = '&' // g%name // ': ' // a%name // ' = ' // items_text(a%items) // ': ' // what
+               if (stat /= 0) return
+               call deck_bind(deck, iv, v, .true.)
+               deck%given(iv) = .true.
+            end associate
+         end do
+      end associate
+   end subroutine read_group
 
    !> read_deck of the file `path`; a directory or an unreadable file is refused.
    subroutine read_deck_file(path, deck, stat, errmsg, check)
@@ -156,19 +136,14 @@ contains
       integer :: unit, ios
       character(len=msg_len) :: msg
       logical :: exists
+      stat = failed
       inquire (file=path // '/.', exist=exists)
-      if (exists) then
-         stat = failed
-         errmsg = path // ': is a directory, not a deck file'
-         return
-      end if
+      if (exists) errmsg = path // ': is a directory, not a deck file'
+      if (exists) return
       open (newunit=unit, file=path, status='old', action='read', form='formatted', &
          access='sequential', iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         stat = failed
-         errmsg = path // ': cannot open the deck: ' // trim(msg)
-         return
-      end if
+      if (ios /= 0) errmsg = path // ': cannot open the deck: ' // trim(msg)
+      if (ios /= 0) return
       call read_deck(unit, path, deck, stat, errmsg, check)
       close (unit, iostat=ios)
    end subroutine read_deck_file
@@ -197,17 +172,16 @@ contains
       text = trim(adjustl(setting(eq + 1:)))
       iv = find_var(group, name)
       if (iv == 0) then
-         errmsg = '--set: ' // unknown_name(group, name)
-         return
+         what = unknown_name(group, name)
+      else if (len(text) == 0) then
+         what = '&' // group // ': ' // name // ' = (nothing): give a value'
+      else
+         call split_value_text(text, items, stat, what)
+         if (stat == 0) call convert(iv, items, v, stat, what)
+         if (stat /= 0) what = '&' // group // ': ' // name // ' = ' // shown_text(text) // ': ' // what
       end if
-      if (len(text) == 0) then
-         errmsg = '--set: &' // group // ': ' // name // ' = (nothing): give a value'
-         return
-      end if
-      call split_value_text(text, items, stat, what)
-      if (stat == 0) call convert(iv, items, v, stat, what)
-      if (stat /= 0) then
-         errmsg = '--set: &' // group // ': ' // name // ' = ' // shown_text(text) // ': ' // what
+      if (len(what) > 0) then
+         errmsg = '--set: ' // what
          return
       end if
       call deck_bind(deck, iv, v, .true.)
@@ -235,108 +209,82 @@ contains
       integer, intent(out) :: stat                       !< 0, or failed
       character(len=:), allocatable, intent(out) :: what !< what is wrong
       integer(int64) :: count
-      integer :: kind, ios
+      integer :: kind, k, n
       what = ''
       kind = deck_vars(iv)%kind
       count = sum(int(items%repeat, int64))
       if (kind /= kind_reals .and. count /= 1) then
-         what = 'one value expected, ' // int_str(int(min(count, int(huge(ios), int64)))) // ' given'
+         what = 'one value expected, ' // int_str(int(min(count, int(huge(n), int64)))) // ' given'
          if (any(items%counted)) what = what // ' (a repeat count r*c gives r values)'
       else if (kind == kind_reals .and. count > max_list_len) then
          what = 'more than ' // int_str(max_list_len) // ' values'
-      else
-         select case (kind)
-         case (kind_real, kind_integer)
-            if (items(1)%quoted) then
-               what = 'a number, not a quoted string, expected'
-            else if (kind == kind_real) then
-               call read_real(items(1)%text, trim(deck_vars(iv)%unit), len_trim(deck_vars(iv)%default) == 0, &
-                  v%r, what)
-            else
-               read (items(1)%text, *, iostat=ios) v%i
-               if (ios /= 0 .or. verify(trim(adjustl(items(1)%text)), '+-0123456789') /= 0 .or. v%i < -huge(v%i)) &
-                  what = 'must be a whole number (from ' // int_str(-huge(v%i)) // ' to ' // int_str(huge(v%i)) // ')'
+      else if (kind /= kind_reals) then
+         call convert_item(iv, kind, items(1), v, what)
+      else                                   ! a list: each r*c expanded to r copies of c
+         allocate (v%list(count))
+         n = 0
+         do k = 1, size(items)
+            call convert_item(iv, kind_real, items(k), v, what)
+            if (len(what) > 0) then
+               what = 'item ' // int_str(k) // ', ''' // shown_text(item_written(items(k))) // ''': ' // what
+               exit
             end if
-         case (kind_logical)
-            read (items(1)%text, *, iostat=ios) v%l
-            if (ios /= 0 .or. items(1)%quoted .or. index(items(1)%text, '/') > 0) what = 'must be .true. or .false.'
-         case (kind_word, kind_path)
-            call convert_text(kind, items(1)%text, v%s, what)
-         case (kind_reals)
-            call convert_list(items, trim(deck_vars(iv)%unit), v%list, what)
-         end select
+            v%list(n + 1:n + items(k)%repeat) = v%r
+            n = n + items(k)%repeat
+         end do
       end if
       stat = merge(failed, 0, len(what) > 0)
    end subroutine convert
 
-   !> A real from its text: what is '' for a finite number, else what is wrong.
-   subroutine read_real(text, unit, optional, x, what)
-      character(len=*), intent(in) :: text               !< the value as written
-      character(len=*), intent(in) :: unit               !< its unit, for the message
-      logical, intent(in) :: optional                    !< the variable may be left out ("not given")
-      real(dp), intent(out) :: x                         !< the number
-      character(len=:), allocatable, intent(out) :: what !< '' or what is wrong
-      integer :: ios
+   !> One value of entry iv, of the kind given, from its item: v%r (finite),
+   !> v%i, v%l or v%s (a word in lower case); what is '' or what is wrong.
+   subroutine convert_item(iv, kind, item, v, what)
+      integer, intent(in) :: iv                          !< entry of deck_vars
+      integer, intent(in) :: kind                        !< kind_real, ... (not kind_reals)
+      type(item_t), intent(in) :: item                   !< the value as written
+      type(value_t), intent(inout) :: v                  !< the value
+      character(len=:), allocatable, intent(inout) :: what !< '' or what is wrong
+      character(len=:), allocatable :: unit
       logical :: digits
-      what = ''
-      x = 0.0_dp
-      read (text, *, iostat=ios) x
-      digits = verify(text, '+-.0123456789eEdD') == 0
-      if (ios == 0 .and. digits .and. ieee_is_finite(x)) return
-      what = 'must be a real number'
-      if (unit /= '-' .and. len(unit) > 0) what = what // ' (' // unit // ')'
-      if (ios == 0 .and. digits) then
-         what = what // ' within the range of a double (magnitude below 1.8e308)'
-      else if (ios == 0 .and. .not. ieee_is_finite(x)) then
-         what = what // ': NaN and Inf are not values'
-         if (optional) what = what // ' (leave the variable out for "not given")'
-      end if
-   end subroutine read_real
-
-   !> A word (lower case) or a text from its text: what is '' or what is wrong.
-   subroutine convert_text(kind, text, s, what)
-      integer, intent(in) :: kind                        !< kind_word or kind_path
-      character(len=*), intent(in) :: text               !< the value as written
-      character(len=:), allocatable, intent(out) :: s    !< the value
-      character(len=:), allocatable, intent(out) :: what !< '' or what is wrong
-      integer :: j, k
-      what = ''
-      s = trim(adjustl(text))
-      if (kind == kind_word) s = lower_case(s)
-      if (kind == kind_word .and. len(s) > max_word_len) then
-         what = 'longer than ' // int_str(max_word_len) // ' characters'
-      else if (len(s) > max_path_len) then
-         what = 'longer than ' // int_str(max_path_len) // ' characters'
-      else
-         k = findloc([(iachar(s(j:j)) < 32 .or. iachar(s(j:j)) == 127, j = 1, len(s))], .true., dim=1)
-         if (k > 0) what = 'holds a control character (code ' // int_str(iachar(s(k:k))) // ')'
-      end if
-   end subroutine convert_text
-
-   !> A list of reals from its items, each r*c expanded to r copies of c.
-   subroutine convert_list(items, unit, list, what)
-      type(item_t), intent(in) :: items(:)               !< the values as written
-      character(len=*), intent(in) :: unit               !< their unit, for messages
-      real(dp), allocatable, intent(out) :: list(:)      !< the values
-      character(len=:), allocatable, intent(out) :: what !< '' or what is wrong
-      integer :: k, n
-      real(dp) :: x
-      allocate (list(sum(items%repeat)))
-      n = 0
-      do k = 1, size(items)
-         what = ''
-         if (items(k)%quoted) what = 'a number, not a quoted string, expected'
-         if (len(what) == 0) call read_real(items(k)%text, unit, .false., x, what)
-         if (len(what) > 0) then
-            what = 'item ' // int_str(k) // ', ''' // shown_text(item_written(items(k))) // ''': ' // what
-            return
+      integer :: ios, j, k
+      unit = trim(deck_vars(iv)%unit)
+      select case (kind)
+      case (kind_real, kind_integer)
+         if (item%quoted) then
+            what = 'a number, not a quoted string, expected'
+         else if (kind == kind_real) then
+            read (item%text, *, iostat=ios) v%r
+            digits = verify(item%text, '+-.0123456789eEdD') == 0
+            if (ios == 0 .and. digits .and. ieee_is_finite(v%r)) return
+            what = 'must be a real number'
+            if (unit /= '-' .and. len(unit) > 0) what = what // ' (' // unit // ')'
+            if (ios == 0 .and. digits) then
+               what = what // ' within the range of a double (magnitude below 1.8e308)'
+            else if (ios == 0 .and. .not. ieee_is_finite(v%r)) then
+               what = what // ': NaN and Inf are not values'
+               if (len_trim(deck_vars(iv)%default) == 0) what = what // ' (leave the variable out for "not given")'
+            end if
+         else
+            read (item%text, *, iostat=ios) v%i
+            if (ios /= 0 .or. verify(trim(adjustl(item%text)), '+-0123456789') /= 0 .or. v%i < -huge(v%i)) &
+               what = 'must be a whole number (from ' // int_str(-huge(v%i)) // ' to ' // int_str(huge(v%i)) // ')'
          end if
-         list(n + 1:n + items(k)%repeat) = x
-         n = n + items(k)%repeat
-      end do
-   end subroutine convert_list
-
-   ! ============================================================= checking
+      case (kind_logical)
+         read (item%text, *, iostat=ios) v%l
+         if (ios /= 0 .or. item%quoted .or. index(item%text, '/') > 0) what = 'must be .true. or .false.'
+      case (kind_word, kind_path)
+         v%s = trim(adjustl(item%text))
+         if (kind == kind_word) v%s = lower_case(v%s)
+         k = findloc([(iachar(v%s(j:j)) < 32 .or. iachar(v%s(j:j)) == 127, j = 1, len(v%s))], .true., dim=1)
+         if (kind == kind_word .and. len(v%s) > max_word_len) then
+            what = 'longer than ' // int_str(max_word_len) // ' characters'
+         else if (len(v%s) > max_path_len) then
+            what = 'longer than ' // int_str(max_path_len) // ' characters'
+         else if (k > 0) then
+            what = 'holds a control character (code ' // int_str(iachar(v%s(k:k))) // ')'
+         end if
+      end select
+   end subroutine convert_item
 
    !> Checks every value against its range and the combinations the program
    !> needs, to the first bad one; keywords come back in lower case.
@@ -345,9 +293,18 @@ contains
       integer, intent(out) :: stat                  !< 0 when every value is acceptable
       character(len=*), intent(inout) :: errmsg     !< the message on failure
       type(checks_t) :: c
+      type(value_t) :: v
+      integer :: iv
       if (.not. allocated(deck%source)) deck%source = '<deck>'
-      c%source = deck%source
-      call check_entries(deck, c)
+      do iv = 1, size(deck_vars)           ! each variable against its range, keywords in lower case
+         call deck_bind(deck, iv, v, .false.)
+         if (deck_vars(iv)%kind == kind_word) then
+            v%s = lower_case(trim(adjustl(v%s)))
+            call deck_bind(deck, iv, v, .true.)
+         end if
+         call check_range(c, deck, iv, v)
+         if (c%stat /= 0) exit
+      end do
       if (c%stat == 0) call check_plate(deck, c)
       if (c%stat == 0) call check_domain(deck, c)
       if (c%stat == 0) call check_analysis(deck, c)
@@ -357,47 +314,28 @@ contains
       if (stat /= 0) errmsg = c%message
    end subroutine validate_deck
 
-   !> Each variable against its range, its keywords first made lower case.
-   subroutine check_entries(deck, c)
-      type(deck_t), intent(inout) :: deck           !< the deck; its keywords come back in lower case
-      type(checks_t), intent(inout) :: c            !< the checks so far
-      type(value_t) :: v
-      integer :: iv
-      entries: do iv = 1, size(deck_vars)
-         call deck_bind(deck, iv, v, .false.)
-         if (deck_vars(iv)%kind == kind_word) then
-            v%s = lower_case(trim(adjustl(v%s)))
-            call deck_bind(deck, iv, v, .true.)
-         end if
-         call check_range(c, iv, v)
-         if (c%stat /= 0) return
-      end do entries
-   end subroutine check_entries
-
    !> &plate, &lamina, &laminate, &impactor, &output gauge_x, gauge_y: a thin
    !> plate, a positive definite lamina, a ply, the nose and the gauge on the plate.
    subroutine check_plate(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
-      call need(c, deck%h < min(deck%a, deck%b), 'plate', 'h', real_str(deck%h), &
-         'the thickness must be smaller than a and b')
-      call need(c, deck%nu12**2 < deck%e1/deck%e2, 'lamina', 'nu12', real_str(deck%nu12), &
-         'nu12**2 must be less than e1/e2 = ' // real_str(deck%e1/deck%e2) &
-         // ' (else the lamina stiffness is not positive definite)')
-      call need(c, size(deck%angles) >= 1, 'laminate', 'angles', '(none)', 'give at least one ply')
-      call need(c, deck%diameter < min(deck%a, deck%b), 'impactor', 'diameter', real_str(deck%diameter), &
+      call need(c, deck, deck%h < min(deck%a, deck%b), 'plate', 'h', 'the thickness must be smaller than a and b')
+      call need(c, deck, deck%nu12**2 < deck%e1/deck%e2, 'lamina', 'nu12', 'nu12**2 must be less than e1/e2 = ' &
+         // real_str(deck%e1/deck%e2) // ' (else the lamina stiffness is not positive definite)')
+      call need(c, deck, size(deck%angles) >= 1, 'laminate', 'angles', 'give at least one ply', '(none)')
+      call need(c, deck, deck%diameter < min(deck%a, deck%b), 'impactor', 'diameter', &
          'the nose must be smaller than the plate: diameter < min(a, b) = ' // real_str(min(deck%a, deck%b)) // ' m')
-      call need(c, abs(deck%x0) <= 0.5_dp*(deck%a - deck%diameter), 'impactor', 'x0', real_str(deck%x0), &
+      call need(c, deck, abs(deck%x0) <= 0.5_dp*(deck%a - deck%diameter), 'impactor', 'x0', &
          'the nose must lie on the plate: |x0| <= (a - diameter)/2 = ' // real_str(0.5_dp*(deck%a - deck%diameter)) &
          // ' m (x0 is measured from the plate centre)')
-      call need(c, abs(deck%y0) <= 0.5_dp*(deck%b - deck%diameter), 'impactor', 'y0', real_str(deck%y0), &
+      call need(c, deck, abs(deck%y0) <= 0.5_dp*(deck%b - deck%diameter), 'impactor', 'y0', &
          'the nose must lie on the plate: |y0| <= (b - diameter)/2 = ' // real_str(0.5_dp*(deck%b - deck%diameter)) &
          // ' m (y0 is measured from the plate centre)')
-      if (is_given(deck, 'output', 'gauge_x')) call need(c, abs(deck%gauge_x) <= 0.5_dp*deck%a, 'output', 'gauge_x', &
-         real_str(deck%gauge_x), 'the gauge must lie on the plate: |gauge_x| <= a/2 = ' // real_str(0.5_dp*deck%a) &
+      if (is_given(deck, 'output', 'gauge_x')) call need(c, deck, abs(deck%gauge_x) <= 0.5_dp*deck%a, 'output', &
+         'gauge_x', 'the gauge must lie on the plate: |gauge_x| <= a/2 = ' // real_str(0.5_dp*deck%a) &
          // ' m (gauge_x is measured from the plate centre)')
-      if (is_given(deck, 'output', 'gauge_y')) call need(c, abs(deck%gauge_y) <= 0.5_dp*deck%b, 'output', 'gauge_y', &
-         real_str(deck%gauge_y), 'the gauge must lie on the plate: |gauge_y| <= b/2 = ' // real_str(0.5_dp*deck%b) &
+      if (is_given(deck, 'output', 'gauge_y')) call need(c, deck, abs(deck%gauge_y) <= 0.5_dp*deck%b, 'output', &
+         'gauge_y', 'the gauge must lie on the plate: |gauge_y| <= b/2 = ' // real_str(0.5_dp*deck%b) &
          // ' m (gauge_y is measured from the plate centre)')
    end subroutine check_plate
 
@@ -407,11 +345,11 @@ contains
       type(checks_t), intent(inout) :: c            !< the checks so far
       character(len=:), allocatable :: why
       why = prefix_problem(deck%prefix)
-      call need(c, len(why) == 0, 'output', 'prefix', "'" // shown_text(deck%prefix) // "'", why)
+      call need(c, deck, len(why) == 0, 'output', 'prefix', why, "'" // shown_text(deck%prefix) // "'")
       if (c%stat /= 0) return
-      call need(c, .not. read_only_file_system(deck%prefix), 'output', 'prefix', "'" // shown_text(deck%prefix) &
-         // "'", 'is on a read-only file system (' // shown_text(nearest_directory(deck%prefix)) &
-         // ' is mounted read-only): choose a prefix where the results can be written')
+      call need(c, deck, .not. read_only_file_system(deck%prefix), 'output', 'prefix', 'is on a read-only ' &
+         // 'file system (' // shown_text(nearest_directory(deck%prefix)) // ' is mounted read-only): ' &
+         // 'choose a prefix where the results can be written', "'" // shown_text(deck%prefix) // "'")
    end subroutine check_prefix
 
    !> &mesh domain: D16 = D26 = 0 and the impact point on its symmetry lines,
@@ -421,43 +359,40 @@ contains
       type(checks_t), intent(inout) :: c            !< the checks so far
       integer :: n, i
       if (deck%domain /= 'full' .and. deck%domain /= 'auto') &
-         call need(c, deck%bend_twist /= 'keep', 'laminate', 'bend_twist', "'keep'", "the symmetry lines of " &
+         call need(c, deck, deck%bend_twist /= 'keep', 'laminate', 'bend_twist', "the symmetry lines of " &
          // "&mesh domain = '" // deck%domain // "' need D16 = D26 = 0 (section 3.1): use domain = 'full'")
-      if (deck%average_bend_twist) call need(c, deck%bend_twist /= 'keep', 'laminate', 'bend_twist', "'keep'", &
+      if (deck%average_bend_twist) call need(c, deck, deck%bend_twist /= 'keep', 'laminate', 'bend_twist', &
          'contradicts &mesh average_bend_twist = .true., which accepts D16 = D26 = 0')
       if (deck%domain == 'quarter' .or. deck%domain == 'strip') &
-         call need(c, deck%x0 == 0.0_dp .and. deck%y0 == 0.0_dp, 'mesh', 'domain', "'" // deck%domain // "'", &
+         call need(c, deck, deck%x0 == 0.0_dp .and. deck%y0 == 0.0_dp, 'mesh', 'domain', &
          'needs the impact point at the centre, but &impactor x0 = ' // real_str(deck%x0) // ' m, y0 = ' &
          // real_str(deck%y0) // " m: use domain = 'auto', 'half' or 'full'")
-      if (deck%domain == 'half') call need(c, deck%x0 == 0.0_dp .or. deck%y0 == 0.0_dp, 'mesh', 'domain', "'half'", &
+      if (deck%domain == 'half') call need(c, deck, deck%x0 == 0.0_dp .or. deck%y0 == 0.0_dp, 'mesh', 'domain', &
          'needs the impact point on a centre line (x0 = 0 or y0 = 0), but &impactor x0 = ' &
          // real_str(deck%x0) // ' m, y0 = ' // real_str(deck%y0) // " m: use domain = 'auto' or 'full'")
       if (c%stat /= 0 .or. .not. (deck%domain == 'quarter' .or. deck%domain == 'strip')) return
       n = size(deck%angles)
-      symmetry: do i = 1, n/2
-         if (deck%angles(i) == deck%angles(n + 1 - i)) cycle symmetry
-         call need(c, .false., 'laminate', 'angles', list_str(deck%angles, max_quoted), &
-            'not symmetric about the mid-plane (ply ' // int_str(i) // ' at ' // real_str(deck%angles(i)) &
-            // ' deg, ply ' // int_str(n + 1 - i) // ' at ' // real_str(deck%angles(n + 1 - i)) &
-            // " deg), but &mesh domain = '" // deck%domain // "' assumes B = 0: use domain = 'full'")
-         exit symmetry
-      end do symmetry
+      i = findloc([(deck%angles(i) == deck%angles(n + 1 - i), i = 1, n/2)], .false., dim=1)
+      if (i > 0) call need(c, deck, .false., 'laminate', 'angles', 'not symmetric about the mid-plane (ply ' &
+         // int_str(i) // ' at ' // real_str(deck%angles(i)) // ' deg, ply ' // int_str(n + 1 - i) // ' at ' &
+         // real_str(deck%angles(n + 1 - i)) // " deg), but &mesh domain = '" // deck%domain &
+         // "' assumes B = 0: use domain = 'full'", list_str(deck%angles, max_quoted))
    end subroutine check_domain
 
    !> &analysis: theory, dt, cr1, what the run needs, the storage of modes.
    subroutine check_analysis(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
-      if (deck%theory == 'auto') call need(c, deck%analysis_kind == 'impact', 'analysis', 'theory', "'auto'", &
+      if (deck%theory == 'auto') call need(c, deck, deck%analysis_kind == 'impact', 'analysis', 'theory', &
          "chooses from the impact's deflection estimate: give 'linear' or 'nonlinear' for kind = '" &
          // deck%analysis_kind // "'")
-      if (is_given(deck, 'analysis', 'dt')) call need(c, deck%dt < deck%t_end, 'analysis', 'dt', real_str(deck%dt), &
+      if (is_given(deck, 'analysis', 'dt')) call need(c, deck, deck%dt < deck%t_end, 'analysis', 'dt', &
          'must be less than t_end = ' // real_str(deck%t_end))
-      call need(c, deck%cr1 >= min_cr1, 'analysis', 'cr1', real_str(deck%cr1), 'must be at least ' &
-         // real_str(min_cr1) // ' (100 eps): eq. (17) cannot be met below the rounding of the force')
+      call need(c, deck, deck%cr1 >= min_cr1, 'analysis', 'cr1', 'must be at least ' // real_str(min_cr1) &
+         // ' (100 eps): eq. (17) cannot be met below the rounding of the force')
       if (c%stat == 0) call check_needs(deck, c)
-      if (deck%analysis_kind == 'modes') call need(c, deck%storage == 'band' .or. deck%storage == 'auto', 'analysis', &
-         'storage', "'" // deck%storage // "'", "kind = 'modes' needs storage = 'band' or 'auto' (LAPACK's banded " &
+      if (deck%analysis_kind == 'modes') call need(c, deck, deck%storage == 'band' .or. deck%storage == 'auto', &
+         'analysis', 'storage', "kind = 'modes' needs storage = 'band' or 'auto' (LAPACK's banded " &
          // "eigensolver dsbgvx)")
    end subroutine check_analysis
 
@@ -468,41 +403,39 @@ contains
       type(checks_t), intent(inout) :: c            !< the checks so far
       real(dp), parameter :: max_steps = 1.0e8_dp, text_row_bytes = 230.0_dp, row_bytes = 360.0_dp, &
                              h5_fixed_bytes = 65536.0_dp
-      real(dp) :: steps, neq, memory, machine, output, room, biggest
+      real(dp) :: steps, rows, neq, memory, machine, output, room, biggest
       ! dt, nx, ny not given: checked once chosen from the scene (src/model/scene_settings.f90)
       if (.not. (is_given(deck, 'analysis', 'dt') .and. is_given(deck, 'mesh', 'nx') &
                  .and. is_given(deck, 'mesh', 'ny'))) return
       steps = deck%t_end/deck%dt
-      call need(c, steps <= max_steps, 'analysis', 'dt', real_str(deck%dt), 'gives t_end/dt = ' &
-         // real_short(steps) // ' time steps, more than the limit of ' // real_short(max_steps) &
-         // ' (a longer dt, or a shorter t_end)')
+      call need(c, deck, steps <= max_steps, 'analysis', 'dt', 'gives t_end/dt = ' // real_short(steps) &
+         // ' time steps, more than the limit of ' // real_short(max_steps) // ' (a longer dt, or a shorter t_end)')
       if (c%stat /= 0) return
       call model_size(deck, neq, memory)
       machine = memory_available()
-      if (machine > 0.0_dp) call need(c, memory < machine, 'mesh', 'nx', int_str(deck%nx), 'with ny = ' &
-         // int_str(deck%ny) // ' the model would need about ' // real_short(memory/gib) // ' GiB of memory (' &
-         // real_short(neq) // ' equations), more than the ' // real_short(machine/gib) &
-         // ' GiB free for it on this machine (MemAvailable, its control group''s limit): a coarser mesh, ' &
-         // 'or a graded one (&mesh grading)')
+      if (machine > 0.0_dp) call need(c, deck, memory < machine, 'mesh', 'nx', 'with ny = ' // int_str(deck%ny) &
+         // ' the model would need about ' // real_short(memory/gib) // ' GiB of memory (' // real_short(neq) &
+         // ' equations), more than the ' // real_short(machine/gib) // ' GiB free for it on this machine ' &
+         // '(MemAvailable, its control group''s limit): a coarser mesh, or a graded one (&mesh grading)')
       room = memory_room()
-      if (room >= 0.0_dp) call need(c, model_share*memory + library_bytes < room, 'mesh', 'nx', int_str(deck%nx), &
+      if (room >= 0.0_dp) call need(c, deck, model_share*memory + library_bytes < room, 'mesh', 'nx', &
          'with ny = ' // int_str(deck%ny) // ' the model would need about ' &
          // real_short((model_share*memory + library_bytes)/mib) // ' MiB of memory (' // real_short(neq) &
          // ' equations), more than the ' // real_short(room/mib) // ' MiB this process may still take ' &
          // '(its limit, ulimit -v or -d): a coarser mesh, or a higher limit')
       if (c%stat /= 0 .or. deck%analysis_kind == 'modes' .or. deck%analysis_kind == 'static') return
-      output = (steps/real(deck%every, dp) + 1.0_dp)*row_bytes
+      rows = steps/real(deck%every, dp) + 1.0_dp
+      output = rows*row_bytes
       if (deck%hdf5 .and. deck%analysis_kind == 'impact') output = output + h5_fixed_bytes &
          + (steps/real(deck%fields_every, dp) + 5.0_dp)*neq*8.0_dp
-      biggest = max(output - (steps/real(deck%every, dp) + 1.0_dp)*text_row_bytes, &
-                    (steps/real(deck%every, dp) + 1.0_dp)*text_row_bytes)
+      biggest = max(output - rows*text_row_bytes, rows*text_row_bytes)
       room = file_size_limit()
-      if (room > 0.0_dp) call need(c, biggest < room, 'output', 'every', int_str(deck%every), &
-         'with fields_every = ' // int_str(deck%fields_every) // ' a result file would reach about ' &
-         // real_short(biggest/mib) // ' MiB, more than the ' // real_short(room/mib) // ' MiB this process ' &
-         // 'may write to one file (ulimit -f): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
+      if (room > 0.0_dp) call need(c, deck, biggest < room, 'output', 'every', 'with fields_every = ' &
+         // int_str(deck%fields_every) // ' a result file would reach about ' // real_short(biggest/mib) &
+         // ' MiB, more than the ' // real_short(room/mib) // ' MiB this process may write to one file ' &
+         // '(ulimit -f): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
       room = free_disk_space(deck%prefix)
-      if (room > 0.0_dp) call need(c, output < room, 'output', 'every', int_str(deck%every), 'with fields_every = ' &
+      if (room > 0.0_dp) call need(c, deck, output < room, 'output', 'every', 'with fields_every = ' &
          // int_str(deck%fields_every) // ' the results would take about ' // real_short(output/gib) &
          // ' GiB, more than the ' // real_short(room/gib) // ' GiB free where they go (prefix ''' &
          // deck%prefix // '''): write fewer rows (a larger every, fields_every) or set hdf5 = .false.')
@@ -530,70 +463,72 @@ contains
    subroutine check_strength(deck, c)
       type(deck_t), intent(in) :: deck              !< the deck
       type(checks_t), intent(inout) :: c            !< the checks so far
-      character(len=3), parameter :: names(6) = [character(len=3) :: 'xt', 'xc', 'yt', 'yc', 's12', 's23']
-      character(len=3), parameter :: energies(6) = [character(len=3) :: 'g1c', 'g2c', 'gft', 'gfc', 'gmt', 'gmc']
-      real(dp) :: given(6)
       logical :: missing(6)
       integer :: k
-      given = [deck%g1c, deck%g2c, deck%gft, deck%gfc, deck%gmt, deck%gmc]
-      do k = 1, size(energies)
-         if (.not. is_given(deck, 'strength', trim(energies(k)))) cycle
-         call need(c, k <= 2 .or. strength_given(deck), 'strength', trim(energies(k)), real_str(given(k)), &
+      do k = 1, size(toughness_names)
+         if (.not. is_given(deck, 'strength', trim(toughness_names(k)))) cycle
+         call need(c, deck, k <= 2 .or. strength_given(deck), 'strength', trim(toughness_names(k)), &
             'a ply fracture energy needs the six ply strengths xt, xc, yt, yc, s12, s23')
-         call need(c, deck%analysis_kind == 'impact', 'strength', trim(energies(k)), real_str(given(k)), &
+         call need(c, deck, deck%analysis_kind == 'impact', 'strength', trim(toughness_names(k)), &
             "the fracture toughnesses are used by kind = 'impact' only")
       end do
-      missing = [(.not. is_given(deck, 'strength', trim(names(k))), k = 1, size(names))]
-      if (any(missing) .and. .not. all(missing)) call need(c, .false., 'strength', trim(names(findloc(missing, &
-         .true., dim=1))), '(not given)', 'give all six strengths (xt, xc, yt, yc, s12, s23) or none')
-      if (deck%given(find_var('strength', 'criterion'))) call need(c, .not. all(missing), 'strength', 'criterion', &
-         "'" // deck%criterion // "'", 'needs the ply strengths xt, xc, yt, yc, s12, s23 (the paper gives none)')
-      if (strength_given(deck)) call need(c, deck%analysis_kind == 'impact', 'strength', 'xt', real_str(deck%xt), &
+      missing = [(.not. is_given(deck, 'strength', trim(strength_names(k))), k = 1, size(strength_names))]
+      k = findloc(missing, .true., dim=1)
+      if (any(missing) .and. .not. all(missing)) call need(c, deck, .false., 'strength', trim(strength_names(k)), &
+         'give all six strengths (xt, xc, yt, yc, s12, s23) or none')
+      if (deck%given(find_var('strength', 'criterion'))) call need(c, deck, .not. all(missing), 'strength', &
+         'criterion', 'needs the ply strengths xt, xc, yt, yc, s12, s23 (the paper gives none)')
+      if (strength_given(deck)) call need(c, deck, deck%analysis_kind == 'impact', 'strength', 'xt', &
          "the ply stresses and failure indices are computed by kind = 'impact' only")
    end subroutine check_strength
 
    !> Entry iv's value against the schema's range.
-   subroutine check_range(c, iv, v)
+   subroutine check_range(c, deck, iv, v)
       type(checks_t), intent(inout) :: c            !< the checks so far
+      type(deck_t), intent(in) :: deck              !< the deck, entry iv's value v
       integer, intent(in) :: iv                     !< entry of deck_vars
       type(value_t), intent(in) :: v                !< its value
       type(deck_var_t) :: e
       integer :: j, k
       e = deck_vars(iv)      ! (a copy: gfortran 12 loses an associate name of a constant's element)
       select case (e%kind)
-      case (kind_real)
-         if (v%given) call need(c, in_interval(v%r, e%range), trim(e%group), trim(e%name), real_str(v%r), &
-            interval_text(e%range, e%unit))
-      case (kind_integer)
-         if (v%given) call need(c, in_interval(real(v%i, dp), e%range), trim(e%group), trim(e%name), int_str(v%i), &
-            interval_text(e%range, e%unit))
+      case (kind_real, kind_integer)
+         if (v%given) call need(c, deck, in_interval(merge(v%r, real(v%i, dp), e%kind == kind_real), e%range), &
+            trim(e%group), trim(e%name), interval_text(e%range, e%unit))
       case (kind_reals)
          if (len_trim(e%range) == 0) return
          k = findloc([(in_interval(v%list(j), e%range), j = 1, size(v%list))], .false., dim=1)
-         if (k > 0) call need(c, .false., trim(e%group), trim(e%name) // '(' // int_str(k) // ')', &
-            real_str(v%list(k)), interval_text(e%range, e%unit))
+         if (k > 0) call need(c, deck, .false., trim(e%group), trim(e%name) // '(' // int_str(k) // ')', &
+            interval_text(e%range, e%unit), real_str(v%list(k)))
       case (kind_word)
-         call need(c, index(' ' // words_of(e%range) // ' ', ' ' // v%s // ' ') > 0 .and. len(v%s) > 0, &
-            trim(e%group), trim(e%name), "'" // v%s // "'", 'must be one of ' // words_quoted(e%range))
+         call need(c, deck, index(' ' // words_of(e%range) // ' ', ' ' // v%s // ' ') > 0 .and. len(v%s) > 0, &
+            trim(e%group), trim(e%name), 'must be one of ' // words_quoted(e%range))
       case (kind_path)
-         call need(c, len(v%s) <= max_path_len, trim(e%group), trim(e%name), shown_text(v%s), &
-            'longer than ' // int_str(max_path_len) // ' characters')
-         if (len(v%s) > 0) call need(c, len(path_problem(v%s)) == 0, trim(e%group), trim(e%name), &
-            shown_text(v%s), path_problem(v%s))
+         call need(c, deck, len(v%s) <= max_path_len, trim(e%group), trim(e%name), &
+            'longer than ' // int_str(max_path_len) // ' characters', shown_text(v%s))
+         if (len(v%s) > 0) call need(c, deck, len(path_problem(v%s)) == 0, trim(e%group), trim(e%name), &
+            path_problem(v%s), shown_text(v%s))
       end select
    end subroutine check_range
 
-   !> Fails with "<deck>: &group: name = value: what" unless ok (the first failure wins).
-   subroutine need(c, ok, group, name, value, what)
+   !> Fails with "<deck>: &group: name = value: what" unless ok (the first
+   !> failure wins); the value as the echo shows it unless given.
+   subroutine need(c, deck, ok, group, name, what, value)
       type(checks_t), intent(inout) :: c            !< the checks so far
+      type(deck_t), intent(in) :: deck              !< the deck
       logical, intent(in) :: ok                     !< the check passes
       character(len=*), intent(in) :: group         !< the group, without '&'
       character(len=*), intent(in) :: name          !< the variable
-      character(len=*), intent(in) :: value         !< its value, as a message shows it
       character(len=*), intent(in) :: what          !< what is wrong
+      character(len=*), intent(in), optional :: value   !< its value, as a message shows it
       if (c%stat /= 0 .or. ok) return
       c%stat = failed
-      c%message = c%source // ': &' // group // ': ' // name // ' = ' // value // ': ' // what
+      if (present(value)) then
+         c%message = deck%source // ': &' // group // ': ' // name // ' = ' // value // ': ' // what
+      else
+         c%message = deck%source // ': &' // group // ': ' // name // ' = ' &
+            // deck_value_text(deck, find_var(group, name)) // ': ' // what
+      end if
    end subroutine need
 
    !> x is finite and in the interval written as '(lo, hi)', '[lo, hi]', ...
@@ -605,8 +540,6 @@ contains
       call interval(range, lo, hi, lo_open, hi_open)
       in_interval = ieee_is_finite(x) .and. merge(x > lo, x >= lo, lo_open) .and. merge(x < hi, x <= hi, hi_open)
    end function in_interval
-
-   ! ============================================================== helpers
 
    !> The items as they were written, for a message, cut after max_quoted characters.
    function items_text(items) result(text)
