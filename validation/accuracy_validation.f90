@@ -19,7 +19,8 @@
 !>             quarter's side), and the same family refined 1.5 times;
 !>       and, for a simply supported linear scene, the Navier modal
 !>       solution (validation/navier_impact.f90: exact in space, the same
-!>       Newmark rule) at dt_c/4 and dt_c/8.
+!>       Newmark rule) at dt_c/4 and dt_c/8; and one plain run of the deck
+!>       (the unit of the price).
 !>  3. The true error of q: its time part q - q(dt_c/4) on its mesh plus
 !>     its mesh part q - q(finer graded mesh) at its step; with the Navier
 !>     solution, q - q_Navier(dt_c/8) directly. The reference's own
@@ -177,6 +178,7 @@ contains
       call add_impact(jobs, scene, path, 'm1', dt, n1x, n1y, g1, 1.0_dp, gauge)
       call add_impact(jobs, scene, path, 'm2', dt, nint(ref_factor*n1x), nint(ref_factor*n1y), &
                       g1**(1.0_dp/ref_factor), 3.0_dp, gauge)
+      call add_plain(jobs, scene, path)
       if (scene%navier) then
          call add_navier(jobs, scene, path, 'n4', dt/4.0_dp, deck%t_end)
          call add_navier(jobs, scene, path, 'n8', dt/8.0_dp, deck%t_end)
@@ -207,6 +209,19 @@ contains
          j%weight = weight*real(nx_ref, dp)*real(ny_ref, dp)
          jobs = [jobs, j]
       end subroutine add_impact
+
+   !> The plain run of the scene's deck, the unit of the ladder's price.
+      subroutine add_plain(jobs, scene, path)
+         type(job_t), allocatable, intent(inout) :: jobs(:)
+         type(scene_t), intent(in) :: scene
+         character(len=*), intent(in) :: path
+         type(job_t) :: j
+         j%name = trim(scene%name) // '_plain'
+         j%exe = exe
+         j%args = [character(len=4096) :: '--single', '--set', 'output.prefix=''' // out_dir // &
+            trim(j%name) // '''', '--set', 'output.overwrite=.true.', path]
+         jobs = [jobs, j]
+      end subroutine add_plain
 
    !> A Navier reference at dt: the scene's deck with its &analysis dt
       !> replaced, written into out_dir.
@@ -309,6 +324,16 @@ contains
       if (st == 0) x = summary_value(s, trim(keys(iq)), huge(1.0_dp))
    end function reference
 
+   !> The cpu time of the scene's plain run (s).
+   real(dp) function plain_cpu(scene) result(x)
+      type(scene_t), intent(in) :: scene
+      type(summary_t) :: s
+      integer :: st
+      call read_summary(out_dir // trim(scene%name) // '_plain_summary.dat', s, st, errmsg)
+      if (st /= 0) call fail(errmsg)
+      x = summary_value(s, 'cpu_s', 0.0_dp)
+   end function plain_cpu
+
    !> The two tables (module header, step 3) and the plot's data; nfail
    !> bounds that do not hold.
    subroutine write_tables(nfail)
@@ -324,8 +349,9 @@ contains
       open (newunit=us, file=md_dir // 'accuracy_scenes.md', status='replace', action='write')
       open (newunit=ub, file=md_dir // 'accuracy_bounds.md', status='replace', action='write')
       open (newunit=ud, file=md_dir // 'accuracy_bounds.dat', status='replace', action='write')
-      write (us, '(a)') '| scene | target | status | chosen dt (μs) | chosen mesh | runs | cpu (s) | in chosen runs |'
-      write (us, '(a)') '|---|---|---|---|---|---|---|---|'
+      write (us, '(a)') '| scene | target | status | chosen dt (μs) | chosen mesh | runs | cpu (s) | ' // &
+         'in plain runs | in chosen runs |'
+      write (us, '(a)') '|---|---|---|---|---|---|---|---|---|'
       write (ub, '(a)') '| scene | result | value | estimated error (dt + mesh) | true error (dt + mesh) | ' // &
          'reference uncertainty | estimated / true | bound |'
       write (ub, '(a)') '|---|---|---|---|---|---|---|---|'
@@ -337,6 +363,7 @@ contains
             int_str(nint(summary_value(acc(is), 'chosen_ny', 0.0_dp))) // ' | ' // &
             int_str(nint(summary_value(acc(is), 'accuracy_runs', 0.0_dp))) // ' | ' // &
             real_short(summary_value(acc(is), 'accuracy_cpu_s', 0.0_dp)) // ' | ' // &
+            int_str(nint(summary_value(acc(is), 'accuracy_cpu_s', 0.0_dp)/plain_cpu(scenes(is)))) // ' | ' // &
             real_short(summary_value(acc(is), 'accuracy_cpu_in_chosen_runs', 0.0_dp)) // ' |'
          do iq = 1, nq
             q = summary_value(acc(is), trim(keys(iq)), 0.0_dp)
