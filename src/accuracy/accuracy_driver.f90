@@ -169,7 +169,7 @@ contains
       real(dp), intent(inout) :: impact_element(2)  !< sides of level 0's element at the impact point (m)
       character(len=:), allocatable, intent(out) :: why   !< what was chosen and why, '' for the deck's mesh
       type(settings_t) :: est
-      real(dp) :: a, side(2), counted(2), g, lo
+      real(dp) :: a, side(2), counted(2), g, lo, mid
       integer :: n(2), it
       why = ''
       est = scene_settings_of(deck)
@@ -186,11 +186,9 @@ contains
       if (all(n == [deck%nx, deck%ny])) then
          lo = 1.0_dp
          do it = 1, 60
-            if (maxval(first_element(0.5_dp*(lo + g))) <= a) then
-               g = 0.5_dp*(lo + g)
-            else
-               lo = 0.5_dp*(lo + g)
-            end if
+            mid = 0.5_dp*(lo + g)
+            if (maxval(first_element(mid)) <= a) g = mid
+            if (g /= mid) lo = mid
          end do
       end if
       impact_element = first_element(g)
@@ -229,24 +227,21 @@ contains
       r%nx = mesh_count(deck%nx, deck%accuracy_mesh_factor, j)
       r%ny = mesh_count(deck%ny, deck%accuracy_mesh_factor, j)
       r%grading = deck%grading**(real(deck%nx, dp)/real(r%nx, dp))
-      r%h_impact = max(la%impact_element(1)*first_size(r%nx, r%grading)/first_size(deck%nx, deck%grading), &
-                       la%impact_element(2)*first_size(r%ny, r%grading)/first_size(deck%ny, deck%grading))
+      r%h_impact = maxval(la%impact_element*first_size([r%nx, r%ny], r%grading)/ &
+                          first_size([deck%nx, deck%ny], deck%grading))
       runs = [runs, r]
    end subroutine plan
 
    !> The size of the first of n elements graded by g over a unit length (mesh, graded_offsets).
-   pure real(dp) function first_size(n, g) result(s)
+   elemental real(dp) function first_size(n, g) result(s)
       integer, intent(in) :: n                      !< elements
       real(dp), intent(in) :: g                     !< ratio of successive sizes
-      if (g <= 1.0_dp) then
-         s = 1.0_dp/real(n, dp)
-      else
-         s = (g - 1.0_dp)/(g**n - 1.0_dp)
-      end if
+      s = 1.0_dp/real(n, dp)
+      if (g > 1.0_dp) s = (g - 1.0_dp)/(g**n - 1.0_dp)
    end function first_size
 
    !> Elements along one side at mesh level j: n0 factor^j rounded, at least one more a level.
-   pure integer function mesh_count(n0, factor, j) result(n)
+   elemental integer function mesh_count(n0, factor, j) result(n)
       integer, intent(in) :: n0                     !< level 0's count
       real(dp), intent(in) :: factor                !< &accuracy mesh_factor
       integer, intent(in) :: j                      !< the level
@@ -269,28 +264,21 @@ contains
       character(len=*), intent(inout) :: errmsg     !< what failed
       integer :: k, j, i, done_before, kj(2)
       type(choice_t) :: c
-      logical :: more
-      character(len=224) :: why
       do
          done_before = count(lad%runs%state == state_done)
          call run_planned(lad%runs, la, stat, errmsg)
          if (stat /= 0) return
          if (stop_caught() /= 0 .and. lad%runs(1)%state /= state_done) return   ! out%chosen 0: nothing to give
          i = findloc(lad%runs%state, state_failed, dim=1)
-         if (i > 0) then
-            stat = 1
-            associate (r => lad%runs(i))
-            errmsg = 'accuracy: the run ' // trim(r%name) // ' (dt ' // real_short(r%dt) // ' s, mesh ' // &
-               int_str(r%nx) // ' x ' // int_str(r%ny) // ') failed, exit status ' // int_str(r%exit_code) // ': ' // &
-               trim(r%status) // '; see ' // la%dir // trim(r%name) // '.log'
-            end associate
-            return
-         end if
-         if (lad%runs(1)%state /= state_done) then
-            stat = 1
-            errmsg = 'accuracy: the first run did not finish within &accuracy max_cpu_s = ' // real_short(la%cap) // ' s'
-            return
-         end if
+         if (lad%runs(1)%state /= state_done) errmsg = 'accuracy: the first run did not finish within ' // &
+            '&accuracy max_cpu_s = ' // real_short(la%cap) // ' s'
+         associate (r => lad%runs(max(i, 1)))
+         if (i > 0) errmsg = 'accuracy: the run ' // trim(r%name) // ' (dt ' // real_short(r%dt) // ' s, mesh ' // &
+            int_str(r%nx) // ' x ' // int_str(r%ny) // ') failed, exit status ' // int_str(r%exit_code) // ': ' // &
+            trim(r%status) // '; see ' // la%dir // trim(r%name) // '.log'
+         end associate
+         stat = merge(1, 0, i > 0 .or. lad%runs(1)%state /= state_done)
+         if (stat /= 0) return
          where (lad%runs%state == state_done .and. lad%runs%has(1)) lad%runs%contact_radius = &   ! Hertz: sqrt(R (F/k)^(2/3))
             sqrt(0.5_dp*deck%diameter*(max(lad%runs%q(1), 0.0_dp)/deck%k)**(2.0_dp/3.0_dp))
          lad%estimated = lad%runs(1)%has
@@ -301,14 +289,11 @@ contains
          call say_errors(la%unit, lad)
          c = choose_run(lad, la)
          k = c%k;  j = c%j
-         if (c%found .and. done_run(lad%runs, k, j) .and. time_partner(lad%runs, k, j) < 0 .and. &
-             .not. cross_needed(lad%runs, k, j)) then
-            out%met = .true.
-            out%status = 'met'
-            exit
-         end if
+         i = time_partner(lad%runs, k, j)
+         out%met = c%found .and. done_run(lad%runs, k, j) .and. i < 0 .and. .not. cross_needed(lad%runs, k, j)
+         if (out%met) out%status = 'met'
+         if (out%met) exit
          if (c%found) then                          ! within the cap: the chosen run and its partner
-            i = time_partner(lad%runs, k, j)
             call plan(lad%runs, deck, la, k, j)
             if (i >= 0) call plan(lad%runs, deck, la, i, j)
             if (cross_needed(lad%runs, k, j)) call plan(lad%runs, deck, la, 1, 1)
@@ -316,19 +301,14 @@ contains
             out%status = cap_status(lad, la, c)
             exit
          else
-            call refine(deck, la, lad, more, why)
-            if (.not. more) then
-               out%status = 'not met: ' // why
-               exit
-            end if
+            call refine(deck, la, lad, out%status)
+            if (len_trim(out%status) > 0) exit
          end if
       end do
-      if (.not. out%met) then
-         kj = final_run(lad)
-         k = kj(1);  j = kj(2)
-      end if
-      out%chosen = ladder_run(lad%runs, k, j)
-      out%jd = judge_run(lad, k, j)
+      kj = [k, j]
+      if (.not. out%met) kj = final_run(lad)
+      out%chosen = ladder_run(lad%runs, kj(1), kj(2))
+      out%jd = judge_run(lad, kj(1), kj(2))
    end subroutine climb
 
    !> One line of progress: the relative errors targeted of the best run so far.
@@ -412,9 +392,7 @@ contains
       if (any(targeted)) return
       do while (len(rest) > 0)
          cut = index(rest // ' ', ' ')
-         do iq = nq, 1, -1
-            if (trim(result_keys(iq)) == rest(:cut - 1)) exit
-         end do
+         iq = findloc(result_keys == rest(:cut - 1), .true., dim=1)
          if (iq == 0) then
             stat = 1
             errmsg = deck%source // ': &accuracy: results: ' // rest(:cut - 1) // ' is not one of default all ' // &
@@ -429,12 +407,11 @@ contains
 
    !> No run meets the target: refines the axis whose part of the finest run's error is over half
    !> the target (else the larger part); not the mesh for a time read off dt0's steps (why).
-   subroutine refine(deck, la, lad, more, why)
+   subroutine refine(deck, la, lad, status)
       type(deck_t), intent(in) :: deck             !< the deck
       type(launcher_t), intent(in) :: la           !< the launcher (the element at the impact point)
       type(ladder_t), intent(inout) :: lad         !< the ladder
-      logical, intent(out) :: more                 !< a level was planned
-      character(len=*), intent(out) :: why         !< when not: why
+      character(len=*), intent(out) :: status      !< '' when a level was planned, else 'not met: ' and why
       type(judged_t) :: jd
       logical :: time, mesh, can_time, can_mesh, step_bound(nq)
       real(dp) :: allowed(nq)
@@ -442,7 +419,6 @@ contains
       jd = judge_run(lad, lad%tx%levels - 1, lad%mx%levels - 1)
       allowed = lad%target*error_scale(jd%value)
       time = .false.;  mesh = .false.;  step_bound = .false.
-      why = 'dt and the mesh cannot be refined further (the ladder''s limits)'
       do iq = 1, nq
          if (.not. lad%targeted(iq) .or. jd%err(iq) <= allowed(iq)) cycle
          associate (et => jd%err_time(iq), em => jd%err_mesh(iq), half => 0.5_dp*allowed(iq))
@@ -452,8 +428,8 @@ contains
          end associate
       end do
       can_time = lad%tx%levels <= lad%k_max
-      can_mesh = lad%mx%levels < max_mesh_levels .and. max(mesh_count(deck%nx, deck%accuracy_mesh_factor, &
-                 lad%mx%levels), mesh_count(deck%ny, deck%accuracy_mesh_factor, lad%mx%levels)) <= max_elements
+      can_mesh = lad%mx%levels < max_mesh_levels .and. &
+                 maxval(mesh_count([deck%nx, deck%ny], deck%accuracy_mesh_factor, lad%mx%levels)) <= max_elements
       if (time .and. .not. can_time) then
          time = .false.;  mesh = can_mesh
       end if
@@ -462,8 +438,10 @@ contains
       end if
       if (time) call plan(lad%runs, deck, la, lad%tx%levels, 0)
       if (mesh) call plan(lad%runs, deck, la, 0, lad%mx%levels)
-      more = time .or. mesh
-      if (.not. more .and. any(step_bound)) why = trim(result_keys(findloc(step_bound, .true., dim=1))) // &
+      status = ''
+      if (time .or. mesh) return
+      status = 'not met: dt and the mesh cannot be refined further (the ladder''s limits)'
+      if (any(step_bound)) status = 'not met: ' // trim(result_keys(findloc(step_bound, .true., dim=1))) // &
          ' is read off the time steps: the meshes, all run at the deck''s dt = ' // real_short(deck%dt*1.0e6_dp) // &
          ' us, cannot show it to the target; give a smaller dt in the deck'
    end subroutine refine

@@ -72,20 +72,14 @@ contains
    pure integer function ladder_run(runs, k, j) result(i)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< time and mesh level
-      do i = 1, size(runs)
-         if (runs(i)%k == k .and. runs(i)%j == j .and. is_ladder(runs(i))) return
-      end do
-      i = 0
+      i = findloc(runs%k == k .and. runs%j == j .and. is_ladder(runs), .true., dim=1)
    end function ladder_run
 
    !> True when the ladder run (k, j) is done.
    pure logical function done_run(runs, k, j)
       type(run_t), intent(in) :: runs(:)          !< the runs
       integer, intent(in) :: k, j                 !< its levels
-      integer :: i
-      done_run = .false.
-      i = ladder_run(runs, k, j)
-      if (i > 0) done_run = runs(i)%state == state_done
+      done_run = any(runs%k == k .and. runs%j == j .and. is_ladder(runs) .and. runs%state == state_done)
    end function done_run
 
    !> Both axes of the ladder from its runs done.
@@ -104,16 +98,14 @@ contains
       type(axis_t), intent(out) :: ax             !< the axis
       integer, intent(in) :: j0, k0               !< a time axis's mesh level and first time level
       integer :: l, i, iq, k, j
-      real(dp) :: floor, tail
+      real(dp) :: floor, tail, steps(size(runs))
       allocate (ax%run(0), ax%h(0))
-      l = 0
-      do
+      do l = 0, size(runs)
          k = merge(k0 + l, 0, which == axis_time);  j = merge(j0, l, which == axis_time)
          if (.not. done_run(runs, k, j)) exit
          i = ladder_run(runs, k, j)
          ax%run = [ax%run, i]
          ax%h = [ax%h, merge(runs(i)%dt, 1.0_dp/sqrt(real(runs(i)%nx, dp)*real(runs(i)%ny, dp)), which == axis_time)]
-         l = l + 1
       end do
       ax%levels = l
       allocate (ax%err(l, nq), source=huge(1.0_dp))
@@ -121,8 +113,10 @@ contains
       do iq = 1, nq
          if (.not. active(iq)) cycle
          associate (q => runs(ax%run)%q(iq), e => ax%finest(iq))
+         steps(:l) = q/(runs(ax%run)%dt*1.0e6_dp)   ! a time (us) read off its run's steps: dt the floor
          floor = 0.0_dp
-         if (time_results(iq) .and. on_steps(q, runs(ax%run)%dt)) floor = runs(ax%run(l))%dt*1.0e6_dp
+         if (time_results(iq) .and. all(abs(steps(:l) - anint(steps(:l))) <= &
+                                        1.0e-6_dp*max(1.0_dp, abs(steps(:l))))) floor = runs(ax%run(l))%dt*1.0e6_dp
          e = ladder_estimate(ax%h, q, order_theory(which), order_low(which), order_high(which), floor)
          if (which == axis_mesh) then
             tail = log_tail(ax%h, q, runs(ax%run(l))%h_impact/runs(ax%run(l))%contact_radius)
@@ -136,14 +130,6 @@ contains
          end associate
       end do
    end subroutine build_axis
-
-   !> True when every time (us) is a whole number of its run's step (s).
-   pure logical function on_steps(t_us, dt)
-      real(dp), intent(in) :: t_us(:), dt(:)      !< the times (us), the steps of their runs (s)
-      real(dp) :: steps(size(t_us))
-      steps = t_us/(dt*1.0e6_dp)
-      on_steps = all(abs(steps - anint(steps)) <= 1.0e-6_dp*max(1.0_dp, abs(steps)))
-   end function on_steps
 
    !> The results of run (k, j) and their errors, the interaction no less than the largest
    !> measured (docs/ACCURACY.md); a run not done predicted as q(k,0) + q(0,j) - q(0,0), its
@@ -239,14 +225,12 @@ contains
       type(maxima_t), intent(in) :: mx            !< the run's maxima
       real(dp), intent(in) :: t_peak              !< the time of the peak (us)
       real(dp), intent(in) :: f_peak, e_force     !< the peak force and its error (N)
-      integer :: i, top
+      integer :: i
       spread = 0.0_dp
       if (.not. allocated(mx%f_n)) return
       if (size(mx%f_n) == 0) return
-      top = maxloc(mx%f_n, dim=1)
-      do i = 1, size(mx%f_n)
-         if (i /= top .and. mx%f_n(i) >= f_peak - e_force) spread = max(spread, abs(mx%t_us(i) - t_peak))
-      end do
+      spread = max(0.0_dp, maxval(abs(mx%t_us - t_peak), mask=mx%f_n >= f_peak - e_force .and. &
+                                  [(i /= maxloc(mx%f_n, dim=1), i = 1, size(mx%f_n))]))
    end function peak_spread
 
    !> The time error of run (k, j), j > 0, from the time levels done on mesh j next to k (at
@@ -330,9 +314,7 @@ contains
             jd = judge_run(lad, kk, jj)
             done = done_run(runs, kk, jj);  p = time_partner(runs, kk, jj)
             cost = merge(0.0_dp, run_cost(kk, jj), done)
-            if (p >= 0) then
-               if (.not. done_run(runs, p, jj)) cost = cost + run_cost(p, jj)
-            end if
+            if (p >= 0) cost = cost + run_cost(p, jj)     ! a partner is never done (time_partner)
             if (cross_needed(runs, kk, jj) .and. mx%levels > 1) cost = cost + run_cost(1, 1)
             if (jd%worst <= 1.0_dp .and. cost > 0.0_dp .and. la%spent + cost > la%cap) then
                if (cost < c%beyond_cost) then

@@ -53,6 +53,9 @@ contains
       character(len=32) :: names(nfixed + 4*nq)
       character(len=96) :: texts(nfixed + 4*nq)
       character(len=msg_len) :: iomsg
+      character(len=16) :: order
+      character(len=:), allocatable :: key, unit
+      type(axis_t) :: axes(2)
       integer :: u, i, iq
       names(:nfixed) = [character(len=32) :: 'run', 'role', 'time_level', 'mesh_level', 'dt_us', 'nx', 'ny', &
          'grading', 'element_size_rel', 'cpu_s', 'chosen', 'state']
@@ -62,16 +65,12 @@ contains
          '&mesh nx', '&mesh ny', '&mesh grading', '1/sqrt(nx ny) relative to mesh level 0', &
          'cpu time of the run (s)', '1: the run whose results the summary gives', &
          'done, failed, or skipped (it would pass &accuracy max_cpu_s)']
-      do iq = 1, nq
-         names(nfixed + iq) = result_keys(iq)
-         texts(nfixed + iq) = 'the run''s ' // trim(result_keys(iq)) // ' (' // trim(result_units(iq)) // &
-                              '; NaN: none)'
-         names(nfixed + nq + iq) = trim(result_keys(iq)) // '_error'
-         texts(nfixed + nq + iq) = 'its estimated error (' // trim(result_units(iq)) // '; NaN: not estimated)'
-         names(nfixed + 2*nq + iq) = trim(result_keys(iq)) // '_error_dt'
-         texts(nfixed + 2*nq + iq) = 'of which the time part (' // trim(result_units(iq)) // ')'
-         names(nfixed + 3*nq + iq) = trim(result_keys(iq)) // '_error_mesh'
-         texts(nfixed + 3*nq + iq) = 'and the mesh part (' // trim(result_units(iq)) // ')'
+      do iq = 1, nq                                 ! the result, its error, the time part, the mesh part
+         key = trim(result_keys(iq));  unit = ' (' // trim(result_units(iq))
+         names(nfixed + iq::nq) = [character(len=32) :: key, key // '_error', key // '_error_dt', key // '_error_mesh']
+         texts(nfixed + iq::nq) = [character(len=96) :: 'the run''s ' // key // unit // '; NaN: none)', &
+            'its estimated error' // unit // '; NaN: not estimated)', 'of which the time part' // unit // ')', &
+            'and the mesh part' // unit // ')']
       end do
       open (newunit=u, file=deck%prefix // '_accuracy.dat', status='replace', action='write', iostat=stat, &
             iomsg=iomsg)
@@ -85,57 +84,42 @@ contains
       do i = 1, size(lad%runs)
          call write_row(lad%runs(i), i == out%chosen)
       end do
-      call write_estimates(u, lad)
+      write (u, '(a)') '# estimates of the finest level of each axis (src/accuracy/error_estimate.f90):'
+      write (u, '(a)') '# result axis levels observed_order asymptotic error(result''s unit) rule'
+      axes = [lad%tx, lad%mx]
+      do iq = 1, nq
+         if (.not. lad%estimated(iq)) cycle
+         do i = 1, 2
+            associate (e => axes(i)%finest(iq))
+            order = '-'
+            if (e%order >= 0.0_dp) write (order, '(f6.2)') e%order
+            write (u, '(a,1x,a,1x,i0,1x,a,1x,a,es12.4,1x,a)') '# ' // trim(result_keys(iq)), &
+               merge('time', 'mesh', i == 1), axes(i)%levels, trim(adjustl(order)), &
+               trim(merge('yes', 'no ', e%asymptotic)), e%error, trim(e%how)
+            end associate
+         end do
+      end do
       close (u, iostat=stat, iomsg=iomsg)
       if (stat /= 0) errmsg = deck%prefix // '_accuracy.dat: ' // trim(iomsg)
    contains
-      !> The row of run r.
+      !> The row of run r: the errors of a ladder run on the axes, NaN for the rest.
       subroutine write_row(r, chosen)
          type(run_t), intent(in) :: r              !< the run
          logical, intent(in) :: chosen             !< it is the run chosen
-         real(dp) :: err(nq), err_time(nq), err_mesh(nq), q(nq), h_rel
+         real(dp) :: err(nq, 3), q(nq), h_rel
          type(judged_t) :: jd
          err = ieee_value(err, ieee_quiet_nan)
-         err_time = err;  err_mesh = err
-         q = merge(r%q, err, r%state == state_done)
+         q = merge(r%q, err(:, 1), r%state == state_done)
          if (r%state == state_done .and. is_ladder(r) .and. r%k < lad%tx%levels .and. r%j < lad%mx%levels) then
-            jd = judge_run(lad, r%k, r%j)               ! the results not estimated NaN
-            err = merge(jd%err, err, lad%estimated);  err_time = merge(jd%err_time, err, lad%estimated)
-            err_mesh = merge(jd%err_mesh, err_time, lad%estimated)
+            jd = judge_run(lad, r%k, r%j)
+            err = merge(reshape([jd%err, jd%err_time, jd%err_mesh], [nq, 3]), err, spread(lad%estimated, 2, 3))
          end if
          h_rel = sqrt(real(lad%runs(1)%nx, dp)*real(lad%runs(1)%ny, dp)/(real(r%nx, dp)*real(r%ny, dp)))
          write (u, '(a,1x,a,2(1x,i3),es15.6e3,2(1x,i5),f9.5,f9.5,es12.4,1x,i1,1x,a,*(es16.7e3))') trim(r%name), &
             trim(r%role), r%k, r%j, r%dt*1.0e6_dp, r%nx, r%ny, r%grading, h_rel, r%cpu_s, merge(1, 0, chosen), &
-            state_words(r%state), q, err, err_time, err_mesh
+            state_words(r%state), q, err
       end subroutine write_row
    end subroutine write_accuracy_table
-
-   !> The estimates of the finest level of both axes as '#' lines.
-   subroutine write_estimates(u, lad)
-      integer, intent(in) :: u                     !< the open file
-      type(ladder_t), intent(in) :: lad            !< the ladder (its axes, the results estimated)
-      integer :: iq
-      write (u, '(a)') '# estimates of the finest level of each axis (src/accuracy/error_estimate.f90):'
-      write (u, '(a)') '# result axis levels observed_order asymptotic error(result''s unit) rule'
-      do iq = 1, nq
-         if (.not. lad%estimated(iq)) cycle
-         call one('time', lad%tx, iq)
-         call one('mesh', lad%mx, iq)
-      end do
-   contains
-      !> The line of one result on one axis.
-      subroutine one(name, ax, iq)
-         character(len=*), intent(in) :: name      !< the axis
-         type(axis_t), intent(in) :: ax            !< the axis
-         integer, intent(in) :: iq                 !< the result
-         character(len=16) :: order
-         order = '-'
-         if (ax%finest(iq)%order >= 0.0_dp) write (order, '(f6.2)') ax%finest(iq)%order
-         write (u, '(a,1x,a,1x,i0,1x,a,1x,a,es12.4,1x,a)') '# ' // trim(result_keys(iq)), name, ax%levels, &
-            trim(adjustl(order)), trim(merge('yes', 'no ', ax%finest(iq)%asymptotic)), ax%finest(iq)%error, &
-            trim(ax%finest(iq)%how)
-      end subroutine one
-   end subroutine write_estimates
 
    !> <prefix>_summary.dat (module header).
    subroutine write_accuracy_summary(deck, la, lad, out, stat, errmsg)
@@ -148,6 +132,7 @@ contains
       type(summary_t) :: s
       type(summary_item_t), allocatable :: items(:)
       type(run_t) :: r
+      character(len=:), allocatable :: key, unit
       integer :: i, iq
       real(dp) :: reference(nq)
       r = lad%runs(out%chosen)
@@ -162,11 +147,9 @@ contains
       call summary_text(items, 'accuracy_status', trim(out%status))
       if (out%stop_signal > 0) call summary_integer(items, 'accuracy_stop_signal', out%stop_signal)
       call summary_text(items, 'accuracy_values', 'of the run chosen, not extrapolated')
-      if (out%jd%time_measured) then
-         call summary_text(items, 'time_error_measured', 'true')
-      else
-         call summary_text(items, 'time_error_measured', 'false: ' // unmeasured_time)
-      end if
+      key = 'true'
+      if (.not. out%jd%time_measured) key = 'false: ' // unmeasured_time
+      call summary_text(items, 'time_error_measured', key)
       if (out%jd%two_levels) call summary_text(items, 'time_error_estimate', &
                                                'two levels: Roache''s grid convergence index, Fs = 3')
       if (lad%mx%levels == 2) call summary_text(items, 'mesh_error_estimate', two_meshes)
@@ -178,12 +161,12 @@ contains
       call summary_text(items, 'chosen_theory', trim(la%theory))
       do iq = 1, nq
          if (.not. lad%estimated(iq)) cycle
-         call put(trim(result_keys(iq)) // '_error', trim(result_units(iq)), out%jd%err(iq))
-         call put(trim(result_keys(iq)) // '_error_dt', trim(result_units(iq)), out%jd%err_time(iq))
-         call put(trim(result_keys(iq)) // '_error_mesh', trim(result_units(iq)), out%jd%err_mesh(iq))
-         if (iq == iq_peak_time) call put(trim(result_keys(iq)) // '_error_maxima', trim(result_units(iq)), &
-                                          out%jd%err_maxima(iq))
-         call put(trim(result_keys(iq)) // '_relative_error', '-', relative(out%jd%err(iq), reference(iq)))
+         key = trim(result_keys(iq));  unit = trim(result_units(iq))
+         call put(key // '_error', unit, out%jd%err(iq))
+         call put(key // '_error_dt', unit, out%jd%err_time(iq))
+         call put(key // '_error_mesh', unit, out%jd%err_mesh(iq))
+         if (iq == iq_peak_time) call put(key // '_error_maxima', unit, out%jd%err_maxima(iq))
+         call put(key // '_relative_error', '-', relative(out%jd%err(iq), reference(iq)))
       end do
       do i = 1, size(out%cmp)
          call comparison_items(items, out%cmp(i), lad)
@@ -195,10 +178,10 @@ contains
       call write_summary_file(deck, items, stat, errmsg)
    contains
       !> A real item whose key is its name, in the result's unit.
-      subroutine put(key, unit, value)
-         character(len=*), intent(in) :: key, unit
+      subroutine put(name, unit_name, value)
+         character(len=*), intent(in) :: name, unit_name
          real(dp), intent(in) :: value
-         call summary_real(items, key, key, unit, value, 1.0_dp)
+         call summary_real(items, name, name, unit_name, value, 1.0_dp)
       end subroutine put
    end subroutine write_accuracy_summary
 

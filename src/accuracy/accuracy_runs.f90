@@ -106,7 +106,10 @@ contains
       stat = 0;  running = 0
       do
          launch: do while (running < la%cpus .and. stat == 0 .and. stop_caught() == 0)
-            i = next_run(runs, la, running)
+            i = 0                                   ! the dearest planned; the cheapest alone while costs are unknown
+            if (la%c_base >= 0.0_dp) i = maxloc(predicted_run_cost(runs, la), mask=runs%state == state_planned, dim=1)
+            if (la%c_base < 0.0_dp .and. running == 0) i = minloc(predicted_run_cost(runs, la), &
+                                                                 mask=runs%state == state_planned, dim=1)
             if (i == 0) exit launch
             if (la%c_base >= 0.0_dp .and. la%spent + sum(predicted_run_cost(runs, la), &
                 mask=runs%state == state_running) + predicted_run_cost(runs(i), la) > la%cap) then
@@ -165,41 +168,15 @@ contains
       flush (la%unit)
    end subroutine state_price
 
-   !> The next run to start: the planned one predicted dearest, or while nothing is known of the
-   !> costs the cheapest alone (0 while a run is going).
-   integer function next_run(runs, la, running) result(i)
-      type(run_t), intent(in) :: runs(:)           !< the runs
-      type(launcher_t), intent(in) :: la           !< the launcher
-      integer, intent(in) :: running               !< runs going
-      real(dp) :: cost(size(runs))
-      i = 0
-      if (la%c_base < 0.0_dp .and. running > 0) return
-      cost = predicted_run_cost(runs, la)
-      if (la%c_base < 0.0_dp) i = minloc(cost, mask=runs%state == state_planned, dim=1)
-      if (la%c_base >= 0.0_dp) i = maxloc(cost, mask=runs%state == state_planned, dim=1)
-   end function next_run
-
-   !> The cost model's prediction of a run's cpu time (s; 0 while nothing is known).
+   !> The cost model's prediction of a run's cpu time (s; 0 while nothing is known): the run done
+   !> on its mesh at the time level nearest its own (the finer of two), else c 2^k (n/n0)^gamma.
    elemental real(dp) function predicted_run_cost(run, la)
       type(run_t), intent(in) :: run               !< the run (its k, nx, ny, cost_factor)
       type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
-      integer :: a
-      a = nearest_anchor(run, la)
-      if (a > 0) then
-         predicted_run_cost = la%anchors(a)%cpu_s*2.0_dp**(run%k - la%anchors(a)%k)
-      else
-         predicted_run_cost = max(la%c_base, 0.0_dp)*relative_cost(run, la%n0, la%gamma)
-      end if
-   end function predicted_run_cost
-
-   !> The run done on the run's mesh at the time level nearest its own, the finer of two (0: none).
-   pure integer function nearest_anchor(run, la) result(a)
-      type(run_t), intent(in) :: run               !< the run
-      type(launcher_t), intent(in) :: la           !< the launcher (its anchors)
-      integer :: i, d, best
-      a = 0
+      integer :: i, d, best, a
+      predicted_run_cost = max(la%c_base, 0.0_dp)*relative_cost(run, la%n0, la%gamma)
       if (.not. allocated(la%anchors)) return
-      best = huge(1)
+      a = 0;  best = huge(1)
       do i = 1, size(la%anchors)
          if (any([la%anchors(i)%nx, la%anchors(i)%ny] /= [run%nx, run%ny]) .or. &
              la%anchors(i)%cost_factor /= run%cost_factor) cycle
@@ -207,7 +184,8 @@ contains
          if (d > best .or. (d == best .and. la%anchors(i)%k < la%anchors(max(a, 1))%k)) cycle   ! as near: the finer
          a = i;  best = d
       end do
-   end function nearest_anchor
+      if (a > 0) predicted_run_cost = la%anchors(a)%cpu_s*2.0_dp**(run%k - la%anchors(a)%k)
+   end function predicted_run_cost
 
    !> What each result's error is relative to: its size; for the time of the peak the duration.
    pure function error_scale(q) result(scale)

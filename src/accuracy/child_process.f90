@@ -44,21 +44,30 @@ contains
       character(len=*), intent(inout) :: errmsg     !< what failed
       type(spawn_actions_t) :: actions
       type(spawn_attr_t) :: attr
-      character(kind=c_char), allocatable, target :: chars(:)
-      character(kind=c_char), allocatable, target :: env(:)
+      character(kind=c_char), allocatable, target :: chars(:), env(:)
+      character(len=max(len(path), len(args))) :: words(size(args) + 1)
       type(c_ptr), allocatable :: argv(:), envp(:)
       integer(c_int) :: cpid, r
-      integer :: i, at, ignored
-      call pack_strings()
+      integer :: i, at, n, ignored
+      words = [character(len=len(words)) :: path, args]   ! as C strings in chars, argv their pointers
+      allocate (chars(sum(len_trim(words)) + size(words)), argv(size(words) + 1))
+      at = 1
+      do i = 1, size(words)
+         n = len_trim(words(i))
+         chars(at:at + n) = transfer(trim(words(i)) // c_null_char, chars)
+         argv(i) = c_loc(chars(at))
+         at = at + n + 1
+      end do
+      argv(size(argv)) = c_null_ptr
       call child_environment(env, envp)
       pid = -1
       r = c_spawn_actions_init(actions)
       if (r == 0) r = c_spawnattr_init(attr)
       if (r == 0) r = c_spawnattr_setflags(attr, spawn_setpgroup)
       if (r == 0) r = c_spawnattr_setpgroup(attr, 0_c_int)          ! its own group, led by itself
-      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, c_text(log_path), o_write_no_follow, log_mode)
+      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, log_path // c_null_char, o_write_no_follow, log_mode)
       if (r == 0) r = c_spawn_actions_adddup2(actions, fd_out, fd_err)
-      if (r == 0) r = c_posix_spawn(cpid, c_text(path), actions, attr, argv, envp)
+      if (r == 0) r = c_posix_spawn(cpid, path // c_null_char, actions, attr, argv, envp)
       ignored = c_spawn_actions_destroy(actions)
       ignored = c_spawnattr_destroy(attr)
       stat = r
@@ -71,26 +80,6 @@ contains
       i = findloc(children, 0_c_int, dim=1)
       if (i > 0) children(i) = cpid
       if (stopped /= 0) ignored = c_kill(-cpid, stopped)             ! a stop came while it started
-   contains
-      !> path and args as C strings in chars, argv their pointers and a null pointer.
-      subroutine pack_strings()
-         allocate (chars(len_trim(path) + sum(len_trim(args)) + size(args) + 1), argv(size(args) + 2))
-         at = 1
-         call put(path, 1)
-         do i = 1, size(args)
-            call put(args(i), i + 1)
-         end do
-         argv(size(args) + 2) = c_null_ptr
-      end subroutine pack_strings
-      !> One string into the buffer, its pointer the n-th of argv.
-      subroutine put(text, n)
-         character(len=*), intent(in) :: text      !< the string (trailing blanks dropped)
-         integer, intent(in) :: n                  !< its place in argv
-         chars(at:at + len_trim(text) - 1) = transfer(trim(text), chars)
-         chars(at + len_trim(text)) = c_null_char
-         argv(n) = c_loc(chars(at))
-         at = at + len_trim(text) + 1
-      end subroutine put
    end subroutine spawn_program
 
    !> A child's environment: IMPACT_PARENT_PID=<pid>, then /proc/self/environ; envp the pointers.
@@ -185,7 +174,7 @@ contains
       character(kind=c_char) :: buf(max_path)
       integer(c_long) :: n
       integer :: length
-      n = c_readlink(c_text('/proc/self/exe'), buf, int(max_path, c_size_t))
+      n = c_readlink('/proc/self/exe' // c_null_char, buf, int(max_path, c_size_t))
       if (n > 0 .and. n < max_path) then
          allocate (character(len=n) :: path)
          path = transfer(buf(:n), path)
@@ -213,12 +202,5 @@ contains
          if (st == 0 .and. slurm > 0) n = min(n, slurm)
       end do
    end function usable_cpus
-
-   !> text as a C string (null-terminated).
-   pure function c_text(text) result(c)
-      character(len=*), intent(in) :: text    !< the text
-      character(kind=c_char, len=len(text) + 1) :: c
-      c = text // c_null_char
-   end function c_text
 
 end module child_process

@@ -125,11 +125,9 @@ contains
    !> The larger of the last two differences of a ladder.
    pure real(dp) function last_difference(q)
       real(dp), intent(in) :: q(:)                !< the result at each level
-      integer :: i
-      last_difference = 0.0_dp
-      do i = max(2, size(q) - 1), size(q)
-         last_difference = max(last_difference, abs(q(i - 1) - q(i)))
-      end do
+      integer :: n
+      n = size(q)
+      last_difference = max(0.0_dp, maxval(abs(q(max(1, n - 2):n - 1) - q(max(2, n - 1):n))))
    end function last_difference
 
    !> Roache's grid convergence index of the finer of two levels of known order p.

@@ -48,13 +48,19 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< what failed
       type(comparison_t) :: first(2), second(2)
+      type(judged_t) :: jd, jc
       real(dp) :: slack(nq)
       integer :: coarse, i, base(2)
       logical :: again(2)
       again = .true.;  slack = 0.0_dp               ! again: made (again) at the chosen settings
       coarse = coarse_base(lad%runs, chosen)
       if (coarse /= chosen) then
-         slack = change_slack(lad, chosen, coarse)
+         ! how far the change at coarse may lie from that at the chosen settings: 2 (e_t(coarse) +
+         ! e_t(chosen)) / |q|, the variant's time error taken as the base's
+         jd = judge_run(lad, 0, lad%runs(coarse)%j)
+         jc = judge_run(lad, lad%runs(chosen)%k, lad%runs(chosen)%j)
+         slack = huge(1.0_dp)
+         where (lad%runs(coarse)%q /= 0.0_dp) slack = 2.0_dp*(jd%err_time + jc%err_time)/abs(lad%runs(coarse)%q)
          call make_variants(deck, la, lad%runs, variant_bases(deck, lad%runs, la, coarse, again), again, first, &
                             stat, errmsg)
          if (stat /= 0) return
@@ -194,19 +200,6 @@ contains
       if (runs(coarse)%state /= state_done) coarse = chosen
    end function coarse_base
 
-   !> How far a model's change at run coarse may lie from that at the chosen settings:
-   !> 2 (e_t(coarse) + e_t(chosen)) / |q|, the variant's time error taken as the base's.
-   function change_slack(lad, chosen, coarse) result(slack)
-      type(ladder_t), intent(in) :: lad             !< the ladder
-      integer, intent(in) :: chosen, coarse         !< the run chosen, the run compared with first
-      real(dp) :: slack(nq)
-      type(judged_t) :: jd, jc
-      jd = judge_run(lad, 0, lad%runs(coarse)%j)
-      jc = judge_run(lad, lad%runs(chosen)%k, lad%runs(chosen)%j)
-      slack = huge(1.0_dp)
-      where (lad%runs(coarse)%q /= 0.0_dp) slack = 2.0_dp*(jd%err_time + jc%err_time)/abs(lad%runs(coarse)%q)
-   end function change_slack
-
    !> Whether the verdict of c (model_required) is the same for every change within its band;
    !> a comparison not made settles nothing.
    logical function verdict_settled(c, lad, slack) result(settled)
@@ -252,7 +245,7 @@ contains
       type(run_t), intent(inout) :: r               !< the variant (c's settings in)
       type(comparison_t), intent(inout) :: cmp      !< what it compares, or the note
       real(dp) :: quarters
-      integer :: fx, fy
+      integer :: f(2)
       r%role = 'bend_twist';  r%variant = ''
       cmp%richer = 'keep';  cmp%simpler = 'drop'           ! &laminate bend_twist
       cmp%chosen_richer = .not. scene%averaged
@@ -265,14 +258,10 @@ contains
       quarters = merge(1.0_dp, merge(2.0_dp, 4.0_dp, scene%domain == 'half'), scene%domain == 'quarter')
       if (scene%averaged) then
          ! the full plate that keeps D16, D26: its counts, those of the domain mirrored
-         fx = 2;  fy = 2
-         if (deck%domain /= 'auto' .and. scene%domain == 'half') then
-            fx = merge(1, 2, deck%y0 == 0.0_dp);  fy = merge(2, 1, deck%y0 == 0.0_dp)
-         end if
-         if (deck%domain == 'full') then
-            fx = 1;  fy = 1
-         end if
-         r%nx = c%nx*fx;  r%ny = c%ny*fy
+         f = 2
+         if (deck%domain /= 'auto' .and. scene%domain == 'half') f = merge([1, 2], [2, 1], deck%y0 == 0.0_dp)
+         if (deck%domain == 'full') f = 1
+         r%nx = c%nx*f(1);  r%ny = c%ny*f(2)
          r%variant(1:3) = [character(len=64) :: "mesh.domain='full'", 'mesh.average_bend_twist=.false.', &
                            "laminate.bend_twist='keep'"]
          ! a ladder run's counts the quarter's, doubled across the centre lines of an 'auto' domain
@@ -300,22 +289,17 @@ contains
       call model_laminate(d, lmt, s)
       call choose_domain(d, s, stat, errmsg)
       quarters = 4.0_dp
-      if (stat /= 0) return
-      if (s%domain == 'quarter') quarters = 1.0_dp
-      if (s%domain == 'half') quarters = 2.0_dp
+      if (stat == 0) quarters = merge(1.0_dp, merge(2.0_dp, 4.0_dp, s%domain == 'half'), s%domain == 'quarter')
    end function reduced_quarters
 
    !> The relative change of each result estimated that the other model of c makes (else 0).
    pure function model_changes(c, lad) result(change)
       type(comparison_t), intent(in) :: c           !< the comparison (its runs done)
       type(ladder_t), intent(in) :: lad             !< the ladder (its runs, the results estimated)
-      real(dp) :: change(nq), reference(nq)
-      integer :: iq
-      change = 0.0_dp
-      reference = error_scale(lad%runs(c%base)%q)
-      do iq = 1, nq
-         if (lad%estimated(iq)) change(iq) = relative(lad%runs(c%run)%q(iq) - lad%runs(c%base)%q(iq), reference(iq))
-      end do
+      real(dp) :: change(nq)
+      associate (q => lad%runs(c%run)%q, q_base => lad%runs(c%base)%q)
+      change = merge(relative(q - q_base, error_scale(q_base)), 0.0_dp, lad%estimated)
+      end associate
    end function model_changes
 
    !> Whether a result that must meet the target changes by more than the target.
@@ -336,22 +320,19 @@ contains
 
    !> Why comparison c has no results ('' when it has): none made, or its run skipped,
    !> stopped or failed.
-   function not_compared(c, runs) result(text)
+   pure function not_compared(c, runs) result(text)
       type(comparison_t), intent(in) :: c           !< the comparison
       type(run_t), intent(in) :: runs(:)            !< the runs
       character(len=:), allocatable :: text
       text = trim(c%note)
       if (c%run == 0) return
-      text = 'the run ' // trim(runs(c%run)%name)
-      if (runs(c%run)%state == state_skipped) then
-         text = text // ' would pass &accuracy max_cpu_s'
-      else if (runs(c%run)%state == state_stopped) then
-         text = text // ' was stopped'
-      else if (runs(c%run)%state /= state_done) then
-         text = text // ' failed (' // trim(runs(c%run)%status) // ')'
-      else
-         text = ''
-      end if
+      associate (r => runs(c%run))
+      text = ' failed (' // trim(r%status) // ')'
+      if (r%state == state_skipped) text = ' would pass &accuracy max_cpu_s'
+      if (r%state == state_stopped) text = ' was stopped'
+      text = 'the run ' // trim(r%name) // text
+      if (r%state == state_done) text = ''
+      end associate
    end function not_compared
 
    !> The summary's items of one model compared: what, and the relative change of each result.
@@ -414,7 +395,7 @@ contains
    end subroutine comparison_lines
 
    !> err/|value|, 0 when both are 0, huge when only value is.
-   pure real(dp) function relative(err, value)
+   elemental real(dp) function relative(err, value)
       real(dp), intent(in) :: err, value            !< the error or change, the value
       relative = huge(1.0_dp)
       if (value /= 0.0_dp) relative = err/abs(value)
