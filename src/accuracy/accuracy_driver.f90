@@ -1,10 +1,9 @@
-!> An accuracy run, `impact --accuracy TOL deck.nml` (docs/ACCURACY.md): dt and
-!> the mesh refined the cheapest way until the results targeted are within TOL
-!> or the cap stops it. 1. the ladder's runs (accuracy_runs); 2. the errors
-!> (accuracy_ladder); 3. the cheapest run that meets the target, else an axis
-!> refined; 4. the models compared (model_comparison); 5. the report
-!> (accuracy_report). A stop signal keeps the runs done; --restart continues.
-!> Exit status 0 when met, exit_not_met (3) when not, 128 + N after signal N.
+!> An accuracy run, `impact --accuracy TOL deck.nml` (docs/ACCURACY.md): dt and the mesh refined
+!> the cheapest way until the results targeted are within TOL or the cap stops it. 1. the runs
+!> (accuracy_runs); 2. the errors (accuracy_ladder); 3. the cheapest run that meets the target,
+!> else an axis refined; 4. the models compared (model_comparison); 5. the report
+!> (accuracy_report). A stop signal keeps the runs done; --restart continues. Exit status 0 when
+!> met, exit_not_met (3) when not, 128 + N after signal N.
 module accuracy_driver
    use, intrinsic :: iso_fortran_env, only: int64, error_unit
    use kinds, only: dp, msg_len
@@ -252,9 +251,8 @@ contains
       end do
    end function mesh_count
 
-   !> Steps 1-3: runs, estimates, chooses, refines until the target is met, the cap is reached
-   !> (the candidate does not fit it, or a pass made no run after the cap turned one away) or
-   !> the ladder cannot be refined.
+   !> Steps 1-3 until the target is met, the cap is reached (the candidate does not fit it, or a
+   !> pass made no run after the cap turned one away) or the ladder cannot be refined.
    subroutine climb(deck, la, lad, out, stat, errmsg)
       type(deck_t), intent(in) :: deck              !< the deck
       type(launcher_t), intent(inout) :: la         !< the launcher

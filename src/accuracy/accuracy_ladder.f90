@@ -228,7 +228,6 @@ contains
       integer :: i
       spread = 0.0_dp
       if (.not. allocated(mx%f_n)) return
-      if (size(mx%f_n) == 0) return
       spread = max(0.0_dp, maxval(abs(mx%t_us - t_peak), mask=mx%f_n >= f_peak - e_force .and. &
                                   [(i /= maxloc(mx%f_n, dim=1), i = 1, size(mx%f_n))]))
    end function peak_spread
@@ -244,10 +243,8 @@ contains
       type(axis_t) :: ax
       real(dp) :: finest
       integer :: iq, k0
-      k0 = k
-      do while (k0 > 0)
+      do k0 = k, 1, -1                              ! the first of the time levels done next to k
          if (.not. done_run(lad%runs, k0 - 1, j)) exit
-         k0 = k0 - 1
       end do
       call build_axis(lad%runs, axis_time, lad%targeted, ax, j, k0)
       measured = ax%levels >= 2 .and. k - k0 < ax%levels;  two = measured .and. ax%levels == 2
@@ -295,10 +292,9 @@ contains
       end associate
    end function largest_cross
 
-   !> The cheapest run (k, j) that meets the target: its cost the runs still to make for it,
-   !> its time partner and the run (1, 1) while cross_needed; the next time level too while
-   !> k_max allows. One past the cap is not taken (beyond_cap); not found: the done run with
-   !> the least worst ratio.
+   !> The cheapest run (k, j) that meets the target, its cost the runs still to make for it (its
+   !> time partner, the run (1, 1) while cross_needed), the next time level too while k_max allows.
+   !> One past the cap is not taken (beyond_cap); not found: the done run with the least worst ratio.
    function choose_run(lad, la) result(c)
       type(ladder_t), intent(in) :: lad           !< the ladder, its axes built
       type(launcher_t), intent(in) :: la          !< the launcher (its cost model, the cap, the cpu time spent)

@@ -1,10 +1,9 @@
-!> Child processes of an accuracy run, through the C library, never a shell: spawn_program
-!> (posix_spawn(3), an argument vector, the output into a log file never through a link, the
-!> child in a process group of its own); wait_child (waitpid(2)); pass_stops_to_children (a
-!> stop signal recorded, stop_caught, and sent on to every child's group); die_with_parent
-!> (PR_SET_PDEATHSIG in a child with IMPACT_PARENT_PID); program_path; usable_cpus
-!> (sched_getaffinity, or Slurm's count when smaller). The children and the signal caught
-!> are module state, as in process_stop: a signal handler reaches nothing else.
+!> Child processes through the C library, never a shell: spawn_program (posix_spawn(3), the output
+!> into a log file never through a link, the child in a process group of its own); wait_child
+!> (waitpid(2)); pass_stops_to_children (a stop signal recorded, stop_caught, and sent on to every
+!> child's group); die_with_parent (PR_SET_PDEATHSIG with IMPACT_PARENT_PID); program_path;
+!> usable_cpus (sched_getaffinity, or Slurm's count when smaller). The children and the signal
+!> caught are module state, as in process_stop: a signal handler reaches nothing else.
 module child_process
    use, intrinsic :: iso_c_binding, only: c_int, c_int16_t, c_char, c_ptr, c_null_ptr, c_null_char, c_loc, c_size_t, &
       c_long, c_funptr, c_funloc
