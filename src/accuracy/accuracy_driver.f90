@@ -271,9 +271,9 @@ contains
          if (lad%runs(1)%state /= state_done) errmsg = 'accuracy: the first run did not finish within ' // &
             '&accuracy max_cpu_s = ' // real_short(la%cap) // ' s'
          associate (r => lad%runs(max(i, 1)))
-         if (i > 0) errmsg = 'accuracy: the run ' // trim(r%name) // ' (dt ' // real_short(r%dt) // ' s, mesh ' // &
-            int_str(r%nx) // ' x ' // int_str(r%ny) // ') failed, exit status ' // int_str(r%exit_code) // ': ' // &
-            trim(r%status) // '; see ' // la%dir // trim(r%name) // '.log'
+         if (i > 0) errmsg = 'accuracy: the run ' // trim(r%name) // ' (dt ' // real_short(r%dt) // &
+            ' s, mesh ' // int_str(r%nx) // ' x ' // int_str(r%ny) // ') failed, exit status ' // &
+            int_str(r%exit_code) // ': ' // trim(r%status) // '; see ' // la%dir // trim(r%name) // '.log'
          end associate
          stat = merge(1, 0, i > 0 .or. lad%runs(1)%state /= state_done)
          if (stat /= 0) return
@@ -426,8 +426,8 @@ contains
          end associate
       end do
       can_time = lad%tx%levels <= lad%k_max
-      can_mesh = lad%mx%levels < max_mesh_levels .and. &
-                 maxval(mesh_count([deck%nx, deck%ny], deck%accuracy_mesh_factor, lad%mx%levels)) <= max_elements
+      can_mesh = lad%mx%levels < max_mesh_levels .and. max_elements >= &
+                 maxval(mesh_count([deck%nx, deck%ny], deck%accuracy_mesh_factor, lad%mx%levels))
       if (time .and. .not. can_time) then
          time = .false.;  mesh = can_mesh
       end if

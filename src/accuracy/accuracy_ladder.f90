@@ -116,7 +116,8 @@ contains
          steps(:l) = q/(runs(ax%run)%dt*1.0e6_dp)   ! a time (us) read off its run's steps: dt the floor
          floor = 0.0_dp
          if (time_results(iq) .and. all(abs(steps(:l) - anint(steps(:l))) <= &
-                                        1.0e-6_dp*max(1.0_dp, abs(steps(:l))))) floor = runs(ax%run(l))%dt*1.0e6_dp
+                                        1.0e-6_dp*max(1.0_dp, abs(steps(:l))))) &
+            floor = runs(ax%run(l))%dt*1.0e6_dp
          e = ladder_estimate(ax%h, q, order_theory(which), order_low(which), order_high(which), floor)
          if (which == axis_mesh) then
             tail = log_tail(ax%h, q, runs(ax%run(l))%h_impact/runs(ax%run(l))%contact_radius)

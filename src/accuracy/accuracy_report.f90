@@ -67,7 +67,8 @@ contains
          'done, failed, or skipped (it would pass &accuracy max_cpu_s)']
       do iq = 1, nq                                 ! the result, its error, the time part, the mesh part
          key = trim(result_keys(iq));  unit = ' (' // trim(result_units(iq))
-         names(nfixed + iq::nq) = [character(len=32) :: key, key // '_error', key // '_error_dt', key // '_error_mesh']
+         names(nfixed + iq::nq) = [character(len=32) :: key, key // '_error', key // '_error_dt', &
+                                   key // '_error_mesh']
          texts(nfixed + iq::nq) = [character(len=96) :: 'the run''s ' // key // unit // '; NaN: none)', &
             'its estimated error' // unit // '; NaN: not estimated)', 'of which the time part' // unit // ')', &
             'and the mesh part' // unit // ')']

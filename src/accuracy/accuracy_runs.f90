@@ -106,8 +106,10 @@ contains
       stat = 0;  running = 0
       do
          launch: do while (running < la%cpus .and. stat == 0 .and. stop_caught() == 0)
-            i = 0                                   ! the dearest planned; the cheapest alone while costs are unknown
-            if (la%c_base >= 0.0_dp) i = maxloc(predicted_run_cost(runs, la), mask=runs%state == state_planned, dim=1)
+            ! the next: the dearest planned, or while the costs are unknown the cheapest alone
+            i = 0
+            if (la%c_base >= 0.0_dp) i = maxloc(predicted_run_cost(runs, la), &
+                                                mask=runs%state == state_planned, dim=1)
             if (la%c_base < 0.0_dp .and. running == 0) i = minloc(predicted_run_cost(runs, la), &
                                                                  mask=runs%state == state_planned, dim=1)
             if (i == 0) exit launch

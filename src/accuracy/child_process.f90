@@ -64,7 +64,8 @@ contains
       if (r == 0) r = c_spawnattr_init(attr)
       if (r == 0) r = c_spawnattr_setflags(attr, spawn_setpgroup)
       if (r == 0) r = c_spawnattr_setpgroup(attr, 0_c_int)          ! its own group, led by itself
-      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, log_path // c_null_char, o_write_no_follow, log_mode)
+      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, log_path // c_null_char, o_write_no_follow, &
+                                              log_mode)
       if (r == 0) r = c_spawn_actions_adddup2(actions, fd_out, fd_err)
       if (r == 0) r = c_posix_spawn(cpid, path // c_null_char, actions, attr, argv, envp)
       ignored = c_spawn_actions_destroy(actions)

@@ -40,10 +40,8 @@ contains
       integer :: n
       n = size(q)
       e%floor = floor
-      if (n < 2) then
-         e%how = 'one level: no estimate'
-         return
-      end if
+      e%how = 'one level: no estimate'
+      if (n < 2) return
       d2 = q(n - 1) - q(n)
       if (n == 2) then
          e%error = two_level_factor*abs(d2) + floor
