@@ -74,8 +74,7 @@ contains
       type(options_t), intent(in) :: opts
       type(deck_t), intent(in) :: deck
       integer, intent(in) :: unit                   !< standard output
-      integer, intent(out) :: exit_code             !< 0: target met; exit_not_met; 128 + N: stopped by signal N
-      integer, intent(out) :: stat
+      integer, intent(out) :: exit_code, stat       !< 0 met, exit_not_met, 128 + N stopped by N; 0 on success
       character(len=*), intent(inout) :: errmsg
       type(results_claim_t) :: claim
       type(launcher_t) :: la

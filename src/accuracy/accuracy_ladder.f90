@@ -132,9 +132,8 @@ contains
       end do
    end subroutine build_axis
 
-   !> The results of run (k, j) and their errors, the interaction no less than the largest
-   !> measured (docs/ACCURACY.md); a run not done predicted as q(k,0) + q(0,j) - q(0,0), its
-   !> time error no less than its mesh's at 2 dt over 2^2; k = tx%levels: judge_next_time.
+   !> The results of run (k, j) and their errors (docs/ACCURACY.md); a run not done predicted as
+   !> q(k,0) + q(0,j) - q(0,0), its time error no less than its mesh's at 2 dt over 2^2.
    function judge_run(lad, k, j) result(jd)
       type(ladder_t), intent(in) :: lad           !< the ladder, its axes built
       integer, intent(in) :: k, j                 !< the levels (k <= tx%levels, j < mx%levels; j = 0 for k = tx%levels)
@@ -142,10 +141,8 @@ contains
       integer :: i, ik, ij, i0
       real(dp) :: below(nq)
       logical :: measured, known, two
-      if (k >= lad%tx%levels) then                 ! the next time level, not yet planned
-         jd = judge_next_time(lad)
-         return
-      end if
+      if (k >= lad%tx%levels) jd = judge_next_time(lad)   ! the next time level, not yet planned
+      if (k >= lad%tx%levels) return
       associate (runs => lad%runs)
       i0 = lad%tx%run(1);  ik = lad%tx%run(k + 1);  ij = lad%mx%run(j + 1)
       i = merge(ladder_run(runs, k, j), 0, done_run(runs, k, j))
@@ -168,9 +165,8 @@ contains
       end associate
    end function judge_run
 
-   !> The next time level on mesh 0 before it is planned: a result converging at an order p
-   !> no faster than its range continued by p (continued_value), its error the axis's rule with
-   !> that level added; any other result the finest level's (a safe bound predicts no gain).
+   !> The next time level on mesh 0: a result converging at p in range continued by p, its error
+   !> the axis's rule with that level; any other the finest level's (a safe bound predicts no gain).
    function judge_next_time(lad) result(jd)
       type(ladder_t), intent(in) :: lad           !< the ladder (tx%levels >= 1)
       type(judged_t) :: jd
@@ -203,7 +199,6 @@ contains
       type(ladder_t), intent(in) :: lad           !< the ladder (the target, the results targeted)
       logical, intent(in) :: measured             !< the time error measured on its mesh
       real(dp) :: scale(nq)
-      integer :: iq
       jd%err = jd%err_time + jd%err_mesh + jd%err_cross
       if (jd%err(iq_force) < huge(1.0_dp) .and. maxima_run%has(iq_peak_time)) then
          jd%err_maxima(iq_peak_time) = peak_spread(maxima_run%maxima, jd%value(iq_peak_time), &
@@ -211,12 +206,9 @@ contains
          jd%err(iq_peak_time) = jd%err(iq_peak_time) + jd%err_maxima(iq_peak_time)
       end if
       scale = lad%target*error_scale(jd%value)
-      jd%worst = 0.0_dp
-      do iq = 1, nq
-         if (.not. lad%targeted(iq)) cycle
-         if (scale(iq) > 0.0_dp) jd%worst = max(jd%worst, jd%err(iq)/scale(iq))
-         if (scale(iq) <= 0.0_dp .and. jd%err(iq) > 0.0_dp) jd%worst = huge(1.0_dp)
-      end do
+      jd%worst = max(0.0_dp, maxval(jd%err/merge(scale, 1.0_dp, scale > 0.0_dp), &
+                                    mask=lad%targeted .and. scale > 0.0_dp))
+      if (any(lad%targeted .and. scale <= 0.0_dp .and. jd%err > 0.0_dp)) jd%worst = huge(1.0_dp)
       jd%meets = jd%worst <= 1.0_dp .and. measured;  jd%time_measured = measured
    end subroutine weigh
 
@@ -293,9 +285,8 @@ contains
       end associate
    end function largest_cross
 
-   !> The cheapest run (k, j) that meets the target, its cost the runs still to make for it (its
-   !> time partner, the run (1, 1) while cross_needed), the next time level too while k_max allows.
-   !> One past the cap is not taken (beyond_cap); not found: the done run with the least worst ratio.
+   !> The cheapest run (k, j) meeting the target, priced with the runs it still needs (its time
+   !> partner, (1, 1) while cross_needed); past the cap: beyond_cap; none: the least worst done.
    function choose_run(lad, la) result(c)
       type(ladder_t), intent(in) :: lad           !< the ladder, its axes built
       type(launcher_t), intent(in) :: la          !< the launcher (its cost model, the cap, the cpu time spent)

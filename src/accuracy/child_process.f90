@@ -88,7 +88,7 @@ contains
       type(c_ptr), allocatable, intent(out) :: envp(:)                    !< their pointers
       character(kind=c_char), allocatable :: more(:)
       character(len=:), allocatable :: ours
-      integer :: u, ios, n, i, k
+      integer :: u, ios, n, i
       ours = parent_variable // '=' // int_str(int(c_getpid())) // c_null_char
       allocate (env(len(ours) + 4096))
       n = len(ours)
@@ -105,21 +105,13 @@ contains
       end do
       if (ios > 0 .or. env(n) /= c_null_char) n = len(ours)   ! unreadable: ours alone
       close (u, iostat=ios)
-      allocate (envp(count(env(:n) == c_null_char) + 1))
-      envp(1) = c_loc(env(1))
-      k = 1
-      do i = 1, n - 1
-         if (env(i) /= c_null_char) cycle
-         k = k + 1
-         envp(k) = c_loc(env(i + 1))
-      end do
-      envp(size(envp)) = c_null_ptr
+      ! a string starts at 1 and after each nul but the last
+      envp = [pack([(c_loc(env(i)), i = 1, n)], [.true., env(:n - 1) == c_null_char]), c_null_ptr]
    end subroutine child_environment
 
    !> Waits for any child of the process to end.
    subroutine wait_child(pid, exit_code)
-      integer, intent(out) :: pid          !< the child that ended, -1 when there is none
-      integer, intent(out) :: exit_code    !< its exit status, 128 + N when the signal N ended it
+      integer, intent(out) :: pid, exit_code   !< the child that ended (-1: none); its status, 128 + N by signal N
       integer(c_int) :: status, r
       r = c_waitpid(-1_c_int, status, 0_c_int)
       pid = merge(int(r), -1, r > 0)

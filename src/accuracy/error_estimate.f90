@@ -93,11 +93,8 @@ contains
       if (ratio <= f(lo) .or. ratio >= f(hi)) return
       do it = 1, 100
          p = 0.5_dp*(lo + hi)
-         if (f(p) < ratio) then
-            lo = p
-         else
-            hi = p
-         end if
+         if (f(p) < ratio) lo = p
+         if (f(p) >= ratio) hi = p
       end do
       p = 0.5_dp*(lo + hi)
    contains

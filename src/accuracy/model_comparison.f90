@@ -40,13 +40,13 @@ contains
    !> The comparisons (module header): first at coarse_base, kept where their verdict is settled
    !> (verdict_settled) or the chosen settings pass the cap, else made again there.
    subroutine compare_models(deck, la, lad, chosen, cmp, stat, errmsg)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(launcher_t), intent(inout) :: la         !< the launcher
-      type(ladder_t), intent(inout) :: lad          !< the ladder; the variants added to its runs
+      type(deck_t), intent(in) :: deck
+      type(launcher_t), intent(inout) :: la
+      type(ladder_t), intent(inout) :: lad          !< the variants added to its runs
       integer, intent(in) :: chosen                 !< the run chosen
       type(comparison_t), intent(out) :: cmp(2)     !< the theory's, the bend-twist model's
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< what failed
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
       type(comparison_t) :: first(2), second(2)
       type(judged_t) :: jd, jc
       real(dp) :: slack(nq)
@@ -85,11 +85,10 @@ contains
       if (stat /= 0) return
       do i = 1, 2
          if (.not. again(i)) cycle
-         if (second(i)%run == 0 .or. coarse == chosen .or. .not. made(cmp(i))) then
+         ! a second made stands (at the chosen settings, as again says), else the first
+         if (second(i)%run == 0 .or. coarse == chosen .or. .not. made(cmp(i)) .or. made(second(i))) then
             cmp(i) = second(i)
             if (cmp(i)%base /= chosen) cmp(i)%at = past_cap
-         else if (made(second(i))) then
-            cmp(i) = second(i)
          else                                       ! the cap skipped the second: the first stands
             cmp(i)%at = coarse_words(.false., cmp(i))
          end if
@@ -98,13 +97,12 @@ contains
       !> The comparison's variant was made and has results.
       logical function made(c)
          type(comparison_t), intent(in) :: c
-         made = .false.
-         if (c%run > 0) made = lad%runs(c%run)%state == state_done
+         made = c%run > 0 .and. any(lad%runs(max(c%run, 1):c%run)%state == state_done)
       end function made
       !> Why a comparison stays at the chosen mesh's run at dt0, with the bands targeted.
       function coarse_words(settled, c) result(text)
          logical, intent(in) :: settled            !< verdict_settled
-         type(comparison_t), intent(in) :: c       !< the comparison made there
+         type(comparison_t), intent(in) :: c
          character(len=:), allocatable :: text
          real(dp) :: band(nq)
          integer :: iq
@@ -124,14 +122,14 @@ contains
 
    !> The variants wanted (theory, bend-twist), each at the settings of its run base(i), run.
    subroutine make_variants(deck, la, runs, base, want, cmp, stat, errmsg)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(launcher_t), intent(inout) :: la         !< the launcher
-      type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
+      type(deck_t), intent(in) :: deck
+      type(launcher_t), intent(inout) :: la
+      type(run_t), allocatable, intent(inout) :: runs(:)
       integer, intent(in) :: base(2)                !< the runs compared with: the theory's, the bend-twist's
       logical, intent(in) :: want(2)                !< the theory, the bend-twist model
-      type(comparison_t), intent(out) :: cmp(2)     !< the two comparisons (run 0 where not wanted)
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< what failed
+      type(comparison_t), intent(out) :: cmp(2)     !< run 0 where not wanted
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
       type(run_t) :: r
       character(len=16) :: other
       cmp%base = base
@@ -156,20 +154,19 @@ contains
 
    !> A run at the settings of run c, planned.
    pure function planned_copy(c) result(r)
-      type(run_t), intent(in) :: c                  !< the run
+      type(run_t), intent(in) :: c
       type(run_t) :: r
       r = c
       r%state = state_planned;  r%cpu_s = 0.0_dp;  r%has = .false.;  r%variant = '';  r%status = ''
       r%exit_code = 0;  r%pid = -1
    end function planned_copy
 
-   !> The runs the two comparisons are made at: x, or where a variant does not fit the cap the
-   !> costliest ladder run done whose variant does (comparison_base), the bend-twist's beside
-   !> the theory's, each priced as it would run.
+   !> The runs the two comparisons are made at: x, or where a variant does not fit the cap
+   !> comparison_base's, the bend-twist's beside the theory's, each priced as it would run.
    function variant_bases(deck, runs, la, x, want) result(base)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      type(launcher_t), intent(in) :: la            !< the launcher (the scene, its cost model and spending)
+      type(deck_t), intent(in) :: deck
+      type(run_t), intent(in) :: runs(:)
+      type(launcher_t), intent(in) :: la
       integer, intent(in) :: x                      !< the run preferred
       logical, intent(in) :: want(2)                !< the theory, the bend-twist model
       integer :: base(2)
@@ -193,8 +190,8 @@ contains
 
    !> The run on the chosen run's mesh at dt0, or the chosen one when that is not done.
    pure integer function coarse_base(runs, chosen) result(coarse)
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      integer, intent(in) :: chosen                 !< the run chosen
+      type(run_t), intent(in) :: runs(:)
+      integer, intent(in) :: chosen
       coarse = ladder_run(runs, 0, runs(chosen)%j)
       if (coarse == 0) coarse = chosen
       if (runs(coarse)%state /= state_done) coarse = chosen
@@ -203,9 +200,9 @@ contains
    !> Whether the verdict of c (model_required) is the same for every change within its band;
    !> a comparison not made settles nothing.
    logical function verdict_settled(c, lad, slack) result(settled)
-      type(comparison_t), intent(in) :: c           !< the comparison
-      type(ladder_t), intent(in) :: lad             !< the ladder (its runs, the target, the results targeted)
-      real(dp), intent(in) :: slack(nq)             !< change_slack
+      type(comparison_t), intent(in) :: c
+      type(ladder_t), intent(in) :: lad
+      real(dp), intent(in) :: slack(nq)             !< how far the change may lie from the chosen run's
       real(dp) :: change(nq), band(nq)
       settled = .false.
       if (c%run == 0) return
@@ -217,9 +214,9 @@ contains
    !> The run a model is compared at: the chosen one, else the costliest ladder run done whose
    !> variant, predicted to cost cost(i), fits the cap (the chosen one when none does).
    integer function comparison_base(runs, la, chosen, cost) result(base)
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      type(launcher_t), intent(in) :: la            !< the launcher (its spending and cap)
-      integer, intent(in) :: chosen                 !< the run chosen
+      type(run_t), intent(in) :: runs(:)
+      type(launcher_t), intent(in) :: la
+      integer, intent(in) :: chosen
       real(dp), intent(in) :: cost(:)               !< the variant's predicted cost at each run's settings (s)
       integer :: i
       base = chosen
@@ -239,9 +236,9 @@ contains
 
    !> The run of the other bend-twist model at the settings of run c, or a note why there is none.
    subroutine bend_twist_variant(deck, scene, c, r, cmp)
-      type(deck_t), intent(in) :: deck              !< the deck
+      type(deck_t), intent(in) :: deck
       type(scene_t), intent(in) :: scene            !< the scene of the deck's model
-      type(run_t), intent(in) :: c                  !< the run chosen
+      type(run_t), intent(in) :: c
       type(run_t), intent(inout) :: r               !< the variant (c's settings in)
       type(comparison_t), intent(inout) :: cmp      !< what it compares, or the note
       real(dp) :: quarters
@@ -249,11 +246,8 @@ contains
       r%role = 'bend_twist';  r%variant = ''
       cmp%richer = 'keep';  cmp%simpler = 'drop'           ! &laminate bend_twist
       cmp%chosen_richer = .not. scene%averaged
-      if (all(scene%couplings(1:2) <= coupling_tol)) then
-         cmp%note = 'the laminate has D16 = D26 = 0'
-      else if (scene%domain == 'strip') then
-         cmp%note = 'a strip (cylindrical bending) has no full plate to compare with'
-      end if
+      if (scene%domain == 'strip') cmp%note = 'a strip (cylindrical bending) has no full plate to compare with'
+      if (all(scene%couplings(1:2) <= coupling_tol)) cmp%note = 'the laminate has D16 = D26 = 0'
       if (len_trim(cmp%note) > 0) return
       quarters = merge(1.0_dp, merge(2.0_dp, 4.0_dp, scene%domain == 'half'), scene%domain == 'quarter')
       if (scene%averaged) then
@@ -279,7 +273,7 @@ contains
 
    !> The quarters of the domain 'auto' picks once D16 and D26 are dropped (1, 2 or 4).
    real(dp) function reduced_quarters(deck) result(quarters)
-      type(deck_t), intent(in) :: deck              !< the deck
+      type(deck_t), intent(in) :: deck
       type(deck_t) :: d
       type(scene_t) :: s
       type(laminate_t) :: lmt
@@ -294,35 +288,33 @@ contains
 
    !> The relative change of each result estimated that the other model of c makes (else 0).
    pure function model_changes(c, lad) result(change)
-      type(comparison_t), intent(in) :: c           !< the comparison (its runs done)
-      type(ladder_t), intent(in) :: lad             !< the ladder (its runs, the results estimated)
+      type(comparison_t), intent(in) :: c           !< its runs done
+      type(ladder_t), intent(in) :: lad
       real(dp) :: change(nq)
-      associate (q => lad%runs(c%run)%q, q_base => lad%runs(c%base)%q)
-      change = merge(relative(q - q_base, error_scale(q_base)), 0.0_dp, lad%estimated)
-      end associate
+      change = merge(relative(lad%runs(c%run)%q - lad%runs(c%base)%q, error_scale(lad%runs(c%base)%q)), &
+                     0.0_dp, lad%estimated)
    end function model_changes
 
    !> Whether a result that must meet the target changes by more than the target.
    pure logical function model_required(change, lad)
       real(dp), intent(in) :: change(nq)            !< the relative changes (model_changes)
-      type(ladder_t), intent(in) :: lad             !< the ladder (the target, the results targeted)
+      type(ladder_t), intent(in) :: lad
       model_required = any(lad%targeted .and. abs(change) > lad%target)
    end function model_required
 
    !> The verdict of comparison c: the fuller model when model_required, else the simpler.
    pure function model_needed(c, change, lad) result(name)
-      type(comparison_t), intent(in) :: c           !< the comparison
+      type(comparison_t), intent(in) :: c
       real(dp), intent(in) :: change(nq)            !< the relative changes (model_changes)
-      type(ladder_t), intent(in) :: lad             !< the ladder (the target, the results targeted)
+      type(ladder_t), intent(in) :: lad
       character(len=:), allocatable :: name
       name = trim(merge(c%richer, c%simpler, model_required(change, lad)))
    end function model_needed
 
-   !> Why comparison c has no results ('' when it has): none made, or its run skipped,
-   !> stopped or failed.
+   !> Why comparison c has no results ('' when it has): none made, its run skipped, stopped, failed.
    pure function not_compared(c, runs) result(text)
-      type(comparison_t), intent(in) :: c           !< the comparison
-      type(run_t), intent(in) :: runs(:)            !< the runs
+      type(comparison_t), intent(in) :: c
+      type(run_t), intent(in) :: runs(:)
       character(len=:), allocatable :: text
       text = trim(c%note)
       if (c%run == 0) return
@@ -338,8 +330,8 @@ contains
    !> The summary's items of one model compared: what, and the relative change of each result.
    subroutine comparison_items(items, c, lad)
       type(summary_item_t), allocatable, intent(inout) :: items(:)   !< the summary
-      type(comparison_t), intent(in) :: c           !< the comparison
-      type(ladder_t), intent(in) :: lad             !< the ladder
+      type(comparison_t), intent(in) :: c
+      type(ladder_t), intent(in) :: lad
       real(dp) :: change(nq)
       integer :: iq
       if (c%run == 0 .or. len(not_compared(c, lad%runs)) > 0) then
@@ -358,10 +350,9 @@ contains
 
    !> The terminal's lines of one model compared, with its verdict (model_required).
    subroutine comparison_lines(unit, c, lad, chosen)
-      integer, intent(in) :: unit                   !< standard output
-      type(comparison_t), intent(in) :: c           !< the comparison
-      type(ladder_t), intent(in) :: lad             !< the ladder
-      integer, intent(in) :: chosen                 !< the run chosen
+      integer, intent(in) :: unit, chosen           !< standard output, the run chosen
+      type(comparison_t), intent(in) :: c
+      type(ladder_t), intent(in) :: lad
       real(dp) :: change(nq)
       character(len=msg_len) :: line
       character(len=:), allocatable :: head
