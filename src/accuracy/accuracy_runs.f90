@@ -175,17 +175,12 @@ contains
    elemental real(dp) function predicted_run_cost(run, la)
       type(run_t), intent(in) :: run               !< the run (its k, nx, ny, cost_factor)
       type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
-      integer :: i, d, best, a
+      integer :: a
       predicted_run_cost = max(la%c_base, 0.0_dp)*relative_cost(run, la%n0, la%gamma)
       if (.not. allocated(la%anchors)) return
-      a = 0;  best = huge(1)
-      do i = 1, size(la%anchors)
-         if (any([la%anchors(i)%nx, la%anchors(i)%ny] /= [run%nx, run%ny]) .or. &
-             la%anchors(i)%cost_factor /= run%cost_factor) cycle
-         d = abs(la%anchors(i)%k - run%k)
-         if (d > best .or. (d == best .and. la%anchors(i)%k < la%anchors(max(a, 1))%k)) cycle   ! as near: the finer
-         a = i;  best = d
-      end do
+      ! the nearest k, of two as near the finer (k < 100)
+      a = minloc(100*abs(la%anchors%k - run%k) - la%anchors%k, mask=la%anchors%nx == run%nx .and. &
+                 la%anchors%ny == run%ny .and. la%anchors%cost_factor == run%cost_factor, dim=1)
       if (a > 0) predicted_run_cost = la%anchors(a)%cpu_s*2.0_dp**(run%k - la%anchors(a)%k)
    end function predicted_run_cost
 
