@@ -601,7 +601,7 @@ contains
 
    !> The accuracy run's words on standard output.
    subroutine report_terminal(unit, la, lad, out)
-      integer, intent(in) :: unit                  !< standard output
+      integer, intent(in) :: unit                   !< standard output
       type(launcher_t), intent(in) :: la
       type(ladder_t), intent(in) :: lad
       type(accuracy_outcome_t), intent(in) :: out

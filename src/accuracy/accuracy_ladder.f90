@@ -70,21 +70,21 @@ contains
 
    !> The run (k, j) of the ladder (not a model variant), 0 when there is none.
    pure integer function ladder_run(runs, k, j) result(i)
-      type(run_t), intent(in) :: runs(:)          !< the runs
+      type(run_t), intent(in) :: runs(:)
       integer, intent(in) :: k, j                 !< time and mesh level
       i = findloc(runs%k == k .and. runs%j == j .and. is_ladder(runs), .true., dim=1)
    end function ladder_run
 
    !> True when the ladder run (k, j) is done.
    pure logical function done_run(runs, k, j)
-      type(run_t), intent(in) :: runs(:)          !< the runs
-      integer, intent(in) :: k, j                 !< its levels
+      type(run_t), intent(in) :: runs(:)
+      integer, intent(in) :: k, j
       done_run = any(runs%k == k .and. runs%j == j .and. is_ladder(runs) .and. runs%state == state_done)
    end function done_run
 
    !> Both axes of the ladder from its runs done.
    subroutine build_axes(lad)
-      type(ladder_t), intent(inout) :: lad        !< the ladder
+      type(ladder_t), intent(inout) :: lad
       call build_axis(lad%runs, axis_time, lad%estimated, lad%tx, 0, 0)
       call build_axis(lad%runs, axis_mesh, lad%estimated, lad%mx, 0, 0)
    end subroutine build_axes
@@ -92,10 +92,10 @@ contains
    !> The axis (axis_time or axis_mesh) from the runs done, the error of each level; a time axis
    !> on mesh level j0 from time level k0.
    subroutine build_axis(runs, which, active, ax, j0, k0)
-      type(run_t), intent(in) :: runs(:)          !< the runs
+      type(run_t), intent(in) :: runs(:)
       integer, intent(in) :: which                !< axis_time or axis_mesh
       logical, intent(in) :: active(nq)           !< the results estimated
-      type(axis_t), intent(out) :: ax             !< the axis
+      type(axis_t), intent(out) :: ax
       integer, intent(in) :: j0, k0               !< a time axis's mesh level and first time level
       integer :: l, i, iq, k, j
       real(dp) :: floor, tail, steps(size(runs))
@@ -135,7 +135,7 @@ contains
    !> The results of run (k, j) and their errors (docs/ACCURACY.md); a run not done predicted as
    !> q(k,0) + q(0,j) - q(0,0), its time error no less than its mesh's at 2 dt over 2^2.
    function judge_run(lad, k, j) result(jd)
-      type(ladder_t), intent(in) :: lad           !< the ladder, its axes built
+      type(ladder_t), intent(in) :: lad
       integer, intent(in) :: k, j                 !< the levels (k <= tx%levels, j < mx%levels; j = 0 for k = tx%levels)
       type(judged_t) :: jd
       integer :: i, ik, ij, i0
@@ -228,8 +228,8 @@ contains
    !> The time error of run (k, j), j > 0, from the time levels done on mesh j next to k (at
    !> least two), no less than mesh 0's; two levels in the asymptotic range: two_grid_index.
    subroutine time_on_mesh(lad, k, j, err_time, measured, two)
-      type(ladder_t), intent(in) :: lad           !< the ladder
-      integer, intent(in) :: k, j                 !< the run's levels
+      type(ladder_t), intent(in) :: lad
+      integer, intent(in) :: k, j
       real(dp), intent(inout) :: err_time(nq)     !< mesh 0's time error in; the larger out
       logical, intent(out) :: measured            !< a neighbouring time level done on mesh j
       logical, intent(out) :: two                 !< measured from two levels only
@@ -256,8 +256,8 @@ contains
    !> The time level whose run on mesh j would measure run (k, j)'s time error: k - 1, or 1 for
    !> k = 0; -1 when none is needed (j = 0, or a neighbour is done).
    pure integer function time_partner(runs, k, j) result(p)
-      type(run_t), intent(in) :: runs(:)          !< the runs
-      integer, intent(in) :: k, j                 !< the run's levels
+      type(run_t), intent(in) :: runs(:)
+      integer, intent(in) :: k, j
       p = -1
       if (j == 0 .or. done_run(runs, k - 1, j) .or. done_run(runs, k + 1, j)) return
       p = merge(k - 1, 1, k > 0)
@@ -265,14 +265,14 @@ contains
 
    !> Whether run (k, j) (mesh 0, below dt0) needs the run (1, 1): no interaction measured yet.
    pure logical function cross_needed(runs, k, j)
-      type(run_t), intent(in) :: runs(:)          !< the runs
-      integer, intent(in) :: k, j                 !< the run's levels
+      type(run_t), intent(in) :: runs(:)
+      integer, intent(in) :: k, j
       cross_needed = k > 0 .and. j == 0 .and. .not. any(runs%state == state_done .and. runs%role == 'combined')
    end function cross_needed
 
    !> The largest interaction of the combined runs done (0 when there is none).
    pure function largest_cross(lad) result(c)
-      type(ladder_t), intent(in) :: lad           !< the ladder
+      type(ladder_t), intent(in) :: lad
       real(dp) :: c(nq)
       integer :: i
       c = 0.0_dp
@@ -288,7 +288,7 @@ contains
    !> The cheapest run (k, j) meeting the target, priced with the runs it still needs (its time
    !> partner, (1, 1) while cross_needed); past the cap: beyond_cap; none: the least worst done.
    function choose_run(lad, la) result(c)
-      type(ladder_t), intent(in) :: lad           !< the ladder, its axes built
+      type(ladder_t), intent(in) :: lad
       type(launcher_t), intent(in) :: la          !< the launcher (its cost model, the cap, the cpu time spent)
       type(choice_t) :: c
       type(judged_t) :: jd
@@ -305,9 +305,8 @@ contains
             if (p >= 0) cost = cost + run_cost(p, jj)     ! a partner is never done (time_partner)
             if (cross_needed(runs, kk, jj) .and. mx%levels > 1) cost = cost + run_cost(1, 1)
             if (jd%worst <= 1.0_dp .and. cost > 0.0_dp .and. la%spent + cost > la%cap) then
-               if (cost < c%beyond_cost) then
-                  c%beyond_cost = cost;  c%beyond_kj = [kk, jj]
-               end if
+               if (cost < c%beyond_cost) c%beyond_kj = [kk, jj]
+               c%beyond_cost = min(c%beyond_cost, cost)
             else if (jd%worst <= 1.0_dp) then
                if (.not. c%found .or. cost < best_cost .or. (cost == best_cost .and. jd%worst < best_worst)) then
                   c%found = .true.;  c%k = kk;  c%j = jj;  best_cost = cost;  best_worst = jd%worst
@@ -322,7 +321,7 @@ contains
    contains
       !> The predicted cost of the run (k, j): what the cost model reads, k, nx, ny.
       real(dp) function run_cost(kr, jr)
-         integer, intent(in) :: kr, jr            !< its levels
+         integer, intent(in) :: kr, jr
          type(run_t) :: probe
          probe%k = kr
          probe%nx = lad%runs(lad%mx%run(jr + 1))%nx;  probe%ny = lad%runs(lad%mx%run(jr + 1))%ny
@@ -332,7 +331,7 @@ contains
 
    !> The run done meeting the target with the least worst ratio, else the least worst ratio.
    function final_run(lad) result(kj)
-      type(ladder_t), intent(in) :: lad           !< the ladder, its axes built
+      type(ladder_t), intent(in) :: lad
       integer :: kj(2)
       type(judged_t) :: jd
       real(dp) :: best(2)
@@ -342,12 +341,10 @@ contains
          do jj = 0, lad%mx%levels - 1
             if (.not. done_run(lad%runs, kk, jj)) cycle
             jd = judge_run(lad, kk, jj)
-            if (jd%meets .and. .not. cross_needed(lad%runs, kk, jj) .and. jd%worst < best(1)) then
-               kj = [kk, jj];  best(1) = jd%worst
-            end if
-            if (jd%worst < best(2)) then
-               other = [kk, jj];  best(2) = jd%worst
-            end if
+            if (jd%meets .and. .not. cross_needed(lad%runs, kk, jj) .and. jd%worst < best(1)) kj = [kk, jj]
+            if (all(kj == [kk, jj])) best(1) = jd%worst
+            if (jd%worst < best(2)) other = [kk, jj]
+            best(2) = min(best(2), jd%worst)
          end do
       end do
       if (kj(1) < 0) kj = other

@@ -97,10 +97,10 @@ contains
    !> Starts the planned runs within the cap (module header) and waits for all; stat /= 0 when a
    !> run could not be started (a run that fails is state_failed).
    subroutine run_planned(runs, la, stat, errmsg)
-      type(run_t), intent(inout) :: runs(:)        !< the runs
-      type(launcher_t), intent(inout) :: la        !< the launcher
-      integer, intent(out) :: stat                 !< 0 on success
-      character(len=*), intent(inout) :: errmsg    !< what failed
+      type(run_t), intent(inout) :: runs(:)
+      type(launcher_t), intent(inout) :: la
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
       integer :: i, pid, code, running
       logical :: known
       stat = 0;  running = 0
@@ -125,19 +125,15 @@ contains
          end do launch
          if (running == 0) exit
          call wait_child(pid, code)
-         if (pid < 0) then
-            stat = 1
-            errmsg = 'waitpid: the runs started are gone'
-            exit
-         end if
+         if (pid < 0) errmsg = 'waitpid: the runs started are gone'
+         stat = merge(1, stat, pid < 0)
+         if (pid < 0) exit
          i = findloc(runs%pid, pid, dim=1)
          if (i == 0) cycle
          running = running - 1
          runs(i)%pid = -1;  runs(i)%exit_code = code
-         if (stop_caught() /= 0 .and. code /= 0) then   ! ended by the stop: its restart point kept
-            runs(i)%state = state_stopped
-            cycle
-         end if
+         if (stop_caught() /= 0 .and. code /= 0) runs(i)%state = state_stopped   ! its restart point kept
+         if (runs(i)%state == state_stopped) cycle
          known = la%c_base >= 0.0_dp
          call finish_run(runs(i), la)
          call fit_costs(runs, la)
@@ -153,7 +149,7 @@ contains
 
    !> Once the first run is done: the cap, when a multiple of it, and the price on standard output.
    subroutine state_price(runs, la)
-      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(run_t), intent(in) :: runs(:)
       type(launcher_t), intent(inout) :: la        !< the launcher (its cost model, known now)
       real(dp) :: cost(size(runs))
       character(len=:), allocatable :: names
@@ -186,7 +182,7 @@ contains
 
    !> What each result's error is relative to: its size; for the time of the peak the duration.
    pure function error_scale(q) result(scale)
-      real(dp), intent(in) :: q(nq)                !< the results
+      real(dp), intent(in) :: q(nq)
       real(dp) :: scale(nq)
       scale = abs(q)
       scale(iq_peak_time) = abs(q(iq_duration))
@@ -201,7 +197,7 @@ contains
 
    !> A run's cost relative to the level-0 run of n0 elements (module header).
    pure real(dp) function relative_cost(run, n0, gamma)
-      type(run_t), intent(in) :: run               !< the run
+      type(run_t), intent(in) :: run
       integer, intent(in) :: n0                    !< level 0's elements
       real(dp), intent(in) :: gamma                !< the exponent of the element count
       relative_cost = 2.0_dp**run%k*(real(run%nx, dp)*real(run%ny, dp)/real(n0, dp)*run%cost_factor)**gamma
@@ -209,14 +205,14 @@ contains
 
    !> True for a run of the ladder, false for a model variant.
    elemental logical function is_ladder(run)
-      type(run_t), intent(in) :: run               !< the run
+      type(run_t), intent(in) :: run
       is_ladder = run%role /= 'theory' .and. run%role /= 'bend_twist'
    end function is_ladder
 
    !> The cost model fitted to the runs done (module header).
    subroutine fit_costs(runs, la)
-      type(run_t), intent(in) :: runs(:)           !< the runs
-      type(launcher_t), intent(inout) :: la        !< the launcher
+      type(run_t), intent(in) :: runs(:)
+      type(launcher_t), intent(inout) :: la
       integer :: i, finest, next
       real(dp) :: ratio
       logical :: at_dt0(size(runs))
@@ -237,8 +233,8 @@ contains
 
    !> The arguments of a run, without the program.
    function run_settings(run, la) result(args)
-      type(run_t), intent(in) :: run               !< the run
-      type(launcher_t), intent(in) :: la           !< the launcher
+      type(run_t), intent(in) :: run
+      type(launcher_t), intent(in) :: la
       character(len=8192), allocatable :: args(:), sets(:)
       integer :: i
       args = [character(len=8192) :: '--single']       ! one run: the deck's &accuracy left aside
@@ -258,7 +254,7 @@ contains
 
    !> text as a deck's quoted text: 'text', a quote in it doubled.
    pure function quoted(text) result(q)
-      character(len=*), intent(in) :: text         !< the text
+      character(len=*), intent(in) :: text
       character(len=:), allocatable :: q
       integer :: i
       q = "'"
@@ -271,7 +267,7 @@ contains
 
    !> A run that ended: its summary read, its state, one line of progress.
    subroutine finish_run(run, la)
-      type(run_t), intent(inout) :: run            !< the run
+      type(run_t), intent(inout) :: run
       type(launcher_t), intent(inout) :: la        !< the launcher (its spending)
       type(summary_t) :: s
       character(len=msg_len) :: errmsg

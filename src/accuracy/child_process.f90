@@ -35,12 +35,12 @@ contains
    !> Starts the program `path` with `args`, its output and errors into `log_path` (emptied),
    !> the environment inherited with IMPACT_PARENT_PID, in a process group of its own.
    subroutine spawn_program(path, args, log_path, pid, stat, errmsg)
-      character(len=*), intent(in) :: path          !< the program
+      character(len=*), intent(in) :: path
       character(len=*), intent(in) :: args(:)       !< its arguments, trailing blanks not part of them
       character(len=*), intent(in) :: log_path      !< where its output goes
       integer, intent(out) :: pid                   !< the child's process id
       integer, intent(out) :: stat                  !< 0, or the C library's error number
-      character(len=*), intent(inout) :: errmsg     !< what failed
+      character(len=*), intent(inout) :: errmsg
       type(spawn_actions_t) :: actions
       type(spawn_attr_t) :: attr
       character(kind=c_char), allocatable, target :: chars(:), env(:)
@@ -167,11 +167,8 @@ contains
       integer(c_long) :: n
       integer :: length
       n = c_readlink('/proc/self/exe' // c_null_char, buf, int(max_path, c_size_t))
-      if (n > 0 .and. n < max_path) then
-         allocate (character(len=n) :: path)
-         path = transfer(buf(:n), path)
-         return
-      end if
+      if (n > 0 .and. n < max_path) path = transfer(buf(:n), repeat(' ', int(n)))
+      if (n > 0 .and. n < max_path) return
       call get_command_argument(0, length=length)
       allocate (character(len=length) :: path)
       if (length > 0) call get_command_argument(0, path)

@@ -74,7 +74,7 @@ contains
    contains
       !> Richardson's error of the finest level at order po.
       pure real(dp) function richardson(po)
-         real(dp), intent(in) :: po       !< the order
+         real(dp), intent(in) :: po
          real(dp) :: ratio
          ratio = (h(n)/h(n - 1))**po
          richardson = huge(1.0_dp)
@@ -100,7 +100,7 @@ contains
    contains
       !> (h1^x - h2^x)/(h2^x - h3^x), scaled by h3 (it grows with x).
       pure real(dp) function f(x)
-         real(dp), intent(in) :: x          !< the order
+         real(dp), intent(in) :: x
          f = ((h(1)/h(3))**x - (h(2)/h(3))**x)/((h(2)/h(3))**x - 1.0_dp)
       end function f
    end function observed_order
@@ -128,14 +128,14 @@ contains
    !> Roache's grid convergence index of the finer of two levels of known order p.
    pure real(dp) function two_grid_index(h, q, p) result(e)
       real(dp), intent(in) :: h(2), q(2)       !< step or element size of the two levels, decreasing; the result at each
-      real(dp), intent(in) :: p                !< the order
+      real(dp), intent(in) :: p
       e = two_level_factor*abs(q(1) - q(2))/((h(1)/h(2))**p - 1.0_dp)
    end function two_grid_index
 
    !> The value of the next level of a ladder that goes on converging at order p.
    pure real(dp) function continued_value(h, q, p) result(q_next)
       real(dp), intent(in) :: h(3), q(2)       !< sizes of the last two levels and the next; the results of the two
-      real(dp), intent(in) :: p                !< the order
+      real(dp), intent(in) :: p
       q_next = q(2) - (q(1) - q(2))*(h(3)**p - h(2)**p)/(h(2)**p - h(1)**p)
    end function continued_value
 

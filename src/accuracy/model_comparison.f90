@@ -43,7 +43,7 @@ contains
       type(deck_t), intent(in) :: deck
       type(launcher_t), intent(inout) :: la
       type(ladder_t), intent(inout) :: lad          !< the variants added to its runs
-      integer, intent(in) :: chosen                 !< the run chosen
+      integer, intent(in) :: chosen
       type(comparison_t), intent(out) :: cmp(2)     !< the theory's, the bend-twist model's
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
