@@ -16,7 +16,6 @@ module accuracy_ladder
    public :: axis_t, judged_t, choice_t, ladder_t, build_axes, judge_run, choose_run, final_run, ladder_run, &
              time_partner, cross_needed, done_run, peak_spread
 
-   !> The two axes.
    integer, parameter :: axis_time = 1, axis_mesh = 2
    !> The results that are times read off the steps: the contact's duration, the time of the peak.
    logical, parameter :: time_results(nq) = [.false., .false., .true., .true., .false., .false., .false.]

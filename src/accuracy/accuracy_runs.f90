@@ -32,7 +32,6 @@ module accuracy_runs
    !> States of a run (stopped: by a stop signal to the accuracy run).
    integer, parameter :: state_planned = 0, state_running = 1, state_done = 2, state_failed = 3, state_skipped = 4, &
                          state_stopped = 5
-   !> Settings of a variant, at most.
    integer, parameter :: max_variant = 4
    !> The cost model's exponent of the element count before two meshes are measured, and its bounds.
    real(dp), parameter :: gamma_default = 1.8_dp, gamma_min = 1.0_dp, gamma_max = 3.0_dp
