@@ -17,18 +17,19 @@ module accuracy_driver
    use plate_model, only: model_t, build_model
    use mesh, only: mesh_t
    use scene_settings, only: settings_t, scene_settings_of
-   use file_system, only: make_directories, path_kind, path_regular, file_size, remove_file, file_lock_t, &
-      lock_file, unlock_file
-   use result_files, only: results_claim_t, claim_results, release_results, summary_item_t, summary_real, &
-      summary_integer, summary_text, write_summary_file, write_column_block
+   use file_system, only: make_directories, path_kind, path_regular, file_size, remove_file, &
+      file_lock_t, lock_file, unlock_file
+   use result_files, only: results_claim_t, claim_results, release_results, summary_item_t, &
+      summary_real, summary_integer, summary_text, write_summary_file, write_column_block
    use result_reader, only: summary_t, read_summary
    use child_process, only: program_path, usable_cpus, pass_stops_to_children, stop_caught
-   use accuracy_runs, only: run_t, launcher_t, nq, result_keys, result_units, run_planned, state_planned, &
-      state_done, state_failed, state_skipped, predicted_run_cost, ladder_name, error_scale, iq_failure, &
-      iq_peak_time, is_ladder
-   use accuracy_ladder, only: ladder_t, axis_t, judged_t, choice_t, build_axes, judge_run, choose_run, &
-      final_run, ladder_run, time_partner, cross_needed, done_run
-   use model_comparison, only: comparison_t, compare_models, comparison_items, comparison_lines, relative
+   use accuracy_runs, only: run_t, launcher_t, nq, result_keys, result_units, run_planned, &
+      state_planned, state_done, state_failed, state_skipped, predicted_run_cost, ladder_name, &
+      error_scale, iq_failure, iq_peak_time, is_ladder
+   use accuracy_ladder, only: ladder_t, axis_t, judged_t, choice_t, build_axes, judge_run, &
+      choose_run, final_run, ladder_run, time_partner, cross_needed, done_run
+   use model_comparison, only: comparison_t, compare_models, comparison_items, comparison_lines, &
+      relative
    implicit none
    private
    public :: run_accuracy, ladder_mesh, targeted_results
@@ -74,7 +75,7 @@ contains
       type(options_t), intent(in) :: opts
       type(deck_t), intent(in) :: deck
       integer, intent(in) :: unit                   !< standard output
-      integer, intent(out) :: exit_code, stat       !< 0 met, exit_not_met, 128 + N stopped by N; 0 on success
+      integer, intent(out) :: exit_code, stat       !< 0 met, exit_not_met, 128 + N stopped by N; 0
       character(len=*), intent(inout) :: errmsg
       type(results_claim_t) :: claim
       type(launcher_t) :: la
@@ -160,7 +161,8 @@ contains
       call ladder_mesh(deck, model%msh, base, la%impact_element, why)
       la%n0 = base%nx*base%ny
       call make_directories(la%dir(:len(la%dir) - 1), stat, iomsg)
-      if (stat /= 0) errmsg = deck%source // ": &output: prefix = '" // deck%prefix // "': " // trim(iomsg)
+      if (stat /= 0) errmsg = deck%source // ": &output: prefix = '" // deck%prefix // "': " // &
+         trim(iomsg)
       if (stat /= 0) return
       cap = int_str(default_cap_times) // ' times the first run''s cpu time'
       if (la%cap_times == 0) cap = real_short(la%cap) // ' s of cpu'

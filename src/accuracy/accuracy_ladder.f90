@@ -340,7 +340,8 @@ contains
          do jj = 0, lad%mx%levels - 1
             if (.not. done_run(lad%runs, kk, jj)) cycle
             jd = judge_run(lad, kk, jj)
-            if (jd%meets .and. .not. cross_needed(lad%runs, kk, jj) .and. jd%worst < best(1)) kj = [kk, jj]
+            if (jd%meets .and. .not. cross_needed(lad%runs, kk, jj) .and. jd%worst < best(1)) &
+               kj = [kk, jj]
             if (all(kj == [kk, jj])) best(1) = jd%worst
             if (jd%worst < best(2)) other = [kk, jj]
             best(2) = min(best(2), jd%worst)

@@ -131,7 +131,7 @@ contains
          if (i == 0) cycle
          running = running - 1
          runs(i)%pid = -1;  runs(i)%exit_code = code
-         if (stop_caught() /= 0 .and. code /= 0) runs(i)%state = state_stopped   ! its restart point kept
+         if (stop_caught() /= 0 .and. code /= 0) runs(i)%state = state_stopped   ! restart point kept
          if (runs(i)%state == state_stopped) cycle
          known = la%c_base >= 0.0_dp
          call finish_run(runs(i), la)

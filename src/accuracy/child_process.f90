@@ -111,7 +111,7 @@ contains
 
    !> Waits for any child of the process to end.
    subroutine wait_child(pid, exit_code)
-      integer, intent(out) :: pid, exit_code   !< the child that ended (-1: none); its status, 128 + N by signal N
+      integer, intent(out) :: pid, exit_code   !< the child ended (-1: none); its status (128 + N: signal N)
       integer(c_int) :: status, r
       r = c_waitpid(-1_c_int, status, 0_c_int)
       pid = merge(int(r), -1, r > 0)

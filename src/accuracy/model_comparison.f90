@@ -85,12 +85,12 @@ contains
       if (stat /= 0) return
       do i = 1, 2
          if (.not. again(i)) cycle
-         ! a second made stands (at the chosen settings, as again says), else the first
-         if (second(i)%run == 0 .or. coarse == chosen .or. .not. made(cmp(i)) .or. made(second(i))) then
+         if (coarse /= chosen .and. made(cmp(i)) .and. second(i)%run > 0 .and. &
+             .not. made(second(i))) then             ! the cap skipped the second: the first stands
+            cmp(i)%at = coarse_words(.false., cmp(i))
+         else
             cmp(i) = second(i)
             if (cmp(i)%base /= chosen) cmp(i)%at = past_cap
-         else                                       ! the cap skipped the second: the first stands
-            cmp(i)%at = coarse_words(.false., cmp(i))
          end if
       end do
    contains
@@ -202,7 +202,7 @@ contains
    logical function verdict_settled(c, lad, slack) result(settled)
       type(comparison_t), intent(in) :: c
       type(ladder_t), intent(in) :: lad
-      real(dp), intent(in) :: slack(nq)             !< how far the change may lie from the chosen run's
+      real(dp), intent(in) :: slack(nq)             !< how far the change may be from the chosen's
       real(dp) :: change(nq), band(nq)
       settled = .false.
       if (c%run == 0) return
@@ -246,7 +246,8 @@ contains
       r%role = 'bend_twist';  r%variant = ''
       cmp%richer = 'keep';  cmp%simpler = 'drop'           ! &laminate bend_twist
       cmp%chosen_richer = .not. scene%averaged
-      if (scene%domain == 'strip') cmp%note = 'a strip (cylindrical bending) has no full plate to compare with'
+      if (scene%domain == 'strip') cmp%note = 'a strip (cylindrical bending) has no full plate to ' // &
+         'compare with'
       if (all(scene%couplings(1:2) <= coupling_tol)) cmp%note = 'the laminate has D16 = D26 = 0'
       if (len_trim(cmp%note) > 0) return
       quarters = merge(1.0_dp, merge(2.0_dp, 4.0_dp, scene%domain == 'half'), scene%domain == 'quarter')
@@ -291,8 +292,9 @@ contains
       type(comparison_t), intent(in) :: c           !< its runs done
       type(ladder_t), intent(in) :: lad
       real(dp) :: change(nq)
-      change = merge(relative(lad%runs(c%run)%q - lad%runs(c%base)%q, error_scale(lad%runs(c%base)%q)), &
-                     0.0_dp, lad%estimated)
+      associate (q => lad%runs(c%run)%q, q_base => lad%runs(c%base)%q)
+      change = merge(relative(q - q_base, error_scale(q_base)), 0.0_dp, lad%estimated)
+      end associate
    end function model_changes
 
    !> Whether a result that must meet the target changes by more than the target.
