@@ -138,12 +138,9 @@ contains
          call fit_costs(runs, la)
          if (.not. known .and. la%c_base >= 0.0_dp) call state_price(runs, la)
       end do
-      if (stop_caught() /= 0) then
-         where (runs%state == state_planned) runs%state = state_stopped
-      else if (stat == 0 .and. any(runs%state == state_planned)) then
-         where (runs%state == state_planned) runs%state = state_skipped
-         la%cap_reached = .true.
-      end if
+      if (stop_caught() /= 0) where (runs%state == state_planned) runs%state = state_stopped
+      la%cap_reached = la%cap_reached .or. (stat == 0 .and. any(runs%state == state_planned))
+      if (stat == 0) where (runs%state == state_planned) runs%state = state_skipped
    end subroutine run_planned
 
    !> Once the first run is done: the cap, when a multiple of it, and the price on standard output.

@@ -71,11 +71,9 @@ contains
       ignored = c_spawn_actions_destroy(actions)
       ignored = c_spawnattr_destroy(attr)
       stat = r
-      if (r /= 0) then
-         errmsg = 'cannot start ' // path // ' (posix_spawn: error ' // int_str(r) // ')'
-         if (r == eloop) errmsg = log_path // ' is a symbolic link: a run writes no file through a link'
-         return
-      end if
+      if (r /= 0) errmsg = 'cannot start ' // path // ' (posix_spawn: error ' // int_str(r) // ')'
+      if (r == eloop) errmsg = log_path // ' is a symbolic link: a run writes no file through a link'
+      if (r /= 0) return
       pid = cpid
       i = findloc(children, 0_c_int, dim=1)
       if (i > 0) children(i) = cpid
@@ -186,7 +184,6 @@ contains
       do i = 1, size(slurm_vars)
          call get_environment_variable(trim(slurm_vars(i)), text, length, st)
          if (st /= 0 .or. length == 0) cycle
-         slurm = 0
          read (text, *, iostat=st) slurm
          if (st == 0 .and. slurm > 0) n = min(n, slurm)
       end do

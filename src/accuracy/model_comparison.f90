@@ -66,11 +66,10 @@ contains
          if (stat /= 0) return
          cmp = first
          do i = 1, 2
-            if (first(i)%base /= coarse) then      ! even that run would pass the cap
-               cmp(i)%at = past_cap;  again(i) = .false.
-            else if (verdict_settled(first(i), lad, slack)) then
-               cmp(i)%at = coarse_words(.true., first(i));  again(i) = .false.
-            end if
+            again(i) = first(i)%base == coarse .and. .not. verdict_settled(first(i), lad, slack)
+            if (first(i)%base /= coarse) cmp(i)%at = past_cap   ! even that run would pass the cap
+            if (first(i)%base == coarse .and. .not. again(i)) &
+               cmp(i)%at = coarse_words(.true., first(i))
          end do
          base = variant_bases(deck, lad%runs, la, chosen, again)
          do i = 1, 2
@@ -146,9 +145,8 @@ contains
       cmp(2)%what = 'bend_twist'
       r = planned_copy(runs(base(2)))
       call bend_twist_variant(deck, la%scene, runs(base(2)), r, cmp(2))
-      if (want(2) .and. len_trim(cmp(2)%note) == 0) then
-         runs = [runs, r];  cmp(2)%run = size(runs)
-      end if
+      if (want(2) .and. len_trim(cmp(2)%note) == 0) runs = [runs, r]
+      if (want(2) .and. len_trim(cmp(2)%note) == 0) cmp(2)%run = size(runs)
       call run_planned(runs, la, stat, errmsg)
    end subroutine make_variants
 
