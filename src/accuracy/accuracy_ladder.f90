@@ -16,7 +16,6 @@ module accuracy_ladder
    public :: axis_t, judged_t, choice_t, ladder_t, build_axes, judge_run, choose_run, final_run, ladder_run, &
              time_partner, cross_needed, done_run, peak_spread
 
-   !> The two axes.
    integer, parameter :: axis_time = 1, axis_mesh = 2
    !> The results that are times read off the steps: the contact's duration, the time of the peak.
    logical, parameter :: time_results(nq) = [.false., .false., .true., .true., .false., .false., .false.]
@@ -70,27 +69,21 @@ contains
 
    !> The run (k, j) of the ladder (not a model variant), 0 when there is none.
    pure integer function ladder_run(runs, k, j) result(i)
-      type(run_t), intent(in) :: runs(:)          !< the runs
+      type(run_t), intent(in) :: runs(:)
       integer, intent(in) :: k, j                 !< time and mesh level
-      do i = 1, size(runs)
-         if (runs(i)%k == k .and. runs(i)%j == j .and. is_ladder(runs(i))) return
-      end do
-      i = 0
+      i = findloc(runs%k == k .and. runs%j == j .and. is_ladder(runs), .true., dim=1)
    end function ladder_run
 
    !> True when the ladder run (k, j) is done.
    pure logical function done_run(runs, k, j)
-      type(run_t), intent(in) :: runs(:)          !< the runs
-      integer, intent(in) :: k, j                 !< its levels
-      integer :: i
-      done_run = .false.
-      i = ladder_run(runs, k, j)
-      if (i > 0) done_run = runs(i)%state == state_done
+      type(run_t), intent(in) :: runs(:)
+      integer, intent(in) :: k, j
+      done_run = any(runs%k == k .and. runs%j == j .and. is_ladder(runs) .and. runs%state == state_done)
    end function done_run
 
    !> Both axes of the ladder from its runs done.
    subroutine build_axes(lad)
-      type(ladder_t), intent(inout) :: lad        !< the ladder
+      type(ladder_t), intent(inout) :: lad
       call build_axis(lad%runs, axis_time, lad%estimated, lad%tx, 0, 0)
       call build_axis(lad%runs, axis_mesh, lad%estimated, lad%mx, 0, 0)
    end subroutine build_axes
@@ -98,22 +91,20 @@ contains
    !> The axis (axis_time or axis_mesh) from the runs done, the error of each level; a time axis
    !> on mesh level j0 from time level k0.
    subroutine build_axis(runs, which, active, ax, j0, k0)
-      type(run_t), intent(in) :: runs(:)          !< the runs
+      type(run_t), intent(in) :: runs(:)
       integer, intent(in) :: which                !< axis_time or axis_mesh
       logical, intent(in) :: active(nq)           !< the results estimated
-      type(axis_t), intent(out) :: ax             !< the axis
+      type(axis_t), intent(out) :: ax
       integer, intent(in) :: j0, k0               !< a time axis's mesh level and first time level
       integer :: l, i, iq, k, j
-      real(dp) :: floor, tail
+      real(dp) :: floor, tail, steps(size(runs))
       allocate (ax%run(0), ax%h(0))
-      l = 0
-      do
+      do l = 0, size(runs)
          k = merge(k0 + l, 0, which == axis_time);  j = merge(j0, l, which == axis_time)
          if (.not. done_run(runs, k, j)) exit
          i = ladder_run(runs, k, j)
          ax%run = [ax%run, i]
          ax%h = [ax%h, merge(runs(i)%dt, 1.0_dp/sqrt(real(runs(i)%nx, dp)*real(runs(i)%ny, dp)), which == axis_time)]
-         l = l + 1
       end do
       ax%levels = l
       allocate (ax%err(l, nq), source=huge(1.0_dp))
@@ -121,8 +112,11 @@ contains
       do iq = 1, nq
          if (.not. active(iq)) cycle
          associate (q => runs(ax%run)%q(iq), e => ax%finest(iq))
+         steps(:l) = q/(runs(ax%run)%dt*1.0e6_dp)   ! a time (us) read off its run's steps: dt the floor
          floor = 0.0_dp
-         if (time_results(iq) .and. on_steps(q, runs(ax%run)%dt)) floor = runs(ax%run(l))%dt*1.0e6_dp
+         if (time_results(iq) .and. all(abs(steps(:l) - anint(steps(:l))) <= &
+                                        1.0e-6_dp*max(1.0_dp, abs(steps(:l))))) &
+            floor = runs(ax%run(l))%dt*1.0e6_dp
          e = ladder_estimate(ax%h, q, order_theory(which), order_low(which), order_high(which), floor)
          if (which == axis_mesh) then
             tail = log_tail(ax%h, q, runs(ax%run(l))%h_impact/runs(ax%run(l))%contact_radius)
@@ -137,28 +131,17 @@ contains
       end do
    end subroutine build_axis
 
-   !> True when every time (us) is a whole number of its run's step (s).
-   pure logical function on_steps(t_us, dt)
-      real(dp), intent(in) :: t_us(:), dt(:)      !< the times (us), the steps of their runs (s)
-      real(dp) :: steps(size(t_us))
-      steps = t_us/(dt*1.0e6_dp)
-      on_steps = all(abs(steps - anint(steps)) <= 1.0e-6_dp*max(1.0_dp, abs(steps)))
-   end function on_steps
-
-   !> The results of run (k, j) and their errors, the interaction no less than the largest
-   !> measured (docs/ACCURACY.md); a run not done predicted as q(k,0) + q(0,j) - q(0,0), its
-   !> time error no less than its mesh's at 2 dt over 2^2; k = tx%levels: judge_next_time.
+   !> The results of run (k, j) and their errors (docs/ACCURACY.md); a run not done predicted as
+   !> q(k,0) + q(0,j) - q(0,0), its time error no less than its mesh's at 2 dt over 2^2.
    function judge_run(lad, k, j) result(jd)
-      type(ladder_t), intent(in) :: lad           !< the ladder, its axes built
+      type(ladder_t), intent(in) :: lad
       integer, intent(in) :: k, j                 !< the levels (k <= tx%levels, j < mx%levels; j = 0 for k = tx%levels)
       type(judged_t) :: jd
       integer :: i, ik, ij, i0
       real(dp) :: below(nq)
       logical :: measured, known, two
-      if (k >= lad%tx%levels) then                 ! the next time level, not yet planned
-         jd = judge_next_time(lad)
-         return
-      end if
+      if (k >= lad%tx%levels) jd = judge_next_time(lad)   ! the next time level, not yet planned
+      if (k >= lad%tx%levels) return
       associate (runs => lad%runs)
       i0 = lad%tx%run(1);  ik = lad%tx%run(k + 1);  ij = lad%mx%run(j + 1)
       i = merge(ladder_run(runs, k, j), 0, done_run(runs, k, j))
@@ -181,9 +164,8 @@ contains
       end associate
    end function judge_run
 
-   !> The next time level on mesh 0 before it is planned: a result converging at an order p
-   !> no faster than its range continued by p (continued_value), its error the axis's rule with
-   !> that level added; any other result the finest level's (a safe bound predicts no gain).
+   !> The next time level on mesh 0: a result converging at p in range continued by p, its error
+   !> the axis's rule with that level; any other the finest level's (a safe bound predicts no gain).
    function judge_next_time(lad) result(jd)
       type(ladder_t), intent(in) :: lad           !< the ladder (tx%levels >= 1)
       type(judged_t) :: jd
@@ -216,7 +198,6 @@ contains
       type(ladder_t), intent(in) :: lad           !< the ladder (the target, the results targeted)
       logical, intent(in) :: measured             !< the time error measured on its mesh
       real(dp) :: scale(nq)
-      integer :: iq
       jd%err = jd%err_time + jd%err_mesh + jd%err_cross
       if (jd%err(iq_force) < huge(1.0_dp) .and. maxima_run%has(iq_peak_time)) then
          jd%err_maxima(iq_peak_time) = peak_spread(maxima_run%maxima, jd%value(iq_peak_time), &
@@ -224,12 +205,9 @@ contains
          jd%err(iq_peak_time) = jd%err(iq_peak_time) + jd%err_maxima(iq_peak_time)
       end if
       scale = lad%target*error_scale(jd%value)
-      jd%worst = 0.0_dp
-      do iq = 1, nq
-         if (.not. lad%targeted(iq)) cycle
-         if (scale(iq) > 0.0_dp) jd%worst = max(jd%worst, jd%err(iq)/scale(iq))
-         if (scale(iq) <= 0.0_dp .and. jd%err(iq) > 0.0_dp) jd%worst = huge(1.0_dp)
-      end do
+      jd%worst = max(0.0_dp, maxval(jd%err/merge(scale, 1.0_dp, scale > 0.0_dp), &
+                                    mask=lad%targeted .and. scale > 0.0_dp))
+      if (any(lad%targeted .and. scale <= 0.0_dp .and. jd%err > 0.0_dp)) jd%worst = huge(1.0_dp)
       jd%meets = jd%worst <= 1.0_dp .and. measured;  jd%time_measured = measured
    end subroutine weigh
 
@@ -239,31 +217,26 @@ contains
       type(maxima_t), intent(in) :: mx            !< the run's maxima
       real(dp), intent(in) :: t_peak              !< the time of the peak (us)
       real(dp), intent(in) :: f_peak, e_force     !< the peak force and its error (N)
-      integer :: i, top
+      integer :: i
       spread = 0.0_dp
       if (.not. allocated(mx%f_n)) return
-      if (size(mx%f_n) == 0) return
-      top = maxloc(mx%f_n, dim=1)
-      do i = 1, size(mx%f_n)
-         if (i /= top .and. mx%f_n(i) >= f_peak - e_force) spread = max(spread, abs(mx%t_us(i) - t_peak))
-      end do
+      spread = max(0.0_dp, maxval(abs(mx%t_us - t_peak), mask=mx%f_n >= f_peak - e_force .and. &
+                                  [(i /= maxloc(mx%f_n, dim=1), i = 1, size(mx%f_n))]))
    end function peak_spread
 
    !> The time error of run (k, j), j > 0, from the time levels done on mesh j next to k (at
    !> least two), no less than mesh 0's; two levels in the asymptotic range: two_grid_index.
    subroutine time_on_mesh(lad, k, j, err_time, measured, two)
-      type(ladder_t), intent(in) :: lad           !< the ladder
-      integer, intent(in) :: k, j                 !< the run's levels
+      type(ladder_t), intent(in) :: lad
+      integer, intent(in) :: k, j
       real(dp), intent(inout) :: err_time(nq)     !< mesh 0's time error in; the larger out
       logical, intent(out) :: measured            !< a neighbouring time level done on mesh j
       logical, intent(out) :: two                 !< measured from two levels only
       type(axis_t) :: ax
       real(dp) :: finest
       integer :: iq, k0
-      k0 = k
-      do while (k0 > 0)
+      do k0 = k, 1, -1                              ! the first of the time levels done next to k
          if (.not. done_run(lad%runs, k0 - 1, j)) exit
-         k0 = k0 - 1
       end do
       call build_axis(lad%runs, axis_time, lad%targeted, ax, j, k0)
       measured = ax%levels >= 2 .and. k - k0 < ax%levels;  two = measured .and. ax%levels == 2
@@ -282,8 +255,8 @@ contains
    !> The time level whose run on mesh j would measure run (k, j)'s time error: k - 1, or 1 for
    !> k = 0; -1 when none is needed (j = 0, or a neighbour is done).
    pure integer function time_partner(runs, k, j) result(p)
-      type(run_t), intent(in) :: runs(:)          !< the runs
-      integer, intent(in) :: k, j                 !< the run's levels
+      type(run_t), intent(in) :: runs(:)
+      integer, intent(in) :: k, j
       p = -1
       if (j == 0 .or. done_run(runs, k - 1, j) .or. done_run(runs, k + 1, j)) return
       p = merge(k - 1, 1, k > 0)
@@ -291,14 +264,14 @@ contains
 
    !> Whether run (k, j) (mesh 0, below dt0) needs the run (1, 1): no interaction measured yet.
    pure logical function cross_needed(runs, k, j)
-      type(run_t), intent(in) :: runs(:)          !< the runs
-      integer, intent(in) :: k, j                 !< the run's levels
+      type(run_t), intent(in) :: runs(:)
+      integer, intent(in) :: k, j
       cross_needed = k > 0 .and. j == 0 .and. .not. any(runs%state == state_done .and. runs%role == 'combined')
    end function cross_needed
 
    !> The largest interaction of the combined runs done (0 when there is none).
    pure function largest_cross(lad) result(c)
-      type(ladder_t), intent(in) :: lad           !< the ladder
+      type(ladder_t), intent(in) :: lad
       real(dp) :: c(nq)
       integer :: i
       c = 0.0_dp
@@ -311,12 +284,10 @@ contains
       end associate
    end function largest_cross
 
-   !> The cheapest run (k, j) that meets the target: its cost the runs still to make for it,
-   !> its time partner and the run (1, 1) while cross_needed; the next time level too while
-   !> k_max allows. One past the cap is not taken (beyond_cap); not found: the done run with
-   !> the least worst ratio.
+   !> The cheapest run (k, j) meeting the target, priced with the runs it still needs (its time
+   !> partner, (1, 1) while cross_needed); past the cap: beyond_cap; none: the least worst done.
    function choose_run(lad, la) result(c)
-      type(ladder_t), intent(in) :: lad           !< the ladder, its axes built
+      type(ladder_t), intent(in) :: lad
       type(launcher_t), intent(in) :: la          !< the launcher (its cost model, the cap, the cpu time spent)
       type(choice_t) :: c
       type(judged_t) :: jd
@@ -330,14 +301,11 @@ contains
             jd = judge_run(lad, kk, jj)
             done = done_run(runs, kk, jj);  p = time_partner(runs, kk, jj)
             cost = merge(0.0_dp, run_cost(kk, jj), done)
-            if (p >= 0) then
-               if (.not. done_run(runs, p, jj)) cost = cost + run_cost(p, jj)
-            end if
+            if (p >= 0) cost = cost + run_cost(p, jj)     ! a partner is never done (time_partner)
             if (cross_needed(runs, kk, jj) .and. mx%levels > 1) cost = cost + run_cost(1, 1)
             if (jd%worst <= 1.0_dp .and. cost > 0.0_dp .and. la%spent + cost > la%cap) then
-               if (cost < c%beyond_cost) then
-                  c%beyond_cost = cost;  c%beyond_kj = [kk, jj]
-               end if
+               if (cost < c%beyond_cost) c%beyond_kj = [kk, jj]
+               c%beyond_cost = min(c%beyond_cost, cost)
             else if (jd%worst <= 1.0_dp) then
                if (.not. c%found .or. cost < best_cost .or. (cost == best_cost .and. jd%worst < best_worst)) then
                   c%found = .true.;  c%k = kk;  c%j = jj;  best_cost = cost;  best_worst = jd%worst
@@ -352,7 +320,7 @@ contains
    contains
       !> The predicted cost of the run (k, j): what the cost model reads, k, nx, ny.
       real(dp) function run_cost(kr, jr)
-         integer, intent(in) :: kr, jr            !< its levels
+         integer, intent(in) :: kr, jr
          type(run_t) :: probe
          probe%k = kr
          probe%nx = lad%runs(lad%mx%run(jr + 1))%nx;  probe%ny = lad%runs(lad%mx%run(jr + 1))%ny
@@ -362,7 +330,7 @@ contains
 
    !> The run done meeting the target with the least worst ratio, else the least worst ratio.
    function final_run(lad) result(kj)
-      type(ladder_t), intent(in) :: lad           !< the ladder, its axes built
+      type(ladder_t), intent(in) :: lad
       integer :: kj(2)
       type(judged_t) :: jd
       real(dp) :: best(2)
@@ -372,12 +340,11 @@ contains
          do jj = 0, lad%mx%levels - 1
             if (.not. done_run(lad%runs, kk, jj)) cycle
             jd = judge_run(lad, kk, jj)
-            if (jd%meets .and. .not. cross_needed(lad%runs, kk, jj) .and. jd%worst < best(1)) then
-               kj = [kk, jj];  best(1) = jd%worst
-            end if
-            if (jd%worst < best(2)) then
-               other = [kk, jj];  best(2) = jd%worst
-            end if
+            if (jd%meets .and. .not. cross_needed(lad%runs, kk, jj) .and. jd%worst < best(1)) &
+               kj = [kk, jj]
+            if (all(kj == [kk, jj])) best(1) = jd%worst
+            if (jd%worst < best(2)) other = [kk, jj]
+            best(2) = min(best(2), jd%worst)
          end do
       end do
       if (kj(1) < 0) kj = other

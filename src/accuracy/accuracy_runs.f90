@@ -32,7 +32,6 @@ module accuracy_runs
    !> States of a run (stopped: by a stop signal to the accuracy run).
    integer, parameter :: state_planned = 0, state_running = 1, state_done = 2, state_failed = 3, state_skipped = 4, &
                          state_stopped = 5
-   !> Settings of a variant, at most.
    integer, parameter :: max_variant = 4
    !> The cost model's exponent of the element count before two meshes are measured, and its bounds.
    real(dp), parameter :: gamma_default = 1.8_dp, gamma_min = 1.0_dp, gamma_max = 3.0_dp
@@ -97,16 +96,21 @@ contains
    !> Starts the planned runs within the cap (module header) and waits for all; stat /= 0 when a
    !> run could not be started (a run that fails is state_failed).
    subroutine run_planned(runs, la, stat, errmsg)
-      type(run_t), intent(inout) :: runs(:)        !< the runs
-      type(launcher_t), intent(inout) :: la        !< the launcher
-      integer, intent(out) :: stat                 !< 0 on success
-      character(len=*), intent(inout) :: errmsg    !< what failed
+      type(run_t), intent(inout) :: runs(:)
+      type(launcher_t), intent(inout) :: la
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
       integer :: i, pid, code, running
       logical :: known
       stat = 0;  running = 0
       do
          launch: do while (running < la%cpus .and. stat == 0 .and. stop_caught() == 0)
-            i = next_run(runs, la, running)
+            ! the next: the dearest planned, or while the costs are unknown the cheapest alone
+            i = 0
+            if (la%c_base >= 0.0_dp) i = maxloc(predicted_run_cost(runs, la), &
+                                                mask=runs%state == state_planned, dim=1)
+            if (la%c_base < 0.0_dp .and. running == 0) i = minloc(predicted_run_cost(runs, la), &
+                                                                 mask=runs%state == state_planned, dim=1)
             if (i == 0) exit launch
             if (la%c_base >= 0.0_dp .and. la%spent + sum(predicted_run_cost(runs, la), &
                 mask=runs%state == state_running) + predicted_run_cost(runs(i), la) > la%cap) then
@@ -120,35 +124,28 @@ contains
          end do launch
          if (running == 0) exit
          call wait_child(pid, code)
-         if (pid < 0) then
-            stat = 1
-            errmsg = 'waitpid: the runs started are gone'
-            exit
-         end if
+         if (pid < 0) errmsg = 'waitpid: the runs started are gone'
+         stat = merge(1, stat, pid < 0)
+         if (pid < 0) exit
          i = findloc(runs%pid, pid, dim=1)
          if (i == 0) cycle
          running = running - 1
          runs(i)%pid = -1;  runs(i)%exit_code = code
-         if (stop_caught() /= 0 .and. code /= 0) then   ! ended by the stop: its restart point kept
-            runs(i)%state = state_stopped
-            cycle
-         end if
+         if (stop_caught() /= 0 .and. code /= 0) runs(i)%state = state_stopped   ! restart point kept
+         if (runs(i)%state == state_stopped) cycle
          known = la%c_base >= 0.0_dp
          call finish_run(runs(i), la)
          call fit_costs(runs, la)
          if (.not. known .and. la%c_base >= 0.0_dp) call state_price(runs, la)
       end do
-      if (stop_caught() /= 0) then
-         where (runs%state == state_planned) runs%state = state_stopped
-      else if (stat == 0 .and. any(runs%state == state_planned)) then
-         where (runs%state == state_planned) runs%state = state_skipped
-         la%cap_reached = .true.
-      end if
+      if (stop_caught() /= 0) where (runs%state == state_planned) runs%state = state_stopped
+      la%cap_reached = la%cap_reached .or. (stat == 0 .and. any(runs%state == state_planned))
+      if (stat == 0) where (runs%state == state_planned) runs%state = state_skipped
    end subroutine run_planned
 
    !> Once the first run is done: the cap, when a multiple of it, and the price on standard output.
    subroutine state_price(runs, la)
-      type(run_t), intent(in) :: runs(:)           !< the runs
+      type(run_t), intent(in) :: runs(:)
       type(launcher_t), intent(inout) :: la        !< the launcher (its cost model, known now)
       real(dp) :: cost(size(runs))
       character(len=:), allocatable :: names
@@ -165,53 +162,23 @@ contains
       flush (la%unit)
    end subroutine state_price
 
-   !> The next run to start: the planned one predicted dearest, or while nothing is known of the
-   !> costs the cheapest alone (0 while a run is going).
-   integer function next_run(runs, la, running) result(i)
-      type(run_t), intent(in) :: runs(:)           !< the runs
-      type(launcher_t), intent(in) :: la           !< the launcher
-      integer, intent(in) :: running               !< runs going
-      real(dp) :: cost(size(runs))
-      i = 0
-      if (la%c_base < 0.0_dp .and. running > 0) return
-      cost = predicted_run_cost(runs, la)
-      if (la%c_base < 0.0_dp) i = minloc(cost, mask=runs%state == state_planned, dim=1)
-      if (la%c_base >= 0.0_dp) i = maxloc(cost, mask=runs%state == state_planned, dim=1)
-   end function next_run
-
-   !> The cost model's prediction of a run's cpu time (s; 0 while nothing is known).
+   !> The cost model's prediction of a run's cpu time (s; 0 while nothing is known): the run done
+   !> on its mesh at the time level nearest its own (the finer of two), else c 2^k (n/n0)^gamma.
    elemental real(dp) function predicted_run_cost(run, la)
       type(run_t), intent(in) :: run               !< the run (its k, nx, ny, cost_factor)
       type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
       integer :: a
-      a = nearest_anchor(run, la)
-      if (a > 0) then
-         predicted_run_cost = la%anchors(a)%cpu_s*2.0_dp**(run%k - la%anchors(a)%k)
-      else
-         predicted_run_cost = max(la%c_base, 0.0_dp)*relative_cost(run, la%n0, la%gamma)
-      end if
-   end function predicted_run_cost
-
-   !> The run done on the run's mesh at the time level nearest its own, the finer of two (0: none).
-   pure integer function nearest_anchor(run, la) result(a)
-      type(run_t), intent(in) :: run               !< the run
-      type(launcher_t), intent(in) :: la           !< the launcher (its anchors)
-      integer :: i, d, best
-      a = 0
+      predicted_run_cost = max(la%c_base, 0.0_dp)*relative_cost(run, la%n0, la%gamma)
       if (.not. allocated(la%anchors)) return
-      best = huge(1)
-      do i = 1, size(la%anchors)
-         if (any([la%anchors(i)%nx, la%anchors(i)%ny] /= [run%nx, run%ny]) .or. &
-             la%anchors(i)%cost_factor /= run%cost_factor) cycle
-         d = abs(la%anchors(i)%k - run%k)
-         if (d > best .or. (d == best .and. la%anchors(i)%k < la%anchors(max(a, 1))%k)) cycle   ! as near: the finer
-         a = i;  best = d
-      end do
-   end function nearest_anchor
+      ! the nearest k, of two as near the finer (k < 100)
+      a = minloc(100*abs(la%anchors%k - run%k) - la%anchors%k, mask=la%anchors%nx == run%nx .and. &
+                 la%anchors%ny == run%ny .and. la%anchors%cost_factor == run%cost_factor, dim=1)
+      if (a > 0) predicted_run_cost = la%anchors(a)%cpu_s*2.0_dp**(run%k - la%anchors(a)%k)
+   end function predicted_run_cost
 
    !> What each result's error is relative to: its size; for the time of the peak the duration.
    pure function error_scale(q) result(scale)
-      real(dp), intent(in) :: q(nq)                !< the results
+      real(dp), intent(in) :: q(nq)
       real(dp) :: scale(nq)
       scale = abs(q)
       scale(iq_peak_time) = abs(q(iq_duration))
@@ -226,7 +193,7 @@ contains
 
    !> A run's cost relative to the level-0 run of n0 elements (module header).
    pure real(dp) function relative_cost(run, n0, gamma)
-      type(run_t), intent(in) :: run               !< the run
+      type(run_t), intent(in) :: run
       integer, intent(in) :: n0                    !< level 0's elements
       real(dp), intent(in) :: gamma                !< the exponent of the element count
       relative_cost = 2.0_dp**run%k*(real(run%nx, dp)*real(run%ny, dp)/real(n0, dp)*run%cost_factor)**gamma
@@ -234,14 +201,14 @@ contains
 
    !> True for a run of the ladder, false for a model variant.
    elemental logical function is_ladder(run)
-      type(run_t), intent(in) :: run               !< the run
+      type(run_t), intent(in) :: run
       is_ladder = run%role /= 'theory' .and. run%role /= 'bend_twist'
    end function is_ladder
 
    !> The cost model fitted to the runs done (module header).
    subroutine fit_costs(runs, la)
-      type(run_t), intent(in) :: runs(:)           !< the runs
-      type(launcher_t), intent(inout) :: la        !< the launcher
+      type(run_t), intent(in) :: runs(:)
+      type(launcher_t), intent(inout) :: la
       integer :: i, finest, next
       real(dp) :: ratio
       logical :: at_dt0(size(runs))
@@ -262,8 +229,8 @@ contains
 
    !> The arguments of a run, without the program.
    function run_settings(run, la) result(args)
-      type(run_t), intent(in) :: run               !< the run
-      type(launcher_t), intent(in) :: la           !< the launcher
+      type(run_t), intent(in) :: run
+      type(launcher_t), intent(in) :: la
       character(len=8192), allocatable :: args(:), sets(:)
       integer :: i
       args = [character(len=8192) :: '--single']       ! one run: the deck's &accuracy left aside
@@ -283,7 +250,7 @@ contains
 
    !> text as a deck's quoted text: 'text', a quote in it doubled.
    pure function quoted(text) result(q)
-      character(len=*), intent(in) :: text         !< the text
+      character(len=*), intent(in) :: text
       character(len=:), allocatable :: q
       integer :: i
       q = "'"
@@ -296,7 +263,7 @@ contains
 
    !> A run that ended: its summary read, its state, one line of progress.
    subroutine finish_run(run, la)
-      type(run_t), intent(inout) :: run            !< the run
+      type(run_t), intent(inout) :: run
       type(launcher_t), intent(inout) :: la        !< the launcher (its spending)
       type(summary_t) :: s
       character(len=msg_len) :: errmsg

@@ -1,10 +1,9 @@
-!> Child processes of an accuracy run, through the C library, never a shell: spawn_program
-!> (posix_spawn(3), an argument vector, the output into a log file never through a link, the
-!> child in a process group of its own); wait_child (waitpid(2)); pass_stops_to_children (a
-!> stop signal recorded, stop_caught, and sent on to every child's group); die_with_parent
-!> (PR_SET_PDEATHSIG in a child with IMPACT_PARENT_PID); program_path; usable_cpus
-!> (sched_getaffinity, or Slurm's count when smaller). The children and the signal caught
-!> are module state, as in process_stop: a signal handler reaches nothing else.
+!> Child processes through the C library, never a shell: spawn_program (posix_spawn(3), the output
+!> into a log file never through a link, the child in a process group of its own); wait_child
+!> (waitpid(2)); pass_stops_to_children (a stop signal recorded, stop_caught, and sent on to every
+!> child's group); die_with_parent (PR_SET_PDEATHSIG with IMPACT_PARENT_PID); program_path;
+!> usable_cpus (sched_getaffinity, or Slurm's count when smaller). The children and the signal
+!> caught are module state, as in process_stop: a signal handler reaches nothing else.
 module child_process
    use, intrinsic :: iso_c_binding, only: c_int, c_int16_t, c_char, c_ptr, c_null_ptr, c_null_char, c_loc, c_size_t, &
       c_long, c_funptr, c_funloc
@@ -36,61 +35,49 @@ contains
    !> Starts the program `path` with `args`, its output and errors into `log_path` (emptied),
    !> the environment inherited with IMPACT_PARENT_PID, in a process group of its own.
    subroutine spawn_program(path, args, log_path, pid, stat, errmsg)
-      character(len=*), intent(in) :: path          !< the program
+      character(len=*), intent(in) :: path
       character(len=*), intent(in) :: args(:)       !< its arguments, trailing blanks not part of them
       character(len=*), intent(in) :: log_path      !< where its output goes
       integer, intent(out) :: pid                   !< the child's process id
       integer, intent(out) :: stat                  !< 0, or the C library's error number
-      character(len=*), intent(inout) :: errmsg     !< what failed
+      character(len=*), intent(inout) :: errmsg
       type(spawn_actions_t) :: actions
       type(spawn_attr_t) :: attr
-      character(kind=c_char), allocatable, target :: chars(:)
-      character(kind=c_char), allocatable, target :: env(:)
+      character(kind=c_char), allocatable, target :: chars(:), env(:)
+      character(len=max(len(path), len(args))) :: words(size(args) + 1)
       type(c_ptr), allocatable :: argv(:), envp(:)
       integer(c_int) :: cpid, r
-      integer :: i, at, ignored
-      call pack_strings()
+      integer :: i, at, n, ignored
+      words = [character(len=len(words)) :: path, args]   ! as C strings in chars, argv their pointers
+      allocate (chars(sum(len_trim(words)) + size(words)), argv(size(words) + 1))
+      at = 1
+      do i = 1, size(words)
+         n = len_trim(words(i))
+         chars(at:at + n) = transfer(trim(words(i)) // c_null_char, chars)
+         argv(i) = c_loc(chars(at))
+         at = at + n + 1
+      end do
+      argv(size(argv)) = c_null_ptr
       call child_environment(env, envp)
       pid = -1
       r = c_spawn_actions_init(actions)
       if (r == 0) r = c_spawnattr_init(attr)
       if (r == 0) r = c_spawnattr_setflags(attr, spawn_setpgroup)
       if (r == 0) r = c_spawnattr_setpgroup(attr, 0_c_int)          ! its own group, led by itself
-      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, c_text(log_path), o_write_no_follow, log_mode)
+      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, log_path // c_null_char, o_write_no_follow, &
+                                              log_mode)
       if (r == 0) r = c_spawn_actions_adddup2(actions, fd_out, fd_err)
-      if (r == 0) r = c_posix_spawn(cpid, c_text(path), actions, attr, argv, envp)
+      if (r == 0) r = c_posix_spawn(cpid, path // c_null_char, actions, attr, argv, envp)
       ignored = c_spawn_actions_destroy(actions)
       ignored = c_spawnattr_destroy(attr)
       stat = r
-      if (r /= 0) then
-         errmsg = 'cannot start ' // path // ' (posix_spawn: error ' // int_str(r) // ')'
-         if (r == eloop) errmsg = log_path // ' is a symbolic link: a run writes no file through a link'
-         return
-      end if
+      if (r /= 0) errmsg = 'cannot start ' // path // ' (posix_spawn: error ' // int_str(r) // ')'
+      if (r == eloop) errmsg = log_path // ' is a symbolic link: a run writes no file through a link'
+      if (r /= 0) return
       pid = cpid
       i = findloc(children, 0_c_int, dim=1)
       if (i > 0) children(i) = cpid
       if (stopped /= 0) ignored = c_kill(-cpid, stopped)             ! a stop came while it started
-   contains
-      !> path and args as C strings in chars, argv their pointers and a null pointer.
-      subroutine pack_strings()
-         allocate (chars(len_trim(path) + sum(len_trim(args)) + size(args) + 1), argv(size(args) + 2))
-         at = 1
-         call put(path, 1)
-         do i = 1, size(args)
-            call put(args(i), i + 1)
-         end do
-         argv(size(args) + 2) = c_null_ptr
-      end subroutine pack_strings
-      !> One string into the buffer, its pointer the n-th of argv.
-      subroutine put(text, n)
-         character(len=*), intent(in) :: text      !< the string (trailing blanks dropped)
-         integer, intent(in) :: n                  !< its place in argv
-         chars(at:at + len_trim(text) - 1) = transfer(trim(text), chars)
-         chars(at + len_trim(text)) = c_null_char
-         argv(n) = c_loc(chars(at))
-         at = at + len_trim(text) + 1
-      end subroutine put
    end subroutine spawn_program
 
    !> A child's environment: IMPACT_PARENT_PID=<pid>, then /proc/self/environ; envp the pointers.
@@ -99,7 +86,7 @@ contains
       type(c_ptr), allocatable, intent(out) :: envp(:)                    !< their pointers
       character(kind=c_char), allocatable :: more(:)
       character(len=:), allocatable :: ours
-      integer :: u, ios, n, i, k
+      integer :: u, ios, n, i
       ours = parent_variable // '=' // int_str(int(c_getpid())) // c_null_char
       allocate (env(len(ours) + 4096))
       n = len(ours)
@@ -116,21 +103,13 @@ contains
       end do
       if (ios > 0 .or. env(n) /= c_null_char) n = len(ours)   ! unreadable: ours alone
       close (u, iostat=ios)
-      allocate (envp(count(env(:n) == c_null_char) + 1))
-      envp(1) = c_loc(env(1))
-      k = 1
-      do i = 1, n - 1
-         if (env(i) /= c_null_char) cycle
-         k = k + 1
-         envp(k) = c_loc(env(i + 1))
-      end do
-      envp(size(envp)) = c_null_ptr
+      ! a string starts at 1 and after each nul but the last
+      envp = [pack([(c_loc(env(i)), i = 1, n)], [.true., env(:n - 1) == c_null_char]), c_null_ptr]
    end subroutine child_environment
 
    !> Waits for any child of the process to end.
    subroutine wait_child(pid, exit_code)
-      integer, intent(out) :: pid          !< the child that ended, -1 when there is none
-      integer, intent(out) :: exit_code    !< its exit status, 128 + N when the signal N ended it
+      integer, intent(out) :: pid, exit_code   !< the child ended (-1: none); its status (128 + N: signal N)
       integer(c_int) :: status, r
       r = c_waitpid(-1_c_int, status, 0_c_int)
       pid = merge(int(r), -1, r > 0)
@@ -185,12 +164,9 @@ contains
       character(kind=c_char) :: buf(max_path)
       integer(c_long) :: n
       integer :: length
-      n = c_readlink(c_text('/proc/self/exe'), buf, int(max_path, c_size_t))
-      if (n > 0 .and. n < max_path) then
-         allocate (character(len=n) :: path)
-         path = transfer(buf(:n), path)
-         return
-      end if
+      n = c_readlink('/proc/self/exe' // c_null_char, buf, int(max_path, c_size_t))
+      if (n > 0 .and. n < max_path) path = transfer(buf(:n), repeat(' ', int(n)))
+      if (n > 0 .and. n < max_path) return
       call get_command_argument(0, length=length)
       allocate (character(len=length) :: path)
       if (length > 0) call get_command_argument(0, path)
@@ -208,17 +184,9 @@ contains
       do i = 1, size(slurm_vars)
          call get_environment_variable(trim(slurm_vars(i)), text, length, st)
          if (st /= 0 .or. length == 0) cycle
-         slurm = 0
          read (text, *, iostat=st) slurm
          if (st == 0 .and. slurm > 0) n = min(n, slurm)
       end do
    end function usable_cpus
-
-   !> text as a C string (null-terminated).
-   pure function c_text(text) result(c)
-      character(len=*), intent(in) :: text    !< the text
-      character(kind=c_char, len=len(text) + 1) :: c
-      c = text // c_null_char
-   end function c_text
 
 end module child_process

@@ -40,10 +40,8 @@ contains
       integer :: n
       n = size(q)
       e%floor = floor
-      if (n < 2) then
-         e%how = 'one level: no estimate'
-         return
-      end if
+      e%how = 'one level: no estimate'
+      if (n < 2) return
       d2 = q(n - 1) - q(n)
       if (n == 2) then
          e%error = two_level_factor*abs(d2) + floor
@@ -76,7 +74,7 @@ contains
    contains
       !> Richardson's error of the finest level at order po.
       pure real(dp) function richardson(po)
-         real(dp), intent(in) :: po       !< the order
+         real(dp), intent(in) :: po
          real(dp) :: ratio
          ratio = (h(n)/h(n - 1))**po
          richardson = huge(1.0_dp)
@@ -95,17 +93,14 @@ contains
       if (ratio <= f(lo) .or. ratio >= f(hi)) return
       do it = 1, 100
          p = 0.5_dp*(lo + hi)
-         if (f(p) < ratio) then
-            lo = p
-         else
-            hi = p
-         end if
+         if (f(p) < ratio) lo = p
+         if (f(p) >= ratio) hi = p
       end do
       p = 0.5_dp*(lo + hi)
    contains
       !> (h1^x - h2^x)/(h2^x - h3^x), scaled by h3 (it grows with x).
       pure real(dp) function f(x)
-         real(dp), intent(in) :: x          !< the order
+         real(dp), intent(in) :: x
          f = ((h(1)/h(3))**x - (h(2)/h(3))**x)/((h(2)/h(3))**x - 1.0_dp)
       end function f
    end function observed_order
@@ -125,24 +120,22 @@ contains
    !> The larger of the last two differences of a ladder.
    pure real(dp) function last_difference(q)
       real(dp), intent(in) :: q(:)                !< the result at each level
-      integer :: i
-      last_difference = 0.0_dp
-      do i = max(2, size(q) - 1), size(q)
-         last_difference = max(last_difference, abs(q(i - 1) - q(i)))
-      end do
+      integer :: n
+      n = size(q)
+      last_difference = max(0.0_dp, maxval(abs(q(max(1, n - 2):n - 1) - q(max(2, n - 1):n))))
    end function last_difference
 
    !> Roache's grid convergence index of the finer of two levels of known order p.
    pure real(dp) function two_grid_index(h, q, p) result(e)
       real(dp), intent(in) :: h(2), q(2)       !< step or element size of the two levels, decreasing; the result at each
-      real(dp), intent(in) :: p                !< the order
+      real(dp), intent(in) :: p
       e = two_level_factor*abs(q(1) - q(2))/((h(1)/h(2))**p - 1.0_dp)
    end function two_grid_index
 
    !> The value of the next level of a ladder that goes on converging at order p.
    pure real(dp) function continued_value(h, q, p) result(q_next)
       real(dp), intent(in) :: h(3), q(2)       !< sizes of the last two levels and the next; the results of the two
-      real(dp), intent(in) :: p                !< the order
+      real(dp), intent(in) :: p
       q_next = q(2) - (q(1) - q(2))*(h(3)**p - h(2)**p)/(h(2)**p - h(1)**p)
    end function continued_value
 

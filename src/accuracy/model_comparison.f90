@@ -40,31 +40,36 @@ contains
    !> The comparisons (module header): first at coarse_base, kept where their verdict is settled
    !> (verdict_settled) or the chosen settings pass the cap, else made again there.
    subroutine compare_models(deck, la, lad, chosen, cmp, stat, errmsg)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(launcher_t), intent(inout) :: la         !< the launcher
-      type(ladder_t), intent(inout) :: lad          !< the ladder; the variants added to its runs
-      integer, intent(in) :: chosen                 !< the run chosen
+      type(deck_t), intent(in) :: deck
+      type(launcher_t), intent(inout) :: la
+      type(ladder_t), intent(inout) :: lad          !< the variants added to its runs
+      integer, intent(in) :: chosen
       type(comparison_t), intent(out) :: cmp(2)     !< the theory's, the bend-twist model's
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< what failed
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
       type(comparison_t) :: first(2), second(2)
+      type(judged_t) :: jd, jc
       real(dp) :: slack(nq)
       integer :: coarse, i, base(2)
       logical :: again(2)
       again = .true.;  slack = 0.0_dp               ! again: made (again) at the chosen settings
       coarse = coarse_base(lad%runs, chosen)
       if (coarse /= chosen) then
-         slack = change_slack(lad, chosen, coarse)
+         ! how far the change at coarse may lie from that at the chosen settings: 2 (e_t(coarse) +
+         ! e_t(chosen)) / |q|, the variant's time error taken as the base's
+         jd = judge_run(lad, 0, lad%runs(coarse)%j)
+         jc = judge_run(lad, lad%runs(chosen)%k, lad%runs(chosen)%j)
+         slack = huge(1.0_dp)
+         where (lad%runs(coarse)%q /= 0.0_dp) slack = 2.0_dp*(jd%err_time + jc%err_time)/abs(lad%runs(coarse)%q)
          call make_variants(deck, la, lad%runs, variant_bases(deck, lad%runs, la, coarse, again), again, first, &
                             stat, errmsg)
          if (stat /= 0) return
          cmp = first
          do i = 1, 2
-            if (first(i)%base /= coarse) then      ! even that run would pass the cap
-               cmp(i)%at = past_cap;  again(i) = .false.
-            else if (verdict_settled(first(i), lad, slack)) then
-               cmp(i)%at = coarse_words(.true., first(i));  again(i) = .false.
-            end if
+            again(i) = first(i)%base == coarse .and. .not. verdict_settled(first(i), lad, slack)
+            if (first(i)%base /= coarse) cmp(i)%at = past_cap   ! even that run would pass the cap
+            if (first(i)%base == coarse .and. .not. again(i)) &
+               cmp(i)%at = coarse_words(.true., first(i))
          end do
          base = variant_bases(deck, lad%runs, la, chosen, again)
          do i = 1, 2
@@ -79,26 +84,24 @@ contains
       if (stat /= 0) return
       do i = 1, 2
          if (.not. again(i)) cycle
-         if (second(i)%run == 0 .or. coarse == chosen .or. .not. made(cmp(i))) then
+         if (coarse /= chosen .and. made(cmp(i)) .and. second(i)%run > 0 .and. &
+             .not. made(second(i))) then             ! the cap skipped the second: the first stands
+            cmp(i)%at = coarse_words(.false., cmp(i))
+         else
             cmp(i) = second(i)
             if (cmp(i)%base /= chosen) cmp(i)%at = past_cap
-         else if (made(second(i))) then
-            cmp(i) = second(i)
-         else                                       ! the cap skipped the second: the first stands
-            cmp(i)%at = coarse_words(.false., cmp(i))
          end if
       end do
    contains
       !> The comparison's variant was made and has results.
       logical function made(c)
          type(comparison_t), intent(in) :: c
-         made = .false.
-         if (c%run > 0) made = lad%runs(c%run)%state == state_done
+         made = c%run > 0 .and. any(lad%runs(max(c%run, 1):c%run)%state == state_done)
       end function made
       !> Why a comparison stays at the chosen mesh's run at dt0, with the bands targeted.
       function coarse_words(settled, c) result(text)
          logical, intent(in) :: settled            !< verdict_settled
-         type(comparison_t), intent(in) :: c       !< the comparison made there
+         type(comparison_t), intent(in) :: c
          character(len=:), allocatable :: text
          real(dp) :: band(nq)
          integer :: iq
@@ -118,14 +121,14 @@ contains
 
    !> The variants wanted (theory, bend-twist), each at the settings of its run base(i), run.
    subroutine make_variants(deck, la, runs, base, want, cmp, stat, errmsg)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(launcher_t), intent(inout) :: la         !< the launcher
-      type(run_t), allocatable, intent(inout) :: runs(:)   !< the runs
+      type(deck_t), intent(in) :: deck
+      type(launcher_t), intent(inout) :: la
+      type(run_t), allocatable, intent(inout) :: runs(:)
       integer, intent(in) :: base(2)                !< the runs compared with: the theory's, the bend-twist's
       logical, intent(in) :: want(2)                !< the theory, the bend-twist model
-      type(comparison_t), intent(out) :: cmp(2)     !< the two comparisons (run 0 where not wanted)
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< what failed
+      type(comparison_t), intent(out) :: cmp(2)     !< run 0 where not wanted
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
       type(run_t) :: r
       character(len=16) :: other
       cmp%base = base
@@ -142,28 +145,26 @@ contains
       cmp(2)%what = 'bend_twist'
       r = planned_copy(runs(base(2)))
       call bend_twist_variant(deck, la%scene, runs(base(2)), r, cmp(2))
-      if (want(2) .and. len_trim(cmp(2)%note) == 0) then
-         runs = [runs, r];  cmp(2)%run = size(runs)
-      end if
+      if (want(2) .and. len_trim(cmp(2)%note) == 0) runs = [runs, r]
+      if (want(2) .and. len_trim(cmp(2)%note) == 0) cmp(2)%run = size(runs)
       call run_planned(runs, la, stat, errmsg)
    end subroutine make_variants
 
    !> A run at the settings of run c, planned.
    pure function planned_copy(c) result(r)
-      type(run_t), intent(in) :: c                  !< the run
+      type(run_t), intent(in) :: c
       type(run_t) :: r
       r = c
       r%state = state_planned;  r%cpu_s = 0.0_dp;  r%has = .false.;  r%variant = '';  r%status = ''
       r%exit_code = 0;  r%pid = -1
    end function planned_copy
 
-   !> The runs the two comparisons are made at: x, or where a variant does not fit the cap the
-   !> costliest ladder run done whose variant does (comparison_base), the bend-twist's beside
-   !> the theory's, each priced as it would run.
+   !> The runs the two comparisons are made at: x, or where a variant does not fit the cap
+   !> comparison_base's, the bend-twist's beside the theory's, each priced as it would run.
    function variant_bases(deck, runs, la, x, want) result(base)
-      type(deck_t), intent(in) :: deck              !< the deck
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      type(launcher_t), intent(in) :: la            !< the launcher (the scene, its cost model and spending)
+      type(deck_t), intent(in) :: deck
+      type(run_t), intent(in) :: runs(:)
+      type(launcher_t), intent(in) :: la
       integer, intent(in) :: x                      !< the run preferred
       logical, intent(in) :: want(2)                !< the theory, the bend-twist model
       integer :: base(2)
@@ -187,32 +188,19 @@ contains
 
    !> The run on the chosen run's mesh at dt0, or the chosen one when that is not done.
    pure integer function coarse_base(runs, chosen) result(coarse)
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      integer, intent(in) :: chosen                 !< the run chosen
+      type(run_t), intent(in) :: runs(:)
+      integer, intent(in) :: chosen
       coarse = ladder_run(runs, 0, runs(chosen)%j)
       if (coarse == 0) coarse = chosen
       if (runs(coarse)%state /= state_done) coarse = chosen
    end function coarse_base
 
-   !> How far a model's change at run coarse may lie from that at the chosen settings:
-   !> 2 (e_t(coarse) + e_t(chosen)) / |q|, the variant's time error taken as the base's.
-   function change_slack(lad, chosen, coarse) result(slack)
-      type(ladder_t), intent(in) :: lad             !< the ladder
-      integer, intent(in) :: chosen, coarse         !< the run chosen, the run compared with first
-      real(dp) :: slack(nq)
-      type(judged_t) :: jd, jc
-      jd = judge_run(lad, 0, lad%runs(coarse)%j)
-      jc = judge_run(lad, lad%runs(chosen)%k, lad%runs(chosen)%j)
-      slack = huge(1.0_dp)
-      where (lad%runs(coarse)%q /= 0.0_dp) slack = 2.0_dp*(jd%err_time + jc%err_time)/abs(lad%runs(coarse)%q)
-   end function change_slack
-
    !> Whether the verdict of c (model_required) is the same for every change within its band;
    !> a comparison not made settles nothing.
    logical function verdict_settled(c, lad, slack) result(settled)
-      type(comparison_t), intent(in) :: c           !< the comparison
-      type(ladder_t), intent(in) :: lad             !< the ladder (its runs, the target, the results targeted)
-      real(dp), intent(in) :: slack(nq)             !< change_slack
+      type(comparison_t), intent(in) :: c
+      type(ladder_t), intent(in) :: lad
+      real(dp), intent(in) :: slack(nq)             !< how far the change may be from the chosen's
       real(dp) :: change(nq), band(nq)
       settled = .false.
       if (c%run == 0) return
@@ -224,9 +212,9 @@ contains
    !> The run a model is compared at: the chosen one, else the costliest ladder run done whose
    !> variant, predicted to cost cost(i), fits the cap (the chosen one when none does).
    integer function comparison_base(runs, la, chosen, cost) result(base)
-      type(run_t), intent(in) :: runs(:)            !< the runs
-      type(launcher_t), intent(in) :: la            !< the launcher (its spending and cap)
-      integer, intent(in) :: chosen                 !< the run chosen
+      type(run_t), intent(in) :: runs(:)
+      type(launcher_t), intent(in) :: la
+      integer, intent(in) :: chosen
       real(dp), intent(in) :: cost(:)               !< the variant's predicted cost at each run's settings (s)
       integer :: i
       base = chosen
@@ -246,33 +234,27 @@ contains
 
    !> The run of the other bend-twist model at the settings of run c, or a note why there is none.
    subroutine bend_twist_variant(deck, scene, c, r, cmp)
-      type(deck_t), intent(in) :: deck              !< the deck
+      type(deck_t), intent(in) :: deck
       type(scene_t), intent(in) :: scene            !< the scene of the deck's model
-      type(run_t), intent(in) :: c                  !< the run chosen
+      type(run_t), intent(in) :: c
       type(run_t), intent(inout) :: r               !< the variant (c's settings in)
       type(comparison_t), intent(inout) :: cmp      !< what it compares, or the note
       real(dp) :: quarters
-      integer :: fx, fy
+      integer :: f(2)
       r%role = 'bend_twist';  r%variant = ''
       cmp%richer = 'keep';  cmp%simpler = 'drop'           ! &laminate bend_twist
       cmp%chosen_richer = .not. scene%averaged
-      if (all(scene%couplings(1:2) <= coupling_tol)) then
-         cmp%note = 'the laminate has D16 = D26 = 0'
-      else if (scene%domain == 'strip') then
-         cmp%note = 'a strip (cylindrical bending) has no full plate to compare with'
-      end if
+      if (scene%domain == 'strip') cmp%note = 'a strip (cylindrical bending) has no full plate to ' // &
+         'compare with'
+      if (all(scene%couplings(1:2) <= coupling_tol)) cmp%note = 'the laminate has D16 = D26 = 0'
       if (len_trim(cmp%note) > 0) return
       quarters = merge(1.0_dp, merge(2.0_dp, 4.0_dp, scene%domain == 'half'), scene%domain == 'quarter')
       if (scene%averaged) then
          ! the full plate that keeps D16, D26: its counts, those of the domain mirrored
-         fx = 2;  fy = 2
-         if (deck%domain /= 'auto' .and. scene%domain == 'half') then
-            fx = merge(1, 2, deck%y0 == 0.0_dp);  fy = merge(2, 1, deck%y0 == 0.0_dp)
-         end if
-         if (deck%domain == 'full') then
-            fx = 1;  fy = 1
-         end if
-         r%nx = c%nx*fx;  r%ny = c%ny*fy
+         f = 2
+         if (deck%domain /= 'auto' .and. scene%domain == 'half') f = merge([1, 2], [2, 1], deck%y0 == 0.0_dp)
+         if (deck%domain == 'full') f = 1
+         r%nx = c%nx*f(1);  r%ny = c%ny*f(2)
          r%variant(1:3) = [character(len=64) :: "mesh.domain='full'", 'mesh.average_bend_twist=.false.', &
                            "laminate.bend_twist='keep'"]
          ! a ladder run's counts the quarter's, doubled across the centre lines of an 'auto' domain
@@ -290,7 +272,7 @@ contains
 
    !> The quarters of the domain 'auto' picks once D16 and D26 are dropped (1, 2 or 4).
    real(dp) function reduced_quarters(deck) result(quarters)
-      type(deck_t), intent(in) :: deck              !< the deck
+      type(deck_t), intent(in) :: deck
       type(deck_t) :: d
       type(scene_t) :: s
       type(laminate_t) :: lmt
@@ -300,65 +282,56 @@ contains
       call model_laminate(d, lmt, s)
       call choose_domain(d, s, stat, errmsg)
       quarters = 4.0_dp
-      if (stat /= 0) return
-      if (s%domain == 'quarter') quarters = 1.0_dp
-      if (s%domain == 'half') quarters = 2.0_dp
+      if (stat == 0) quarters = merge(1.0_dp, merge(2.0_dp, 4.0_dp, s%domain == 'half'), s%domain == 'quarter')
    end function reduced_quarters
 
    !> The relative change of each result estimated that the other model of c makes (else 0).
    pure function model_changes(c, lad) result(change)
-      type(comparison_t), intent(in) :: c           !< the comparison (its runs done)
-      type(ladder_t), intent(in) :: lad             !< the ladder (its runs, the results estimated)
-      real(dp) :: change(nq), reference(nq)
-      integer :: iq
-      change = 0.0_dp
-      reference = error_scale(lad%runs(c%base)%q)
-      do iq = 1, nq
-         if (lad%estimated(iq)) change(iq) = relative(lad%runs(c%run)%q(iq) - lad%runs(c%base)%q(iq), reference(iq))
-      end do
+      type(comparison_t), intent(in) :: c           !< its runs done
+      type(ladder_t), intent(in) :: lad
+      real(dp) :: change(nq)
+      associate (q => lad%runs(c%run)%q, q_base => lad%runs(c%base)%q)
+      change = merge(relative(q - q_base, error_scale(q_base)), 0.0_dp, lad%estimated)
+      end associate
    end function model_changes
 
    !> Whether a result that must meet the target changes by more than the target.
    pure logical function model_required(change, lad)
       real(dp), intent(in) :: change(nq)            !< the relative changes (model_changes)
-      type(ladder_t), intent(in) :: lad             !< the ladder (the target, the results targeted)
+      type(ladder_t), intent(in) :: lad
       model_required = any(lad%targeted .and. abs(change) > lad%target)
    end function model_required
 
    !> The verdict of comparison c: the fuller model when model_required, else the simpler.
    pure function model_needed(c, change, lad) result(name)
-      type(comparison_t), intent(in) :: c           !< the comparison
+      type(comparison_t), intent(in) :: c
       real(dp), intent(in) :: change(nq)            !< the relative changes (model_changes)
-      type(ladder_t), intent(in) :: lad             !< the ladder (the target, the results targeted)
+      type(ladder_t), intent(in) :: lad
       character(len=:), allocatable :: name
       name = trim(merge(c%richer, c%simpler, model_required(change, lad)))
    end function model_needed
 
-   !> Why comparison c has no results ('' when it has): none made, or its run skipped,
-   !> stopped or failed.
-   function not_compared(c, runs) result(text)
-      type(comparison_t), intent(in) :: c           !< the comparison
-      type(run_t), intent(in) :: runs(:)            !< the runs
+   !> Why comparison c has no results ('' when it has): none made, its run skipped, stopped, failed.
+   pure function not_compared(c, runs) result(text)
+      type(comparison_t), intent(in) :: c
+      type(run_t), intent(in) :: runs(:)
       character(len=:), allocatable :: text
       text = trim(c%note)
       if (c%run == 0) return
-      text = 'the run ' // trim(runs(c%run)%name)
-      if (runs(c%run)%state == state_skipped) then
-         text = text // ' would pass &accuracy max_cpu_s'
-      else if (runs(c%run)%state == state_stopped) then
-         text = text // ' was stopped'
-      else if (runs(c%run)%state /= state_done) then
-         text = text // ' failed (' // trim(runs(c%run)%status) // ')'
-      else
-         text = ''
-      end if
+      associate (r => runs(c%run))
+      text = ' failed (' // trim(r%status) // ')'
+      if (r%state == state_skipped) text = ' would pass &accuracy max_cpu_s'
+      if (r%state == state_stopped) text = ' was stopped'
+      text = 'the run ' // trim(r%name) // text
+      if (r%state == state_done) text = ''
+      end associate
    end function not_compared
 
    !> The summary's items of one model compared: what, and the relative change of each result.
    subroutine comparison_items(items, c, lad)
       type(summary_item_t), allocatable, intent(inout) :: items(:)   !< the summary
-      type(comparison_t), intent(in) :: c           !< the comparison
-      type(ladder_t), intent(in) :: lad             !< the ladder
+      type(comparison_t), intent(in) :: c
+      type(ladder_t), intent(in) :: lad
       real(dp) :: change(nq)
       integer :: iq
       if (c%run == 0 .or. len(not_compared(c, lad%runs)) > 0) then
@@ -377,10 +350,9 @@ contains
 
    !> The terminal's lines of one model compared, with its verdict (model_required).
    subroutine comparison_lines(unit, c, lad, chosen)
-      integer, intent(in) :: unit                   !< standard output
-      type(comparison_t), intent(in) :: c           !< the comparison
-      type(ladder_t), intent(in) :: lad             !< the ladder
-      integer, intent(in) :: chosen                 !< the run chosen
+      integer, intent(in) :: unit, chosen           !< standard output, the run chosen
+      type(comparison_t), intent(in) :: c
+      type(ladder_t), intent(in) :: lad
       real(dp) :: change(nq)
       character(len=msg_len) :: line
       character(len=:), allocatable :: head
@@ -414,7 +386,7 @@ contains
    end subroutine comparison_lines
 
    !> err/|value|, 0 when both are 0, huge when only value is.
-   pure real(dp) function relative(err, value)
+   elemental real(dp) function relative(err, value)
       real(dp), intent(in) :: err, value            !< the error or change, the value
       relative = huge(1.0_dp)
       if (value /= 0.0_dp) relative = err/abs(value)
