@@ -1,8 +1,7 @@
-!> The result files of every analysis: the claim before any work, the column
-!> files (title, deck echo, a line per column, the names, the rows), the
-!> history's columns (for <prefix>_history.dat and /history of <prefix>.h5)
-!> and the summary's items ('key = value', the unit in the key; also /summary).
-!> Not from the paper. More: docs/OUTPUT.md.
+!> The result files of every analysis: the claim before any work, the column files (title, deck
+!> echo, a line per column, the names, the rows), the history's columns (for <prefix>_history.dat
+!> and /history of <prefix>.h5) and the summary's items ('key = value', the unit in the key; also
+!> /summary). Not from the paper. More: docs/OUTPUT.md.
 module result_files
    use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
@@ -109,8 +108,6 @@ module result_files
    end type summary_item_t
 
 contains
-
-   ! ============================================================ claiming
 
    !> The result files of an analysis after the prefix; a run claims and locks the first.
    pure function result_suffixes(analysis_kind) result(list)
@@ -252,8 +249,6 @@ contains
       claim%created = .false.
    end subroutine release_results
 
-   ! ======================================================== column files
-
    !> The first failure kept: stat and errmsg take ios and text when stat is 0.
    pure subroutine keep_failure(stat, errmsg, ios, text)
       integer, intent(inout) :: stat              !< 0, or the first failure
@@ -351,8 +346,7 @@ contains
    !> The history's columns of a run: nhist, nhist_strength when the deck
    !> gives &strength, nhist_damage with ply damage.
    pure integer function history_width(with_strength, with_damage)
-      logical, intent(in) :: with_strength   !< the run computes ply stresses
-      logical, intent(in) :: with_damage     !< the plies damage (&damage)
+      logical, intent(in) :: with_strength, with_damage   !< ply stresses computed; plies damaged (&damage)
       history_width = merge(nhist_damage, merge(nhist_strength, nhist, with_strength), with_damage)
    end function history_width
 
@@ -395,8 +389,6 @@ contains
       end if
       bytes = after
    end subroutine write_history_row
-
-   ! ============================================================= summary
 
    !> Appends a real item: the file's key, the SI name, unit and value, the
    !> file's scale; with `given` false, the text item `none` instead.
