@@ -11,7 +11,7 @@ module result_files
       path_kind, path_missing, path_regular, path_link, path_directory, path_other, create_new_file, remove_file, &
       file_lock_t, lock_file, unlock_file, rename_file, file_size, file_probe_t, probe_size
    use system_limits, only: name_max, path_max, read_only_file_system
-   use number_text, only: put_f16_4, put_es16_7e3, put_i6
+   use number_text, only: put_f16_4, put_es16_7e3, put_i6, int_str
    implicit none
    private
    public :: column_t, history_columns, nhist, nhist_damage, history_width
@@ -412,9 +412,7 @@ contains
       type(summary_item_t), allocatable, intent(inout) :: items(:)
       character(len=*), intent(in) :: key
       integer, intent(in) :: value
-      character(len=24) :: buf
-      write (buf, '(i0)') value
-      call append(items, key, key, '-', trim(buf), real(value, dp), item_integer)
+      call append(items, key, key, '-', int_str(value), real(value, dp), item_integer)
    end subroutine summary_integer
 
    !> Appends a text item ('completed', 'none', 'true').
