@@ -1,9 +1,8 @@
-!> Where and when damage starts: the ply stresses of the impact run at
-!> every Gauss point of every ply (eq. 2-3, src/strength/ply_stress.f90),
-!> their failure index (src/strength/failure_criteria.f90), the delamination
-!> threshold and index (src/strength/delamination.f90), and what the run
-!> records of them: every history step, at the largest contact force and
-!> at the end. Only with &strength (the six strengths given); without it
+!> Where and when damage starts: the ply stresses of the impact run at every Gauss point of every
+!> ply (eq. 2-3, src/strength/ply_stress.f90), their failure index
+!> (src/strength/failure_criteria.f90), the delamination threshold and index
+!> (src/strength/delamination.f90), and what the run records of them: every history step, at the
+!> largest contact force and at the end. Only with &strength (the six strengths given); without it
 !> the record is inactive. More: docs/STRENGTH.md, "Ply stresses and failure".
 module damage_record
    use kinds, only: dp, msg_len
@@ -90,17 +89,15 @@ contains
       dmg%onset_time = -1.0_dp
    end subroutine damage_open
 
-   !> At every step the history records (&output every): at each 3 x 3 Gauss
-   !> point of each element (those of the membrane and bending terms, where
-   !> the paper's strain gauge is, Fig. 9b) the laminate strains of d and their
-   !> gradients give the stresses on both faces of every ply (in-plane from
-   !> eq. 2-3, von Karman strains in the nonlinear theory; transverse shear
-   !> from equilibrium), and the criterion of &strength their failure index.
-   !> Kept: the step's largest index and its mode (history columns
-   !> failure_index, failure_mode); per ply and point the largest index over
-   !> the run, its mode (the damage map) and the first time it reached 1; the
-   !> run's largest index, and the first step any index reached 1 (the onset),
-   !> with its ply, mode and point.
+   !> At every step the history records (&output every): at each 3 x 3 Gauss point of each element
+   !> (those of the membrane and bending terms, where the paper's strain gauge is, Fig. 9b) the
+   !> laminate strains of d and their gradients give the stresses on both faces of every ply
+   !> (in-plane from eq. 2-3, von Karman strains in the nonlinear theory; transverse shear from
+   !> equilibrium), and the criterion of &strength their failure index. Kept: the step's largest
+   !> index and its mode (history columns failure_index, failure_mode); per ply and point the
+   !> largest index over the run, its mode (the damage map) and the first time it reached 1; the
+   !> run's largest index, and the first step any index reached 1 (the onset), with its ply, mode
+   !> and point.
    subroutine damage_step(dmg, model, t, d)
       type(damage_t), intent(inout) :: dmg          !< the record
       type(model_t), intent(in) :: model            !< the model
@@ -108,13 +105,10 @@ contains
       real(dp), intent(in) :: d(:)                  !< plate displacements {D}
       real(dp) :: de(nfe), e(nstate), sigma(5, 2, dmg%nply), fi(dmg%nply), mean(5, dmg%nply)
       integer :: mode(dmg%nply), el, g, p, k, kmax
-      logical :: onset_now
-
       if (.not. dmg%active) return
       dmg%step_fi = -huge(1.0_dp)
       dmg%step_mode = mode_none
       kmax = 0
-      onset_now = .false.
       elements: do el = 1, model%msh%nelem
          call gather_element(model%msh%elem_eq(:, el), d, de)
          points: do g = 1, ngp
@@ -140,7 +134,6 @@ contains
             end do plies
          end do points
       end do elements
-
       ! -- the run's largest, and the onset (the first step reaching 1)
       if (dmg%step_fi > dmg%max_fi) then
          dmg%max_fi = dmg%step_fi
@@ -158,10 +151,9 @@ contains
       end if
    end subroutine damage_step
 
-   !> Every step: delamination (src/strength/delamination.f90), with or
-   !> without &strength: with g2c the first step whose contact force passed
-   !> the threshold; with &strength, the displacements of the largest contact
-   !> force so far (a copy; their stresses follow at the end).
+   !> Every step: delamination (src/strength/delamination.f90), with or without &strength: with g2c
+   !> the first step whose contact force passed the threshold; with &strength, the displacements of
+   !> the largest contact force so far (a copy; their stresses follow at the end).
    subroutine damage_peak(dmg, step, t, f, d)
       type(damage_t), intent(inout) :: dmg          !< the record
       integer, intent(in) :: step                   !< the step
@@ -175,8 +167,7 @@ contains
       dmg%d_peak = d
    end subroutine damage_peak
 
-   !> The failure index and mode of every ply at one point: the larger of
-   !> its two faces.
+   !> The failure index and mode of every ply at one point: the larger of its two faces.
    pure subroutine ply_indices(dmg, sigma, fi, mode)
       type(damage_t), intent(in) :: dmg
       real(dp), intent(in) :: sigma(:,:,:)          ! (5, 2, nply)
@@ -192,9 +183,8 @@ contains
       end do
    end subroutine ply_indices
 
-   !> The stresses and failure indices of every ply face at every Gauss
-   !> point for the displacements d: sigma(5, 2, nply, npoint) (Pa, material
-   !> axes), fi(2, nply, npoint).
+   !> The stresses and failure indices of every ply face at every Gauss point for the displacements
+   !> d: sigma(5, 2, nply, npoint) (Pa, material axes), fi(2, nply, npoint).
    subroutine damage_stresses(dmg, model, d, sigma, fi)
       type(damage_t), intent(in) :: dmg             !< an active record
       type(model_t), intent(in) :: model            !< the model
@@ -237,8 +227,7 @@ contains
       type(model_t), intent(in) :: model            !< the model
       type(plate_damage_t), intent(in) :: pd        !< the plies' damage (src/strength/plate_damage.f90)
       type(summary_item_t), allocatable, intent(inout) :: s(:)   !< the summary, items appended
-      type(results_file_t), intent(inout) :: rf     !< the results file (written when active; its XDMF file
-                                                    !< then shows the ply fields, src/results/xdmf_plies.f90)
+      type(results_file_t), intent(inout) :: rf     !< written when active (its XDMF shows the ply fields)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       character(len=3), parameter :: comp(5) = [character(len=3) :: 's11', 's22', 't12', 't23', 't13']
@@ -290,9 +279,7 @@ contains
                                                            'ply_damage_' // trim(dmode_names(m)), d, stat, errmsg)
          end associate
       end do
-
    contains
-
       !> <what>_x_mm, <what>_y_mm of point p, 'none' without one.
       subroutine place(what, p)
          character(len=*), intent(in) :: what
@@ -302,7 +289,6 @@ contains
          call summary_real(s, what // '_y_mm', what // '_y', 'm', xy(2, max(p, 1)), 1.0e3_dp, p > 0, &
                            'none')
       end subroutine place
-
    end subroutine damage_close
 
    !> /strength of <prefix>.h5 (C order, as h5py shows it; its datasets and
@@ -319,7 +305,6 @@ contains
       character(len=msg_len) :: why
       character(len=:), allocatable :: modes
       integer :: c, m
-
       why = ''
       stat = 0
       modes = ''
@@ -344,7 +329,6 @@ contains
       if (stat == 0) call h5io_write(rf%fid, 'strength/damage_mode', dmg%mode_max, stat, why)
       call put_data('strength/onset_time', dmg%onset_time, 's')
       if (dmg%delam%interfaces) call put_data('strength/delamination_map', dmg%delam%map, '-')
-
       allocate (sigma(5, 2, dmg%nply, dmg%npoint), fi(2, dmg%nply, dmg%npoint))
       call damage_stresses(dmg, model, dmg%d_peak, sigma, fi)
       if (stat == 0) call h5io_group(rf%fid, 'strength/peak', stat, why)
@@ -363,16 +347,13 @@ contains
       if (rf%xdmf%active) call plies_write(rf%xdmf%plies, rf%fid, model%msh, ply_maps_t(dmg%stack%z, &
          dmg%stack%angle, dmg%fi_max, dmg%mode_max, dmg%onset_time, sigma, fi, dmg%delam%map, modes), stat, why)
       if (stat /= 0) errmsg = rf%path // ': /xdmf/plies: ' // trim(why)
-
    contains
-
       subroutine put_data(name, x, units)
          character(len=*), intent(in) :: name, units
          real(dp), intent(in) :: x(:,:)
          if (stat == 0) call h5io_write(rf%fid, name, x, stat, why)
          call attr_text(rf%fid, name, 'units', units, stat, why)
       end subroutine put_data
-
    end subroutine damage_write
 
 end module damage_record

@@ -1,11 +1,9 @@
-!> Thin checked wrappers over HDF5-Fortran for the results files: files,
-!> groups, attributes, whole datasets (the growing ones: hdf5_series.f90).
-!> Every routine returns `stat` (0 on success) and an `errmsg` naming the
-!> operation and the object; `loc` is the file or group a path starts
-!> from, `name` a path relative to it. Attributes are scalars or 1-D arrays,
-!> strings variable-length UTF-8; every dataset chunked and checksummed
-!> (Fletcher32), in Fortran order (x(m, n) reads as x[n, m] in h5py).
-!> tools/hdf5_read.f90 is the read half. Not from the paper. More: docs/OUTPUT.md.
+!> Thin checked wrappers over HDF5-Fortran for the results files: files, groups, attributes, whole
+!> datasets (the growing ones: hdf5_series.f90). Every routine returns `stat` (0 on success) and an
+!> `errmsg` naming the operation and the object; `loc` is the file or group a path starts from,
+!> `name` a path relative to it. Attributes are scalars or 1-D arrays, strings variable-length
+!> UTF-8; every dataset chunked and checksummed (Fletcher32), in Fortran order (x(m, n) reads as
+!> x[n, m] in h5py). tools/hdf5_read.f90 is the read half. Not from the paper. More: docs/OUTPUT.md.
 module hdf5_io
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char, c_bool, c_int, c_int64_t
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, h5fclose_f, &
@@ -55,10 +53,9 @@ contains
       call h5io_check(err, 'cannot initialise the HDF5 library', '', stat, errmsg)
    end subroutine h5io_start
 
-   !> With `create`, creates the file `path` exclusively (what had the name
-   !> removed first: no write through a link), with `swmr` in HDF5 1.10's
-   !> format (what SWMR needs); else opens the existing file for writing, with
-   !> `swmr` in SWMR mode, clearing the marks a killed writer left (what
+   !> With `create`, creates the file `path` exclusively (what had the name removed first: no write
+   !> through a link), with `swmr` in HDF5 1.10's format (what SWMR needs); else opens the existing
+   !> file for writing, with `swmr` in SWMR mode, clearing the marks a killed writer left (what
    !> `h5clear -s` does).
    subroutine h5io_open(path, create, swmr, fid, stat, errmsg)
       character(len=*), intent(in) :: path

@@ -1,7 +1,6 @@
-!> Growing datasets of the results files over HDF5-Fortran (the rest:
-!> src/results/hdf5_io.f90, same conventions): rank-1 series (a history
-!> column), rank-2 series of columns (a nodal field per snapshot), grown by
-!> blocks, cut back and read whole for a restart, and virtual views of one
+!> Growing datasets of the results files over HDF5-Fortran (the rest: src/results/hdf5_io.f90, same
+!> conventions): rank-1 series (a history column), rank-2 series of columns (a nodal field per
+!> snapshot), grown by blocks, cut back and read whole for a restart, and virtual views of one
 !> column (HDF5 1.10's VDS). Not from the paper. More: docs/OUTPUT.md.
 module hdf5_series
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc
@@ -26,10 +25,9 @@ module hdf5_series
 
 contains
 
-   !> Creates the empty series `name`, open as did (close with h5io_close_dataset):
-   !> with nrow = 0 of rank 1, reals or integers (kind), in chunks of `chunk`
-   !> entries; else reals of shape (nrow, 0) growing by columns, in chunks of
-   !> `chunk` values (one column at least).
+   !> Creates the empty series `name`, open as did (close with h5io_close_dataset): with nrow = 0 of
+   !> rank 1, reals or integers (kind), in chunks of `chunk` entries; else reals of shape (nrow, 0)
+   !> growing by columns, in chunks of `chunk` values (one column at least).
    subroutine h5io_create_series(loc, name, kind, nrow, chunk, did, stat, errmsg)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
@@ -153,8 +151,7 @@ contains
    !> Extends did's last dimension by n and writes the values at buf (type tid) there.
    subroutine grow_and_write(did, tid, rank, n, buf, stat, errmsg)
       integer(hid_t), intent(in) :: did, tid
-      integer, intent(in) :: rank
-      integer, intent(in) :: n
+      integer, intent(in) :: rank, n
       type(c_ptr), intent(in) :: buf
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg

@@ -1,10 +1,8 @@
-!> The pieces of a restart file (src/record/restart_point.f90): a stream of
-!> unformatted records, each part behind an eight-character tag the reader
-!> checks. One routine per piece both writes and reads it (restart_stream_t's
-!> direction), which keeps the two in step; the first failure stays in `stat`.
-!> Values, vectors, an impactor (eq. 16, 21), a contact load pattern, and the
-!> seal: the last 8 bytes, zlib's CRC-32 of all before them. More:
-!> docs/ROBUSTNESS.md.
+!> The pieces of a restart file (src/record/restart_point.f90): a stream of unformatted records,
+!> each part behind an eight-character tag the reader checks. One routine per piece both writes and
+!> reads it (restart_stream_t's direction), which keeps the two in step; the first failure stays in
+!> `stat`. Values, vectors, an impactor (eq. 16, 21), a contact load pattern, and the seal: the last
+!> 8 bytes, zlib's CRC-32 of all before them. More: docs/ROBUSTNESS.md.
 module restart_io
    use, intrinsic :: iso_fortran_env, only: int8, int64
    use kinds, only: dp

@@ -1,8 +1,7 @@
-!> The result files of every analysis: the claim before any work, the column
-!> files (title, deck echo, a line per column, the names, the rows), the
-!> history's columns (for <prefix>_history.dat and /history of <prefix>.h5)
-!> and the summary's items ('key = value', the unit in the key; also /summary).
-!> Not from the paper. More: docs/OUTPUT.md.
+!> The result files of every analysis: the claim before any work, the column files (title, deck
+!> echo, a line per column, the names, the rows), the history's columns (for <prefix>_history.dat
+!> and /history of <prefix>.h5) and the summary's items ('key = value', the unit in the key; also
+!> /summary). Not from the paper. More: docs/OUTPUT.md.
 module result_files
    use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
@@ -12,7 +11,7 @@ module result_files
       path_kind, path_missing, path_regular, path_link, path_directory, path_other, create_new_file, remove_file, &
       file_lock_t, lock_file, unlock_file, rename_file, file_size, file_probe_t, probe_size
    use system_limits, only: name_max, path_max, read_only_file_system
-   use number_text, only: put_f16_4, put_es16_7e3, put_i6
+   use number_text, only: put_f16_4, put_es16_7e3, put_i6, int_str
    implicit none
    private
    public :: column_t, history_columns, nhist, nhist_damage, history_width
@@ -109,8 +108,6 @@ module result_files
    end type summary_item_t
 
 contains
-
-   ! ============================================================ claiming
 
    !> The result files of an analysis after the prefix; a run claims and locks the first.
    pure function result_suffixes(analysis_kind) result(list)
@@ -252,8 +249,6 @@ contains
       claim%created = .false.
    end subroutine release_results
 
-   ! ======================================================== column files
-
    !> The first failure kept: stat and errmsg take ios and text when stat is 0.
    pure subroutine keep_failure(stat, errmsg, ios, text)
       integer, intent(inout) :: stat              !< 0, or the first failure
@@ -351,8 +346,7 @@ contains
    !> The history's columns of a run: nhist, nhist_strength when the deck
    !> gives &strength, nhist_damage with ply damage.
    pure integer function history_width(with_strength, with_damage)
-      logical, intent(in) :: with_strength   !< the run computes ply stresses
-      logical, intent(in) :: with_damage     !< the plies damage (&damage)
+      logical, intent(in) :: with_strength, with_damage   !< ply stresses computed; plies damaged (&damage)
       history_width = merge(nhist_damage, merge(nhist_strength, nhist, with_strength), with_damage)
    end function history_width
 
@@ -396,8 +390,6 @@ contains
       bytes = after
    end subroutine write_history_row
 
-   ! ============================================================= summary
-
    !> Appends a real item: the file's key, the SI name, unit and value, the
    !> file's scale; with `given` false, the text item `none` instead.
    subroutine summary_real(items, key, name, unit, si, scale, given, none)
@@ -420,9 +412,7 @@ contains
       type(summary_item_t), allocatable, intent(inout) :: items(:)
       character(len=*), intent(in) :: key
       integer, intent(in) :: value
-      character(len=24) :: buf
-      write (buf, '(i0)') value
-      call append(items, key, key, '-', trim(buf), real(value, dp), item_integer)
+      call append(items, key, key, '-', int_str(value), real(value, dp), item_integer)
    end subroutine summary_integer
 
    !> Appends a text item ('completed', 'none', 'true').

@@ -3,11 +3,10 @@
 !> '#' header). Not from the paper. More: docs/OUTPUT.md.
 module result_reader
    use kinds, only: dp, msg_len
-   use result_files, only: nhist
    implicit none
    private
    public :: summary_t, read_summary, summary_value, summary_string, summary_has, summary_index
-   public :: read_columns, read_history
+   public :: read_columns
 
    !> The items of one summary, in the file's order.
    type :: summary_t
@@ -120,13 +119,5 @@ contains
       close (u)
       if (stat == 0 .and. nrow == 0) stat = 1
    end subroutine read_columns
-
-   !> The rows of <prefix>_history.dat, table(nhist, rows), in history_columns' order.
-   subroutine read_history(path, table, stat)
-      character(len=*), intent(in) :: path                 !< <prefix>_history.dat
-      real(dp), allocatable, intent(out) :: table(:,:)     !< the rows
-      integer, intent(out) :: stat                         !< 0; else missing, empty, a row short
-      call read_columns(path, nhist, table, stat)
-   end subroutine read_history
 
 end module result_reader

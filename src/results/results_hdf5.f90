@@ -1,8 +1,7 @@
-!> The full results of a run in one HDF5 file, <prefix>.h5 (&output hdf5):
-!> the deck, the mesh, the history's columns, the nodal fields every
-!> fields_every steps, the state at the largest force (/peak), the summary;
-!> SI units, every dataset checksummed, written in blocks once a second.
-!> The layout: docs/OUTPUT.md. Not from the paper.
+!> The full results of a run in one HDF5 file, <prefix>.h5 (&output hdf5): the deck, the mesh, the
+!> history's columns, the nodal fields every fields_every steps, the state at the largest force
+!> (/peak), the summary; SI units, every dataset checksummed, written in blocks once a second. The
+!> layout: docs/OUTPUT.md. Not from the paper.
 module results_hdf5
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char
@@ -103,11 +102,10 @@ contains
       rf%peak_fields = 0.0_dp
    end subroutine prepare
 
-   !> Writes all but what grows (deck, mesh, empty series, /peak, /summary
-   !> status 'running') under <prefix>.h5.tmp and renames it into place; from
-   !> then on the file is open only while it is written, in SWMR mode, which
-   !> keeps it readable on disk at every instant (a kill inside a write leaves
-   !> it marked open: h5clear -s, or impact --restart, clears the mark).
+   !> Writes all but what grows (deck, mesh, empty series, /peak, /summary status 'running') under
+   !> <prefix>.h5.tmp and renames it into place; from then on the file is open only while it is
+   !> written, in SWMR mode, which keeps it readable on disk at every instant (a kill inside a write
+   !> leaves it marked open: h5clear -s, or impact --restart, clears the mark).
    subroutine results_open(deck, msh, rf, stat, errmsg)
       type(deck_t), intent(in) :: deck   !< The effective deck.
       type(mesh_t), intent(in) :: msh   !< The mesh with its equation numbers.
@@ -250,9 +248,8 @@ contains
       rf%peak_waiting = .true.
    end subroutine results_state
 
-   !> Rows, snapshots and the peak wait in memory for results_flush: once
-   !> flush_seconds have passed (a restart point is then due), when the
-   !> buffers are full, on a warning, at the end.
+   !> Rows, snapshots and the peak wait in memory for results_flush: once flush_seconds have passed
+   !> (a restart point is then due), when the buffers are full, on a warning, at the end.
    subroutine results_tick(rf, due, stat, errmsg)
       type(results_file_t), intent(inout) :: rf     !< the results file
       logical, intent(out) :: due                   !< a flush was made: the files hold every step so far
@@ -496,8 +493,7 @@ contains
    !> /fields: the empty series of the snapshots, their times, steps, forces and fields.
    subroutine create_fields(rf, fields_every, nnode, stat, why)
       type(results_file_t), intent(inout) :: rf     !< the results file (its snapshot datasets on return)
-      integer, intent(in) :: fields_every           !< &output fields_every (steps between snapshots)
-      integer, intent(in) :: nnode                  !< nodes of the mesh
+      integer, intent(in) :: fields_every, nnode    !< &output fields_every (steps between snapshots); nodes
       integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
       character(len=*), intent(inout) :: why        !< reason on failure
       integer :: k
@@ -535,9 +531,7 @@ contains
    !> Text attribute `name` of obj, trailing blanks removed; nothing after a failure.
    subroutine attr_text(fid, obj, name, value, stat, why)
       integer(hid_t), intent(in) :: fid             !< the open results file
-      character(len=*), intent(in) :: obj           !< the object ('.' for the root)
-      character(len=*), intent(in) :: name          !< the attribute
-      character(len=*), intent(in) :: value         !< its text
+      character(len=*), intent(in) :: obj, name, value   !< the object ('.': the root), attribute, text
       integer, intent(inout) :: stat                !< 0 on success; nothing is written after a failure
       character(len=*), intent(inout) :: why        !< reason on failure
       if (stat == 0) call h5io_set_attr(fid, obj, name, trim(value), stat, why)
@@ -568,8 +562,6 @@ contains
          end do
       end do
    end function nodal_values
-
-   ! ------------------------------------------------------------ deck, mesh
 
    !> /deck: the echo, and per variable of the schema an attribute of
    !> /deck/<group> with its unit ('not given': an optional variable not given).

@@ -1,11 +1,9 @@
-!> <prefix>.xdmf beside <prefix>.h5: an XDMF 3 description of the mesh
-!> (9-node quadrilaterals) and nodal fields, one time step per snapshot, for
-!> ParaView, VisIt and meshio; with &strength the plies (xdmf_plies.f90).
-!> Every array is a dataset of <prefix>.h5 or a view in <prefix>.xdmf.h5
-!> (above xdmf_t). Called by src/results/results_hdf5.f90: xdmf_open,
-!> xdmf_start; per batch of snapshots xdmf_grow, xdmf_snapshots,
-!> xdmf_batch_close; xdmf_peak; xdmf_close; a restart: xdmf_cut,
-!> xdmf_resume. Not from the paper. More: docs/OUTPUT.md.
+!> <prefix>.xdmf beside <prefix>.h5: an XDMF 3 description of the mesh (9-node quadrilaterals) and
+!> nodal fields, one time step per snapshot, for ParaView, VisIt and meshio; with &strength the
+!> plies (xdmf_plies.f90). Every array is a dataset of <prefix>.h5 or a view in <prefix>.xdmf.h5
+!> (above xdmf_t). Called by src/results/results_hdf5.f90: xdmf_open, xdmf_start; per batch of
+!> snapshots xdmf_grow, xdmf_snapshots, xdmf_batch_close; xdmf_peak; xdmf_close; a restart:
+!> xdmf_cut, xdmf_resume. Not from the paper. More: docs/OUTPUT.md.
 module results_xdmf
    use, intrinsic :: iso_fortran_env, only: int64
    use hdf5, only: hid_t
@@ -19,7 +17,7 @@ module results_xdmf
       h5io_cut_series, h5io_close_dataset
    use file_system, only: rename_file
    use result_files, only: keep_failure
-   use xdmf_plies, only: xdmf_plies_t, plies_collection, data_item
+   use xdmf_plies, only: xdmf_plies_t, plies_collection, data_item, xml_attribute
    implicit none
    private
    public :: xdmf_t, xdmf_open, xdmf_start, xdmf_cut, xdmf_resume, xdmf_grow, xdmf_snapshots, xdmf_batch_close, &
@@ -39,13 +37,12 @@ module results_xdmf
    integer, parameter :: element_di(nen) = [0, 2, 2, 0, 1, 2, 1, 0, 1]
    integer, parameter :: element_dj(nen) = [0, 0, 2, 2, 0, 1, 2, 1, 1]
 
-   !> A view per snapshot (a plain dataset, what every reader takes: ParaView
-   !> 5.11 ignores hyperslabs, meshio reads whole datasets) in a file of its
-   !> own, as <prefix>.h5 is written in SWMR mode, which makes no object.
-   !> &output xdmf = 'whole' mirrors a quarter or half into the whole plate
-   !> (u, psi_x odd across x = 0, v, psi_y across y = 0, which no view can
-   !> do): its fields are data in /xdmf of <prefix>.h5, growing with /fields;
-   !> 'none' writes neither XML, nor /xdmf, nor views.
+   !> A view per snapshot (a plain dataset, what every reader takes: ParaView 5.11 ignores
+   !> hyperslabs, meshio reads whole datasets) in a file of its own, as <prefix>.h5 is written in
+   !> SWMR mode, which makes no object. &output xdmf = 'whole' mirrors a quarter or half into the
+   !> whole plate (u, psi_x odd across x = 0, v, psi_y across y = 0, which no view can do): its
+   !> fields are data in /xdmf of <prefix>.h5, growing with /fields; 'none' writes neither XML, nor
+   !> /xdmf, nor views.
    type :: xdmf_t
       logical :: active = .false.                   !< <prefix>.xdmf is being written
       logical :: whole = .false.                    !< the mirrored whole plate (else the modelled domain)
@@ -216,13 +213,11 @@ contains
       end do fields
    end subroutine xdmf_grow
 
-   !> As the run goes: after a batch of snapshots <prefix>.xdmf.h5 is flushed
-   !> and the XML rewritten by rename (a reader sees the old or the new file),
-   !> after the first batch, then at most once per xdmf_rewrite_interval (the
-   !> XML grows with every snapshot), and at the end; a killed run's XDMF
-   !> opens, status 'running' (a restart makes <prefix>.xdmf.h5 anew).
-   !> Here: a batch of snapshots after the first `before`, their views in the
-   !> group /fields/<b> of <prefix>.xdmf.h5.
+   !> As the run goes: after a batch of snapshots <prefix>.xdmf.h5 is flushed and the XML rewritten
+   !> by rename (a reader sees the old or the new file), after the first batch, then at most once
+   !> per xdmf_rewrite_interval (the XML grows with every snapshot), and at the end; a killed run's
+   !> XDMF opens, status 'running' (a restart makes <prefix>.xdmf.h5 anew). Here: a batch of
+   !> snapshots after the first `before`, their views in the group /fields/<b> of <prefix>.xdmf.h5.
    subroutine xdmf_snapshots(x, before, step, time, force, stat, errmsg)
       type(xdmf_t), intent(inout) :: x              !< the XDMF file
       integer, intent(in) :: before                 !< snapshots in <prefix>.h5 before the batch
@@ -316,20 +311,19 @@ contains
       x%active = .false.
    end subroutine xdmf_close
 
-   ! ============================================================== the XML
-
    !> Writes the XML to <prefix>.xdmf.tmp and renames it over <prefix>.xdmf.
    subroutine write_xml(x, stat, errmsg)
       type(xdmf_t), intent(inout) :: x
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       character(len=msg_len) :: iomsg
-      character(len=:), allocatable :: tmp, h5, views, mesh_points, peak
+      character(len=:), allocatable :: tmp, h5, views, mesh_points, peak, nodes
       integer :: u, k, s
       h5 = xml_escaped(x%h5_name) // ':/'
       views = xml_escaped(x%views_name) // ':/'
       mesh_points = trim(merge('xdmf/coordinates', 'mesh/coordinates', x%whole))
       peak = trim(merge('xdmf/peak/', 'peak/     ', x%whole))
+      nodes = int_str(x%nnode)
       tmp = x%path // '.tmp'
       open (newunit=u, file=tmp, status='replace', action='write', form='formatted', iostat=stat, iomsg=iomsg)
       if (stat /= 0) then
@@ -361,10 +355,12 @@ contains
          write (u, '(a)') '        <Information Name="step" Value="' // int_str(x%step(s)) // '"/>'
          write (u, '(a)') '        <Information Name="force_N" Value="' // trim(x%force(s)) // '"/>'
          do k = 1, ndof_node
-            call attribute(trim(freedom_name(k)), views // view_path(x, k, s))
+            call xml_attribute(u, trim(freedom_name(k)), 'Node', 'Float', nodes, &
+               views // view_path(x, k, s))
          end do
          do k = 1, ndof_node
-            call attribute('peak_' // trim(freedom_name(k)), h5 // peak // trim(freedom_name(k)))
+            call xml_attribute(u, 'peak_' // trim(freedom_name(k)), 'Node', 'Float', nodes, &
+               h5 // peak // trim(freedom_name(k)))
          end do
          write (u, '(a)') '      </Grid>'
       end do snapshots
@@ -379,20 +375,10 @@ contains
       call rename_file(tmp, x%path, stat, errmsg)
       if (stat /= 0) return
       call system_clock(x%written_at)
-   contains
-      subroutine attribute(name, path)
-         character(len=*), intent(in) :: name, path
-         write (u, '(a)') '        <Attribute Name="' // name // '" AttributeType="Scalar" Center="Node">'
-         write (u, '(a)') '          ' // data_item('Float', int_str(x%nnode), path)
-         write (u, '(a)') '        </Attribute>'
-      end subroutine attribute
    end subroutine write_xml
 
-   ! ============================================================ the mirror
-
-   !> The whole plate, mirrored about x = 0 (sym_x) and y = 0 (sym_y): points
-   !> xy(2, n), cells from 1, counter-clockwise, each point's modelled node
-   !> and each field's sign there.
+   !> The whole plate, mirrored about x = 0 (sym_x) and y = 0 (sym_y): points xy(2, n), cells from
+   !> 1, counter-clockwise, each point's modelled node and each field's sign there.
    subroutine whole_plate(msh, xy, cells, source, parity)
       type(mesh_t), intent(in) :: msh
       real(dp), allocatable, intent(out) :: xy(:,:)
@@ -435,8 +421,6 @@ contains
          point = (j - jlo)*ni + (i - ilo) + 1
       end function point
    end subroutine whole_plate
-
-   ! ============================================================== helpers
 
    !> text with the XML special characters & < > " replaced by entities.
    pure function xml_escaped(text) result(out)

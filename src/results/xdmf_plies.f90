@@ -1,10 +1,8 @@
-!> The ply fields of a run with &strength as a grid of <prefix>.xdmf: the
-!> damage map and the ply stresses at the peak force (/strength,
-!> damage_record.f90) beside the nodal fields in ParaView, VisIt, meshio.
-!> The grid is the laminate, one hexahedron per Gauss point, ply and ply
-!> face (above laminate_grid), in /xdmf/plies of <prefix>.h5 with a dataset
-!> per cell attribute, and a temporal collection "plies" (above
-!> plies_collection); the modelled domain only. Not from the paper. More:
+!> The ply fields of a run with &strength as a grid of <prefix>.xdmf: the damage map and the ply
+!> stresses at the peak force (/strength, damage_record.f90) beside the nodal fields in ParaView,
+!> VisIt, meshio. The grid is the laminate, one hexahedron per Gauss point, ply and ply face (above
+!> laminate_grid), in /xdmf/plies of <prefix>.h5 with a dataset per cell attribute, and a temporal
+!> collection "plies" (above plies_collection); the modelled domain only. Not from the paper. More:
 !> docs/OUTPUT.md, "The ply fields".
 module xdmf_plies
    use hdf5, only: hid_t
@@ -15,7 +13,7 @@ module xdmf_plies
    use hdf5_io, only: h5io_group, h5io_write, h5io_delete
    implicit none
    private
-   public :: xdmf_plies_t, ply_maps_t, plies_write, plies_add, plies_collection, data_item
+   public :: xdmf_plies_t, ply_maps_t, plies_write, plies_add, plies_collection, data_item, xml_attribute
 
    !> Where the cells of the 3 x 3 Gauss points are cut, along xi and eta.
    real(dp), parameter :: plies_cut(4) = [-1.0_dp, -4.0_dp/9.0_dp, 4.0_dp/9.0_dp, 1.0_dp]
@@ -130,13 +128,12 @@ contains
       if (stat == 0) p%added = [p%added, [character(len=2*name_len) :: name]]
    end subroutine plies_add
 
-   !> The laminate grid: in the plane, the cell of a 3 x 3 Gauss point is the
-   !> part of its element its weight stands for (xi, eta cut at -1, -4/9, 4/9,
-   !> 1), mapped by the shape functions; through the thickness ply k is cut at
-   !> its middle, the lower half its face towards the impacted face (2k-1),
-   !> the upper the other (2k); z turned over (z_view = -z) so the impacted
-   !> face is on top. Points xyz (3, npts) (m), hexahedra cells (8, ncell)
-   !> numbered from 0, lower face first, counter-clockwise from above.
+   !> The laminate grid: in the plane, the cell of a 3 x 3 Gauss point is the part of its element
+   !> its weight stands for (xi, eta cut at -1, -4/9, 4/9, 1), mapped by the shape functions;
+   !> through the thickness ply k is cut at its middle, the lower half its face towards the impacted
+   !> face (2k-1), the upper the other (2k); z turned over (z_view = -z) so the impacted face is on
+   !> top. Points xyz (3, npts) (m), hexahedra cells (8, ncell) numbered from 0, lower face first,
+   !> counter-clockwise from above.
    subroutine laminate_grid(msh, z, xyz, cells)
       type(mesh_t), intent(in) :: msh
       real(dp), intent(in) :: z(0:)
@@ -188,19 +185,19 @@ contains
       end function lattice_point
    end subroutine laminate_grid
 
-   !> The temporal collection "plies" of the XML on unit u, before the nodal
-   !> fields' (ParaView reads top-level temporal collections only; meshio the
-   !> last, "fields"): at each time, the laminate with its cell attributes;
-   !> h5 is the results file as the XML names it, with ':/' appended.
+   !> The temporal collection "plies" of the XML on unit u, before the nodal fields' (ParaView reads
+   !> top-level temporal collections only; meshio the last, "fields"): at each time, the laminate
+   !> with its cell attributes; h5 is the results file as the XML names it, with ':/' appended.
    subroutine plies_collection(p, u, h5, times)
       type(xdmf_plies_t), intent(in) :: p           !< the grid (active)
       integer, intent(in) :: u                      !< the XML file
       character(len=*), intent(in) :: h5            !< '<file>.h5:/'
       character(len=*), intent(in) :: times(:)      !< the times (s), as text
-      character(len=:), allocatable :: cells
+      character(len=:), allocatable :: cells, at
       integer :: s, j
       if (.not. p%active) return
       cells = int_str(p%ncell)
+      at = h5 // group // '/'
       write (u, '(a)') '    <Grid Name="plies" GridType="Collection" CollectionType="Temporal">'
       steps: do s = 1, size(times)
          write (u, '(a)') '      <Grid Name="plies ' // int_str(s) // '" GridType="Uniform">'
@@ -213,25 +210,28 @@ contains
          write (u, '(a)') '          ' // data_item('Float', int_str(p%npts) // ' 3', h5 // group // '/points')
          write (u, '(a)') '        </Geometry>'
          do j = 1, nints
-            call attribute(trim(int_names(j)), 'Int', trim(int_names(j)))
+            call xml_attribute(u, trim(int_names(j)), 'Cell', 'Int', cells, at // trim(int_names(j)))
          end do
          do j = 1, nreals
-            call attribute(trim(real_names(j)), 'Float', trim(real_sets(j)))
+            call xml_attribute(u, trim(real_names(j)), 'Cell', 'Float', cells, at // trim(real_sets(j)))
          end do
          do j = 1, size(p%added)
-            call attribute(trim(p%added(j)) // ' (-)', 'Float', trim(p%added(j)))
+            call xml_attribute(u, trim(p%added(j)) // ' (-)', 'Cell', 'Float', cells, at // trim(p%added(j)))
          end do
          write (u, '(a)') '      </Grid>'
       end do steps
       write (u, '(a)') '    </Grid>'
-   contains
-      subroutine attribute(name, number_type, dataset)
-         character(len=*), intent(in) :: name, number_type, dataset
-         write (u, '(a)') '        <Attribute Name="' // name // '" AttributeType="Scalar" Center="Cell">'
-         write (u, '(a)') '          ' // data_item(number_type, cells, h5 // group // '/' // dataset)
-         write (u, '(a)') '        </Attribute>'
-      end subroutine attribute
    end subroutine plies_collection
+
+   !> An XDMF scalar Attribute on unit u, centred on 'Node' or 'Cell', its data (data_item) at `where`.
+   subroutine xml_attribute(u, name, center, number_type, dims, where)
+      integer, intent(in) :: u
+      character(len=*), intent(in) :: name, center, number_type, dims, where
+      write (u, '(a)') '        <Attribute Name="' // name // '" AttributeType="Scalar" Center="' // center &
+         // '">'
+      write (u, '(a)') '          ' // data_item(number_type, dims, where)
+      write (u, '(a)') '        </Attribute>'
+   end subroutine xml_attribute
 
    !> An HDF DataItem of 4-byte integers ('Int') or 8-byte reals ('Float'):
    !> dimensions (C order), 'file:/path'.
