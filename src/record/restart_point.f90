@@ -89,7 +89,7 @@ contains
       type(record_t), intent(inout) :: rec          !< the run's record (its steps: the last step)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure, naming the file
-      character(len=:), allocatable :: path, changed
+      character(len=:), allocatable :: path, changed, dir
       character(len=msg_len) :: iomsg
       type(restart_stream_t) :: s
       type(results_point_t) :: pt
@@ -122,7 +122,9 @@ contains
       if (stat == 0) stat = ios
       if (stat == 0) call force_to_disk(path // '.tmp', stat)
       if (stat == 0) call rename_file(path // '.tmp', path, stat, iomsg)
-      if (stat == 0) call force_to_disk(directory_of(path), stat)
+      dir = parent_directory(path)
+      if (len(dir) == 0) dir = merge('/', '.', path(1:min(1, len(path))) == '/')
+      if (stat == 0) call force_to_disk(dir, stat)          ! the directory, for the rename
       if (stat /= 0) errmsg = path // ': cannot write the restart point'
    end subroutine restart_save
 
@@ -464,14 +466,6 @@ contains
       call open_probe(rec%hist_path, rec%hist_probe, stat)
       if (stat /= 0) errmsg = rec%hist_path // ': cannot open it to read its length'
    end subroutine reopen_history
-
-   !> The directory of `path` ('.' or '/' when it has none).
-   pure function directory_of(path) result(dir)
-      character(len=*), intent(in) :: path          !< a file
-      character(len=:), allocatable :: dir
-      dir = parent_directory(path)
-      if (len(dir) == 0) dir = merge('/', '.', path(1:min(1, len(path))) == '/')
-   end function directory_of
 
    !> fsync(2) of the file or directory `path`.
    subroutine force_to_disk(path, stat)

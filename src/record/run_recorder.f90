@@ -254,13 +254,23 @@ contains
       type(step_state_t), intent(in) :: st               !< the step accepted (record_step)
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
-      real(dp) :: w_bend
+      real(dp) :: w_bend, crossing
       associate (plate => st%plate, imp => st%imp, hist => st%hist, cit => st%cit)
       ! (a NaN force is not a sample: the peak force keeps the finite ones)
       if (.not. ieee_is_nan(imp%f)) call peak_sample(rec%force_peak, fig%t, imp%f)
       call peak_sample(rec%deflection_peak, fig%t, abs(fig%w_plate))
       call peak_sample(rec%strain_peak, fig%t, abs(fig%strain_y))
-      call first_contact_bounds(rec, fig%t, imp%f, cit%alpha, hist%alpha_0)
+      ! the contacts; the first one starts and ends where alpha - alpha_0 crosses 0 (eq. 12, 13)
+      crossing = zero_crossing(fig%t - rec%dt, rec%alpha_prev - hist%alpha_0, fig%t, &
+                               cit%alpha - hist%alpha_0)
+      if (imp%f > 0.0_dp .and. .not. rec%in_contact) then
+         rec%in_contact = .true.
+         rec%contacts = rec%contacts + 1
+         if (rec%contacts == 1) rec%first_contact_start = crossing
+      else if (imp%f <= 0.0_dp .and. rec%in_contact) then
+         rec%in_contact = .false.
+         if (rec%contacts == 1) rec%first_contact_end = crossing
+      end if
       rec%alpha_prev = cit%alpha
       rec%contact_iterations = rec%contact_iterations + fig%ic
       rec%max_contact_iter = max(rec%max_contact_iter, fig%ic)
@@ -276,26 +286,6 @@ contains
       call damage_peak(rec%damage, fig%step, fig%t, imp%f, plate%d)
       end associate
    end subroutine update_maxima
-
-   !> The contacts and the first one's start and end, where alpha - alpha_0
-   !> crosses 0 between the step before (rec%alpha_prev) and this one.
-   subroutine first_contact_bounds(rec, t, f, alpha, alpha_0)
-      type(record_t), intent(inout) :: rec               !< the record
-      real(dp), intent(in) :: t                          !< the step's time (s)
-      real(dp), intent(in) :: f                          !< its contact force (N)
-      real(dp), intent(in) :: alpha                      !< its indentation (m), eq. (13)
-      real(dp), intent(in) :: alpha_0                    !< the permanent indentation of the contact's law (m), eq. (12)
-      real(dp) :: crossing
-      crossing = zero_crossing(t - rec%dt, rec%alpha_prev - alpha_0, t, alpha - alpha_0)
-      if (f > 0.0_dp .and. .not. rec%in_contact) then
-         rec%in_contact = .true.
-         rec%contacts = rec%contacts + 1
-         if (rec%contacts == 1) rec%first_contact_start = crossing
-      else if (f <= 0.0_dp .and. rec%in_contact) then
-         rec%in_contact = .false.
-         if (rec%contacts == 1) rec%first_contact_end = crossing
-      end if
-   end subroutine first_contact_bounds
 
    !> The history row of the step (every &output every steps, and the last);
    !> a balance below -E0 stops the run (diverged).
@@ -494,6 +484,7 @@ contains
       type(summary_item_t), allocatable :: s(:)
       character(len=msg_len) :: text, dtext
       integer :: ios, dstat
+      real(dp) :: f_peak, t_peak, w_max, t_w
       call progress_end(rec%progress)
       call closing_warnings(rec, model)
       call run_summary(rec, solver, st, s)
@@ -501,8 +492,11 @@ contains
       call summary_real(s, 'gauge_x_mm', 'gauge_x', 'm', model%gauge_xy(1), 1.0e3_dp)
       call summary_real(s, 'gauge_y_mm', 'gauge_y', 'm', model%gauge_xy(2), 1.0e3_dp)
       ! -- dt and the mesh chosen from the scene (src/model/scene_settings.f90), when the deck gives none
-      if (len_trim(deck%dt_chosen) > 0) call summary_text(s, 'dt_chosen', after_equals(deck%dt_chosen))
-      if (len_trim(deck%mesh_chosen) > 0) call summary_text(s, 'mesh_chosen', after_equals(deck%mesh_chosen))
+      ! (their summary's value: the text after ' = ' of 'dt chosen = 2.0 us: ...')
+      if (len_trim(deck%dt_chosen) > 0) call summary_text(s, 'dt_chosen', &
+         trim(deck%dt_chosen(index(deck%dt_chosen, ' = ') + 3:)))
+      if (len_trim(deck%mesh_chosen) > 0) call summary_text(s, 'mesh_chosen', &
+         trim(deck%mesh_chosen(index(deck%mesh_chosen, ' = ') + 3:)))
       call results_closing(rec%h5)                  ! <prefix>.h5 open for its last words
       call damage_close(rec%damage, model, solver%damage, s, rec%h5, dstat, dtext)
       call summary_integer(s, 'warnings', rec%warnings)
@@ -515,15 +509,16 @@ contains
       call keep_failure(stat, errmsg, dstat, dtext)
       call results_finish(rec%h5, rec%stop_status, s, ios, text)
       call keep_failure(stat, errmsg, ios, text)
-      call last_words(rec, deck, cpu_s, output_unit)
+      ! -- the last words on standard output: the files, peak force, contacts, deflection, cpu time
+      call peak_between(rec%force_peak, t_peak, f_peak)          ! as in the summary (above update_maxima)
+      call peak_between(rec%deflection_peak, t_w, w_max)
+      write (output_unit, '(a)') 'history: ' // rec%hist_path
+      write (output_unit, '(a)') 'summary: ' // deck%prefix // '_summary.dat'
+      if (deck%hdf5) write (output_unit, '(a)') 'results: ' // deck%prefix // '.h5'
+      write (output_unit, '(a,es12.5,a,f9.2,a,i0,a,es12.5,a,f8.3,a)') 'peak force ', f_peak, ' N at ', &
+         t_peak*1.0e6_dp, ' us; contacts ', rec%contacts, '; max deflection ', &
+         w_max*1.0e3_dp, ' mm; cpu ', cpu_s, ' s'
    end subroutine record_close
-
-   !> The text after the first ' = ' of 'dt chosen = 2.0 us: ...' (the summary's value).
-   pure function after_equals(text) result(value)
-      character(len=*), intent(in) :: text          !< 'name = value'
-      character(len=:), allocatable :: value
-      value = trim(text(index(text, ' = ') + 3:))
-   end function after_equals
 
    !> The end's warnings (a linear run that needed the nonlinear theory) and their count.
    subroutine closing_warnings(rec, model)
@@ -599,23 +594,6 @@ contains
       end if
    end subroutine run_summary
 
-   !> The run's last words on standard output: its files, peak force, contacts, deflection, cpu time.
-   subroutine last_words(rec, deck, cpu_s, unit)
-      type(record_t), intent(in) :: rec             !< the record
-      type(deck_t), intent(in) :: deck              !< the effective deck
-      real(dp), intent(in) :: cpu_s                 !< cpu time of the run (s)
-      integer, intent(in) :: unit                   !< where they go (standard output)
-      real(dp) :: f_peak, t_peak, w_max, t_w
-      call peak_between(rec%force_peak, t_peak, f_peak)          ! as in the summary (above update_maxima)
-      call peak_between(rec%deflection_peak, t_w, w_max)
-      write (unit, '(a)') 'history: ' // rec%hist_path
-      write (unit, '(a)') 'summary: ' // deck%prefix // '_summary.dat'
-      if (deck%hdf5) write (unit, '(a)') 'results: ' // deck%prefix // '.h5'
-      write (unit, '(a,es12.5,a,f9.2,a,i0,a,es12.5,a,f8.3,a)') 'peak force ', f_peak, ' N at ', &
-         t_peak*1.0e6_dp, ' us; contacts ', rec%contacts, '; max deflection ', &
-         w_max*1.0e3_dp, ' mm; cpu ', cpu_s, ' s'
-   end subroutine last_words
-
    ! ============================================================== helpers
 
    !> A history row to the file and to <prefix>.h5.
@@ -642,15 +620,8 @@ contains
 
    !> max(a, b) that keeps a NaN (Fortran's max may drop it).
    pure real(dp) function nan_max(a, b)
-      real(dp), intent(in) :: a                          !< the largest so far
-      real(dp), intent(in) :: b                          !< the new value
-      if (ieee_is_nan(a)) then
-         nan_max = a
-      else if (ieee_is_nan(b) .or. b > a) then
-         nan_max = b
-      else
-         nan_max = a
-      end if
+      real(dp), intent(in) :: a, b                       !< the largest so far, the new value
+      nan_max = merge(a, b, ieee_is_nan(a) .or. .not. (ieee_is_nan(b) .or. b > a))
    end function nan_max
 
 end module run_recorder
