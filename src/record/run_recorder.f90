@@ -63,8 +63,7 @@ module run_recorder
       real(dp) :: dt = 0, h = 0                  !< time step (s, Newmark's), plate thickness (m)
       real(dp) :: cpu_before = 0                 !< cpu time of the run before its restart (s)
       character(len=:), allocatable :: edges
-      ! -- energies (J)
-      real(dp) :: e0 = 0, contact_work = 0, contact_energy = 0
+      real(dp) :: e0 = 0, contact_work = 0, contact_energy = 0   !< energies (J)
       ! -- the previous step, for the work of the contact force
       type(impactor_t) :: imp_prev
       type(load_pattern_t) :: pattern_prev
@@ -79,10 +78,8 @@ module run_recorder
       type(peak_track_t) :: force_peak, deflection_peak, strain_peak
       ! the first contact's start and end, interpolated (s; -1: not yet), and the step's indentation (m)
       real(dp) :: first_contact_start = -1, first_contact_end = -1, alpha_prev = 0
-      ! energies (J), w/h (-)
-      real(dp) :: max_energy_error = 0, energy_created = 0, energy_lost = 0
-      real(dp) :: max_w_over_h = 0
-      real(dp) :: w_bend_max = 0, diverged_at = -1
+      real(dp) :: max_energy_error = 0, energy_created = 0, energy_lost = 0   !< energies (J)
+      real(dp) :: max_w_over_h = 0, w_bend_max = 0, diverged_at = -1       !< w/h (-), m, s
       ! compliances under the impactor over a step (m/N; c_plate -1: none), largest fixed-point slope (-)
       real(dp) :: c_plate = -1, c_impactor = 0, max_slope = 0
       logical :: warned(nwarn) = .false.
@@ -301,7 +298,17 @@ contains
       row(col_time) = fig%t;  row(col_force) = imp%f;  row(col_alpha) = cit%alpha
       row(col_w_plate) = fig%w_plate;  row(col_w_impactor) = imp%w;  row(col_v_impactor) = imp%v
       row(col_strain_y) = fig%strain_y
-      call row_energies(rec, model, st, row)
+      ! -- the energies (J) and the balance, E0 less them all: its largest, energy created (-) and lost (+)
+      row(col_ke_impactor) = 0.5_dp*imp%mass*imp%v**2
+      row(col_ke_plate) = plate_kinetic_energy(model, plate%v)
+      row(col_strain_energy) = plate_strain_energy(model, plate%d) + rec%u_damage
+      row(col_contact_work) = rec%contact_work
+      row(col_contact_energy) = rec%contact_energy;  row(col_damage_dissipated) = rec%dissipated
+      row(col_energy_error) = rec%e0 - (row(col_ke_impactor) + row(col_ke_plate) + row(col_strain_energy) &
+                                        + rec%contact_energy + rec%dissipated)
+      rec%max_energy_error = nan_max(rec%max_energy_error, abs(row(col_energy_error)))
+      rec%energy_created = nan_max(rec%energy_created, -row(col_energy_error))
+      rec%energy_lost = nan_max(rec%energy_lost, row(col_energy_error))
       row(col_branch) = contact_branch(hist, cit%alpha)
       if (imp%f <= 0.0_dp) row(col_branch) = branch_none
       row(col_contact_iter) = fig%ic
@@ -318,25 +325,6 @@ contains
          // real_short(row(col_energy_error)) // ' J, E0 = ' // real_short(rec%e0) // ' J): it has diverged')
       end associate
    end subroutine history_row
-
-   !> The energies of a history row (J) and the balance, E0 less them all: its
-   !> largest, energy created (-) and lost (+) for the summary.
-   subroutine row_energies(rec, model, st, row)
-      type(record_t), intent(inout) :: rec               !< the record
-      type(model_t), intent(in) :: model                 !< the model
-      type(step_state_t), intent(in) :: st               !< the plate and the impactor at t + dt
-      real(dp), intent(inout) :: row(nhist_damage)     !< the history row: its energy columns set
-      row(col_ke_impactor) = 0.5_dp*st%imp%mass*st%imp%v**2
-      row(col_ke_plate) = plate_kinetic_energy(model, st%plate%v)
-      row(col_strain_energy) = plate_strain_energy(model, st%plate%d) + rec%u_damage
-      row(col_contact_work) = rec%contact_work
-      row(col_contact_energy) = rec%contact_energy;  row(col_damage_dissipated) = rec%dissipated
-      row(col_energy_error) = rec%e0 - (row(col_ke_impactor) + row(col_ke_plate) + row(col_strain_energy) &
-                                        + rec%contact_energy + rec%dissipated)
-      rec%max_energy_error = nan_max(rec%max_energy_error, abs(row(col_energy_error)))
-      rec%energy_created = nan_max(rec%energy_created, -row(col_energy_error))
-      rec%energy_lost = nan_max(rec%energy_lost, row(col_energy_error))
-   end subroutine row_energies
 
    !> The warnings of the step, from the table below: every step a test holds
    !> is counted (count_step), each kind warned once.
@@ -491,8 +479,8 @@ contains
       ! -- where the strain gauge of max_strain_y_back is (src/model/plate_model.f90, place_gauge)
       call summary_real(s, 'gauge_x_mm', 'gauge_x', 'm', model%gauge_xy(1), 1.0e3_dp)
       call summary_real(s, 'gauge_y_mm', 'gauge_y', 'm', model%gauge_xy(2), 1.0e3_dp)
-      ! -- dt and the mesh chosen from the scene (src/model/scene_settings.f90), when the deck gives none
-      ! (their summary's value: the text after ' = ' of 'dt chosen = 2.0 us: ...')
+      ! -- dt and the mesh chosen from the scene (src/model/scene_settings.f90), when the deck gives none:
+      ! the text after ' = ' of 'dt chosen = 2.0 us: ...'
       if (len_trim(deck%dt_chosen) > 0) call summary_text(s, 'dt_chosen', &
          trim(deck%dt_chosen(index(deck%dt_chosen, ' = ') + 3:)))
       if (len_trim(deck%mesh_chosen) > 0) call summary_text(s, 'mesh_chosen', &
