@@ -44,7 +44,7 @@ module run_recorder
    real(dp), parameter :: energy_created_bound = 1.0e-3_dp
    real(dp), parameter :: energy_lost_bound = 1.0e-2_dp
 
-   !> What a run has recorded so far.
+   !> What a run has recorded so far (saved for a restart by src/record/restart_point.f90).
    type :: record_t
       logical :: stop = .false.                  !< the run must end after this step
       logical :: restart_due = .false.           !< the step ended with the files flushed: a restart point is due
@@ -84,15 +84,12 @@ module run_recorder
       real(dp) :: c_plate = -1, c_impactor = 0, max_slope = 0
       logical :: warned(nwarn) = .false.
       type(progress_t) :: progress               !< the progress line on standard error (src/record/progress_line.f90)
-      ! (what a run carries from step to step is saved for a restart: src/record/restart_point.f90)
    end type record_t
 
    !> What record_step knows of the step it records, for its parts.
    type :: step_figures_t
-      integer :: step = 0              !< the step
+      integer :: step = 0, ic = 0, solves = 0   !< the step, its contact iterations, plate solutions (eq. 19)
       real(dp) :: t = 0                !< its time (s)
-      integer :: ic = 0                !< its contact iterations
-      integer :: solves = 0            !< its plate solutions, eq. (19)
       real(dp) :: w_plate = 0          !< plate deflection under the impactor, pressure-weighted mean (m)
       real(dp) :: strain_y = 0         !< in-plane y strain on the back face at the gauge (-)
       real(dp) :: w_rigid = 0          !< free edges: the rigid-body part of the deflection under the impactor (m)
@@ -192,18 +189,15 @@ contains
       type(step_figures_t) :: fig
       stat = 0
       rec%restart_due = .false.
-      fig%step = step
-      fig%t = real(step, dp)*rec%dt
-      fig%ic = st%cit%iterations
-      rec%steps = step
-      fig%solves = solver%solves - rec%solves_before
-      rec%solves_before = solver%solves
       associate (plate => st%plate, imp => st%imp)
+      fig = step_figures_t(step=step, t=real(step, dp)*rec%dt, ic=st%cit%iterations, &
+                           solves=solver%solves - rec%solves_before, w_plate=pattern_mean(st%cit%pattern, plate%d), &
+                           strain_y=back_face_strain(model, plate%d))
+      rec%steps = step
+      rec%solves_before = solver%solves
       call add_contact_work(rec, st)
       rec%u_damage = solver%damage%u_lost
       rec%dissipated = solver%damage%dissipated
-      fig%w_plate = pattern_mean(st%cit%pattern, plate%d)
-      fig%strain_y = back_face_strain(model, plate%d)
       call update_maxima(rec, fig, model, st, stat, errmsg)
       if (stat /= 0) return
       if (mod(step, rec%every) == 0 .or. step == rec%nstep) then
@@ -407,22 +401,15 @@ contains
       type(warning_check_t), intent(in) :: check         !< the warning's line of the table
       type(solver_t), intent(in) :: solver               !< the solver (its mixing_note)
       character(len=:), allocatable :: text              !< the text
+      integer :: k, i
       text = trim(check%text)
-      if (index(text, '{1}') > 0) text = replaced(text, '{1}', real_short(check%figures(1)))
-      if (index(text, '{2}') > 0) text = replaced(text, '{2}', real_short(check%figures(2)))
-      if (index(text, '{note}') > 0) text = replaced(text, '{note}', solver%mixing_note)
+      do k = 1, 2                                        ! each key's first place
+         i = index(text, '{' // int_str(k) // '}')
+         if (i > 0) text = text(:i - 1) // real_short(check%figures(k)) // text(i + 3:)
+      end do
+      i = index(text, '{note}')
+      if (i > 0) text = text(:i - 1) // solver%mixing_note // text(i + 6:)
    end function warning_text
-
-   !> text with its first key replaced by value.
-   pure function replaced(text, key, value) result(out)
-      character(len=*), intent(in) :: text               !< the text, holding key
-      character(len=*), intent(in) :: key                !< what to replace
-      character(len=*), intent(in) :: value              !< what replaces it
-      character(len=:), allocatable :: out               !< the text with value for key
-      integer :: i
-      i = index(text, key)
-      out = text(:i - 1) // value // text(i + len(key):)
-   end function replaced
 
    !> A warning on standard error, once per kind; with stop_on_warning the run stops.
    subroutine warn(rec, fig, kind, message, stat, errmsg)
