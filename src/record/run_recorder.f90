@@ -41,8 +41,7 @@ module run_recorder
                          warn_substeps = 9, nwarn = 9
    !> Energy the integration may create (lose) before it is warned, a fraction
    !> of E0: the time step's error (docs/STABILITY.md, "The energy bound").
-   real(dp), parameter :: energy_created_bound = 1.0e-3_dp
-   real(dp), parameter :: energy_lost_bound = 1.0e-2_dp
+   real(dp), parameter :: energy_created_bound = 1.0e-3_dp, energy_lost_bound = 1.0e-2_dp
 
    !> What a run has recorded so far (saved for a restart by src/record/restart_point.f90).
    type :: record_t
@@ -95,14 +94,12 @@ module run_recorder
       real(dp) :: w_rigid = 0          !< free edges: the rigid-body part of the deflection under the impactor (m)
    end type step_figures_t
 
-   !> A line of the warnings' table (step_warnings); {1}, {2} in its text: its
-   !> figures, {note}: the iteration's report.
-   integer, parameter :: warning_text_len = 256
+   !> A line of the warnings' table (step_warnings; the keys of its text: warning_text).
    type :: warning_check_t
       integer :: kind                                  !< the kind (warn_*), warned once per run
       logical :: due                                   !< its test holds at this step
       real(dp) :: figures(2)                           !< the numbers of its text (unused: 0)
-      character(len=warning_text_len) :: text          !< its text
+      character(len=256) :: text                       !< its text
    end type warning_check_t
 
 contains
