@@ -209,7 +209,7 @@ contains
             // int_str(rec%nstep) // ', before the restart point''s step ' // int_str(step)
       else if (h5 .neqv. deck%hdf5) then
          errmsg = path // ': its run had &output hdf5 = ' // trim(merge('.true. ', '.false.', h5))
-      else        ! the response columns computed again in their order (the same values), not counted
+      else        ! the response columns again, in their order (the same values), not counted
          counted = solver%response_solves
          all%n = size(columns)
          all%eq = columns

@@ -87,7 +87,7 @@ module run_recorder
 
    !> What record_step knows of the step it records, for its parts.
    type :: step_figures_t
-      integer :: step = 0, ic = 0, solves = 0   !< the step, its contact iterations, plate solutions (eq. 19)
+      integer :: step = 0, ic = 0, solves = 0 !< the step, its contact iterations, eq. (19) solutions
       real(dp) :: t = 0                !< its time (s)
       real(dp) :: w_plate = 0          !< plate deflection under the impactor, pressure-weighted mean (m)
       real(dp) :: strain_y = 0         !< in-plane y strain on the back face at the gauge (-)
@@ -188,8 +188,8 @@ contains
       rec%restart_due = .false.
       associate (plate => st%plate, imp => st%imp)
       fig = step_figures_t(step=step, t=real(step, dp)*rec%dt, ic=st%cit%iterations, &
-                           solves=solver%solves - rec%solves_before, w_plate=pattern_mean(st%cit%pattern, plate%d), &
-                           strain_y=back_face_strain(model, plate%d))
+         solves=solver%solves - rec%solves_before, w_plate=pattern_mean(st%cit%pattern, plate%d), &
+         strain_y=back_face_strain(model, plate%d))
       rec%steps = step
       rec%solves_before = solver%solves
       call add_contact_work(rec, st)
@@ -289,14 +289,14 @@ contains
       row(col_time) = fig%t;  row(col_force) = imp%f;  row(col_alpha) = cit%alpha
       row(col_w_plate) = fig%w_plate;  row(col_w_impactor) = imp%w;  row(col_v_impactor) = imp%v
       row(col_strain_y) = fig%strain_y
-      ! -- the energies (J) and the balance, E0 less them all: its largest, energy created (-) and lost (+)
+      ! -- energies (J), the balance E0 less them all: its largest, energy created (-) and lost (+)
       row(col_ke_impactor) = 0.5_dp*imp%mass*imp%v**2
       row(col_ke_plate) = plate_kinetic_energy(model, plate%v)
       row(col_strain_energy) = plate_strain_energy(model, plate%d) + rec%u_damage
       row(col_contact_work) = rec%contact_work
       row(col_contact_energy) = rec%contact_energy;  row(col_damage_dissipated) = rec%dissipated
-      row(col_energy_error) = rec%e0 - (row(col_ke_impactor) + row(col_ke_plate) + row(col_strain_energy) &
-                                        + rec%contact_energy + rec%dissipated)
+      row(col_energy_error) = rec%e0 - (row(col_ke_impactor) + row(col_ke_plate) &
+                                        + row(col_strain_energy) + rec%contact_energy + rec%dissipated)
       rec%max_energy_error = nan_max(rec%max_energy_error, abs(row(col_energy_error)))
       rec%energy_created = nan_max(rec%energy_created, -row(col_energy_error))
       rec%energy_lost = nan_max(rec%energy_lost, row(col_energy_error))
@@ -305,10 +305,8 @@ contains
       row(col_contact_iter) = fig%ic
       row(col_solves) = fig%solves
       call damage_step(rec%damage, model, fig%t, plate%d)
-      if (rec%damage%active) then
-         row(col_failure_index) = rec%damage%step_fi
-         row(col_failure_mode) = rec%damage%step_mode
-      end if
+      if (rec%damage%active) row(col_failure_index:col_failure_mode) = &
+         [rec%damage%step_fi, real(rec%damage%step_mode, dp)]
       call write_row(rec, row, stat, errmsg)
       if (stat /= 0) return
       if (row(col_energy_error) < -rec%e0) call stop_here(rec, fig, 'diverged at step ' // int_str(fig%step), &
@@ -463,7 +461,7 @@ contains
       ! -- where the strain gauge of max_strain_y_back is (src/model/plate_model.f90, place_gauge)
       call summary_real(s, 'gauge_x_mm', 'gauge_x', 'm', model%gauge_xy(1), 1.0e3_dp)
       call summary_real(s, 'gauge_y_mm', 'gauge_y', 'm', model%gauge_xy(2), 1.0e3_dp)
-      ! -- dt and the mesh chosen from the scene (src/model/scene_settings.f90), when the deck gives none:
+      ! -- dt, mesh chosen from the scene (src/model/scene_settings.f90) when the deck gives none:
       ! the text after ' = ' of 'dt chosen = 2.0 us: ...'
       if (len_trim(deck%dt_chosen) > 0) call summary_text(s, 'dt_chosen', &
          trim(deck%dt_chosen(index(deck%dt_chosen, ' = ') + 3:)))
@@ -482,13 +480,13 @@ contains
       call results_finish(rec%h5, rec%stop_status, s, ios, text)
       call keep_failure(stat, errmsg, ios, text)
       ! -- the last words on standard output: the files, peak force, contacts, deflection, cpu time
-      call peak_between(rec%force_peak, t_peak, f_peak)          ! as in the summary (above update_maxima)
+      call peak_between(rec%force_peak, t_peak, f_peak)     ! as in the summary (above update_maxima)
       call peak_between(rec%deflection_peak, t_w, w_max)
       write (output_unit, '(a)') 'history: ' // rec%hist_path
       write (output_unit, '(a)') 'summary: ' // deck%prefix // '_summary.dat'
       if (deck%hdf5) write (output_unit, '(a)') 'results: ' // deck%prefix // '.h5'
-      write (output_unit, '(a,es12.5,a,f9.2,a,i0,a,es12.5,a,f8.3,a)') 'peak force ', f_peak, ' N at ', &
-         t_peak*1.0e6_dp, ' us; contacts ', rec%contacts, '; max deflection ', &
+      write (output_unit, '(a,es12.5,a,f9.2,a,i0,a,es12.5,a,f8.3,a)') 'peak force ', f_peak, &
+         ' N at ', t_peak*1.0e6_dp, ' us; contacts ', rec%contacts, '; max deflection ', &
          w_max*1.0e3_dp, ' mm; cpu ', cpu_s, ' s'
    end subroutine record_close
 

@@ -68,7 +68,8 @@ contains
       write (u, '(a/)') 'options may stand before or after the deck; one deck only'
       write (u, '(a,*(:," &",a))') 'deck groups:', (trim(deck_groups(g)), g = 1, size(deck_groups))
       write (u, '(a)') 'every variable, its unit, default and meaning: docs/DECK.md, "The deck" (or impact --deck-table);'
-      write (u, '(a/)') 'installed (make install): the documents in <prefix>/share/doc/impact (docs/DECK.md there)'
+      write (u, '(a/)') 'installed (make install): the documents in <prefix>/share/doc/impact ' &
+         // '(docs/DECK.md there)'
       write (u, '(a)') 'Report bugs to the impact developers, with the deck, the command line and the first line'
       write (u, '(a)') 'of impact --version (README.md, "Reporting bugs").'
    end subroutine usage
