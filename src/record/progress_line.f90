@@ -138,11 +138,10 @@ contains
       real(dp), intent(in) :: t              !< its time (s)
       real(dp), intent(in) :: elapsed        !< wall seconds since the first step
       character(len=:), allocatable :: text
-      character(len=16) :: now, end
-      write (now, '(f16.3)') t*1.0e3_dp
-      write (end, '(f16.3)') prog%t_end*1.0e3_dp
-      text = 'impact: step ' // int_str(step) // '/' // int_str(prog%nstep) // ' (t = ' // trim(adjustl(now)) &
-         // ' ms of ' // trim(adjustl(end)) // ' ms), ' &
+      character(len=16) :: ms(2)                         ! t and t_end (ms)
+      write (ms, '(f16.3)') t*1.0e3_dp, prog%t_end*1.0e3_dp
+      text = 'impact: step ' // int_str(step) // '/' // int_str(prog%nstep) // ' (t = ' &
+         // trim(adjustl(ms(1))) // ' ms of ' // trim(adjustl(ms(2))) // ' ms), ' &
          // int_str(int(100.0_dp*real(step, dp)/real(prog%nstep, dp))) // ' %'
       if (progress_left(prog, step, elapsed) >= 0.0_dp) &
          text = text // ', ' // duration_text(progress_left(prog, step, elapsed)) // ' left'

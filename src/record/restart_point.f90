@@ -89,7 +89,7 @@ contains
       type(record_t), intent(inout) :: rec          !< the run's record (its steps: the last step)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure, naming the file
-      character(len=:), allocatable :: path, changed
+      character(len=:), allocatable :: path, changed, dir
       character(len=msg_len) :: iomsg
       type(restart_stream_t) :: s
       type(results_point_t) :: pt
@@ -122,7 +122,9 @@ contains
       if (stat == 0) stat = ios
       if (stat == 0) call force_to_disk(path // '.tmp', stat)
       if (stat == 0) call rename_file(path // '.tmp', path, stat, iomsg)
-      if (stat == 0) call force_to_disk(directory_of(path), stat)
+      dir = parent_directory(path)
+      if (len(dir) == 0) dir = merge('/', '.', path(1:min(1, len(path))) == '/')
+      if (stat == 0) call force_to_disk(dir, stat)          ! the directory, for the rename
       if (stat /= 0) errmsg = path // ': cannot write the restart point'
    end subroutine restart_save
 
@@ -175,8 +177,9 @@ contains
       integer, allocatable :: columns(:)
       type(restart_stream_t) :: s
       type(results_point_t) :: pt
+      type(load_pattern_t) :: all
       logical :: h5
-      integer :: step
+      integer :: step, counted
       real(dp) :: cpu_s
       if (solver%damage%on) then
          stat = 1;  errmsg = '--restart: a restart point does not keep the ply damage (&damage): run the deck again'
@@ -198,23 +201,22 @@ contains
       call io_results(s, h5, pt)
       call io_tag(s, 'end')
       close (s%u)
+      stat = 1
       if (s%stat /= 0 .or. step /= rec%steps) then
-         stat = 1
          errmsg = path // ': not a restart point of this run (or damaged)'
-         return
-      end if
-      if (step > rec%nstep) then
-         stat = 1
+      else if (step > rec%nstep) then
          errmsg = deck%source // ': &analysis t_end = ' // real_str(deck%t_end) // ' s ends at step ' &
             // int_str(rec%nstep) // ', before the restart point''s step ' // int_str(step)
-         return
-      end if
-      if (h5 .neqv. deck%hdf5) then
-         stat = 1
+      else if (h5 .neqv. deck%hdf5) then
          errmsg = path // ': its run had &output hdf5 = ' // trim(merge('.true. ', '.false.', h5))
-         return
+      else        ! the response columns again, in their order (the same values), not counted
+         counted = solver%response_solves
+         all%n = size(columns)
+         all%eq = columns
+         allocate (all%c(all%n), source=1.0_dp)
+         call contact_response(solver, all, stat, errmsg)
+         solver%response_solves = counted
       end if
-      call response_columns(solver, columns, stat, errmsg)
       if (stat == 0) call reopen_history(deck, rec, stat, errmsg)
       if (stat == 0 .and. h5) call results_reopen(deck, model%msh, pt, rec%h5, stat, errmsg)
       if (stat == 0) call reserve_summary(deck, stat, errmsg)
@@ -326,22 +328,6 @@ contains
       if (.not. s%reading) columns = solver%resp_eq(:solver%nresp)
       call io_ints(s, columns)
    end subroutine io_solver
-   !> The solver's response columns on the equations `columns`, computed again
-   !> in their order (the same values); its count of back substitutions kept.
-   subroutine response_columns(solver, columns, stat, errmsg)
-      type(solver_t), intent(inout) :: solver       !< the plate solver, factored
-      integer, intent(in) :: columns(:)             !< the equations
-      integer, intent(out) :: stat                  !< 0 on success
-      character(len=*), intent(inout) :: errmsg     !< reason on failure
-      type(load_pattern_t) :: all
-      integer :: counted
-      counted = solver%response_solves
-      all%n = size(columns)
-      all%eq = columns
-      allocate (all%c(all%n), source=1.0_dp)
-      call contact_response(solver, all, stat, errmsg)
-      solver%response_solves = counted
-   end subroutine response_columns
 
    !> What the record carries from step to step: energies, previous step,
    !> running figures, warnings, the history's length, &strength's damage maps.
@@ -464,14 +450,6 @@ contains
       call open_probe(rec%hist_path, rec%hist_probe, stat)
       if (stat /= 0) errmsg = rec%hist_path // ': cannot open it to read its length'
    end subroutine reopen_history
-
-   !> The directory of `path` ('.' or '/' when it has none).
-   pure function directory_of(path) result(dir)
-      character(len=*), intent(in) :: path          !< a file
-      character(len=:), allocatable :: dir
-      dir = parent_directory(path)
-      if (len(dir) == 0) dir = merge('/', '.', path(1:min(1, len(path))) == '/')
-   end function directory_of
 
    !> fsync(2) of the file or directory `path`.
    subroutine force_to_disk(path, stat)

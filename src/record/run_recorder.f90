@@ -41,10 +41,9 @@ module run_recorder
                          warn_substeps = 9, nwarn = 9
    !> Energy the integration may create (lose) before it is warned, a fraction
    !> of E0: the time step's error (docs/STABILITY.md, "The energy bound").
-   real(dp), parameter :: energy_created_bound = 1.0e-3_dp
-   real(dp), parameter :: energy_lost_bound = 1.0e-2_dp
+   real(dp), parameter :: energy_created_bound = 1.0e-3_dp, energy_lost_bound = 1.0e-2_dp
 
-   !> What a run has recorded so far.
+   !> What a run has recorded so far (saved for a restart by src/record/restart_point.f90).
    type :: record_t
       logical :: stop = .false.                  !< the run must end after this step
       logical :: restart_due = .false.           !< the step ended with the files flushed: a restart point is due
@@ -63,8 +62,7 @@ module run_recorder
       real(dp) :: dt = 0, h = 0                  !< time step (s, Newmark's), plate thickness (m)
       real(dp) :: cpu_before = 0                 !< cpu time of the run before its restart (s)
       character(len=:), allocatable :: edges
-      ! -- energies (J)
-      real(dp) :: e0 = 0, contact_work = 0, contact_energy = 0
+      real(dp) :: e0 = 0, contact_work = 0, contact_energy = 0   !< energies (J)
       ! -- the previous step, for the work of the contact force
       type(impactor_t) :: imp_prev
       type(load_pattern_t) :: pattern_prev
@@ -79,36 +77,29 @@ module run_recorder
       type(peak_track_t) :: force_peak, deflection_peak, strain_peak
       ! the first contact's start and end, interpolated (s; -1: not yet), and the step's indentation (m)
       real(dp) :: first_contact_start = -1, first_contact_end = -1, alpha_prev = 0
-      ! energies (J), w/h (-)
-      real(dp) :: max_energy_error = 0, energy_created = 0, energy_lost = 0
-      real(dp) :: max_w_over_h = 0
-      real(dp) :: w_bend_max = 0, diverged_at = -1
+      real(dp) :: max_energy_error = 0, energy_created = 0, energy_lost = 0   !< energies (J)
+      real(dp) :: max_w_over_h = 0, w_bend_max = 0, diverged_at = -1       !< w/h (-), m, s
       ! compliances under the impactor over a step (m/N; c_plate -1: none), largest fixed-point slope (-)
       real(dp) :: c_plate = -1, c_impactor = 0, max_slope = 0
       logical :: warned(nwarn) = .false.
       type(progress_t) :: progress               !< the progress line on standard error (src/record/progress_line.f90)
-      ! (what a run carries from step to step is saved for a restart: src/record/restart_point.f90)
    end type record_t
 
    !> What record_step knows of the step it records, for its parts.
    type :: step_figures_t
-      integer :: step = 0              !< the step
+      integer :: step = 0, ic = 0, solves = 0 !< the step, its contact iterations, eq. (19) solutions
       real(dp) :: t = 0                !< its time (s)
-      integer :: ic = 0                !< its contact iterations
-      integer :: solves = 0            !< its plate solutions, eq. (19)
       real(dp) :: w_plate = 0          !< plate deflection under the impactor, pressure-weighted mean (m)
       real(dp) :: strain_y = 0         !< in-plane y strain on the back face at the gauge (-)
       real(dp) :: w_rigid = 0          !< free edges: the rigid-body part of the deflection under the impactor (m)
    end type step_figures_t
 
-   !> A line of the warnings' table (step_warnings); {1}, {2} in its text: its
-   !> figures, {note}: the iteration's report.
-   integer, parameter :: warning_text_len = 256
+   !> A line of the warnings' table (step_warnings; the keys of its text: warning_text).
    type :: warning_check_t
       integer :: kind                                  !< the kind (warn_*), warned once per run
       logical :: due                                   !< its test holds at this step
       real(dp) :: figures(2)                           !< the numbers of its text (unused: 0)
-      character(len=warning_text_len) :: text          !< its text
+      character(len=256) :: text                       !< its text
    end type warning_check_t
 
 contains
@@ -195,18 +186,15 @@ contains
       type(step_figures_t) :: fig
       stat = 0
       rec%restart_due = .false.
-      fig%step = step
-      fig%t = real(step, dp)*rec%dt
-      fig%ic = st%cit%iterations
-      rec%steps = step
-      fig%solves = solver%solves - rec%solves_before
-      rec%solves_before = solver%solves
       associate (plate => st%plate, imp => st%imp)
+      fig = step_figures_t(step=step, t=real(step, dp)*rec%dt, ic=st%cit%iterations, &
+         solves=solver%solves - rec%solves_before, w_plate=pattern_mean(st%cit%pattern, plate%d), &
+         strain_y=back_face_strain(model, plate%d))
+      rec%steps = step
+      rec%solves_before = solver%solves
       call add_contact_work(rec, st)
       rec%u_damage = solver%damage%u_lost
       rec%dissipated = solver%damage%dissipated
-      fig%w_plate = pattern_mean(st%cit%pattern, plate%d)
-      fig%strain_y = back_face_strain(model, plate%d)
       call update_maxima(rec, fig, model, st, stat, errmsg)
       if (stat /= 0) return
       if (mod(step, rec%every) == 0 .or. step == rec%nstep) then
@@ -254,13 +242,23 @@ contains
       type(step_state_t), intent(in) :: st               !< the step accepted (record_step)
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
-      real(dp) :: w_bend
+      real(dp) :: w_bend, crossing
       associate (plate => st%plate, imp => st%imp, hist => st%hist, cit => st%cit)
       ! (a NaN force is not a sample: the peak force keeps the finite ones)
       if (.not. ieee_is_nan(imp%f)) call peak_sample(rec%force_peak, fig%t, imp%f)
       call peak_sample(rec%deflection_peak, fig%t, abs(fig%w_plate))
       call peak_sample(rec%strain_peak, fig%t, abs(fig%strain_y))
-      call first_contact_bounds(rec, fig%t, imp%f, cit%alpha, hist%alpha_0)
+      ! the contacts; the first one starts and ends where alpha - alpha_0 crosses 0 (eq. 12, 13)
+      crossing = zero_crossing(fig%t - rec%dt, rec%alpha_prev - hist%alpha_0, fig%t, &
+                               cit%alpha - hist%alpha_0)
+      if (imp%f > 0.0_dp .and. .not. rec%in_contact) then
+         rec%in_contact = .true.
+         rec%contacts = rec%contacts + 1
+         if (rec%contacts == 1) rec%first_contact_start = crossing
+      else if (imp%f <= 0.0_dp .and. rec%in_contact) then
+         rec%in_contact = .false.
+         if (rec%contacts == 1) rec%first_contact_end = crossing
+      end if
       rec%alpha_prev = cit%alpha
       rec%contact_iterations = rec%contact_iterations + fig%ic
       rec%max_contact_iter = max(rec%max_contact_iter, fig%ic)
@@ -277,26 +275,6 @@ contains
       end associate
    end subroutine update_maxima
 
-   !> The contacts and the first one's start and end, where alpha - alpha_0
-   !> crosses 0 between the step before (rec%alpha_prev) and this one.
-   subroutine first_contact_bounds(rec, t, f, alpha, alpha_0)
-      type(record_t), intent(inout) :: rec               !< the record
-      real(dp), intent(in) :: t                          !< the step's time (s)
-      real(dp), intent(in) :: f                          !< its contact force (N)
-      real(dp), intent(in) :: alpha                      !< its indentation (m), eq. (13)
-      real(dp), intent(in) :: alpha_0                    !< the permanent indentation of the contact's law (m), eq. (12)
-      real(dp) :: crossing
-      crossing = zero_crossing(t - rec%dt, rec%alpha_prev - alpha_0, t, alpha - alpha_0)
-      if (f > 0.0_dp .and. .not. rec%in_contact) then
-         rec%in_contact = .true.
-         rec%contacts = rec%contacts + 1
-         if (rec%contacts == 1) rec%first_contact_start = crossing
-      else if (f <= 0.0_dp .and. rec%in_contact) then
-         rec%in_contact = .false.
-         if (rec%contacts == 1) rec%first_contact_end = crossing
-      end if
-   end subroutine first_contact_bounds
-
    !> The history row of the step (every &output every steps, and the last);
    !> a balance below -E0 stops the run (diverged).
    subroutine history_row(rec, fig, model, st, stat, errmsg)
@@ -311,16 +289,24 @@ contains
       row(col_time) = fig%t;  row(col_force) = imp%f;  row(col_alpha) = cit%alpha
       row(col_w_plate) = fig%w_plate;  row(col_w_impactor) = imp%w;  row(col_v_impactor) = imp%v
       row(col_strain_y) = fig%strain_y
-      call row_energies(rec, model, st, row)
+      ! -- energies (J), the balance E0 less them all: its largest, energy created (-) and lost (+)
+      row(col_ke_impactor) = 0.5_dp*imp%mass*imp%v**2
+      row(col_ke_plate) = plate_kinetic_energy(model, plate%v)
+      row(col_strain_energy) = plate_strain_energy(model, plate%d) + rec%u_damage
+      row(col_contact_work) = rec%contact_work
+      row(col_contact_energy) = rec%contact_energy;  row(col_damage_dissipated) = rec%dissipated
+      row(col_energy_error) = rec%e0 - (row(col_ke_impactor) + row(col_ke_plate) &
+                                        + row(col_strain_energy) + rec%contact_energy + rec%dissipated)
+      rec%max_energy_error = nan_max(rec%max_energy_error, abs(row(col_energy_error)))
+      rec%energy_created = nan_max(rec%energy_created, -row(col_energy_error))
+      rec%energy_lost = nan_max(rec%energy_lost, row(col_energy_error))
       row(col_branch) = contact_branch(hist, cit%alpha)
       if (imp%f <= 0.0_dp) row(col_branch) = branch_none
       row(col_contact_iter) = fig%ic
       row(col_solves) = fig%solves
       call damage_step(rec%damage, model, fig%t, plate%d)
-      if (rec%damage%active) then
-         row(col_failure_index) = rec%damage%step_fi
-         row(col_failure_mode) = rec%damage%step_mode
-      end if
+      if (rec%damage%active) row(col_failure_index:col_failure_mode) = &
+         [rec%damage%step_fi, real(rec%damage%step_mode, dp)]
       call write_row(rec, row, stat, errmsg)
       if (stat /= 0) return
       if (row(col_energy_error) < -rec%e0) call stop_here(rec, fig, 'diverged at step ' // int_str(fig%step), &
@@ -328,25 +314,6 @@ contains
          // real_short(row(col_energy_error)) // ' J, E0 = ' // real_short(rec%e0) // ' J): it has diverged')
       end associate
    end subroutine history_row
-
-   !> The energies of a history row (J) and the balance, E0 less them all: its
-   !> largest, energy created (-) and lost (+) for the summary.
-   subroutine row_energies(rec, model, st, row)
-      type(record_t), intent(inout) :: rec               !< the record
-      type(model_t), intent(in) :: model                 !< the model
-      type(step_state_t), intent(in) :: st               !< the plate and the impactor at t + dt
-      real(dp), intent(inout) :: row(nhist_damage)     !< the history row: its energy columns set
-      row(col_ke_impactor) = 0.5_dp*st%imp%mass*st%imp%v**2
-      row(col_ke_plate) = plate_kinetic_energy(model, st%plate%v)
-      row(col_strain_energy) = plate_strain_energy(model, st%plate%d) + rec%u_damage
-      row(col_contact_work) = rec%contact_work
-      row(col_contact_energy) = rec%contact_energy;  row(col_damage_dissipated) = rec%dissipated
-      row(col_energy_error) = rec%e0 - (row(col_ke_impactor) + row(col_ke_plate) + row(col_strain_energy) &
-                                        + rec%contact_energy + rec%dissipated)
-      rec%max_energy_error = nan_max(rec%max_energy_error, abs(row(col_energy_error)))
-      rec%energy_created = nan_max(rec%energy_created, -row(col_energy_error))
-      rec%energy_lost = nan_max(rec%energy_lost, row(col_energy_error))
-   end subroutine row_energies
 
    !> The warnings of the step, from the table below: every step a test holds
    !> is counted (count_step), each kind warned once.
@@ -429,22 +396,15 @@ contains
       type(warning_check_t), intent(in) :: check         !< the warning's line of the table
       type(solver_t), intent(in) :: solver               !< the solver (its mixing_note)
       character(len=:), allocatable :: text              !< the text
+      integer :: k, i
       text = trim(check%text)
-      if (index(text, '{1}') > 0) text = replaced(text, '{1}', real_short(check%figures(1)))
-      if (index(text, '{2}') > 0) text = replaced(text, '{2}', real_short(check%figures(2)))
-      if (index(text, '{note}') > 0) text = replaced(text, '{note}', solver%mixing_note)
+      do k = 1, 2                                        ! each key's first place
+         i = index(text, '{' // int_str(k) // '}')
+         if (i > 0) text = text(:i - 1) // real_short(check%figures(k)) // text(i + 3:)
+      end do
+      i = index(text, '{note}')
+      if (i > 0) text = text(:i - 1) // solver%mixing_note // text(i + 6:)
    end function warning_text
-
-   !> text with its first key replaced by value.
-   pure function replaced(text, key, value) result(out)
-      character(len=*), intent(in) :: text               !< the text, holding key
-      character(len=*), intent(in) :: key                !< what to replace
-      character(len=*), intent(in) :: value              !< what replaces it
-      character(len=:), allocatable :: out               !< the text with value for key
-      integer :: i
-      i = index(text, key)
-      out = text(:i - 1) // value // text(i + len(key):)
-   end function replaced
 
    !> A warning on standard error, once per kind; with stop_on_warning the run stops.
    subroutine warn(rec, fig, kind, message, stat, errmsg)
@@ -494,15 +454,19 @@ contains
       type(summary_item_t), allocatable :: s(:)
       character(len=msg_len) :: text, dtext
       integer :: ios, dstat
+      real(dp) :: f_peak, t_peak, w_max, t_w
       call progress_end(rec%progress)
       call closing_warnings(rec, model)
       call run_summary(rec, solver, st, s)
       ! -- where the strain gauge of max_strain_y_back is (src/model/plate_model.f90, place_gauge)
       call summary_real(s, 'gauge_x_mm', 'gauge_x', 'm', model%gauge_xy(1), 1.0e3_dp)
       call summary_real(s, 'gauge_y_mm', 'gauge_y', 'm', model%gauge_xy(2), 1.0e3_dp)
-      ! -- dt and the mesh chosen from the scene (src/model/scene_settings.f90), when the deck gives none
-      if (len_trim(deck%dt_chosen) > 0) call summary_text(s, 'dt_chosen', after_equals(deck%dt_chosen))
-      if (len_trim(deck%mesh_chosen) > 0) call summary_text(s, 'mesh_chosen', after_equals(deck%mesh_chosen))
+      ! -- dt, mesh chosen from the scene (src/model/scene_settings.f90) when the deck gives none:
+      ! the text after ' = ' of 'dt chosen = 2.0 us: ...'
+      if (len_trim(deck%dt_chosen) > 0) call summary_text(s, 'dt_chosen', &
+         trim(deck%dt_chosen(index(deck%dt_chosen, ' = ') + 3:)))
+      if (len_trim(deck%mesh_chosen) > 0) call summary_text(s, 'mesh_chosen', &
+         trim(deck%mesh_chosen(index(deck%mesh_chosen, ' = ') + 3:)))
       call results_closing(rec%h5)                  ! <prefix>.h5 open for its last words
       call damage_close(rec%damage, model, solver%damage, s, rec%h5, dstat, dtext)
       call summary_integer(s, 'warnings', rec%warnings)
@@ -515,15 +479,16 @@ contains
       call keep_failure(stat, errmsg, dstat, dtext)
       call results_finish(rec%h5, rec%stop_status, s, ios, text)
       call keep_failure(stat, errmsg, ios, text)
-      call last_words(rec, deck, cpu_s, output_unit)
+      ! -- the last words on standard output: the files, peak force, contacts, deflection, cpu time
+      call peak_between(rec%force_peak, t_peak, f_peak)     ! as in the summary (above update_maxima)
+      call peak_between(rec%deflection_peak, t_w, w_max)
+      write (output_unit, '(a)') 'history: ' // rec%hist_path
+      write (output_unit, '(a)') 'summary: ' // deck%prefix // '_summary.dat'
+      if (deck%hdf5) write (output_unit, '(a)') 'results: ' // deck%prefix // '.h5'
+      write (output_unit, '(a,es12.5,a,f9.2,a,i0,a,es12.5,a,f8.3,a)') 'peak force ', f_peak, &
+         ' N at ', t_peak*1.0e6_dp, ' us; contacts ', rec%contacts, '; max deflection ', &
+         w_max*1.0e3_dp, ' mm; cpu ', cpu_s, ' s'
    end subroutine record_close
-
-   !> The text after the first ' = ' of 'dt chosen = 2.0 us: ...' (the summary's value).
-   pure function after_equals(text) result(value)
-      character(len=*), intent(in) :: text          !< 'name = value'
-      character(len=:), allocatable :: value
-      value = trim(text(index(text, ' = ') + 3:))
-   end function after_equals
 
    !> The end's warnings (a linear run that needed the nonlinear theory) and their count.
    subroutine closing_warnings(rec, model)
@@ -599,23 +564,6 @@ contains
       end if
    end subroutine run_summary
 
-   !> The run's last words on standard output: its files, peak force, contacts, deflection, cpu time.
-   subroutine last_words(rec, deck, cpu_s, unit)
-      type(record_t), intent(in) :: rec             !< the record
-      type(deck_t), intent(in) :: deck              !< the effective deck
-      real(dp), intent(in) :: cpu_s                 !< cpu time of the run (s)
-      integer, intent(in) :: unit                   !< where they go (standard output)
-      real(dp) :: f_peak, t_peak, w_max, t_w
-      call peak_between(rec%force_peak, t_peak, f_peak)          ! as in the summary (above update_maxima)
-      call peak_between(rec%deflection_peak, t_w, w_max)
-      write (unit, '(a)') 'history: ' // rec%hist_path
-      write (unit, '(a)') 'summary: ' // deck%prefix // '_summary.dat'
-      if (deck%hdf5) write (unit, '(a)') 'results: ' // deck%prefix // '.h5'
-      write (unit, '(a,es12.5,a,f9.2,a,i0,a,es12.5,a,f8.3,a)') 'peak force ', f_peak, ' N at ', &
-         t_peak*1.0e6_dp, ' us; contacts ', rec%contacts, '; max deflection ', &
-         w_max*1.0e3_dp, ' mm; cpu ', cpu_s, ' s'
-   end subroutine last_words
-
    ! ============================================================== helpers
 
    !> A history row to the file and to <prefix>.h5.
@@ -642,15 +590,8 @@ contains
 
    !> max(a, b) that keeps a NaN (Fortran's max may drop it).
    pure real(dp) function nan_max(a, b)
-      real(dp), intent(in) :: a                          !< the largest so far
-      real(dp), intent(in) :: b                          !< the new value
-      if (ieee_is_nan(a)) then
-         nan_max = a
-      else if (ieee_is_nan(b) .or. b > a) then
-         nan_max = b
-      else
-         nan_max = a
-      end if
+      real(dp), intent(in) :: a, b                       !< the largest so far, the new value
+      nan_max = merge(a, b, ieee_is_nan(a) .or. .not. (ieee_is_nan(b) .or. b > a))
    end function nan_max
 
 end module run_recorder

@@ -50,15 +50,8 @@ contains
    subroutine usage(u)
       integer, intent(in) :: u              !< open formatted unit
       integer :: g
-      character(len=:), allocatable :: groups
-      groups = ''
-      do g = 1, size(deck_groups)
-         groups = groups // ' &' // trim(deck_groups(g))
-      end do
-      write (u, '(a)') usage_line // '      (no deck: the deck is read from standard input)'
-      write (u, '(a)') ''
-      write (u, '(a)') 'Nonlinear low-velocity impact of a composite laminate (Choi, Hong & Lee 1991).'
-      write (u, '(a)') ''
+      write (u, '(a/)') usage_line // '      (no deck: the deck is read from standard input)'
+      write (u, '(a/)') 'Nonlinear low-velocity impact of a composite laminate (Choi, Hong & Lee 1991).'
       write (u, '(a)') 'options:'
       write (u, '(a)') '  --check              read, echo, build and factor; stop before the time loop (a data check)'
       write (u, '(a)') '  --overwrite          replace the results of an earlier run with the same prefix'
@@ -72,12 +65,11 @@ contains
       write (u, '(a)') '  --deck-table         the deck''s variables as the Markdown table of docs/DECK.md'
       write (u, '(a)') '  --version            the version this program was built from'
       write (u, '(a)') '  --help               this text'
-      write (u, '(a)') 'options may stand before or after the deck; one deck only'
-      write (u, '(a)') ''
-      write (u, '(a)') 'deck groups:' // groups
+      write (u, '(a/)') 'options may stand before or after the deck; one deck only'
+      write (u, '(a,*(:," &",a))') 'deck groups:', (trim(deck_groups(g)), g = 1, size(deck_groups))
       write (u, '(a)') 'every variable, its unit, default and meaning: docs/DECK.md, "The deck" (or impact --deck-table);'
-      write (u, '(a)') 'installed (make install): the documents in <prefix>/share/doc/impact (docs/DECK.md there)'
-      write (u, '(a)') ''
+      write (u, '(a/)') 'installed (make install): the documents in <prefix>/share/doc/impact ' &
+         // '(docs/DECK.md there)'
       write (u, '(a)') 'Report bugs to the impact developers, with the deck, the command line and the first line'
       write (u, '(a)') 'of impact --version (README.md, "Reporting bugs").'
    end subroutine usage
@@ -110,21 +102,14 @@ contains
       integer, intent(in) :: u                   !< open formatted unit
       select case (action)
       case ('help');       call usage(u)
-      case ('version');    call version_text(u, code_version)
+      case ('version')     ! the version in one line (scripts read it), the copyright, the licence
+         write (u, '(a)') code_version, 'Copyright (c) 2026 the impact developers.', &
+            'License MIT: <https://opensource.org/licenses/MIT>, the file LICENSE.', &
+            'This is free software: you are free to change and redistribute it.', &
+            'There is NO WARRANTY, to the extent permitted by law.'
       case ('schema');     call write_schema(u)
       case ('deck-table'); call write_deck_table(u)
       end select
    end subroutine write_answer
-
-   !> impact --version: the version (one line, as scripts read it), the copyright, the licence.
-   subroutine version_text(u, version)
-      integer, intent(in) :: u                   !< open formatted unit
-      character(len=*), intent(in) :: version    !< 'impact 1.2.0 (git <commit>)' (src/system/build_info.f90)
-      write (u, '(a)') version
-      write (u, '(a)') 'Copyright (c) 2026 the impact developers.'
-      write (u, '(a)') 'License MIT: <https://opensource.org/licenses/MIT>, the file LICENSE.'
-      write (u, '(a)') 'This is free software: you are free to change and redistribute it.'
-      write (u, '(a)') 'There is NO WARRANTY, to the extent permitted by law.'
-   end subroutine version_text
 
 end module run_report

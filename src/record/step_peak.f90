@@ -58,12 +58,8 @@ contains
       real(dp), intent(in) :: y1                !< its value
       real(dp), intent(in) :: t2                !< the second sample's time (> t1)
       real(dp), intent(in) :: y2                !< its value
-      if (y1 == y2) then
-         tz = t2
-      else
-         tz = t1 + (t2 - t1)*y1/(y1 - y2)
-         tz = min(max(tz, t1), t2)
-      end if
+      tz = t2
+      if (y1 /= y2) tz = min(max(t1 + (t2 - t1)*y1/(y1 - y2), t1), t2)
    end function zero_crossing
 
    !> Takes the sample (t, v): the largest when it exceeds the largest so far
