@@ -10,12 +10,11 @@ module c_library
    public :: statvfs_t, rlimit_t, statx_t, c_statx
    public :: c_fopen, c_fclose, c_fileno, c_rename, c_lseek, c_truncate, c_sysconf, c_mkdir, c_flock, &
              c_statvfs, c_getrlimit, c_signal, c_exit, c_isatty
-   public :: c_open, c_close, c_fsync, c_unlink, c_write
    public :: spawn_actions_t, cpu_set_t, c_posix_spawn, c_spawn_actions_init, &
              c_spawn_actions_destroy, c_spawn_actions_addopen, c_spawn_actions_adddup2, c_waitpid, &
              c_readlink, c_sched_getaffinity, o_write_no_follow
    public :: spawn_attr_t, c_spawnattr_init, c_spawnattr_destroy, c_spawnattr_setflags, c_spawnattr_setpgroup, &
-             c_kill, c_getpid, c_getppid, c_prctl
+             c_kill, c_getpid, c_getppid, c_prctl, c_open, c_close, c_fsync, c_unlink, c_write
 
    !> struct statvfs (<sys/statvfs.h>): eleven unsigned longs (read as
    !> signed: sizes below 2^63) and six ints.
@@ -67,10 +66,6 @@ module c_library
 
    !> The shapes several calls share, each named by its C arguments.
    abstract interface
-      integer(c_int) function stream_call(stream) bind(c)
-         import :: c_ptr, c_int
-         type(c_ptr), value :: stream
-      end function stream_call
       integer(c_int) function fd_call(fd) bind(c)
          import :: c_int
          integer(c_int), value :: fd
@@ -96,10 +91,7 @@ module c_library
          type(spawn_attr_t), intent(inout) :: attr
       end function attr_call
    end interface
-   ! <stdio.h>; <unistd.h>, <fcntl.h> (open: no O_CREAT, no third argument), <sys/stat.h>,
-   ! <sys/file.h>, <signal.h>
-   procedure(stream_call), bind(c, name='fclose') :: c_fclose
-   procedure(stream_call), bind(c, name='fileno') :: c_fileno
+   ! <unistd.h>, <fcntl.h> (open: no O_CREAT, two arguments), <sys/stat.h>, <sys/file.h>, <signal.h>
    procedure(fd_call), bind(c, name='close') :: c_close
    procedure(fd_call), bind(c, name='fsync') :: c_fsync
    procedure(fd_call), bind(c, name='isatty') :: c_isatty
@@ -121,6 +113,14 @@ module c_library
          import :: c_char, c_ptr
          character(kind=c_char), intent(in) :: path(*), mode(*)
       end function c_fopen
+      integer(c_int) function c_fclose(stream) bind(c, name='fclose')
+         import :: c_ptr, c_int
+         type(c_ptr), value :: stream
+      end function c_fclose
+      integer(c_int) function c_fileno(stream) bind(c, name='fileno')
+         import :: c_ptr, c_int
+         type(c_ptr), value :: stream
+      end function c_fileno
       integer(c_int) function c_rename(old, new) bind(c, name='rename')
          import :: c_int, c_char
          character(kind=c_char), intent(in) :: old(*), new(*)
