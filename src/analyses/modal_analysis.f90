@@ -1,10 +1,9 @@
 !> Modal analysis (`&analysis kind = 'modes'`): the lowest `&modes count`
 !> natural frequencies and mode shapes of the plate,
 !>     K_L phi = omega^2 M phi,     phi^T M phi = 1,
-!> with K_L and M the banded matrices of the impact analysis (eq. 15; the
-!> consistent mass with rotary inertia, Appendix B): small vibrations about
-!> the flat plate in either theory. Solver (LAPACK dsbgvx), free edges and
-!> the split of each mode's kinetic energy: above modal_solve.
+!> with K_L and M the banded matrices of the impact analysis (eq. 15; the consistent mass with
+!> rotary inertia, Appendix B): small vibrations about the flat plate in either theory. Solver
+!> (LAPACK dsbgvx), free edges and the split of each mode's kinetic energy: above modal_solve.
 !> More: docs/ANALYSES.md.
 module modal_analysis
    use kinds, only: dp, pi, msg_len

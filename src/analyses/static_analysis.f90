@@ -1,13 +1,10 @@
-!> Static analysis (`&analysis kind = 'static'`): the plate under the load
-!> of `&load`, linear or with von Karman large deflection.
-!> Linear theory: K_L D = F, one Cholesky factorisation of K_L.
-!> Nonlinear theory: Newton's method in `&load increments` equal load
-!> increments (why not Akay's iteration: above static_solve). In increment
-!> i (load factor lambda = i/n):
+!> Static analysis (`&analysis kind = 'static'`): the plate under the load of `&load`, linear
+!> or with von Karman large deflection. Linear theory: K_L D = F, one Cholesky factorisation of
+!> K_L. Nonlinear theory: Newton's method in `&load increments` equal load increments (why not
+!> Akay's iteration: above static_solve). In increment i (load factor lambda = i/n):
 !>     K_T(D^k) dD = lambda F - f_int(D^k),   D^{k+1} = D^k + dD,
-!> f_int(D) = K_L D + K_N(D) D (eq. 15) and K_T its exact derivative, until
-!> the eq. (18) measure sum dD^2 <= C_r2 sum (D^{k+1} - D_{i-1})^2.
-!> More: docs/ANALYSES.md.
+!> f_int(D) = K_L D + K_N(D) D (eq. 15) and K_T its exact derivative, until the eq. (18)
+!> measure sum dD^2 <= C_r2 sum (D^{k+1} - D_{i-1})^2. More: docs/ANALYSES.md.
 module static_analysis
    use number_text, only: int_str, real_str
    use kinds, only: dp
@@ -47,8 +44,9 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(global_matrix_t) :: kl, kt
-      real(dp) :: d(size(f)), d_start(size(f)), r(size(f)), fint(size(f)), d_unit(size(f)), lam, num, den
-      integer :: inc, it, bad_eq
+      real(dp) :: d(size(f)), d_start(size(f)), r(size(f)), fint(size(f)), lam, num, den
+      real(dp) :: ke(nfe, nfe), de(nfe), d_unit(size(f))
+      integer :: inc, it, bad_eq, e
       allocate (res%load_factor(0:increments), res%w_centre(0:increments), res%residual(0:increments), source=0.0_dp)
       allocate (res%iterations(0:increments), source=0)
       d = 0.0_dp
@@ -78,7 +76,16 @@ contains
             newton_iterations: do it = 1, model%max_nonlinear_iter
                call internal_force(model, d, fint)
                r = lam*f - fint
-               call tangent_stiffness(model, d, kt, stat, errmsg)
+               call global_zero(kt)                    ! K_T(D), assembled and factored
+               elements: do e = 1, model%msh%nelem
+                  call gather_element(model%msh%elem_eq(:, e), d, de)
+                  call element_tangent_stiffness(model%lmt, model%geo(e), de, ke)
+                  call global_assemble(kt, ke, model%msh%elem_eq(:, e))
+               end do elements
+               call global_factor(kt, stat, errmsg, bad_eq)
+               if (stat /= 0 .and. bad_eq > 0) errmsg = 'the tangent stiffness is not ' &
+                  // 'positive definite (buckling, or a mechanism: check &boundary): pivot of ' &
+                  // trim(describe_equation(model%msh, bad_eq))
                if (stat /= 0) then
                   errmsg = 'static: increment ' // int_str(inc) // ' (load factor ' // real_str(lam) &
                      // '): ' // trim(errmsg)
@@ -93,9 +100,10 @@ contains
             end do newton_iterations
             if (it > model%max_nonlinear_iter) then       ! not converged
                stat = 1
-               write (errmsg, '(a,i0,a,f8.5,a,i0,a)') 'static: Newton did not converge in increment ', inc, &
-                  ' (load factor ', lam, ') in ', model%max_nonlinear_iter, &
-                  ' iterations (&analysis max_nonlinear_iter): give more &load increments'
+               write (errmsg, '(a,i0,a,f8.5,a,i0,a)') &
+                  'static: Newton did not converge in increment ', inc, ' (load factor ', lam, ') in ', &
+                  model%max_nonlinear_iter, ' iterations (&analysis max_nonlinear_iter): ' // &
+                  'give more &load increments'
                return
             end if
          end if
@@ -119,26 +127,5 @@ contains
       call nonlinear_force(model, d, fn)
       fint = fint + fn
    end subroutine internal_force
-
-   !> Assembles and factors the tangent stiffness K_T(D) into kt (structure from global_init).
-   !> A failed pivot names the equation: the plate has buckled or is a mechanism.
-   subroutine tangent_stiffness(model, d, kt, stat, errmsg)
-      type(model_t), intent(in) :: model           !< model
-      real(dp), intent(in) :: d(:)                 !< displacements (m, rad)
-      type(global_matrix_t), intent(inout) :: kt   !< tangent, assembled and factored
-      integer, intent(out) :: stat                 !< 0 on success
-      character(len=*), intent(inout) :: errmsg    !< reason on failure
-      real(dp) :: ke(nfe, nfe), de(nfe)
-      integer :: e, bad_eq
-      call global_zero(kt)
-      elements: do e = 1, model%msh%nelem
-         call gather_element(model%msh%elem_eq(:, e), d, de)
-         call element_tangent_stiffness(model%lmt, model%geo(e), de, ke)
-         call global_assemble(kt, ke, model%msh%elem_eq(:, e))
-      end do elements
-      call global_factor(kt, stat, errmsg, bad_eq)
-      if (stat /= 0 .and. bad_eq > 0) errmsg = 'the tangent stiffness is not positive definite ' // &
-         '(buckling, or a mechanism: check &boundary): pivot of ' // trim(describe_equation(model%msh, bad_eq))
-   end subroutine tangent_stiffness
 
 end module static_analysis

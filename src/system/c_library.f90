@@ -10,11 +10,12 @@ module c_library
    public :: statvfs_t, rlimit_t, statx_t, c_statx
    public :: c_fopen, c_fclose, c_fileno, c_rename, c_lseek, c_truncate, c_sysconf, c_mkdir, c_flock, &
              c_statvfs, c_getrlimit, c_signal, c_exit, c_isatty
+   public :: c_open, c_close, c_fsync, c_unlink, c_write
    public :: spawn_actions_t, cpu_set_t, c_posix_spawn, c_spawn_actions_init, &
              c_spawn_actions_destroy, c_spawn_actions_addopen, c_spawn_actions_adddup2, c_waitpid, &
              c_readlink, c_sched_getaffinity, o_write_no_follow
    public :: spawn_attr_t, c_spawnattr_init, c_spawnattr_destroy, c_spawnattr_setflags, c_spawnattr_setpgroup, &
-             c_kill, c_getpid, c_getppid, c_prctl, c_open, c_close, c_fsync, c_unlink, c_write
+             c_kill, c_getpid, c_getppid, c_prctl
 
    !> struct statvfs (<sys/statvfs.h>): eleven unsigned longs (read as
    !> signed: sizes below 2^63) and six ints.
@@ -64,49 +65,6 @@ module c_library
                                 o_nofollow = int(o'400000', c_int)
    integer(c_int), parameter :: o_write_no_follow = ior(o_wronly, ior(o_creat, ior(o_trunc, o_nofollow)))
 
-   !> The shapes several calls share, each named by its C arguments.
-   abstract interface
-      integer(c_int) function fd_call(fd) bind(c)
-         import :: c_int
-         integer(c_int), value :: fd
-      end function fd_call
-      integer(c_int) function two_int_call(a, b) bind(c)    ! flock(fd, operation), kill(pid, sig)
-         import :: c_int
-         integer(c_int), value :: a, b
-      end function two_int_call
-      integer(c_int) function path_int_call(path, i) bind(c)   ! mkdir(path, mode), open(path, flags)
-         import :: c_int, c_char
-         character(kind=c_char), intent(in) :: path(*)
-         integer(c_int), value :: i
-      end function path_int_call
-      integer(c_int) function no_arg_call() bind(c)
-         import :: c_int
-      end function no_arg_call
-      integer(c_int) function actions_call(actions) bind(c)
-         import :: c_int, spawn_actions_t
-         type(spawn_actions_t), intent(inout) :: actions
-      end function actions_call
-      integer(c_int) function attr_call(attr) bind(c)
-         import :: c_int, spawn_attr_t
-         type(spawn_attr_t), intent(inout) :: attr
-      end function attr_call
-   end interface
-   ! <unistd.h>, <fcntl.h> (open: no O_CREAT, two arguments), <sys/stat.h>, <sys/file.h>, <signal.h>
-   procedure(fd_call), bind(c, name='close') :: c_close
-   procedure(fd_call), bind(c, name='fsync') :: c_fsync
-   procedure(fd_call), bind(c, name='isatty') :: c_isatty
-   procedure(no_arg_call), bind(c, name='getpid') :: c_getpid
-   procedure(no_arg_call), bind(c, name='getppid') :: c_getppid
-   procedure(two_int_call), bind(c, name='flock') :: c_flock
-   procedure(two_int_call), bind(c, name='kill') :: c_kill
-   procedure(path_int_call), bind(c, name='open') :: c_open
-   procedure(path_int_call), bind(c, name='mkdir') :: c_mkdir
-   ! <spawn.h>
-   procedure(actions_call), bind(c, name='posix_spawn_file_actions_init') :: c_spawn_actions_init
-   procedure(actions_call), bind(c, name='posix_spawn_file_actions_destroy') :: c_spawn_actions_destroy
-   procedure(attr_call), bind(c, name='posix_spawnattr_init') :: c_spawnattr_init
-   procedure(attr_call), bind(c, name='posix_spawnattr_destroy') :: c_spawnattr_destroy
-
    interface
       ! <stdio.h>
       type(c_ptr) function c_fopen(path, mode) bind(c, name='fopen')
@@ -140,6 +98,17 @@ module c_library
          import :: c_int, c_long
          integer(c_int), value :: name
       end function c_sysconf
+      ! <sys/stat.h>
+      integer(c_int) function c_mkdir(path, mode) bind(c, name='mkdir')
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int), value :: mode
+      end function c_mkdir
+      ! <sys/file.h>
+      integer(c_int) function c_flock(fd, operation) bind(c, name='flock')
+         import :: c_int
+         integer(c_int), value :: fd, operation
+      end function c_flock
       ! <sys/statvfs.h>
       integer(c_int) function c_statvfs(path, buf) bind(c, name='statvfs')
          import :: c_int, c_char, statvfs_t
@@ -163,8 +132,25 @@ module c_library
          import :: c_int
          integer(c_int), value :: status
       end subroutine c_exit
-      ! <unistd.h>: the raw file calls, async-signal-safe (a signal handler
-      ! may make them: src/system/process_stop.f90), as open, close, kill
+      integer(c_int) function c_isatty(fd) bind(c, name='isatty')
+         import :: c_int
+         integer(c_int), value :: fd
+      end function c_isatty
+      ! <fcntl.h>, <unistd.h>: the raw file calls, async-signal-safe (a signal
+      ! handler may make them: src/system/process_stop.f90)
+      integer(c_int) function c_open(path, flags) bind(c, name='open')
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int), value :: flags          ! no O_CREAT: no third argument
+      end function c_open
+      integer(c_int) function c_close(fd) bind(c, name='close')
+         import :: c_int
+         integer(c_int), value :: fd
+      end function c_close
+      integer(c_int) function c_fsync(fd) bind(c, name='fsync')
+         import :: c_int
+         integer(c_int), value :: fd
+      end function c_fsync
       integer(c_int) function c_unlink(path) bind(c, name='unlink')
          import :: c_int, c_char
          character(kind=c_char), intent(in) :: path(*)
@@ -198,6 +184,16 @@ module c_library
          type(spawn_attr_t), intent(in) :: attr
          type(c_ptr), intent(in) :: argv(*), envp(*)
       end function c_posix_spawn
+      integer(c_int) function c_spawn_actions_init(actions) &
+            bind(c, name='posix_spawn_file_actions_init')
+         import :: c_int, spawn_actions_t
+         type(spawn_actions_t), intent(inout) :: actions
+      end function c_spawn_actions_init
+      integer(c_int) function c_spawn_actions_destroy(actions) &
+            bind(c, name='posix_spawn_file_actions_destroy')
+         import :: c_int, spawn_actions_t
+         type(spawn_actions_t), intent(inout) :: actions
+      end function c_spawn_actions_destroy
       integer(c_int) function c_spawn_actions_addopen(actions, fd, path, oflag, mode) &
             bind(c, name='posix_spawn_file_actions_addopen')
          import :: c_int, c_char, spawn_actions_t
@@ -217,6 +213,14 @@ module c_library
          integer(c_int), value :: pid, options
          integer(c_int), intent(out) :: status
       end function c_waitpid
+      integer(c_int) function c_spawnattr_init(attr) bind(c, name='posix_spawnattr_init')
+         import :: c_int, spawn_attr_t
+         type(spawn_attr_t), intent(inout) :: attr
+      end function c_spawnattr_init
+      integer(c_int) function c_spawnattr_destroy(attr) bind(c, name='posix_spawnattr_destroy')
+         import :: c_int, spawn_attr_t
+         type(spawn_attr_t), intent(inout) :: attr
+      end function c_spawnattr_destroy
       integer(c_int) function c_spawnattr_setflags(attr, flags) &
             bind(c, name='posix_spawnattr_setflags')
          import :: c_int, c_int16_t, spawn_attr_t
@@ -229,7 +233,17 @@ module c_library
          type(spawn_attr_t), intent(inout) :: attr
          integer(c_int), value :: pgroup
       end function c_spawnattr_setpgroup
-      ! <sys/prctl.h>
+      ! <signal.h> (kill: async-signal-safe), <unistd.h>, <sys/prctl.h>
+      integer(c_int) function c_kill(pid, sig) bind(c, name='kill')
+         import :: c_int
+         integer(c_int), value :: pid, sig
+      end function c_kill
+      integer(c_int) function c_getpid() bind(c, name='getpid')
+         import :: c_int
+      end function c_getpid
+      integer(c_int) function c_getppid() bind(c, name='getppid')
+         import :: c_int
+      end function c_getppid
       integer(c_int) function c_prctl(option, arg2) bind(c, name='prctl')
          import :: c_int, c_long
          integer(c_int), value :: option
