@@ -1,8 +1,7 @@
-!> The load vector of `&load` for the static and pressure analyses, w positive
-!> the way the impactor moves: 'uniform' q = q0 (Pa); 'sinusoidal' q = q0
-!> cos(pi x/a) cos(pi y/b), x, y from the centre (the single Navier term);
-!> 'central_force' P (N). Pressures are integrated consistently, f_i = int
-!> phi_i q dA; a symmetric model takes its share (P / sym_factor).
+!> The load vector of `&load` for the static and pressure analyses, w positive the way the
+!> impactor moves: 'uniform' q = q0 (Pa); 'sinusoidal' q = q0 cos(pi x/a) cos(pi y/b), x, y
+!> from the centre (the single Navier term); 'central_force' P (N). Pressures are integrated
+!> consistently, f_i = int phi_i q dA; a symmetric model takes its share (P / sym_factor).
 module analysis_load
    use kinds, only: dp, pi, msg_len
    use deck_schema, only: deck_t
@@ -29,12 +28,9 @@ contains
       select case (deck%load_kind)
       case ('uniform', 'sinusoidal')
          elements: do e = 1, model%msh%nelem
-            if (deck%load_kind == 'uniform') then
-               q = deck%load_magnitude
-            else
-               q = deck%load_magnitude*cos(pi*model%geo(e)%xy3(1, :)/deck%a) &
-                                      *cos(pi*model%geo(e)%xy3(2, :)/deck%b)
-            end if
+            q = deck%load_magnitude
+            if (deck%load_kind == 'sinusoidal') q = q*cos(pi*model%geo(e)%xy3(1, :)/deck%a) &
+                                                      *cos(pi*model%geo(e)%xy3(2, :)/deck%b)
             call element_pressure_load(model%geo(e), q, fe)
             call scatter_add_element(model%msh%elem_eq(:, e), fe, f)
          end do elements

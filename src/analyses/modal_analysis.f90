@@ -1,10 +1,9 @@
 !> Modal analysis (`&analysis kind = 'modes'`): the lowest `&modes count`
 !> natural frequencies and mode shapes of the plate,
 !>     K_L phi = omega^2 M phi,     phi^T M phi = 1,
-!> with K_L and M the banded matrices of the impact analysis (eq. 15; the
-!> consistent mass with rotary inertia, Appendix B): small vibrations about
-!> the flat plate in either theory. Solver (LAPACK dsbgvx), free edges and
-!> the split of each mode's kinetic energy: above modal_solve.
+!> with K_L and M the banded matrices of the impact analysis (eq. 15; the consistent mass with
+!> rotary inertia, Appendix B): small vibrations about the flat plate in either theory. Solver
+!> (LAPACK dsbgvx), free edges and the split of each mode's kinetic energy: above modal_solve.
 !> More: docs/ANALYSES.md.
 module modal_analysis
    use kinds, only: dp, pi, msg_len
@@ -42,12 +41,11 @@ module modal_analysis
 
 contains
 
-   !> Solver: LAPACK dsbgvx on K_L and M in band storage (LAPACK's layout,
-   !> uplo = 'U'), eigenpairs 1..count; with the shapes it keeps an n x n
-   !> matrix (8 n^2 bytes, time ~ n^2 kd), without them time ~ n kd^2. Free
-   !> edges: K_L is singular, M is not; rigid-body modes give omega^2 ~ 0.
-   !> Each mode's kinetic energy is split between w, u, v and psi_x, psi_y
-   !> (summing to 1 for a symmetric laminate).
+   !> Solver: LAPACK dsbgvx on K_L and M in band storage (LAPACK's layout, uplo = 'U'),
+   !> eigenpairs 1..count; with the shapes it keeps an n x n matrix (8 n^2 bytes,
+   !> time ~ n^2 kd), without them time ~ n kd^2. Free edges: K_L is singular, M is not;
+   !> rigid-body modes give omega^2 ~ 0. Each mode's kinetic energy is split between w, u, v
+   !> and psi_x, psi_y (summing to 1 for a symmetric laminate).
    !>
    !> The lowest `count` eigenpairs of K_L phi = omega^2 M phi (band storage).
    subroutine modal_solve(model, count, vectors, res, stat, errmsg)
@@ -59,7 +57,7 @@ contains
       character(len=*), intent(inout) :: errmsg    !< reason on failure
       real(dp), allocatable :: ab(:,:), bb(:,:), q(:,:), w(:), work(:), part(:), mpart(:)
       integer, allocatable :: iwork(:), ifail(:), kind_of(:)
-      integer :: n, kd, found, info, j, k, node, c, nq
+      integer :: n, kd, found, info, j, k, c, nq
       integer, parameter :: w_dof = 3
       character :: jobz
       character(len=msg_len) :: msg
@@ -117,10 +115,9 @@ contains
       ! -- kinetic energy share of each kind of freedom, the columns: 1 w; 2 u, v; 3 psi
       allocate (kind_of(n), part(n), mpart(n), res%fraction(3, count))
       kind_of = 0
-      do node = 1, model%msh%nnode
-         do k = 1, ndof_node
-            if (model%msh%eq(k, node) > 0) kind_of(model%msh%eq(k, node)) = merge(2, merge(1, 3, k == w_dof), k <= 2)
-         end do
+      do k = 1, ndof_node
+         kind_of(pack(model%msh%eq(k, :), model%msh%eq(k, :) > 0)) = &
+            merge(2, merge(1, 3, k == w_dof), k <= 2)
       end do
       modes: do j = 1, count
          do c = 1, 3

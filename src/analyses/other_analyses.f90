@@ -4,6 +4,7 @@
 !> Each checks a part of the model on its own (docs/VALIDATION.md).
 module other_analyses
    use kinds, only: dp, msg_len
+   use number_text, only: int_str
    use deck_schema, only: deck_t
    use plate_model, only: model_t, gather_element
    use mesh, only: ndof_node
@@ -56,8 +57,7 @@ contains
       character(len=msg_len) :: load_unit, solve_msg
       integer :: u, inc, n, solve_stat, k
       real(dp) :: de(ndof_node)
-      n = deck%load_increments
-      if (.not. model%nonlinear) n = 1
+      n = merge(deck%load_increments, 1, model%nonlinear)
       solve_msg = ''
       call static_solve(model, f, n, res, solve_stat, solve_msg)
 
@@ -112,7 +112,7 @@ contains
       character(len=16), allocatable :: names(:)
       character(len=48), allocatable :: texts(:)
       real(dp), allocatable :: w(:,:)
-      real(dp) :: de(ndof_node), wmax(deck%mode_count), fraction(3)
+      real(dp) :: wmax(deck%mode_count), fraction(3)
       character(len=23) :: fmt
       integer :: u, j, k
       call modal_solve(model, deck%mode_count, deck%mode_shapes, res, stat, errmsg)
@@ -147,10 +147,7 @@ contains
       do j = 1, res%count
          write (names(2 + j), '(a,i0)') 'w_mode_', j
          write (texts(2 + j), '(a,i0,a)') 'w of mode ', j, ', largest |w| = 1 (-)'
-         do k = 1, model%msh%nnode
-            call gather_element(model%msh%eq(:, k), res%shapes(:, j), de)
-            w(k, j) = de(3)
-         end do
+         call gather_element(model%msh%eq(3, :), res%shapes(:, j), w(:, j))    ! w: freedom 3
          wmax(j) = maxval(abs(w(:, j)))
          if (wmax(j) == 0.0_dp) wmax(j) = 1.0_dp
       end do
@@ -177,7 +174,6 @@ contains
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
       type(pressure_result_t) :: res
-      character(len=msg_len) :: warning
       integer :: u, step, nstep, peak
       nstep = nint(deck%t_end/deck%dt)
       call pressure_solve(model, f, deck%dt, nstep, deck%every, res, stat, errmsg)
@@ -204,11 +200,8 @@ contains
       write (report, '(a,i0,a,es12.5,a,f12.3,a)') 'pressure: ', res%nstep, ' steps; largest centre deflection ', &
          res%w_centre(peak)*1.0e3_dp, ' mm at ', res%t(peak)*1.0e6_dp, ' us' // new_line('a') // &
          'results: ' // deck%prefix // '_pressure_history.dat'
-      if (res%unconverged > 0) then
-         write (warning, '(a,i0,a)') 'warning: ', res%unconverged, &
-            ' steps did not meet eq. (18) within max_nonlinear_iter'
-         report = trim(report) // new_line('a') // trim(warning)
-      end if
+      if (res%unconverged > 0) report = trim(report) // new_line('a') // 'warning: ' &
+         // int_str(res%unconverged) // ' steps did not meet eq. (18) within max_nonlinear_iter'
    end subroutine run_pressure
 
 end module other_analyses

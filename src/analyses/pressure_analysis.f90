@@ -1,8 +1,7 @@
-!> Transient analysis (`&analysis kind = 'pressure'`): the plate at rest,
-!> loaded at t = 0 by the load of `&load` (a uniform or sinusoidal pressure,
-!> or a central force) held constant to t_end. The time integration is the
-!> impact analysis's without the impactor: Newmark's rule with Akay's
-!> constant left-hand matrix, eq. (19)-(20),
+!> Transient analysis (`&analysis kind = 'pressure'`): the plate at rest, loaded at t = 0 by
+!> the load of `&load` (a uniform or sinusoidal pressure, or a central force) held constant to
+!> t_end. The time integration is the impact analysis's without the impactor: Newmark's rule
+!> with Akay's constant left-hand matrix, eq. (19)-(20),
 !>     (K_L + 4/dt^2 M) D^{n+1}_{t+dt} = F + M {b} - K_N(D^n) D^n,
 !> iterated to eq. (18); its start and energy: above pressure_solve.
 !> More: docs/ANALYSES.md.

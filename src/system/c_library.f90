@@ -7,11 +7,10 @@ module c_library
    use, intrinsic :: iso_c_binding, only: c_int32_t, c_int16_t
    implicit none
    private
-   public :: statvfs_t, rlimit_t
+   public :: statvfs_t, rlimit_t, statx_t, c_statx
    public :: c_fopen, c_fclose, c_fileno, c_rename, c_lseek, c_truncate, c_sysconf, c_mkdir, c_flock, &
              c_statvfs, c_getrlimit, c_signal, c_exit, c_isatty
    public :: c_open, c_close, c_fsync, c_unlink, c_write
-   public :: statx_t, c_statx
    public :: spawn_actions_t, cpu_set_t, c_posix_spawn, c_spawn_actions_init, &
              c_spawn_actions_destroy, c_spawn_actions_addopen, c_spawn_actions_adddup2, c_waitpid, &
              c_readlink, c_sched_getaffinity, o_write_no_follow
@@ -31,8 +30,7 @@ module c_library
       integer(c_long) :: rlim_cur, rlim_max
    end type rlimit_t
 
-   !> posix_spawn_file_actions_t (<spawn.h>): opaque, 80 bytes in glibc;
-   !> 128 reserved here.
+   !> posix_spawn_file_actions_t (<spawn.h>): opaque, 80 bytes in glibc; 128 reserved here.
    type, bind(c) :: spawn_actions_t
       integer(c_int64_t) :: opaque(16) = 0
    end type spawn_actions_t
@@ -47,10 +45,9 @@ module c_library
       integer(c_int64_t) :: bits(16) = 0
    end type cpu_set_t
 
-   !> struct statx (<linux/stat.h>, Linux 4.11, glibc 2.28): the same layout
-   !> on every architecture, unlike struct stat. The times are four
-   !> struct statx_timestamp (a 64-bit second, a 32-bit nanosecond, 32 bits
-   !> reserved), read here as pairs of 64-bit words.
+   !> struct statx (<linux/stat.h>, Linux 4.11, glibc 2.28): the same layout on every
+   !> architecture, unlike struct stat. The times are four struct statx_timestamp (a 64-bit
+   !> second, a 32-bit nanosecond, 32 bits reserved), read here as pairs of 64-bit words.
    type, bind(c) :: statx_t
       integer(c_int32_t) :: stx_mask, stx_blksize
       integer(c_int64_t) :: stx_attributes
@@ -62,9 +59,8 @@ module c_library
       integer(c_int64_t) :: stx_spare2(14)
    end type statx_t
 
-   !> open(2) flags (Linux, <fcntl.h>): write only, create, truncate, no symbolic
-   !> link (open fails on one); the four together: a file written anew, never
-   !> through a link.
+   !> open(2) flags (Linux, <fcntl.h>): write only, create, truncate, no symbolic link (open
+   !> fails on one); the four together: a file written anew, never through a link.
    integer(c_int), parameter :: o_wronly = 1, o_creat = int(o'100', c_int), o_trunc = int(o'1000', c_int), &
                                 o_nofollow = int(o'400000', c_int)
    integer(c_int), parameter :: o_write_no_follow = ior(o_wronly, ior(o_creat, ior(o_trunc, o_nofollow)))

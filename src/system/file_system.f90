@@ -1,9 +1,8 @@
-!> What the program asks of the file system, through the C library, never a
-!> shell (a path is only a name): directories, advisory locks (flock(2)),
-!> rename, truncate, a file's size on disk, what a name is without following
-!> a link, the paths and prefixes refused, exclusive creation and removal,
-!> lines of any length. No write goes through a symbolic link.
-!> Not from the paper. More: docs/ROBUSTNESS.md.
+!> What the program asks of the file system, through the C library, never a shell (a path is
+!> only a name): directories, advisory locks (flock(2)), rename, truncate, a file's size on
+!> disk, what a name is without following a link, the paths and prefixes refused, exclusive
+!> creation and removal, lines of any length. No write goes through a symbolic link. Not from
+!> the paper. More: docs/ROBUSTNESS.md.
 module file_system
    use, intrinsic :: iso_c_binding, only: c_int, c_null_char, c_ptr, c_null_ptr, c_associated, c_int64_t
    use, intrinsic :: iso_fortran_env, only: int64, iostat_end, iostat_eor
@@ -69,16 +68,15 @@ contains
       character(len=*), intent(in) :: dir           !< the directory
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< the directory that could not be made
+      character(len=len_trim(dir) + 1) :: ended
       integer :: k
       integer(c_int) :: r
       logical :: exists
       stat = 0
       if (len_trim(dir) == 0) return
-      ! every prefix ending before a '/', then the whole path
-      do k = 2, len_trim(dir) + 1
-         if (k <= len_trim(dir)) then
-            if (dir(k:k) /= '/') cycle
-         end if
+      ended = trim(dir) // '/'      ! every prefix ending before a '/', the whole path the last
+      do k = 2, len(ended)
+         if (ended(k:k) /= '/') cycle
          inquire (file=dir(:k - 1) // '/.', exist=exists)
          if (exists) cycle
          r = c_mkdir(dir(:k - 1) // c_null_char, dir_mode)
@@ -98,10 +96,7 @@ contains
       character(len=:), allocatable :: why
       integer :: k
       why = ''
-      if (len_trim(path) == 0) then
-         why = 'must not be empty'
-         return
-      end if
+      if (len_trim(path) == 0) why = 'must not be empty'    ! (blanks: no control character)
       do k = 1, len(path)
          if (iachar(path(k:k)) < 32 .or. iachar(path(k:k)) == 127) then
             why = 'holds a control character (code ' // achar(48 + iachar(path(k:k))/100) &
@@ -111,10 +106,9 @@ contains
       end do
    end function path_problem
 
-   !> Why a results prefix cannot be used, '' when it can: path_problem's
-   !> reasons, and a prefix whose last part is no name ('out/', '.',
-   !> 'out/..'), which would make hidden files in a directory
-   !> (out/_history.dat, out/.h5).
+   !> Why a results prefix cannot be used, '' when it can: path_problem's reasons, and a prefix
+   !> whose last part is no name ('out/', '.', 'out/..'), which would make hidden files in a
+   !> directory (out/_history.dat, out/.h5).
    pure function prefix_problem(prefix) result(why)
       character(len=*), intent(in) :: prefix
       character(len=:), allocatable :: why
@@ -131,10 +125,9 @@ contains
       end if
    end function prefix_problem
 
-   !> Why `path` cannot be a file's name on a file system whose names have
-   !> at most name_max bytes and whose paths at most path_max - 1 (NAME_MAX,
-   !> PATH_MAX), '' when it can: the first part between slashes that is too
-   !> long, or the whole path.
+   !> Why `path` cannot be a file's name on a file system whose names have at most name_max
+   !> bytes and whose paths at most path_max - 1 (NAME_MAX, PATH_MAX), '' when it can: the
+   !> first part between slashes that is too long, or the whole path.
    pure function name_problem(path, name_max, path_max) result(why)
       character(len=*), intent(in) :: path          !< the file's path
       integer, intent(in) :: name_max               !< NAME_MAX (255 on Linux's file systems)
@@ -174,9 +167,8 @@ contains
       end if
    end function short_path
 
-   !> The nearest existing directory above a path, the one its file is or
-   !> would be in: its parents in turn, then '.' (or '/' for an absolute
-   !> path).
+   !> The nearest existing directory above a path, the one its file is or would be in: its
+   !> parents in turn, then '.' (or '/' for an absolute path).
    function nearest_directory(path) result(dir)
       character(len=*), intent(in) :: path   !< a file's path, existing or not
       character(len=:), allocatable :: dir
@@ -185,8 +177,7 @@ contains
       do
          dir = parent_directory(dir)
          if (len(dir) == 0) then
-            dir = '.'
-            if (path(1:min(1, len(path))) == '/') dir = '/'
+            dir = merge('/', '.', path(1:min(1, len(path))) == '/')
             return
          end if
          inquire (file=dir // '/.', exist=exists)
@@ -244,26 +235,21 @@ contains
       type(file_lock_t), intent(out) :: lock        !< the lock, held until unlock_file
       integer, intent(out) :: stat                  !< 0 when locked
       character(len=*), intent(inout) :: errmsg     !< reason on failure
-      integer(c_int) :: r
       stat = 1
       lock%stream = c_fopen(path // c_null_char, 're' // c_null_char)
       if (.not. c_associated(lock%stream)) then
          errmsg = 'cannot open ' // short_path(path)
          return
       end if
-      r = c_flock(c_fileno(lock%stream), ior(lock_ex, lock_nb))
-      if (r /= 0) then
+      if (c_flock(c_fileno(lock%stream), ior(lock_ex, lock_nb)) /= 0) then
          errmsg = short_path(path) // ' is being written by another run now (it is locked)'
-         call close_stream(lock%stream)
-         return
-      end if
-      if (.not. name_holds(path, c_fileno(lock%stream))) then
+      else if (.not. name_holds(path, c_fileno(lock%stream))) then
          errmsg = short_path(path) // ' was replaced while this run claimed it (by another run with the same ' &
             // 'prefix, or a symbolic link)'
-         call close_stream(lock%stream)
-         return
+      else
+         stat = 0
       end if
-      stat = 0
+      if (stat /= 0) call close_stream(lock%stream)
    end subroutine lock_file
 
    !> The name `path`, itself a regular file and no link, is the file open
@@ -296,8 +282,7 @@ contains
       if (stat /= 0) errmsg = 'cannot rename ' // from // ' to ' // to
    end subroutine rename_file
 
-   !> Cuts the file `path` to `length` bytes (truncate(2)); stat /= 0 when
-   !> it cannot.
+   !> Cuts the file `path` to `length` bytes (truncate(2)); stat /= 0 when it cannot.
    subroutine truncate_file(path, length, stat)
       character(len=*), intent(in) :: path          !< the file
       integer(int64), intent(in) :: length          !< its new length (bytes)
@@ -305,17 +290,14 @@ contains
       stat = int(c_truncate(path // c_null_char, int(length, c_int64_t)))
    end subroutine truncate_file
 
-   !> The length of the file `path` on disk (bytes), -1 when it cannot be
-   !> opened.
+   !> The length of the file `path` on disk (bytes), -1 when it cannot be opened.
    function file_size(path) result(bytes)
       character(len=*), intent(in) :: path          !< the file
       integer(int64) :: bytes
       type(file_probe_t) :: probe
       integer :: stat
-      bytes = -1
       call open_probe(path, probe, stat)
-      if (stat /= 0) return
-      bytes = probe_size(probe)
+      bytes = probe_size(probe)                     ! -1 when not open
       call close_probe(probe)
    end function file_size
 
@@ -361,7 +343,7 @@ contains
       character(len=*), intent(inout) :: msg               !< the read's message on an error
       logical, intent(out) :: over                         !< the line is longer than budget
       character(len=chunk_len) :: chunk
-      character(len=:), allocatable :: buf, grown
+      character(len=:), allocatable :: buf
       integer :: nread, n
       allocate (character(len=chunk_len) :: buf)
       n = 0
@@ -370,11 +352,7 @@ contains
          nread = 0
          read (unit, '(a)', advance='no', iostat=ios, iomsg=msg, size=nread) chunk
          if (ios == 0 .or. ios == iostat_eor) then
-            if (n + nread > len(buf)) then
-               allocate (character(len=2*len(buf)) :: grown)
-               grown(:n) = buf(:n)
-               call move_alloc(grown, buf)
-            end if
+            if (n + nread > len(buf)) buf = buf // repeat(' ', len(buf))    ! doubled
             buf(n + 1:n + nread) = chunk(:nread)
             n = n + nread
             over = n > budget

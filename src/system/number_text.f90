@@ -15,10 +15,9 @@ module number_text
    real(dp), parameter :: exact_pow10(0:22) = [1.0e0_dp, 1.0e1_dp, 1.0e2_dp, 1.0e3_dp, 1.0e4_dp, 1.0e5_dp, &
       1.0e6_dp, 1.0e7_dp, 1.0e8_dp, 1.0e9_dp, 1.0e10_dp, 1.0e11_dp, 1.0e12_dp, 1.0e13_dp, 1.0e14_dp, 1.0e15_dp, &
       1.0e16_dp, 1.0e17_dp, 1.0e18_dp, 1.0e19_dp, 1.0e20_dp, 1.0e21_dp, 1.0e22_dp]
-   !> The fast paths' margin to a rounding boundary, in units of the last
-   !> digit: the scaled value is within some 10 roundings (2.2e-15
-   !> relative, 2.2e-7 of a digit at 1e8) of the exact one, so a margin of
-   !> 1e-5 leaves the rounding of every number it passes certain.
+   !> The fast paths' margin to a rounding boundary, in units of the last digit: the scaled value
+   !> is within some 10 roundings (2.2e-15 relative, 2.2e-7 of a digit at 1e8) of the exact one,
+   !> so a margin of 1e-5 leaves the rounding of every number it passes certain.
    real(dp), parameter :: tie_margin = 1.0e-5_dp
    !> Magnitudes es16.7e3's fast path takes: their scaling is at most a
    !> few roundings (10.0**p by repeated products beyond 10**22).
@@ -83,18 +82,12 @@ contains
          if (ios == 0 .and. back == x) exit
       end do
       buf = adjustl(buf)
-      sign = ''
-      if (buf(1:1) == '-') then
-         sign = '-'
-         buf = buf(2:)
-      end if
+      sign = trim(merge('-', ' ', x < 0.0_dp))
+      if (x < 0.0_dp) buf = buf(2:)
       epos = index(buf, 'E')
       read (buf(epos + 1:), *) e
       digits = buf(1:1) // buf(3:epos - 1)          ! mantissa d.ddd without the point
-      do while (len(digits) > 1)
-         if (digits(len(digits):) /= '0') exit
-         digits = digits(:len(digits) - 1)
-      end do
+      digits = digits(:max(1, verify(digits, '0', back=.true.)))      ! without its trailing zeros
       if (e >= 0 .and. e <= max_fixed_exp) then
          if (len(digits) <= e + 1) then
             s = sign // digits // repeat('0', e + 1 - len(digits)) // '.0'
@@ -118,13 +111,9 @@ contains
       character(len=24) :: buf
       real(dp) :: rounded
       integer :: ios
-      if (.not. ieee_is_finite(x)) then
-         s = real_str(x)
-         return
-      end if
       write (buf, '(es24.3e4)') x
       read (buf, *, iostat=ios) rounded
-      if (ios /= 0) rounded = x
+      if (ios /= 0 .or. .not. ieee_is_finite(x)) rounded = x     ! (NaN, Infinity: x itself)
       s = real_str(rounded)
    end function real_short
 
@@ -229,12 +218,9 @@ contains
    pure subroutine put_i6(n, text)
       integer, intent(in) :: n                      !< the number
       character(len=6), intent(out) :: text         !< its text
-      if (n < -99999 .or. n > 999999) then
-         write (text, '(i6)') n                      ! '******'
-      else
-         text = int_str(n)
-         text = adjustr(text)
-      end if
+      text = '******'                                ! what i6 writes of a number it cannot hold
+      if (n >= -99999 .and. n <= 999999) text = int_str(n)
+      text = adjustr(text)
    end subroutine put_i6
 
    !> ax 10**p: one rounding for |p| <= 22 (a product or a quotient with an

@@ -1,10 +1,9 @@
-!> How the process stops: on a stop signal (SIGTERM, SIGINT, SIGHUP, SIGUSR1,
-!> SIGUSR2) at once in the set-up (the claimed result files removed, exit
-!> status 128 + N, async-signal-safe calls only) and after the step in the
-!> run (the loop asks stop_signal_caught, the run ends with its results and
-!> a restart point); or with an exit status (exit_program, _exit(2)). The
-!> phase and the signal are module state: a handler can reach nothing else.
-!> Not from the paper. More: docs/ROBUSTNESS.md.
+!> How the process stops: on a stop signal (SIGTERM, SIGINT, SIGHUP, SIGUSR1, SIGUSR2) at once
+!> in the set-up (the claimed result files removed, exit status 128 + N, async-signal-safe
+!> calls only) and after the step in the run (the loop asks stop_signal_caught, the run ends
+!> with its results and a restart point); or with an exit status (exit_program, _exit(2)). The
+!> phase and the signal are module state: a handler can reach nothing else. Not from the paper.
+!> More: docs/ROBUSTNESS.md.
 module process_stop
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_funptr, c_funloc, c_intptr_t, c_size_t, c_long, &
       c_int64_t, c_null_char
@@ -43,8 +42,7 @@ module process_stop
 
 contains
 
-   !> From now on a stop signal (module header) ends the set-up at once; to
-   !> be called first.
+   !> From now on a stop signal (module header) ends the set-up at once; to be called first.
    subroutine catch_stop_signals()
       type(c_funptr) :: previous
       integer :: k
@@ -60,11 +58,8 @@ contains
    !> beyond max_files files or max_path characters (then it stays).
    subroutine remove_on_stop(path)
       character(len=*), intent(in) :: path   !< the file
-      integer :: k
       if (nfiles == max_files .or. len(path) > max_path) return
-      do k = 1, len(path)
-         files(k, nfiles + 1) = path(k:k)
-      end do
+      files(:len(path), nfiles + 1) = transfer(path, files(:, 1), len(path))
       files(len(path) + 1, nfiles + 1) = c_null_char
       nfiles = nfiles + 1
    end subroutine remove_on_stop

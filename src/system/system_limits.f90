@@ -1,9 +1,8 @@
-!> What the machine offers a run, asked of the C library: memory (physical,
-!> free, the control group's and the process's limits), a file system's
-!> free space, read-only mount and longest name, the largest file the
-!> process may write. The deck's checks and the result files compare a
-!> scene's needs against them before any work; a size is -1 when the system
-!> does not tell or sets no limit (no check then). More: docs/ROBUSTNESS.md.
+!> What the machine offers a run, asked of the C library: memory (physical, free, the control
+!> group's and the process's limits), a file system's free space, read-only mount and longest
+!> name, the largest file the process may write. The deck's checks and the result files compare
+!> a scene's needs against them before any work; a size is -1 when the system does not tell or
+!> sets no limit (no check then). More: docs/ROBUSTNESS.md.
 module system_limits
    use, intrinsic :: iso_c_binding, only: c_int, c_long, c_null_char
    use kinds, only: dp
@@ -46,16 +45,9 @@ contains
       character(len=1024) :: line
       integer :: u, ios, c1, c2
       bytes = physical_memory()
-      open (newunit=u, file='/proc/meminfo', status='old', action='read', iostat=ios)
-      if (ios == 0) then            ! (u is undefined after a failed open: no close)
-         do while (ios == 0)
-            read (u, '(a)', iostat=ios) line
-            if (ios == 0 .and. index(line, 'MemAvailable:') == 1) call take_text(line(14:), 1024.0_dp)
-         end do
-         close (u, iostat=ios)
-      end if
-      call take_file('/sys/fs/cgroup/memory.max')
-      call take_file('/sys/fs/cgroup/memory/memory.limit_in_bytes')
+      call take_file('/proc/meminfo', 'MemAvailable:', 1024.0_dp)
+      call take_file('/sys/fs/cgroup/memory.max', '', 1.0_dp)
+      call take_file('/sys/fs/cgroup/memory/memory.limit_in_bytes', '', 1.0_dp)
       open (newunit=u, file='/proc/self/cgroup', status='old', action='read', iostat=ios)
       if (ios /= 0) return
       do
@@ -64,23 +56,31 @@ contains
          c1 = index(line, ':')
          c2 = c1 + index(line(c1 + 1:), ':')
          if (c1 == 0 .or. c2 == c1) cycle
-         if (c2 == c1 + 1) call take_file('/sys/fs/cgroup' // trim(line(c2 + 1:)) // '/memory.max')
-         if (index(',' // line(c1 + 1:c2 - 1) // ',', ',memory,') > 0) &
-            call take_file('/sys/fs/cgroup/memory' // trim(line(c2 + 1:)) // '/memory.limit_in_bytes')
+         if (c2 == c1 + 1) &
+            call take_file('/sys/fs/cgroup' // trim(line(c2 + 1:)) // '/memory.max', '', 1.0_dp)
+         if (index(',' // line(c1 + 1:c2 - 1) // ',', ',memory,') > 0) call take_file( &
+            '/sys/fs/cgroup/memory' // trim(line(c2 + 1:)) // '/memory.limit_in_bytes', '', 1.0_dp)
       end do
       close (u, iostat=ios)
 
    contains
 
-      !> The limit in the file `path` ('max': none).
-      subroutine take_file(path)
-         character(len=*), intent(in) :: path
-         character(len=64) :: text
+      !> The number of `unit` bytes after `key` in the first line of the file
+      !> `path` that starts with it (key '': the first line; 'max': none).
+      subroutine take_file(path, key, unit)
+         character(len=*), intent(in) :: path, key
+         real(dp), intent(in) :: unit
+         character(len=1024) :: text
          integer :: v, ios
          open (newunit=v, file=path, status='old', action='read', iostat=ios)
-         if (ios /= 0) return
-         read (v, '(a)', iostat=ios) text
-         if (ios == 0) call take_text(text, 1.0_dp)
+         if (ios /= 0) return          ! (v is undefined after a failed open: no close)
+         do
+            read (v, '(a)', iostat=ios) text
+            if (ios /= 0) exit
+            if (index(text, key) /= 1) cycle
+            call take_text(text(len(key) + 1:), unit)
+            exit
+         end do
          close (v, iostat=ios)
       end subroutine take_file
 
@@ -99,14 +99,23 @@ contains
 
    !> The memory this process may still allocate (bytes), -1 when not limited:
    !> the smaller of RLIMIT_AS (ulimit -v) less its mapped space and
-   !> RLIMIT_DATA (ulimit -d) less its data, both from /proc/self/statm.
+   !> RLIMIT_DATA (ulimit -d) less its data, both from /proc/self/statm (size,
+   !> resident, shared, text, lib, data, in pages; 0 when unknown).
    function memory_room() result(bytes)
       real(dp) :: bytes
-      real(dp) :: mapped, data
+      real(dp) :: pages(6)
+      integer(c_long) :: page
+      integer :: u, ios
       bytes = -1.0_dp
-      call memory_in_use(mapped, data)
-      call take(rlimit_as, mapped)
-      call take(rlimit_data, data)
+      page = c_sysconf(sc_pagesize)
+      open (newunit=u, file='/proc/self/statm', status='old', action='read', iostat=ios)
+      if (ios == 0) then
+         read (u, *, iostat=ios) pages
+         close (u)
+      end if
+      if (ios /= 0 .or. page <= 0) pages = 0.0_dp
+      call take(rlimit_as, pages(1)*real(page, dp))      ! VmSize
+      call take(rlimit_data, pages(6)*real(page, dp))    ! VmData + VmStk
 
    contains
 
@@ -123,27 +132,6 @@ contains
       end subroutine take
 
    end function memory_room
-
-   !> The process's mapped address space and data segment now (bytes), 0
-   !> when unknown (/proc/self/statm: size, resident, shared, text, lib,
-   !> data, in pages).
-   subroutine memory_in_use(mapped, data)
-      real(dp), intent(out) :: mapped               !< the address space (VmSize)
-      real(dp), intent(out) :: data                 !< data and stack (VmData + VmStk)
-      integer(c_long) :: page
-      integer :: u, ios
-      real(dp) :: pages(6)
-      mapped = 0.0_dp
-      data = 0.0_dp
-      page = c_sysconf(sc_pagesize)
-      open (newunit=u, file='/proc/self/statm', status='old', action='read', iostat=ios)
-      if (ios /= 0) return
-      read (u, *, iostat=ios) pages
-      close (u)
-      if (ios /= 0 .or. page <= 0) return
-      mapped = pages(1)*real(page, dp)
-      data = pages(6)*real(page, dp)
-   end subroutine memory_in_use
 
    !> The space free to an unprivileged user (bytes) on the file system that
    !> holds `path`, or would (its nearest existing parent directory); -1 when unknown.
@@ -167,9 +155,8 @@ contains
       read_only = iand(buf%f_flag, st_rdonly) /= 0
    end function read_only_file_system
 
-   !> The longest file name (bytes) the file system that holds `path` (or
-   !> its nearest existing parent directory) takes: its f_namemax, 255
-   !> when it does not tell.
+   !> The longest file name (bytes) the file system that holds `path` (or its nearest existing
+   !> parent directory) takes: its f_namemax, 255 when it does not tell.
    function name_max(path) result(bytes)
       character(len=*), intent(in) :: path   !< a file or directory path, existing or not
       integer :: bytes
