@@ -500,7 +500,7 @@ contains
       do i = 1, size(lad%runs)
          call write_row(lad%runs(i), i == out%chosen)
       end do
-      write (u, '(a)') '# estimates of the finest level of each axis (src/accuracy/error_estimate.f90):'
+      write (u, '(a)') '# estimates of the finest level of each axis (src/accuracy/accuracy_ladder.f90):'
       write (u, '(a)') '# result axis levels observed_order asymptotic error(result''s unit) rule'
       axes = [lad%tx, lad%mx]
       do iq = 1, nq
