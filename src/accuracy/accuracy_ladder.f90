@@ -203,14 +203,12 @@ contains
       i = findloc(runs%k == k .and. runs%j == j .and. is_ladder(runs), .true., dim=1)
    end function ladder_run
 
-   !> True when the ladder run (k, j) is done.
    pure logical function done_run(runs, k, j)
       type(run_t), intent(in) :: runs(:)
       integer, intent(in) :: k, j
       done_run = any(runs%k == k .and. runs%j == j .and. is_ladder(runs) .and. runs%state == state_done)
    end function done_run
 
-   !> Both axes of the ladder from its runs done.
    subroutine build_axes(lad)
       type(ladder_t), intent(inout) :: lad
       call build_axis(lad%runs, axis_time, lad%estimated, lad%tx, 0, 0)
