@@ -595,7 +595,6 @@ contains
       end subroutine put
    end subroutine write_accuracy_summary
 
-   !> The accuracy run's words on standard output.
    subroutine report_terminal(unit, la, lad, out)
       integer, intent(in) :: unit                   !< standard output
       type(launcher_t), intent(in) :: la

@@ -174,7 +174,6 @@ contains
       log_tail = last_difference(q)*(log(size_ratio)/log(h(n - 1)/h(n)) + 1.0_dp)
    end function log_tail
 
-   !> The larger of the last two differences of a ladder.
    pure real(dp) function last_difference(q)
       real(dp), intent(in) :: q(:)                !< the result at each level
       integer :: n
