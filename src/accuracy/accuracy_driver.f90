@@ -34,7 +34,6 @@ module accuracy_driver
    private
    public :: run_accuracy, ladder_mesh, targeted_results
 
-   !> The outcome of the ladder.
    type :: accuracy_outcome_t
       logical :: met = .false.
       character(len=240) :: status = ''            !< 'met', 'cap reached: ...', 'not met: ...', 'stopped ...'
@@ -85,6 +84,8 @@ contains
       type(deck_t) :: claimed                       ! the deck, overwriting with --restart
       integer(int64) :: wall0, wall1, rate
       integer :: i, ignored
+      type(file_lock_t) :: lock
+      character(len=msg_len) :: iomsg
       exit_code = 1;  stat = 1
       call system_clock(wall0, rate)
       if (len(opts%deck_path) == 0) errmsg = '--accuracy: give the deck as a file (its runs read it again), ' // &
@@ -93,7 +94,14 @@ contains
       if (deck%analysis_kind /= 'impact' .or. len(opts%deck_path) == 0) return
       call pass_stops_to_children()                 ! a stop ends the runs going, keeps those done
       claimed = deck;  claimed%overwrite = deck%overwrite .or. opts%restart
-      call take_dead_claim(deck%prefix // trim(own_files(1)))
+      associate (path => deck%prefix // trim(own_files(1)))   ! a run killed before it wrote: its claim
+      i = 1
+      if (path_kind(path) == path_regular) then
+         if (file_size(path) == 0) call lock_file(path, lock, i, iomsg)
+      end if
+      if (i == 0) call remove_file(path, ignored)              ! i /= 0: not empty, or a run holds it
+      if (i == 0) call unlock_file(lock)
+      end associate
       call claim_results(claimed, own_files, claim, stat, errmsg)
       if (stat /= 0) return
       do i = 3, size(own_files)                     ! a plain run's files: not the run chosen's
@@ -120,20 +128,6 @@ contains
       if (stat == 0 .and. out%chosen == 0) write (error_unit, '(a)') 'impact: stopped by signal ' // &
          int_str(stop_caught()) // ' before the first run of the ladder ended: no results written'
    end subroutine run_accuracy
-
-   !> Removes the claim of a run killed before it wrote anything (`path` empty, unlocked).
-   subroutine take_dead_claim(path)
-      character(len=*), intent(in) :: path          !< the first file of the claim
-      type(file_lock_t) :: lock
-      character(len=msg_len) :: iomsg
-      integer :: st
-      if (path_kind(path) /= path_regular) return
-      if (file_size(path) /= 0) return
-      call lock_file(path, lock, st, iomsg)
-      if (st /= 0) return                           ! a run holds it
-      call remove_file(path, st)
-      call unlock_file(lock)
-   end subroutine take_dead_claim
 
    !> The launcher, the scene of the deck's model, level 0's mesh and the first levels planned.
    subroutine set_up(opts, deck, unit, base, la, lad, stat, errmsg)
@@ -500,7 +494,7 @@ contains
       do i = 1, size(lad%runs)
          call write_row(lad%runs(i), i == out%chosen)
       end do
-      write (u, '(a)') '# estimates of the finest level of each axis (src/accuracy/error_estimate.f90):'
+      write (u, '(a)') '# estimates of the finest level of each axis (src/accuracy/accuracy_ladder.f90):'
       write (u, '(a)') '# result axis levels observed_order asymptotic error(result''s unit) rule'
       axes = [lad%tx, lad%mx]
       do iq = 1, nq
@@ -601,7 +595,6 @@ contains
       end subroutine put
    end subroutine write_accuracy_summary
 
-   !> The accuracy run's words on standard output.
    subroutine report_terminal(unit, la, lad, out)
       integer, intent(in) :: unit                   !< standard output
       type(launcher_t), intent(in) :: la

@@ -93,7 +93,6 @@ contains
          end if
       end do
    contains
-      !> The comparison's variant was made and has results.
       logical function made(c)
          type(comparison_t), intent(in) :: c
          made = c%run > 0 .and. any(lad%runs(max(c%run, 1):c%run)%state == state_done)
@@ -225,7 +224,6 @@ contains
          if (cost(i) > cost(base)) base = i
       end do
    contains
-      !> A run at the settings of run i stays within the cap.
       pure logical function fits(i)
          integer, intent(in) :: i
          fits = la%c_base < 0.0_dp .or. la%spent + cost(i) <= la%cap
@@ -240,7 +238,11 @@ contains
       type(run_t), intent(inout) :: r               !< the variant (c's settings in)
       type(comparison_t), intent(inout) :: cmp      !< what it compares, or the note
       real(dp) :: quarters
-      integer :: f(2)
+      integer :: f(2), stat
+      type(deck_t) :: d
+      type(scene_t) :: s
+      type(laminate_t) :: lmt
+      character(len=msg_len) :: errmsg
       r%role = 'bend_twist';  r%variant = ''
       cmp%richer = 'keep';  cmp%simpler = 'drop'           ! &laminate bend_twist
       cmp%chosen_richer = .not. scene%averaged
@@ -262,28 +264,19 @@ contains
          r%name = trim(c%name) // '_bend_twist_keep'
          cmp%compared = 'the full plate with D16, D26 kept instead of D16 = D26 = 0 (' // trim(scene%domain) // ')'
       else
-         ! the paper's averaging: D16 = D26 = 0, on the smallest domain that allows
+         ! the paper's averaging: D16 = D26 = 0, on the smallest domain that allows (what 'auto' picks)
          r%variant(1) = "laminate.bend_twist='drop'"
-         r%cost_factor = reduced_quarters(deck)/quarters
+         d = deck
+         d%bend_twist = 'drop'
+         call model_laminate(d, lmt, s)
+         call choose_domain(d, s, stat, errmsg)
+         r%cost_factor = 4.0_dp/quarters
+         if (stat == 0) r%cost_factor = merge(1.0_dp, merge(2.0_dp, 4.0_dp, s%domain == 'half'), &
+                                              s%domain == 'quarter')/quarters
          r%name = trim(c%name) // '_bend_twist_drop'
          cmp%compared = 'D16 = D26 = 0 (the paper''s averaging, section 3.1) instead of D16, D26 kept'
       end if
    end subroutine bend_twist_variant
-
-   !> The quarters of the domain 'auto' picks once D16 and D26 are dropped (1, 2 or 4).
-   real(dp) function reduced_quarters(deck) result(quarters)
-      type(deck_t), intent(in) :: deck
-      type(deck_t) :: d
-      type(scene_t) :: s
-      type(laminate_t) :: lmt
-      integer :: stat
-      character(len=msg_len) :: errmsg
-      d = deck;  d%bend_twist = 'drop'
-      call model_laminate(d, lmt, s)
-      call choose_domain(d, s, stat, errmsg)
-      quarters = 4.0_dp
-      if (stat == 0) quarters = merge(1.0_dp, merge(2.0_dp, 4.0_dp, s%domain == 'half'), s%domain == 'quarter')
-   end function reduced_quarters
 
    !> The relative change of each result estimated that the other model of c makes (else 0).
    pure function model_changes(c, lad) result(change)
