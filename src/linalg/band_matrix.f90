@@ -135,22 +135,16 @@ contains
       type(band_matrix_t), intent(inout) :: a  !< the matrix, added into.
       integer, intent(in) :: i, j      !< row and column indices
       real(dp), intent(in) :: value  !< value added to A(i,j).
-      integer :: r, c
-      if (.not. band_in_band(a, i, j)) return
-      r = min(i, j)
-      c = max(i, j)
-      a%ab(a%kd + 1 + r - c, c) = a%ab(a%kd + 1 + r - c, c) + value
+      if (band_in_band(a, i, j)) a%ab(a%kd + 1 - abs(i - j), max(i, j)) = &
+         a%ab(a%kd + 1 - abs(i - j), max(i, j)) + value
    end subroutine band_add
 
    !> Entry A(i,j) of the (unfactored) matrix; zero outside the band.
    pure real(dp) function band_get(a, i, j)
       type(band_matrix_t), intent(in) :: a  !< the matrix.
       integer, intent(in) :: i, j      !< row and column indices
-      if (band_in_band(a, i, j)) then
-         band_get = a%ab(a%kd + 1 + min(i, j) - max(i, j), max(i, j))
-      else
-         band_get = 0.0_dp
-      end if
+      band_get = 0.0_dp
+      if (band_in_band(a, i, j)) band_get = a%ab(a%kd + 1 - abs(i - j), max(i, j))
    end function band_get
 
    !> y = A x (BLAS dsbmv), a not factored and x, y of its size (global_matvec,

@@ -134,21 +134,16 @@ contains
       type(skyline_matrix_t), intent(inout) :: sky  !< the matrix, added into.
       integer, intent(in) :: i, j      !< row and column indices
       real(dp), intent(in) :: value  !< value added to A(i,j).
-      integer :: k
-      if (.not. skyline_in_profile(sky, i, j)) return
-      k = sky%maxa(max(i, j)) + max(i, j) - min(i, j)
-      sky%a(k) = sky%a(k) + value
+      if (skyline_in_profile(sky, i, j)) sky%a(sky%maxa(max(i, j)) + abs(i - j)) = &
+         sky%a(sky%maxa(max(i, j)) + abs(i - j)) + value
    end subroutine skyline_add
 
    !> Entry A(i,j) of the (unfactored) matrix; zero outside the profile.
    pure real(dp) function skyline_get(sky, i, j)
       type(skyline_matrix_t), intent(in) :: sky  !< the matrix.
       integer, intent(in) :: i, j      !< row and column indices
-      if (skyline_in_profile(sky, i, j)) then
-         skyline_get = sky%a(sky%maxa(max(i, j)) + max(i, j) - min(i, j))
-      else
-         skyline_get = 0.0_dp
-      end if
+      skyline_get = 0.0_dp
+      if (skyline_in_profile(sky, i, j)) skyline_get = sky%a(sky%maxa(max(i, j)) + abs(i - j))
    end function skyline_get
 
    !> y = A x, column by column over the stored upper triangle; sky not
@@ -161,10 +156,9 @@ contains
       real(dp) :: aij
       integer :: i, j
       ! Each stored A(i,j), i < j, acts twice: y_i += A(i,j) x_j and
-      ! y_j += A(j,i) x_i; the diagonal once.
-      y = 0.0_dp
+      ! y_j += A(j,i) x_i; the diagonal once, first.
+      y = sky%a(sky%maxa(:sky%n)) * x
       do j = 1, sky%n
-         y(j) = y(j) + sky%a(sky%maxa(j)) * x(j)
          do i = skyline_first_row(sky, j), j - 1
             aij = sky%a(sky%maxa(j) + j - i)
             y(i) = y(i) + aij * x(j)

@@ -204,10 +204,8 @@ contains
       stat = 0
       if (a%chol%key /= 0) call chol_check(chol_copy(a%chol%key, b%chol%key), &
          'copying the factorization', stat, errmsg)
-      if (stat /= 0) then
-         b%analysed = .false.
-         b%factored = .false.
-      end if
+      b%analysed = b%analysed .and. stat == 0
+      b%factored = b%factored .and. stat == 0
    end subroutine sparse_copy_factor
 
    !> Position of A(i,j) in rowind and val, 0 when the pattern lacks it.
@@ -215,13 +213,12 @@ contains
       type(sparse_matrix_t), intent(in) :: a  !< the matrix.
       integer, intent(in) :: i, j  !< row and column indices.
       integer(int64) :: lo, hi, mid
-      integer :: r, c
+      integer :: r
       pos = 0
       if (min(i, j) < 1 .or. max(i, j) > a%n) return
       r = min(i, j)
-      c = max(i, j)
-      lo = a%colptr(c)
-      hi = a%colptr(c + 1) - 1
+      lo = a%colptr(max(i, j))
+      hi = a%colptr(max(i, j) + 1) - 1
       do while (lo <= hi)
          mid = (lo + hi) / 2
          if (a%rowind(mid) == r) then
