@@ -110,8 +110,8 @@ contains
             call scan_line(r, text, nline)
          end if
       end do lines_loop
-      if (r%err%stat == 0 .and. r%inside) call fail(r%err, r%groups(r%ngroup)%line, &
-         open_group_name(r) // ": no closing '/' (the group runs to the end of the deck)")
+      if (r%err%stat == 0 .and. r%inside) call fail(r%err, r%groups(r%ngroup)%line, '&' &
+         // r%groups(r%ngroup)%name // ": no closing '/' (the group runs to the end of the deck)")
       groups = r%groups(:r%ngroup)
       stat = r%err%stat
       line = r%err%line
@@ -159,8 +159,9 @@ contains
             if (.not. r%inside .and. j > i .and. name /= 'end') then
                call begin_group(r, name, ln)
             else if (.not. r%inside .and. r%ngroup > 0) then
-               call fail(r%err, ln, "text after the closing '/' of " // open_group_name(r) // ": '" &
-                  // shown_text(trim(s(i:))) // "' (outside the groups only comments, after '!')")
+               call fail(r%err, ln, "text after the closing '/' of &" // r%groups(r%ngroup)%name &
+                  // ": '" // shown_text(trim(s(i:))) // "' (outside the groups only comments, " &
+                  // "after '!')")
             else if (.not. r%inside) then
                call fail(r%err, ln, "text outside a namelist group: '" // shown_text(trim(s(i:))) &
                   // "' (a group starts with &name; comments start with '!')")
@@ -169,8 +170,8 @@ contains
                call build_assignments(r%toks(:r%ntok), r%groups(r%ngroup)%name, &
                   r%groups(r%ngroup)%assignments, r%err)
             else if (s(i:i) == '&') then
-               call fail(r%err, ln, open_group_name(r) // ": no closing '/' before the next group " &
-                  // shown_text(s(i:j)))
+               call fail(r%err, ln, '&' // r%groups(r%ngroup)%name // ": no closing '/' before " &
+                  // 'the next group ' // shown_text(s(i:j)))
             else
                call scan_token(r, s, i, ln, word_ends)
                cycle chars
@@ -228,7 +229,8 @@ contains
       if (j > len(s) .and. r%ngroup == 0) then            ! a --set value
          call fail(r%err, ln, 'a string has no closing ' // q)
       else if (j > len(s)) then
-         call fail(r%err, ln, open_group_name(r) // ': a string has no closing ' // q // ' on its line')
+         call fail(r%err, ln, '&' // r%groups(r%ngroup)%name // ': a string has no closing ' // q &
+            // ' on its line')
       else
          call push(r, tok_string, body(:n), ln)
          r%toks(r%ntok)%glued = s(max(1, i - 1):i - 1) == '*'   ! '*' ends the word before it
@@ -321,11 +323,10 @@ contains
             call fail(err, toks(k)%line, where // " = ...: a second '='")
             return
          end if
-         if (k > first .and. k < size(toks) .and. toks(k)%kind == tok_comma) then
-            if (toks(k - 1)%kind == tok_comma) then
-               call fail(err, toks(k)%line, where // ' = ...: an empty value between two commas')
-               return
-            end if
+         if (k > first .and. k < size(toks) .and. toks(k)%kind == tok_comma &
+             .and. toks(k - 1)%kind == tok_comma) then
+            call fail(err, toks(k)%line, where // ' = ...: an empty value between two commas')
+            return
          end if
       end do
       if (all(toks(first:k - 1)%kind == tok_comma)) then
@@ -405,13 +406,6 @@ contains
       if (r < 1) why = 'a repeat count r*c needs r >= 1'
       rest = word(star + 1:)
    end subroutine repeat_count
-
-   !> '&name' of the last group, for messages.
-   pure function open_group_name(r) result(name)
-      type(reader_t), intent(in) :: r           !< the reading, with a group
-      character(len=:), allocatable :: name
-      name = '&' // r%groups(r%ngroup)%name
-   end function open_group_name
 
    !> Records the first error: stat 1, its line and what is wrong.
    subroutine fail(err, ln, message)

@@ -10,7 +10,7 @@ module band_matrix
    implicit none
    private
    public :: band_matrix_t, check_pivot, check_pivots
-   public :: band_init, band_zero, band_in_band, band_add, band_get, &
+   public :: band_init, band_in_band, band_add, band_get, &
              band_matvec, band_factor, band_solve, band_axpy
 
    !> Relative pivot tolerance: pivot d_j <= pivot_rel_tol*|A(j,j)| fails
@@ -43,10 +43,9 @@ module band_matrix
    !> Cholesky factor U (A = U^T U, same layout); afterwards the matrix can
    !> only be solved with, not added into or multiplied with, until band_zero.
    !>
-   !> Pivot rule (check_pivot, the same for every storage): equation j fails
-   !> when its pivot d_j = U(j,j)**2 is not greater than pivot_rel_tol * |A(j,j)|,
-   !> A(j,j) before factorisation: negative, zero and rounding-zero pivots
-   !> (an unrestrained rigid-body mode).
+   !> Pivot rule (check_pivot, the same for every storage): equation j fails when its pivot
+   !> d_j = U(j,j)**2 is not greater than pivot_rel_tol * |A(j,j)|, A(j,j) before
+   !> factorisation: negative, zero and rounding-zero pivots (an unrestrained rigid-body mode).
    type :: band_matrix_t
       integer :: n = 0  !< order of the matrix (number of equations).
       integer :: kd = 0  !< half-bandwidth: A(i,j) = 0 for |i-j| > kd.
@@ -99,7 +98,7 @@ contains
          write (msg, '(a,i0,a,i0,a)') 'band_init: band of ', kd + 1, ' x ', n, &
             ' entries exceeds the default integer range'
       else
-         allocate (a%ab(kd + 1, n), stat=stat)   ! (gfortran 12's errmsg= would say "an allocated object")
+         allocate (a%ab(kd + 1, n), source=0.0_dp, stat=stat)  ! (gfortran 12's errmsg= misleads)
          if (stat /= 0) write (msg, '(a,i0,a,i0,a,i0,a)') 'band_init: out of memory: the band matrix of ', &
             kd + 1, ' x ', n, ' reals (', (int(kd + 1, int64)*int(n, int64)*8_int64)/1048576_int64, &
             ' MiB) cannot be allocated'
@@ -111,15 +110,7 @@ contains
       end if
       a%n = n
       a%kd = kd
-      a%ab = 0.0_dp
    end subroutine band_init
-
-   !> Set every entry to zero and forget any factorisation.
-   subroutine band_zero(a)
-      type(band_matrix_t), intent(inout) :: a  !< the matrix (its structure is kept).
-      if (allocated(a%ab)) a%ab = 0.0_dp
-      a%factored = .false.
-   end subroutine band_zero
 
    !> True when A(i,j) is a valid index pair inside the stored band.
    pure logical function band_in_band(a, i, j)
@@ -135,22 +126,16 @@ contains
       type(band_matrix_t), intent(inout) :: a  !< the matrix, added into.
       integer, intent(in) :: i, j      !< row and column indices
       real(dp), intent(in) :: value  !< value added to A(i,j).
-      integer :: r, c
-      if (.not. band_in_band(a, i, j)) return
-      r = min(i, j)
-      c = max(i, j)
-      a%ab(a%kd + 1 + r - c, c) = a%ab(a%kd + 1 + r - c, c) + value
+      if (band_in_band(a, i, j)) a%ab(a%kd + 1 - abs(i - j), max(i, j)) = &
+         a%ab(a%kd + 1 - abs(i - j), max(i, j)) + value
    end subroutine band_add
 
    !> Entry A(i,j) of the (unfactored) matrix; zero outside the band.
    pure real(dp) function band_get(a, i, j)
       type(band_matrix_t), intent(in) :: a  !< the matrix.
       integer, intent(in) :: i, j      !< row and column indices
-      if (band_in_band(a, i, j)) then
-         band_get = a%ab(a%kd + 1 + min(i, j) - max(i, j), max(i, j))
-      else
-         band_get = 0.0_dp
-      end if
+      band_get = 0.0_dp
+      if (band_in_band(a, i, j)) band_get = a%ab(a%kd + 1 - abs(i - j), max(i, j))
    end function band_get
 
    !> y = A x (BLAS dsbmv), a not factored and x, y of its size (global_matvec,
@@ -245,10 +230,9 @@ contains
       errmsg = msg
    end subroutine check_pivot
 
-   !> The pivot rule on the pivots of the equations eqs, in the order of
-   !> elimination, then the equation `stopped` at which the factorization met
-   !> a pivot <= 0 (0: none): the first that fails gives stat = 1, bad_eq and
-   !> the message (band, and sparse_matrix's CHOLMOD factor).
+   !> The pivot rule on the pivots of the equations eqs, in the order of elimination, then the
+   !> equation `stopped` at which the factorization met a pivot <= 0 (0: none): the first that
+   !> fails gives stat = 1, bad_eq and the message (band, and sparse_matrix's CHOLMOD factor).
    pure subroutine check_pivots(eqs, pivots, diag, stopped, stat, errmsg, bad_eq)
       integer, intent(in) :: eqs(:)               !< the equations, in the order of elimination
       real(dp), intent(in) :: pivots(:)           !< their pivots d_j

@@ -203,17 +203,14 @@ static cholmod_factor *analyse(cholmod_sparse *A, cholmod_common *c)
         return L;
     }
     L = cholmod_l_analyze(A, c);
-    if (L != NULL) {
-        SuiteSparse_long *perm = malloc((size_t) n * sizeof *perm);
-        if (perm != NULL) {
-            memcpy(perm, L->Perm, (size_t) n * sizeof *perm);
-            free(order_cache.perm);
-            order_cache.perm = perm;
-            order_cache.n = n;
-            order_cache.nnz = nnz;
-            order_cache.hash = hash;
-        }
-    }
+    SuiteSparse_long *perm = L == NULL ? NULL : malloc((size_t) n * sizeof *perm);
+    if (perm == NULL) return L;     /* (no memory for the cache: analysed all the same) */
+    memcpy(perm, L->Perm, (size_t) n * sizeof *perm);
+    free(order_cache.perm);
+    order_cache.perm = perm;
+    order_cache.n = n;
+    order_cache.nnz = nnz;
+    order_cache.hash = hash;
     return L;
 }
 
@@ -278,10 +275,8 @@ int impact_cholmod_diagonal(long long key, long long n, double *diag, long long 
     L = e->L;
     if (L == NULL || (long long) L->n != n || L->xtype != CHOLMOD_REAL) return IMPACT_CHOLMOD_INVALID;
     x = L->x;
-    for (k = 0; k < n; k++) {
-        diag[k] = 0.0;
-        perm[k] = (long long) ((const SuiteSparse_long *) L->Perm)[k] + 1;
-    }
+    memset(diag, 0, (size_t) n * sizeof *diag);   /* (0.0) */
+    for (k = 0; k < n; k++) perm[k] = (long long) ((const SuiteSparse_long *) L->Perm)[k] + 1;
     if (L->is_super) {
         const SuiteSparse_long *super = L->super, *pi = L->pi, *px = L->px;
         size_t s;
@@ -301,17 +296,10 @@ int impact_cholmod_diagonal(long long key, long long n, double *diag, long long 
 int impact_cholmod_solve(long long key, long long n, double *b)
 {
     entry_t *e = find(key);
-    cholmod_dense B;
     if (e == NULL) return IMPACT_CHOLMOD_NO_HANDLE;
     if (e->L == NULL || (long long) e->L->n != n || e->L->xtype != CHOLMOD_REAL) return IMPACT_CHOLMOD_INVALID;
-    memset(&B, 0, sizeof B);
-    B.nrow = (size_t) n;
-    B.ncol = 1;
-    B.nzmax = (size_t) n;
-    B.d = (size_t) n;
-    B.x = b;
-    B.xtype = CHOLMOD_REAL;
-    B.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense B = {.nrow = (size_t) n, .ncol = 1, .nzmax = (size_t) n, .d = (size_t) n, .x = b,
+                       .xtype = CHOLMOD_REAL, .dtype = CHOLMOD_DOUBLE};
     if (!cholmod_l_solve2(CHOLMOD_A, e->L, &B, NULL, &e->X, NULL, &e->Y, &e->E, &e->c))
         return code_of(&e->c);
     memcpy(b, e->X->x, (size_t) n * sizeof(double));

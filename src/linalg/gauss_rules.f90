@@ -42,18 +42,14 @@ contains
       real(dp) :: x(n), wx(n)
       integer :: i, j
       call gauss_1d(n, x, wx)
-      rows: do j = 1, n
-         cols: do i = 1, n
-            pts(:, i + n*(j-1)) = [x(i), x(j)]
-            w(i + n*(j-1)) = wx(i)*wx(j)
-         end do cols
-      end do rows
+      pts(1, :) = [((x(i), i = 1, n), j = 1, n)]
+      pts(2, :) = [((x(j), i = 1, n), j = 1, n)]
+      w = [((wx(i)*wx(j), i = 1, n), j = 1, n)]
    end subroutine gauss_2d
 
-   !> The n-point Gauss-Legendre rule on [-1, 1] for any n >= 1, by the
-   !> Golub-Welsch algorithm: the abscissae are the eigenvalues of the
-   !> symmetric tridiagonal Jacobi matrix of the Legendre polynomials
-   !> (off-diagonal k/sqrt(4k^2 - 1)), the weights 2 v_1^2 from the first
+   !> The n-point Gauss-Legendre rule on [-1, 1] for any n >= 1, by the Golub-Welsch algorithm:
+   !> the abscissae are the eigenvalues of the symmetric tridiagonal Jacobi matrix of the
+   !> Legendre polynomials (off-diagonal k/sqrt(4k^2 - 1)), the weights 2 v_1^2 from the first
    !> components of its normalised eigenvectors (LAPACK dstev).
    subroutine gauss_legendre(n, xi, w, stat)
       integer, intent(in) :: n          !< number of points, >= 1
@@ -73,9 +69,7 @@ contains
       real(dp) :: off(max(n - 1, 1)), z(n, n), work(max(2*n - 2, 1))
       integer :: k
       xi = 0.0_dp
-      do k = 1, n - 1
-         off(k) = real(k, dp)/sqrt(4.0_dp*real(k, dp)**2 - 1.0_dp)
-      end do
+      off(:n - 1) = [(real(k, dp)/sqrt(4.0_dp*real(k, dp)**2 - 1.0_dp), k = 1, n - 1)]
       call dstev('V', n, xi, off, z, n, work, stat)
       w = 2.0_dp*z(1, :)**2
    end subroutine gauss_legendre

@@ -8,13 +8,11 @@
 module global_matrix
    use kinds, only: dp, msg_len
    use number_text, only: int_str
-   use band_matrix, only: band_matrix_t, band_init, band_zero, band_in_band, &
-                          band_add, band_get, band_matvec, band_factor, band_solve, &
-                          band_axpy
-   use skyline_matrix, only: skyline_matrix_t, skyline_init, skyline_zero, &
-                             skyline_in_profile, skyline_add, skyline_get, &
-                             skyline_half_bandwidth, skyline_matvec, &
-                             skyline_factor, skyline_solve, skyline_axpy
+   use band_matrix, only: band_matrix_t, band_init, band_in_band, band_add, band_get, band_matvec, &
+                          band_factor, band_solve, band_axpy
+   use skyline_matrix, only: skyline_matrix_t, skyline_init, skyline_in_profile, skyline_add, &
+                             skyline_get, skyline_half_bandwidth, skyline_matvec, skyline_factor, &
+                             skyline_solve, skyline_axpy
    use sparse_matrix, only: sparse_matrix_t, sparse_init, sparse_zero, sparse_in_pattern, sparse_add, &
                             sparse_get, sparse_matvec, sparse_axpy, sparse_factor, sparse_solve, &
                             sparse_half_bandwidth, sparse_entries, sparse_release, sparse_copy_factor
@@ -102,11 +100,11 @@ contains
    !> error; the structure is kept.
    subroutine global_zero(g)
       type(global_matrix_t), intent(inout) :: g  !< the matrix.
-      select case (trim(g%storage))
-      case ('band'); call band_zero(g%band)
-      case ('skyline'); call skyline_zero(g%sky)
-      case ('sparse'); call sparse_zero(g%sparse)
-      end select
+      if (allocated(g%band%ab)) g%band%ab = 0.0_dp
+      if (allocated(g%sky%a)) g%sky%a = 0.0_dp
+      g%band%factored = .false.
+      g%sky%factored = .false.
+      call sparse_zero(g%sparse)                    ! (nothing unless sparse)
       g%deferred_error = ''
    end subroutine global_zero
 
@@ -135,12 +133,10 @@ contains
       else
          check: do q = 1, size(eqs)
             do p = 1, size(eqs)
-               ip = eqs(p)
-               iq = eqs(q)
-               if (ip == 0 .or. iq == 0 .or. ip > iq) cycle
-               if (.not. in_structure(g, ip, iq)) then
-                  write (msg, '(a,i0,a,i0,a)') 'global_assemble: entry (', ip, ',', &
-                     iq, ') is outside the structure found by global_init'
+               if (eqs(p) == 0 .or. eqs(q) == 0 .or. eqs(p) > eqs(q)) cycle
+               if (.not. in_structure(g, eqs(p), eqs(q))) then
+                  write (msg, '(a,i0,a,i0,a)') 'global_assemble: entry (', eqs(p), ',', &
+                     eqs(q), ') is outside the structure found by global_init'
                   exit check
                end if
             end do
@@ -153,10 +149,9 @@ contains
 
       columns: do q = 1, size(eqs)
          iq = eqs(q)
-         if (iq == 0) cycle columns
          do p = 1, size(eqs)
             ip = eqs(p)
-            if (ip == 0 .or. ip > iq) cycle
+            if (ip == 0 .or. iq == 0 .or. ip > iq) cycle
             select case (g%storage)
             case ('band'); call band_add(g%band, ip, iq, ke(p, q))
             case ('skyline'); call skyline_add(g%sky, ip, iq, ke(p, q))
@@ -214,8 +209,7 @@ contains
       if (stat /= 0) call report(dst, 'global_copy: ' // trim(msg))
    end subroutine global_copy
 
-   !> Release everything g holds (CHOLMOD's factor included); g is then as
-   !> before global_init.
+   !> Release everything g holds (CHOLMOD's factor included); g is then as before global_init.
    subroutine global_release(g)
       type(global_matrix_t), intent(inout) :: g  !< the matrix.
       if (g%storage == 'sparse') call sparse_release(g%sparse)
@@ -317,8 +311,7 @@ contains
       usable = stat == 0
    end function usable
 
-   !> Half-bandwidth: the largest j - i of a stored entry (band: kd); 0 before
-   !> global_init.
+   !> Half-bandwidth: the largest j - i of a stored entry (band: kd); 0 before global_init.
    pure integer function global_bandwidth(g)
       type(global_matrix_t), intent(in) :: g  !< the matrix.
       select case (trim(g%storage))
@@ -394,8 +387,7 @@ contains
       integer :: k
       t = s
       do k = 1, len(s)
-         if (s(k:k) >= 'A' .and. s(k:k) <= 'Z') &
-            t(k:k) = achar(iachar(s(k:k)) + iachar('a') - iachar('A'))
+         if (s(k:k) >= 'A' .and. s(k:k) <= 'Z') t(k:k) = achar(iachar(s(k:k)) + 32)   ! ASCII
       end do
    end function lower
 

@@ -9,7 +9,7 @@ module skyline_matrix
    implicit none
    private
    public :: skyline_matrix_t
-   public :: skyline_init, skyline_zero, skyline_in_profile, skyline_add, skyline_get, &
+   public :: skyline_init, skyline_in_profile, skyline_add, skyline_get, &
              skyline_half_bandwidth, skyline_matvec, skyline_factor, skyline_solve, skyline_axpy
 
    !> Storage scheme (the only place it is documented)
@@ -40,11 +40,10 @@ module skyline_matrix
    !> e.g. A(1,4) is at maxa(4) + 4 - 1 = 9, A(4,5) at maxa(5) + 5 - 4 = 11.
    !> A(i,j) and A(j,i) are one stored number (skyline_add mirrors i > j).
    !>
-   !> After skyline_factor the same addresses hold A = L D L^T (L unit lower
-   !> triangular, D diagonal): a(maxa(j)) = d_j and a(maxa(j) + j - i) = l_ij,
-   !> meaning L(j,i), for m_j <= i < j. L has the profile of A (no fill-in
-   !> outside it), which is why the profile is the storage.
-   !> The pivot rule: band_matrix's check_pivot on d_j.
+   !> After skyline_factor the same addresses hold A = L D L^T (L unit lower triangular, D
+   !> diagonal): a(maxa(j)) = d_j and a(maxa(j) + j - i) = l_ij, meaning L(j,i), for
+   !> m_j <= i < j. L has the profile of A (no fill-in outside it), which is why the profile is
+   !> the storage. The pivot rule: band_matrix's check_pivot on d_j.
    type :: skyline_matrix_t
       integer :: n = 0  !< order of the matrix (number of equations).
       integer, allocatable :: maxa(:)  !< address of the diagonal of column j in a; maxa(n+1) = nwk + 1.
@@ -65,7 +64,6 @@ contains
       integer(int64) :: nwk
       integer :: j, k
       stat = 1
-      nwk = 0
       if (n < 1 .or. size(first_row) /= n) then
          write (msg, '(a,i0,a,i0)') 'skyline_init: order n = ', n, ' with size(first_row) = ', size(first_row)
       else if (any(first_row < 1 .or. first_row > [(k, k = 1, n)])) then
@@ -76,17 +74,13 @@ contains
          if (nwk >= int(huge(n), int64)) then
             write (msg, '(a,i0,a)') 'skyline_init: profile of ', nwk, ' entries exceeds the default integer range'
          else
-            stat = 0
+            allocate (sky%maxa(n + 1), sky%a(nwk), stat=stat, errmsg=msg)
+            if (stat /= 0) msg = 'skyline_init: allocation failed: ' // trim(msg)
          end if
       end if
       if (stat /= 0) then
-         errmsg = msg
-         return
-      end if
-      allocate (sky%maxa(n + 1), sky%a(nwk), stat=stat, errmsg=msg)
-      if (stat /= 0) then
          stat = 1
-         errmsg = 'skyline_init: allocation failed: ' // trim(msg)
+         errmsg = msg
          return
       end if
       ! maxa(j+1) = maxa(j) + (column height j - m_j) + 1 (the diagonal).
@@ -97,13 +91,6 @@ contains
       sky%n = n
       sky%a = 0.0_dp
    end subroutine skyline_init
-
-   !> Set every entry to zero and forget any factorisation.
-   subroutine skyline_zero(sky)
-      type(skyline_matrix_t), intent(inout) :: sky  !< the matrix (its profile is kept).
-      if (allocated(sky%a)) sky%a = 0.0_dp
-      sky%factored = .false.
-   end subroutine skyline_zero
 
    !> First stored row m_j of column j.
    pure integer function skyline_first_row(sky, j)
@@ -134,26 +121,20 @@ contains
       type(skyline_matrix_t), intent(inout) :: sky  !< the matrix, added into.
       integer, intent(in) :: i, j      !< row and column indices
       real(dp), intent(in) :: value  !< value added to A(i,j).
-      integer :: k
-      if (.not. skyline_in_profile(sky, i, j)) return
-      k = sky%maxa(max(i, j)) + max(i, j) - min(i, j)
-      sky%a(k) = sky%a(k) + value
+      if (skyline_in_profile(sky, i, j)) sky%a(sky%maxa(max(i, j)) + abs(i - j)) = &
+         sky%a(sky%maxa(max(i, j)) + abs(i - j)) + value
    end subroutine skyline_add
 
    !> Entry A(i,j) of the (unfactored) matrix; zero outside the profile.
    pure real(dp) function skyline_get(sky, i, j)
       type(skyline_matrix_t), intent(in) :: sky  !< the matrix.
       integer, intent(in) :: i, j      !< row and column indices
-      if (skyline_in_profile(sky, i, j)) then
-         skyline_get = sky%a(sky%maxa(max(i, j)) + max(i, j) - min(i, j))
-      else
-         skyline_get = 0.0_dp
-      end if
+      skyline_get = 0.0_dp
+      if (skyline_in_profile(sky, i, j)) skyline_get = sky%a(sky%maxa(max(i, j)) + abs(i - j))
    end function skyline_get
 
-   !> y = A x, column by column over the stored upper triangle; sky not
-   !> factored and x, y of its size (global_matvec, the one caller, checks
-   !> both).
+   !> y = A x, column by column over the stored upper triangle; sky not factored and x, y of
+   !> its size (global_matvec, the one caller, checks both).
    subroutine skyline_matvec(sky, x, y)
       type(skyline_matrix_t), intent(in) :: sky  !< the matrix, not factored
       real(dp), intent(in) :: x(:)               !< vector of length n
@@ -161,10 +142,9 @@ contains
       real(dp) :: aij
       integer :: i, j
       ! Each stored A(i,j), i < j, acts twice: y_i += A(i,j) x_j and
-      ! y_j += A(j,i) x_i; the diagonal once.
-      y = 0.0_dp
+      ! y_j += A(j,i) x_i; the diagonal once, first.
+      y = sky%a(sky%maxa(:sky%n)) * x
       do j = 1, sky%n
-         y(j) = y(j) + sky%a(sky%maxa(j)) * x(j)
          do i = skyline_first_row(sky, j), j - 1
             aij = sky%a(sky%maxa(j) + j - i)
             y(i) = y(i) + aij * x(j)

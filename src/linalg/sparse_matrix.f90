@@ -22,10 +22,9 @@ module sparse_matrix
 
    !> Storage scheme (the only place it is documented)
    !> ------------------------------------------------
-   !> Only the upper triangle is kept, and in it only the pairs (i, j), i <= j,
-   !> that some element couples (both equations are freedoms of one element;
-   !> the diagonal always). Column j holds its rows ascending, the diagonal
-   !> last, in the packed arrays rowind and val:
+   !> Only the upper triangle is kept, and in it only the pairs (i, j), i <= j, that some
+   !> element couples (both equations are freedoms of one element; the diagonal always).
+   !> Column j holds its rows ascending, the diagonal last, in the packed arrays rowind and val:
    !>
    !>     val(p) = A(rowind(p), j)    for  colptr(j) <= p < colptr(j+1)
    !>     nnz = colptr(n+1) - 1       (stored reals)
@@ -39,21 +38,18 @@ module sparse_matrix
    !>     row 4  |                a44  a45 |               a14 a24 a34 a44 | a35 a45 a55
    !>     row 5  | sym                 a55 |
    !>
-   !> The pattern comes from the element freedom table alone (sparse_init),
-   !> so M, K_L and K_L + 4/dt^2 M of one model share it. A(i,j) and A(j,i) are
-   !> one stored number (sparse_add mirrors i > j). For a plate this keeps
-   !> about 40 reals per equation where band storage keeps kd + 1 (hundreds to
-   !> thousands).
+   !> The pattern comes from the element freedom table alone (sparse_init), so M, K_L and
+   !> K_L + 4/dt^2 M of one model share it. A(i,j) and A(j,i) are one stored number (sparse_add
+   !> mirrors i > j). For a plate this keeps about 40 reals per equation where band storage
+   !> keeps kd + 1 (hundreds to thousands).
    !>
-   !> Factorization: CHOLMOD orders the equations to reduce the fill (AMD, or
-   !> METIS), analyses the factor's structure once per pattern (kept: a
-   !> refactorization after sparse_zero costs only the numbers), checks its
-   !> size against the machine's memory, and computes P A P^T = L L^T with
-   !> dense BLAS; the values of A are then released. The factor lives in
-   !> CHOLMOD's memory until sparse_release; b = a shares it,
-   !> sparse_copy_factor copies it. The pivot rule (band_matrix's check_pivot)
-   !> on d_j = L(k,k)**2 in the order of elimination: for a mechanism the
-   !> equation named may be another of the same mechanism than band's.
+   !> Factorization: CHOLMOD orders the equations to reduce the fill (AMD, or METIS), analyses
+   !> the factor's structure once per pattern (kept: a refactorization after sparse_zero costs
+   !> only the numbers), checks its size against the machine's memory, and computes
+   !> P A P^T = L L^T with dense BLAS; the values of A are then released. The factor lives in
+   !> CHOLMOD's memory until sparse_release; b = a shares it, sparse_copy_factor copies it. The
+   !> pivot rule (band_matrix's check_pivot) on d_j = L(k,k)**2 in the order of elimination:
+   !> for a mechanism the equation named may be another of the same mechanism than band's.
    type :: sparse_matrix_t
       integer :: n = 0  !< order of the matrix (number of equations).
       integer(c_long_long), allocatable :: colptr(:)  !< start of column j in rowind and val, colptr(n+1) = nnz + 1.
@@ -68,8 +64,7 @@ module sparse_matrix
 
 contains
 
-   !> The pattern of the element freedom table (above sparse_matrix_t) and a zero
-   !> matrix on it.
+   !> The pattern of the element freedom table (above sparse_matrix_t) and a zero matrix on it.
    subroutine sparse_init(a, n, elem_eq, stat, errmsg)
       type(sparse_matrix_t), intent(out) :: a  !< the matrix, (re)defined here.
       integer, intent(in) :: n  !< order of the matrix, n >= 1.
@@ -115,8 +110,7 @@ contains
       integer, intent(inout), optional :: rowind(:)  !< the rows, stored when present.
       integer, allocatable :: mark(:)
       integer :: i, j, k, p
-      allocate (mark(n))
-      mark = 0
+      allocate (mark(n), source=0)
       if (.not. present(rowind)) next = 0
       rows: do i = 1, n
          call visit(i)               ! the diagonal, even of a freedom no element holds
@@ -149,8 +143,7 @@ contains
       integer, allocatable, intent(out) :: elems(:)  !< the elements, equation by equation.
       integer, allocatable :: fill(:)
       integer :: e, k, eq
-      allocate (first(n + 1))
-      first = 0
+      allocate (first(n + 1), source=0)
       do e = 1, size(elem_eq, 2)
          do k = 1, size(elem_eq, 1)
             eq = elem_eq(k, e)
@@ -204,10 +197,8 @@ contains
       stat = 0
       if (a%chol%key /= 0) call chol_check(chol_copy(a%chol%key, b%chol%key), &
          'copying the factorization', stat, errmsg)
-      if (stat /= 0) then
-         b%analysed = .false.
-         b%factored = .false.
-      end if
+      b%analysed = b%analysed .and. stat == 0
+      b%factored = b%factored .and. stat == 0
    end subroutine sparse_copy_factor
 
    !> Position of A(i,j) in rowind and val, 0 when the pattern lacks it.
@@ -215,13 +206,12 @@ contains
       type(sparse_matrix_t), intent(in) :: a  !< the matrix.
       integer, intent(in) :: i, j  !< row and column indices.
       integer(int64) :: lo, hi, mid
-      integer :: r, c
+      integer :: r
       pos = 0
       if (min(i, j) < 1 .or. max(i, j) > a%n) return
       r = min(i, j)
-      c = max(i, j)
-      lo = a%colptr(c)
-      hi = a%colptr(c + 1) - 1
+      lo = a%colptr(max(i, j))
+      hi = a%colptr(max(i, j) + 1) - 1
       do while (lo <= hi)
          mid = (lo + hi) / 2
          if (a%rowind(mid) == r) then
@@ -253,8 +243,7 @@ contains
       if (p > 0) a%val(p) = a%val(p) + value
    end subroutine sparse_add
 
-   !> Entry A(i,j) of the unfactored matrix; zero outside the pattern (and
-   !> once factored).
+   !> Entry A(i,j) of the unfactored matrix; zero outside the pattern (and once factored).
    pure real(dp) function sparse_get(a, i, j)
       type(sparse_matrix_t), intent(in) :: a  !< the matrix.
       integer, intent(in) :: i, j  !< row and column indices.
@@ -273,18 +262,16 @@ contains
       real(dp), intent(out) :: y(:)  !< result A x, length n.
       integer(int64) :: p
       integer :: i, j
-      real(dp) :: xj, yj
+      real(dp) :: yj
       y = 0.0_dp
       do j = 1, a%n
-         xj = x(j)
          yj = 0.0_dp
          do p = a%colptr(j), a%colptr(j + 1) - 2        ! above the diagonal
             i = a%rowind(p)
-            y(i) = y(i) + a%val(p) * xj
+            y(i) = y(i) + a%val(p) * x(j)
             yj = yj + a%val(p) * x(i)
          end do
-         p = a%colptr(j + 1) - 1                          ! the diagonal, last
-         y(j) = y(j) + yj + a%val(p) * xj
+         y(j) = y(j) + yj + a%val(a%colptr(j + 1) - 1) * x(j)     ! the diagonal, last
       end do
    end subroutine sparse_matvec
 

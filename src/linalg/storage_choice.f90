@@ -40,12 +40,11 @@ contains
       end if
    end function resolve_storage
 
-   !> Memory of the run's matrices in a storage, bytes, from the equations N
-   !> and the half-bandwidth kd estimated from the mesh (the deck's check):
-   !> band, skyline: [M], [K_L] and K_L + 4/dt^2 M, N (kd + 1) reals each;
-   !> sparse: entry_bytes for each entry of the upper triangle (M, K_L, the
-   !> sum, CHOLMOD's copies), and factor_entry_bytes for each of the factor's
-   !> 0.6 N log2(N)^2 entries (a fit to CHOLMOD's analysis of plates; the run
+   !> Memory of the run's matrices in a storage, bytes, from the equations N and the
+   !> half-bandwidth kd estimated from the mesh (the deck's check): band, skyline: [M], [K_L]
+   !> and K_L + 4/dt^2 M, N (kd + 1) reals each; sparse: entry_bytes for each entry of the
+   !> upper triangle (M, K_L, the sum, CHOLMOD's copies), and factor_entry_bytes for each of
+   !> the factor's 0.6 N log2(N)^2 entries (a fit to CHOLMOD's analysis of plates; the run
    !> checks the analysis itself, sparse_matrix).
    pure function matrices_memory(storage, neq, kd) result(bytes)
       character(len=*), intent(in) :: storage  !< 'band', 'skyline' or 'sparse' (resolved).
