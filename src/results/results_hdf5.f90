@@ -352,25 +352,24 @@ contains
       integer, intent(inout) :: stat                !< 0 on success; the first failure is kept
       character(len=*), intent(inout) :: why        !< reason on failure
       character(len=msg_len) :: text
-      integer :: c, ios
-      do c = 1, size(rf%hist)
-         call close_one(rf%hist(c))
-      end do
-      do c = 1, size(rf%snaps)
-         call close_one(rf%snaps(c))
-      end do
+      integer :: ios
+      call close_all(rf%hist)
+      call close_all(rf%snaps)
       if (rf%fid < 0) return
       call h5io_close(rf%fid, ios, text)
       rf%fid = -1
       call keep_failure(stat, why, ios, text)
    contains
-      subroutine close_one(did)
-         integer(hid_t), intent(inout) :: did
-         if (did < 0) return
-         call h5io_close_dataset(did, ios, text)
-         did = -1
-         call keep_failure(stat, why, ios, text)
-      end subroutine close_one
+      subroutine close_all(did)
+         integer(hid_t), intent(inout) :: did(:)
+         integer :: c
+         do c = 1, size(did)
+            if (did(c) < 0) cycle
+            call h5io_close_dataset(did(c), ios, text)
+            did(c) = -1
+            call keep_failure(stat, why, ios, text)
+         end do
+      end subroutine close_all
    end subroutine close_window
 
    !> Another write failed (a full disk): the file is left as at its last flush.
