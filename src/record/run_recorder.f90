@@ -471,7 +471,9 @@ contains
       call damage_close(rec%damage, model, solver%damage, s, rec%h5, dstat, dtext)
       call summary_integer(s, 'warnings', rec%warnings)
       call summary_real(s, 'cpu_s', 'cpu', 's', cpu_s, 1.0_dp)
-      call close_history(rec)
+      if (rec%hist_unit >= 0) close (rec%hist_unit, iostat=ios)
+      rec%hist_unit = -1
+      call close_probe(rec%hist_probe)
       if (.not. allocated(rec%hist_path)) rec%hist_path = deck%prefix // '_history.dat'
       call write_summary_file(deck, s, stat, errmsg)
       call keep_failure(stat, errmsg, dstat, dtext)
@@ -576,22 +578,15 @@ contains
       if (stat /= 0) then
          ! a full disk, the file-size limit: the history is cut back to its last whole row
          errmsg = rec%hist_path // ': cannot write a row: ' // trim(iomsg)
-         call close_history(rec)
+         close (rec%hist_unit, iostat=ios)
+         rec%hist_unit = -1
+         call close_probe(rec%hist_probe)
          call truncate_file(rec%hist_path, rec%hist_bytes, ios)
          call results_leave(rec%h5)
          return
       end if
       call results_append_history(rec%h5, row(:rec%ncol), stat, errmsg)
    end subroutine write_row
-
-   !> The history file closed (its unit and its probe).
-   subroutine close_history(rec)
-      type(record_t), intent(inout) :: rec               !< the record
-      integer :: ios
-      if (rec%hist_unit >= 0) close (rec%hist_unit, iostat=ios)
-      rec%hist_unit = -1
-      call close_probe(rec%hist_probe)
-   end subroutine close_history
 
    !> max(a, b) that keeps a NaN (Fortran's max may drop it).
    pure real(dp) function nan_max(a, b)
