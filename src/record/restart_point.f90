@@ -20,7 +20,7 @@ module restart_point
    use newmark, only: newmark_t
    use result_files, only: reserve_summary, results_claim_t, result_suffixes, claim_results, claim_left_empty
    use process_stop, only: remove_on_stop
-   use results_hdf5, only: results_reopen, results_point_t, results_point
+   use results_hdf5, only: results_open, results_point_t, results_point
    use run_recorder, only: record_t, record_settings, nwarn
    use progress_line, only: progress_start
    use step_peak, only: peak_track_t
@@ -218,7 +218,7 @@ contains
          solver%response_solves = counted
       end if
       if (stat == 0) call reopen_history(deck, rec, stat, errmsg)
-      if (stat == 0 .and. h5) call results_reopen(deck, model%msh, pt, rec%h5, stat, errmsg)
+      if (stat == 0 .and. h5) call results_open(deck, model%msh, rec%h5, stat, errmsg, pt)
       if (stat == 0) call reserve_summary(deck, stat, errmsg)
       if (stat == 0) write (output_unit, '(a)') 'restart: the run continues after step ' // int_str(step) // ' (' &
          // path // ')'

@@ -24,7 +24,7 @@ module results_hdf5
       xdmf_grow, xdmf_cut, xdmf_peak, xdmf_close
    implicit none
    private
-   public :: results_file_t, results_point_t, results_point, results_open, results_reopen, results_append_history, results_state, &
+   public :: results_file_t, results_point_t, results_point, results_open, results_append_history, results_state, &
              results_tick, results_flush, results_leave, results_closing, results_finish, attr_text, &
              attr_unit
 
@@ -88,7 +88,7 @@ contains
                            rf%peak_force, rf%peak_fields)
    end function results_point
 
-   !> What results_open and results_reopen share; nothing is opened.
+   !> What results_open with and without a restart point shares; nothing is opened.
    subroutine prepare(deck, msh, rf)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(mesh_t), intent(in) :: msh               !< the mesh with its equation numbers
@@ -105,95 +105,74 @@ contains
    !> Writes all but what grows (deck, mesh, empty series, /peak, /summary status 'running') under
    !> <prefix>.h5.tmp and renames it into place; from then on the file is open only while it is
    !> written, in SWMR mode, which keeps it readable on disk at every instant (a kill inside a write
-   !> leaves it marked open: h5clear -s, or impact --restart, clears the mark).
-   subroutine results_open(deck, msh, rf, stat, errmsg)
-      type(deck_t), intent(in) :: deck   !< The effective deck.
-      type(mesh_t), intent(in) :: msh   !< The mesh with its equation numbers.
-      type(results_file_t), intent(out) :: rf   !< The results file, active on return when deck%hdf5.
-      integer, intent(out) :: stat   !< 0 on success.
-      character(len=*), intent(inout) :: errmsg   !< Reason on failure.
-      character(len=msg_len) :: why
-      integer(c_int) :: gone
-      integer :: ios
-      stat = 0
-      call system_clock(rf%flushed_at, rf%clock_rate)   ! (results_tick: restart points without HDF5 too)
-      if (.not. deck%hdf5) return
-      call prepare(deck, msh, rf)
-      why = ''
-      gone = c_unlink(rf%path // c_null_char)       ! an earlier run's (the claim allowed it)
-      call h5io_start(stat, why)
-      if (stat == 0) call h5io_open(rf%path // '.tmp', .true., .true., rf%fid, stat, why)
-      if (stat /= 0) then
-         errmsg = '&output: prefix = "'//trim(deck%prefix)//'": '//trim(why)
-         return
-      end if
-      call write_root(rf%fid, stat, why)
-      if (stat == 0) call write_deck(rf%fid, deck, stat, why)
-      if (stat == 0) call write_mesh(rf%fid, msh, stat, why)
-      call create_history(rf, deck%every, stat, why)
-      call create_fields(rf, deck%fields_every, msh%nnode, stat, why)
-      call create_peak(rf%fid, msh%nnode, stat, why)
-      if (stat == 0) call h5io_group(rf%fid, 'summary', stat, why)
-      call attr_text(rf%fid, 'summary', 'status', 'running', stat, why)
-      if (stat == 0) call xdmf_open(rf%xdmf, deck, msh, rf%fid, stat, why)
-      call close_window(rf, stat, why)
-      if (stat == 0) call rename_file(rf%path // '.tmp', rf%path, stat, why)
-      if (stat == 0) call xdmf_start(rf%xdmf, stat, why)
-      if (stat /= 0) then
-         errmsg = rf%path//': '//trim(why)
-         if (rf%fid >= 0) call h5io_close(rf%fid, ios, why)
-         rf%fid = -1
-         gone = c_unlink(rf%path // '.tmp' // c_null_char)
-         return
-      end if
-      rf%active = .true.
-   end subroutine results_open
-
-   !> A restart: <prefix>.h5 cut back to its restart point pt; /summary back to
-   !> 'running', /strength gone, the XDMF views made anew.
-   subroutine results_reopen(deck, msh, pt, rf, stat, errmsg)
+   !> leaves it marked open: h5clear -s, or impact --restart, clears the mark). With pt (a restart):
+   !> <prefix>.h5 cut back to pt; /summary back to 'running', /strength gone, the XDMF views anew.
+   subroutine results_open(deck, msh, rf, stat, errmsg, pt)
       type(deck_t), intent(in) :: deck              !< the effective deck
       type(mesh_t), intent(in) :: msh               !< the mesh with its equation numbers
-      type(results_point_t), intent(in) :: pt       !< the file at the restart point
       type(results_file_t), intent(out) :: rf       !< the results file, active on return when deck%hdf5
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure
+      type(results_point_t), intent(in), optional :: pt   !< a restart's point
       character(len=msg_len) :: why
       real(dp), allocatable :: time(:), step(:), force(:)
+      integer(c_int) :: gone
       integer :: c, k
       stat = 0
-      call system_clock(rf%flushed_at, rf%clock_rate)
+      call system_clock(rf%flushed_at, rf%clock_rate)   ! (results_tick: restarts without HDF5 too)
       if (.not. deck%hdf5) return
       call prepare(deck, msh, rf)
-      rf%peak_step = pt%peak_step;  rf%peak_time = pt%peak_time;  rf%peak_force = pt%peak_force
-      rf%peak_fields = pt%peak_fields
       why = ''
+      if (.not. present(pt)) gone = c_unlink(rf%path // c_null_char)   ! an earlier run's (claim allowed)
       call h5io_start(stat, why)
-      if (stat == 0) call h5io_open(rf%path, .false., .false., rf%fid, stat, why)
-      do c = 1, rf%ncol
-         call cut(rf%hist(c), 'history/' // trim(history_columns(c)%name), pt%rows)
-      end do
-      do k = 1, size(rf%snaps)
-         call cut(rf%snaps(k), trim(snap_names(k)), pt%snaps)
-      end do
-      if (stat == 0) call xdmf_cut(rf%xdmf, deck, msh, rf%fid, pt%snaps, stat, why)
-      if (stat == 0) call h5io_update_attr(rf%fid, 'history', 'rows', pt%rows, stat, why)
-      if (stat == 0) call h5io_update_attr(rf%fid, 'fields', 'snapshots', pt%snaps, stat, why)
-      if (stat == 0) call write_peak(rf, stat, why)
-      if (stat == 0) call h5io_delete(rf%fid, 'strength', stat, why)
-      if (stat == 0) call h5io_delete(rf%fid, 'summary', stat, why)
-      if (stat == 0) call h5io_group(rf%fid, 'summary', stat, why)
-      call attr_text(rf%fid, 'summary', 'status', 'running', stat, why)
-      if (stat == 0) call h5io_read_series(rf%fid, 'fields/time', time, stat, why)
-      if (stat == 0) call h5io_read_series(rf%fid, 'fields/step', step, stat, why)
-      if (stat == 0) call h5io_read_series(rf%fid, 'fields/force', force, stat, why)
-      call close_window(rf, stat, why)
-      if (stat == 0) call xdmf_resume(rf%xdmf, time, nint(step), force, stat, why)
+      if (present(pt)) then
+         rf%peak_step = pt%peak_step;  rf%peak_time = pt%peak_time;  rf%peak_force = pt%peak_force
+         rf%peak_fields = pt%peak_fields
+         if (stat == 0) call h5io_open(rf%path, .false., .false., rf%fid, stat, why)
+         do c = 1, rf%ncol
+            call cut(rf%hist(c), 'history/' // trim(history_columns(c)%name), pt%rows)
+         end do
+         do k = 1, size(rf%snaps)
+            call cut(rf%snaps(k), trim(snap_names(k)), pt%snaps)
+         end do
+         if (stat == 0) call xdmf_cut(rf%xdmf, deck, msh, rf%fid, pt%snaps, stat, why)
+         if (stat == 0) call h5io_update_attr(rf%fid, 'history', 'rows', pt%rows, stat, why)
+         if (stat == 0) call h5io_update_attr(rf%fid, 'fields', 'snapshots', pt%snaps, stat, why)
+         if (stat == 0) call write_peak(rf, stat, why)
+         if (stat == 0) call h5io_delete(rf%fid, 'strength', stat, why)
+         if (stat == 0) call h5io_delete(rf%fid, 'summary', stat, why)
+         if (stat == 0) call h5io_group(rf%fid, 'summary', stat, why)
+         call attr_text(rf%fid, 'summary', 'status', 'running', stat, why)
+         if (stat == 0) call h5io_read_series(rf%fid, 'fields/time', time, stat, why)
+         if (stat == 0) call h5io_read_series(rf%fid, 'fields/step', step, stat, why)
+         if (stat == 0) call h5io_read_series(rf%fid, 'fields/force', force, stat, why)
+         call close_window(rf, stat, why)
+         if (stat == 0) call xdmf_resume(rf%xdmf, time, nint(step), force, stat, why)
+         rf%rows_written = pt%rows;  rf%snaps_written = pt%snaps
+      else
+         if (stat == 0) call h5io_open(rf%path // '.tmp', .true., .true., rf%fid, stat, why)
+         if (stat /= 0) then
+            errmsg = '&output: prefix = "'//trim(deck%prefix)//'": '//trim(why)
+            return
+         end if
+         call write_root(rf%fid, stat, why)
+         if (stat == 0) call write_deck(rf%fid, deck, stat, why)
+         if (stat == 0) call write_mesh(rf%fid, msh, stat, why)
+         call create_history(rf, deck%every, stat, why)
+         call create_fields(rf, deck%fields_every, msh%nnode, stat, why)
+         call create_peak(rf%fid, msh%nnode, stat, why)
+         if (stat == 0) call h5io_group(rf%fid, 'summary', stat, why)
+         call attr_text(rf%fid, 'summary', 'status', 'running', stat, why)
+         if (stat == 0) call xdmf_open(rf%xdmf, deck, msh, rf%fid, stat, why)
+         call close_window(rf, stat, why)
+         if (stat == 0) call rename_file(rf%path // '.tmp', rf%path, stat, why)
+         if (stat == 0) call xdmf_start(rf%xdmf, stat, why)
+      end if
       if (stat /= 0) then
          errmsg = rf%path // ': ' // trim(why)
+         if (.not. present(pt)) gone = c_unlink(rf%path // '.tmp' // c_null_char)
          return
       end if
-      rf%rows_written = pt%rows;  rf%snaps_written = pt%snaps
       rf%active = .true.
    contains
       !> The series `name` opened (did) and cut to n entries.
@@ -205,7 +184,7 @@ contains
          if (stat == 0) call h5io_cut_series(did, n, stat, why)
          if (stat /= 0 .and. index(why, "'") == 0) why = trim(why) // " '" // name // "'"
       end subroutine cut
-   end subroutine results_reopen
+   end subroutine results_open
 
    !> One history row (SI, history_columns' order), kept for the next flush.
    subroutine results_append_history(rf, row, stat, errmsg)
@@ -373,25 +352,24 @@ contains
       integer, intent(inout) :: stat                !< 0 on success; the first failure is kept
       character(len=*), intent(inout) :: why        !< reason on failure
       character(len=msg_len) :: text
-      integer :: c, ios
-      do c = 1, size(rf%hist)
-         call close_one(rf%hist(c))
-      end do
-      do c = 1, size(rf%snaps)
-         call close_one(rf%snaps(c))
-      end do
+      integer :: ios
+      call close_all(rf%hist)
+      call close_all(rf%snaps)
       if (rf%fid < 0) return
       call h5io_close(rf%fid, ios, text)
       rf%fid = -1
       call keep_failure(stat, why, ios, text)
    contains
-      subroutine close_one(did)
-         integer(hid_t), intent(inout) :: did
-         if (did < 0) return
-         call h5io_close_dataset(did, ios, text)
-         did = -1
-         call keep_failure(stat, why, ios, text)
-      end subroutine close_one
+      subroutine close_all(did)
+         integer(hid_t), intent(inout) :: did(:)
+         integer :: c
+         do c = 1, size(did)
+            if (did(c) < 0) cycle
+            call h5io_close_dataset(did(c), ios, text)
+            did(c) = -1
+            call keep_failure(stat, why, ios, text)
+         end do
+      end subroutine close_all
    end subroutine close_window
 
    !> Another write failed (a full disk): the file is left as at its last flush.
