@@ -18,7 +18,7 @@ module element_matrices
    use shear_strain, only: shear_rule_t, shear_operator_t, shear_operator
    implicit none
    private
-   public :: element_geometry_t, element_geometry, element_mass, element_stiffness, &
+   public :: element_geometry_t, element_geometry, element_mass, element_stiffness, von_karman, &
              element_nonlinear_force, element_internal_force, element_strain_energy, &
              element_inplane_strain, element_gauss_point, point_derivs, element_tangent_stiffness, &
              element_pressure_load, element_mass_integrals, ngp_full, nfe_elem, point_strains, &
@@ -179,7 +179,7 @@ contains
       fn = 0.0_dp
       gauss_points: do g = 1, ngp_full
          call point_strains(geo%dx3(:, :, g), de, eps0, kap, wx, wy)
-         enl = [0.5_dp*wx*wx, 0.5_dp*wy*wy, wx*wy]
+         enl = von_karman(wx, wy)
          eps0 = eps0 + enl
          n  = matmul(lmt%a, eps0) + matmul(lmt%b, kap)
          an = geo%wj3(g)*matmul(lmt%a, enl)      ! membrane force of eps_nl
@@ -232,7 +232,7 @@ contains
       u = 0.0_dp
       membrane_bending: do g = 1, ngp_full
          call point_strains(geo%dx3(:, :, g), de, eps0, kap, wx, wy)
-         if (nonlinear) eps0 = eps0 + [0.5_dp*wx*wx, 0.5_dp*wy*wy, wx*wy]
+         if (nonlinear) eps0 = eps0 + von_karman(wx, wy)
          u = u + 0.5_dp*geo%wj3(g)*( dot_product(eps0, matmul(lmt%a, eps0)) &
                + 2.0_dp*dot_product(eps0, matmul(lmt%b, kap)) + dot_product(kap, matmul(lmt%d, kap)) )
       end do membrane_bending
@@ -266,7 +266,7 @@ contains
       real(dp) :: eps(3)
       real(dp) :: eps0(3), kap(3), wx, wy
       call point_strains(dxy, de, eps0, kap, wx, wy)
-      if (nonlinear) eps0 = eps0 + [0.5_dp*wx*wx, 0.5_dp*wy*wy, wx*wy]
+      if (nonlinear) eps0 = eps0 + von_karman(wx, wy)
       eps = eps0 + z*kap
    end function element_inplane_strain
 
@@ -299,7 +299,7 @@ contains
       c(4:6, 1:3) = lmt%b;  c(4:6, 4:6) = lmt%d
       gauss_points: do g = 1, ngp_full
          call point_strains(geo%dx3(:, :, g), de, eps0, kap, wx, wy)
-         n = matmul(lmt%a, eps0 + [0.5_dp*wx*wx, 0.5_dp*wy*wy, wx*wy]) + matmul(lmt%b, kap)
+         n = matmul(lmt%a, eps0 + von_karman(wx, wy)) + matmul(lmt%b, kap)
          nhat = reshape([n(1), n(3), n(3), n(2)], [2, 2])
          bmb = b_membrane_bending(geo%dx3(:, :, g))
          bnl = 0.0_dp
@@ -360,6 +360,13 @@ contains
          kap(3) = kap(3) + py*de(5*i-1) + px*de(5*i)
       end do nodes
    end subroutine point_strains
+
+   !> The von Karman membrane strain of eq. (2), eps_nl = (w,x^2/2, w,y^2/2, w,x w,y).
+   pure function von_karman(wx, wy) result(enl)
+      real(dp), intent(in) :: wx, wy                !< slopes w,x and w,y (-)
+      real(dp) :: enl(3)
+      enl = [0.5_dp*wx*wx, 0.5_dp*wy*wy, wx*wy]
+   end function von_karman
 
    !> [Bm; Bb] (6 x 45) at a point.
    pure function b_membrane_bending(dxy) result(bmat)

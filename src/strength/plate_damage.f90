@@ -17,7 +17,7 @@ module plate_damage
    use shape_functions, only: nen
    use mesh, only: nfe
    use plate_model, only: model_t, gather_element, scatter_add_element
-   use element_matrices, only: point_strains, shear_strains
+   use element_matrices, only: point_strains, shear_strains, von_karman
    use deck_schema, only: deck_t, strength_given, is_given
    implicit none
    private
@@ -140,7 +140,7 @@ contains
          changed = .false.
          points: do g = 1, ngp
             call point_strains(model%geo(el)%dx3(:, :, g), de, e0, kap, wx, wy)
-            if (dmg%nonlinear) e0 = e0 + [0.5_dp*wx*wx, 0.5_dp*wy*wy, wx*wy]
+            if (dmg%nonlinear) e0 = e0 + von_karman(wx, wy)
             dv_old = dmg%dv(:, :, g, el)
             plies: do k = 1, dmg%nply
                eps = to_material(dmg%angle(k), e0 + dmg%zm(k)*kap)
@@ -230,7 +230,7 @@ contains
          associate (geo => model%geo(el))
             points: do g = 1, ngp
                call point_strains(geo%dx3(:, :, g), de, e0, kap, wx, wy)
-               if (dmg%nonlinear) e0 = e0 + [0.5_dp*wx*wx, 0.5_dp*wy*wy, wx*wy]
+               if (dmg%nonlinear) e0 = e0 + von_karman(wx, wy)
                s = geo%wj3(g)*matmul(dmg%dc(:, :, g, el), [e0, kap])     ! wj (dN, dM)
                if (.not. dmg%nonlinear) then
                   wx = 0.0_dp;  wy = 0.0_dp
@@ -276,7 +276,7 @@ contains
          associate (geo => model%geo(el))
             do g = 1, ngp
                call point_strains(geo%dx3(:, :, g), de, e0, kap, wx, wy)
-               if (dmg%nonlinear) e0 = e0 + [0.5_dp*wx*wx, 0.5_dp*wy*wy, wx*wy]
+               if (dmg%nonlinear) e0 = e0 + von_karman(wx, wy)
                x = [e0, kap]
                u = u + 0.5_dp*geo%wj3(g)*dot_product(x, matmul(dmg%dc(:, :, g, el), x))
             end do

@@ -16,6 +16,7 @@ module ply_stress
    use materials, only: lamina_t, lamina_qbar
    use shape_functions, only: nen, shape9_derivs, shape9_second_derivs
    use gauss_rules, only: gauss_2d
+   use element_matrices, only: von_karman
    implicit none
    private
    public :: ply_stack_t, ply_stack_init, ply_stresses, point_strain_state, element_second_derivatives
@@ -278,7 +279,7 @@ contains
          e(7:9) = [uxx, vxy, uxy + vxx]
          e(13:15) = [uxy, vyy, uyy + vxy]
          if (nonlinear) then
-            e(1:3) = e(1:3) + [0.5_dp*wx*wx, 0.5_dp*wy*wy, wx*wy]
+            e(1:3) = e(1:3) + von_karman(wx, wy)
             e(7:9) = e(7:9) + [wx*wxx, wy*wxy, wxx*wy + wx*wxy]
             e(13:15) = e(13:15) + [wx*wxy, wy*wyy, wxy*wy + wx*wyy]
          end if
