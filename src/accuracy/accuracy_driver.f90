@@ -28,8 +28,7 @@ module accuracy_driver
       error_scale, iq_failure, iq_peak_time, is_ladder
    use accuracy_ladder, only: ladder_t, axis_t, judged_t, choice_t, build_axes, judge_run, &
       choose_run, final_run, ladder_run, time_partner, cross_needed, done_run
-   use model_comparison, only: comparison_t, compare_models, comparison_items, comparison_lines, &
-      relative
+   use model_comparison, only: comparison_t, compare_models, comparison_items, comparison_lines, relative
    implicit none
    private
    public :: run_accuracy, ladder_mesh, targeted_results
@@ -80,8 +79,7 @@ contains
       type(launcher_t) :: la
       type(ladder_t) :: lad
       type(accuracy_outcome_t) :: out
-      type(deck_t) :: base                          ! the deck with level 0's mesh (ladder_mesh)
-      type(deck_t) :: claimed                       ! the deck, overwriting with --restart
+      type(deck_t) :: base, claimed                 ! level 0's mesh (ladder_mesh); overwriting with --restart
       integer(int64) :: wall0, wall1, rate
       integer :: i, ignored
       type(file_lock_t) :: lock
@@ -120,8 +118,7 @@ contains
       call system_clock(wall1)
       out%wall_s = real(wall1 - wall0, dp)/real(rate, dp)
       if (stat == 0 .and. out%chosen > 0) call write_accuracy_table(deck, lad, out, stat, errmsg)
-      if (stat == 0 .and. out%chosen > 0) call write_accuracy_summary(deck, la, lad, out, stat, errmsg)
-      if (stat == 0 .and. out%chosen > 0) call report_terminal(unit, la, lad, out)
+      if (stat == 0 .and. out%chosen > 0) call report(deck, la, lad, out, unit, stat, errmsg)
       call release_results(claim, discard=stat /= 0 .or. out%chosen == 0)
       if (stat == 0) exit_code = merge(0, exit_not_met, out%met)
       if (stop_caught() /= 0) exit_code = 128 + stop_caught()
@@ -155,8 +152,7 @@ contains
       call ladder_mesh(deck, model%msh, base, la%impact_element, why)
       la%n0 = base%nx*base%ny
       call make_directories(la%dir(:len(la%dir) - 1), stat, iomsg)
-      if (stat /= 0) errmsg = deck%source // ": &output: prefix = '" // deck%prefix // "': " // &
-         trim(iomsg)
+      if (stat /= 0) errmsg = deck%source // ": &output: prefix = '" // deck%prefix // "': " // trim(iomsg)
       if (stat /= 0) return
       cap = int_str(default_cap_times) // ' times the first run''s cpu time'
       if (la%cap_times == 0) cap = real_short(la%cap) // ' s of cpu'
@@ -274,8 +270,11 @@ contains
       type(accuracy_outcome_t), intent(out) :: out
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      integer :: k, j, i, done_before, kj(2)
+      integer :: i, iq, done_before, kj(2)
       type(choice_t) :: c
+      type(judged_t) :: jd
+      real(dp) :: scale(nq)
+      character(len=msg_len) :: line
       do
          done_before = count(lad%runs%state == state_done)
          call run_planned(lad%runs, la, stat, errmsg)
@@ -297,18 +296,28 @@ contains
          lad%estimated(iq_failure) = lad%estimated(iq_failure) .and. strength_given(deck)
          lad%targeted = lad%targeted .and. lad%estimated
          call build_axes(lad)
+         kj = final_run(lad)                        ! the best run so far: the one given when not met
          if (stop_caught() /= 0) exit
-         call say_errors(la%unit, lad)
+         jd = judge_run(lad, kj(1), kj(2))          ! one line of progress: its relative errors targeted
+         scale = max(error_scale(jd%value), tiny(1.0_dp))
+         line = 'accuracy: errors so far, at ' // ladder_name(kj(1), kj(2)) // ':'
+         do iq = 1, nq
+            if (lad%targeted(iq)) line = trim(line) // ' ' // trim(result_keys(iq)) // ' ' // &
+               real_short(100.0_dp*jd%err(iq)/scale(iq)) // ' %'
+         end do
+         write (la%unit, '(a)') trim(line) // ' (target ' // real_short(100.0_dp*lad%target) // ' %)'
+         flush (la%unit)
          c = choose_run(lad, la)
-         k = c%k;  j = c%j
-         i = time_partner(lad%runs, k, j)
-         out%met = c%found .and. done_run(lad%runs, k, j) .and. i < 0 .and. .not. cross_needed(lad%runs, k, j)
+         i = time_partner(lad%runs, c%k, c%j)
+         out%met = c%found .and. done_run(lad%runs, c%k, c%j) .and. i < 0 .and. &
+                   .not. cross_needed(lad%runs, c%k, c%j)
          if (out%met) out%status = 'met'
+         if (out%met) kj = [c%k, c%j]
          if (out%met) exit
          if (c%found) then                          ! within the cap: the chosen run and its partner
-            call plan(lad%runs, deck, la, k, j)
-            if (i >= 0) call plan(lad%runs, deck, la, i, j)
-            if (cross_needed(lad%runs, k, j)) call plan(lad%runs, deck, la, 1, 1)
+            call plan(lad%runs, deck, la, c%k, c%j)
+            if (i >= 0) call plan(lad%runs, deck, la, i, c%j)
+            if (cross_needed(lad%runs, c%k, c%j)) call plan(lad%runs, deck, la, 1, 1)
          else if (c%beyond_cap .or. (la%cap_reached .and. count(lad%runs%state == state_done) == done_before)) then
             out%status = cap_status(lad, la, c)
             exit
@@ -317,31 +326,9 @@ contains
             if (len_trim(out%status) > 0) exit
          end if
       end do
-      kj = [k, j]
-      if (.not. out%met) kj = final_run(lad)
       out%chosen = ladder_run(lad%runs, kj(1), kj(2))
       out%jd = judge_run(lad, kj(1), kj(2))
    end subroutine climb
-
-   !> One line of progress: the relative errors targeted of the best run so far.
-   subroutine say_errors(unit, lad)
-      integer, intent(in) :: unit                   !< standard output
-      type(ladder_t), intent(in) :: lad
-      type(judged_t) :: jd
-      character(len=:), allocatable :: line
-      real(dp) :: scale(nq)
-      integer :: kj(2), iq
-      kj = final_run(lad)
-      jd = judge_run(lad, kj(1), kj(2))
-      scale = max(error_scale(jd%value), tiny(1.0_dp))
-      line = 'accuracy: errors so far, at ' // ladder_name(kj(1), kj(2)) // ':'
-      do iq = 1, nq
-         if (lad%targeted(iq)) line = line // ' ' // trim(result_keys(iq)) // ' ' // &
-            real_short(100.0_dp*jd%err(iq)/scale(iq)) // ' %'
-      end do
-      write (unit, '(a)') line // ' (target ' // real_short(100.0_dp*lad%target) // ' %)'
-      flush (unit)
-   end subroutine say_errors
 
    !> The status at the cap: the run that would come next (the candidate beyond the cap, else the
    !> cheapest the cap turned away), its predicted cpu time and the total it would bring.
@@ -423,7 +410,7 @@ contains
       type(ladder_t), intent(inout) :: lad
       character(len=*), intent(out) :: status      !< '' when a level was planned, else 'not met: ' and why
       type(judged_t) :: jd
-      logical :: time, mesh, can_time, can_mesh, step_bound(nq)
+      logical :: time, mesh, can_time, can_mesh, next(2), step_bound(nq)
       real(dp) :: allowed(nq)
       integer :: iq
       jd = judge_run(lad, lad%tx%levels - 1, lad%mx%levels - 1)
@@ -440,21 +427,20 @@ contains
       can_time = lad%tx%levels <= lad%k_max
       can_mesh = lad%mx%levels < max_mesh_levels .and. max_elements >= &
                  maxval(mesh_count([deck%nx, deck%ny], deck%accuracy_mesh_factor, lad%mx%levels))
-      if (time .and. .not. can_time) mesh = can_mesh
-      if (time .and. .not. can_time) time = .false.
-      if (mesh .and. .not. can_mesh) time = can_time
-      if (mesh .and. .not. can_mesh) mesh = .false.
-      if (time) call plan(lad%runs, deck, la, lad%tx%levels, 0)
-      if (mesh) call plan(lad%runs, deck, la, 0, lad%mx%levels)
+      ! an axis wanted that cannot be refined gives its turn to the other
+      next = [can_time, can_mesh] .and. ([time, mesh] .or. ([mesh, time] .and. .not. [can_mesh, can_time]))
+      if (next(1)) call plan(lad%runs, deck, la, lad%tx%levels, 0)
+      if (next(2)) call plan(lad%runs, deck, la, 0, lad%mx%levels)
       status = ''
-      if (time .or. mesh) return
+      if (any(next)) return
       status = 'not met: dt and the mesh cannot be refined further (the ladder''s limits)'
       if (any(step_bound)) status = 'not met: ' // trim(result_keys(findloc(step_bound, .true., dim=1))) // &
          ' is read off the time steps: the meshes, all run at the deck''s dt = ' // real_short(deck%dt*1.0e6_dp) // &
          ' us, cannot show it to the target; give a smaller dt in the deck'
    end subroutine refine
 
-   !> <prefix>_accuracy.dat (module header).
+   !> <prefix>_accuracy.dat (module header): a row per run, the errors of a ladder run on the
+   !> axes, NaN for the rest.
    subroutine write_accuracy_table(deck, lad, out, stat, errmsg)
       type(deck_t), intent(in) :: deck
       type(ladder_t), intent(in) :: lad
@@ -467,6 +453,8 @@ contains
       character(len=16) :: order
       character(len=:), allocatable :: key, unit
       type(axis_t) :: axes(2)
+      type(judged_t) :: jd
+      real(dp) :: err(nq, 3), q(nq), h_rel
       integer :: u, i, iq
       names(:nfixed) = [character(len=32) :: 'run', 'role', 'time_level', 'mesh_level', 'dt_us', 'nx', 'ny', &
          'grading', 'element_size_rel', 'cpu_s', 'chosen', 'state']
@@ -492,7 +480,18 @@ contains
       call echo_deck(deck, u, '# ')
       call write_column_block(u, names, texts)
       do i = 1, size(lad%runs)
-         call write_row(lad%runs(i), i == out%chosen)
+         associate (r => lad%runs(i))
+         err = ieee_value(err, ieee_quiet_nan)
+         q = merge(r%q, err(:, 1), r%state == state_done)
+         if (r%state == state_done .and. is_ladder(r) .and. r%k < lad%tx%levels .and. r%j < lad%mx%levels) then
+            jd = judge_run(lad, r%k, r%j)
+            err = merge(reshape([jd%err, jd%err_time, jd%err_mesh], [nq, 3]), err, spread(lad%estimated, 2, 3))
+         end if
+         h_rel = sqrt(real(lad%runs(1)%nx, dp)*real(lad%runs(1)%ny, dp)/(real(r%nx, dp)*real(r%ny, dp)))
+         write (u, '(a,1x,a,2(1x,i3),es15.6e3,2(1x,i5),f9.5,f9.5,es12.4,1x,i1,1x,a,*(es16.7e3))') trim(r%name), &
+            trim(r%role), r%k, r%j, r%dt*1.0e6_dp, r%nx, r%ny, r%grading, h_rel, r%cpu_s, merge(1, 0, i == out%chosen), &
+            state_words(r%state), q, err
+         end associate
       end do
       write (u, '(a)') '# estimates of the finest level of each axis (src/accuracy/accuracy_ladder.f90):'
       write (u, '(a)') '# result axis levels observed_order asymptotic error(result''s unit) rule'
@@ -511,42 +510,26 @@ contains
       end do
       close (u, iostat=stat, iomsg=iomsg)
       if (stat /= 0) errmsg = deck%prefix // '_accuracy.dat: ' // trim(iomsg)
-   contains
-      !> The row of run r: the errors of a ladder run on the axes, NaN for the rest.
-      subroutine write_row(r, chosen)
-         type(run_t), intent(in) :: r
-         logical, intent(in) :: chosen
-         real(dp) :: err(nq, 3), q(nq), h_rel
-         type(judged_t) :: jd
-         err = ieee_value(err, ieee_quiet_nan)
-         q = merge(r%q, err(:, 1), r%state == state_done)
-         if (r%state == state_done .and. is_ladder(r) .and. r%k < lad%tx%levels .and. r%j < lad%mx%levels) then
-            jd = judge_run(lad, r%k, r%j)
-            err = merge(reshape([jd%err, jd%err_time, jd%err_mesh], [nq, 3]), err, spread(lad%estimated, 2, 3))
-         end if
-         h_rel = sqrt(real(lad%runs(1)%nx, dp)*real(lad%runs(1)%ny, dp)/(real(r%nx, dp)*real(r%ny, dp)))
-         write (u, '(a,1x,a,2(1x,i3),es15.6e3,2(1x,i5),f9.5,f9.5,es12.4,1x,i1,1x,a,*(es16.7e3))') trim(r%name), &
-            trim(r%role), r%k, r%j, r%dt*1.0e6_dp, r%nx, r%ny, r%grading, h_rel, r%cpu_s, merge(1, 0, chosen), &
-            state_words(r%state), q, err
-      end subroutine write_row
    end subroutine write_accuracy_table
 
-   !> <prefix>_summary.dat (module header).
-   subroutine write_accuracy_summary(deck, la, lad, out, stat, errmsg)
+   !> <prefix>_summary.dat, then the terminal's lines (module header).
+   subroutine report(deck, la, lad, out, unit, stat, errmsg)
       type(deck_t), intent(in) :: deck
       type(launcher_t), intent(in) :: la
       type(ladder_t), intent(in) :: lad
       type(accuracy_outcome_t), intent(in) :: out
+      integer, intent(in) :: unit                   !< standard output
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       type(summary_t) :: s
       type(summary_item_t), allocatable :: items(:)
-      type(run_t) :: r
-      character(len=:), allocatable :: key, unit
+      character(len=msg_len) :: line
+      character(len=:), allocatable :: key, unit_name
+      real(dp) :: rel(nq), in_chosen
       integer :: i, iq
-      real(dp) :: reference(nq)
-      r = lad%runs(out%chosen)
-      reference = error_scale(out%jd%value)
+      associate (r => lad%runs(out%chosen), jd => out%jd)
+      rel = relative(jd%err, error_scale(jd%value))
+      in_chosen = la%spent/max(r%cpu_s, tiny(1.0_dp))   ! the cpu time in runs of the chosen
       call read_summary(la%dir // trim(r%name) // '_summary.dat', s, stat, errmsg)
       if (stat /= 0) return
       allocate (items(0))
@@ -558,10 +541,10 @@ contains
       if (out%stop_signal > 0) call summary_integer(items, 'accuracy_stop_signal', out%stop_signal)
       call summary_text(items, 'accuracy_values', 'of the run chosen, not extrapolated')
       key = 'true'
-      if (.not. out%jd%time_measured) key = 'false: ' // unmeasured_time
+      if (.not. jd%time_measured) key = 'false: ' // unmeasured_time
       call summary_text(items, 'time_error_measured', key)
-      if (out%jd%two_levels) call summary_text(items, 'time_error_estimate', &
-                                               'two levels: Roache''s grid convergence index, Fs = 3')
+      if (jd%two_levels) call summary_text(items, 'time_error_estimate', &
+                                           'two levels: Roache''s grid convergence index, Fs = 3')
       if (lad%mx%levels == 2) call summary_text(items, 'mesh_error_estimate', two_meshes)
       call summary_text(items, 'chosen_run', la%dir // trim(r%name))
       call summary_real(items, 'chosen_dt_us', 'chosen_dt', 's', r%dt, 1.0e6_dp)
@@ -571,21 +554,49 @@ contains
       call summary_text(items, 'chosen_theory', trim(la%theory))
       do iq = 1, nq
          if (.not. lad%estimated(iq)) cycle
-         key = trim(result_keys(iq));  unit = trim(result_units(iq))
-         call put(key // '_error', unit, out%jd%err(iq))
-         call put(key // '_error_dt', unit, out%jd%err_time(iq))
-         call put(key // '_error_mesh', unit, out%jd%err_mesh(iq))
-         if (iq == iq_peak_time) call put(key // '_error_maxima', unit, out%jd%err_maxima(iq))
-         call put(key // '_relative_error', '-', relative(out%jd%err(iq), reference(iq)))
+         key = trim(result_keys(iq));  unit_name = trim(result_units(iq))
+         call put(key // '_error', unit_name, jd%err(iq))
+         call put(key // '_error_dt', unit_name, jd%err_time(iq))
+         call put(key // '_error_mesh', unit_name, jd%err_mesh(iq))
+         if (iq == iq_peak_time) call put(key // '_error_maxima', unit_name, jd%err_maxima(iq))
+         call put(key // '_relative_error', '-', rel(iq))
       end do
       do i = 1, size(out%cmp)
          call comparison_items(items, out%cmp(i), lad)
       end do
       call summary_integer(items, 'accuracy_runs', count(lad%runs%state == state_done))
       call summary_real(items, 'accuracy_cpu_s', 'accuracy_cpu', 's', la%spent, 1.0_dp)
-      call put('accuracy_cpu_in_chosen_runs', '-', la%spent/max(r%cpu_s, tiny(1.0_dp)))   ! in runs of the chosen
+      call put('accuracy_cpu_in_chosen_runs', '-', in_chosen)
       call summary_real(items, 'accuracy_wall_s', 'accuracy_wall', 's', out%wall_s, 1.0_dp)
       call write_summary_file(deck, items, stat, errmsg)
+      if (stat /= 0) return
+      write (unit, '(a)') 'accuracy: ' // trim(out%status)
+      if (jd%two_levels) write (unit, '(a)') 'accuracy: the time error on the chosen mesh is from two ' // &
+         'time levels: Roache''s grid convergence index, factor of safety 3'
+      if (lad%mx%levels == 2) write (unit, '(a)') 'accuracy: the mesh error is from ' // two_meshes
+      if (.not. jd%time_measured) write (unit, '(a)') 'accuracy: the time error was not measured on ' // &
+         'the chosen mesh: it is ' // unmeasured_time
+      if (jd%err_maxima(iq_peak_time) > 0.0_dp) write (unit, '(a)') 'accuracy: ' // &
+         trim(result_keys(iq_peak_time)) // ': the force has other maxima within the peak force''s error of it, ' // &
+         'up to ' // real_short(jd%err_maxima(iq_peak_time)) // ' us from the peak: which is the highest ' // &
+         'is not settled at these settings (its error counts them)'
+      write (unit, '(a)') 'accuracy: results of run ' // trim(r%name) // ' (dt ' // real_short(r%dt*1.0e6_dp) // &
+         ' us, mesh ' // int_str(r%nx) // ' x ' // int_str(r%ny) // ', grading ' // real_short(r%grading) // &
+         ', ' // trim(la%theory) // '), not extrapolated; error = time part + mesh part + their interaction'
+      do iq = 1, nq
+         if (.not. lad%estimated(iq)) cycle
+         write (line, '(a,es14.6,a,es10.3,a,f7.3,a,es10.3,a,es10.3,a)') result_keys(iq), jd%value(iq), ' +- ', &
+            jd%err(iq), ' (', 100.0_dp*rel(iq), ' %; dt ', jd%err_time(iq), ', mesh ', jd%err_mesh(iq), ')'
+         write (unit, '(a)') '  ' // trim(line)
+      end do
+      do i = 1, size(out%cmp)
+         call comparison_lines(unit, out%cmp(i), lad, out%chosen)
+      end do
+      write (unit, '(a)') 'accuracy: ' // int_str(count(lad%runs%state == state_done)) // ' runs, cpu ' // &
+         real_short(la%spent) // ' s (' // real_short(in_chosen) // ' times the run chosen), wall ' // &
+         real_short(out%wall_s) // ' s on ' // int_str(la%cpus) // ' CPUs; every run: ' // la%dir // &
+         '; summary: ' // la%dir(:len(la%dir) - 5) // '_summary.dat'
+      end associate
    contains
       !> A real item whose key is its name, in the result's unit.
       subroutine put(name, unit_name, value)
@@ -593,46 +604,6 @@ contains
          real(dp), intent(in) :: value
          call summary_real(items, name, name, unit_name, value, 1.0_dp)
       end subroutine put
-   end subroutine write_accuracy_summary
-
-   subroutine report_terminal(unit, la, lad, out)
-      integer, intent(in) :: unit                   !< standard output
-      type(launcher_t), intent(in) :: la
-      type(ladder_t), intent(in) :: lad
-      type(accuracy_outcome_t), intent(in) :: out
-      type(run_t) :: r
-      integer :: iq, i
-      character(len=msg_len) :: line
-      real(dp) :: reference(nq)
-      r = lad%runs(out%chosen)
-      reference = error_scale(out%jd%value)
-      write (unit, '(a)') 'accuracy: ' // trim(out%status)
-      if (out%jd%two_levels) write (unit, '(a)') 'accuracy: the time error on the chosen mesh is from two ' // &
-         'time levels: Roache''s grid convergence index, factor of safety 3'
-      if (lad%mx%levels == 2) write (unit, '(a)') 'accuracy: the mesh error is from ' // two_meshes
-      if (.not. out%jd%time_measured) write (unit, '(a)') 'accuracy: the time error was not measured on ' // &
-         'the chosen mesh: it is ' // unmeasured_time
-      if (out%jd%err_maxima(iq_peak_time) > 0.0_dp) write (unit, '(a)') 'accuracy: ' // &
-         trim(result_keys(iq_peak_time)) // ': the force has other maxima within the peak force''s error of it, ' // &
-         'up to ' // real_short(out%jd%err_maxima(iq_peak_time)) // ' us from the peak: which is the highest ' // &
-         'is not settled at these settings (its error counts them)'
-      write (unit, '(a)') 'accuracy: results of run ' // trim(r%name) // ' (dt ' // real_short(r%dt*1.0e6_dp) // &
-         ' us, mesh ' // int_str(r%nx) // ' x ' // int_str(r%ny) // ', grading ' // real_short(r%grading) // &
-         ', ' // trim(la%theory) // '), not extrapolated; error = time part + mesh part + their interaction'
-      do iq = 1, nq
-         if (.not. lad%estimated(iq)) cycle
-         write (line, '(a,es14.6,a,es10.3,a,f7.3,a,es10.3,a,es10.3,a)') result_keys(iq), out%jd%value(iq), ' +- ', &
-            out%jd%err(iq), ' (', 100.0_dp*relative(out%jd%err(iq), reference(iq)), ' %; dt ', &
-            out%jd%err_time(iq), ', mesh ', out%jd%err_mesh(iq), ')'
-         write (unit, '(a)') '  ' // trim(line)
-      end do
-      do i = 1, size(out%cmp)
-         call comparison_lines(unit, out%cmp(i), lad, out%chosen)
-      end do
-      write (unit, '(a)') 'accuracy: ' // int_str(count(lad%runs%state == state_done)) // ' runs, cpu ' // &
-         real_short(la%spent) // ' s (' // real_short(la%spent/max(r%cpu_s, tiny(1.0_dp))) // &
-         ' times the run chosen), wall ' // real_short(out%wall_s) // ' s on ' // int_str(la%cpus) // &
-         ' CPUs; every run: ' // la%dir // '; summary: ' // la%dir(:len(la%dir) - 5) // '_summary.dat'
-   end subroutine report_terminal
+   end subroutine report
 
 end module accuracy_driver

@@ -68,8 +68,7 @@ contains
          do i = 1, 2
             again(i) = first(i)%base == coarse .and. .not. verdict_settled(first(i), lad, slack)
             if (first(i)%base /= coarse) cmp(i)%at = past_cap   ! even that run would pass the cap
-            if (first(i)%base == coarse .and. .not. again(i)) &
-               cmp(i)%at = coarse_words(.true., first(i))
+            if (first(i)%base == coarse .and. .not. again(i)) cmp(i)%at = coarse_words(.true., first(i))
          end do
          base = variant_bases(deck, lad%runs, la, chosen, again)
          do i = 1, 2
@@ -215,7 +214,9 @@ contains
       type(launcher_t), intent(in) :: la
       integer, intent(in) :: chosen
       real(dp), intent(in) :: cost(:)               !< the variant's predicted cost at each run's settings (s)
+      logical :: fits(size(cost))
       integer :: i
+      fits = la%c_base < 0.0_dp .or. la%spent + cost <= la%cap
       base = chosen
       if (fits(chosen)) return
       do i = 1, size(runs)
@@ -223,11 +224,6 @@ contains
          if (base == chosen) base = i
          if (cost(i) > cost(base)) base = i
       end do
-   contains
-      pure logical function fits(i)
-         integer, intent(in) :: i
-         fits = la%c_base < 0.0_dp .or. la%spent + cost(i) <= la%cap
-      end function fits
    end function comparison_base
 
    !> The run of the other bend-twist model at the settings of run c, or a note why there is none.
