@@ -56,12 +56,6 @@ module accuracy_driver
    !> only when the two-level estimate (Roache's Fs = 3) does not meet the target.
    integer, parameter :: first_levels(2) = [3, 2]
    real(dp), parameter :: ladder_grading = 1.25_dp
-   !> Columns of <prefix>_accuracy.dat before the results.
-   integer, parameter :: nfixed = 12
-   !> Whose the time error is of a run chosen without it measured on its mesh, and why.
-   character(len=*), parameter :: unmeasured_time = &
-      'mesh 0''s (the cap left no neighbouring time level on the chosen mesh)'
-   character(len=*), parameter :: two_meshes = 'two levels: 3 times their difference (Roache''s factor of safety 3)'
    !> A run's state as a word (state_planned, ... of accuracy_runs).
    character(len=7), parameter :: state_words(0:5) = [character(len=7) :: 'planned', 'planned', 'done', &
       'failed', 'skipped', 'stopped']
@@ -447,6 +441,7 @@ contains
       type(accuracy_outcome_t), intent(in) :: out
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
+      integer, parameter :: nfixed = 12             ! columns before the results
       character(len=32) :: names(nfixed + 4*nq)
       character(len=96) :: texts(nfixed + 4*nq)
       character(len=msg_len) :: iomsg
@@ -521,6 +516,10 @@ contains
       integer, intent(in) :: unit                   !< standard output
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
+      !> Whose the time error is of a run chosen without it measured on its mesh, and why.
+      character(len=*), parameter :: unmeasured_time = &
+         'mesh 0''s (the cap left no neighbouring time level on the chosen mesh)'
+      character(len=*), parameter :: two_meshes = 'two levels: 3 times their difference (Roache''s factor of safety 3)'
       type(summary_t) :: s
       type(summary_item_t), allocatable :: items(:)
       character(len=msg_len) :: line

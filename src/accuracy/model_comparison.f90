@@ -51,7 +51,7 @@ contains
       type(judged_t) :: jd, jc
       real(dp) :: slack(nq)
       integer :: coarse, i, base(2)
-      logical :: again(2)
+      logical :: again(2), settled
       again = .true.;  slack = 0.0_dp               ! again: made (again) at the chosen settings
       coarse = coarse_base(lad%runs, chosen)
       if (coarse /= chosen) then
@@ -66,30 +66,22 @@ contains
          if (stat /= 0) return
          cmp = first
          do i = 1, 2
-            again(i) = first(i)%base == coarse .and. .not. verdict_settled(first(i), lad, slack)
+            settled = verdict_settled(first(i), lad, slack)
+            again(i) = first(i)%base == coarse .and. .not. settled
             if (first(i)%base /= coarse) cmp(i)%at = past_cap   ! even that run would pass the cap
-            if (first(i)%base == coarse .and. .not. again(i)) cmp(i)%at = coarse_words(.true., first(i))
+            if (first(i)%base == coarse .and. made(first(i))) cmp(i)%at = coarse_words(settled, first(i))
          end do
          base = variant_bases(deck, lad%runs, la, chosen, again)
-         do i = 1, 2
-            if (.not. again(i) .or. base(i) == chosen) cycle
-            again(i) = .false.                      ! the chosen settings would pass the cap
-            if (made(first(i))) cmp(i)%at = coarse_words(.false., first(i))
-         end do
+         where (base /= chosen) again = .false.     ! the chosen settings would pass the cap
          if (.not. any(again)) return
       end if
       call make_variants(deck, la, lad%runs, variant_bases(deck, lad%runs, la, chosen, again), again, second, &
                          stat, errmsg)
       if (stat /= 0) return
-      do i = 1, 2
-         if (.not. again(i)) cycle
-         if (coarse /= chosen .and. made(cmp(i)) .and. second(i)%run > 0 .and. &
-             .not. made(second(i))) then             ! the cap skipped the second: the first stands
-            cmp(i)%at = coarse_words(.false., cmp(i))
-         else
-            cmp(i) = second(i)
-            if (cmp(i)%base /= chosen) cmp(i)%at = past_cap
-         end if
+      do i = 1, 2                                   ! the cap skipped the second after a first: it stands
+         if (.not. again(i) .or. (made(cmp(i)) .and. second(i)%run > 0 .and. .not. made(second(i)))) cycle
+         cmp(i) = second(i)
+         if (cmp(i)%base /= chosen) cmp(i)%at = past_cap
       end do
    contains
       logical function made(c)
