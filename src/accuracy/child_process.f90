@@ -44,21 +44,15 @@ contains
       type(spawn_actions_t) :: actions
       type(spawn_attr_t) :: attr
       character(kind=c_char), allocatable, target :: chars(:), env(:)
-      character(len=max(len(path), len(args))) :: words(size(args) + 1)
-      type(c_ptr), allocatable :: argv(:), envp(:)
+      character(len=:), allocatable :: text
       integer(c_int) :: cpid, r
-      integer :: i, at, n, ignored
-      words = [character(len=len(words)) :: path, args]   ! as C strings in chars, argv their pointers
-      allocate (chars(sum(len_trim(words)) + size(words)), argv(size(words) + 1))
-      at = 1
-      do i = 1, size(words)
-         n = len_trim(words(i))
-         chars(at:at + n) = transfer(trim(words(i)) // c_null_char, chars)
-         argv(i) = c_loc(chars(at))
-         at = at + n + 1
+      integer :: i, ignored
+      text = trim(path) // c_null_char                 ! the program and its arguments as C strings
+      do i = 1, size(args)
+         text = text // trim(args(i)) // c_null_char
       end do
-      argv(size(argv)) = c_null_ptr
-      call child_environment(env, envp)
+      chars = transfer(text, c_null_char, len(text))
+      call child_environment(env)
       pid = -1
       r = c_spawn_actions_init(actions)
       if (r == 0) r = c_spawnattr_init(attr)
@@ -67,7 +61,7 @@ contains
       if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, log_path // c_null_char, o_write_no_follow, &
                                               log_mode)
       if (r == 0) r = c_spawn_actions_adddup2(actions, fd_out, fd_err)
-      if (r == 0) r = c_posix_spawn(cpid, path // c_null_char, actions, attr, argv, envp)
+      if (r == 0) r = c_posix_spawn(cpid, path // c_null_char, actions, attr, pointers(chars), pointers(env))
       ignored = c_spawn_actions_destroy(actions)
       ignored = c_spawnattr_destroy(attr)
       stat = r
@@ -78,33 +72,33 @@ contains
       i = findloc(children, 0_c_int, dim=1)
       if (i > 0) children(i) = cpid
       if (stopped /= 0) ignored = c_kill(-cpid, stopped)             ! a stop came while it started
+   contains
+      !> argv or envp: the C strings in s, one at 1 and after each nul but the last, then null.
+      function pointers(s) result(p)
+         character(kind=c_char), intent(in), target :: s(:)
+         type(c_ptr), allocatable :: p(:)
+         integer :: k
+         p = [pack([(c_loc(s(k)), k = 1, size(s))], [.true., s(:size(s) - 1) == c_null_char]), c_null_ptr]
+      end function pointers
    end subroutine spawn_program
 
-   !> A child's environment: IMPACT_PARENT_PID=<pid>, then /proc/self/environ; envp the pointers.
-   subroutine child_environment(env, envp)
-      character(kind=c_char), allocatable, target, intent(out) :: env(:)   !< the strings
-      type(c_ptr), allocatable, intent(out) :: envp(:)                    !< their pointers
-      character(kind=c_char), allocatable :: more(:)
+   !> A child's environment as C strings: IMPACT_PARENT_PID=<pid>, then /proc/self/environ's.
+   subroutine child_environment(env)
+      character(kind=c_char), allocatable, intent(out) :: env(:)
       character(len=:), allocatable :: ours
-      integer :: u, ios, n, i
+      integer :: u, ios, n
       ours = parent_variable // '=' // int_str(int(c_getpid())) // c_null_char
-      allocate (env(len(ours) + 4096))
       n = len(ours)
-      env(:n) = transfer(ours, env, n)
+      env = transfer(ours // repeat(c_null_char, 4096), c_null_char, n + 4096)
       open (newunit=u, file='/proc/self/environ', access='stream', form='unformatted', action='read', iostat=ios)
       do while (ios == 0)
-         if (n == size(env)) then
-            allocate (more(2*n))
-            more(:n) = env
-            call move_alloc(more, env)
-         end if
+         if (n == size(env)) env = [env, env]
          read (u, iostat=ios) env(n + 1)
          if (ios == 0) n = n + 1
       end do
       if (ios > 0 .or. env(n) /= c_null_char) n = len(ours)   ! unreadable: ours alone
       close (u, iostat=ios)
-      ! a string starts at 1 and after each nul but the last
-      envp = [pack([(c_loc(env(i)), i = 1, n)], [.true., env(:n - 1) == c_null_char]), c_null_ptr]
+      env = env(:n)
    end subroutine child_environment
 
    !> Waits for any child of the process to end.
@@ -148,11 +142,10 @@ contains
    !> With IMPACT_PARENT_PID: SIGKILL when the parent ends, or at once when it has ended already.
    subroutine die_with_parent()
       character(len=24) :: text
-      integer :: length, st, parent
+      integer :: st, parent
       integer(c_int) :: r
-      call get_environment_variable(parent_variable, text, length, st)
-      if (st /= 0 .or. length == 0) return
-      read (text, *, iostat=st) parent
+      call get_environment_variable(parent_variable, text, status=st)
+      if (st == 0) read (text, *, iostat=st) parent        ! none, or blank: st /= 0
       if (st /= 0) return
       r = c_prctl(pr_set_pdeathsig, int(sigkill, c_long))
       if (c_getppid() /= parent) call c_exit(128_c_int + sigkill)
@@ -175,16 +168,15 @@ contains
    !> The CPUs the process may run on (at least 1): the affinity mask's, or Slurm's when smaller.
    integer function usable_cpus() result(n)
       type(cpu_set_t) :: mask
-      integer :: i, slurm, length, st
+      integer :: i, slurm, st
       character(len=32) :: text
       character(len=*), parameter :: slurm_vars(2) = [character(len=19) :: 'SLURM_CPUS_PER_TASK', 'SLURM_CPUS_ON_NODE']
       n = 1
       if (c_sched_getaffinity(0_c_int, int(storage_size(mask)/8, c_size_t), mask) == 0) &
          n = max(1, sum([(popcnt(mask%bits(i)), i = 1, size(mask%bits))]))
       do i = 1, size(slurm_vars)
-         call get_environment_variable(trim(slurm_vars(i)), text, length, st)
-         if (st /= 0 .or. length == 0) cycle
-         read (text, *, iostat=st) slurm
+         call get_environment_variable(trim(slurm_vars(i)), text, status=st)
+         if (st == 0) read (text, *, iostat=st) slurm     ! none, or blank: st /= 0
          if (st == 0 .and. slurm > 0) n = min(n, slurm)
       end do
    end function usable_cpus
