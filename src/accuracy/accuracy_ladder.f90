@@ -88,7 +88,7 @@ contains
       real(dp), intent(in) :: order_theory, order_low, order_high   !< the method's (no larger is used), the range
       real(dp), intent(in) :: floor            !< resolution added to the error (0: none)
       type(estimate_t) :: e
-      real(dp) :: d1, d2, p, safe
+      real(dp) :: d1, d2, p, safe, ratio, richardson
       integer :: n
       n = size(q)
       e%floor = floor
@@ -112,26 +112,20 @@ contains
          p = observed_order(h(n - 2:n), d1/d2)
          e%order = p
          e%asymptotic = p >= order_low .and. p <= order_high
+         ratio = (h(n)/h(n - 1))**merge(min(p, order_theory), p, e%asymptotic)   ! Richardson's error at that order
+         richardson = huge(1.0_dp)
+         if (ratio < 1.0_dp) richardson = abs(d2)*ratio/(1.0_dp - ratio)
          if (e%asymptotic) then
-            e%error = richardson_safety*richardson(min(p, order_theory)) + floor
+            e%error = richardson_safety*richardson + floor
             e%how = 'Richardson, order in range'
          else if (p < order_low) then
-            e%error = max(min(richardson_safety*richardson(p), slow_cap*max(abs(d1), abs(d2))), safe) + floor
+            e%error = max(min(richardson_safety*richardson, slow_cap*max(abs(d1), abs(d2))), safe) + floor
             e%how = 'slow: Richardson at observed order'
          else
             e%error = safe + floor
             e%how = 'order too high: 1.5 x largest diff.'
          end if
       end if
-   contains
-      !> Richardson's error of the finest level at order po.
-      pure real(dp) function richardson(po)
-         real(dp), intent(in) :: po
-         real(dp) :: ratio
-         ratio = (h(n)/h(n - 1))**po
-         richardson = huge(1.0_dp)
-         if (ratio < 1.0_dp) richardson = abs(d2)*ratio/(1.0_dp - ratio)
-      end function richardson
    end function ladder_estimate
 
    !> The order p of (h1^p - h2^p)/(h2^p - h3^p) = ratio > 0 by bisection in [order_min, order_max].
@@ -245,7 +239,12 @@ contains
       logical :: measured, known, two
       associate (runs => lad%runs, tx => lad%tx)
       n = tx%levels
-      jd%err_cross = largest_cross(lad)
+      do i = 1, size(runs)                        ! the largest interaction of the combined runs done
+         if (runs(i)%state /= state_done .or. runs(i)%role /= 'combined') cycle
+         if (runs(i)%k >= n .or. runs(i)%j >= lad%mx%levels) cycle
+         jd%err_cross = max(jd%err_cross, abs(runs(i)%q - runs(tx%run(runs(i)%k + 1))%q &
+                                              - runs(lad%mx%run(runs(i)%j + 1))%q + runs(tx%run(1))%q))
+      end do
       if (k >= n) then                            ! the next time level
          jd%value = runs(tx%run(n))%q;  jd%err_time = tx%finest%error;  jd%err_mesh = lad%mx%err(1, :)
          h(:n) = tx%h;  h(n + 1) = tx%h(n)/2.0_dp
@@ -359,21 +358,6 @@ contains
       integer, intent(in) :: k, j
       cross_needed = k > 0 .and. j == 0 .and. .not. any(runs%state == state_done .and. runs%role == 'combined')
    end function cross_needed
-
-   !> The largest interaction of the combined runs done (0 when there is none).
-   pure function largest_cross(lad) result(c)
-      type(ladder_t), intent(in) :: lad
-      real(dp) :: c(nq)
-      integer :: i
-      c = 0.0_dp
-      associate (runs => lad%runs, tx => lad%tx, mx => lad%mx)
-      do i = 1, size(runs)
-         if (runs(i)%state /= state_done .or. runs(i)%role /= 'combined') cycle
-         if (runs(i)%k >= tx%levels .or. runs(i)%j >= mx%levels) cycle
-         c = max(c, abs(runs(i)%q - runs(tx%run(runs(i)%k + 1))%q - runs(mx%run(runs(i)%j + 1))%q + runs(tx%run(1))%q))
-      end do
-      end associate
-   end function largest_cross
 
    !> The cheapest run (k, j) meeting the target, priced with the runs it still needs (its time
    !> partner, (1, 1) while cross_needed); past the cap: beyond_cap; none: the least worst done.

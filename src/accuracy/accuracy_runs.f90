@@ -16,9 +16,8 @@ module accuracy_runs
    implicit none
    private
    public :: nq, iq_force, iq_peak_time, iq_failure, result_keys, result_units, run_t, launcher_t, run_planned, &
-      maxima_t, force_maxima
-   public :: state_planned, state_done, state_failed, state_skipped, state_stopped, fit_costs, predicted_run_cost, &
-             ladder_name, error_scale, is_ladder
+      maxima_t, force_maxima, state_planned, state_done, state_failed, state_skipped, state_stopped, fit_costs, &
+      predicted_run_cost, ladder_name, error_scale, is_ladder
 
    !> The results an accuracy run estimates: their summary keys and units (the last two: with
    !> &strength, with ply damage).
@@ -48,9 +47,8 @@ module accuracy_runs
       character(len=48) :: name = ''              !< its name: <prefix>_acc/<name>_summary.dat
       character(len=12) :: role = ''              !< 'time', 'mesh', 'combined', 'theory' or 'bend_twist'
       integer :: k = 0, j = 0                     !< time level (dt = dt0/2^k), mesh level
-      real(dp) :: dt = 0.0_dp                     !< time step (s)
       integer :: nx = 0, ny = 0                   !< elements (&mesh nx, ny)
-      real(dp) :: grading = 1.0_dp                !< &mesh grading
+      real(dp) :: dt = 0.0_dp, grading = 1.0_dp   !< time step (s), &mesh grading
       character(len=64) :: variant(max_variant) = ''   !< the variant's settings, 'group.var=value'
       real(dp) :: cost_factor = 1.0_dp            !< the variant's domain, in quarters
       integer :: state = state_planned            !< state_planned, ...

@@ -32,8 +32,8 @@ module child_process
 
 contains
 
-   !> Starts the program `path` with `args`, its output and errors into `log_path` (emptied),
-   !> the environment inherited with IMPACT_PARENT_PID, in a process group of its own.
+   !> Starts the program `path` with `args`, its output and errors into `log_path` (emptied), in a
+   !> process group of its own, its environment IMPACT_PARENT_PID=<pid> and /proc/self/environ's.
    subroutine spawn_program(path, args, log_path, pid, stat, errmsg)
       character(len=*), intent(in) :: path
       character(len=*), intent(in) :: args(:)       !< its arguments, trailing blanks not part of them
@@ -46,13 +46,24 @@ contains
       character(kind=c_char), allocatable, target :: chars(:), env(:)
       character(len=:), allocatable :: text
       integer(c_int) :: cpid, r
-      integer :: i, ignored
+      integer :: i, ignored, u, ios, n
       text = trim(path) // c_null_char                 ! the program and its arguments as C strings
       do i = 1, size(args)
          text = text // trim(args(i)) // c_null_char
       end do
       chars = transfer(text, c_null_char, len(text))
-      call child_environment(env)
+      text = parent_variable // '=' // int_str(int(c_getpid())) // c_null_char   ! and the environment
+      n = len(text)
+      allocate (env(n + 4096))
+      env(:n) = transfer(text, env, n)
+      open (newunit=u, file='/proc/self/environ', access='stream', form='unformatted', action='read', iostat=ios)
+      do while (ios == 0)
+         if (n == size(env)) env = [env, env]
+         read (u, iostat=ios) env(n + 1)
+         if (ios == 0) n = n + 1
+      end do
+      if (ios > 0 .or. env(n) /= c_null_char) n = len(text)   ! unreadable: ours alone
+      close (u, iostat=ios)
       pid = -1
       r = c_spawn_actions_init(actions)
       if (r == 0) r = c_spawnattr_init(attr)
@@ -61,7 +72,7 @@ contains
       if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, log_path // c_null_char, o_write_no_follow, &
                                               log_mode)
       if (r == 0) r = c_spawn_actions_adddup2(actions, fd_out, fd_err)
-      if (r == 0) r = c_posix_spawn(cpid, path // c_null_char, actions, attr, pointers(chars), pointers(env))
+      if (r == 0) r = c_posix_spawn(cpid, path // c_null_char, actions, attr, pointers(chars), pointers(env(:n)))
       ignored = c_spawn_actions_destroy(actions)
       ignored = c_spawnattr_destroy(attr)
       stat = r
@@ -81,25 +92,6 @@ contains
          p = [pack([(c_loc(s(k)), k = 1, size(s))], [.true., s(:size(s) - 1) == c_null_char]), c_null_ptr]
       end function pointers
    end subroutine spawn_program
-
-   !> A child's environment as C strings: IMPACT_PARENT_PID=<pid>, then /proc/self/environ's.
-   subroutine child_environment(env)
-      character(kind=c_char), allocatable, intent(out) :: env(:)
-      character(len=:), allocatable :: ours
-      integer :: u, ios, n
-      ours = parent_variable // '=' // int_str(int(c_getpid())) // c_null_char
-      n = len(ours)
-      env = transfer(ours // repeat(c_null_char, 4096), c_null_char, n + 4096)
-      open (newunit=u, file='/proc/self/environ', access='stream', form='unformatted', action='read', iostat=ios)
-      do while (ios == 0)
-         if (n == size(env)) env = [env, env]
-         read (u, iostat=ios) env(n + 1)
-         if (ios == 0) n = n + 1
-      end do
-      if (ios > 0 .or. env(n) /= c_null_char) n = len(ours)   ! unreadable: ours alone
-      close (u, iostat=ios)
-      env = env(:n)
-   end subroutine child_environment
 
    !> Waits for any child of the process to end.
    subroutine wait_child(pid, exit_code)
