@@ -46,7 +46,7 @@ module accuracy_ladder
    type :: axis_t
       integer :: levels = 0                       !< levels done
       integer, allocatable :: run(:)              !< the run of each level (index into runs)
-      real(dp), allocatable :: h(:), err(:, :)    !< its size, dt (s) or 1/sqrt(nx ny); (level, result) its error
+      real(dp), allocatable :: h(:), err(:, :)    !< size: dt (s) or 1/sqrt(nx ny); err(level, result)
       type(estimate_t) :: finest(nq)              !< the estimate of the finest level
    end type axis_t
 
@@ -55,7 +55,7 @@ module accuracy_ladder
       type(run_t), allocatable :: runs(:)         !< the ladder's runs and the model variants
       type(axis_t) :: tx, mx                      !< the time and mesh axes (build_axes)
       real(dp) :: target = 0.0_dp                 !< the relative error asked for
-      logical :: estimated(nq) = .false., targeted(nq) = .false.   !< the results estimated; those targeted
+      logical :: estimated(nq) = .false., targeted(nq) = .false.   !< the results estimated, targeted
       integer :: k_max = 10                       !< the finest time level allowed
    end type ladder_t
 
@@ -71,9 +71,10 @@ module accuracy_ladder
    !> A run's results with their errors (the results' units).
    type :: judged_t
       real(dp) :: value(nq) = 0.0_dp              !< the results (predicted for a run to come)
-      !> the error's parts: time, mesh, their interaction, the spread of the maxima (peak_spread)
-      real(dp), dimension(nq) :: err_time = 0.0_dp, err_mesh = 0.0_dp, err_cross = 0.0_dp, err_maxima = 0.0_dp
-      real(dp) :: err(nq) = 0.0_dp                !< their sum: the error of the run's results
+      !> the error's parts: time, mesh, their interaction, the spread of the maxima (peak_spread); err
+      !> their sum, the error of the run's results
+      real(dp), dimension(nq) :: err_time = 0.0_dp, err_mesh = 0.0_dp, err_cross = 0.0_dp, &
+                                 err_maxima = 0.0_dp, err = 0.0_dp
       real(dp) :: worst = huge(1.0_dp)            !< largest err / (target |value|)
       logical :: meets = .false.                  !< every error within the target
       logical :: time_measured = .true.           !< its time error measured on its own mesh (time_on_mesh)
@@ -85,7 +86,8 @@ contains
    !> The error of the finest level of a ladder (module header).
    pure function ladder_estimate(h, q, order_theory, order_low, order_high, floor) result(e)
       real(dp), intent(in) :: h(:), q(:)       !< step or element size of each level, decreasing; the result at each
-      real(dp), intent(in) :: order_theory, order_low, order_high   !< the method's (no larger is used), the range
+      real(dp), intent(in) :: order_theory     !< the method's order: no larger order is used
+      real(dp), intent(in) :: order_low, order_high   !< the asymptotic range of orders
       real(dp), intent(in) :: floor            !< resolution added to the error (0: none)
       type(estimate_t) :: e
       real(dp) :: d1, d2, p, safe, ratio, richardson
@@ -112,8 +114,8 @@ contains
          p = observed_order(h(n - 2:n), d1/d2)
          e%order = p
          e%asymptotic = p >= order_low .and. p <= order_high
-         ratio = (h(n)/h(n - 1))**merge(min(p, order_theory), p, e%asymptotic)   ! Richardson's error at that order
-         richardson = huge(1.0_dp)
+         ratio = (h(n)/h(n - 1))**merge(min(p, order_theory), p, e%asymptotic)
+         richardson = huge(1.0_dp)                 ! Richardson's error at that order
          if (ratio < 1.0_dp) richardson = abs(d2)*ratio/(1.0_dp - ratio)
          if (e%asymptotic) then
             e%error = richardson_safety*richardson + floor
@@ -334,7 +336,7 @@ contains
       do iq = 1, nq
          if (.not. lad%targeted(iq)) cycle
          associate (q => lad%runs(ax%run)%q(iq))
-         finest = ax%finest(iq)%error             ! two levels in range: Roache's GCI, Fs = 3, at the method's order
+         finest = ax%finest(iq)%error             ! two levels in range: Roache's GCI (Fs = 3)
          if (two .and. lad%tx%finest(iq)%asymptotic) finest = two_level_factor*abs(q(1) - q(2)) &
             /((ax%h(1)/ax%h(2))**order_theory(axis_time) - 1.0_dp) + ax%finest(iq)%floor
          err_time(iq) = max(err_time(iq), abs(q(k - k0 + 1) - q(ax%levels)) + finest)
@@ -347,9 +349,8 @@ contains
    pure integer function time_partner(runs, k, j) result(p)
       type(run_t), intent(in) :: runs(:)
       integer, intent(in) :: k, j
-      p = -1
-      if (j == 0 .or. done_run(runs, k - 1, j) .or. done_run(runs, k + 1, j)) return
-      p = merge(k - 1, 1, k > 0)
+      p = merge(-1, merge(k - 1, 1, k > 0), j == 0 .or. done_run(runs, k - 1, j) .or. &
+                done_run(runs, k + 1, j))
    end function time_partner
 
    !> Whether run (k, j) (mesh 0, below dt0) needs the run (1, 1): no interaction measured yet.
@@ -370,14 +371,13 @@ contains
       integer :: kk, jj, p
       logical :: done
       best_cost = huge(1.0_dp);  best_worst = huge(1.0_dp)
-      associate (runs => lad%runs, tx => lad%tx, mx => lad%mx)
-      do kk = 0, merge(tx%levels, tx%levels - 1, tx%levels <= lad%k_max)
-         do jj = 0, merge(0, mx%levels - 1, kk == tx%levels)
+      do kk = 0, merge(lad%tx%levels, lad%tx%levels - 1, lad%tx%levels <= lad%k_max)
+         do jj = 0, merge(0, lad%mx%levels - 1, kk == lad%tx%levels)
             jd = judge_run(lad, kk, jj)
-            done = done_run(runs, kk, jj);  p = time_partner(runs, kk, jj)
+            done = done_run(lad%runs, kk, jj);  p = time_partner(lad%runs, kk, jj)
             cost = merge(0.0_dp, run_cost(kk, jj), done)
             if (p >= 0) cost = cost + run_cost(p, jj)     ! a partner is never done (time_partner)
-            if (cross_needed(runs, kk, jj) .and. mx%levels > 1) cost = cost + run_cost(1, 1)
+            if (cross_needed(lad%runs, kk, jj) .and. lad%mx%levels > 1) cost = cost + run_cost(1, 1)
             if (jd%worst <= 1.0_dp .and. cost > 0.0_dp .and. la%spent + cost > la%cap) then
                if (cost < c%beyond_cost) c%beyond_kj = [kk, jj]
                c%beyond_cost = min(c%beyond_cost, cost)
@@ -390,7 +390,6 @@ contains
             end if
          end do
       end do
-      end associate
       c%beyond_cap = c%beyond_kj(1) >= 0 .and. .not. c%found
    contains
       !> The predicted cost of the run (k, j): what the cost model reads, k, nx, ny.

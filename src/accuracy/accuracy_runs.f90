@@ -134,9 +134,10 @@ contains
          if (la%cap_times > 0) la%cap = real(la%cap_times, dp)*la%spent
          cost = merge(predicted_run_cost(runs, la), 0.0_dp, runs%state == state_planned)
          names = pack(runs%name, runs%state == state_planned)
-         write (la%unit, '(*(a))') 'accuracy: next,', (' ' // trim(names(i)), i = 1, size(names)), ': predicted ', &
-            real_short(sum(cost)), ' s of cpu, ', real_short(max(maxval(cost), sum(cost)/la%cpus)), ' s of wall; ', &
-            'then more levels while the target is not met, within the cap of ', real_short(la%cap), ' s of cpu'
+         write (la%unit, '(*(a))') 'accuracy: next,', (' ' // trim(names(i)), i = 1, size(names)), &
+            ': predicted ', real_short(sum(cost)), ' s of cpu, ', real_short(max(maxval(cost), sum(cost)/la%cpus)), &
+            ' s of wall; then more levels while the target is not met, within the cap of ', real_short(la%cap), &
+            ' s of cpu'
          flush (la%unit)
       end do
       if (stop_caught() /= 0) where (runs%state == state_planned) runs%state = state_stopped
