@@ -23,8 +23,6 @@ module accuracy_ladder
    !> Factors of safety (module header) (-).
    real(dp), parameter :: richardson_safety = 1.25_dp, safe_factor = 1.5_dp, two_level_factor = 3.0_dp, &
       slow_cap = 5.0_dp
-   !> Orders the bisection of observed_order looks within (-).
-   real(dp), parameter :: order_min = 0.05_dp, order_max = 12.0_dp
 
    !> The estimate of one result on one ladder.
    type :: estimate_t
@@ -38,9 +36,10 @@ module accuracy_ladder
    integer, parameter :: axis_time = 1, axis_mesh = 2
    !> The results that are times read off the steps: the contact's duration, the time of the peak.
    logical, parameter :: time_results(nq) = [.false., .false., .true., .true., .false., .false., .false.]
-   !> Orders: the method's, and the asymptotic range, of each axis.
+   !> Orders: the method's, and the asymptotic range, of each axis; those the bisection of
+   !> observed_order looks within.
    real(dp), parameter :: order_theory(2) = [2.0_dp, 2.0_dp], order_low(2) = [1.5_dp, 1.0_dp], &
-      order_high(2) = [2.7_dp, 2.5_dp]
+      order_high(2) = [2.7_dp, 2.5_dp], order_min = 0.05_dp, order_max = 12.0_dp
 
    !> One axis: its levels done (from 0, without a gap) and their errors.
    type :: axis_t
@@ -71,8 +70,7 @@ module accuracy_ladder
    !> A run's results with their errors (the results' units).
    type :: judged_t
       real(dp) :: value(nq) = 0.0_dp              !< the results (predicted for a run to come)
-      !> the error's parts: time, mesh, their interaction, the spread of the maxima (peak_spread); err
-      !> their sum, the error of the run's results
+      !> the error's parts (time, mesh, their interaction, the spread of the maxima) and err, their sum
       real(dp), dimension(nq) :: err_time = 0.0_dp, err_mesh = 0.0_dp, err_cross = 0.0_dp, &
                                  err_maxima = 0.0_dp, err = 0.0_dp
       real(dp) :: worst = huge(1.0_dp)            !< largest err / (target |value|)
@@ -162,9 +160,8 @@ contains
       n = size(q)
       log_tail = 0.0_dp
       if (n < 2 .or. size_ratio <= 1.0_dp) return
-      ! the larger of the last two differences, times the levels still to go
       log_tail = max(0.0_dp, maxval(abs(q(max(1, n - 2):n - 1) - q(max(2, n - 1):n)))) &
-                 *(log(size_ratio)/log(h(n - 1)/h(n)) + 1.0_dp)
+                 *(log(size_ratio)/log(h(n - 1)/h(n)) + 1.0_dp)   ! times the levels to go
    end function log_tail
 
    !> The run (k, j) of the ladder (not a model variant), 0 when there is none.

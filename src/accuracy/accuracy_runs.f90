@@ -28,10 +28,9 @@ module accuracy_runs
    !> The places in result_keys of the peak force, the contact duration, the time of the peak, the failure index.
    integer, parameter :: iq_force = 1, iq_duration = 3, iq_peak_time = 4, iq_failure = 6
 
-   !> States of a run (stopped: by a stop signal to the accuracy run).
+   !> States of a run (stopped: by a stop signal to the accuracy run); a variant's settings, at most.
    integer, parameter :: state_planned = 0, state_running = 1, state_done = 2, state_failed = 3, state_skipped = 4, &
-                         state_stopped = 5
-   integer, parameter :: max_variant = 4
+                         state_stopped = 5, max_variant = 4
    !> The cost model's exponent of the element count before two meshes are measured, and its bounds.
    real(dp), parameter :: gamma_default = 1.8_dp, gamma_min = 1.0_dp, gamma_max = 3.0_dp
    !> The force's local maxima kept by force_maxima: those at least this fraction of the largest (-).
@@ -99,9 +98,8 @@ contains
       stat = 0;  running = 0
       do
          launch: do while (running < la%cpus .and. stat == 0 .and. stop_caught() == 0)
-            ! the next: the dearest planned, or while the costs are unknown the cheapest alone
             cost = predicted_run_cost(runs, la)
-            i = 0
+            i = 0   ! the next: the dearest planned; while the costs are unknown the cheapest alone
             if (la%c_base >= 0.0_dp) i = maxloc(cost, mask=runs%state == state_planned, dim=1)
             if (la%c_base < 0.0_dp .and. running == 0) i = minloc(cost, mask=runs%state == state_planned, dim=1)
             if (i == 0) exit launch

@@ -18,16 +18,15 @@ module child_process
    public :: spawn_program, wait_child, program_path, usable_cpus, pass_stops_to_children, stop_caught, &
              die_with_parent
 
-   !> The environment variable that makes a child die with its parent; the longest path read.
+   !> The environment variable that makes a child die with its parent.
    character(len=*), parameter :: parent_variable = 'IMPACT_PARENT_PID'
-   integer, parameter :: max_path = 4096
    !> POSIX_SPAWN_SETPGROUP (glibc), PR_SET_PDEATHSIG, SIGKILL, ELOOP (open(2) with O_NOFOLLOW
    !> on a link), a log file's permissions before the umask, standard output and error.
    integer(c_int16_t), parameter :: spawn_setpgroup = 2_c_int16_t
    integer(c_int), parameter :: pr_set_pdeathsig = 1, sigkill = 9, eloop = 40, log_mode = int(o'666', c_int), &
       fd_out = 1, fd_err = 2
-   !> Children held at most, their ids, and the signal caught (0: none).
-   integer, parameter :: max_children = 256
+   !> The longest path read, the children held at most; their ids, and the signal caught (0: none).
+   integer, parameter :: max_path = 4096, max_children = 256
    integer(c_int), volatile, save :: children(max_children) = 0, stopped = 0
 
 contains
@@ -45,7 +44,7 @@ contains
       type(spawn_attr_t) :: attr
       character(kind=c_char), allocatable, target :: chars(:), env(:)
       character(len=:), allocatable :: text
-      integer(c_int) :: cpid, r
+      integer(c_int) :: cpid
       integer :: i, ignored, u, ios, n
       text = trim(path) // c_null_char                 ! the program and its arguments as C strings
       do i = 1, size(args)
@@ -65,20 +64,20 @@ contains
       if (ios > 0 .or. env(n) /= c_null_char) n = len(text)   ! unreadable: ours alone
       close (u, iostat=ios)
       pid = -1
-      r = c_spawn_actions_init(actions)
-      if (r == 0) r = c_spawnattr_init(attr)
-      if (r == 0) r = c_spawnattr_setflags(attr, spawn_setpgroup)
-      if (r == 0) r = c_spawnattr_setpgroup(attr, 0_c_int)          ! its own group, led by itself
-      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, log_path // c_null_char, o_write_no_follow, &
-                                              log_mode)
-      if (r == 0) r = c_spawn_actions_adddup2(actions, fd_out, fd_err)
-      if (r == 0) r = c_posix_spawn(cpid, path // c_null_char, actions, attr, pointers(chars), pointers(env(:n)))
+      stat = c_spawn_actions_init(actions)
+      if (stat == 0) stat = c_spawnattr_init(attr)
+      if (stat == 0) stat = c_spawnattr_setflags(attr, spawn_setpgroup)
+      if (stat == 0) stat = c_spawnattr_setpgroup(attr, 0_c_int)          ! its own group, led by itself
+      if (stat == 0) stat = c_spawn_actions_addopen(actions, fd_out, log_path // c_null_char, &
+                                                    o_write_no_follow, log_mode)
+      if (stat == 0) stat = c_spawn_actions_adddup2(actions, fd_out, fd_err)
+      if (stat == 0) stat = c_posix_spawn(cpid, path // c_null_char, actions, attr, pointers(chars), &
+                                          pointers(env(:n)))
       ignored = c_spawn_actions_destroy(actions)
       ignored = c_spawnattr_destroy(attr)
-      stat = r
-      if (r /= 0) errmsg = 'cannot start ' // path // ' (posix_spawn: error ' // int_str(r) // ')'
-      if (r == eloop) errmsg = log_path // ' is a symbolic link: a run writes no file through a link'
-      if (r /= 0) return
+      if (stat /= 0) errmsg = 'cannot start ' // path // ' (posix_spawn: error ' // int_str(stat) // ')'
+      if (stat == eloop) errmsg = log_path // ' is a symbolic link: a run writes no file through a link'
+      if (stat /= 0) return
       pid = cpid
       i = findloc(children, 0_c_int, dim=1)
       if (i > 0) children(i) = cpid
