@@ -23,8 +23,6 @@ module accuracy_ladder
    !> Factors of safety (module header) (-).
    real(dp), parameter :: richardson_safety = 1.25_dp, safe_factor = 1.5_dp, two_level_factor = 3.0_dp, &
       slow_cap = 5.0_dp
-   !> Orders the bisection of observed_order looks within (-).
-   real(dp), parameter :: order_min = 0.05_dp, order_max = 12.0_dp
 
    !> The estimate of one result on one ladder.
    type :: estimate_t
@@ -38,16 +36,16 @@ module accuracy_ladder
    integer, parameter :: axis_time = 1, axis_mesh = 2
    !> The results that are times read off the steps: the contact's duration, the time of the peak.
    logical, parameter :: time_results(nq) = [.false., .false., .true., .true., .false., .false., .false.]
-   !> Orders: the method's, and the asymptotic range, of each axis.
+   !> Orders: the method's, and the asymptotic range, of each axis; those the bisection of
+   !> observed_order looks within.
    real(dp), parameter :: order_theory(2) = [2.0_dp, 2.0_dp], order_low(2) = [1.5_dp, 1.0_dp], &
-      order_high(2) = [2.7_dp, 2.5_dp]
+      order_high(2) = [2.7_dp, 2.5_dp], order_min = 0.05_dp, order_max = 12.0_dp
 
    !> One axis: its levels done (from 0, without a gap) and their errors.
    type :: axis_t
       integer :: levels = 0                       !< levels done
       integer, allocatable :: run(:)              !< the run of each level (index into runs)
-      real(dp), allocatable :: h(:)               !< its size: dt (s), or 1/sqrt(nx ny)
-      real(dp), allocatable :: err(:, :)          !< (level, result): the error of each level
+      real(dp), allocatable :: h(:), err(:, :)    !< size: dt (s) or 1/sqrt(nx ny); err(level, result)
       type(estimate_t) :: finest(nq)              !< the estimate of the finest level
    end type axis_t
 
@@ -56,8 +54,7 @@ module accuracy_ladder
       type(run_t), allocatable :: runs(:)         !< the ladder's runs and the model variants
       type(axis_t) :: tx, mx                      !< the time and mesh axes (build_axes)
       real(dp) :: target = 0.0_dp                 !< the relative error asked for
-      logical :: estimated(nq) = .false.          !< the results estimated
-      logical :: targeted(nq) = .false.           !< of which those that must meet the target
+      logical :: estimated(nq) = .false., targeted(nq) = .false.   !< the results estimated, targeted
       integer :: k_max = 10                       !< the finest time level allowed
    end type ladder_t
 
@@ -73,11 +70,9 @@ module accuracy_ladder
    !> A run's results with their errors (the results' units).
    type :: judged_t
       real(dp) :: value(nq) = 0.0_dp              !< the results (predicted for a run to come)
-      real(dp) :: err_time(nq) = 0.0_dp           !< time part of the error
-      real(dp) :: err_mesh(nq) = 0.0_dp           !< mesh part
-      real(dp) :: err_cross(nq) = 0.0_dp          !< the interaction of the two
-      real(dp) :: err_maxima(nq) = 0.0_dp         !< the time of the peak: the spread of the maxima (peak_spread)
-      real(dp) :: err(nq) = 0.0_dp                !< the sum: the error of the run's results
+      !> the error's parts (time, mesh, their interaction, the spread of the maxima) and err, their sum
+      real(dp), dimension(nq) :: err_time = 0.0_dp, err_mesh = 0.0_dp, err_cross = 0.0_dp, &
+                                 err_maxima = 0.0_dp, err = 0.0_dp
       real(dp) :: worst = huge(1.0_dp)            !< largest err / (target |value|)
       logical :: meets = .false.                  !< every error within the target
       logical :: time_measured = .true.           !< its time error measured on its own mesh (time_on_mesh)
@@ -93,7 +88,7 @@ contains
       real(dp), intent(in) :: order_low, order_high   !< the asymptotic range of orders
       real(dp), intent(in) :: floor            !< resolution added to the error (0: none)
       type(estimate_t) :: e
-      real(dp) :: d1, d2, p, safe
+      real(dp) :: d1, d2, p, safe, ratio, richardson
       integer :: n
       n = size(q)
       e%floor = floor
@@ -117,26 +112,20 @@ contains
          p = observed_order(h(n - 2:n), d1/d2)
          e%order = p
          e%asymptotic = p >= order_low .and. p <= order_high
+         ratio = (h(n)/h(n - 1))**merge(min(p, order_theory), p, e%asymptotic)
+         richardson = huge(1.0_dp)                 ! Richardson's error at that order
+         if (ratio < 1.0_dp) richardson = abs(d2)*ratio/(1.0_dp - ratio)
          if (e%asymptotic) then
-            e%error = richardson_safety*richardson(min(p, order_theory)) + floor
+            e%error = richardson_safety*richardson + floor
             e%how = 'Richardson, order in range'
          else if (p < order_low) then
-            e%error = max(min(richardson_safety*richardson(p), slow_cap*max(abs(d1), abs(d2))), safe) + floor
+            e%error = max(min(richardson_safety*richardson, slow_cap*max(abs(d1), abs(d2))), safe) + floor
             e%how = 'slow: Richardson at observed order'
          else
             e%error = safe + floor
             e%how = 'order too high: 1.5 x largest diff.'
          end if
       end if
-   contains
-      !> Richardson's error of the finest level at order po.
-      pure real(dp) function richardson(po)
-         real(dp), intent(in) :: po
-         real(dp) :: ratio
-         ratio = (h(n)/h(n - 1))**po
-         richardson = huge(1.0_dp)
-         if (ratio < 1.0_dp) richardson = abs(d2)*ratio/(1.0_dp - ratio)
-      end function richardson
    end function ladder_estimate
 
    !> The order p of (h1^p - h2^p)/(h2^p - h3^p) = ratio > 0 by bisection in [order_min, order_max].
@@ -171,29 +160,9 @@ contains
       n = size(q)
       log_tail = 0.0_dp
       if (n < 2 .or. size_ratio <= 1.0_dp) return
-      log_tail = last_difference(q)*(log(size_ratio)/log(h(n - 1)/h(n)) + 1.0_dp)
+      log_tail = max(0.0_dp, maxval(abs(q(max(1, n - 2):n - 1) - q(max(2, n - 1):n)))) &
+                 *(log(size_ratio)/log(h(n - 1)/h(n)) + 1.0_dp)   ! times the levels to go
    end function log_tail
-
-   pure real(dp) function last_difference(q)
-      real(dp), intent(in) :: q(:)                !< the result at each level
-      integer :: n
-      n = size(q)
-      last_difference = max(0.0_dp, maxval(abs(q(max(1, n - 2):n - 1) - q(max(2, n - 1):n))))
-   end function last_difference
-
-   !> Roache's grid convergence index of the finer of two levels of known order p.
-   pure real(dp) function two_grid_index(h, q, p) result(e)
-      real(dp), intent(in) :: h(2), q(2)       !< step or element size of the two levels, decreasing; the result at each
-      real(dp), intent(in) :: p
-      e = two_level_factor*abs(q(1) - q(2))/((h(1)/h(2))**p - 1.0_dp)
-   end function two_grid_index
-
-   !> The value of the next level of a ladder that goes on converging at order p.
-   pure real(dp) function continued_value(h, q, p) result(q_next)
-      real(dp), intent(in) :: h(3), q(2)       !< sizes of the last two levels and the next; the results of the two
-      real(dp), intent(in) :: p
-      q_next = q(2) - (q(1) - q(2))*(h(3)**p - h(2)**p)/(h(2)**p - h(1)**p)
-   end function continued_value
 
    !> The run (k, j) of the ladder (not a model variant), 0 when there is none.
    pure integer function ladder_run(runs, k, j) result(i)
@@ -239,18 +208,15 @@ contains
          if (.not. active(iq)) cycle
          associate (q => runs(ax%run)%q(iq), e => ax%finest(iq))
          steps(:l) = q/(runs(ax%run)%dt*1.0e6_dp)   ! a time (us) read off its run's steps: dt the floor
-         floor = 0.0_dp
-         if (time_results(iq) .and. all(abs(steps(:l) - anint(steps(:l))) <= &
-                                        1.0e-6_dp*max(1.0_dp, abs(steps(:l))))) &
-            floor = runs(ax%run(l))%dt*1.0e6_dp
+         floor = merge(runs(ax%run(l))%dt*1.0e6_dp, 0.0_dp, time_results(iq) .and. &
+                       all(abs(steps(:l) - anint(steps(:l))) <= 1.0e-6_dp*max(1.0_dp, abs(steps(:l)))))
          e = ladder_estimate(ax%h, q, order_theory(which), order_low(which), order_high(which), floor)
-         if (which == axis_mesh) then
-            tail = log_tail(ax%h, q, runs(ax%run(l))%h_impact/runs(ax%run(l))%contact_radius)
-            if (tail > 0.0_dp .and. (tail + floor > e%error .or. (e%order >= 0.0_dp .and. e%order < order_low(which)))) &
-               then
-               e%error = max(tail, safe_factor*last_difference(q)) + floor
-               e%how = 'contact disc unresolved: ln tail'
-            end if
+         tail = 0.0_dp
+         if (which == axis_mesh) tail = log_tail(ax%h, q, runs(ax%run(l))%h_impact/runs(ax%run(l))%contact_radius)
+         if (tail > 0.0_dp .and. (tail + floor > e%error .or. (e%order >= 0.0_dp .and. e%order < order_low(which)))) &
+            then
+            e%error = max(tail, safe_factor*maxval(abs(q(max(1, l - 2):l - 1) - q(max(2, l - 1):l)))) + floor
+            e%how = 'contact disc unresolved: ln tail'
          end if
          ax%err(:, iq) = abs(q - q(l)) + e%error           ! each level's: its distance to the finest
          end associate
@@ -258,26 +224,49 @@ contains
    end subroutine build_axis
 
    !> The results of run (k, j) and their errors (docs/ACCURACY.md); a run not done predicted as
-   !> q(k,0) + q(0,j) - q(0,0), its time error no less than its mesh's at 2 dt over 2^2.
+   !> q(k,0) + q(0,j) - q(0,0), its time error no less than its mesh's at 2 dt over 2^2. The next
+   !> time level on mesh 0 (k = tx%levels, not yet planned): a result converging at p in range
+   !> continued by p, its error the axis's rule with that level; any other the finest level's (a
+   !> safe bound predicts no gain).
    function judge_run(lad, k, j) result(jd)
       type(ladder_t), intent(in) :: lad
       integer, intent(in) :: k, j                 !< the levels (k <= tx%levels, j < mx%levels; j = 0 for k = tx%levels)
       type(judged_t) :: jd
-      integer :: i, ik, ij, i0
-      real(dp) :: below(nq)
+      type(estimate_t) :: next
+      integer :: i, ik, ij, i0, n, iq
+      real(dp) :: below(nq), h(lad%tx%levels + 1), q(lad%tx%levels + 1), p
       logical :: measured, known, two
-      if (k >= lad%tx%levels) jd = judge_next_time(lad)   ! the next time level, not yet planned
-      if (k >= lad%tx%levels) return
-      associate (runs => lad%runs)
-      i0 = lad%tx%run(1);  ik = lad%tx%run(k + 1);  ij = lad%mx%run(j + 1)
+      associate (runs => lad%runs, tx => lad%tx)
+      n = tx%levels
+      do i = 1, size(runs)                        ! the largest interaction of the combined runs done
+         if (runs(i)%state /= state_done .or. runs(i)%role /= 'combined') cycle
+         if (runs(i)%k >= n .or. runs(i)%j >= lad%mx%levels) cycle
+         jd%err_cross = max(jd%err_cross, abs(runs(i)%q - runs(tx%run(runs(i)%k + 1))%q &
+                                              - runs(lad%mx%run(runs(i)%j + 1))%q + runs(tx%run(1))%q))
+      end do
+      if (k >= n) then                            ! the next time level
+         jd%value = runs(tx%run(n))%q;  jd%err_time = tx%finest%error;  jd%err_mesh = lad%mx%err(1, :)
+         h(:n) = tx%h;  h(n + 1) = tx%h(n)/2.0_dp
+         do iq = 1, nq
+            p = tx%finest(iq)%order
+            if (.not. lad%targeted(iq) .or. p <= 0.0_dp .or. p > order_high(axis_time)) cycle
+            q(:n) = runs(tx%run)%q(iq)            ! and the next level's value, continued at order p
+            q(n + 1) = q(n) - (q(n - 1) - q(n))*(h(n + 1)**p - h(n)**p)/(h(n)**p - h(n - 1)**p)
+            next = ladder_estimate(h, q, order_theory(axis_time), order_low(axis_time), order_high(axis_time), &
+                                   tx%finest(iq)%floor/2.0_dp)
+            jd%value(iq) = q(n + 1);  jd%err_time(iq) = next%error
+         end do
+         call weigh(jd, runs(tx%run(n)), lad, .true.)
+         return
+      end if
+      i0 = tx%run(1);  ik = tx%run(k + 1);  ij = lad%mx%run(j + 1)
       i = merge(ladder_run(runs, k, j), 0, done_run(runs, k, j))
-      jd%err_cross = largest_cross(lad)
       jd%value = runs(ik)%q + runs(ij)%q - runs(i0)%q
       if (i > 0) then
          jd%value = runs(i)%q
          jd%err_cross = max(abs(runs(i)%q - runs(ik)%q - runs(ij)%q + runs(i0)%q), jd%err_cross)
       end if
-      jd%err_time = lad%tx%err(k + 1, :);  jd%err_mesh = lad%mx%err(j + 1, :)
+      jd%err_time = tx%err(k + 1, :);  jd%err_mesh = lad%mx%err(j + 1, :)
       measured = .true.
       if (j > 0) call time_on_mesh(lad, k, j, jd%err_time, measured, jd%two_levels)
       if (i == 0 .and. j > 0 .and. k > 0) then     ! a run to come: its mesh's time error at dt x 2, the order's share
@@ -289,32 +278,6 @@ contains
       call weigh(jd, runs(merge(i, ij, i > 0)), lad, measured .or. i == 0)
       end associate
    end function judge_run
-
-   !> The next time level on mesh 0: a result converging at p in range continued by p, its error
-   !> the axis's rule with that level; any other the finest level's (a safe bound predicts no gain).
-   function judge_next_time(lad) result(jd)
-      type(ladder_t), intent(in) :: lad           !< the ladder (tx%levels >= 1)
-      type(judged_t) :: jd
-      type(estimate_t) :: next
-      real(dp) :: h(lad%tx%levels + 1), q(lad%tx%levels + 1), p
-      integer :: n, iq
-      associate (tx => lad%tx, runs => lad%runs)
-      n = tx%levels
-      jd%value = runs(tx%run(n))%q;  jd%err_time = tx%finest%error
-      h(:n) = tx%h;  h(n + 1) = tx%h(n)/2.0_dp
-      do iq = 1, nq
-         p = tx%finest(iq)%order
-         if (.not. lad%targeted(iq) .or. p <= 0.0_dp .or. p > order_high(axis_time)) cycle
-         q(:n) = runs(tx%run)%q(iq)
-         q(n + 1) = continued_value(h(n - 1:n + 1), q(n - 1:n), p)
-         next = ladder_estimate(h, q, order_theory(axis_time), order_low(axis_time), order_high(axis_time), &
-                                tx%finest(iq)%floor/2.0_dp)
-         jd%value(iq) = q(n + 1);  jd%err_time(iq) = next%error
-      end do
-      jd%err_mesh = lad%mx%err(1, :);  jd%err_cross = largest_cross(lad)
-      call weigh(jd, runs(tx%run(n)), lad, .true.)
-      end associate
-   end function judge_next_time
 
    !> A judgement's sum, the spread of the maxima added to the time of the peak, the worst ratio
    !> of error to target and whether it meets the target (measured: its time error on its mesh).
@@ -351,7 +314,7 @@ contains
    end function peak_spread
 
    !> The time error of run (k, j), j > 0, from the time levels done on mesh j next to k (at
-   !> least two), no less than mesh 0's; two levels in the asymptotic range: two_grid_index.
+   !> least two), no less than mesh 0's; two levels in the asymptotic range: Roache's GCI.
    subroutine time_on_mesh(lad, k, j, err_time, measured, two)
       type(ladder_t), intent(in) :: lad
       integer, intent(in) :: k, j
@@ -370,9 +333,9 @@ contains
       do iq = 1, nq
          if (.not. lad%targeted(iq)) cycle
          associate (q => lad%runs(ax%run)%q(iq))
-         finest = ax%finest(iq)%error
-         if (two .and. lad%tx%finest(iq)%asymptotic) &
-            finest = two_grid_index(ax%h, q, order_theory(axis_time)) + ax%finest(iq)%floor
+         finest = ax%finest(iq)%error             ! two levels in range: Roache's GCI (Fs = 3)
+         if (two .and. lad%tx%finest(iq)%asymptotic) finest = two_level_factor*abs(q(1) - q(2)) &
+            /((ax%h(1)/ax%h(2))**order_theory(axis_time) - 1.0_dp) + ax%finest(iq)%floor
          err_time(iq) = max(err_time(iq), abs(q(k - k0 + 1) - q(ax%levels)) + finest)
          end associate
       end do
@@ -383,9 +346,8 @@ contains
    pure integer function time_partner(runs, k, j) result(p)
       type(run_t), intent(in) :: runs(:)
       integer, intent(in) :: k, j
-      p = -1
-      if (j == 0 .or. done_run(runs, k - 1, j) .or. done_run(runs, k + 1, j)) return
-      p = merge(k - 1, 1, k > 0)
+      p = merge(-1, merge(k - 1, 1, k > 0), j == 0 .or. done_run(runs, k - 1, j) .or. &
+                done_run(runs, k + 1, j))
    end function time_partner
 
    !> Whether run (k, j) (mesh 0, below dt0) needs the run (1, 1): no interaction measured yet.
@@ -394,21 +356,6 @@ contains
       integer, intent(in) :: k, j
       cross_needed = k > 0 .and. j == 0 .and. .not. any(runs%state == state_done .and. runs%role == 'combined')
    end function cross_needed
-
-   !> The largest interaction of the combined runs done (0 when there is none).
-   pure function largest_cross(lad) result(c)
-      type(ladder_t), intent(in) :: lad
-      real(dp) :: c(nq)
-      integer :: i
-      c = 0.0_dp
-      associate (runs => lad%runs, tx => lad%tx, mx => lad%mx)
-      do i = 1, size(runs)
-         if (runs(i)%state /= state_done .or. runs(i)%role /= 'combined') cycle
-         if (runs(i)%k >= tx%levels .or. runs(i)%j >= mx%levels) cycle
-         c = max(c, abs(runs(i)%q - runs(tx%run(runs(i)%k + 1))%q - runs(mx%run(runs(i)%j + 1))%q + runs(tx%run(1))%q))
-      end do
-      end associate
-   end function largest_cross
 
    !> The cheapest run (k, j) meeting the target, priced with the runs it still needs (its time
    !> partner, (1, 1) while cross_needed); past the cap: beyond_cap; none: the least worst done.
@@ -421,14 +368,13 @@ contains
       integer :: kk, jj, p
       logical :: done
       best_cost = huge(1.0_dp);  best_worst = huge(1.0_dp)
-      associate (runs => lad%runs, tx => lad%tx, mx => lad%mx)
-      do kk = 0, merge(tx%levels, tx%levels - 1, tx%levels <= lad%k_max)
-         do jj = 0, merge(0, mx%levels - 1, kk == tx%levels)
+      do kk = 0, merge(lad%tx%levels, lad%tx%levels - 1, lad%tx%levels <= lad%k_max)
+         do jj = 0, merge(0, lad%mx%levels - 1, kk == lad%tx%levels)
             jd = judge_run(lad, kk, jj)
-            done = done_run(runs, kk, jj);  p = time_partner(runs, kk, jj)
+            done = done_run(lad%runs, kk, jj);  p = time_partner(lad%runs, kk, jj)
             cost = merge(0.0_dp, run_cost(kk, jj), done)
             if (p >= 0) cost = cost + run_cost(p, jj)     ! a partner is never done (time_partner)
-            if (cross_needed(runs, kk, jj) .and. mx%levels > 1) cost = cost + run_cost(1, 1)
+            if (cross_needed(lad%runs, kk, jj) .and. lad%mx%levels > 1) cost = cost + run_cost(1, 1)
             if (jd%worst <= 1.0_dp .and. cost > 0.0_dp .and. la%spent + cost > la%cap) then
                if (cost < c%beyond_cost) c%beyond_kj = [kk, jj]
                c%beyond_cost = min(c%beyond_cost, cost)
@@ -441,15 +387,13 @@ contains
             end if
          end do
       end do
-      end associate
       c%beyond_cap = c%beyond_kj(1) >= 0 .and. .not. c%found
    contains
       !> The predicted cost of the run (k, j): what the cost model reads, k, nx, ny.
       real(dp) function run_cost(kr, jr)
          integer, intent(in) :: kr, jr
          type(run_t) :: probe
-         probe%k = kr
-         probe%nx = lad%runs(lad%mx%run(jr + 1))%nx;  probe%ny = lad%runs(lad%mx%run(jr + 1))%ny
+         probe = lad%runs(lad%mx%run(jr + 1));  probe%k = kr   ! a ladder run: cost_factor 1
          run_cost = predicted_run_cost(probe, la)
       end function run_cost
    end function choose_run

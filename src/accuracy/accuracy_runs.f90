@@ -16,9 +16,8 @@ module accuracy_runs
    implicit none
    private
    public :: nq, iq_force, iq_peak_time, iq_failure, result_keys, result_units, run_t, launcher_t, run_planned, &
-      maxima_t, force_maxima
-   public :: state_planned, state_done, state_failed, state_skipped, state_stopped, fit_costs, predicted_run_cost, &
-             ladder_name, error_scale, is_ladder
+      maxima_t, force_maxima, state_planned, state_done, state_failed, state_skipped, state_stopped, fit_costs, &
+      predicted_run_cost, ladder_name, error_scale, is_ladder
 
    !> The results an accuracy run estimates: their summary keys and units (the last two: with
    !> &strength, with ply damage).
@@ -29,10 +28,9 @@ module accuracy_runs
    !> The places in result_keys of the peak force, the contact duration, the time of the peak, the failure index.
    integer, parameter :: iq_force = 1, iq_duration = 3, iq_peak_time = 4, iq_failure = 6
 
-   !> States of a run (stopped: by a stop signal to the accuracy run).
+   !> States of a run (stopped: by a stop signal to the accuracy run); a variant's settings, at most.
    integer, parameter :: state_planned = 0, state_running = 1, state_done = 2, state_failed = 3, state_skipped = 4, &
-                         state_stopped = 5
-   integer, parameter :: max_variant = 4
+                         state_stopped = 5, max_variant = 4
    !> The cost model's exponent of the element count before two meshes are measured, and its bounds.
    real(dp), parameter :: gamma_default = 1.8_dp, gamma_min = 1.0_dp, gamma_max = 3.0_dp
    !> The force's local maxima kept by force_maxima: those at least this fraction of the largest (-).
@@ -40,24 +38,20 @@ module accuracy_runs
 
    !> The local maxima of a run's force (a row above the one before and not below the one after).
    type :: maxima_t
-      real(dp), allocatable :: t_us(:)            !< their times (us)
-      real(dp), allocatable :: f_n(:)             !< their forces (N)
+      real(dp), allocatable :: t_us(:), f_n(:)    !< their times (us), their forces (N)
    end type maxima_t
 
    !> One run of the ladder, or a model variant at the chosen settings.
    type :: run_t
       character(len=48) :: name = ''              !< its name: <prefix>_acc/<name>_summary.dat
       character(len=12) :: role = ''              !< 'time', 'mesh', 'combined', 'theory' or 'bend_twist'
-      integer :: k = 0                            !< time level: dt = dt0/2^k
-      integer :: j = 0                            !< mesh level
-      real(dp) :: dt = 0.0_dp                     !< time step (s)
+      integer :: k = 0, j = 0                     !< time level (dt = dt0/2^k), mesh level
       integer :: nx = 0, ny = 0                   !< elements (&mesh nx, ny)
-      real(dp) :: grading = 1.0_dp                !< &mesh grading
+      real(dp) :: dt = 0.0_dp, grading = 1.0_dp   !< time step (s), &mesh grading
       character(len=64) :: variant(max_variant) = ''   !< the variant's settings, 'group.var=value'
       real(dp) :: cost_factor = 1.0_dp            !< the variant's domain, in quarters
       integer :: state = state_planned            !< state_planned, ...
-      integer :: pid = -1                         !< its process while it runs
-      integer :: exit_code = 0                    !< its exit status
+      integer :: pid = -1, exit_code = 0          !< its process while it runs, its exit status
       real(dp) :: cpu_s = 0.0_dp                  !< its cpu time, from its summary (s)
       real(dp) :: q(nq) = 0.0_dp                  !< its results, result_keys' units
       logical :: has(nq) = .false.                !< which it has
@@ -69,16 +63,13 @@ module accuracy_runs
 
    !> What starting a run needs, and the spending so far.
    type :: launcher_t
-      character(len=:), allocatable :: exe        !< the program
-      character(len=:), allocatable :: deck_path  !< the deck
-      character(len=:), allocatable :: dir        !< '<prefix>_acc/'
+      character(len=:), allocatable :: exe, deck_path, dir   !< the program, the deck, '<prefix>_acc/'
       character(len=8192), allocatable :: user_settings(:)   !< the user's --set values, in order
       character(len=32) :: theory = ''            !< the theory of every ladder run
       type(scene_t) :: scene                      !< the scene of the deck's model (domain, D16, D26)
       logical :: every_step = .false.             !< history every step (&strength: the failure index)
       logical :: restart = .false.                !< --restart: each run continues from its restart point
-      integer :: cpus = 1                         !< runs at a time
-      integer :: n0 = 1                           !< elements of mesh level 0 (nx ny)
+      integer :: cpus = 1, n0 = 1                 !< runs at a time; elements of mesh level 0 (nx ny)
       real(dp) :: impact_element(2) = 0.0_dp      !< sides of the element at the impact point, level 0 (m)
       real(dp) :: gauge(2) = 0.0_dp               !< the strain gauge of level 0 (m, from the plate centre)
       real(dp) :: cap = huge(1.0_dp)              !< &accuracy max_cpu_s (s)
@@ -101,19 +92,19 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer :: i, pid, code, running
+      real(dp) :: cost(size(runs))
+      character(len=48), allocatable :: names(:)
       logical :: known
       stat = 0;  running = 0
       do
          launch: do while (running < la%cpus .and. stat == 0 .and. stop_caught() == 0)
-            ! the next: the dearest planned, or while the costs are unknown the cheapest alone
-            i = 0
-            if (la%c_base >= 0.0_dp) i = maxloc(predicted_run_cost(runs, la), &
-                                                mask=runs%state == state_planned, dim=1)
-            if (la%c_base < 0.0_dp .and. running == 0) i = minloc(predicted_run_cost(runs, la), &
-                                                                 mask=runs%state == state_planned, dim=1)
+            cost = predicted_run_cost(runs, la)
+            i = 0   ! the next: the dearest planned; while the costs are unknown the cheapest alone
+            if (la%c_base >= 0.0_dp) i = maxloc(cost, mask=runs%state == state_planned, dim=1)
+            if (la%c_base < 0.0_dp .and. running == 0) i = minloc(cost, mask=runs%state == state_planned, dim=1)
             if (i == 0) exit launch
-            if (la%c_base >= 0.0_dp .and. la%spent + sum(predicted_run_cost(runs, la), &
-                mask=runs%state == state_running) + predicted_run_cost(runs(i), la) > la%cap) then
+            if (la%c_base >= 0.0_dp .and. &
+                la%spent + sum(cost, mask=runs%state == state_running) + cost(i) > la%cap) then
                runs(i)%state = state_skipped;  la%cap_reached = .true.
                cycle launch
             end if
@@ -136,31 +127,21 @@ contains
          known = la%c_base >= 0.0_dp
          call finish_run(runs(i), la)
          call fit_costs(runs, la)
-         if (.not. known .and. la%c_base >= 0.0_dp) call state_price(runs, la)
+         if (known .or. la%c_base < 0.0_dp) cycle
+         ! the first run done: the cap, when a multiple of it, and the price on standard output
+         if (la%cap_times > 0) la%cap = real(la%cap_times, dp)*la%spent
+         cost = merge(predicted_run_cost(runs, la), 0.0_dp, runs%state == state_planned)
+         names = pack(runs%name, runs%state == state_planned)
+         write (la%unit, '(*(a))') 'accuracy: next,', (' ' // trim(names(i)), i = 1, size(names)), &
+            ': predicted ', real_short(sum(cost)), ' s of cpu, ', real_short(max(maxval(cost), sum(cost)/la%cpus)), &
+            ' s of wall; then more levels while the target is not met, within the cap of ', real_short(la%cap), &
+            ' s of cpu'
+         flush (la%unit)
       end do
       if (stop_caught() /= 0) where (runs%state == state_planned) runs%state = state_stopped
       la%cap_reached = la%cap_reached .or. (stat == 0 .and. any(runs%state == state_planned))
       if (stat == 0) where (runs%state == state_planned) runs%state = state_skipped
    end subroutine run_planned
-
-   !> Once the first run is done: the cap, when a multiple of it, and the price on standard output.
-   subroutine state_price(runs, la)
-      type(run_t), intent(in) :: runs(:)
-      type(launcher_t), intent(inout) :: la        !< the launcher (its cost model, known now)
-      real(dp) :: cost(size(runs))
-      character(len=:), allocatable :: names
-      integer :: i
-      if (la%cap_times > 0) la%cap = real(la%cap_times, dp)*la%spent
-      cost = merge(predicted_run_cost(runs, la), 0.0_dp, runs%state == state_planned)
-      names = ''
-      do i = 1, size(runs)
-         if (runs(i)%state == state_planned) names = names // ' ' // trim(runs(i)%name)
-      end do
-      write (la%unit, '(a)') 'accuracy: next,' // names // ': predicted ' // real_short(sum(cost)) // &
-         ' s of cpu, ' // real_short(max(maxval(cost), sum(cost)/la%cpus)) // ' s of wall; then more levels ' // &
-         'while the target is not met, within the cap of ' // real_short(la%cap) // ' s of cpu'
-      flush (la%unit)
-   end subroutine state_price
 
    !> The cost model's prediction of a run's cpu time (s; 0 while nothing is known): the run done
    !> on its mesh at the time level nearest its own (the finer of two), else c 2^k (n/n0)^gamma.
@@ -168,7 +149,8 @@ contains
       type(run_t), intent(in) :: run               !< the run (its k, nx, ny, cost_factor)
       type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
       integer :: a
-      predicted_run_cost = max(la%c_base, 0.0_dp)*relative_cost(run, la%n0, la%gamma)
+      predicted_run_cost = max(la%c_base, 0.0_dp)*(2.0_dp**run%k*(real(run%nx, dp)*real(run%ny, dp) &
+                                                   /real(la%n0, dp)*run%cost_factor)**la%gamma)
       if (.not. allocated(la%anchors)) return
       ! the nearest k, of two as near the finer (k < 100)
       a = minloc(100*abs(la%anchors%k - run%k) - la%anchors%k, mask=la%anchors%nx == run%nx .and. &
@@ -190,14 +172,6 @@ contains
       character(len=:), allocatable :: name
       name = 't' // int_str(k) // '_m' // int_str(j)
    end function ladder_name
-
-   !> A run's cost relative to the level-0 run of n0 elements (module header).
-   pure real(dp) function relative_cost(run, n0, gamma)
-      type(run_t), intent(in) :: run
-      integer, intent(in) :: n0                    !< level 0's elements
-      real(dp), intent(in) :: gamma                !< the exponent of the element count
-      relative_cost = 2.0_dp**run%k*(real(run%nx, dp)*real(run%ny, dp)/real(n0, dp)*run%cost_factor)**gamma
-   end function relative_cost
 
    !> True for a run of the ladder, false for a model variant.
    elemental logical function is_ladder(run)
@@ -224,7 +198,8 @@ contains
       la%anchors = pack(runs, runs%state == state_done .and. is_ladder(runs))
       ! c from the costliest run done: the best guide to the costly runs to come
       i = maxloc(runs%cpu_s, mask=runs%state == state_done, dim=1)
-      if (i > 0) la%c_base = runs(i)%cpu_s/relative_cost(runs(i), la%n0, la%gamma)
+      if (i > 0) la%c_base = runs(i)%cpu_s/(2.0_dp**runs(i)%k*(real(runs(i)%nx, dp)*real(runs(i)%ny, dp) &
+                                            /real(la%n0, dp)*runs(i)%cost_factor)**la%gamma)
    end subroutine fit_costs
 
    !> The arguments of a run, without the program.
@@ -232,34 +207,24 @@ contains
       type(run_t), intent(in) :: run
       type(launcher_t), intent(in) :: la
       character(len=8192), allocatable :: args(:), sets(:)
+      character(len=:), allocatable :: prefix
       integer :: i
+      prefix = la%dir // trim(run%name)
+      quoted: do i = len(prefix), 1, -1                  ! as a deck's quoted text: a quote in it doubled
+         if (prefix(i:i) == "'") prefix = prefix(:i) // prefix(i:)
+      end do quoted
       args = [character(len=8192) :: '--single']       ! one run: the deck's &accuracy left aside
       if (la%restart) args = [args, [character(len=8192) :: '--restart']]
-      sets = [character(len=8192) :: la%user_settings, 'output.prefix=' // quoted(la%dir // trim(run%name)), &
+      sets = [character(len=8192) :: la%user_settings, "output.prefix='" // prefix // "'", &
          'output.overwrite=.true.', 'output.hdf5=.false.']
       if (la%every_step) sets = [sets, [character(len=8192) :: 'output.every=1']]
       sets = [character(len=8192) :: sets, 'analysis.dt=' // real_str(run%dt), 'mesh.nx=' // int_str(run%nx), &
          'mesh.ny=' // int_str(run%ny), 'mesh.grading=' // real_str(run%grading), &
          'output.gauge_x=' // real_str(la%gauge(1)), 'output.gauge_y=' // real_str(la%gauge(2)), &   ! level 0's gauge
-         'analysis.theory=' // quoted(trim(la%theory)), pack(run%variant, len_trim(run%variant) > 0)]
-      do i = 1, size(sets)
-         args = [args, [character(len=8192) :: '--set', sets(i)]]
-      end do
-      args = [args, [character(len=8192) :: la%deck_path]]
+         "analysis.theory='" // trim(la%theory) // "'", pack(run%variant, len_trim(run%variant) > 0)]
+      args = [args, [character(len=8192) :: ([character(len=8192) :: '--set', sets(i)], i = 1, size(sets)), &
+                     la%deck_path]]
    end function run_settings
-
-   !> text as a deck's quoted text: 'text', a quote in it doubled.
-   pure function quoted(text) result(q)
-      character(len=*), intent(in) :: text
-      character(len=:), allocatable :: q
-      integer :: i
-      q = "'"
-      do i = 1, len(text)
-         q = q // text(i:i)
-         if (text(i:i) == "'") q = q // "'"
-      end do
-      q = q // "'"
-   end function quoted
 
    !> A run that ended: its summary read, its state, one line of progress.
    subroutine finish_run(run, la)
@@ -269,8 +234,6 @@ contains
       character(len=msg_len) :: errmsg
       character(len=:), allocatable :: line
       integer :: stat, iq
-      real(dp) :: nan
-      nan = ieee_value(nan, ieee_quiet_nan)
       call read_summary(la%dir // trim(run%name) // '_summary.dat', s, stat, errmsg)
       run%state = merge(state_done, state_failed, stat == 0 .and. run%exit_code == 0)
       run%status = 'no summary (' // la%dir // trim(run%name) // '.log)'
@@ -282,7 +245,7 @@ contains
          int_str(run%nx) // ' x ' // int_str(run%ny)
       do iq = 1, nq
          run%has(iq) = summary_has(s, result_keys(iq))
-         run%q(iq) = summary_value(s, result_keys(iq), nan)
+         run%q(iq) = summary_value(s, result_keys(iq), ieee_value(0.0_dp, ieee_quiet_nan))
          if (run%has(iq)) line = line // ', ' // trim(result_keys(iq)) // ' ' // real_short(run%q(iq))
       end do
       if (run%state == state_done) call force_maxima(la%dir // trim(run%name) // '_history.dat', run%maxima)

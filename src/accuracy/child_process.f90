@@ -18,22 +18,21 @@ module child_process
    public :: spawn_program, wait_child, program_path, usable_cpus, pass_stops_to_children, stop_caught, &
              die_with_parent
 
-   !> The environment variable that makes a child die with its parent; the longest path read.
+   !> The environment variable that makes a child die with its parent.
    character(len=*), parameter :: parent_variable = 'IMPACT_PARENT_PID'
-   integer, parameter :: max_path = 4096
    !> POSIX_SPAWN_SETPGROUP (glibc), PR_SET_PDEATHSIG, SIGKILL, ELOOP (open(2) with O_NOFOLLOW
    !> on a link), a log file's permissions before the umask, standard output and error.
    integer(c_int16_t), parameter :: spawn_setpgroup = 2_c_int16_t
    integer(c_int), parameter :: pr_set_pdeathsig = 1, sigkill = 9, eloop = 40, log_mode = int(o'666', c_int), &
       fd_out = 1, fd_err = 2
-   !> Children held at most, their ids, and the signal caught (0: none).
-   integer, parameter :: max_children = 256
+   !> The longest path read, the children held at most; their ids, and the signal caught (0: none).
+   integer, parameter :: max_path = 4096, max_children = 256
    integer(c_int), volatile, save :: children(max_children) = 0, stopped = 0
 
 contains
 
-   !> Starts the program `path` with `args`, its output and errors into `log_path` (emptied),
-   !> the environment inherited with IMPACT_PARENT_PID, in a process group of its own.
+   !> Starts the program `path` with `args`, its output and errors into `log_path` (emptied), in a
+   !> process group of its own, its environment IMPACT_PARENT_PID=<pid> and /proc/self/environ's.
    subroutine spawn_program(path, args, log_path, pid, stat, errmsg)
       character(len=*), intent(in) :: path
       character(len=*), intent(in) :: args(:)       !< its arguments, trailing blanks not part of them
@@ -44,68 +43,54 @@ contains
       type(spawn_actions_t) :: actions
       type(spawn_attr_t) :: attr
       character(kind=c_char), allocatable, target :: chars(:), env(:)
-      character(len=max(len(path), len(args))) :: words(size(args) + 1)
-      type(c_ptr), allocatable :: argv(:), envp(:)
-      integer(c_int) :: cpid, r
-      integer :: i, at, n, ignored
-      words = [character(len=len(words)) :: path, args]   ! as C strings in chars, argv their pointers
-      allocate (chars(sum(len_trim(words)) + size(words)), argv(size(words) + 1))
-      at = 1
-      do i = 1, size(words)
-         n = len_trim(words(i))
-         chars(at:at + n) = transfer(trim(words(i)) // c_null_char, chars)
-         argv(i) = c_loc(chars(at))
-         at = at + n + 1
+      character(len=:), allocatable :: text
+      integer(c_int) :: cpid
+      integer :: i, ignored, u, ios, n
+      text = trim(path) // c_null_char                 ! the program and its arguments as C strings
+      do i = 1, size(args)
+         text = text // trim(args(i)) // c_null_char
       end do
-      argv(size(argv)) = c_null_ptr
-      call child_environment(env, envp)
+      chars = transfer(text, c_null_char, len(text))
+      text = parent_variable // '=' // int_str(int(c_getpid())) // c_null_char   ! and the environment
+      n = len(text)
+      allocate (env(n + 4096))
+      env(:n) = transfer(text, env, n)
+      open (newunit=u, file='/proc/self/environ', access='stream', form='unformatted', action='read', iostat=ios)
+      do while (ios == 0)
+         if (n == size(env)) env = [env, env]
+         read (u, iostat=ios) env(n + 1)
+         if (ios == 0) n = n + 1
+      end do
+      if (ios > 0 .or. env(n) /= c_null_char) n = len(text)   ! unreadable: ours alone
+      close (u, iostat=ios)
       pid = -1
-      r = c_spawn_actions_init(actions)
-      if (r == 0) r = c_spawnattr_init(attr)
-      if (r == 0) r = c_spawnattr_setflags(attr, spawn_setpgroup)
-      if (r == 0) r = c_spawnattr_setpgroup(attr, 0_c_int)          ! its own group, led by itself
-      if (r == 0) r = c_spawn_actions_addopen(actions, fd_out, log_path // c_null_char, o_write_no_follow, &
-                                              log_mode)
-      if (r == 0) r = c_spawn_actions_adddup2(actions, fd_out, fd_err)
-      if (r == 0) r = c_posix_spawn(cpid, path // c_null_char, actions, attr, argv, envp)
+      stat = c_spawn_actions_init(actions)
+      if (stat == 0) stat = c_spawnattr_init(attr)
+      if (stat == 0) stat = c_spawnattr_setflags(attr, spawn_setpgroup)
+      if (stat == 0) stat = c_spawnattr_setpgroup(attr, 0_c_int)          ! its own group, led by itself
+      if (stat == 0) stat = c_spawn_actions_addopen(actions, fd_out, log_path // c_null_char, &
+                                                    o_write_no_follow, log_mode)
+      if (stat == 0) stat = c_spawn_actions_adddup2(actions, fd_out, fd_err)
+      if (stat == 0) stat = c_posix_spawn(cpid, path // c_null_char, actions, attr, pointers(chars), &
+                                          pointers(env(:n)))
       ignored = c_spawn_actions_destroy(actions)
       ignored = c_spawnattr_destroy(attr)
-      stat = r
-      if (r /= 0) errmsg = 'cannot start ' // path // ' (posix_spawn: error ' // int_str(r) // ')'
-      if (r == eloop) errmsg = log_path // ' is a symbolic link: a run writes no file through a link'
-      if (r /= 0) return
+      if (stat /= 0) errmsg = 'cannot start ' // path // ' (posix_spawn: error ' // int_str(stat) // ')'
+      if (stat == eloop) errmsg = log_path // ' is a symbolic link: a run writes no file through a link'
+      if (stat /= 0) return
       pid = cpid
       i = findloc(children, 0_c_int, dim=1)
       if (i > 0) children(i) = cpid
       if (stopped /= 0) ignored = c_kill(-cpid, stopped)             ! a stop came while it started
+   contains
+      !> argv or envp: the C strings in s, one at 1 and after each nul but the last, then null.
+      function pointers(s) result(p)
+         character(kind=c_char), intent(in), target :: s(:)
+         type(c_ptr), allocatable :: p(:)
+         integer :: k
+         p = [pack([(c_loc(s(k)), k = 1, size(s))], [.true., s(:size(s) - 1) == c_null_char]), c_null_ptr]
+      end function pointers
    end subroutine spawn_program
-
-   !> A child's environment: IMPACT_PARENT_PID=<pid>, then /proc/self/environ; envp the pointers.
-   subroutine child_environment(env, envp)
-      character(kind=c_char), allocatable, target, intent(out) :: env(:)   !< the strings
-      type(c_ptr), allocatable, intent(out) :: envp(:)                    !< their pointers
-      character(kind=c_char), allocatable :: more(:)
-      character(len=:), allocatable :: ours
-      integer :: u, ios, n, i
-      ours = parent_variable // '=' // int_str(int(c_getpid())) // c_null_char
-      allocate (env(len(ours) + 4096))
-      n = len(ours)
-      env(:n) = transfer(ours, env, n)
-      open (newunit=u, file='/proc/self/environ', access='stream', form='unformatted', action='read', iostat=ios)
-      do while (ios == 0)
-         if (n == size(env)) then
-            allocate (more(2*n))
-            more(:n) = env
-            call move_alloc(more, env)
-         end if
-         read (u, iostat=ios) env(n + 1)
-         if (ios == 0) n = n + 1
-      end do
-      if (ios > 0 .or. env(n) /= c_null_char) n = len(ours)   ! unreadable: ours alone
-      close (u, iostat=ios)
-      ! a string starts at 1 and after each nul but the last
-      envp = [pack([(c_loc(env(i)), i = 1, n)], [.true., env(:n - 1) == c_null_char]), c_null_ptr]
-   end subroutine child_environment
 
    !> Waits for any child of the process to end.
    subroutine wait_child(pid, exit_code)
@@ -148,11 +133,10 @@ contains
    !> With IMPACT_PARENT_PID: SIGKILL when the parent ends, or at once when it has ended already.
    subroutine die_with_parent()
       character(len=24) :: text
-      integer :: length, st, parent
+      integer :: st, parent
       integer(c_int) :: r
-      call get_environment_variable(parent_variable, text, length, st)
-      if (st /= 0 .or. length == 0) return
-      read (text, *, iostat=st) parent
+      call get_environment_variable(parent_variable, text, status=st)
+      if (st == 0) read (text, *, iostat=st) parent        ! none, or blank: st /= 0
       if (st /= 0) return
       r = c_prctl(pr_set_pdeathsig, int(sigkill, c_long))
       if (c_getppid() /= parent) call c_exit(128_c_int + sigkill)
@@ -175,16 +159,15 @@ contains
    !> The CPUs the process may run on (at least 1): the affinity mask's, or Slurm's when smaller.
    integer function usable_cpus() result(n)
       type(cpu_set_t) :: mask
-      integer :: i, slurm, length, st
+      integer :: i, slurm, st
       character(len=32) :: text
       character(len=*), parameter :: slurm_vars(2) = [character(len=19) :: 'SLURM_CPUS_PER_TASK', 'SLURM_CPUS_ON_NODE']
       n = 1
       if (c_sched_getaffinity(0_c_int, int(storage_size(mask)/8, c_size_t), mask) == 0) &
          n = max(1, sum([(popcnt(mask%bits(i)), i = 1, size(mask%bits))]))
       do i = 1, size(slurm_vars)
-         call get_environment_variable(trim(slurm_vars(i)), text, length, st)
-         if (st /= 0 .or. length == 0) cycle
-         read (text, *, iostat=st) slurm
+         call get_environment_variable(trim(slurm_vars(i)), text, status=st)
+         if (st == 0) read (text, *, iostat=st) slurm     ! none, or blank: st /= 0
          if (st == 0 .and. slurm > 0) n = min(n, slurm)
       end do
    end function usable_cpus
