@@ -139,6 +139,8 @@ contains
          i = merge(1, 0, x)
          call io_block(s, i)
          if (s%stat == 0) x = i /= 0
+      class default
+         s%stat = wrong_tag
       end select
    end subroutine io_block
 
