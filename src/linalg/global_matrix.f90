@@ -10,8 +10,8 @@ module global_matrix
    use number_text, only: int_str
    use band_matrix, only: band_matrix_t, band_init, band_in_band, band_add, band_matvec, &
                           band_factor, band_solve, band_axpy
-   use skyline_matrix, only: skyline_matrix_t, skyline_init, skyline_in_profile, skyline_add, &
-                             skyline_half_bandwidth, skyline_matvec, skyline_factor, skyline_solve, skyline_axpy
+   use skyline_matrix, only: skyline_matrix_t, skyline_init, skyline_in_profile, skyline_add, skyline_axpy, &
+                             skyline_half_bandwidth, skyline_matvec, skyline_factor, skyline_solve
    use sparse_matrix, only: sparse_matrix_t, sparse_init, sparse_zero, sparse_in_pattern, sparse_add, &
                             sparse_matvec, sparse_axpy, sparse_factor, sparse_solve, &
                             sparse_half_bandwidth, sparse_entries, sparse_release, sparse_copy_factor
