@@ -6,11 +6,11 @@ module test_helpers
    use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: dp, msg_len
    use result_reader, only: summary_t, read_summary, summary_value, summary_string
-   use global_matrix, only: global_matrix_t, global_init, global_assemble
+   use global_matrix, only: global_matrix_t, global_init, global_assemble, global_matvec
    implicit none
    private
    public :: line_len, read_lines, result_lines, summary_number, summary_word
-   public :: nfe, grid_freedoms, assemble_system, random_spd, random_vector
+   public :: nfe, grid_freedoms, assemble_system, random_spd, random_vector, dense_of
 
    !> Length of a line read (read_lines, result_lines).
    integer, parameter :: line_len = 1024
@@ -183,5 +183,18 @@ contains
          v(k) = 2.0_dp*real(state, dp)/real(pm_modulus, dp) - 1.0_dp
       end do
    end subroutine random_vector
+
+   !> The unfactored global matrix g as a dense array, column j = A e_j (global_matvec).
+   function dense_of(g) result(d)
+      type(global_matrix_t), intent(in) :: g               !< the matrix, not factored
+      real(dp) :: d(g%neq, g%neq)
+      real(dp) :: e(g%neq)
+      integer :: j
+      do j = 1, g%neq
+         e = 0.0_dp
+         e(j) = 1.0_dp
+         call global_matvec(g, e, d(:, j))
+      end do
+   end function dense_of
 
 end module test_helpers

@@ -10,8 +10,7 @@ module band_matrix
    implicit none
    private
    public :: band_matrix_t, check_pivot, check_pivots
-   public :: band_init, band_in_band, band_add, band_get, &
-             band_matvec, band_factor, band_solve, band_axpy
+   public :: band_init, band_in_band, band_add, band_matvec, band_factor, band_solve, band_axpy
 
    !> Relative pivot tolerance: pivot d_j <= pivot_rel_tol*|A(j,j)| fails
    !> (64 machine epsilons, about 1.4e-14: all digits of d_j lost).
@@ -129,14 +128,6 @@ contains
       if (band_in_band(a, i, j)) a%ab(a%kd + 1 - abs(i - j), max(i, j)) = &
          a%ab(a%kd + 1 - abs(i - j), max(i, j)) + value
    end subroutine band_add
-
-   !> Entry A(i,j) of the (unfactored) matrix; zero outside the band.
-   pure real(dp) function band_get(a, i, j)
-      type(band_matrix_t), intent(in) :: a  !< the matrix.
-      integer, intent(in) :: i, j      !< row and column indices
-      band_get = 0.0_dp
-      if (band_in_band(a, i, j)) band_get = a%ab(a%kd + 1 - abs(i - j), max(i, j))
-   end function band_get
 
    !> y = A x (BLAS dsbmv), a not factored and x, y of its size (global_matvec,
    !> the one caller, checks both).

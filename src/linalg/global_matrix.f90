@@ -8,13 +8,12 @@
 module global_matrix
    use kinds, only: dp, msg_len
    use number_text, only: int_str
-   use band_matrix, only: band_matrix_t, band_init, band_in_band, band_add, band_get, band_matvec, &
+   use band_matrix, only: band_matrix_t, band_init, band_in_band, band_add, band_matvec, &
                           band_factor, band_solve, band_axpy
-   use skyline_matrix, only: skyline_matrix_t, skyline_init, skyline_in_profile, skyline_add, &
-                             skyline_get, skyline_half_bandwidth, skyline_matvec, skyline_factor, &
-                             skyline_solve, skyline_axpy
+   use skyline_matrix, only: skyline_matrix_t, skyline_init, skyline_in_profile, skyline_add, skyline_axpy, &
+                             skyline_half_bandwidth, skyline_matvec, skyline_factor, skyline_solve
    use sparse_matrix, only: sparse_matrix_t, sparse_init, sparse_zero, sparse_in_pattern, sparse_add, &
-                            sparse_get, sparse_matvec, sparse_axpy, sparse_factor, sparse_solve, &
+                            sparse_matvec, sparse_axpy, sparse_factor, sparse_solve, &
                             sparse_half_bandwidth, sparse_entries, sparse_release, sparse_copy_factor
    use storage_choice, only: storage_len => storage_name_len, resolve_storage
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -23,7 +22,7 @@ module global_matrix
    public :: global_matrix_t
    public :: global_init, global_zero, global_assemble, global_axpy_matrix, &
              global_copy, global_matvec, global_factor, global_solve, &
-             global_bandwidth, global_stored_entries, global_entry, global_release
+             global_bandwidth, global_stored_entries, global_release
 
    !> A global matrix in the storage named by `storage`; only that one of
    !> `band`, `sky` and `sparse` is allocated.
@@ -333,18 +332,6 @@ contains
       case default; global_stored_entries = 0
       end select
    end function global_stored_entries
-
-   !> Entry A(i,j) of the unfactored matrix (zero outside the structure).
-   pure real(dp) function global_entry(g, i, j)
-      type(global_matrix_t), intent(in) :: g     !< the matrix, not factored
-      integer, intent(in) :: i, j                !< row and column indices
-      select case (trim(g%storage))
-      case ('band'); global_entry = band_get(g%band, i, j)
-      case ('skyline'); global_entry = skyline_get(g%sky, i, j)
-      case ('sparse'); global_entry = sparse_get(g%sparse, i, j)
-      case default; global_entry = 0.0_dp
-      end select
-   end function global_entry
 
    ! ---- private helpers ----------------------------------------------------
 

@@ -9,7 +9,7 @@ module skyline_matrix
    implicit none
    private
    public :: skyline_matrix_t
-   public :: skyline_init, skyline_in_profile, skyline_add, skyline_get, &
+   public :: skyline_init, skyline_in_profile, skyline_add, &
              skyline_half_bandwidth, skyline_matvec, skyline_factor, skyline_solve, skyline_axpy
 
    !> Storage scheme (the only place it is documented)
@@ -124,14 +124,6 @@ contains
       if (skyline_in_profile(sky, i, j)) sky%a(sky%maxa(max(i, j)) + abs(i - j)) = &
          sky%a(sky%maxa(max(i, j)) + abs(i - j)) + value
    end subroutine skyline_add
-
-   !> Entry A(i,j) of the (unfactored) matrix; zero outside the profile.
-   pure real(dp) function skyline_get(sky, i, j)
-      type(skyline_matrix_t), intent(in) :: sky  !< the matrix.
-      integer, intent(in) :: i, j      !< row and column indices
-      skyline_get = 0.0_dp
-      if (skyline_in_profile(sky, i, j)) skyline_get = sky%a(sky%maxa(max(i, j)) + abs(i - j))
-   end function skyline_get
 
    !> y = A x, column by column over the stored upper triangle; sky not factored and x, y of
    !> its size (global_matvec, the one caller, checks both).

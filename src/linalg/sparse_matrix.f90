@@ -13,7 +13,7 @@ module sparse_matrix
    implicit none
    private
    public :: sparse_matrix_t
-   public :: sparse_init, sparse_zero, sparse_in_pattern, sparse_add, sparse_get, sparse_matvec, &
+   public :: sparse_init, sparse_zero, sparse_in_pattern, sparse_add, sparse_matvec, &
              sparse_axpy, sparse_factor, sparse_solve, sparse_half_bandwidth, sparse_entries, sparse_release, &
              sparse_copy_factor
 
@@ -242,17 +242,6 @@ contains
       p = locate(a, i, j)
       if (p > 0) a%val(p) = a%val(p) + value
    end subroutine sparse_add
-
-   !> Entry A(i,j) of the unfactored matrix; zero outside the pattern (and once factored).
-   pure real(dp) function sparse_get(a, i, j)
-      type(sparse_matrix_t), intent(in) :: a  !< the matrix.
-      integer, intent(in) :: i, j  !< row and column indices.
-      integer(int64) :: p
-      sparse_get = 0.0_dp
-      if (.not. allocated(a%val)) return
-      p = locate(a, i, j)
-      if (p > 0) sparse_get = a%val(p)
-   end function sparse_get
 
    !> y = A x, a not factored and x, y of its size (global_matvec, the one
    !> caller, checks both).

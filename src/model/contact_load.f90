@@ -247,7 +247,8 @@ contains
          if (allocated(pat%eq)) deallocate (pat%eq)
          if (allocated(pat%c)) deallocate (pat%c)
          if (allocated(pat%poly)) deallocate (pat%poly)
-         allocate (pat%eq(max(n, 16)), pat%c(max(n, 16)), pat%poly(0:4, max(n, 16)))
+         allocate (pat%eq(max(n, 16)), pat%c(max(n, 16)))
+         allocate (pat%poly(0:4, max(n, 16)), source=0.0_dp)   ! defined: a restart point holds it
       end if
    end subroutine make_room
 

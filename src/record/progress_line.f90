@@ -10,7 +10,7 @@ module progress_line
    implicit none
    private
    public :: progress_t, progress_start, progress_step, progress_end, progress_due, progress_timed, progress_left, &
-             time_left_s, duration_text
+             duration_text
 
    !> Updates a second, at most, of the line on a terminal.
    real(dp), parameter :: terminal_rate = 4.0_dp
@@ -103,15 +103,9 @@ contains
       real(dp), intent(in) :: elapsed        !< wall seconds since the clock started
       left = -1.0_dp
       if (prog%step0 < 0 .or. step - prog%step0 < timed_steps) return
-      left = time_left_s(step - prog%step0, prog%nstep - prog%step0, elapsed - prog%elapsed0)
+      ! the time per step of those timed, times the steps left
+      left = (elapsed - prog%elapsed0)*real(prog%nstep - step, dp)/real(step - prog%step0, dp)
    end function progress_left
-
-   !> The wall time left (s) after `step` of `nstep` steps took `elapsed` s.
-   pure real(dp) function time_left_s(step, nstep, elapsed) result(left)
-      integer, intent(in) :: step, nstep   !< steps done, and in all
-      real(dp), intent(in) :: elapsed      !< wall seconds for those done
-      left = elapsed*real(nstep - step, dp)/real(max(step, 1), dp)
-   end function time_left_s
 
    !> A wall time for people: '42 s', '3 min 05 s', '2 h 07 min'.
    pure function duration_text(seconds) result(text)

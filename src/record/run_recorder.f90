@@ -184,6 +184,7 @@ contains
       integer, intent(out) :: stat                       !< 0 on success
       character(len=*), intent(inout) :: errmsg          !< reason on failure
       type(step_figures_t) :: fig
+      real(dp) :: work
       stat = 0
       rec%restart_due = .false.
       associate (plate => st%plate, imp => st%imp)
@@ -192,7 +193,15 @@ contains
          strain_y=back_face_strain(model, plate%d))
       rec%steps = step
       rec%solves_before = solver%solves
-      call add_contact_work(rec, st)
+      ! -- the step's contact work on the plate (trapezoidal rule, 1/2 (F_t p_t + F_t+dt p_t+dt)^T
+      ! (D_t+dt - D_t)) and the energy the contact took, 1/2 (F_t + F_t+dt) dw_r less that work (J)
+      work = 0.5_dp*(rec%imp_prev%f*pattern_mean(rec%pattern_prev, plate%d - rec%d_prev) &
+                     + imp%f*pattern_mean(st%cit%pattern, plate%d - rec%d_prev))
+      rec%contact_work = rec%contact_work + work
+      rec%contact_energy = rec%contact_energy + 0.5_dp*(rec%imp_prev%f + imp%f)*(imp%w - rec%imp_prev%w) - work
+      rec%imp_prev = imp
+      rec%pattern_prev = st%cit%pattern
+      rec%d_prev = plate%d
       rec%u_damage = solver%damage%u_lost
       rec%dissipated = solver%damage%dissipated
       call update_maxima(rec, fig, model, st, stat, errmsg)
@@ -213,24 +222,6 @@ contains
       if (stat == 0) call results_tick(rec%h5, rec%restart_due, stat, errmsg)
       end associate
    end subroutine record_step
-
-   !> The step's contact work on the plate (trapezoidal rule,
-   !> 1/2 (F_t p_t + F_t+dt p_t+dt)^T (D_t+dt - D_t)) and the energy the contact
-   !> took, 1/2 (F_t + F_t+dt) dw_r less that work (J, whole plate).
-   subroutine add_contact_work(rec, st)
-      type(record_t), intent(inout) :: rec               !< the record
-      type(step_state_t), intent(in) :: st               !< the step accepted: plate, impactor, contact area
-      real(dp) :: work
-      associate (plate => st%plate, imp => st%imp, cit => st%cit)
-      work = 0.5_dp*(rec%imp_prev%f*pattern_mean(rec%pattern_prev, plate%d - rec%d_prev) &
-                     + imp%f*pattern_mean(cit%pattern, plate%d - rec%d_prev))
-      rec%contact_work = rec%contact_work + work
-      rec%contact_energy = rec%contact_energy + 0.5_dp*(rec%imp_prev%f + imp%f)*(imp%w - rec%imp_prev%w) - work
-      rec%imp_prev = imp
-      rec%pattern_prev = cit%pattern
-      rec%d_prev = plate%d
-      end associate
-   end subroutine add_contact_work
 
    !> The summary's running figures of every step: the peaks' samples
    !> (step_peak), the contacts, w/h, the iterations, the bending deflection
@@ -455,8 +446,18 @@ contains
       character(len=msg_len) :: text, dtext
       integer :: ios, dstat
       real(dp) :: f_peak, t_peak, w_max, t_w
+      logical :: short
       call progress_end(rec%progress)
-      call closing_warnings(rec, model)
+      ! -- the end's warnings (a linear run that needed the nonlinear theory) and their count
+      call theory_warning(model%scene, rec%w_bend_max, short, text)
+      if (short) then
+         write (error_unit, '(a)') 'impact: warning: ' // trim(text)
+         rec%warnings = rec%warnings + 1
+      end if
+      if (rec%warnings > 0) write (error_unit, '(a)') 'impact: ' // int_str(rec%warnings) // ' warning(s) above; ' &
+         // 'steps with a fall-back: nonlinear ' // int_str(rec%nonlinear_fallback_steps) // ', contact ' &
+         // int_str(rec%contact_fallback_steps) // ', sub-stepped ' // int_str(rec%substepped_steps) &
+         // '; largest w/h ' // real_short(rec%max_w_over_h)
       call run_summary(rec, solver, st, s)
       ! -- where the strain gauge of max_strain_y_back is (src/model/plate_model.f90, place_gauge)
       call summary_real(s, 'gauge_x_mm', 'gauge_x', 'm', model%gauge_xy(1), 1.0e3_dp)
@@ -489,23 +490,6 @@ contains
          ' N at ', t_peak*1.0e6_dp, ' us; contacts ', rec%contacts, '; max deflection ', &
          w_max*1.0e3_dp, ' mm; cpu ', cpu_s, ' s'
    end subroutine record_close
-
-   !> The end's warnings (a linear run that needed the nonlinear theory) and their count.
-   subroutine closing_warnings(rec, model)
-      type(record_t), intent(inout) :: rec          !< the record
-      type(model_t), intent(in) :: model            !< the model (its scene)
-      character(len=msg_len) :: text
-      logical :: short
-      call theory_warning(model%scene, rec%w_bend_max, short, text)
-      if (short) then
-         write (error_unit, '(a)') 'impact: warning: ' // trim(text)
-         rec%warnings = rec%warnings + 1
-      end if
-      if (rec%warnings > 0) write (error_unit, '(a)') 'impact: ' // int_str(rec%warnings) // ' warning(s) above; ' &
-         // 'steps with a fall-back: nonlinear ' // int_str(rec%nonlinear_fallback_steps) // ', contact ' &
-         // int_str(rec%contact_fallback_steps) // ', sub-stepped ' // int_str(rec%substepped_steps) &
-         // '; largest w/h ' // real_short(rec%max_w_over_h)
-   end subroutine closing_warnings
 
    !> The summary's items from its status to the fixed-point diagnostics.
    subroutine run_summary(rec, solver, st, s)

@@ -289,16 +289,6 @@ contains
       if (err == 0) call h5tset_cset_f(tid, H5T_CSET_UTF8_F, err)
    end subroutine h5io_vlen_string_type
 
-   !> Writes the dataset `name` of the 1-D array x: real(dp) or integer.
-   subroutine write_1d(loc, name, x, stat, errmsg)
-      integer(hid_t), intent(in) :: loc
-      character(len=*), intent(in) :: name
-      class(*), intent(in) :: x(:)
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      call make_dataset(loc, name, shape(x, kind=hsize_t), x, stat, errmsg)
-   end subroutine write_1d
-
    !> Writes the dataset `name` of the 2-D array x, real(dp) or integer.
    subroutine write_2d(loc, name, x, stat, errmsg)
       integer(hid_t), intent(in) :: loc
@@ -309,23 +299,27 @@ contains
       stat = 1
       select type (x)
       type is (real(dp))
-         call make_dataset(loc, name, shape(x, kind=hsize_t), reshape(x, [size(x)]), stat, errmsg)
+         call write_1d(loc, name, reshape(x, [size(x)]), stat, errmsg, shape(x, kind=hsize_t))
       type is (integer)
-         call make_dataset(loc, name, shape(x, kind=hsize_t), reshape(x, [size(x)]), stat, errmsg)
+         call write_1d(loc, name, reshape(x, [size(x)]), stat, errmsg, shape(x, kind=hsize_t))
       end select
    end subroutine write_2d
 
-   !> Writes the dataset `name` of shape dims from x (real(dp) or integer), one chunk.
-   subroutine make_dataset(loc, name, dims, x, stat, errmsg)
+   !> Writes the dataset `name` of the 1-D array x, real(dp) or integer, one chunk; of shape `shp`
+   !> when given (write_2d: x in Fortran order).
+   subroutine write_1d(loc, name, x, stat, errmsg, shp)
       integer(hid_t), intent(in) :: loc
       character(len=*), intent(in) :: name
-      integer(hsize_t), intent(in) :: dims(:)
       class(*), intent(in), target, contiguous :: x(:)
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
+      integer(hsize_t), intent(in), optional :: shp(:)
+      integer(hsize_t), allocatable :: dims(:)
       integer(hid_t) :: did
       integer :: err
       stat = failed
+      allocate (dims, source=shape(x, kind=hsize_t))
+      if (present(shp)) dims = shp
       select type (x)
       type is (real(dp))
          call h5io_create_dataset(loc, name, H5T_NATIVE_DOUBLE, dims, max(dims, 1_hsize_t), did, stat, errmsg)
@@ -337,7 +331,7 @@ contains
       if (stat /= 0) return
       call h5io_check(err, 'cannot write the dataset', name, stat, errmsg)
       call h5dclose_f(did, err)
-   end subroutine make_dataset
+   end subroutine write_1d
 
    !> Overwrites the whole existing real dataset `name` with x(:), of its size.
    subroutine h5io_rewrite(loc, name, x, stat, errmsg)

@@ -57,19 +57,20 @@ contains
       if (stat /= 0) did = -1
    end subroutine h5io_open_dataset
 
-   !> The entries of the series did (its last dimension), -1 on failure.
-   integer function h5io_series_length(did) result(n)
+   !> The extent dims(:rank) of the series did, rank 1 or 2; rank 0 when it cannot be read.
+   subroutine series_extent(did, dims, rank)
       integer(hid_t), intent(in) :: did
-      integer(hsize_t) :: dims(2), maxdims(2)
+      integer(hsize_t), intent(out) :: dims(2)
+      integer, intent(out) :: rank
+      integer(hsize_t) :: maxdims(2)
       integer(hid_t) :: fspace
-      integer :: err, rank
-      n = -1
+      integer :: err
+      dims = 0
       call h5dget_space_f(did, fspace, err)
-      if (err /= 0) return
-      call h5sget_simple_extent_dims_f(fspace, dims, maxdims, rank)
-      call h5sclose_f(fspace, err)
-      if (rank >= 1 .and. rank <= 2) n = int(dims(rank))
-   end function h5io_series_length
+      if (err == 0) call h5sget_simple_extent_dims_f(fspace, dims, maxdims, rank)
+      if (err == 0) call h5sclose_f(fspace, err)
+      if (err /= 0 .or. rank < 1 .or. rank > 2) rank = 0
+   end subroutine series_extent
 
    !> Cuts the series did (n entries at least) to its first n (a restart).
    subroutine h5io_cut_series(did, n, stat, errmsg)
@@ -77,14 +78,10 @@ contains
       integer, intent(in) :: n
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      integer(hsize_t) :: dims(2), maxdims(2)
-      integer(hid_t) :: fspace
+      integer(hsize_t) :: dims(2)
       integer :: err, rank
-      call h5dget_space_f(did, fspace, err)
-      if (err == 0) call h5sget_simple_extent_dims_f(fspace, dims, maxdims, rank)
-      if (err == 0) call h5sclose_f(fspace, err)
-      call h5io_check(merge(0, 1, err == 0 .and. rank >= 1 .and. rank <= 2), &
-         'cannot read the extent of a series', '', stat, errmsg)
+      call series_extent(did, dims, rank)
+      call h5io_check(merge(0, 1, rank > 0), 'cannot read the extent of a series', '', stat, errmsg)
       if (stat /= 0) return
       if (dims(rank) < int(n, hsize_t)) then
          call h5io_fail('a series holds fewer entries than it must', '', stat, errmsg)
@@ -105,11 +102,13 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
       integer(hid_t) :: did
+      integer(hsize_t) :: dims(2)
       type(c_ptr) :: at
-      integer :: err
+      integer :: err, rank
       call h5io_open_dataset(loc, name, did, stat, errmsg)
       if (stat /= 0) return
-      allocate (x(max(0, h5io_series_length(did))))
+      call series_extent(did, dims, rank)
+      allocate (x(dims(max(rank, 1))))
       err = 0
       at = c_loc(x)                          ! (h5dread_f's buffer is intent(inout))
       if (size(x) > 0) call h5dread_f(did, H5T_NATIVE_DOUBLE, at, err)
@@ -155,21 +154,18 @@ contains
       type(c_ptr), intent(in) :: buf
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      integer(hsize_t) :: dims(rank), maxdims(rank), start(rank), count(rank)
+      integer(hsize_t) :: dims(2), start(rank), count(rank)
       integer(hid_t) :: fspace, mspace
-      integer :: err
-      call h5dget_space_f(did, fspace, err)
-      if (err == 0) call h5sget_simple_extent_dims_f(fspace, dims, maxdims, err)
-      if (err == rank) err = 0
-      if (err == 0) call h5sclose_f(fspace, err)
-      call h5io_check(err, 'cannot read the extent of a series', '', stat, errmsg)
+      integer :: err, found
+      call series_extent(did, dims, found)
+      call h5io_check(merge(0, 1, found == rank), 'cannot read the extent of a series', '', stat, errmsg)
       if (stat /= 0) return
       start = 0
       start(rank) = dims(rank)
-      count = dims
+      count = dims(:rank)
       count(rank) = int(n, hsize_t)
       dims(rank) = dims(rank) + int(n, hsize_t)
-      call h5dset_extent_f(did, dims, err)
+      call h5dset_extent_f(did, dims(:rank), err)
       call h5io_check(err, 'cannot extend a series', '', stat, errmsg)
       if (stat /= 0) return
       call h5dget_space_f(did, fspace, err)

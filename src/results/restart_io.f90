@@ -106,21 +106,9 @@ contains
       integer, intent(in) :: n                      !< the size
       integer :: m
       m = n
-      call io_size(s, m, n)
-   end subroutine io_count
-
-   !> A vector's size; read, stat /= 0 when it is out of range or, with `n`, not n.
-   subroutine io_size(s, m, n)
-      type(restart_stream_t), intent(inout) :: s    !< the restart file
-      integer, intent(inout) :: m                   !< the size
-      integer, intent(in), optional :: n            !< the size expected
       call io_value(s, m)
-      if (s%stat /= 0 .or. .not. s%reading) return
-      if (m < 0 .or. m > 10**9) s%stat = wrong_tag
-      if (present(n) .and. s%stat == 0) then
-         if (m /= n) s%stat = wrong_tag
-      end if
-   end subroutine io_size
+      if (s%stat == 0 .and. m /= n) s%stat = wrong_tag
+   end subroutine io_count
 
    !> Values of reals, integers or logicals (as 0 or 1), without their size.
    recursive subroutine io_block(s, x)
@@ -139,6 +127,8 @@ contains
          i = merge(1, 0, x)
          call io_block(s, i)
          if (s%stat == 0) x = i /= 0
+      class default
+         s%stat = wrong_tag
       end select
    end subroutine io_block
 
@@ -168,7 +158,8 @@ contains
       integer :: m
       if (.not. allocated(i)) allocate (i(0))
       m = size(i)
-      call io_size(s, m)
+      call io_value(s, m)
+      if (s%stat == 0 .and. s%reading .and. (m < 0 .or. m > 10**9)) s%stat = wrong_tag
       if (s%stat /= 0) return
       if (s%reading) deallocate (i)
       if (s%reading) allocate (i(m))

@@ -88,20 +88,6 @@ contains
                            rf%peak_force, rf%peak_fields)
    end function results_point
 
-   !> What results_open with and without a restart point shares; nothing is opened.
-   subroutine prepare(deck, msh, rf)
-      type(deck_t), intent(in) :: deck              !< the effective deck
-      type(mesh_t), intent(in) :: msh               !< the mesh with its equation numbers
-      type(results_file_t), intent(inout) :: rf     !< the results file, not yet active
-      integer :: held
-      rf%path = deck%prefix//'.h5';  rf%eq = msh%eq
-      rf%ncol = history_width(strength_given(deck), damage_wanted(deck))
-      held = int(max(int(min_snapshots, int64), buffer_bytes/(8_int64*ndof_node*msh%nnode)))
-      allocate (rf%rows(rf%ncol, flush_rows), rf%snap(3, held), rf%snap_fields(ndof_node, msh%nnode, held), &
-                rf%peak_fields(ndof_node, msh%nnode))
-      rf%peak_fields = 0.0_dp
-   end subroutine prepare
-
    !> Writes all but what grows (deck, mesh, empty series, /peak, /summary status 'running') under
    !> <prefix>.h5.tmp and renames it into place; from then on the file is open only while it is
    !> written, in SWMR mode, which keeps it readable on disk at every instant (a kill inside a write
@@ -117,11 +103,15 @@ contains
       character(len=msg_len) :: why
       real(dp), allocatable :: time(:), step(:), force(:)
       integer(c_int) :: gone
-      integer :: c, k
+      integer :: c, k, held
       stat = 0
       call system_clock(rf%flushed_at, rf%clock_rate)   ! (results_tick: restarts without HDF5 too)
       if (.not. deck%hdf5) return
-      call prepare(deck, msh, rf)
+      rf%path = deck%prefix//'.h5';  rf%eq = msh%eq
+      rf%ncol = history_width(strength_given(deck), damage_wanted(deck))
+      held = int(max(int(min_snapshots, int64), buffer_bytes/(8_int64*ndof_node*msh%nnode)))
+      allocate (rf%rows(rf%ncol, flush_rows), rf%snap(3, held), rf%snap_fields(ndof_node, msh%nnode, held), &
+                rf%peak_fields(ndof_node, msh%nnode), source=0.0_dp)
       why = ''
       if (.not. present(pt)) gone = c_unlink(rf%path // c_null_char)   ! an earlier run's (claim allowed)
       call h5io_start(stat, why)
