@@ -209,15 +209,9 @@ contains
       integer, intent(in) :: chosen
       real(dp), intent(in) :: cost(:)               !< the variant's predicted cost at each run's settings (s)
       logical :: fits(size(cost))
-      integer :: i
       fits = la%c_base < 0.0_dp .or. la%spent + cost <= la%cap
-      base = chosen
-      if (fits(chosen)) return
-      do i = 1, size(runs)
-         if (runs(i)%state /= state_done .or. .not. is_ladder(runs(i)) .or. .not. fits(i)) cycle
-         if (base == chosen) base = i
-         if (cost(i) > cost(base)) base = i
-      end do
+      base = maxloc(cost, mask=runs%state == state_done .and. is_ladder(runs) .and. fits, dim=1)
+      if (fits(chosen) .or. base == 0) base = chosen
    end function comparison_base
 
    !> The run of the other bend-twist model at the settings of run c, or a note why there is none.
