@@ -28,7 +28,7 @@ module accuracy_driver
       error_scale, iq_failure, iq_peak_time, is_ladder
    use accuracy_ladder, only: ladder_t, axis_t, judged_t, choice_t, build_axes, judge_run, &
       choose_run, final_run, ladder_run, time_partner, cross_needed, done_run
-   use model_comparison, only: comparison_t, compare_models, comparison_items, comparison_lines, relative
+   use model_comparison, only: comparison_t, compare_models, comparison_report, relative
    implicit none
    private
    public :: run_accuracy, ladder_mesh, targeted_results
@@ -189,14 +189,12 @@ contains
                                           - 1.0e-9_dp))
       ! the deck's counts already do with ladder_grading: the least grading that does (bisection)
       g = ladder_grading
-      if (all(n == [deck%nx, deck%ny])) then
-         lo = 1.0_dp
-         do it = 1, 60
-            mid = 0.5_dp*(lo + g)
-            if (maxval(first_element(mid)) <= a) g = mid
-            if (g /= mid) lo = mid
-         end do
-      end if
+      lo = 1.0_dp
+      do it = 1, merge(60, 0, all(n == [deck%nx, deck%ny]))   ! none when the counts were raised
+         mid = 0.5_dp*(lo + g)
+         if (maxval(first_element(mid)) <= a) g = mid
+         if (g /= mid) lo = mid
+      end do
       impact_element = first_element(g)
       base%nx = n(1);  base%ny = n(2);  base%grading = g
       why = 'level 0: ' // int_str(base%nx) // ' x ' // int_str(base%ny) // ' graded by ' // &
@@ -523,6 +521,7 @@ contains
       type(summary_t) :: s
       type(summary_item_t), allocatable :: items(:)
       character(len=msg_len) :: line
+      character(len=msg_len), allocatable :: lines(:)   ! the results' and the models' terminal lines
       character(len=:), allocatable :: key, unit_name
       real(dp) :: rel(nq), in_chosen
       integer :: i, iq
@@ -531,7 +530,7 @@ contains
       in_chosen = la%spent/max(r%cpu_s, tiny(1.0_dp))   ! the cpu time in runs of the chosen
       call read_summary(la%dir // trim(r%name) // '_summary.dat', s, stat, errmsg)
       if (stat /= 0) return
-      allocate (items(0))
+      allocate (items(0), lines(0))
       do i = 1, size(s%keys)
          call summary_text(items, trim(s%keys(i)), trim(s%texts(i)))
       end do
@@ -559,9 +558,12 @@ contains
          call put(key // '_error_mesh', unit_name, jd%err_mesh(iq))
          if (iq == iq_peak_time) call put(key // '_error_maxima', unit_name, jd%err_maxima(iq))
          call put(key // '_relative_error', '-', rel(iq))
+         write (line, '(a,es14.6,a,es10.3,a,f7.3,a,es10.3,a,es10.3,a)') result_keys(iq), jd%value(iq), ' +- ', &
+            jd%err(iq), ' (', 100.0_dp*rel(iq), ' %; dt ', jd%err_time(iq), ', mesh ', jd%err_mesh(iq), ')'
+         lines = [lines, '  ' // line(:msg_len - 2)]
       end do
       do i = 1, size(out%cmp)
-         call comparison_items(items, out%cmp(i), lad)
+         call comparison_report(items, lines, out%cmp(i), lad, out%chosen)
       end do
       call summary_integer(items, 'accuracy_runs', count(lad%runs%state == state_done))
       call summary_real(items, 'accuracy_cpu_s', 'accuracy_cpu', 's', la%spent, 1.0_dp)
@@ -582,15 +584,7 @@ contains
       write (unit, '(a)') 'accuracy: results of run ' // trim(r%name) // ' (dt ' // real_short(r%dt*1.0e6_dp) // &
          ' us, mesh ' // int_str(r%nx) // ' x ' // int_str(r%ny) // ', grading ' // real_short(r%grading) // &
          ', ' // trim(la%theory) // '), not extrapolated; error = time part + mesh part + their interaction'
-      do iq = 1, nq
-         if (.not. lad%estimated(iq)) cycle
-         write (line, '(a,es14.6,a,es10.3,a,f7.3,a,es10.3,a,es10.3,a)') result_keys(iq), jd%value(iq), ' +- ', &
-            jd%err(iq), ' (', 100.0_dp*rel(iq), ' %; dt ', jd%err_time(iq), ', mesh ', jd%err_mesh(iq), ')'
-         write (unit, '(a)') '  ' // trim(line)
-      end do
-      do i = 1, size(out%cmp)
-         call comparison_lines(unit, out%cmp(i), lad, out%chosen)
-      end do
+      write (unit, '(a)') (trim(lines(i)), i = 1, size(lines))
       write (unit, '(a)') 'accuracy: ' // int_str(count(lad%runs%state == state_done)) // ' runs, cpu ' // &
          real_short(la%spent) // ' s (' // real_short(in_chosen) // ' times the run chosen), wall ' // &
          real_short(out%wall_s) // ' s on ' // int_str(la%cpus) // ' CPUs; every run: ' // la%dir // &

@@ -17,7 +17,7 @@ module model_comparison
    implicit none
    private
    public :: comparison_t, compare_models, comparison_base, variant_bases, bend_twist_variant, coarse_base, &
-             verdict_settled, model_needed, comparison_lines, comparison_items, relative
+             verdict_settled, model_needed, comparison_report, relative
 
    !> A model compared: the theory, or D16, D26.
    type :: comparison_t
@@ -47,7 +47,7 @@ contains
       type(comparison_t), intent(out) :: cmp(2)     !< the theory's, the bend-twist model's
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: errmsg
-      type(comparison_t) :: first(2), second(2)
+      type(comparison_t) :: second(2)
       type(judged_t) :: jd, jc
       real(dp) :: slack(nq)
       integer :: coarse, i, base(2)
@@ -61,15 +61,14 @@ contains
          jc = judge_run(lad, lad%runs(chosen)%k, lad%runs(chosen)%j)
          slack = huge(1.0_dp)
          where (lad%runs(coarse)%q /= 0.0_dp) slack = 2.0_dp*(jd%err_time + jc%err_time)/abs(lad%runs(coarse)%q)
-         call make_variants(deck, la, lad%runs, variant_bases(deck, lad%runs, la, coarse, again), again, first, &
+         call make_variants(deck, la, lad%runs, variant_bases(deck, lad%runs, la, coarse, again), again, cmp, &
                             stat, errmsg)
          if (stat /= 0) return
-         cmp = first
          do i = 1, 2
-            settled = verdict_settled(first(i), lad, slack)
-            again(i) = first(i)%base == coarse .and. .not. settled
-            if (first(i)%base /= coarse) cmp(i)%at = past_cap   ! even that run would pass the cap
-            if (first(i)%base == coarse .and. made(first(i))) cmp(i)%at = coarse_words(settled, first(i))
+            settled = verdict_settled(cmp(i), lad, slack)
+            again(i) = cmp(i)%base == coarse .and. .not. settled
+            if (cmp(i)%base /= coarse) cmp(i)%at = past_cap   ! even that run would pass the cap
+            if (cmp(i)%base == coarse .and. made(cmp(i), lad%runs)) cmp(i)%at = coarse_words(settled, cmp(i))
          end do
          base = variant_bases(deck, lad%runs, la, chosen, again)
          where (base /= chosen) again = .false.     ! the chosen settings would pass the cap
@@ -79,15 +78,12 @@ contains
                          stat, errmsg)
       if (stat /= 0) return
       do i = 1, 2                                   ! the cap skipped the second after a first: it stands
-         if (.not. again(i) .or. (made(cmp(i)) .and. second(i)%run > 0 .and. .not. made(second(i)))) cycle
+         if (.not. again(i) .or. (made(cmp(i), lad%runs) .and. second(i)%run > 0 .and. &
+             .not. made(second(i), lad%runs))) cycle
          cmp(i) = second(i)
          if (cmp(i)%base /= chosen) cmp(i)%at = past_cap
       end do
    contains
-      logical function made(c)
-         type(comparison_t), intent(in) :: c
-         made = c%run > 0 .and. any(lad%runs(max(c%run, 1):c%run)%state == state_done)
-      end function made
       !> Why a comparison stays at the chosen mesh's run at dt0, with the bands targeted.
       function coarse_words(settled, c) result(text)
          logical, intent(in) :: settled            !< verdict_settled
@@ -185,7 +181,7 @@ contains
       if (runs(coarse)%state /= state_done) coarse = chosen
    end function coarse_base
 
-   !> Whether the verdict of c (model_required) is the same for every change within its band;
+   !> Whether the verdict of c (model_needed) is the same for every change within its band;
    !> a comparison not made settles nothing.
    logical function verdict_settled(c, lad, slack) result(settled)
       type(comparison_t), intent(in) :: c
@@ -193,11 +189,17 @@ contains
       real(dp), intent(in) :: slack(nq)             !< how far the change may be from the chosen's
       real(dp) :: change(nq), band(nq)
       settled = .false.
-      if (c%run == 0) return
-      if (lad%runs(c%run)%state /= state_done) return
+      if (.not. made(c, lad%runs)) return
       change = model_changes(c, lad);  band = slack + 0.1_dp*abs(change)
-      settled = model_required(max(abs(change) - band, 0.0_dp), lad) .or. .not. model_required(abs(change) + band, lad)
+      settled = model_needed(c, max(abs(change) - band, 0.0_dp), lad) == model_needed(c, abs(change) + band, lad)
    end function verdict_settled
+
+   !> Whether comparison c has its run done.
+   pure logical function made(c, runs)
+      type(comparison_t), intent(in) :: c
+      type(run_t), intent(in) :: runs(:)
+      made = c%run > 0 .and. any(runs(max(c%run, 1):c%run)%state == state_done)
+   end function made
 
    !> The run a model is compared at: the chosen one, else the costliest ladder run done whose
    !> variant, predicted to cost cost(i), fits the cap (the chosen one when none does).
@@ -207,15 +209,9 @@ contains
       integer, intent(in) :: chosen
       real(dp), intent(in) :: cost(:)               !< the variant's predicted cost at each run's settings (s)
       logical :: fits(size(cost))
-      integer :: i
       fits = la%c_base < 0.0_dp .or. la%spent + cost <= la%cap
-      base = chosen
-      if (fits(chosen)) return
-      do i = 1, size(runs)
-         if (runs(i)%state /= state_done .or. .not. is_ladder(runs(i)) .or. .not. fits(i)) cycle
-         if (base == chosen) base = i
-         if (cost(i) > cost(base)) base = i
-      end do
+      base = maxloc(cost, mask=runs%state == state_done .and. is_ladder(runs) .and. fits, dim=1)
+      if (fits(chosen) .or. base == 0) base = chosen
    end function comparison_base
 
    !> The run of the other bend-twist model at the settings of run c, or a note why there is none.
@@ -276,82 +272,56 @@ contains
       end associate
    end function model_changes
 
-   !> Whether a result that must meet the target changes by more than the target.
-   pure logical function model_required(change, lad)
-      real(dp), intent(in) :: change(nq)            !< the relative changes (model_changes)
-      type(ladder_t), intent(in) :: lad
-      model_required = any(lad%targeted .and. abs(change) > lad%target)
-   end function model_required
-
-   !> The verdict of comparison c: the fuller model when model_required, else the simpler.
+   !> The verdict of comparison c: the fuller model when a result that must meet the target
+   !> changes by more than the target, else the simpler.
    pure function model_needed(c, change, lad) result(name)
       type(comparison_t), intent(in) :: c
       real(dp), intent(in) :: change(nq)            !< the relative changes (model_changes)
       type(ladder_t), intent(in) :: lad
       character(len=:), allocatable :: name
-      name = trim(merge(c%richer, c%simpler, model_required(change, lad)))
+      name = trim(merge(c%richer, c%simpler, any(lad%targeted .and. abs(change) > lad%target)))
    end function model_needed
 
-   !> Why comparison c has no results ('' when it has): none made, its run skipped, stopped, failed.
-   pure function not_compared(c, runs) result(text)
-      type(comparison_t), intent(in) :: c
-      type(run_t), intent(in) :: runs(:)
-      character(len=:), allocatable :: text
-      text = trim(c%note)
-      if (c%run == 0) return
-      associate (r => runs(c%run))
-      text = ' failed (' // trim(r%status) // ')'
-      if (r%state == state_skipped) text = ' would pass &accuracy max_cpu_s'
-      if (r%state == state_stopped) text = ' was stopped'
-      text = 'the run ' // trim(r%name) // text
-      if (r%state == state_done) text = ''
-      end associate
-   end function not_compared
-
-   !> The summary's items of one model compared: what, and the relative change of each result.
-   subroutine comparison_items(items, c, lad)
+   !> One model compared: the summary's items (what, the relative change of each result, the
+   !> verdict: model_needed) and the terminal's lines, added to items and lines.
+   subroutine comparison_report(items, lines, c, lad, chosen)
       type(summary_item_t), allocatable, intent(inout) :: items(:)   !< the summary
+      character(len=msg_len), allocatable, intent(inout) :: lines(:)  !< the terminal's
       type(comparison_t), intent(in) :: c
       type(ladder_t), intent(in) :: lad
-      real(dp) :: change(nq)
-      integer :: iq
-      if (c%run == 0 .or. len(not_compared(c, lad%runs)) > 0) then
-         call summary_text(items, trim(c%what) // '_compared', 'none: ' // not_compared(c, lad%runs))
-         return
-      end if
-      call summary_text(items, trim(c%what) // '_compared', trim(c%compared))
-      call summary_text(items, trim(c%what) // '_compared_at', trim(lad%runs(c%base)%name))
-      change = model_changes(c, lad)
-      call summary_text(items, trim(c%what) // '_needed', model_needed(c, change, lad))
-      do iq = 1, nq
-         if (lad%estimated(iq)) call summary_real(items, trim(result_keys(iq)) // '_change_' // trim(c%what), &
-            trim(result_keys(iq)) // '_change_' // trim(c%what), '-', change(iq), 1.0_dp)
-      end do
-   end subroutine comparison_items
-
-   !> The terminal's lines of one model compared, with its verdict (model_required).
-   subroutine comparison_lines(unit, c, lad, chosen)
-      integer, intent(in) :: unit, chosen           !< standard output, the run chosen
-      type(comparison_t), intent(in) :: c
-      type(ladder_t), intent(in) :: lad
+      integer, intent(in) :: chosen                 !< the run chosen
       real(dp) :: change(nq)
       character(len=msg_len) :: line
-      character(len=:), allocatable :: head
+      character(len=:), allocatable :: head, key, why
       integer :: iq
       head = 'model: ' // trim(c%what) // ': '
-      if (c%run == 0 .or. len(not_compared(c, lad%runs)) > 0) then
-         write (unit, '(a)') head // 'not compared: ' // not_compared(c, lad%runs)
+      if (.not. made(c, lad%runs)) then             ! why: its note, or what became of its run
+         associate (r => lad%runs(max(c%run, 1)))
+         why = ' failed (' // trim(r%status) // ')'
+         if (r%state == state_skipped) why = ' would pass &accuracy max_cpu_s'
+         if (r%state == state_stopped) why = ' was stopped'
+         why = 'the run ' // trim(r%name) // why
+         end associate
+         if (c%run == 0) why = trim(c%note)
+         call summary_text(items, trim(c%what) // '_compared', 'none: ' // why)
+         lines = [character(len=msg_len) :: lines, head // 'not compared: ' // why]
          return
       end if
       change = model_changes(c, lad)
+      call summary_text(items, trim(c%what) // '_compared', trim(c%compared))
+      call summary_text(items, trim(c%what) // '_compared_at', trim(lad%runs(c%base)%name))
+      call summary_text(items, trim(c%what) // '_needed', model_needed(c, change, lad))
       line = ''
       do iq = 1, nq
-         if (lad%estimated(iq)) write (line, '(a,1x,a,f8.3,a)') trim(line), trim(result_keys(iq)), 100.0_dp*change(iq), ' %'
+         if (.not. lad%estimated(iq)) cycle
+         key = trim(result_keys(iq)) // '_change_' // trim(c%what)
+         call summary_real(items, key, key, '-', change(iq), 1.0_dp)
+         write (line, '(a,1x,a,f8.3,a)') trim(line), trim(result_keys(iq)), 100.0_dp*change(iq), ' %'
       end do
-      write (unit, '(a)') head // trim(c%compared) // ' changes' // trim(line)
-      if (c%base /= chosen) write (unit, '(a)') head // 'compared at run ' // trim(lad%runs(c%base)%name) // &
-         ', not at the run chosen: ' // trim(c%at)
-      if (model_required(change, lad)) then
+      lines = [character(len=msg_len) :: lines, head // trim(c%compared) // ' changes' // trim(line)]
+      if (c%base /= chosen) lines = [character(len=msg_len) :: lines, head // 'compared at run ' // &
+         trim(lad%runs(c%base)%name) // ', not at the run chosen: ' // trim(c%at)]
+      if (model_needed(c, change, lad) == c%richer) then
          line = head // 'more than the target ' // real_short(lad%target) // ': the scene requires '
          if (c%chosen_richer) line = trim(line) // ' the model of the run chosen (' // trim(c%richer) // ')'
          if (.not. c%chosen_richer) line = trim(line) // ' the other model (' // trim(c%richer) // &
@@ -363,8 +333,8 @@ contains
          if (.not. c%chosen_richer) line = trim(line) // ' the model of the run chosen (' // trim(c%simpler) // &
             ') does as well as the fuller one (' // trim(c%richer) // ')'
       end if
-      write (unit, '(a)') trim(line)
-   end subroutine comparison_lines
+      lines = [character(len=msg_len) :: lines, line]
+   end subroutine comparison_report
 
    !> err/|value|, 0 when both are 0, huge when only value is.
    elemental real(dp) function relative(err, value)
