@@ -13,12 +13,11 @@
 module accuracy_ladder
    use kinds, only: dp
    use accuracy_runs, only: run_t, launcher_t, nq, iq_force, iq_peak_time, state_done, predicted_run_cost, &
-      error_scale, is_ladder, maxima_t
+      error_scale, is_ladder
    implicit none
    private
    public :: axis_t, judged_t, choice_t, ladder_t, build_axes, judge_run, choose_run, final_run, ladder_run, &
-             time_partner, cross_needed, done_run, peak_spread, estimate_t, ladder_estimate, observed_order, &
-             log_tail
+             time_partner, cross_needed, done_run, weigh, estimate_t, ladder_estimate
 
    !> Factors of safety (module header) (-).
    real(dp), parameter :: richardson_safety = 1.25_dp, safe_factor = 1.5_dp, two_level_factor = 3.0_dp, &
@@ -36,8 +35,8 @@ module accuracy_ladder
    integer, parameter :: axis_time = 1, axis_mesh = 2
    !> The results that are times read off the steps: the contact's duration, the time of the peak.
    logical, parameter :: time_results(nq) = [.false., .false., .true., .true., .false., .false., .false.]
-   !> Orders: the method's, and the asymptotic range, of each axis; those the bisection of
-   !> observed_order looks within.
+   !> Orders: the method's, and the asymptotic range, of each axis; those the bisection for the
+   !> observed order looks within.
    real(dp), parameter :: order_theory(2) = [2.0_dp, 2.0_dp], order_low(2) = [1.5_dp, 1.0_dp], &
       order_high(2) = [2.7_dp, 2.5_dp], order_min = 0.05_dp, order_max = 12.0_dp
 
@@ -88,8 +87,8 @@ contains
       real(dp), intent(in) :: order_low, order_high   !< the asymptotic range of orders
       real(dp), intent(in) :: floor            !< resolution added to the error (0: none)
       type(estimate_t) :: e
-      real(dp) :: d1, d2, p, safe, ratio, richardson
-      integer :: n
+      real(dp) :: d1, d2, p, safe, ratio, richardson, lo, hi
+      integer :: n, it
       n = size(q)
       e%floor = floor
       e%how = 'one level: no estimate'
@@ -109,7 +108,12 @@ contains
          e%error = safe + floor
          e%how = 'not monotone: 1.5 x largest difference'
       else
-         p = observed_order(h(n - 2:n), d1/d2)
+         lo = order_min;  hi = order_max         ! the observed order: f(p) = d1/d2 by bisection,
+         bisect: do it = 1, 100                  ! order_min or order_max when outside their f
+            p = 0.5_dp*(lo + hi)
+            if (f(p) < d1/d2) lo = p
+            if (f(p) >= d1/d2) hi = p
+         end do bisect
          e%order = p
          e%asymptotic = p >= order_low .and. p <= order_high
          ratio = (h(n)/h(n - 1))**merge(min(p, order_theory), p, e%asymptotic)
@@ -126,43 +130,13 @@ contains
             e%how = 'order too high: 1.5 x largest diff.'
          end if
       end if
-   end function ladder_estimate
-
-   !> The order p of (h1^p - h2^p)/(h2^p - h3^p) = ratio > 0 by bisection in [order_min, order_max].
-   pure real(dp) function observed_order(h, ratio) result(p)
-      real(dp), intent(in) :: h(3)           !< the three sizes, decreasing
-      real(dp), intent(in) :: ratio          !< d1/d2, positive
-      real(dp) :: lo, hi
-      integer :: it
-      lo = order_min;  hi = order_max
-      p = merge(lo, hi, ratio <= f(lo))
-      if (ratio <= f(lo) .or. ratio >= f(hi)) return
-      do it = 1, 100
-         p = 0.5_dp*(lo + hi)
-         if (f(p) < ratio) lo = p
-         if (f(p) >= ratio) hi = p
-      end do
-      p = 0.5_dp*(lo + hi)
    contains
-      !> (h1^x - h2^x)/(h2^x - h3^x), scaled by h3 (it grows with x).
+      !> (h1^x - h2^x)/(h2^x - h3^x) of the last three levels, scaled by h3 (it grows with x).
       pure real(dp) function f(x)
          real(dp), intent(in) :: x
-         f = ((h(1)/h(3))**x - (h(2)/h(3))**x)/((h(2)/h(3))**x - 1.0_dp)
+         f = ((h(n - 2)/h(n))**x - (h(n - 1)/h(n))**x)/((h(n - 1)/h(n))**x - 1.0_dp)
       end function f
-   end function observed_order
-
-   !> The change still to come, like ln(1/h), on a mesh that does not resolve a length (the
-   !> Hertz disc): 0 when it does (size_ratio <= 1) or with fewer than two levels.
-   pure real(dp) function log_tail(h, q, size_ratio)
-      real(dp), intent(in) :: h(:), q(:)       !< element size of each level, decreasing; the result at each
-      real(dp), intent(in) :: size_ratio       !< the finest level's element over the length (s/a)
-      integer :: n
-      n = size(q)
-      log_tail = 0.0_dp
-      if (n < 2 .or. size_ratio <= 1.0_dp) return
-      log_tail = max(0.0_dp, maxval(abs(q(max(1, n - 2):n - 1) - q(max(2, n - 1):n)))) &
-                 *(log(size_ratio)/log(h(n - 1)/h(n)) + 1.0_dp)   ! times the levels to go
-   end function log_tail
+   end function ladder_estimate
 
    !> The run (k, j) of the ladder (not a model variant), 0 when there is none.
    pure integer function ladder_run(runs, k, j) result(i)
@@ -192,7 +166,7 @@ contains
       type(axis_t), intent(out) :: ax
       integer, intent(in) :: j0, k0               !< a time axis's mesh level and first time level
       integer :: l, i, iq, k, j
-      real(dp) :: floor, tail, steps(size(runs))
+      real(dp) :: floor, tail, steps(size(runs)), size_ratio, diff
       allocate (ax%run(0), ax%h(0))
       do l = 0, size(runs)
          k = merge(k0 + l, 0, which == axis_time);  j = merge(j0, l, which == axis_time)
@@ -211,11 +185,16 @@ contains
          floor = merge(runs(ax%run(l))%dt*1.0e6_dp, 0.0_dp, time_results(iq) .and. &
                        all(abs(steps(:l) - anint(steps(:l))) <= 1.0e-6_dp*max(1.0_dp, abs(steps(:l)))))
          e = ladder_estimate(ax%h, q, order_theory(which), order_low(which), order_high(which), floor)
+         ! a mesh not resolving the Hertz disc (finest element over radius s/a > 1): the change
+         ! still to come, like ln(1/h), the largest difference times the levels to go
          tail = 0.0_dp
-         if (which == axis_mesh) tail = log_tail(ax%h, q, runs(ax%run(l))%h_impact/runs(ax%run(l))%contact_radius)
+         size_ratio = runs(ax%run(l))%h_impact/runs(ax%run(l))%contact_radius
+         if (l >= 2) diff = maxval(abs(q(max(1, l - 2):l - 1) - q(max(2, l - 1):l)))
+         if (which == axis_mesh .and. l >= 2 .and. size_ratio > 1.0_dp) &
+            tail = max(0.0_dp, diff)*(log(size_ratio)/log(ax%h(l - 1)/ax%h(l)) + 1.0_dp)
          if (tail > 0.0_dp .and. (tail + floor > e%error .or. (e%order >= 0.0_dp .and. e%order < order_low(which)))) &
             then
-            e%error = max(tail, safe_factor*maxval(abs(q(max(1, l - 2):l - 1) - q(max(2, l - 1):l)))) + floor
+            e%error = max(tail, safe_factor*diff) + floor
             e%how = 'contact disc unresolved: ln tail'
          end if
          ax%err(:, iq) = abs(q - q(l)) + e%error           ! each level's: its distance to the finest
@@ -281,37 +260,30 @@ contains
 
    !> A judgement's sum, the spread of the maxima added to the time of the peak, the worst ratio
    !> of error to target and whether it meets the target (measured: its time error on its mesh).
+   !> The spread: the largest |t_i - t_peak| over the other maxima within the peak force's error
+   !> of it, F_i >= F - e_F (0 without).
    pure subroutine weigh(jd, maxima_run, lad, measured)
       type(judged_t), intent(inout) :: jd         !< the judgement, its parts set
       type(run_t), intent(in) :: maxima_run       !< the run whose maxima count
       type(ladder_t), intent(in) :: lad           !< the ladder (the target, the results targeted)
       logical, intent(in) :: measured             !< the time error measured on its mesh
       real(dp) :: scale(nq)
+      integer :: i
       jd%err = jd%err_time + jd%err_mesh + jd%err_cross
-      if (jd%err(iq_force) < huge(1.0_dp) .and. maxima_run%has(iq_peak_time)) then
-         jd%err_maxima(iq_peak_time) = peak_spread(maxima_run%maxima, jd%value(iq_peak_time), &
-                                                   jd%value(iq_force), jd%err(iq_force))
+      associate (mx => maxima_run%maxima, has_peak => maxima_run%has(iq_peak_time))
+      if (jd%err(iq_force) < huge(1.0_dp) .and. has_peak .and. allocated(mx%f_n)) then
+         jd%err_maxima(iq_peak_time) = max(0.0_dp, maxval(abs(mx%t_us - jd%value(iq_peak_time)), &
+            mask=mx%f_n >= jd%value(iq_force) - jd%err(iq_force) .and. &
+                 [(i /= maxloc(mx%f_n, dim=1), i = 1, size(mx%f_n))]))
          jd%err(iq_peak_time) = jd%err(iq_peak_time) + jd%err_maxima(iq_peak_time)
       end if
+      end associate
       scale = lad%target*error_scale(jd%value)
       jd%worst = max(0.0_dp, maxval(jd%err/merge(scale, 1.0_dp, scale > 0.0_dp), &
                                     mask=lad%targeted .and. scale > 0.0_dp))
       if (any(lad%targeted .and. scale <= 0.0_dp .and. jd%err > 0.0_dp)) jd%worst = huge(1.0_dp)
       jd%meets = jd%worst <= 1.0_dp .and. measured;  jd%time_measured = measured
    end subroutine weigh
-
-   !> The error of the time of the peak from the choice of the maximum: the largest |t_i - t_peak|
-   !> over the other maxima within the peak force's error of it, F_i >= F - e_F (0 without).
-   pure real(dp) function peak_spread(mx, t_peak, f_peak, e_force) result(spread)
-      type(maxima_t), intent(in) :: mx            !< the run's maxima
-      real(dp), intent(in) :: t_peak              !< the time of the peak (us)
-      real(dp), intent(in) :: f_peak, e_force     !< the peak force and its error (N)
-      integer :: i
-      spread = 0.0_dp
-      if (.not. allocated(mx%f_n)) return
-      spread = max(0.0_dp, maxval(abs(mx%t_us - t_peak), mask=mx%f_n >= f_peak - e_force .and. &
-                                  [(i /= maxloc(mx%f_n, dim=1), i = 1, size(mx%f_n))]))
-   end function peak_spread
 
    !> The time error of run (k, j), j > 0, from the time levels done on mesh j next to k (at
    !> least two), no less than mesh 0's; two levels in the asymptotic range: Roache's GCI.

@@ -33,8 +33,6 @@ module accuracy_runs
                          state_stopped = 5, max_variant = 4
    !> The cost model's exponent of the element count before two meshes are measured, and its bounds.
    real(dp), parameter :: gamma_default = 1.8_dp, gamma_min = 1.0_dp, gamma_max = 3.0_dp
-   !> The force's local maxima kept by force_maxima: those at least this fraction of the largest (-).
-   real(dp), parameter :: kept_fraction = 0.5_dp
 
    !> The local maxima of a run's force (a row above the one before and not below the one after).
    type :: maxima_t
@@ -255,8 +253,8 @@ contains
       flush (la%unit)
    end subroutine finish_run
 
-   !> The force's maxima in a run's history file, those of at least kept_fraction of the largest;
-   !> none when it cannot be read.
+   !> The force's maxima in a run's history file, those of at least half the largest; none when it
+   !> cannot be read.
    subroutine force_maxima(path, mx)
       character(len=*), intent(in) :: path        !< <prefix>_history.dat
       type(maxima_t), intent(out) :: mx           !< its maxima
@@ -268,7 +266,7 @@ contains
       allocate (top(n), source=.false.)
       if (stat == 0 .and. n >= 3) top(2:n - 1) = h(col_force, 2:n - 1) > h(col_force, :n - 2) .and. &
                                                 h(col_force, 2:n - 1) >= h(col_force, 3:)
-      if (any(top)) top = top .and. h(col_force, :) >= kept_fraction*maxval(h(col_force, :), mask=top)
+      if (any(top)) top = top .and. h(col_force, :) >= 0.5_dp*maxval(h(col_force, :), mask=top)
       mx%t_us = pack(h(col_time, :), top)
       mx%f_n = pack(h(col_force, :), top)
    end subroutine force_maxima

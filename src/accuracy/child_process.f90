@@ -148,12 +148,11 @@ contains
       character(kind=c_char) :: buf(max_path)
       integer(c_long) :: n
       integer :: length
-      n = c_readlink('/proc/self/exe' // c_null_char, buf, int(max_path, c_size_t))
-      if (n > 0 .and. n < max_path) path = transfer(buf(:n), repeat(' ', int(n)))
-      if (n > 0 .and. n < max_path) return
       call get_command_argument(0, length=length)
       allocate (character(len=length) :: path)
-      if (length > 0) call get_command_argument(0, path)
+      call get_command_argument(0, path)
+      n = c_readlink('/proc/self/exe' // c_null_char, buf, int(max_path, c_size_t))
+      if (n > 0 .and. n < max_path) path = transfer(buf(:n), repeat(' ', int(n)))
    end function program_path
 
    !> The CPUs the process may run on (at least 1): the affinity mask's, or Slurm's when smaller.
