@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""make bench: the speed-accuracy trade of ./impact, measured (issue 5).
+"""make bench: the speed-accuracy trade of ./impact, measured.
 
 Runs a grid of scenes of the paper's plate (Choi, Hong & Lee 1991: 150 x 100 x
 2.7 mm [0/45/0/-45/0]2s, 243 g at 3 m/s, quarter model) over meshes, time
@@ -88,7 +88,7 @@ Environment: BENCH_OPENBLAS=<dir holding libblas.so.3 and liblapack.so.3 of
   (/usr/lib/x86_64-linux-gnu/blas and lapack). Which BLAS each run loaded is
   recorded (the real path of the libblas.so.3 ./impact maps, ldd).
 
-The floor (issue 14): the README's main job as shipped (input/clamped.nml:
+The floor: the README's main job as shipped (input/clamped.nml:
 scheme 'fast', HDF5 on, every step written; its output moved to
 build/bench/runs/main_job) against steps x one band solve of its own size
 (bench/kernels.f90 on the same deck), with the same BLAS in the same run,
@@ -662,7 +662,7 @@ def write_results(rows, header_lines):
 
 
 # ------------------------------------------------------------- scaling and sweeps
-# The scaling table (issue 24): full plates of the paper's laminate, clamped,
+# The scaling table: full plates of the paper's laminate, clamped,
 # nonlinear, scheme 'fast', 2.5 us, the first SCALING_STEPS steps, HDF5 off;
 # (nx, ny, a, b): elements along a and b, the plate's sides (m). 150x150 is
 # the 300 x 300 mm plate with 2 mm elements.

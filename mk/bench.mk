@@ -1,5 +1,5 @@
-# make bench: the scaling table and the sweep throughput (issue 24), and the
-# speed-accuracy trade (issue 5), measured (docs/PERFORMANCE.md).
+# make bench: the scaling table and the sweep throughput, and the
+# speed-accuracy trade, measured (docs/PERFORMANCE.md).
 #
 #   make bench                   the parts scaling,sweep (under 10 minutes on 2
 #                                cores): the scaling table (full plates 18x12 to

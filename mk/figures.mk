@@ -1,4 +1,4 @@
-# The paper's figures (issue 4): $(DOCS_DIR)/figures/fig05.png ... fig13.png,
+# The paper's figures: $(DOCS_DIR)/figures/fig05.png ... fig13.png,
 # fig06_converged.png, fig09_10_converged.png (and .pdf) and the numbers of
 # $(DOCS_DIR)/PAPER.md. DOCS_DIR (the top Makefile) is out/docs by default:
 # the checkout is left as it was; make docs sets DOCS_DIR=docs, the
@@ -25,7 +25,7 @@
 # A plain run that diverges stops with exit status 1 and the summary's
 # status 'diverged at step N': that is its result, not a failure.
 #
-# input/paper/strength/ (issue 16) holds Fig. 9 and 10's scenes, linear and
+# input/paper/strength/ holds Fig. 9 and 10's scenes, linear and
 # nonlinear, the paper's model and the converged one, with &strength: the
 # ply stresses and Hashin's index of docs/PAPER.md, "Ply stresses"; their
 # damage maps (postproc/damage_map.gp, over tools/damage-map and h5py) are

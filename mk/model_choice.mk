@@ -1,4 +1,4 @@
-# Model choices of issue 8: Whitney's shear correction factors, the domain
+# Model choices: Whitney's shear correction factors, the domain
 # 'auto' picks, the symmetry check, the scene report's estimate against
 # runs, graded against uniform meshes.
 #

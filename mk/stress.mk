@@ -1,4 +1,4 @@
-# make stress: ./impact far from the paper's scene (issue 6).
+# make stress: ./impact far from the paper's scene.
 #
 #   make stress     build ./impact, run every scene of tools/stress/stress.py
 #                   (two at a time), check each (no NaN or Inf, converged or

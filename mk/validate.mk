@@ -1,4 +1,4 @@
-# Validation of the code against exact and published solutions (issue 3).
+# Validation of the code against exact and published solutions.
 #
 #   make validate    build ./impact and build/validate, run every check of
 #                    docs/VALIDATION.md (validation/validate.f90, decks in

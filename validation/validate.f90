@@ -4,7 +4,7 @@
 !>   build/validate [REPORT]     (REPORT: default out/docs/VALIDATION.md;
 !>                                make validate gives $(DOCS_DIR)/VALIDATION.md)
 !>
-!> The checks (issue 3):
+!> The checks:
 !>   1 Navier (FSDT) deflections and frequencies, cross-ply and orthotropic,
 !>     a/h = 4..100, and the error against the mesh
 !>   2 NAFEMS FV52 frequencies

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""make stress: ./impact far from the paper's scene (issue 6).
+"""make stress: ./impact far from the paper's scene.
 
 Runs every scene of SCENES (below) through ./impact, at most --jobs at a
 time, and checks each one:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Validation of the model choices of issue 8 (make validate-model).
+"""Validation of the model choices (make validate-model).
 
 Runs ./impact on decks written to build/validation/model_choice/, and writes
 DOCS/validation/model_choice.md with the data and the figure of
