@@ -49,13 +49,13 @@ module accuracy_driver
       '_history.dat', '.h5', '.xdmf', '.restart']
    !> The ladder's limits: time levels, mesh levels, the smallest dt, the most elements.
    integer, parameter :: max_time_levels = 11, max_mesh_levels = 12, max_elements = 10000
-   real(dp), parameter :: min_dt = 1.0e-10_dp
+   real(dp), parameter :: min_dt = 1.0e-10_dp                  ! s
    !> The cap when the deck gives none, in runs of level 0 (docs/ACCURACY.md: why).
    integer, parameter :: default_cap_times = 100
    !> Levels of the time and the mesh axis at the start: a third mesh level, the dearest run,
    !> only when the two-level estimate (Roache's Fs = 3) does not meet the target.
    integer, parameter :: first_levels(2) = [3, 2]
-   real(dp), parameter :: ladder_grading = 1.25_dp
+   real(dp), parameter :: ladder_grading = 1.25_dp             ! ratio of neighbouring elements (-)
    !> A run's state as a word (state_planned, ... of accuracy_runs).
    character(len=7), parameter :: state_words(0:5) = [character(len=7) :: 'planned', 'planned', 'done', &
       'failed', 'skipped', 'stopped']
@@ -67,7 +67,7 @@ contains
       type(options_t), intent(in) :: opts
       type(deck_t), intent(in) :: deck
       integer, intent(in) :: unit                   !< standard output
-      integer, intent(out) :: exit_code, stat       !< 0 met, exit_not_met, 128 + N stopped by N; 0
+      integer, intent(out) :: exit_code, stat       !< 0 met, exit_not_met, 128 + N after N; 0 or 1
       character(len=*), intent(inout) :: errmsg
       type(results_claim_t) :: claim
       type(launcher_t) :: la

@@ -147,8 +147,7 @@ contains
       type(run_t), intent(in) :: run               !< the run (its k, nx, ny, cost_factor)
       type(launcher_t), intent(in) :: la           !< the launcher (its cost model)
       integer :: a
-      predicted_run_cost = max(la%c_base, 0.0_dp)*(2.0_dp**run%k*(real(run%nx, dp)*real(run%ny, dp) &
-                                                   /real(la%n0, dp)*run%cost_factor)**la%gamma)
+      predicted_run_cost = max(la%c_base, 0.0_dp)*relative_cost(run, la)
       if (.not. allocated(la%anchors)) return
       ! the nearest k, of two as near the finer (k < 100)
       a = minloc(100*abs(la%anchors%k - run%k) - la%anchors%k, mask=la%anchors%nx == run%nx .and. &
@@ -196,9 +195,16 @@ contains
       la%anchors = pack(runs, runs%state == state_done .and. is_ladder(runs))
       ! c from the costliest run done: the best guide to the costly runs to come
       i = maxloc(runs%cpu_s, mask=runs%state == state_done, dim=1)
-      if (i > 0) la%c_base = runs(i)%cpu_s/(2.0_dp**runs(i)%k*(real(runs(i)%nx, dp)*real(runs(i)%ny, dp) &
-                                            /real(la%n0, dp)*runs(i)%cost_factor)**la%gamma)
+      if (i > 0) la%c_base = runs(i)%cpu_s/relative_cost(runs(i), la)
    end subroutine fit_costs
+
+   !> A run's cost in units of c: 2^k (n/n0 cost_factor)^gamma, n = nx ny.
+   pure real(dp) function relative_cost(run, la)
+      type(run_t), intent(in) :: run               !< the run (its k, nx, ny, cost_factor)
+      type(launcher_t), intent(in) :: la           !< the launcher (n0, gamma)
+      relative_cost = 2.0_dp**run%k*(real(run%nx, dp)*real(run%ny, dp)/real(la%n0, dp) &
+                                     *run%cost_factor)**la%gamma
+   end function relative_cost
 
    !> The arguments of a run, without the program.
    function run_settings(run, la) result(args)

@@ -11,7 +11,7 @@ module static_analysis
    use plate_model, only: model_t, nonlinear_force, centre_deflection, gather_element
    use element_matrices, only: element_tangent_stiffness
    use global_matrix, only: global_matrix_t, global_init, global_zero, global_assemble, global_copy, &
-      global_matvec, global_factor, global_solve
+      global_matvec, global_factor, global_solve, global_release
    use mesh, only: nfe, describe_equation
    implicit none
    private
@@ -63,6 +63,7 @@ contains
          if (stat /= 0) return
          d_unit = f
          call global_solve(kl, d_unit, stat, errmsg)
+         call global_release(kl)                         ! sparse: CHOLMOD's factor, C memory
       end if
       if (stat /= 0) return
       load_increments: do inc = 1, increments
@@ -115,6 +116,7 @@ contains
          res%increments = inc
          res%d = d
       end do load_increments
+      call global_release(kt)
    end subroutine static_solve
 
    !> The internal force f_int(D) = K_L D + K_N(D) D (eq. 15; K_N = 0 in the linear theory).

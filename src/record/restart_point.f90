@@ -11,7 +11,7 @@ module restart_point
    use deck_schema, only: deck_t, deck_vars, var_key
    use deck_echo, only: deck_value_text
    use c_library, only: c_open, c_close, c_fsync
-   use file_system, only: remove_file, rename_file, truncate_file, file_size, open_probe, parent_directory
+   use file_system, only: remove_file, rename_file, truncate_file, file_size, open_probe, nearest_directory
    use mesh, only: ndof_node
    use plate_model, only: model_t
    use plate_solver, only: solver_t, contact_response
@@ -89,7 +89,7 @@ contains
       type(record_t), intent(inout) :: rec          !< the run's record (its steps: the last step)
       integer, intent(out) :: stat                  !< 0 on success
       character(len=*), intent(inout) :: errmsg     !< reason on failure, naming the file
-      character(len=:), allocatable :: path, changed, dir
+      character(len=:), allocatable :: path, changed
       character(len=msg_len) :: iomsg
       type(restart_stream_t) :: s
       type(results_point_t) :: pt
@@ -122,9 +122,7 @@ contains
       if (stat == 0) stat = ios
       if (stat == 0) call force_to_disk(path // '.tmp', stat)
       if (stat == 0) call rename_file(path // '.tmp', path, stat, iomsg)
-      dir = parent_directory(path)
-      if (len(dir) == 0) dir = merge('/', '.', path(1:min(1, len(path))) == '/')
-      if (stat == 0) call force_to_disk(dir, stat)          ! the directory, for the rename
+      if (stat == 0) call force_to_disk(nearest_directory(path), stat)   ! the directory, for the rename
       if (stat /= 0) errmsg = path // ': cannot write the restart point'
    end subroutine restart_save
 

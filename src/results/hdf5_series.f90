@@ -65,7 +65,7 @@ contains
       integer(hsize_t) :: maxdims(2)
       integer(hid_t) :: fspace
       integer :: err
-      dims = 0
+      dims = 0;  rank = 0
       call h5dget_space_f(did, fspace, err)
       if (err == 0) call h5sget_simple_extent_dims_f(fspace, dims, maxdims, rank)
       if (err == 0) call h5sclose_f(fspace, err)
