@@ -5,8 +5,8 @@
 !> min(p, the method's order) times richardson_safety; monotone but slower, Richardson's at p (at
 !> most slow_cap times the larger difference), no less than the safe bound; otherwise the safe
 !> bound, safe_factor times the larger difference, never an extrapolation. Two levels:
-!> two_level_factor |d| (Roache's Fs = 3); one level: huge. A floor is added. The error of a run
-!> (k, j) is its time level's plus its mesh level's plus the interaction
+!> two_level_factor |d| (Roache's GCI, Fs = 3, r^p - 1 taken as 1); one level: huge. A floor is
+!> added. The error of a run (k, j) is its time level's plus its mesh level's plus the interaction
 !> |q(k,j) - q(k,0) - q(0,j) + q(0,0)|, no less than the largest measured; on a finer mesh its
 !> time error is measured there too (time_on_mesh). choose_run: the cheapest run within the
 !> target and the cap.
